@@ -1,0 +1,24 @@
+"""The Typer application object every command module registers on.
+
+Command modules (one per subcommand, in this package) only parse arguments, call the
+public API and print; they hold no computation.
+"""
+
+from __future__ import annotations
+
+import typer
+from rich.console import Console
+
+app = typer.Typer(
+    name="pounding",
+    help="Seismic pounding of adjacent buildings: impact laws, restitution, time histories.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+
+console = Console()
+"""Where tables and messages go (standard output)."""
+
+err_console = Console(stderr=True)
+"""Where errors go (standard error)."""

@@ -1,0 +1,207 @@
+"""The contact-law contract: what every impact law in :mod:`pounding.contact` promises.
+
+A contact law is the link element of the seed paper (Naderpour, Khatami & Barros 2015): a
+spring and a dashpot, or a nonlinear generalisation of them, that acts only while the gap
+between two bodies is closed. Like an OpenSees uniaxial material it maps a deformation and
+its rate to a force, and keeps a small per-impact state.
+
+Contract
+--------
+1. **Sign convention.** The penetration is ``δ = u_i − u_j − gap`` [m]; ``δ > 0`` while the
+   gap is closed. Its rate ``δ̇`` [m/s] is positive while the bodies approach. The contact
+   force ``F`` [N] is positive in compression (it pushes the bodies apart).
+2. **Open gap.** For ``δ ≤ 0`` the force and both tangents are zero and the trial state is the
+   open state (all zeros): nothing is remembered from one impact to the next.
+3. **Onset.** When the committed state is open (``state[V0] == 0``) and ``δ > 0``, an impact
+   begins: the trial state records the impact velocity ``v0 = max(δ̇, V0_MIN)``. Callers
+   evaluate the law at the located instant the gap closes, so ``v0`` is the true impact
+   velocity (OpenSees' Hertzdamp, in contrast, takes it from its first trial step after
+   contact).
+4. **Trial, then commit.** ``trial(params, δ, δ̇, committed, out)`` never changes
+   ``committed``; it writes the trial state into ``out`` and returns
+   ``(F, ∂F/∂δ, ∂F/∂δ̇)``. The caller commits (copies ``out`` over ``committed``) once a
+   step, or an event-bounded segment, is accepted. Within a segment where ``δ̇`` keeps its
+   sign, ``trial`` evaluated from the segment's starting state is exact for every law here
+   (the only path-dependent law, the bilinear element, is piecewise linear in ``δ``).
+5. **No tension unless asked.** ``F ≥ 0`` for every law except the Kelvin–Voigt law built
+   with ``tension=True``, whose dashpot pulls slightly just before separation.
+6. **Data, not code.** A law is a frozen dataclass; its constants are a float64 vector
+   (:meth:`ContactLaw.params`) and its family a small integer (:attr:`ContactLaw.code`) that
+   the one compiled dispatcher, :func:`pounding.contact.dispatch.contact_trial`, switches on.
+   The Python methods call the same compiled function the time-history kernel calls.
+
+State vector (float64, length :data:`STATE_SIZE`)
+-------------------------------------------------
+``state[V0]``
+    impact velocity of the current impact [m/s]; 0 while the gap is open.
+``state[SLIP]``
+    plastic offset of the bilinear element's elasto-plastic branch [m] (0 for other laws).
+``state[DMAX]``
+    largest penetration reached in the current impact [m].
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, fields, replace
+from typing import ClassVar, NamedTuple
+
+import numpy as np
+from numba import njit
+from numpy.typing import ArrayLike, NDArray
+
+V0: int = 0
+SLIP: int = 1
+DMAX: int = 2
+STATE_SIZE: int = 3
+
+V0_MIN: float = 1e-6
+"""Floor on the recorded impact velocity [m/s], so grazing contacts keep ``δ̇/v0`` finite."""
+
+# Law codes for the compiled dispatcher (one per family member; never reuse a number).
+LINEAR_SPRING: int = 0
+KELVIN_VOIGT: int = 1
+MODIFIED_KELVIN_VOIGT: int = 2
+HERTZ: int = 3
+HUNT_CROSSLEY: int = 4
+NONLINEAR_VISCOELASTIC: int = 5
+BILINEAR_IMPACT: int = 6
+
+
+@njit(cache=True)
+def open_or_onset(delta: float, rate: float, committed: np.ndarray, out: np.ndarray) -> float:
+    """Steps 2–3 of the contract, shared by every law.
+
+    Writes the trial state's common fields into ``out`` and returns the impact velocity
+    ``v0`` [m/s] of the current impact, or 0.0 if the gap is open (``δ ≤ 0``).
+    """
+    if delta <= 0.0:
+        for i in range(out.shape[0]):
+            out[i] = 0.0
+        return 0.0
+    for i in range(out.shape[0]):
+        out[i] = committed[i]
+    v0 = committed[V0]
+    if v0 <= 0.0:
+        v0 = max(rate, V0_MIN)
+        out[V0] = v0
+        out[SLIP] = 0.0
+        out[DMAX] = 0.0
+    if delta > out[DMAX]:
+        out[DMAX] = delta
+    return v0
+
+
+class ContactResponse(NamedTuple):
+    """What a law returns for one trial (δ, δ̇).
+
+    Attributes
+    ----------
+    force : float
+        Contact force [N], positive in compression.
+    d_delta : float
+        Tangent ∂F/∂δ [N/m].
+    d_rate : float
+        Tangent ∂F/∂δ̇ [N·s/m].
+    state : numpy.ndarray
+        Trial state (see the module docstring); commit it to keep it.
+    """
+
+    force: float
+    d_delta: float
+    d_rate: float
+    state: NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class ContactLaw(ABC):
+    """Base class of every contact law. Read the module docstring for the contract."""
+
+    code: ClassVar[int]
+    label: ClassVar[str]
+    """Short human name used in tables and plots."""
+    damping_field: ClassVar[str | None] = None
+    """Name of the field that sets energy dissipation (None for elastic laws)."""
+
+    @abstractmethod
+    def params(self) -> NDArray[np.float64]:
+        """The law's constants as the float64 vector the compiled dispatcher reads."""
+
+    # ------------------------------------------------------------------ evaluation
+    @staticmethod
+    def initial_state() -> NDArray[np.float64]:
+        """The open state: zeros of length :data:`STATE_SIZE`."""
+        return np.zeros(STATE_SIZE)
+
+    def trial(self, delta: float, rate: float,
+              committed: NDArray[np.float64] | None = None) -> ContactResponse:
+        """Force and tangents at (δ [m], δ̇ [m/s]) from a committed state (step 4).
+
+        ``committed=None`` means the open state, so the call starts a new impact at
+        ``v0 = δ̇`` when ``δ > 0``.
+        """
+        from pounding.contact.dispatch import contact_trial
+
+        state = self.initial_state() if committed is None else np.asarray(committed, float)
+        out = np.empty(STATE_SIZE)
+        f, kd, kr = contact_trial(self.code, self.params(), float(delta), float(rate), state, out)
+        return ContactResponse(f, kd, kr, out)
+
+    def respond(self, delta: ArrayLike, rate: ArrayLike) -> NDArray[np.float64]:
+        """Force history [N] along a sampled penetration path, committing at every sample.
+
+        Parameters
+        ----------
+        delta, rate : array_like, shape (n,)
+            Penetration [m] and its rate [m/s] at successive instants. An impact's ``v0`` is
+            the rate at its first sample with ``δ > 0``; sample the onset itself for an
+            exact ``v0``.
+
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+            Contact force at each sample [N].
+        """
+        from pounding.contact.dispatch import respond_path
+
+        d = np.ascontiguousarray(delta, dtype=float)
+        r = np.ascontiguousarray(rate, dtype=float)
+        if d.shape != r.shape or d.ndim != 1:
+            raise ValueError(f"delta and rate must be 1-D arrays of one length "
+                             f"(got shapes {d.shape} and {r.shape})")
+        return respond_path(self.code, self.params(), d, r)
+
+    # ------------------------------------------------------------------ damping
+    @property
+    def damping(self) -> float:
+        """Value of the damping parameter (:attr:`damping_field`)."""
+        if self.damping_field is None:
+            raise ValueError(f"{self.label}: this law has no damping parameter")
+        return float(getattr(self, self.damping_field))
+
+    def with_damping(self, value: float) -> "ContactLaw":
+        """A copy of the law with its damping parameter set to ``value`` (validated)."""
+        if self.damping_field is None:
+            raise ValueError(f"{self.label}: this law has no damping parameter")
+        return replace(self, **{self.damping_field: value})
+
+    def describe(self) -> str:
+        """One line: the label and the fields with their values."""
+        body = ", ".join(f"{f.name}={getattr(self, f.name)!r}" for f in fields(self))
+        return f"{self.label}({body})"
+
+
+def m_effective(m1: float, m2: float) -> float:
+    """Effective mass of two colliding bodies, ``m1 m2 / (m1 + m2)`` [kg].
+
+    Either mass may be ``inf`` (a rigid wall); then the other mass is returned.
+    """
+    from pounding.validation import positive
+
+    if np.isinf(m1) and m1 > 0:
+        return positive("m2", m2)
+    if np.isinf(m2) and m2 > 0:
+        return positive("m1", m1)
+    a = positive("m1", m1)
+    b = positive("m2", m2)
+    return a * b / (a + b)

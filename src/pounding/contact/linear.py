@@ -1,0 +1,193 @@
+"""Linear contact laws: the gap spring, Kelvin–Voigt, and the modified Kelvin–Voigt law.
+
+All three are the seed paper's link element (eqs 3–5: ``f = k δ + c δ̇``) or a piece of it,
+acting only while the gap is closed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+from numba import njit
+
+from pounding.contact.base import (
+    KELVIN_VOIGT,
+    LINEAR_SPRING,
+    MODIFIED_KELVIN_VOIGT,
+    ContactLaw,
+    m_effective,
+    open_or_onset,
+)
+from pounding.validation import non_negative, positive
+
+
+# --------------------------------------------------------------------------- kernels
+@njit(cache=True)
+def linear_spring_trial(params, delta, rate, committed, out):
+    """Gap spring ``F = k δ`` (params: [k])."""
+    if open_or_onset(delta, rate, committed, out) == 0.0:
+        return 0.0, 0.0, 0.0
+    k = params[0]
+    return k * delta, k, 0.0
+
+
+@njit(cache=True)
+def kelvin_voigt_trial(params, delta, rate, committed, out):
+    """Kelvin–Voigt ``F = k δ + c δ̇`` (params: [k, c, tension]).
+
+    With ``tension == 1`` the dashpot may pull (F < 0) until ``δ = 0``; otherwise the force
+    is clipped at zero and the bodies separate when it returns to zero.
+    """
+    if open_or_onset(delta, rate, committed, out) == 0.0:
+        return 0.0, 0.0, 0.0
+    k = params[0]
+    c = params[1]
+    f = k * delta + c * rate
+    if f < 0.0 and params[2] == 0.0:
+        return 0.0, 0.0, 0.0
+    return f, k, c
+
+
+@njit(cache=True)
+def modified_kelvin_voigt_trial(params, delta, rate, committed, out):
+    """Modified Kelvin–Voigt: ``F = k δ + c δ̇`` approaching, ``F = k δ`` separating."""
+    if open_or_onset(delta, rate, committed, out) == 0.0:
+        return 0.0, 0.0, 0.0
+    k = params[0]
+    c = params[1]
+    if rate > 0.0:
+        return k * delta + c * rate, k, c
+    return k * delta, k, 0.0
+
+
+# --------------------------------------------------------------------------- laws
+@dataclass(frozen=True)
+class LinearSpring(ContactLaw):
+    """Linear elastic gap element, ``F = k δ`` for ``δ > 0`` (seed eq 3, spring alone).
+
+    Parameters
+    ----------
+    k : float
+        Contact stiffness [N/m].
+
+    Notes
+    -----
+    Conserves energy (e = 1): the classic gap element of Maison & Kasai (1990) and of the
+    shaking-table comparisons of Filiatrault et al. (1995) cited by the seed.
+    """
+
+    k: float
+    code: ClassVar[int] = LINEAR_SPRING
+    label: ClassVar[str] = "linear spring"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "k", positive("k", self.k))
+
+    def params(self) -> np.ndarray:
+        return np.array([self.k])
+
+
+@dataclass(frozen=True)
+class KelvinVoigt(ContactLaw):
+    """Linear viscoelastic (Kelvin–Voigt) law, ``F = k δ + c δ̇`` (seed eq 5).
+
+    Source: Anagnostopoulos (1988), EESD 16(3):443–456, with
+    ``c = 2 ζ sqrt(k m_eff)`` and ζ from :func:`~pounding.contact.restitution.zeta_anagnostopoulos`.
+
+    Parameters
+    ----------
+    k : float
+        Contact stiffness [N/m].
+    c : float
+        Dashpot coefficient [N·s/m].
+    tension : bool
+        What happens at the end of contact. ``True`` (default, the law as Anagnostopoulos
+        derived his ζ for): the dashpot may pull with a small tensile force until ``δ = 0``.
+        ``False``: the force is clipped, ``F = max(k δ + c δ̇, 0)``; the bodies separate
+        when it returns to zero, with the spring still compressed.
+    """
+
+    k: float
+    c: float
+    tension: bool = True
+    code: ClassVar[int] = KELVIN_VOIGT
+    label: ClassVar[str] = "Kelvin-Voigt"
+    damping_field: ClassVar[str | None] = "c"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "k", positive("k", self.k))
+        object.__setattr__(self, "c", non_negative("c", self.c))
+        object.__setattr__(self, "tension", bool(self.tension))
+
+    def params(self) -> np.ndarray:
+        return np.array([self.k, self.c, 1.0 if self.tension else 0.0])
+
+    @classmethod
+    def from_zeta(cls, k: float, zeta: float, m1: float, m2: float,
+                  tension: bool = True) -> "KelvinVoigt":
+        """Build from an impact damping ratio: ``c = 2 ζ sqrt(k m_eff)``."""
+        z = non_negative("zeta", zeta)
+        return cls(k=k, c=2.0 * z * np.sqrt(positive("k", k) * m_effective(m1, m2)),
+                   tension=tension)
+
+    @classmethod
+    def from_restitution(cls, k: float, e: float, m1: float, m2: float,
+                         formula: str = "anagnostopoulos", tension: bool = True) -> "KelvinVoigt":
+        """Build from a coefficient of restitution via a ζ formula (default Anagnostopoulos)."""
+        from pounding.contact.restitution import formula as _formula
+
+        f = _formula(formula)
+        if f.kind != "zeta":
+            raise ValueError(f"formula: {formula!r} gives a Hunt-Crossley chi, not a damping ratio")
+        return cls.from_zeta(k, float(f(e)), m1, m2, tension=tension)
+
+
+@dataclass(frozen=True)
+class ModifiedKelvinVoigt(ContactLaw):
+    """Modified linear viscoelastic law: dashpot only while approaching.
+
+    ``F = k δ + c δ̇`` for ``δ̇ > 0``, ``F = k δ`` for ``δ̇ ≤ 0``; ``c = 2 ζ sqrt(k m_eff)``.
+
+    Source: Mahmoud & Jankowski (2011), Iranian J. Sci. Technol. 35(C1):51–62; its damping
+    ratio is seed eq 20 (:func:`~pounding.contact.restitution.zeta_mahmoud`). No tensile
+    force ever arises.
+
+    Parameters
+    ----------
+    k : float
+        Contact stiffness [N/m].
+    c : float
+        Dashpot coefficient [N·s/m].
+    """
+
+    k: float
+    c: float
+    code: ClassVar[int] = MODIFIED_KELVIN_VOIGT
+    label: ClassVar[str] = "modified Kelvin-Voigt"
+    damping_field: ClassVar[str | None] = "c"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "k", positive("k", self.k))
+        object.__setattr__(self, "c", non_negative("c", self.c))
+
+    def params(self) -> np.ndarray:
+        return np.array([self.k, self.c])
+
+    @classmethod
+    def from_zeta(cls, k: float, zeta: float, m1: float, m2: float) -> "ModifiedKelvinVoigt":
+        """Build from an impact damping ratio: ``c = 2 ζ sqrt(k m_eff)``."""
+        z = non_negative("zeta", zeta)
+        return cls(k=k, c=2.0 * z * np.sqrt(positive("k", k) * m_effective(m1, m2)))
+
+    @classmethod
+    def from_restitution(cls, k: float, e: float, m1: float, m2: float,
+                         formula: str = "mahmoud") -> "ModifiedKelvinVoigt":
+        """Build from a coefficient of restitution via a ζ formula (default Mahmoud, eq 20)."""
+        from pounding.contact.restitution import formula as _formula
+
+        f = _formula(formula)
+        if f.kind != "zeta":
+            raise ValueError(f"formula: {formula!r} gives a Hunt-Crossley chi, not a damping ratio")
+        return cls.from_zeta(k, float(f(e)), m1, m2)
