@@ -23,7 +23,7 @@ def atomic_path(target: str | os.PathLike[str]) -> Iterator[Path]:
     if target.exists() and target.is_dir():
         raise IsADirectoryError(f"output: {target} is a directory, not a file")
     target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.stem}.", suffix=".part" + target.suffix,
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.part-", suffix=target.suffix,
                                dir=target.parent)
     os.close(fd)
     tmp_path = Path(tmp)

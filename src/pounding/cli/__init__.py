@@ -1,39 +1,37 @@
 """Command-line interface: ``pounding <command>``; see ``pounding --help``.
 
 :func:`main` is the console-script entry point. Bad input (a ``ValueError`` from the public
-API, or a usage error) is printed as one line naming the field and value, without a
-traceback, and the process exits with status 2.
+API, a missing file) is printed as one line naming the field and value, without a
+traceback, and the process exits with status 2; usage errors also exit with 2.
 """
 
 from __future__ import annotations
 
 import sys
 
-import click
-
-from pounding.cli import commands_contact  # noqa: F401  (registers zeta, audit, calibrate, fit)
+from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
+    commands_contact,
+    commands_ellipse,
+    commands_record,
+)
 from pounding.cli.app import app, err_console
 
 __all__ = ["app", "main"]
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the CLI; return (and exit with) 0 on success, 2 on bad input."""
+    """Run the CLI and return its exit status: 0 success, 2 bad input or usage.
+
+    Called with ``argv=None`` (the console script) it exits the process with that status.
+    """
     try:
-        app(args=argv, standalone_mode=False)
-    except click.exceptions.Exit as exc:
-        code = exc.exit_code
-    except click.ClickException as exc:
-        exc.show()
-        code = 2
-    except click.exceptions.Abort:
-        err_console.print("aborted")
-        code = 1
-    except (ValueError, FileNotFoundError, IsADirectoryError) as exc:
-        err_console.print(f"[bold red]error:[/] {exc}", highlight=False)
-        code = 2
-    else:
+        app(args=argv, prog_name="pounding")
         code = 0
+    except SystemExit as exc:  # typer/click end every run this way in standalone mode
+        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+    except (ValueError, FileNotFoundError, IsADirectoryError, NotADirectoryError) as exc:
+        err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
+        code = 2
     if argv is None:
         sys.exit(code)
     return code

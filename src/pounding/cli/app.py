@@ -17,8 +17,11 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-console = Console()
-"""Where tables and messages go (standard output)."""
+import sys  # noqa: E402
+
+console = Console(width=None if sys.stdout.isatty() else 160)
+"""Where tables and messages go (standard output); 160 columns wide when not a terminal, so
+tables written to a file or a pipe are never squeezed."""
 
 err_console = Console(stderr=True)
 """Where errors go (standard error)."""

@@ -171,6 +171,15 @@ class ContactLaw(ABC):
                              f"(got shapes {d.shape} and {r.shape})")
         return respond_path(self.code, self.params(), d, r)
 
+    def release_function(self):
+        """For laws that cannot pull: ``g(δ, δ̇, v0)`` whose downward zero crossing during
+        restitution is the instant the force returns to zero with ``δ > 0`` (the bodies
+        separate there). ``None`` for laws whose force stays positive until ``δ = 0``.
+
+        Used to locate that instant as an event; the compiled kernel does not need it.
+        """
+        return None
+
     # ------------------------------------------------------------------ damping
     @property
     def damping(self) -> float:

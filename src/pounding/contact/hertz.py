@@ -144,6 +144,12 @@ class HuntCrossley(ContactLaw):
     def params(self) -> np.ndarray:
         return np.array([self.k_h, self.n, self.chi])
 
+    def release_function(self):
+        if self.chi == 0.0:
+            return None
+        chi = self.chi
+        return lambda delta, rate, v0: 1.0 + chi * rate / v0
+
     @classmethod
     def from_restitution(cls, k_h: float, e: float, formula: str = "lankarani-nikravesh",
                          n: float = 1.5) -> "HuntCrossley":

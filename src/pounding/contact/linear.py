@@ -124,6 +124,12 @@ class KelvinVoigt(ContactLaw):
     def params(self) -> np.ndarray:
         return np.array([self.k, self.c, 1.0 if self.tension else 0.0])
 
+    def release_function(self):
+        if self.tension or self.c == 0.0:
+            return None
+        k, c = self.k, self.c
+        return lambda delta, rate, v0: k * delta + c * rate
+
     @classmethod
     def from_zeta(cls, k: float, zeta: float, m1: float, m2: float,
                   tension: bool = True) -> "KelvinVoigt":

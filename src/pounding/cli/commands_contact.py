@@ -1,0 +1,217 @@
+"""`pounding zeta | audit | collide | calibrate | fit`: the contact core on the command line."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+from rich import box
+from rich.table import Table
+from rich.text import Text
+
+from pounding.cli.app import app, console
+from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
+
+SHORT = {"anagnostopoulos": "ζ Anag.", "jankowski": "ζ Jank.(19)", "mahmoud": "ζ Mahm.(20)",
+         "naderpour": "ζ eq 39", "hunt-crossley": "χ H-C", "lankarani-nikravesh": "χ L-N",
+         "flores": "χ Flores", "gonthier": "χ Gonth."}
+"""Column titles of `pounding zeta` (full names and sources: `pounding.contact.FORMULAS`)."""
+
+E_HELP = "Coefficients of restitution, comma-separated (default: the seed's Table 1, 0.1 ... 0.9)."
+
+
+def _parse_floats(text: str | None, name: str, default: tuple[float, ...]) -> np.ndarray:
+    if text is None:
+        return np.asarray(default, dtype=float)
+    try:
+        return np.asarray([float(x) for x in text.split(",") if x.strip()], dtype=float)
+    except ValueError:
+        raise ValueError(f"{name}: expected comma-separated numbers (got {text!r})") from None
+
+
+def _col(table: Table, title: str, **kw) -> None:
+    table.add_column(Text(title), **kw)
+
+
+@app.command("zeta")
+def zeta_cmd(
+    e: Annotated[str | None, typer.Option("--e", help=E_HELP)] = None,
+    plot: Annotated[Path | None, typer.Option("--plot", metavar="FILE",
+                    help="Draw the seed's Fig 4 (every formula against e) to FILE.")] = None,
+) -> None:
+    """Print the seed's Table 1 beside every damping formula (zeta and chi against e)."""
+    from pounding.validation import restitution
+
+    values = restitution(_parse_floats(e, "--e", TABLE1_E), "--e")
+    table = Table(title="Impact damping from the coefficient of restitution e (all dimensionless)",
+                  box=box.SIMPLE_HEAD)
+    _col(table, "e", justify="right")
+    _col(table, "Table 1", justify="right", no_wrap=True)
+    for f in FORMULAS.values():
+        _col(table, SHORT[f.key], justify="right", no_wrap=True)
+    table1 = dict(zip(TABLE1_E, TABLE1_ZETA))
+    for x in values:
+        printed = next((f"{v:.2f}" for k, v in table1.items() if abs(k - x) < 1e-12), "")
+        table.add_row(f"{x:.3g}", printed, *(f"{float(f(x)):.4g}" for f in FORMULAS.values()))
+    table.caption = ("Anag. = Anagnostopoulos 1988; Jank. = Jankowski 2006 (seed eq 19); Mahm. = "
+                     "Mahmoud & Jankowski 2011 (seed eq 20); eq 39 = Naderpour et al. 2015; H-C = "
+                     "Hunt & Crossley 1975; L-N = Lankarani & Nikravesh 1990 (Hertzdamp); Flores = "
+                     "Ye et al. 2009 / Flores et al. 2011; Gonth. = Gonthier et al. 2004")
+    console.print(table)
+    console.print("ζ: damping ratio of the viscoelastic laws (c = 2ζ sqrt(k m_eff) or seed "
+                  "eq 18); χ: factor of F = k δⁿ (1 + χ δ̇/v0). Table 1 = eq 39 as printed.")
+    if plot is not None:
+        from pounding.plot import save_figure
+        from pounding.plot.contact import plot_damping_formulas
+
+        console.print(f"figure: {save_figure(plot_damping_formulas(), plot)}", highlight=False)
+
+
+@app.command("audit")
+def audit_cmd(
+    e: Annotated[str | None, typer.Option("--e", help=E_HELP)] = None,
+    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")] = 2.0e5,
+    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")] = 3.0e5,
+    v0: Annotated[float, typer.Option(help="Impact velocity (m/s).")] = 0.5,
+    k_h: Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")] = 2.75e9,
+    k: Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")] = 9.3e8,
+    plot: Annotated[Path | None, typer.Option("--plot", metavar="FILE",
+                    help="Draw achieved against target e to FILE.")] = None,
+    csv: Annotated[Path | None, typer.Option("--csv", metavar="FILE",
+                   help="Write the full audit table to FILE (CSV).")] = None,
+) -> None:
+    """Restitution audit: the e each formula really achieves, with each law, in a simulated impact."""
+    from pounding.contact.audit import PAIRINGS, AuditCase, restitution_audit
+    from pounding.validation import restitution
+
+    targets = restitution(_parse_floats(e, "--e", TABLE1_E), "--e")
+    case = AuditCase(m1=m1, m2=m2, v0=v0, k_h=k_h, k=k)
+    with console.status(f"simulating {len(PAIRINGS) * targets.size} impacts ..."):
+        df = restitution_audit(targets, case)
+    table = Table(title=f"Restitution audit: achieved e for target e (m1={m1:g} kg, m2={m2:g} kg, "
+                        f"v0={v0:g} m/s)")
+    _col(table, "formula")
+    _col(table, "law")
+    for x in targets:
+        _col(table, f"{x:.3g}", justify="right")
+    _col(table, "max |err|", justify="right")
+    for (formula, law), g in df.groupby(["formula", "law"], sort=False):
+        mark = "" if bool(g["intended"].iloc[0]) else " *"
+        cells = [f"{v:.4f}" if s else "stuck" for v, s in zip(g["achieved_e"], g["separated"])]
+        table.add_row(formula, law + mark, *cells, f"{g['error'].abs().max():.4f}")
+    console.print(table)
+    console.print("* the formula was not derived for this law. 'stuck': the bodies never separate "
+                  f"(e = 0). Energy check: max |W - ½m(1-e²)v0²| / ½mv0² = "
+                  f"{df['energy_error'].max():.1e}.", highlight=False)
+    if csv is not None:
+        from pounding.io import write_text
+
+        write_text(csv, df.to_csv(index=False))
+        console.print(f"table: {csv}", highlight=False)
+    if plot is not None:
+        from pounding.plot import save_figure
+        from pounding.plot.contact import plot_audit
+
+        console.print(f"figure: {save_figure(plot_audit(df), plot)}", highlight=False)
+
+
+LawName = Annotated[str, typer.Argument(help="linear-spring, kelvin-voigt, modified-kelvin-voigt, "
+                                        "hertz, hunt-crossley, hertzdamp, nonlinear-viscoelastic, "
+                                        "naderpour, bilinear-impact.")]
+
+
+@app.command("collide")
+def collide_cmd(
+    law: LawName,
+    e: Annotated[float | None, typer.Option("--e", help="Target coefficient of restitution.")] = None,
+    formula: Annotated[str | None, typer.Option(help="Damping formula for e (default: the law's own).")] = None,
+    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")] = 2.0e5,
+    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")] = 3.0e5,
+    v0: Annotated[float, typer.Option(help="Impact velocity (m/s).")] = 0.5,
+    k_h: Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")] = 2.75e9,
+    k: Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")] = 9.3e8,
+    no_tension: Annotated[bool, typer.Option("--no-tension", help="Kelvin-Voigt: clip F >= 0.")] = False,
+    delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the elastic Hertz value.")] = None,
+) -> None:
+    """Simulate one impact of two free masses and report what the law really does."""
+    from pounding.contact.calibration import hertz_delta_max
+    from pounding.contact.base import m_effective
+    from pounding.contact.collision import simulate_collision
+    from pounding.contact.factory import make_law
+
+    if law.strip().lower() == "bilinear-impact" and delta_m is None:
+        delta_m = hertz_delta_max(k_h, m_effective(m1, m2), v0)
+    obj = make_law(law, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
+                   tension=not no_tension, delta_m=delta_m)
+    r = simulate_collision(obj, m1, m2, v0)
+    table = Table(title=obj.describe())
+    _col(table, "quantity")
+    _col(table, "value", justify="right")
+    rows = [("target e", f"{e:.6g}" if e is not None else "-"),
+            ("achieved e", f"{r.e:.6f}" + ("" if r.separated else " (bodies stick)")),
+            ("contact duration [s]", f"{r.duration:.6e}"),
+            ("time to max compression [s]", f"{r.time_to_max:.6e}"),
+            ("max penetration [m]", f"{r.delta_max:.6e}"),
+            ("peak force [N]", f"{r.peak_force:.6e}"),
+            ("energy dissipated ∫F dδ [J]", f"{r.energy_dissipated:.6e}"),
+            ("½ m_eff v0² (1 − e²) [J]", f"{r.energy_expected:.6e}")]
+    for name, value in rows:
+        table.add_row(Text(name), value)
+    console.print(table)
+
+
+@app.command("calibrate")
+def calibrate_cmd(
+    law: LawName,
+    e: Annotated[float, typer.Option("--e", help="Target coefficient of restitution.")],
+    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")] = 2.0e5,
+    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")] = 3.0e5,
+    v0: Annotated[float, typer.Option(help="Impact velocity (m/s).")] = 0.5,
+    k_h: Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")] = 2.75e9,
+    k: Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")] = 9.3e8,
+    no_tension: Annotated[bool, typer.Option("--no-tension", help="Kelvin-Voigt: clip F >= 0.")] = False,
+) -> None:
+    """Find the damping that makes a law achieve exactly the target e."""
+    from pounding.contact.calibration import calibrate, calibrate_bilinear
+    from pounding.contact.factory import make_law
+
+    name = law.strip().lower()
+    if name == "bilinear-impact":
+        cal = calibrate_bilinear(k_h, e, m1, m2, v0)
+    else:
+        start = make_law(name, k=k, k_h=k_h, e=e, m1=m1, m2=m2, tension=not no_tension) \
+            if name not in ("linear-spring", "hertz") else make_law(name, k=k, k_h=k_h)
+        cal = calibrate(start, e, m1, m2, v0)
+    console.print(f"{cal.law.describe()}\n{cal.parameter} = {cal.value:.10g} ({cal.method}); "
+                  f"achieved e = {cal.achieved_e:.8f} for target {cal.target_e:g}", highlight=False)
+
+
+@app.command("fit")
+def fit_cmd(
+    force_file: Annotated[Path, typer.Argument(help="Two columns: time after first contact (s), contact force (N); '#' comments, comma or space separated.")],
+    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")],
+    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")],
+    v0: Annotated[float, typer.Option(help="Measured impact velocity (m/s).")],
+    law: Annotated[str, typer.Option(help="Law to fit: linear-spring, kelvin-voigt, modified-kelvin-voigt, hertz, hunt-crossley, nonlinear-viscoelastic.")] = "hunt-crossley",
+) -> None:
+    """Fit a law's stiffness and damping to a measured impact-force history (least squares)."""
+    from pounding.contact.calibration import fit_impact
+
+    try:
+        data = np.loadtxt(force_file, comments="#", delimiter="," if force_file.suffix == ".csv" else None, ndmin=2)
+    except ValueError as exc:
+        raise ValueError(f"{force_file}: cannot read two numeric columns ({exc})") from None
+    if data.shape[1] < 2:
+        raise ValueError(f"{force_file}: expected two columns (time, force), found {data.shape[1]}")
+    fit = fit_impact(data[:, 0], data[:, 1], m1, m2, v0, law=law)
+    table = Table(title=f"Fit of {fit.law.label} to {force_file.name}")
+    _col(table, "parameter")
+    _col(table, "value", justify="right")
+    for name, value in fit.parameters.items():
+        table.add_row(name, f"{value:.6g}")
+    table.add_row("RMS residual [N]", f"{fit.residual_rms:.4g}")
+    table.add_row("RMS residual / peak force", f"{fit.relative_residual:.3%}")
+    table.add_row("achieved e", f"{fit.achieved_e:.4f}")
+    console.print(table)

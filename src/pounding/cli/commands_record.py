@@ -1,0 +1,73 @@
+"""`pounding record`."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.table import Table
+from rich.text import Text
+
+from pounding.cli.app import app, console  # noqa: F401
+from pounding.ground_motion import read_record
+from pounding.plot import save_figure
+from pounding.plot.record import plot_record
+
+
+@app.command("record")
+def record(
+    files: Annotated[list[Path], typer.Argument(
+        help="Record files: PEER .AT2 (units from the header, g if none stated) or text "
+             "with one column (needs --dt) or two columns time, acceleration.",
+        show_default=False)],
+    dt: Annotated[float | None, typer.Option(
+        "--dt", help="Time step \\[s] for files that do not give one.")] = None,
+    units: Annotated[str | None, typer.Option(
+        "--units", help="Acceleration unit for files that do not state one: g, m/s2, "
+                        "cm/s2, gal, ... (text files default to m/s2). An AT2 header "
+                        "stating another unit is an error.")] = None,
+    plot: Annotated[Path | None, typer.Option(
+        "--plot", help="Draw each record (acceleration, velocity, displacement). With one "
+                       "FILE, PATH is the figure file (format from its suffix: .png, .svg, "
+                       ".pdf; none means .png). With several FILEs, or if PATH is an "
+                       "existing folder, PATH is a folder that gets one PNG per file, named "
+                       "FILE-STEM.png.",
+        metavar="PATH")] = None,
+) -> None:
+    """Read ground-motion records and print their step, duration, PGA and PGV.
+
+    PGV is the peak of the trapezoidal integral of the acceleration (no baseline correction).
+    """
+    motions = [read_record(f, dt=dt, units=units) for f in files]
+
+    table = Table(title="Ground-motion records")
+    table.add_column("file", overflow="fold")
+    table.add_column("points", justify="right")
+    table.add_column(Text("step [s]"), justify="right")
+    table.add_column(Text("duration [s]"), justify="right")
+    table.add_column("units read")
+    table.add_column(Text("PGA [g]"), justify="right")
+    table.add_column(Text("PGV [m/s]"), justify="right")
+    for f, gm in zip(files, motions, strict=True):
+        table.add_row(f.name, str(gm.npts), f"{gm.dt:g}", f"{gm.duration:.6g}", gm.units_read,
+                      f"{gm.pga_g:.4f}", f"{gm.pgv:.3f}")
+    console.print(table)
+
+    if plot is None:
+        return
+    if len(files) == 1 and not plot.is_dir():
+        targets = [plot if plot.suffix else plot.with_suffix(".png")]
+    else:
+        if plot.exists() and not plot.is_dir():
+            raise ValueError(f"--plot: {plot} is a file; with several records give a folder")
+        stems = [f.stem for f in files]
+        dup = sorted({s for s in stems if stems.count(s) > 1})
+        if dup:
+            raise ValueError(f"--plot: several files are named {dup[0]!r}; their figures "
+                             "would overwrite each other; plot them one at a time")
+        targets = [plot / f"{s}.png" for s in stems]
+    for gm, target in zip(motions, targets, strict=True):
+        fig = plot_record(gm)
+        save_figure(fig, target)
+        console.print(f"figure: {target}", highlight=False)

@@ -1,0 +1,117 @@
+"""Build a contact law from a name and engineering inputs, as a config file or the command
+line gives them: a stiffness, and either a damping value or a coefficient of restitution
+with the formula that turns it into damping.
+"""
+
+from __future__ import annotations
+
+from pounding.contact.base import ContactLaw, m_effective
+from pounding.contact.bilinear import BilinearImpact
+from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
+from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
+from pounding.contact.restitution import FORMULAS, formula as get_formula
+from pounding.validation import choice
+
+LAW_NAMES: tuple[str, ...] = (
+    "linear-spring", "kelvin-voigt", "modified-kelvin-voigt", "hertz", "hunt-crossley",
+    "hertzdamp", "nonlinear-viscoelastic", "naderpour", "bilinear-impact",
+)
+"""Names :func:`make_law` accepts. ``hertzdamp`` is Hunt–Crossley with the
+Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with ζ of seed eq 39."""
+
+DEFAULT_FORMULA: dict[str, str] = {
+    "kelvin-voigt": "anagnostopoulos",
+    "modified-kelvin-voigt": "mahmoud",
+    "hunt-crossley": "lankarani-nikravesh",
+    "hertzdamp": "lankarani-nikravesh",
+    "nonlinear-viscoelastic": "jankowski",
+    "naderpour": "naderpour",
+}
+"""The formula each damped law uses for ``e`` unless told otherwise (the one it was derived for)."""
+
+
+def _need(name: str, value: float | None, law: str) -> float:
+    if value is None:
+        raise ValueError(f"{name}: required for the {law} law")
+    return value
+
+
+def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
+             e: float | None = None, formula: str | None = None, c: float | None = None,
+             zeta: float | None = None, chi: float | None = None, m1: float | None = None,
+             m2: float | None = None, n: float = 1.5, tension: bool = True,
+             delta_m: float | None = None, a: float = 0.1) -> ContactLaw:
+    """Build a contact law by name.
+
+    Parameters
+    ----------
+    name : str
+        One of :data:`LAW_NAMES`.
+    k : float
+        Stiffness of the linear laws [N/m].
+    k_h : float
+        Hertz stiffness of the nonlinear laws [N/m^n].
+    e : float
+        Coefficient of restitution; converted to damping by ``formula``.
+    formula : str
+        A key of :data:`pounding.contact.restitution.FORMULAS`; default
+        :data:`DEFAULT_FORMULA` for the law. ``naderpour`` fixes it to eq 39.
+    c, zeta, chi : float
+        Damping given directly instead of ``e``: dashpot [N·s/m], damping ratio, or
+        Hunt–Crossley factor.
+    m1, m2 : float
+        Masses of the colliding bodies [kg] (needed where damping scales with them).
+    n : float
+        Hertz exponent (Hertz and Hunt–Crossley).
+    tension : bool
+        Kelvin–Voigt only: whether the dashpot may pull before separation.
+    delta_m : float
+        Bilinear element: assumed maximum penetration [m].
+    a : float
+        Bilinear element: yield ratio δy/δm.
+
+    Returns
+    -------
+    ContactLaw
+    """
+    law = choice("law", name, LAW_NAMES)
+    if formula is not None and law == "naderpour" and formula != "naderpour":
+        raise ValueError(f"formula: the naderpour law uses eq 39 (got {formula!r})")
+    if sum(x is not None for x in (e, c, zeta, chi)) > 1:
+        raise ValueError(f"{law}: give only one of e, c, zeta, chi")
+
+    def damping_ratio() -> float:
+        if zeta is not None:
+            return zeta
+        f = get_formula(formula or DEFAULT_FORMULA[law])
+        if f.kind != "zeta":
+            raise ValueError(f"formula: {f.key!r} gives a Hunt-Crossley chi; the {law} law "
+                             f"needs a damping ratio formula")
+        return float(f(_need("e", e, law)))
+
+    if law == "linear-spring":
+        return LinearSpring(_need("k", k, law))
+    if law == "hertz":
+        return Hertz(_need("k_h", k_h, law), n)
+    if law in ("kelvin-voigt", "modified-kelvin-voigt"):
+        kk = _need("k", k, law)
+        if c is None:
+            c = 2.0 * damping_ratio() * (kk * m_effective(_need("m1", m1, law),
+                                                          _need("m2", m2, law))) ** 0.5
+        if law == "kelvin-voigt":
+            return KelvinVoigt(kk, c, tension)
+        return ModifiedKelvinVoigt(kk, c)
+    if law in ("hunt-crossley", "hertzdamp"):
+        if chi is None:
+            f = get_formula(formula or DEFAULT_FORMULA[law])
+            if f.kind != "chi":
+                raise ValueError(f"formula: {f.key!r} gives a damping ratio; the {law} law "
+                                 f"needs a chi formula ({', '.join(k_ for k_, v in FORMULAS.items() if v.kind == 'chi')})")
+            chi = float(f(_need("e", e, law)))
+        return HuntCrossley(_need("k_h", k_h, law), chi, n)
+    if law in ("nonlinear-viscoelastic", "naderpour"):
+        return NonlinearViscoelastic(_need("k_h", k_h, law), damping_ratio(),
+                                     m_effective(_need("m1", m1, law), _need("m2", m2, law)))
+    # bilinear-impact
+    return BilinearImpact.from_hertz(_need("k_h", k_h, law), _need("e", e, law),
+                                     _need("delta_m", delta_m, law), a, n)

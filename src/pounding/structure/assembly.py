@@ -1,0 +1,148 @@
+"""Buildings side by side: one block-diagonal system, and the floors that can meet.
+
+Adjacent buildings share the ground motion but, until they touch, nothing else; so their
+equations of motion stack into one block-diagonal system
+
+    M ü + C u̇ + K u = −M r a_g(t) + (contact forces),
+
+with ``M = diag(M_1, M_2, …)`` and likewise ``C`` and ``K``, and ``r`` the stacked influence
+vectors (Chopra §9.4.1, applied to each building). Contact couples the blocks later, through
+the floors listed by :func:`shared_levels`.
+
+DOF numbering: building ``b``'s floor ``j`` (1-based, floor 1 = first suspended floor) is
+global degree of freedom ``offsets[b] + j − 1``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import NamedTuple
+
+import numpy as np
+import scipy.linalg
+from numpy.typing import NDArray
+
+from pounding.structure.shear_building import ShearBuilding
+from pounding.validation import positive
+
+__all__ = ["AssembledSystem", "assemble", "shared_levels"]
+
+
+class AssembledSystem(NamedTuple):
+    """Matrices of several uncoupled buildings stacked block-diagonally.
+
+    Unpacks as ``M, C, K, r, offsets = assemble(buildings)``. Every array is a
+    C-contiguous float64 (``offsets``: int64) array, ready for a compiled time stepper.
+
+    Attributes
+    ----------
+    M : ndarray, shape (N, N)
+        Mass matrix [kg], ``N`` = total number of floors.
+    C : ndarray, shape (N, N)
+        Damping matrix [N·s/m]; each block from its building's own damping model.
+    K : ndarray, shape (N, N)
+        Stiffness matrix [N/m].
+    r : ndarray, shape (N,)
+        Influence vector [-] (all ones: every floor feels the ground acceleration).
+    offsets : ndarray of int64, shape (B,)
+        Global index of each building's first degree of freedom (its floor 1).
+    """
+
+    M: NDArray[np.float64]
+    C: NDArray[np.float64]
+    K: NDArray[np.float64]
+    r: NDArray[np.float64]
+    offsets: NDArray[np.int64]
+
+    @property
+    def n_dof(self) -> int:
+        """Total number of degrees of freedom ``N``."""
+        return int(self.r.shape[0])
+
+    def dof(self, building: int, floor_index: int) -> int:
+        """Global DOF of ``building``'s floor at 0-based ``floor_index`` (0 = floor 1)."""
+        b = int(building)
+        if not 0 <= b < self.offsets.shape[0]:
+            raise ValueError(f"building must be in [0, {self.offsets.shape[0] - 1}] "
+                             f"(got {building!r})")
+        end = self.offsets[b + 1] if b + 1 < self.offsets.shape[0] else self.n_dof
+        i = int(floor_index)
+        if not 0 <= i < end - self.offsets[b]:
+            raise ValueError(f"floor_index must be in [0, {end - self.offsets[b] - 1}] for "
+                             f"building {b} (got {floor_index!r})")
+        return int(self.offsets[b] + i)
+
+
+def assemble(buildings: Sequence[ShearBuilding]) -> AssembledSystem:
+    """Stack buildings into one block-diagonal system (no coupling between them).
+
+    Parameters
+    ----------
+    buildings : sequence of ShearBuilding
+        One or more buildings, in the order they stand (left to right).
+
+    Returns
+    -------
+    AssembledSystem
+        ``(M, C, K, r, offsets)``; see :class:`AssembledSystem`.
+
+    Raises
+    ------
+    ValueError
+        If ``buildings`` is empty or an entry is not a :class:`ShearBuilding`.
+    """
+    items = list(buildings)
+    if not items:
+        raise ValueError("buildings must hold at least one ShearBuilding (got an empty sequence)")
+    for i, b in enumerate(items):
+        if not isinstance(b, ShearBuilding):
+            raise ValueError(f"buildings[{i}] must be a ShearBuilding (got {b!r})")
+    M = scipy.linalg.block_diag(*(b.mass_matrix() for b in items))
+    C = scipy.linalg.block_diag(*(b.damping_matrix() for b in items))
+    K = scipy.linalg.block_diag(*(b.stiffness_matrix() for b in items))
+    r = np.concatenate([b.influence_vector() for b in items])
+    sizes = np.array([b.n for b in items], dtype=np.int64)
+    offsets = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+    return AssembledSystem(np.ascontiguousarray(M, dtype=np.float64),
+                           np.ascontiguousarray(C, dtype=np.float64),
+                           np.ascontiguousarray(K, dtype=np.float64),
+                           np.ascontiguousarray(r, dtype=np.float64),
+                           offsets)
+
+
+def shared_levels(a: ShearBuilding, b: ShearBuilding, tol: float = 1e-6) -> list[tuple[int, int]]:
+    """Pairs of floors of ``a`` and ``b`` at the same elevation, where floor-to-floor impact
+    can occur.
+
+    Parameters
+    ----------
+    a, b : ShearBuilding
+        The two adjacent buildings.
+    tol : float
+        Two floors are at the same elevation if their levels differ by at most ``tol`` [m].
+
+    Returns
+    -------
+    list of (int, int)
+        ``(i, j)`` with ``a.floor_levels[i] ≈ b.floor_levels[j]``, 0-based floor indices
+        (0 = floor 1), ascending. Buildings of different heights pair only up to the lower
+        roof; floors at different elevations are not paired (floor-to-column impact is
+        another matter).
+
+    Raises
+    ------
+    ValueError
+        If ``a`` or ``b`` is not a ShearBuilding or ``tol`` is not positive.
+    """
+    for label, x in (("a", a), ("b", b)):
+        if not isinstance(x, ShearBuilding):
+            raise ValueError(f"{label} must be a ShearBuilding (got {x!r})")
+    t = positive("tol", tol)
+    za, zb = a.floor_levels, b.floor_levels
+    pairs: list[tuple[int, int]] = []
+    for i, z in enumerate(za):
+        j = int(np.argmin(np.abs(zb - z)))
+        # mutual nearest neighbours within tol: never pairs one floor twice
+        if abs(zb[j] - z) <= t and int(np.argmin(np.abs(za - zb[j]))) == i:
+            pairs.append((i, j))
+    return pairs

@@ -1,0 +1,302 @@
+"""The shear building: lumped floor masses on massless storeys that deform only in shear.
+
+Model (Chopra, *Dynamics of Structures*, 4th ed., §9.2)
+-------------------------------------------------------
+Floor ``j`` (``j = 1 … n``; floor 1 is the first suspended floor above the ground, floor
+``n`` the roof) carries the lumped mass ``m_j`` [kg] and moves laterally by ``u_j`` [m]
+relative to the ground. Storey ``j`` joins floor ``j − 1`` (the ground for ``j = 1``) to
+floor ``j``; it has lateral stiffness ``k_j`` [N/m] and height ``h_j`` [m]. The storey shear
+is ``V_j = k_j (u_j − u_{j−1})`` with ``u_0 = 0``. In Python (0-based) floor ``j`` is index
+``j − 1`` of every array. A single-degree-of-freedom (SDOF) system is the one-storey case.
+
+Relative to the ground, the equation of motion is (Chopra §9.4.1)
+
+    M ü + C u̇ + K u = −M ι a_g(t) + (contact forces),
+
+with ``M = diag(m)`` [kg], the tridiagonal ``K`` [N/m] of :meth:`ShearBuilding.stiffness_matrix`,
+``C`` [N·s/m] from the building's damping model and influence vector ``ι = 1``.
+
+All arrays handed out are C-contiguous float64, ready for a compiled time stepper.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from pounding.structure.damping import DampingModel, ModalDamping, RayleighDamping
+from pounding.structure.modal import ModalResult, modes
+from pounding.validation import positive
+
+__all__ = ["ShearBuilding", "shear_stiffness_matrix"]
+
+
+def _floor_vector(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """A read-only float64 copy of ``value``, 1-D, non-empty, every entry finite and > 0."""
+    try:
+        arr = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a sequence of numbers, one per floor "
+                         f"(got {value!r})") from None
+    arr = np.atleast_1d(arr)
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be one-dimensional, one value per floor "
+                         f"(got shape {arr.shape})")
+    if arr.size == 0:
+        raise ValueError(f"{name} must hold at least one value (got {value!r})")
+    for i, x in enumerate(arr):
+        positive(f"{name}[{i}]", x)
+    arr = np.ascontiguousarray(arr)
+    arr.flags.writeable = False
+    return arr
+
+
+def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
+    """Stiffness matrix ``K`` [N/m] of a fixed-base shear building, shape (n, n).
+
+    ``K[j, j] = k_j + k_{j+1}`` (``k_{n+1} = 0``), ``K[j, j+1] = K[j+1, j] = −k_{j+1}``
+    (Chopra §9.2, the two-storey shear frame generalised to n storeys).
+
+    Parameters
+    ----------
+    stiffnesses : array_like, shape (n,)
+        Storey lateral stiffnesses ``k_1 … k_n`` [N/m], ground storey first.
+    """
+    k = _floor_vector("stiffnesses", stiffnesses)
+    n = k.size
+    K = np.zeros((n, n), dtype=np.float64)
+    idx = np.arange(n)
+    K[idx, idx] = k
+    K[idx[:-1], idx[:-1]] += k[1:]
+    K[idx[:-1], idx[1:]] = -k[1:]
+    K[idx[1:], idx[:-1]] = -k[1:]
+    return K
+
+
+def _readonly(a: NDArray[np.float64]) -> NDArray[np.float64]:
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    a.flags.writeable = False
+    return a
+
+
+@dataclass(frozen=True, eq=False)
+class ShearBuilding:
+    """A multi-storey shear building with lumped floor masses (n storeys, n DOFs).
+
+    Parameters
+    ----------
+    masses : array_like, shape (n,)
+        Floor masses ``m_1 … m_n`` [kg], floor 1 (first suspended floor) first.
+    stiffnesses : array_like, shape (n,)
+        Storey lateral stiffnesses ``k_1 … k_n`` [N/m]; storey 1 joins floor 1 to the ground.
+    heights : array_like, shape (n,)
+        Storey heights ``h_1 … h_n`` [m].
+    damping : DampingModel
+        How the damping matrix is built; default 5 % Rayleigh damping anchored at modes 1
+        and 2 (the usual choice in pounding studies).
+    name : str
+        A label for tables and plots.
+
+    Raises
+    ------
+    ValueError
+        Naming the field (and entry) at fault: an entry that is not finite and positive,
+        arrays of different lengths, a damping model that does not fit the building.
+
+    Notes
+    -----
+    Instances are immutable; the stored arrays are read-only float64. The matrix methods
+    return fresh writable copies.
+
+    Examples
+    --------
+    >>> b = ShearBuilding(masses=[2.0e5, 1.0e5], stiffnesses=[4.0e7, 2.0e7],
+    ...                   heights=[3.5, 3.0], name="A")
+    >>> b.n, float(b.total_height)
+    (2, 6.5)
+    """
+
+    masses: NDArray[np.float64]
+    stiffnesses: NDArray[np.float64]
+    heights: NDArray[np.float64]
+    damping: DampingModel = field(default_factory=RayleighDamping)
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        m = _floor_vector("masses", self.masses)
+        k = _floor_vector("stiffnesses", self.stiffnesses)
+        h = _floor_vector("heights", self.heights)
+        for label, arr in (("stiffnesses", k), ("heights", h)):
+            if arr.size != m.size:
+                raise ValueError(f"{label} must have one value per floor, as many as masses "
+                                 f"({m.size}) (got {arr.size})")
+        if not isinstance(self.damping, DampingModel):
+            raise ValueError(f"damping must be a DampingModel such as RayleighDamping or "
+                             f"ModalDamping (got {self.damping!r})")
+        if not isinstance(self.name, str):
+            raise ValueError(f"name must be a string (got {self.name!r})")
+        object.__setattr__(self, "masses", m)
+        object.__setattr__(self, "stiffnesses", k)
+        object.__setattr__(self, "heights", h)
+        self.damping.check(m.size)
+        M = _readonly(np.diag(m))
+        K = _readonly(shear_stiffness_matrix(k))
+        # Build C now so that a damping model unfit for this building fails here, early.
+        C = _readonly(self.damping.matrix(M, K))
+        object.__setattr__(self, "_M", M)
+        object.__setattr__(self, "_K", K)
+        object.__setattr__(self, "_C", C)
+
+    # ----------------------------------------------------------------- constructors
+    @classmethod
+    def sdof(cls, mass: float, stiffness: float | None = None, period: float | None = None,
+             damping_ratio: float = 0.05, height: float = 3.0, name: str = "SDOF"
+             ) -> ShearBuilding:
+        """A single-degree-of-freedom system (a one-storey shear building).
+
+        Parameters
+        ----------
+        mass : float
+            Lumped mass ``m`` [kg].
+        stiffness : float, optional
+            Lateral stiffness ``k`` [N/m]. Give exactly one of ``stiffness`` and ``period``.
+        period : float, optional
+            Natural period ``T`` [s]; then ``k = m (2π/T)²`` (Chopra §2.1,
+            ``ωₙ = √(k/m)``, ``Tₙ = 2π/ωₙ``).
+        damping_ratio : float
+            Viscous damping ratio ζ [-]; ``c = 2 ζ m ω`` (:class:`ModalDamping`).
+        height : float
+            Storey height [m], the elevation of the mass.
+        name : str
+            Label.
+        """
+        if (stiffness is None) == (period is None):
+            raise ValueError("give exactly one of stiffness and period "
+                             f"(got stiffness={stiffness!r}, period={period!r})")
+        m = positive("mass", mass)
+        if stiffness is None:
+            T = positive("period", period)  # type: ignore[arg-type]
+            k = m * (2.0 * math.pi / T) ** 2
+        else:
+            k = positive("stiffness", stiffness)
+        h = positive("height", height)
+        return cls(masses=np.array([m]), stiffnesses=np.array([k]), heights=np.array([h]),
+                   damping=ModalDamping(damping_ratio), name=name)
+
+    @classmethod
+    def uniform(cls, n_storeys: int, mass: float, stiffness: float, height: float = 3.0,
+                damping: DampingModel | None = None, name: str = "") -> ShearBuilding:
+        """A building whose floors all have the same mass, stiffness and storey height.
+
+        Parameters
+        ----------
+        n_storeys : int
+            Number of storeys ``n`` (>= 1).
+        mass : float
+            Mass of every floor [kg].
+        stiffness : float
+            Lateral stiffness of every storey [N/m].
+        height : float
+            Height of every storey [m].
+        damping : DampingModel, optional
+            Default: 5 % Rayleigh damping in modes 1 and 2.
+        name : str
+            Label.
+
+        Notes
+        -----
+        Its natural frequencies have the closed form
+        ``ω_j = 2 √(k/m) sin((2j − 1) π / (2 (2n + 1)))``, ``j = 1 … n`` (the fixed–free
+        uniform spring–mass chain; see the tests and ``docs/structures.md``).
+        """
+        if (isinstance(n_storeys, bool) or not isinstance(n_storeys, (int, np.integer))
+                or n_storeys < 1):
+            raise ValueError(f"n_storeys must be an integer >= 1 (got {n_storeys!r})")
+        m = positive("mass", mass)
+        k = positive("stiffness", stiffness)
+        h = positive("height", height)
+        n = int(n_storeys)
+        return cls(masses=np.full(n, m), stiffnesses=np.full(n, k), heights=np.full(n, h),
+                   damping=RayleighDamping() if damping is None else damping, name=name)
+
+    def with_period(self, period: float) -> ShearBuilding:
+        """A copy with every storey stiffness scaled so the fundamental period is ``period``.
+
+        Scaling ``K`` by ``s`` scales every ``ωₙ²`` by ``s`` (``K φ = ω² M φ``), so
+        ``s = (T₁/T)²``; mode shapes, masses and the damping model are kept.
+
+        Parameters
+        ----------
+        period : float
+            Target fundamental period [s].
+        """
+        T = positive("period", period)
+        s = (self.fundamental_period / T) ** 2
+        return dataclasses.replace(self, stiffnesses=self.stiffnesses * s)
+
+    # ----------------------------------------------------------------- geometry
+    @property
+    def n(self) -> int:
+        """Number of storeys = floors = degrees of freedom."""
+        return int(self.masses.size)
+
+    @property
+    def floor_levels(self) -> NDArray[np.float64]:
+        """Elevation of each floor above the ground [m], shape (n,): cumulative storey heights."""
+        return np.cumsum(self.heights)
+
+    @property
+    def total_height(self) -> float:
+        """Roof elevation above the ground [m]."""
+        return float(np.sum(self.heights))
+
+    @property
+    def total_mass(self) -> float:
+        """Sum of the floor masses [kg]."""
+        return float(np.sum(self.masses))
+
+    # ----------------------------------------------------------------- matrices
+    def mass_matrix(self) -> NDArray[np.float64]:
+        """Diagonal mass matrix ``M = diag(m_1 … m_n)`` [kg], shape (n, n)."""
+        return np.array(self._M)  # type: ignore[attr-defined]
+
+    def stiffness_matrix(self) -> NDArray[np.float64]:
+        """Tridiagonal shear-building stiffness matrix ``K`` [N/m], shape (n, n).
+
+        See :func:`shear_stiffness_matrix` (Chopra §9.2).
+        """
+        return np.array(self._K)  # type: ignore[attr-defined]
+
+    def damping_matrix(self) -> NDArray[np.float64]:
+        """Damping matrix ``C`` [N·s/m], shape (n, n), from :attr:`damping`."""
+        return np.array(self._C)  # type: ignore[attr-defined]
+
+    def influence_vector(self) -> NDArray[np.float64]:
+        """Ground-motion influence vector ``ι`` [-], shape (n,): all ones (Chopra §9.4.1)."""
+        return np.ones(self.n, dtype=np.float64)
+
+    # ----------------------------------------------------------------- dynamics
+    def modes(self) -> ModalResult:
+        """Modal analysis; see :func:`pounding.structure.modal.modes`."""
+        return modes(self)
+
+    @property
+    def fundamental_period(self) -> float:
+        """Period of mode 1 [s]."""
+        return float(self.modes().periods[0])
+
+    # ----------------------------------------------------------------- value semantics
+    def __eq__(self, other: Any) -> bool:
+        if not isinstance(other, ShearBuilding):
+            return NotImplemented
+        return (np.array_equal(self.masses, other.masses)
+                and np.array_equal(self.stiffnesses, other.stiffnesses)
+                and np.array_equal(self.heights, other.heights)
+                and self.damping == other.damping and self.name == other.name)
+
+    __hash__ = None  # type: ignore[assignment]

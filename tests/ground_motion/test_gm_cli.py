@@ -1,0 +1,67 @@
+"""`pounding record` through the CLI entry point, and the record figure."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from pounding.cli import main
+from pounding.ground_motion import harmonic
+from pounding.plot.record import plot_record
+
+RECORDS = Path(__file__).parent / "records"
+ELC = RECORDS / "elcentro_1940_IV_ELC9_180_PEER.AT2"
+SYLMAR = RECORDS / "northridge_1994_sylmar_county_2col_mps2.dat"
+
+
+def test_record_prints_table(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["record", str(ELC), str(SYLMAR)]) == 0
+    out = capsys.readouterr().out
+    # PGA [g] and points as in SOURCES.md; PGV [m/s] ≈ 30 and 129 cm/s
+    for expected in ("0.3129", "4000", "0.8431", "3000", "0.297", "1.289"):
+        assert expected in out
+
+
+def test_record_plot_one_file_and_several(tmp_path: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    one = tmp_path / "elc.svg"
+    assert main(["record", str(ELC), "--plot", str(one)]) == 0
+    assert one.read_text(encoding="utf-8").lstrip().startswith("<?xml")
+    folder = tmp_path / "figs"
+    assert main(["record", str(ELC), str(SYLMAR), "--plot", str(folder)]) == 0
+    pngs = sorted(p.name for p in folder.iterdir())
+    assert pngs == ["elcentro_1940_IV_ELC9_180_PEER.png",
+                    "northridge_1994_sylmar_county_2col_mps2.png"]
+    assert all((folder / p).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" for p in pngs)
+
+
+def test_record_text_with_dt_and_units(tmp_path: Path,
+                                       capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "one.txt"
+    path.write_text("0.0\n50.0\n-98.0665\n", encoding="utf-8")  # cm/s²: PGA 0.1 g
+    assert main(["record", str(path), "--dt", "0.01", "--units", "cm/s2"]) == 0
+    assert "0.1000" in capsys.readouterr().out
+
+
+def test_record_bad_file_exits_2_with_one_line(tmp_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    bad = tmp_path / "bad.AT2"
+    bad.write_text("IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n 0.1 0.2\n", encoding="utf-8")
+    assert main(["record", str(ELC), str(bad)]) == 2
+    captured = capsys.readouterr()
+    err = captured.err.strip()
+    assert "bad.AT2" in err and "line 2" in err and "NPTS = 3 but 2 values" in err
+    assert "Traceback" not in err
+    assert len(err.splitlines()) == 1
+    assert "0.3129" not in captured.out  # nothing printed before the error
+    assert main(["record", str(tmp_path / "missing.AT2")]) == 2
+
+
+def test_plot_record_labels() -> None:
+    fig = plot_record(harmonic(1.0, 2.0, duration=1.0, dt=0.01))
+    axes = fig.get_axes()
+    assert [ax.get_ylabel() for ax in axes] == ["acceleration [g]", "velocity [m/s]",
+                                              "displacement [m]"]
+    assert axes[-1].get_xlabel() == "time [s]"
+    assert "harmonic 2 Hz" in fig.texts[0].get_text()
