@@ -17,9 +17,9 @@ Contract
    evaluate the law at the located instant the gap closes, so ``v0`` is the true impact
    velocity (OpenSees' Hertzdamp, in contrast, takes it from its first trial step after
    contact).
-4. **Trial, then commit.** ``trial(params, δ, δ̇, committed, out)`` never changes
-   ``committed``; it writes the trial state into ``out`` and returns
-   ``(F, ∂F/∂δ, ∂F/∂δ̇)``. The caller commits (copies ``out`` over ``committed``) once a
+4. **Trial, then commit.** A trial is a pure function of the law's constants, ``(δ, δ̇)``
+   and the committed state: compiled, ``trial(p0, p1, p2, δ, δ̇, v0, slip, dmax)`` returns
+   ``(F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax')``, the last three the trial state. The caller commits (copies ``out`` over ``committed``) once a
    step, or an event-bounded segment, is accepted. Within a segment where ``δ̇`` keeps its
    sign, ``trial`` evaluated from the segment's starting state is exact for every law here
    (the only path-dependent law, the bilinear element, is piecewise linear in ``δ``).
@@ -68,28 +68,23 @@ NONLINEAR_VISCOELASTIC: int = 5
 BILINEAR_IMPACT: int = 6
 
 
-@njit(cache=True)
-def open_or_onset(delta: float, rate: float, committed: np.ndarray, out: np.ndarray) -> float:
-    """Steps 2–3 of the contract, shared by every law.
+@njit(cache=True, inline="always")
+def open_or_onset(delta: float, rate: float, v0: float, slip: float, dmax: float):
+    """Steps 2–3 of the contract, shared by every law (scalar, pure).
 
-    Writes the trial state's common fields into ``out`` and returns the impact velocity
-    ``v0`` [m/s] of the current impact, or 0.0 if the gap is open (``δ ≤ 0``).
+    Parameters are the penetration [m], its rate [m/s] and the committed state
+    ``(v0, slip, dmax)``. Returns the trial state ``(v0, slip, dmax)``: all zeros while the
+    gap is open (``δ ≤ 0``), ``v0 = max(δ̇, V0_MIN)`` at onset, ``dmax`` updated.
     """
     if delta <= 0.0:
-        for i in range(out.shape[0]):
-            out[i] = 0.0
-        return 0.0
-    for i in range(out.shape[0]):
-        out[i] = committed[i]
-    v0 = committed[V0]
+        return 0.0, 0.0, 0.0
     if v0 <= 0.0:
         v0 = max(rate, V0_MIN)
-        out[V0] = v0
-        out[SLIP] = 0.0
-        out[DMAX] = 0.0
-    if delta > out[DMAX]:
-        out[DMAX] = delta
-    return v0
+        slip = 0.0
+        dmax = 0.0
+    if delta > dmax:
+        dmax = delta
+    return v0, slip, dmax
 
 
 class ContactResponse(NamedTuple):

@@ -1,8 +1,9 @@
 """The one compiled entry point to every contact law.
 
-:func:`contact_trial` switches on a law's integer code and calls that law's compiled trial
-function. The Python law objects, the single-collision analysis and the time-history kernel
-all go through it, so there is exactly one implementation of each law.
+:func:`law_trial` switches on a law's integer code and calls that law's compiled, pure,
+scalar trial function. The time-history kernel calls it directly; :func:`contact_trial`
+wraps it for arrays (used by the Python law objects and the single-collision analysis). So
+there is exactly one implementation of each law.
 """
 
 from __future__ import annotations
@@ -12,13 +13,16 @@ from numba import njit
 
 from pounding.contact.base import (
     BILINEAR_IMPACT,
+    DMAX,
     HERTZ,
     HUNT_CROSSLEY,
     KELVIN_VOIGT,
     LINEAR_SPRING,
     MODIFIED_KELVIN_VOIGT,
     NONLINEAR_VISCOELASTIC,
+    SLIP,
     STATE_SIZE,
+    V0,
 )
 from pounding.contact.bilinear import bilinear_impact_trial
 from pounding.contact.hertz import hertz_trial, hunt_crossley_trial, nonlinear_viscoelastic_trial
@@ -28,44 +32,46 @@ from pounding.contact.linear import (
     modified_kelvin_voigt_trial,
 )
 
+PARAMS_SIZE: int = 3
+"""Every law's constants fit in three numbers (zero-padded)."""
 
-@njit(cache=True)
-def contact_trial(code, params, delta, rate, committed, out):
-    """Trial force of the law ``code`` (contract step 4).
 
-    Parameters
-    ----------
-    code : int
-        Law code (``pounding.contact.base``).
-    params : float64[:]
-        The law's constants, as ``ContactLaw.params()`` returns them.
-    delta, rate : float
-        Penetration [m] and its rate [m/s].
-    committed : float64[STATE_SIZE]
-        Committed state (read only).
-    out : float64[STATE_SIZE]
-        Receives the trial state.
+@njit(cache=True, inline="always")
+def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
+    """Trial of the law ``code`` (contract step 4), all scalars.
 
     Returns
     -------
-    (float, float, float)
-        Force [N], ∂F/∂δ [N/m], ∂F/∂δ̇ [N·s/m].
+    (F [N], ∂F/∂δ [N/m], ∂F/∂δ̇ [N·s/m], v0', slip', dmax')
     """
     if code == LINEAR_SPRING:
-        return linear_spring_trial(params, delta, rate, committed, out)
+        return linear_spring_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == KELVIN_VOIGT:
-        return kelvin_voigt_trial(params, delta, rate, committed, out)
+        return kelvin_voigt_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == MODIFIED_KELVIN_VOIGT:
-        return modified_kelvin_voigt_trial(params, delta, rate, committed, out)
+        return modified_kelvin_voigt_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == HERTZ:
-        return hertz_trial(params, delta, rate, committed, out)
+        return hertz_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == HUNT_CROSSLEY:
-        return hunt_crossley_trial(params, delta, rate, committed, out)
+        return hunt_crossley_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == NONLINEAR_VISCOELASTIC:
-        return nonlinear_viscoelastic_trial(params, delta, rate, committed, out)
-    if code == BILINEAR_IMPACT:
-        return bilinear_impact_trial(params, delta, rate, committed, out)
-    raise ValueError("unknown contact law code")
+        return nonlinear_viscoelastic_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
+    return bilinear_impact_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
+
+
+@njit(cache=True)
+def contact_trial(code, params, delta, rate, committed, out):
+    """Array form of :func:`law_trial`: reads ``committed`` (STATE_SIZE), writes the trial
+    state into ``out``, returns ``(F, ∂F/∂δ, ∂F/∂δ̇)``."""
+    p = np.zeros(PARAMS_SIZE)
+    for i in range(min(params.shape[0], PARAMS_SIZE)):
+        p[i] = params[i]
+    f, kd, kr, v0, slip, dmax = law_trial(code, p[0], p[1], p[2], delta, rate, committed[V0],
+                                          committed[SLIP], committed[DMAX])
+    out[V0] = v0
+    out[SLIP] = slip
+    out[DMAX] = dmax
+    return f, kd, kr
 
 
 @njit(cache=True)
@@ -80,3 +86,33 @@ def respond_path(code, params, delta, rate):
         force[i] = f
         committed[:] = trial
     return force
+
+
+@njit(cache=True, inline="always")
+def stored_energy(code, p0, p1, p2, delta, slip):
+    """Elastic energy [J] the contact would give back if unloaded now (scalar form).
+
+    The work the contact force has done on the bodies, minus this, is the energy the impact
+    has dissipated so far. Zero while the gap is open.
+    """
+    if delta <= 0.0:
+        return 0.0
+    if code == LINEAR_SPRING or code == KELVIN_VOIGT or code == MODIFIED_KELVIN_VOIGT:
+        return 0.5 * p0 * delta * delta
+    if code == HERTZ or code == HUNT_CROSSLEY:
+        return p0 * delta ** (p1 + 1.0) / (p1 + 1.0)
+    if code == NONLINEAR_VISCOELASTIC:
+        return p0 * delta**2.5 / 2.5
+    # bilinear: K2 spring plus the elastic part of the elasto-plastic branch
+    kp = p0 - p1
+    fp = min(max(kp * (delta - slip), 0.0), kp * p2)
+    return 0.5 * p1 * delta * delta + 0.5 * fp * fp / kp
+
+
+@njit(cache=True)
+def contact_stored_energy(code, params, delta, state):
+    """Array form of :func:`stored_energy` (``state`` as the contract's vector)."""
+    p = np.zeros(PARAMS_SIZE)
+    for i in range(min(params.shape[0], PARAMS_SIZE)):
+        p[i] = params[i]
+    return stored_energy(code, p[0], p[1], p[2], delta, state[SLIP])

@@ -25,50 +25,48 @@ DELTA_TINY: float = 1e-300
 
 
 # --------------------------------------------------------------------------- kernels
-@njit(cache=True)
-def hertz_trial(params, delta, rate, committed, out):
+# Compiled trials (contract step 4): (p0, p1, p2, δ, δ̇, v0, slip, dmax) →
+# (F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax').
+@njit(cache=True, inline="always")
+def hertz_trial(k, n, _p2, delta, rate, v0, slip, dmax):
     """Hertz ``F = k_h δⁿ`` (params: [k_h, n])."""
-    if open_or_onset(delta, rate, committed, out) == 0.0:
-        return 0.0, 0.0, 0.0
-    k = params[0]
-    n = params[1]
-    f = k * delta**n
-    return f, n * f / max(delta, DELTA_TINY), 0.0
-
-
-@njit(cache=True)
-def hunt_crossley_trial(params, delta, rate, committed, out):
-    """Hunt–Crossley ``F = k_h δⁿ (1 + χ δ̇ / v0)`` (params: [k_h, n, χ]), clipped at F ≥ 0."""
-    v0 = open_or_onset(delta, rate, committed, out)
+    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
     if v0 == 0.0:
-        return 0.0, 0.0, 0.0
-    k = params[0]
-    n = params[1]
-    chi = params[2]
+        return 0.0, 0.0, 0.0, v0, slip, dmax
+    f = k * delta**n
+    return f, n * f / max(delta, DELTA_TINY), 0.0, v0, slip, dmax
+
+
+@njit(cache=True, inline="always")
+def hunt_crossley_trial(k, n, chi, delta, rate, v0, slip, dmax):
+    """Hunt–Crossley ``F = k_h δⁿ (1 + χ δ̇ / v0)`` (params: [k_h, n, χ]), clipped at F ≥ 0."""
+    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
+    if v0 == 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
     fe = k * delta**n
     factor = 1.0 + chi * rate / v0
     if factor <= 0.0:
-        return 0.0, 0.0, 0.0
-    return fe * factor, n * fe * factor / max(delta, DELTA_TINY), fe * chi / v0
+        return 0.0, 0.0, 0.0, v0, slip, dmax
+    return (fe * factor, n * fe * factor / max(delta, DELTA_TINY), fe * chi / v0,
+            v0, slip, dmax)
 
 
-@njit(cache=True)
-def nonlinear_viscoelastic_trial(params, delta, rate, committed, out):
+@njit(cache=True, inline="always")
+def nonlinear_viscoelastic_trial(k, zeta, m, delta, rate, v0, slip, dmax):
     """Jankowski ``F = k_h δ^1.5 + c δ̇`` approaching, ``k_h δ^1.5`` separating, with
     ``c = 2 ζ sqrt(k_h sqrt(δ) m_eff)`` (params: [k_h, ζ, m_eff]).
     """
-    if open_or_onset(delta, rate, committed, out) == 0.0:
-        return 0.0, 0.0, 0.0
-    k = params[0]
-    zeta = params[1]
-    m = params[2]
+    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
+    if v0 == 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
     d = max(delta, DELTA_TINY)
-    fe = k * d**1.5
-    ke = 1.5 * k * np.sqrt(d)
+    sd = np.sqrt(d)
+    fe = k * d * sd
+    ke = 1.5 * k * sd
     if rate > 0.0:
-        c = 2.0 * zeta * np.sqrt(k * np.sqrt(d) * m)
-        return fe + c * rate, ke + 0.25 * c * rate / d, c
-    return fe, ke, 0.0
+        c = 2.0 * zeta * np.sqrt(k * sd * m)
+        return fe + c * rate, ke + 0.25 * c * rate / d, c, v0, slip, dmax
+    return fe, ke, 0.0, v0, slip, dmax
 
 
 # --------------------------------------------------------------------------- laws

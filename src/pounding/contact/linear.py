@@ -24,42 +24,42 @@ from pounding.validation import non_negative, positive
 
 
 # --------------------------------------------------------------------------- kernels
-@njit(cache=True)
-def linear_spring_trial(params, delta, rate, committed, out):
+# Compiled trials (contract step 4): (p0, p1, p2, δ, δ̇, v0, slip, dmax) →
+# (F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax').
+@njit(cache=True, inline="always")
+def linear_spring_trial(k, _p1, _p2, delta, rate, v0, slip, dmax):
     """Gap spring ``F = k δ`` (params: [k])."""
-    if open_or_onset(delta, rate, committed, out) == 0.0:
-        return 0.0, 0.0, 0.0
-    k = params[0]
-    return k * delta, k, 0.0
+    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
+    if v0 == 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
+    return k * delta, k, 0.0, v0, slip, dmax
 
 
-@njit(cache=True)
-def kelvin_voigt_trial(params, delta, rate, committed, out):
+@njit(cache=True, inline="always")
+def kelvin_voigt_trial(k, c, tension, delta, rate, v0, slip, dmax):
     """Kelvin–Voigt ``F = k δ + c δ̇`` (params: [k, c, tension]).
 
     With ``tension == 1`` the dashpot may pull (F < 0) until ``δ = 0``; otherwise the force
     is clipped at zero and the bodies separate when it returns to zero.
     """
-    if open_or_onset(delta, rate, committed, out) == 0.0:
-        return 0.0, 0.0, 0.0
-    k = params[0]
-    c = params[1]
+    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
+    if v0 == 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
     f = k * delta + c * rate
-    if f < 0.0 and params[2] == 0.0:
-        return 0.0, 0.0, 0.0
-    return f, k, c
+    if f < 0.0 and tension == 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
+    return f, k, c, v0, slip, dmax
 
 
-@njit(cache=True)
-def modified_kelvin_voigt_trial(params, delta, rate, committed, out):
+@njit(cache=True, inline="always")
+def modified_kelvin_voigt_trial(k, c, _p2, delta, rate, v0, slip, dmax):
     """Modified Kelvin–Voigt: ``F = k δ + c δ̇`` approaching, ``F = k δ`` separating."""
-    if open_or_onset(delta, rate, committed, out) == 0.0:
-        return 0.0, 0.0, 0.0
-    k = params[0]
-    c = params[1]
+    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
+    if v0 == 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
     if rate > 0.0:
-        return k * delta + c * rate, k, c
-    return k * delta, k, 0.0
+        return k * delta + c * rate, k, c, v0, slip, dmax
+    return k * delta, k, 0.0, v0, slip, dmax
 
 
 # --------------------------------------------------------------------------- laws

@@ -1,0 +1,633 @@
+"""The one compiled time stepper (numba) for buildings that pound.
+
+Two regimes, one kernel:
+
+1. **All gaps open.** The structure is linear and the ground acceleration is linear between
+   grid points, so each grid step is taken with the exact propagator of
+   :mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``). Input and
+   viscous energies over the step use Simpson's rule with the exact mid-step state.
+   After each step every gap is checked for closing at the step end *and inside it* (an
+   interior maximum of the cubic Hermite interpolant of δ), so no touch is missed.
+2. **Any contact closed (or about to close).** The step is re-taken with an adaptive
+   Dormand–Prince 5(4) integrator (Dormand & Prince 1980, J. Comput. Appl. Math.
+   6(1):19–26; coefficients as in Hairer, Nørsett & Wanner, *Solving ODEs I*, Table 5.2)
+   whose steps land exactly on grid points. Events are located on actual RK steps by the
+   Illinois method: a gap closing (``δ = 0`` upward: contact onset, where ``v0`` is
+   committed — contract step 3), reopening (``δ = 0`` downward: separation), and the
+   rate ``δ̇`` changing sign inside a contact (approach ↔ restitution, where laws switch
+   branch). Contact states are committed only at accepted step ends and events (contract
+   step 4). Energies (input, viscous, contact work per contact) are integrated with the
+   same RK weights, so they are as accurate as the motion.
+
+The kernel advances a chunk of grid steps ``[k0, k1)`` and keeps everything it needs between
+chunks in a workspace, so the caller can show progress on long runs.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
+from pounding.contact.dispatch import law_trial, stored_energy
+
+# Dormand–Prince 5(4) tableau
+_C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
+_A21 = 1.0 / 5.0
+_A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
+_A41, _A42, _A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+_A51, _A52, _A53, _A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+_A61, _A62, _A63, _A64, _A65 = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
+                                -5103.0 / 18656.0)
+_B1, _B3, _B4, _B5, _B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0
+_E1, _E3, _E4, _E5, _E6, _E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0,
+                                -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0)
+
+# Columns of the impact table
+IMP_CONTACT, IMP_START, IMP_END, IMP_V0, IMP_PEAK, IMP_DMAX, IMP_E, IMP_ENERGY = range(8)
+IMP_COLUMNS = 8
+
+# Columns of the energy history
+E_INPUT, E_KINETIC, E_STRAIN, E_DAMPING, E_CONTACT_WORK, E_CONTACT_STORED = range(6)
+ENERGY_COLUMNS = 6
+
+# Workspace scalars (ws_f) and integers (ws_i)
+W_T_LOCAL, W_H, W_E_INPUT, W_E_DAMP = range(4)
+I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS = range(6)
+
+
+@njit(cache=True)
+def _deriv(y, ag, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap, ccode, cparams,
+           committed, dy, power, row):
+    """dy = f(y) for the structure with contacts; power = [input, viscous, per-contact F δ̇].
+
+    Writes row ``row`` of ``dy`` and ``power`` (2-D arrays: no views in the hot loop).
+    Contact forces use the committed states (read only).
+    """
+    nc = cl.shape[0]
+    # structural part: acc = −M⁻¹K u − M⁻¹C v − r a_g
+    p_in = 0.0
+    p_d = 0.0
+    for i in range(n):
+        acc = -r[i] * ag
+        for j in range(n):
+            acc -= minv_k[i, j] * y[j] + minv_c[i, j] * y[n + j]
+        dy[row, i] = y[n + i]
+        dy[row, n + i] = acc
+        p_in -= y[n + i] * mr[i] * ag
+        cv = 0.0
+        for j in range(n):
+            cv += c_mat[i, j] * y[n + j]
+        p_d += y[n + i] * cv
+    power[row, 0] = p_in
+    power[row, 1] = p_d
+    for c in range(nc):
+        a = cl[c]
+        b = cr[c]
+        delta = y[a] - y[b] - cgap[c]
+        rate = y[n + a] - y[n + b]
+        f = 0.0
+        if delta > 0.0 or committed[c, V0] > 0.0:
+            f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
+                          committed[c, V0], committed[c, SLIP], committed[c, DMAX])[0]
+        power[row, 2 + c] = f * rate
+        if f != 0.0:
+            # force f pushes the left floor left (−f) and the right floor right (+f)
+            for i in range(n):
+                dy[row, n + i] += f * (minv[i, b] - minv[i, a])
+
+
+@njit(cache=True)
+def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap,
+             ccode, cparams, committed, ks, ps, ytmp, y1, atol, rtol):
+    """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
+
+    ``ag0 + dag * s`` is the ground acceleration at local time s; s0 is the local start.
+    Writes y1 and the stage derivatives/powers (ks, ps: 7 rows); returns the error norm.
+    Row 6 of ks/ps is f at y1 (first-same-as-last).
+    """
+    m = y0.shape[0]
+    ks[0, :] = k1[0]
+    ps[0, :] = p1[0]
+    for i in range(m):
+        ytmp[i] = y0[i] + h * _A21 * ks[0, i]
+    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+           cgap, ccode, cparams, committed, ks, ps, 1)
+    for i in range(m):
+        ytmp[i] = y0[i] + h * (_A31 * ks[0, i] + _A32 * ks[1, i])
+    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+           cgap, ccode, cparams, committed, ks, ps, 2)
+    for i in range(m):
+        ytmp[i] = y0[i] + h * (_A41 * ks[0, i] + _A42 * ks[1, i] + _A43 * ks[2, i])
+    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+           cgap, ccode, cparams, committed, ks, ps, 3)
+    for i in range(m):
+        ytmp[i] = y0[i] + h * (_A51 * ks[0, i] + _A52 * ks[1, i] + _A53 * ks[2, i]
+                               + _A54 * ks[3, i])
+    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+           cgap, ccode, cparams, committed, ks, ps, 4)
+    for i in range(m):
+        ytmp[i] = y0[i] + h * (_A61 * ks[0, i] + _A62 * ks[1, i] + _A63 * ks[2, i]
+                               + _A64 * ks[3, i] + _A65 * ks[4, i])
+    _deriv(ytmp, ag0 + dag * (s0 + h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+           cgap, ccode, cparams, committed, ks, ps, 5)
+    for i in range(m):
+        y1[i] = y0[i] + h * (_B1 * ks[0, i] + _B3 * ks[2, i] + _B4 * ks[3, i]
+                             + _B5 * ks[4, i] + _B6 * ks[5, i])
+    _deriv(y1, ag0 + dag * (s0 + h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+           cgap, ccode, cparams, committed, ks, ps, 6)
+    err = 0.0
+    for i in range(m):
+        e = h * (_E1 * ks[0, i] + _E3 * ks[2, i] + _E4 * ks[3, i] + _E5 * ks[4, i]
+                 + _E6 * ks[5, i] + _E7 * ks[6, i])
+        sc = atol[i] + rtol * max(abs(y0[i]), abs(y1[i]))
+        err += (e / sc) ** 2
+    return np.sqrt(err / m)
+
+
+@njit(cache=True)
+def _hermite_root(g0, d0, g1, d1, h, upward):
+    """First root in (0, h] of the cubic Hermite interpolant of g (values g0, g1; slopes d0,
+    d1), crossing upward (g from ≤ 0 to > 0) if ``upward`` else downward. −1 if none.
+
+    Also finds a root that lies between two same-signed ends (a grazing touch).
+    """
+    # sample the cubic densely enough to bracket the first crossing, then bisect
+    nsamp = 16
+    prev = g0
+    s_prev = 0.0
+    for k in range(1, nsamp + 1):
+        s = k / nsamp
+        h00 = 2 * s**3 - 3 * s**2 + 1
+        h10 = s**3 - 2 * s**2 + s
+        h01 = -2 * s**3 + 3 * s**2
+        h11 = s**3 - s**2
+        g = h00 * g0 + h10 * h * d0 + h01 * g1 + h11 * h * d1
+        crossed = (prev <= 0.0 < g) if upward else (prev >= 0.0 > g)
+        if crossed:
+            lo = s_prev
+            hi = s
+            for _ in range(50):
+                mid = 0.5 * (lo + hi)
+                h00 = 2 * mid**3 - 3 * mid**2 + 1
+                h10 = mid**3 - 2 * mid**2 + mid
+                h01 = -2 * mid**3 + 3 * mid**2
+                h11 = mid**3 - mid**2
+                gm = h00 * g0 + h10 * h * d0 + h01 * g1 + h11 * h * d1
+                if (gm > 0.0) == upward:
+                    hi = mid
+                else:
+                    lo = mid
+            return hi * h
+        prev = g
+        s_prev = s
+    return -1.0
+
+
+@njit(cache=True)
+def _event_value(kind, c, y, n, cl, cr, cgap):
+    """Event function of contact c: δ for onset/separation, δ̇ for phase switches."""
+    a = cl[c]
+    b = cr[c]
+    if kind == 3 or kind == 4:
+        return y[n + a] - y[n + b]
+    return y[a] - y[b] - cgap[c]
+
+
+@njit(cache=True)
+def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind):
+    # k0: row 0 is f(y0); k1: row 6 is f(y1)
+    """Earliest event in a step, from the Hermite interpolants of every contact's δ and δ̇.
+
+    Returns (time estimate, contact, kind) with kind 1 onset, 2 separation, 3 maximum
+    compression (δ̇: + → −), 4 reloading (δ̇: − → +); (−1, −1, 0) if none.
+    """
+    best_t = 1e300
+    best_c = -1
+    best_k = 0
+    for c in range(cl.shape[0]):
+        a = cl[c]
+        b = cr[c]
+        d0 = y0[a] - y0[b] - cgap[c]
+        d1 = y1[a] - y1[b] - cgap[c]
+        r0 = y0[n + a] - y0[n + b]
+        r1 = y1[n + a] - y1[n + b]
+        bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
+        if committed[c, V0] == 0.0:
+            if max(d0, d1) + bound <= 0.0:
+                continue
+            if not (c == skip_c and skip_kind == 1):
+                t = _hermite_root(d0, r0, d1, r1, h, True)
+                if t > 0.0 and t < best_t:
+                    best_t, best_c, best_k = t, c, 1
+        else:
+            if not (c == skip_c and skip_kind == 2) and min(d0, d1) - bound <= 0.0:
+                t = _hermite_root(d0, r0, d1, r1, h, False)
+                if d1 <= 0.0 and t < 0.0:
+                    t = h
+                if t > 0.0 and t < best_t:
+                    best_t, best_c, best_k = t, c, 2
+            acc0 = k0[0, n + a] - k0[0, n + b]
+            acc1 = k1[6, n + a] - k1[6, n + b]
+            if r0 > 0.0 and r1 <= 0.0 and not (c == skip_c and skip_kind == 3):
+                t = _hermite_root(r0, acc0, r1, acc1, h, False)
+                if t < 0.0:
+                    t = h
+                if t < best_t:
+                    best_t, best_c, best_k = t, c, 3
+            elif r0 < 0.0 and r1 >= 0.0 and not (c == skip_c and skip_kind == 4):
+                t = _hermite_root(r0, acc0, r1, acc1, h, True)
+                if t < 0.0:
+                    t = h
+                if t < best_t:
+                    best_t, best_c, best_k = t, c, 4
+    if best_c < 0:
+        return -1.0, -1, 0
+    return best_t, best_c, best_k
+
+
+@njit(cache=True)
+def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c, c_mat,
+                    k_mat, m_mat, mr, r, minv, cl, cr, cgap, ccode, cparams, rtol, atol,
+                    h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
+                    u_out, v_out, acc_out, pen_out, f_out, e_out, imp):
+    """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``.
+
+    Parameters (all arrays are updated in place)
+    ----------
+    dt : float
+        Grid step [s]. ``ag`` (nt,) ground acceleration at grid points [m/s²].
+    phi, g0, g1 / phih, g0h, g1h
+        Exact propagators over dt and dt/2.
+    minv_k, minv_c, c_mat, k_mat, m_mat, mr, r, minv
+        M⁻¹K, M⁻¹C, C, K, M, M r, r, M⁻¹.
+    cl, cr, cgap, ccode, cparams
+        Contacts: left/right DOF, gap [m], law code, law constants.
+    rtol : float; atol : (2N,)
+        RK tolerances. ``h_max`` caps RK steps [s].
+    x : (2N,)
+        State [u, u̇] at grid point k0 (relative to the ground).
+    committed : (n_c, STATE_SIZE)
+        Committed contact states.
+    wc, w_start : (n_c,)
+        Cumulative contact work [J], and its value at each open impact's start.
+    imp_row : (n_c,) int
+        Row of each contact's open impact in ``imp`` (−1 if none).
+    last_f : (n_c, 4)
+        Last two step-end (t, F) per contact, for the parabolic peak-force refinement.
+    ws_f, ws_i
+        Workspace scalars (local time, RK step, cumulative input and viscous energy) and
+        counters (mode, impacts, overflow, RK steps, rejections, events).
+    u_out, v_out, acc_out : (nt, N); pen_out, f_out : (nt, n_c); e_out : (nt, 6); imp : (cap, 8)
+        Outputs.
+    """
+    n = r.shape[0]
+    m = 2 * n
+    nc = cl.shape[0]
+    ks = np.zeros((7, m))
+    ps = np.zeros((7, 2 + nc))
+    ks_b = np.zeros((7, m))
+    ps_b = np.zeros((7, 2 + nc))
+    ytmp = np.zeros(m)
+    y1 = np.zeros(m)
+    yb = np.zeros(m)
+    kx = np.zeros((1, m))
+    px = np.zeros((1, 2 + nc))
+    xm = np.zeros(m)
+    x1 = np.zeros(m)
+    cap = imp.shape[0]
+
+    for k in range(k0, k1):
+        t_k = k * dt
+        a0 = ag[k]
+        a1 = ag[k + 1]
+        dag = (a1 - a0) / dt
+        if ws_i[I_MODE] == 0:
+            # ---------------- exact step (all gaps open)
+            amid = 0.5 * (a0 + a1)
+            for i in range(m):
+                s1 = g0[i] * a0 + g1[i] * a1
+                for j in range(m):
+                    s1 += phi[i, j] * x[j]
+                x1[i] = s1
+            touched = False
+            for c in range(nc):
+                a = cl[c]
+                b = cr[c]
+                d0 = x[a] - x[b] - cgap[c]
+                d1 = x1[a] - x1[b] - cgap[c]
+                r0 = x[n + a] - x[n + b]
+                r1 = x1[n + a] - x1[n + b]
+                # cheap bound first: the cubic cannot rise above this
+                if d1 > 0.0 or (max(d0, d1) + 0.25 * dt * (abs(r0) + abs(r1)) > 0.0
+                                and _hermite_root(d0, r0, d1, r1, dt, True) > 0.0):
+                    touched = True
+                    break
+            if not touched:
+                # mid-step velocity (exact), then Simpson's rule for input and viscous energy
+                for i in range(n, m):
+                    sh = g0h[i] * a0 + g1h[i] * amid
+                    for j in range(m):
+                        sh += phih[i, j] * x[j]
+                    xm[i] = sh
+                pin0 = 0.0
+                pinm = 0.0
+                pin1 = 0.0
+                pd0 = 0.0
+                pdm = 0.0
+                pd1 = 0.0
+                for i in range(n):
+                    pin0 -= x[n + i] * mr[i]
+                    pinm -= xm[n + i] * mr[i]
+                    pin1 -= x1[n + i] * mr[i]
+                    c0 = 0.0
+                    cm = 0.0
+                    c1 = 0.0
+                    for j in range(n):
+                        c0 += c_mat[i, j] * x[n + j]
+                        cm += c_mat[i, j] * xm[n + j]
+                        c1 += c_mat[i, j] * x1[n + j]
+                    pd0 += x[n + i] * c0
+                    pdm += xm[n + i] * cm
+                    pd1 += x1[n + i] * c1
+                ws_f[W_E_INPUT] += dt / 6.0 * (pin0 * a0 + 4.0 * pinm * amid + pin1 * a1)
+                ws_f[W_E_DAMP] += dt / 6.0 * (pd0 + 4.0 * pdm + pd1)
+                for i in range(m):
+                    x[i] = x1[i]
+                # relative acceleration for the output (no contact force acts)
+                for i in range(n):
+                    acc = -r[i] * a1
+                    for j in range(n):
+                        acc -= minv_k[i, j] * x[j] + minv_c[i, j] * x[n + j]
+                    kx[0, n + i] = acc
+            else:
+                ws_i[I_MODE] = 1
+        if ws_i[I_MODE] == 1:
+            # ---------------- adaptive RK with events, landing on t_k + dt
+            s = 0.0
+            h = min(ws_f[W_H], dt, h_max)
+            _deriv(x, a0, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap, ccode, cparams,
+                   committed, kx, px, 0)
+            while s < dt:
+                last = False
+                if s + h >= dt * (1.0 - 1e-12):
+                    h = dt - s
+                    last = True
+                err = _rk_step(x, kx, px, h, a0, dag, s, n, minv_k, minv_c, c_mat, mr, r, minv,
+                               cl, cr, cgap, ccode, cparams, committed, ks, ps, ytmp,
+                               y1, atol, rtol)
+                ws_i[I_NSTEPS] += 1
+                if err > 1.0 or not np.isfinite(err):
+                    ws_i[I_NREJECT] += 1
+                    fac = 0.9 * err ** -0.2 if np.isfinite(err) else 0.1
+                    h *= max(0.1, fac)
+                    ws_f[W_H] = h
+                    if h < 1e-14 * dt:
+                        ws_i[I_OVERFLOW] = 2  # step size underflow
+                        return
+                    continue
+                # events inside the accepted step?
+                h_try = h
+                fac_try = min(5.0, max(0.2, 0.9 * err ** -0.2)) if err > 0.0 else 5.0
+                h_acc = h
+                te, ce, kind = _find_event(x, kx, y1, ks, h, n, cl, cr, cgap, committed, -1, 0)
+                ev_c = -1
+                ev_kind = 0
+                while ce >= 0:
+                    # locate on real RK steps by the Illinois method, keeping the 'after' side
+                    g_lo = _event_value(kind, ce, x, n, cl, cr, cgap)
+                    g_hi = _event_value(kind, ce, y1, n, cl, cr, cgap)
+                    upward = kind == 1 or kind == 4
+                    lo = 0.0
+                    hi = h_acc
+                    side_ok = (g_hi > 0.0) if upward else (g_hi <= 0.0)
+                    if kind == 2 and g_hi == 0.0:
+                        side_ok = True
+                    found_hi = side_ok
+                    if not side_ok:
+                        # grazing: both ends on the 'before' side; test the estimate
+                        err = _rk_step(x, kx, px, te, a0, dag, s, n, minv_k, minv_c, c_mat, mr,
+                                       r, minv, cl, cr, cgap, ccode, cparams, committed,
+                                       ks_b, ps_b, ytmp, yb, atol, rtol)
+                        g_te = _event_value(kind, ce, yb, n, cl, cr, cgap)
+                        if (g_te > 0.0) == upward and g_te != 0.0:
+                            hi = te
+                            g_hi = g_te
+                            found_hi = True
+                    if not found_hi:
+                        break  # the interpolant's touch was not real
+                    t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
+                    if kind == 3 or kind == 4:
+                        g_tol = atol[n + cl[ce]]
+                    else:
+                        g_tol = atol[cl[ce]]
+                    side = 0
+                    have_after = False
+                    for _ in range(60):
+                        err = _rk_step(x, kx, px, t_try, a0, dag, s, n, minv_k, minv_c, c_mat,
+                                       mr, r, minv, cl, cr, cgap, ccode, cparams, committed,
+                                       ks_b, ps_b, ytmp, yb, atol, rtol)
+                        ws_i[I_NSTEPS] += 1
+                        g = _event_value(kind, ce, yb, n, cl, cr, cgap)
+                        after = (g > 0.0) if upward else (g <= 0.0)
+                        if after:
+                            hi = t_try
+                            g_hi = g
+                            if side == 1:
+                                g_lo *= 0.5
+                            side = 1
+                            # keep this step: it may be the one we take
+                            have_after = True
+                            err_after = err
+                            for i in range(m):
+                                y1[i] = yb[i]
+                            ks[:, :] = ks_b
+                            ps[:, :] = ps_b
+                            if abs(g) <= g_tol:
+                                break
+                        else:
+                            lo = t_try
+                            g_lo = g
+                            if side == -1:
+                                g_hi *= 0.5
+                            side = -1
+                        if hi - lo <= 1e-13 * dt + 1e-15:
+                            break
+                        denom = g_hi - g_lo
+                        t_try = (lo * g_hi - hi * g_lo) / denom if denom != 0.0 else 0.5 * (lo + hi)
+                        if not (lo < t_try < hi):
+                            t_try = 0.5 * (lo + hi)
+                    if not have_after:
+                        # the bracket's after end is the full step (or the grazing test)
+                        err_after = _rk_step(x, kx, px, hi, a0, dag, s, n, minv_k, minv_c,
+                                             c_mat, mr, r, minv, cl, cr, cgap, ccode, cparams,
+                                             committed, ks, ps, ytmp, y1, atol, rtol)
+                        ws_i[I_NSTEPS] += 1
+                    err = err_after
+                    h_acc = hi
+                    ev_c = ce
+                    ev_kind = kind
+                    last = False
+                    # any other event earlier in this shorter step?
+                    te, ce, kind = _find_event(x, kx, y1, ks, h_acc, n, cl, cr, cgap,
+                                               committed, ev_c, ev_kind)
+                # ---- accept the step [s, s + h_acc]
+                ws_f[W_E_INPUT] += h_acc * (_B1 * ps[0, 0] + _B3 * ps[2, 0] + _B4 * ps[3, 0]
+                                            + _B5 * ps[4, 0] + _B6 * ps[5, 0])
+                ws_f[W_E_DAMP] += h_acc * (_B1 * ps[0, 1] + _B3 * ps[2, 1] + _B4 * ps[3, 1]
+                                           + _B5 * ps[4, 1] + _B6 * ps[5, 1])
+                for c in range(nc):
+                    wc[c] += h_acc * (_B1 * ps[0, 2 + c] + _B3 * ps[2, 2 + c]
+                                      + _B4 * ps[3, 2 + c] + _B5 * ps[4, 2 + c]
+                                      + _B6 * ps[5, 2 + c])
+                for i in range(m):
+                    x[i] = y1[i]
+                s_new = dt if last else s + h_acc
+                t_now = t_k + s_new
+                # commit contact states at the step end; handle the event
+                state_changed = False
+                for c in range(nc):
+                    a = cl[c]
+                    b = cr[c]
+                    delta = x[a] - x[b] - cgap[c]
+                    rate = x[n + a] - x[n + b]
+                    if c == ev_c and ev_kind == 1:
+                        # contact onset (contract step 3): commit v0 at the located instant
+                        committed[c, V0] = max(rate, V0_MIN)
+                        committed[c, SLIP] = 0.0
+                        committed[c, DMAX] = max(delta, 0.0)
+                        state_changed = True
+                        f0 = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
+                                       max(delta, 1e-300), rate, committed[c, V0],
+                                       committed[c, SLIP], committed[c, DMAX])[0]
+                        row = ws_i[I_NIMP]
+                        if row < cap:
+                            imp[row, IMP_CONTACT] = c
+                            imp[row, IMP_START] = t_now
+                            imp[row, IMP_END] = np.nan
+                            imp[row, IMP_V0] = committed[c, V0]
+                            imp[row, IMP_PEAK] = f0
+                            imp[row, IMP_DMAX] = 0.0
+                            imp[row, IMP_E] = np.nan
+                            imp[row, IMP_ENERGY] = np.nan
+                            imp_row[c] = row
+                        else:
+                            ws_i[I_OVERFLOW] = 1
+                            imp_row[c] = -1
+                        ws_i[I_NIMP] += 1
+                        w_start[c] = wc[c]
+                        last_f[c, 0] = t_now
+                        last_f[c, 1] = f0
+                        last_f[c, 2] = t_now
+                        last_f[c, 3] = f0
+                        ws_i[I_NEVENTS] += 1
+                    elif committed[c, V0] > 0.0:
+                        if c == ev_c and ev_kind == 2:
+                            # separation: close the impact's row, open the state
+                            row = imp_row[c]
+                            if row >= 0:
+                                imp[row, IMP_END] = t_now
+                                imp[row, IMP_E] = max(-rate, 0.0) / committed[c, V0]
+                                imp[row, IMP_ENERGY] = wc[c] - w_start[c]
+                            imp_row[c] = -1
+                            for q in range(STATE_SIZE):
+                                committed[c, q] = 0.0
+                            state_changed = True
+                            ws_i[I_NEVENTS] += 1
+                        else:
+                            f, _, _, tv0, tslip, tdmax = law_trial(
+                                ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta,
+                                rate, committed[c, V0], committed[c, SLIP], committed[c, DMAX])
+                            committed[c, V0] = tv0
+                            committed[c, SLIP] = tslip
+                            committed[c, DMAX] = tdmax
+                            row = imp_row[c]
+                            if row >= 0:
+                                if delta > imp[row, IMP_DMAX]:
+                                    imp[row, IMP_DMAX] = delta
+                                if f > imp[row, IMP_PEAK]:
+                                    imp[row, IMP_PEAK] = f
+                                # parabola through the last three step-end forces
+                                t1 = last_f[c, 0]
+                                f1 = last_f[c, 1]
+                                t2 = last_f[c, 2]
+                                f2 = last_f[c, 3]
+                                if f2 >= f1 and f2 >= f and t2 > t1 and t_now > t2:
+                                    d1 = (f2 - f1) / (t2 - t1)
+                                    d2 = (f - f2) / (t_now - t2)
+                                    curv = (d2 - d1) / (t_now - t1)
+                                    if curv < 0.0:
+                                        tv = 0.5 * (t1 + t2) - d1 / (2.0 * curv)
+                                        if t1 <= tv <= t_now:
+                                            fv = f1 + d1 * (tv - t1) + curv * (tv - t1) * (tv - t2)
+                                            if fv > imp[row, IMP_PEAK]:
+                                                imp[row, IMP_PEAK] = fv
+                            last_f[c, 0] = last_f[c, 2]
+                            last_f[c, 1] = last_f[c, 3]
+                            last_f[c, 2] = t_now
+                            last_f[c, 3] = f
+                            if ev_c == c:
+                                ws_i[I_NEVENTS] += 1
+                if state_changed:
+                    _deriv(x, a0 + dag * s_new, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+                           cgap, ccode, cparams, committed, kx, px, 0)
+                else:
+                    for i in range(m):
+                        kx[0, i] = ks[6, i]
+                    for i in range(2 + nc):
+                        px[0, i] = ps[6, i]
+                # next step size (PI-free elementary controller); a step cut short by the
+                # grid does not shrink the proposal, one cut by an event restarts from it
+                if ev_c >= 0:
+                    ws_f[W_H] = h_try
+                elif last:
+                    ws_f[W_H] = max(ws_f[W_H], h_acc * fac_try)
+                else:
+                    ws_f[W_H] = h_acc * fac_try
+                h = ws_f[W_H]
+                h = min(h, h_max)
+                s = s_new
+            # back to exact stepping once every contact is open
+            any_closed = False
+            for c in range(nc):
+                if committed[c, V0] > 0.0:
+                    any_closed = True
+            if not any_closed:
+                ws_i[I_MODE] = 0
+        # ---------------- outputs at grid point k + 1
+        o = k + 1
+        ek = 0.0
+        es = 0.0
+        for i in range(n):
+            u_out[o, i] = x[i]
+            v_out[o, i] = x[n + i]
+            acc_out[o, i] = kx[0, n + i] + r[i] * a1
+            mv = 0.0
+            kv = 0.0
+            for j in range(n):
+                mv += m_mat[i, j] * x[n + j]
+                kv += k_mat[i, j] * x[j]
+            ek += 0.5 * x[n + i] * mv
+            es += 0.5 * x[i] * kv
+        wsum = 0.0
+        stored = 0.0
+        for c in range(nc):
+            a = cl[c]
+            b = cr[c]
+            delta = x[a] - x[b] - cgap[c]
+            rate = x[n + a] - x[n + b]
+            pen_out[o, c] = delta
+            f = 0.0
+            if committed[c, V0] > 0.0:
+                f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
+                              committed[c, V0], committed[c, SLIP], committed[c, DMAX])[0]
+                stored += stored_energy(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
+                                        delta, committed[c, SLIP])
+            f_out[o, c] = f
+            wsum += wc[c]
+        e_out[o, E_INPUT] = ws_f[W_E_INPUT]
+        e_out[o, E_KINETIC] = ek
+        e_out[o, E_STRAIN] = es
+        e_out[o, E_DAMPING] = ws_f[W_E_DAMP]
+        e_out[o, E_CONTACT_WORK] = wsum
+        e_out[o, E_CONTACT_STORED] = stored

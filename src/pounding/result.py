@@ -1,0 +1,257 @@
+"""What a simulation returns: time histories, the impact table, the energy balance.
+
+:class:`Result` holds plain arrays (SI units) and derives everything else from them:
+storey drifts and shears, peaks, the impact table as a DataFrame, an xarray Dataset with
+units in its attributes (saved to NetCDF), and a JSON summary. :meth:`Result.save` writes
+all of them into a folder, each file atomically.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+from numpy.typing import NDArray
+
+from pounding.ground_motion import GroundMotion
+from pounding.io import atomic_path, write_text
+from pounding.model import PoundingModel
+
+ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "contact_work",
+                                 "contact_stored")
+"""Columns of :attr:`Result.energy` [J]: input energy ``−∫u̇ᵀMr a_g dt``, kinetic
+``½u̇ᵀMu̇`` (relative), elastic strain ``½uᵀKu``, viscous damping ``∫u̇ᵀCu̇ dt``, total work
+of the contact forces ``∫ΣF δ̇ dt``, and the elastic energy still stored in closed contacts.
+Contact-dissipated energy is ``contact_work − contact_stored``."""
+
+IMPACT_COLUMNS: tuple[str, ...] = ("contact", "start", "end", "v0", "peak_force", "max_penetration",
+                                   "restitution", "energy_dissipated")
+
+
+@dataclass(frozen=True)
+class SolverStats:
+    """How the integration went."""
+
+    solver: str
+    rtol: float
+    rk_steps: int = 0
+    rejected: int = 0
+    events: int = 0
+    impact_overflow: bool = False
+    wall_time: float = 0.0
+    """Seconds spent integrating (excluding set-up)."""
+
+
+@dataclass(frozen=True, eq=False)
+class Result:
+    """Time histories and impacts of one simulation (SI units).
+
+    Attributes
+    ----------
+    model : PoundingModel
+    motion : GroundMotion
+    dt : float
+        Output step [s]; ``time = k·dt``.
+    ground : ndarray (nt,)
+        Ground acceleration at output times [m/s²].
+    displacement, velocity : ndarray (nt, N)
+        Floor displacement [m] and velocity [m/s] relative to the ground.
+    abs_acceleration : ndarray (nt, N)
+        Absolute floor acceleration [m/s²].
+    penetration, contact_force : ndarray (nt, n_c)
+        ``δ`` [m] (negative: open gap) and contact force [N] of every contact.
+    energy : ndarray (nt, 6)
+        Cumulative energies [J], columns :data:`ENERGY_NAMES`.
+    impact_array : ndarray (n_impacts, 8)
+        Rows of the impact table, columns :data:`IMPACT_COLUMNS`.
+    stats : SolverStats
+    """
+
+    model: PoundingModel
+    motion: GroundMotion
+    dt: float
+    ground: NDArray[np.float64] = field(repr=False)
+    displacement: NDArray[np.float64] = field(repr=False)
+    velocity: NDArray[np.float64] = field(repr=False)
+    abs_acceleration: NDArray[np.float64] = field(repr=False)
+    penetration: NDArray[np.float64] = field(repr=False)
+    contact_force: NDArray[np.float64] = field(repr=False)
+    energy: NDArray[np.float64] = field(repr=False)
+    impact_array: NDArray[np.float64] = field(repr=False)
+    stats: SolverStats
+
+    # ----------------------------------------------------------------- basic views
+    @property
+    def time(self) -> NDArray[np.float64]:
+        """Output times [s]."""
+        return np.arange(self.displacement.shape[0]) * self.dt
+
+    @property
+    def wall_time(self) -> float:
+        """Integration time [s]."""
+        return self.stats.wall_time
+
+    @cached_property
+    def drift(self) -> NDArray[np.float64]:
+        """Storey drift ``u_j − u_{j−1}`` [m] (nt, N), storey j of each building."""
+        out = self.displacement.copy()
+        for off, b in zip(self.model.system.offsets, self.model.buildings):
+            out[:, off + 1 : off + b.n] -= self.displacement[:, off : off + b.n - 1]
+        return out
+
+    @cached_property
+    def storey_shear(self) -> NDArray[np.float64]:
+        """Storey shear ``k_j × drift_j`` [N] (nt, N)."""
+        k = np.concatenate([b.stiffnesses for b in self.model.buildings])
+        return self.drift * k
+
+    # ----------------------------------------------------------------- impacts and peaks
+    @cached_property
+    def impacts(self) -> pd.DataFrame:
+        """One row per impact: contact label, start/end [s], impact velocity v0 [m/s], peak
+        force [N], maximum penetration [m], achieved restitution, energy dissipated [J].
+        Impacts still open at the end have NaN end, restitution and energy."""
+        df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
+        labels = [c.label for c in self.model.contacts]
+        df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
+        df.insert(1, "elevation", [self.model.contacts[labels.index(lb)].elevation
+                                   for lb in df["contact"]] if len(df) else [])
+        return df
+
+    @property
+    def n_impacts(self) -> int:
+        """Number of impacts (all contacts)."""
+        return int(self.impact_array.shape[0])
+
+    @property
+    def peak_contact_force(self) -> NDArray[np.float64]:
+        """Largest force of every contact [N] (n_c,), from the impact table (sub-step
+        resolution), or 0 for a contact that never closed."""
+        out = np.zeros(len(self.model.contacts))
+        for row in self.impact_array:
+            c = int(row[0])
+            out[c] = max(out[c], row[4])
+        return out
+
+    @property
+    def peak_displacement(self) -> NDArray[np.float64]:
+        """Largest |displacement| of every floor [m] (N,)."""
+        return np.abs(self.displacement).max(axis=0)
+
+    @property
+    def contact_dissipated(self) -> NDArray[np.float64]:
+        """Energy dissipated in contacts so far [J] (nt,)."""
+        return self.energy[:, 4] - self.energy[:, 5]
+
+    @cached_property
+    def energy_balance_error(self) -> float:
+        """Largest ``|E_input − (E_kin + E_strain + E_damping + W_contact)|`` over the run,
+        relative to the largest input energy (dimensionless)."""
+        e = self.energy
+        closure = e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4])
+        scale = max(np.abs(e[:, 0]).max(), 1e-300)
+        return float(np.abs(closure).max() / scale)
+
+    # ----------------------------------------------------------------- exports
+    def to_dataset(self) -> xr.Dataset:
+        """All time histories as an xarray Dataset with units and descriptions."""
+        dofs = self.model.dof_labels()
+        contacts = [c.label for c in self.model.contacts]
+        t = self.time
+
+        def da(values: np.ndarray, dims: tuple[str, ...], units: str, desc: str) -> xr.DataArray:
+            return xr.DataArray(values, dims=dims, attrs={"units": units, "long_name": desc})
+
+        ds = xr.Dataset(
+            {
+                "ground_acceleration": da(self.ground, ("time",), "m/s^2", "ground acceleration"),
+                "displacement": da(self.displacement, ("time", "floor"), "m",
+                                   "floor displacement relative to the ground"),
+                "velocity": da(self.velocity, ("time", "floor"), "m/s",
+                               "floor velocity relative to the ground"),
+                "absolute_acceleration": da(self.abs_acceleration, ("time", "floor"), "m/s^2",
+                                            "absolute floor acceleration"),
+                "drift": da(self.drift, ("time", "floor"), "m",
+                            "storey drift (floor minus floor below)"),
+                "storey_shear": da(self.storey_shear, ("time", "floor"), "N", "storey shear"),
+                "penetration": da(self.penetration, ("time", "contact"), "m",
+                                  "penetration u_left - u_right - gap (negative: open)"),
+                "contact_force": da(self.contact_force, ("time", "contact"), "N",
+                                    "contact force (compression positive)"),
+                "energy": da(self.energy, ("time", "energy_term"), "J", "cumulative energies"),
+            },
+            coords={
+                "time": xr.DataArray(t, dims=("time",), attrs={"units": "s"}),
+                "floor": dofs,
+                "contact": contacts,
+                "energy_term": list(ENERGY_NAMES),
+                "contact_elevation": xr.DataArray([c.elevation for c in self.model.contacts],
+                                                  dims=("contact",), attrs={"units": "m"}),
+                "floor_elevation": xr.DataArray(
+                    np.concatenate([b.floor_levels for b in self.model.buildings]),
+                    dims=("floor",), attrs={"units": "m"}),
+            },
+            attrs={"model": self.model.name, "record": self.motion.name,
+                   "solver": self.stats.solver, "rtol": self.stats.rtol,
+                   "energy_balance_error": self.energy_balance_error,
+                   "units": "SI (m, kg, s, N, J)"},
+        )
+        return ds
+
+    def summary(self) -> dict[str, Any]:
+        """Headline numbers (JSON-ready), each key naming its unit."""
+        pcf = self.peak_contact_force
+        return {
+            "model": self.model.name,
+            "record": self.motion.name,
+            "record_pga_g": self.motion.pga_g,
+            "duration_s": float(self.time[-1]),
+            "output_step_s": self.dt,
+            "n_impacts": self.n_impacts,
+            "peak_contact_force_N": float(pcf.max()) if pcf.size else 0.0,
+            "peak_contact_force_by_contact_N": {c.label: float(f) for c, f in zip(self.model.contacts, pcf)},
+            "peak_displacement_m": {lb: float(v) for lb, v in zip(self.model.dof_labels(), self.peak_displacement)},
+            "peak_drift_m": {lb: float(v) for lb, v in zip(self.model.dof_labels(), np.abs(self.drift).max(axis=0))},
+            "peak_abs_acceleration_m_s2": {lb: float(v) for lb, v in zip(self.model.dof_labels(), np.abs(self.abs_acceleration).max(axis=0))},
+            "energy_final_J": {name: float(v) for name, v in zip(ENERGY_NAMES, self.energy[-1])},
+            "contact_dissipated_J": float(self.contact_dissipated[-1]),
+            "energy_balance_error": self.energy_balance_error,
+            "solver": {"name": self.stats.solver, "rtol": self.stats.rtol, "rk_steps": self.stats.rk_steps,
+                       "rejected": self.stats.rejected, "events": self.stats.events,
+                       "impact_table_overflow": self.stats.impact_overflow,
+                       "wall_time_s": self.stats.wall_time},
+        }
+
+    def save(self, folder: str | os.PathLike[str]) -> dict[str, Path]:
+        """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``.
+
+        Each file is written under a temporary name and moved into place when complete.
+        """
+        folder = Path(folder)
+        folder.mkdir(parents=True, exist_ok=True)
+        out = {"timehistories": folder / "timehistories.nc", "impacts": folder / "impacts.csv",
+               "summary": folder / "summary.json"}
+        with atomic_path(out["timehistories"]) as tmp:
+            self.to_dataset().to_netcdf(tmp, engine="h5netcdf")
+        write_text(out["impacts"], "# units: start, end [s]; v0 [m/s]; peak_force [N]; "
+                   "max_penetration [m]; restitution [-]; energy_dissipated [J]; elevation [m]\n"
+                   + self.impacts.to_csv(index=False))
+        write_text(out["summary"], json.dumps(_finite(self.summary()), indent=2))
+        return out
+
+
+def _finite(obj: Any) -> Any:
+    """JSON cannot hold NaN/inf: turn them into None."""
+    if isinstance(obj, dict):
+        return {k: _finite(v) for k, v in obj.items()}
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    return obj
