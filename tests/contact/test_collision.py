@@ -313,11 +313,6 @@ def test_histories_are_consistent():
     assert np.trapezoid(r.force, r.t) == pytest.approx(M_EFF * V0 * (1 + r.e), rel=1e-4)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "collision.py: the last sample of CollisionResult.force (the separation instant) is "
-    "either 0 or ≈ −c e v0 for Kelvin–Voigt with tension, depending on the round-off sign "
-    "of the located δ; the history (and force_at) jump under a 1e-9 change of k, which "
-    "stalls fit_impact's finite-difference least squares"))
 def test_force_history_continuous_in_parameters_kelvin_voigt_tension():
     k, c = 92951567.8422661, 1627975.2754144755      # a point fit_impact reached
     t = np.linspace(0.0, 0.1443, 300)

@@ -13,6 +13,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_contact,
     commands_ellipse,
     commands_record,
+    commands_run,
 )
 from pounding.cli.app import app, err_console
 

@@ -102,6 +102,9 @@ class BilinearImpact(ContactLaw):
         """
         kh = positive("k_h", k_h)
         ee = float(restitution(e))
+        if ee >= 1.0:
+            raise ValueError("e must be < 1 for a bilinear impact element (got 1); an elastic "
+                             "contact is Hertz(k_h)")
         dm = positive("delta_m", delta_m)
         aa = in_range("a", a, 0.0, 1.0, low_open=True, high_open=True)
         nn = in_range("n", n, 1.0, 3.0)

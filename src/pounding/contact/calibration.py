@@ -165,20 +165,35 @@ def calibrate(law: ContactLaw, target_e: float, m1: float, m2: float, v0: float 
 
 
 def calibrate_bilinear(k_h: float, target_e: float, m1: float, m2: float, v0: float,
-                       a: float = 0.1, n: float = 1.5) -> Calibration:
+                       delta_m: float | None = None, a: float = 0.1,
+                       n: float = 1.5) -> Calibration:
     """Bilinear impact element that achieves ``target_e`` at impact velocity ``v0``.
 
-    ``δm`` is the elastic Hertz maximum penetration at ``v0`` (Muthukumar 2003); the
-    restitution the loop is sized for (``e`` of :meth:`BilinearImpact.from_hertz`) is found
-    by root finding so the simulated impact achieves ``target_e``.
+    The loop is sized at ``delta_m`` (default: the elastic Hertz maximum penetration at
+    ``v0``, Muthukumar 2003); the restitution it is sized for (``e`` of
+    :meth:`BilinearImpact.from_hertz`) is found by root finding so the simulated impact
+    achieves ``target_e``.
+
+    Raises
+    ------
+    ValueError
+        If no design e reaches the target: an element sized at ``delta_m`` penetrates less
+        than ``delta_m`` and so dissipates less than designed; the message gives the
+        smallest e it can reach.
     """
     e = float(restitution(target_e, "target_e"))
-    dm = hertz_delta_max(k_h, m_effective(m1, m2), v0, n)
+    dm = hertz_delta_max(k_h, m_effective(m1, m2), v0, n) if delta_m is None \
+        else positive("delta_m", delta_m)
 
     def achieved(x: float) -> float:
         return simulate_collision(BilinearImpact.from_hertz(k_h, x, dm, a, n), m1, m2, v0).e
 
-    lo, hi = 1e-3, 1.0
+    lo, hi = 1e-6, 1.0 - 1e-9  # e = 1 is the elastic limit, not a bilinear loop
+    e_min = achieved(lo)
+    if e < e_min:
+        raise ValueError(f"target_e={e:g} is out of reach of a bilinear element sized at "
+                         f"delta_m={dm:.4g} m (it reaches e >= {e_min:.4f}): its own penetration "
+                         f"stays below delta_m, so it dissipates less than designed")
     x = brentq(lambda s: achieved(s) - e, lo, hi, xtol=1e-12)
     law = BilinearImpact.from_hertz(k_h, x, dm, a, n)
     return Calibration(law, "e_design", float(x), e, simulate_collision(law, m1, m2, v0).e,
@@ -279,8 +294,8 @@ def fit_impact(t: ArrayLike, force: ArrayLike, m1: float, m2: float, v0: float,
     impulse = float(np.trapezoid(np.clip(ff, 0.0, None), tt))
     e0 = float(np.clip(impulse / (m_eff * v0) - 1.0, 0.05, 0.95))
     hertzian = name in ("hertz", "hunt-crossley", "nonlinear-viscoelastic")
-    if hertzian:  # elastic Hertz duration ≈ 3.2145 (m²/(k² v0))^(1/5) (Goldsmith)
-        k0 = np.sqrt((3.2145**5) * m_eff**2 / (duration**5 * v0))
+    if hertzian:  # elastic Hertz duration ≈ 3.2181 (m²/(k² v0))^(1/5) (Goldsmith: 2.94 δm/v0)
+        k0 = np.sqrt((3.2181**5) * m_eff**2 / (duration**5 * v0))
     else:
         k0 = m_eff * (np.pi / duration) ** 2
     damped = name not in ("linear-spring", "hertz")

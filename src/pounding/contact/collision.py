@@ -241,13 +241,17 @@ def simulate_collision(law: ContactLaw, m1: float, m2: float, v0: float, *,
     for sol_k, st, (a, b) in zip(segments, state_by_segment, seg_ends):
         tt = np.linspace(a, b, samples)
         yy = sol_k.sol(tt)
-        ff = np.array([contact_trial(code, params, d, r, st, trial)[0] for d, r in zip(yy[0], yy[1])])
+        # the contact is closed on the whole closed interval [onset, separation]: evaluate at
+        # δ ≥ 0+ so the end samples hold the force's one-sided limits (c v0 at onset for a
+        # dashpot law, its tension just before separation), not round-off of the located δ
+        ff = np.array([contact_trial(code, params, max(d, 1e-300), r, st, trial)[0]
+                       for d, r in zip(yy[0], yy[1])])
         i = int(np.argmax(ff))
         peak = max(peak, float(ff[i]))
         if 0 < i < samples - 1:  # refine the interior maximum on the dense output
             def neg_force(s: float, sol_k=sol_k, st=st) -> float:
                 yk = sol_k.sol(s)
-                return -contact_trial(code, params, yk[0], yk[1], st, trial)[0]
+                return -contact_trial(code, params, max(yk[0], 1e-300), yk[1], st, trial)[0]
 
             res = minimize_scalar(neg_force, bounds=(tt[i - 1], tt[i + 1]), method="bounded",
                                   options={"xatol": (b - a) * 1e-12})
