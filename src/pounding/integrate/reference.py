@@ -21,7 +21,7 @@ from scipy.optimize import minimize_scalar
 from pounding.contact.base import STATE_SIZE, V0, V0_MIN
 from pounding.contact.dispatch import contact_stored_energy, contact_trial
 from pounding.ground_motion import GroundMotion
-from pounding.integrate import ground_on_grid, grid_step
+from pounding.integrate import ground_on_grid, grid_step, initial_state
 from pounding.integrate.kernel import ENERGY_COLUMNS, IMP_COLUMNS
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
@@ -30,7 +30,9 @@ REFERENCE_RTOL: float = 1e-10
 
 
 def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float | None = None,
-                       duration: float | None = None, rtol: float = REFERENCE_RTOL) -> Result:
+                       duration: float | None = None, rtol: float = REFERENCE_RTOL,
+                       initial_displacement: np.ndarray | None = None,
+                       initial_velocity: np.ndarray | None = None) -> Result:
     """Reference solution of :func:`pounding.integrate.simulate` (same arguments, same Result).
 
     Slow: minutes for a long record. Outputs at the same grid as :func:`simulate`.
@@ -105,7 +107,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
         return evs
 
     y = np.zeros(2 * n + 2 + nc)
+    y[: 2 * n] = initial_state(model, initial_displacement, initial_velocity)
     out = np.zeros((nt, 2 * n + 2 + nc))
+    out[0] = y
     f_out = np.zeros((nt, nc))
     stored = np.zeros(nt)
     impacts: list[list[float]] = []
