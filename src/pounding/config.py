@@ -270,6 +270,9 @@ class BuildingConfig(_Section):
                  "uniform": "a uniform building (n_storeys, mass, stiffness|period)",
                  "storeys": "a building given storey by storey (masses, stiffnesses, heights)"
                  }[kind]
+        if kind == "sdof" and (self.stiffnesses is not None or self.heights is not None):
+            raise _field_error("masses", "required with stiffnesses/heights: one value [kg] "
+                                         "per floor")
         for key in (*_UNIFORM_KEYS, *_STOREY_KEYS):
             if key not in allowed and getattr(self, key) is not None:
                 raise _field_error(key, f"not a key of {shape} (got {_fmt(getattr(self, key))})")
@@ -481,7 +484,10 @@ class RunConfig(_Section):
         With ``resolve_paths`` the record file is written as an absolute path, so the
         copy still works from another folder.
         """
-        data = self.model_dump(exclude_none=True, exclude_defaults=False)
+        data = self.model_dump(exclude_none=True)
+        if self.contact is not None:
+            keep = LAW_FIELDS[self.contact.law] | {"law", "gap", "gaps"}
+            data["contact"] = {k: v for k, v in data["contact"].items() if k in keep}
         if resolve_paths and self.record.file is not None and self.record.path is not None:
             data["record"]["file"] = str(self.record.path)
         return data
@@ -624,9 +630,9 @@ def _one_error(err: dict[str, Any]) -> str:
         model = _section_model(loc[:-1])
         allowed = sorted(model.model_fields) if model is not None else []
         close = difflib.get_close_matches(key, allowed, n=1)
-        hint = f"did you mean {close[0]!r}? " if close else ""
-        keys = f"; keys here: {', '.join(allowed)}" if allowed else ""
-        return f"{where}: unknown key ({hint}got {_fmt(inp)}){keys}"
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        keys = f" (keys here: {', '.join(allowed)})" if allowed else ""
+        return f"{where}: unknown key (got {_fmt(inp)}){hint}{keys}"
     if typ == "missing":
         return f"{where}: required"
     if typ in ("greater_than", "greater_than_equal", "less_than", "less_than_equal"):

@@ -59,6 +59,55 @@ def restitution_modified_kelvin_voigt(zeta: ArrayLike) -> NDArray[np.float64] | 
     return float(out) if out.ndim == 0 else out
 
 
+def restitution_kelvin_voigt_clipped(zeta: ArrayLike) -> NDArray[np.float64] | float:
+    """Exact ``e`` of the Kelvin–Voigt law whose force is clipped at zero (no tension).
+
+    The bodies separate when ``k δ + c δ̇`` returns to zero, with the spring still
+    compressed:
+
+    * ζ < 1: ``e = exp(−ζ (π − 2 arcsin ζ) / sqrt(1 − ζ²))``
+    * ζ = 1: ``e = exp(−2)``
+    * ζ > 1: ``e = exp(−2 ζ arccosh(ζ) / sqrt(ζ² − 1))``
+
+    Derived from the damped free vibration (cf. Schwager & Pöschel 2007, Phys. Rev. E 75).
+    """
+    z = np.asarray(zeta, dtype=float)
+    if np.any(~np.isfinite(z) | (z < 0.0)):
+        raise ValueError(f"zeta must be finite and >= 0 (got {z})")
+    out = np.empty_like(z)
+    under = z < 1.0 - 1e-9
+    over = z > 1.0 + 1e-9
+    zu = z[under]
+    out[under] = np.exp(-zu * (np.pi - 2.0 * np.arcsin(zu)) / np.sqrt(1.0 - zu**2))
+    zo = z[over]
+    out[over] = np.exp(-2.0 * zo * np.arccosh(zo) / np.sqrt(zo**2 - 1.0))
+    out[~(under | over)] = np.exp(-2.0)
+    return float(out) if out.ndim == 0 else out
+
+
+def restitution_hunt_crossley(chi: ArrayLike) -> NDArray[np.float64] | float:
+    """Exact ``e`` of the Hunt–Crossley law ``F = k δⁿ (1 + χ δ̇/v0)``, any ``n``.
+
+    Dividing the equation of motion by ``δ̇`` and integrating over approach and restitution
+    eliminates ``k`` and ``n``: ``χ (1 + e) = ln((1 + χ) / (1 − χ e))`` — solved here for
+    ``e`` by root finding. Lankarani–Nikravesh's ``χ = 3(1 − e²)/4`` is its small-dissipation
+    limit. (For ``χ e ≥ 1`` the force would vanish before separation; the clipped law then
+    leaves at ``δ̇ = −v0/χ``.)
+    """
+    x = np.atleast_1d(np.asarray(chi, dtype=float))
+    if np.any(~np.isfinite(x) | (x < 0.0)):
+        raise ValueError(f"chi must be finite and >= 0 (got {chi})")
+    out = np.empty_like(x)
+    for i, c in enumerate(x):
+        if c == 0.0:
+            out[i] = 1.0
+            continue
+        g = lambda e, c=c: c * (1.0 + e) - np.log((1.0 + c) / (1.0 - c * e))  # noqa: E731
+        hi = min(1.0, (1.0 - 1e-15) / c)
+        out[i] = brentq(g, 1e-300, hi, xtol=1e-15) if g(hi) < 0.0 else hi
+    return float(out[0]) if np.ndim(chi) == 0 else out
+
+
 def hertz_delta_max(k_h: float, m_eff: float, v0: float, n: float = 1.5) -> float:
     """Maximum penetration [m] of an elastic Hertz impact: ``((n+1) m_eff v0² / (2 k_h))^(1/(n+1))``.
 
@@ -134,8 +183,10 @@ def calibrate(law: ContactLaw, target_e: float, m1: float, m2: float, v0: float 
 
     Notes
     -----
-    Kelvin–Voigt with tension: ``ζ`` of Anagnostopoulos is exact. Modified Kelvin–Voigt:
-    inverts :func:`restitution_modified_kelvin_voigt`. Others: Brent's method on the
+    Closed forms: Kelvin–Voigt with tension (ζ of Anagnostopoulos), clipped Kelvin–Voigt
+    (:func:`restitution_kelvin_voigt_clipped`), modified Kelvin–Voigt
+    (:func:`restitution_modified_kelvin_voigt`), Hunt–Crossley
+    (:func:`restitution_hunt_crossley`). Others (Jankowski's law): Brent's method on the
     simulated e, which decreases monotonically with the damping parameter.
     """
     e = float(restitution(target_e, "target_e"))
@@ -155,6 +206,12 @@ def calibrate(law: ContactLaw, target_e: float, m1: float, m2: float, v0: float 
     elif isinstance(law, ModifiedKelvinVoigt):
         zeta = brentq(lambda z: restitution_modified_kelvin_voigt(z) - e, 0.0, 1e6, xtol=1e-15)
         value, method = 2.0 * zeta * np.sqrt(law.k * m_eff), "closed form"
+    elif isinstance(law, KelvinVoigt):
+        zeta = brentq(lambda z: restitution_kelvin_voigt_clipped(z) - e, 0.0, 1e6, xtol=1e-15)
+        value, method = 2.0 * zeta * np.sqrt(law.k * m_eff), "closed form"
+    elif isinstance(law, HuntCrossley):
+        value = brentq(lambda c: restitution_hunt_crossley(c) - e, 0.0, 1e6, xtol=1e-15)
+        method = "closed form"
     else:
         scale = {"c": 2.0 * np.sqrt(getattr(law, "k", 1.0) * m_eff)}.get(law.damping_field, 1.0)
         value = _root(achieved, e, 0.0, 0.1 * scale, xtol=tol * 1e-3 * scale)

@@ -230,6 +230,10 @@ def simulate_collision(law: ContactLaw, m1: float, m2: float, v0: float, *,
             if len(te):
                 t_end, y_end = float(te[0]), ye[0]
     v_out = -float(y_end[1])
+    # an over-damped contact creeps towards δ = 0 for ever; a round-off crossing after a
+    # long creep, with no velocity left, is sticking, not separation
+    if separated and v_out <= 1e-9 * v0:
+        separated = False
     e = max(v_out, 0.0) / v0 if separated else 0.0
     w = float(y_end[2])
 
