@@ -1,0 +1,209 @@
+"""Run a model file end to end: load, simulate, write every output into one folder.
+
+:func:`run` never leaves a half-written output folder. Everything is written into a hidden
+temporary folder beside the target (``.<name>.tmp-XXXX``) and moved into place only when
+complete; if anything fails (or the run is interrupted with Ctrl-C) the temporary folder is
+removed and a previous output folder is left untouched.
+
+An existing output folder is replaced only with ``overwrite=True``, and only if it looks like
+an earlier output (it holds ``summary.json``) or is empty: the new folder is complete before
+the old one is removed.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import tempfile
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from pounding.config import RunConfig, load_config
+from pounding.integrate import simulate
+from pounding.io import write_text
+from pounding.result import Result
+
+__all__ = ["OUTPUT_FILES", "FIGURE_FILES", "RunOutput", "default_out_dir", "run", "run_config"]
+
+OUTPUT_FILES: dict[str, str] = {
+    "timehistories": "timehistories.nc",
+    "impacts": "impacts.csv",
+    "summary": "summary.json",
+    "model": "model.toml",
+}
+"""Data files of every run (key → file name)."""
+
+FIGURE_FILES: dict[str, str] = {
+    "displacement_figure": "displacements.png",
+    "force_figure": "contact_forces.png",
+    "hysteresis_figure": "hysteresis.png",
+    "energy_figure": "energy.png",
+}
+"""Figures written unless turned off (key → file name)."""
+
+
+@dataclass(frozen=True)
+class RunOutput:
+    """What :func:`run` produced.
+
+    Attributes
+    ----------
+    out_dir : Path
+        The output folder (complete).
+    files : dict[str, Path]
+        Every file written, by key (:data:`OUTPUT_FILES`, :data:`FIGURE_FILES`).
+    result : Result
+        The simulation.
+    config : RunConfig
+        The configuration that was run.
+    wall_time : float
+        Seconds from start to finish (loading, integrating, writing) [s].
+    """
+
+    out_dir: Path
+    files: dict[str, Path]
+    result: Result
+    config: RunConfig
+    wall_time: float
+
+
+def default_out_dir(config_path: str | os.PathLike[str]) -> Path:
+    """``<model file stem>-results`` in the current folder."""
+    return Path(f"{Path(config_path).stem}-results")
+
+
+def _check_target(out_dir: Path, overwrite: bool) -> None:
+    if out_dir.exists() or out_dir.is_symlink():
+        if not out_dir.is_dir() or out_dir.is_symlink():
+            raise ValueError(f"out: {out_dir} exists and is not a folder; choose another --out")
+        if not overwrite:
+            raise ValueError(f"out: {out_dir} already exists; give --overwrite to replace it "
+                             "or choose another --out")
+        if any(out_dir.iterdir()) and not (out_dir / OUTPUT_FILES["summary"]).is_file():
+            raise ValueError(f"out: {out_dir} is a non-empty folder that is not a pounding "
+                             "output (no summary.json); not replacing it")
+
+
+def _make_parents(folder: Path) -> list[Path]:
+    """Create ``folder`` and its missing ancestors; return those created, deepest last."""
+    missing = []
+    p = folder.absolute()
+    while not p.exists():
+        missing.append(p)
+        p = p.parent
+    folder.mkdir(parents=True, exist_ok=True)
+    return missing[::-1]
+
+
+def _remove_empty(created: list[Path]) -> None:
+    for p in reversed(created):
+        with contextlib.suppress(OSError):
+            p.rmdir()
+
+
+def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
+    from pounding.plot import save_figure
+    from pounding.plot.response import (
+        plot_contact_forces,
+        plot_displacements,
+        plot_energy,
+        plot_hysteresis,
+    )
+
+    makers = {"displacement_figure": plot_displacements, "force_figure": plot_contact_forces,
+              "hysteresis_figure": plot_hysteresis, "energy_figure": plot_energy}
+    out = {}
+    for key, make in makers.items():
+        out[key] = save_figure(make(result), folder / FIGURE_FILES[key], dpi=dpi)
+    return out
+
+
+def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
+               progress: Callable[[float], None] | None = None, overwrite: bool = False,
+               figures: bool | None = None) -> RunOutput:
+    """Simulate an already-loaded configuration and write its outputs into ``out_dir``.
+
+    See :func:`run`.
+    """
+    start = time.perf_counter()
+    out = Path(out_dir)
+    if out.name in ("", ".", ".."):
+        raise ValueError(f"out: {out_dir!s} is not a folder name; give e.g. --out results")
+    _check_target(out, overwrite)
+    model, motion, solver = cfg.build()
+    want_figures = cfg.output.figures if figures is None else figures
+
+    created = _make_parents(out.absolute().parent)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.absolute().parent))
+    try:
+        result = simulate(model, motion, progress=progress, **solver)
+        files = result.save(tmp)
+        source = str(cfg.source) if cfg.source is not None else "(not read from a file)"
+        files["model"] = write_text(
+            tmp / OUTPUT_FILES["model"],
+            cfg.to_toml(resolve_paths=True,
+                        header=f"The model file of this run, as pounding read it.\n"
+                               f"Source: {source}\nRe-run: pounding run model.toml"))
+        if want_figures:
+            files.update(_write_figures(result, tmp, cfg.output.dpi))
+        # move into place: the old folder (if any) is removed only once the new one is in
+        _check_target(out, overwrite)
+        old = None
+        if out.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.absolute().parent))
+            os.replace(out, old / out.name)
+        try:
+            os.replace(tmp, out)
+        except BaseException:
+            if old is not None:
+                os.replace(old / out.name, out)
+                shutil.rmtree(old, ignore_errors=True)
+            raise
+        if old is not None:
+            shutil.rmtree(old, ignore_errors=True)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        _remove_empty(created)
+        raise
+    files = {k: out / Path(v).name for k, v in files.items()}
+    return RunOutput(out_dir=out, files=files, result=result, config=cfg,
+                     wall_time=time.perf_counter() - start)
+
+
+def run(config_path: str | os.PathLike[str], out_dir: str | os.PathLike[str] | None = None,
+        progress: Callable[[float], None] | None = None, *, overwrite: bool = False,
+        figures: bool | None = None) -> RunOutput:
+    """Load a model file, simulate it and write every output into ``out_dir``.
+
+    Parameters
+    ----------
+    config_path : path-like
+        The TOML model file (``docs/running.md``).
+    out_dir : path-like, optional
+        Output folder; default :func:`default_out_dir`. It receives ``timehistories.nc``,
+        ``impacts.csv``, ``summary.json`` (:meth:`pounding.result.Result.save`),
+        ``model.toml`` (the configuration as read, record path made absolute) and, unless
+        turned off, four PNG figures (:data:`FIGURE_FILES`).
+    progress : callable, optional
+        Called with the fraction done (0 … 1) during the integration.
+    overwrite : bool
+        Replace an existing output folder (else it is an error).
+    figures : bool, optional
+        Write the figures; default ``[output] figures`` of the model file.
+
+    Returns
+    -------
+    RunOutput
+
+    Raises
+    ------
+    ValueError
+        A bad model file (one line per problem), or an output folder that exists.
+        Nothing is written then.
+    """
+    cfg = load_config(config_path)
+    target = default_out_dir(config_path) if out_dir is None else Path(out_dir)
+    return run_config(cfg, target, progress=progress, overwrite=overwrite, figures=figures)
