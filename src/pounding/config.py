@@ -473,6 +473,15 @@ class RunConfig(_Section):
         with _prefixed("contact"):
             model = PoundingModel(buildings, gaps, spec, name=self.name)
             model.contacts  # noqa: B018  (builds every contact law with its floor masses)
+        for p in range(len(buildings) - 1):
+            if not any(c.pair == p for c in model.contacts):
+                a, b = buildings[p], buildings[p + 1]
+                raise ValueError(
+                    f"building[{p}] and building[{p + 1}]: no floor at the same elevation, "
+                    "so they can never collide (floor levels [m]: "
+                    f"{[round(float(x), 6) for x in a.floor_levels]} and "
+                    f"{[round(float(x), 6) for x in b.floor_levels]}); floors meet only at "
+                    "equal levels")
         with _prefixed("record"):
             motion = self.record.load()
         return Built(model, motion, self.solver.kwargs())

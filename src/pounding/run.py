@@ -104,6 +104,27 @@ def _remove_empty(created: list[Path]) -> None:
             p.rmdir()
 
 
+def _umask() -> int:
+    """The process umask (from /proc where possible, so it is not changed even briefly)."""
+    with contextlib.suppress(OSError, ValueError):
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("Umask:"):
+                return int(line.split()[1], 8)
+    old = os.umask(0o022)
+    os.umask(old)
+    return old
+
+
+def _normal_permissions(folder: Path) -> None:
+    """Temporary files and folders are private (0600/0700); give the finished output the
+    permissions an ordinary ``mkdir``/``open`` would."""
+    mask = _umask()
+    folder.chmod(0o777 & ~mask)
+    for f in folder.iterdir():
+        if f.is_file():
+            f.chmod(0o666 & ~mask)
+
+
 def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
     from pounding.plot import save_figure
     from pounding.plot.response import (
@@ -149,6 +170,7 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
                                f"Source: {source}\nRe-run: pounding run model.toml"))
         if want_figures:
             files.update(_write_figures(result, tmp, cfg.output.dpi))
+        _normal_permissions(tmp)
         # move into place: the old folder (if any) is removed only once the new one is in
         _check_target(out, overwrite)
         old = None

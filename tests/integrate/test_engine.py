@@ -199,3 +199,23 @@ def test_bad_initial_state_is_refused():
         simulate(model, zero_motion(1.0), initial_displacement=np.array([0.05, 0.0]))
     with pytest.raises(ValueError, match="initial_velocity"):
         simulate(model, zero_motion(1.0), initial_velocity=np.array([1.0]))
+
+
+def test_exact_and_rk_free_stepping_agree(el_centro_8s):
+    # the two ways of stepping between impacts give one answer (the RK path is the one every
+    # contact uses anyway; "auto" picks by model size)
+    b1 = ShearBuilding.uniform(4, 4e5, 6e8)
+    b2 = ShearBuilding.uniform(3, 3e5, 3e8)
+    model = PoundingModel([b1, b2], [0.01], NLVE)
+    a = simulate(model, el_centro_8s, free_stepping="exact")
+    b = simulate(model, el_centro_8s, free_stepping="rk")
+    assert a.n_impacts == b.n_impacts > 0
+    np.testing.assert_allclose(a.peak_contact_force, b.peak_contact_force, rtol=1e-4,
+                               atol=1e-4 * a.peak_contact_force.max())
+    assert np.max(np.abs(a.displacement - b.displacement)) < 1e-6 * np.abs(a.displacement).max()
+    assert b.energy_balance_error < 1e-6
+
+
+def test_free_stepping_is_validated():
+    with pytest.raises(ValueError, match="free_stepping"):
+        simulate(sdof_pair(KV), zero_motion(0.1), free_stepping="fast")

@@ -1,3 +1,183 @@
 """`pounding run` and `pounding demo`."""
 
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+import time
+from collections.abc import Callable, Iterator
+from importlib import resources
+from pathlib import Path
+from typing import Annotated, Any
+
+import numpy as np
+import typer
+from rich.progress import (
+    BarColumn,
+    Progress,
+    TaskProgressColumn,
+    TextColumn,
+    TimeElapsedColumn,
+    TimeRemainingColumn,
+)
+from rich.table import Table
+from rich.text import Text
+
 from pounding.cli.app import app, console  # noqa: F401
+
+PROGRESS_DELAY = 1.0
+"""Seconds before the progress bar appears: quick runs print no bar."""
+
+
+class _DelayedProgress(Progress):
+    """A rich progress display that renders nothing until ``delay`` seconds have passed."""
+
+    def __init__(self, *columns: Any, delay: float = PROGRESS_DELAY, **kw: Any) -> None:
+        self._t0 = time.monotonic()
+        self._delay = delay
+        super().__init__(*columns, **kw)
+
+    def get_renderables(self) -> Iterator[Any]:  # type: ignore[override]
+        if time.monotonic() - self._t0 >= self._delay:
+            yield from super().get_renderables()
+
+
+@contextlib.contextmanager
+def _progress_bar(label: str) -> Iterator[Callable[[float], None]]:
+    bar = _DelayedProgress(TextColumn("[bold]{task.description}"), BarColumn(),
+                           TaskProgressColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
+                           console=console, transient=True)
+    task = bar.add_task(label, total=1.0)
+
+    def update(fraction: float) -> None:
+        bar.update(task, completed=fraction)
+
+    with bar:
+        yield update
+
+
+@contextlib.contextmanager
+def _sigterm_as_interrupt() -> Iterator[None]:
+    """Turn SIGTERM into KeyboardInterrupt while running, so the temporary output folder is
+    removed on ``kill`` as on Ctrl-C."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum: int, frame: Any) -> None:
+        raise KeyboardInterrupt(f"signal {signum}")
+
+    previous = signal.signal(signal.SIGTERM, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _h(text: str) -> Text:
+    """A header cell: brackets in units are literal, not rich markup."""
+    return Text(text)
+
+
+def _print_summary(out: Any) -> None:
+    """The tables printed after a run (``out`` is a :class:`pounding.run.RunOutput`)."""
+    r = out.result
+    model = r.model
+    s = r.summary()
+
+    head = Table(title=f"{model.name}: pounding run", show_header=False)
+    head.add_column("quantity")
+    head.add_column("value", justify="right")
+    head.add_row("record", f"{r.motion.name}, PGA {r.motion.pga_g:.3f} g")
+    head.add_row(_h("simulated [s] / output step [s]"), f"{s['duration_s']:g} / {r.dt:g}")
+    head.add_row("buildings / contacts", f"{len(model.buildings)} / {len(model.contacts)}")
+    head.add_row("impacts", str(r.n_impacts))
+    head.add_row(_h("peak contact force [N]"), f"{s['peak_contact_force_N']:.4g}")
+    head.add_row(_h("energy input [J]"), f"{s['energy_final_J']['input']:.4g}")
+    head.add_row(_h("dissipated in contacts [J]"), f"{s['contact_dissipated_J']:.4g}")
+    head.add_row("energy-balance error", f"{r.energy_balance_error:.2e} of peak input")
+    if r.stats.impact_overflow:
+        head.add_row("[red]impact table[/]", "[red]overflowed: some impacts not listed[/]")
+    head.add_row(_h("wall time [s]"), f"{r.wall_time:.2f} integrating, {out.wall_time:.2f} total")
+    console.print(head)
+
+    bt = Table(title="Buildings")
+    for col, just in (("building", "left"), ("storeys", "right"), ("T1 [s]", "right"),
+                      ("peak roof displacement [m]", "right"), ("peak drift [m]", "right"),
+                      ("at storey", "right"), ("peak drift ratio", "right")):
+        bt.add_column(_h(col), justify=just)  # type: ignore[arg-type]
+    drift = np.abs(r.drift).max(axis=0)
+    for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
+        d = drift[off: off + bl.n]
+        j = int(np.argmax(d))
+        bt.add_row(f"B{b + 1} {bl.name}".strip(), str(bl.n), f"{bl.fundamental_period:.3f}",
+                   f"{r.peak_displacement[off + bl.n - 1]:.4f}", f"{d[j]:.4f}", str(j + 1),
+                   f"{d[j] / bl.heights[j]:.2%}")
+    console.print(bt)
+
+    if model.contacts:
+        ct = Table(title="Contacts")
+        for col in ("contact", "elevation [m]", "gap [m]", "impacts", "peak force [N]",
+                    "dissipated [J]"):
+            ct.add_column(_h(col), justify="left" if col == "contact" else "right")
+        imp = r.impacts
+        pcf = r.peak_contact_force
+        for c in model.contacts:
+            rows = imp[imp["contact"] == c.label] if len(imp) else imp
+            ct.add_row(c.label, f"{c.elevation:g}", f"{c.gap:g}", str(len(rows)),
+                       f"{pcf[c.index]:.4g}" if len(rows) else "-",
+                       f"{np.nansum(rows['energy_dissipated']):.4g}" if len(rows) else "-")
+        console.print(ct)
+
+    console.print(f"outputs in [bold]{out.out_dir}[/]: "
+                  + ", ".join(sorted(p.name for p in out.files.values())), highlight=False)
+
+
+def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | None,
+         label: str) -> None:
+    from pounding.config import load_config
+    from pounding.run import default_out_dir, run_config
+
+    cfg = load_config(model_file)
+    target = out if out is not None else default_out_dir(model_file)
+    with _sigterm_as_interrupt(), _progress_bar(label) as progress:
+        result = run_config(cfg, target, progress=progress, overwrite=overwrite,
+                            figures=figures)
+    _print_summary(result)
+
+
+OutOpt = Annotated[Path | None, typer.Option(
+    "--out", "-o", help="Output folder (default: MODEL-STEM-results in the current folder). "
+                        "Written complete or not at all.", show_default=False)]
+OverwriteOpt = Annotated[bool, typer.Option(
+    "--overwrite", help="Replace the output folder if it exists (only an earlier pounding "
+                        "output or an empty folder; the old one goes once the new is complete).")]
+FiguresOpt = Annotated[bool | None, typer.Option(
+    "--figures/--no-figures", help="Write the PNG figures (default: [output] figures of the "
+                                   "model file, true if not given).", show_default=False)]
+
+
+@app.command("run")
+def run_cmd(
+    model: Annotated[Path, typer.Argument(help="TOML model file (see docs/running.md).",
+                                          show_default=False)],
+    out: OutOpt = None,
+    overwrite: OverwriteOpt = False,
+    figures: FiguresOpt = None,
+) -> None:
+    """Simulate a model file and write time histories, impacts, summary and figures."""
+    _run(model, out, overwrite, figures, f"simulating {model.name}")
+
+
+@app.command("demo")
+def demo_cmd(
+    out: Annotated[Path, typer.Option(
+        "--out", "-o", help="Output folder.")] = Path("pounding-demo"),
+    overwrite: OverwriteOpt = False,
+    figures: FiguresOpt = None,
+) -> None:
+    """Two 10-storey buildings pounding under El Centro 1940 (examples/two_10_storey.toml)."""
+    res = resources.files("pounding").joinpath("data").joinpath("demo.toml")
+    with resources.as_file(res) as path:
+        _run(path, out, overwrite, figures, "demo: two 10-storey buildings")

@@ -28,7 +28,7 @@ from pounding.integrate.kernel import (
     W_H,
     integrate_chunk,
 )
-from pounding.integrate.propagator import propagator
+from pounding.integrate.propagator import Propagator, propagator
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
 from pounding.validation import positive
@@ -40,6 +40,31 @@ DEFAULT_RTOL: float = 1e-8
 
 DEFAULT_OUTPUT_STEP: float = 1e-3
 """Default largest output (grid) step [s]."""
+
+
+EXACT_FREE_MAX_DOF: int = 12
+"""``free_stepping="auto"`` uses the exact propagator up to this many floors in all (measured
+crossover: see ``benchmarks/bench_scaling.py``)."""
+
+
+def half_bandwidth(*mats: np.ndarray) -> int:
+    """Largest ``|i − j|`` with a non-zero entry in any of the matrices."""
+    bw = 0
+    for a in mats:
+        i, j = np.nonzero(a)
+        if i.size:
+            bw = max(bw, int(np.max(np.abs(i - j))))
+    return bw
+
+
+def choose_free_stepping(mode: str, n_dof: int, bw: int) -> bool:
+    """True to step contact-free intervals with the exact propagator (see :func:`simulate`)."""
+    from pounding.validation import choice
+
+    mode = choice("free_stepping", mode, ("auto", "exact", "rk"))
+    if mode == "auto":
+        return n_dof <= EXACT_FREE_MAX_DOF
+    return mode == "exact"
 
 
 def grid_step(record_dt: float, dt: float | None = None) -> float:
@@ -85,6 +110,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
              h_max: float | None = None, impact_capacity: int | None = None,
              initial_displacement: np.ndarray | None = None,
              initial_velocity: np.ndarray | None = None,
+             free_stepping: str = "auto",
              progress: Callable[[float], None] | None = None) -> Result:
     """Simulate the model under a ground motion.
 
@@ -109,6 +135,10 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     initial_displacement, initial_velocity : ndarray (N,), optional
         Floor displacements [m] and velocities [m/s] at t = 0 relative to the ground
         (default at rest). Every gap must be open at t = 0.
+    free_stepping : {"auto", "exact", "rk"}
+        How steps without contact are taken: ``"exact"`` propagator (O(N²) a step, exact),
+        adaptive ``"rk"`` (O(N·bandwidth) a step), or ``"auto"``: exact for small models,
+        RK for large ones, so the cost grows linearly with the number of storeys.
     progress : callable, optional
         Called with the fraction done (0 … 1) after each chunk of steps.
 
@@ -125,9 +155,16 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     sys_ = model.system
     M, C, K, r = sys_.M, sys_.C, sys_.K, sys_.r
     n = r.size
-    minv = np.linalg.inv(M)
-    full = propagator(M, C, K, r, step)
-    half = propagator(M, C, K, r, 0.5 * step)
+    m_diag = np.diag(M).copy()
+    if np.any(M != np.diag(m_diag)):
+        raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
+    bw = half_bandwidth(K, C)
+    exact = choose_free_stepping(free_stepping, n, bw)
+    if exact:
+        full = propagator(M, C, K, r, step)
+        half = propagator(M, C, K, r, 0.5 * step)
+    else:
+        full = half = Propagator(np.zeros((2 * n, 2 * n)), np.zeros(2 * n), np.zeros(2 * n))
     cl, cr, cgap, ccode, cparams = model.contact_arrays()
     nc = cl.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
@@ -144,6 +181,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     ws_f = np.zeros(4)
     ws_f[W_H] = step * 0.1
     ws_i = np.zeros(6, dtype=np.int64)
+    ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
     u_out = np.zeros((nt, n))
     v_out = np.zeros((nt, n))
@@ -155,15 +193,14 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     u_out[0] = x[:n]
     v_out[0] = x[n:]
     pen_out[0] = x[cl] - x[cr] - cgap
-    acc_out[0] = -(minv @ (K @ x[:n] + C @ x[n:]))
+    acc_out[0] = -(K @ x[:n] + C @ x[n:]) / m_diag
     e_out[0, 1] = 0.5 * x[n:] @ M @ x[n:]
     e_out[0, 2] = 0.5 * x[:n] @ K @ x[:n]
 
     chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
-    args = (step, ag, full.phi, full.gamma0, full.gamma1, half.phi, half.gamma0, half.gamma1,
-            np.ascontiguousarray(minv @ K), np.ascontiguousarray(minv @ C), np.ascontiguousarray(C),
-            np.ascontiguousarray(K), np.ascontiguousarray(M), np.ascontiguousarray(M @ r),
-            np.ascontiguousarray(r, dtype=float), np.ascontiguousarray(minv), cl, cr, cgap, ccode,
+    args = (step, ag, exact, full.phi, full.gamma0, full.gamma1, half.phi, half.gamma0,
+            half.gamma1, bw, np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
+            np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cl, cr, cgap, ccode,
             np.ascontiguousarray(cparams), rtol, atol, h_max, x, committed, wc, w_start,
             imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, e_out, imp)
     start = time.perf_counter()

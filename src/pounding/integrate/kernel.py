@@ -43,6 +43,9 @@ _B1, _B3, _B4, _B5, _B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 /
 _E1, _E3, _E4, _E5, _E6, _E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0,
                                 -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0)
 
+DELTA_EPS: float = 1e-300
+"""Penetration at which a closed contact is evaluated when δ ≤ 0 inside a step [m]."""
+
 # Columns of the impact table
 IMP_CONTACT, IMP_START, IMP_END, IMP_V0, IMP_PEAK, IMP_DMAX, IMP_E, IMP_ENERGY = range(8)
 IMP_COLUMNS = 8
@@ -57,7 +60,7 @@ I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS = range(6)
 
 
 @njit(cache=True)
-def _deriv(y, ag, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap, ccode, cparams,
+def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cparams,
            committed, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, per-contact F δ̇].
 
@@ -65,19 +68,19 @@ def _deriv(y, ag, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap, ccode, cp
     Contact forces use the committed states (read only).
     """
     nc = cl.shape[0]
-    # structural part: acc = −M⁻¹K u − M⁻¹C v − r a_g
+    # structural part: acc = −M⁻¹(K u + C v) − r a_g, K and C banded (half-bandwidth bw),
+    # M diagonal (lumped floor masses): O(N·bw) work
     p_in = 0.0
     p_d = 0.0
     for i in range(n):
-        acc = -r[i] * ag
-        for j in range(n):
-            acc -= minv_k[i, j] * y[j] + minv_c[i, j] * y[n + j]
-        dy[row, i] = y[n + i]
-        dy[row, n + i] = acc
-        p_in -= y[n + i] * mr[i] * ag
+        ku = 0.0
         cv = 0.0
-        for j in range(n):
+        for j in range(max(0, i - bw), min(n, i + bw + 1)):
+            ku += k_mat[i, j] * y[j]
             cv += c_mat[i, j] * y[n + j]
+        dy[row, i] = y[n + i]
+        dy[row, n + i] = -(ku + cv) / m_diag[i] - r[i] * ag
+        p_in -= y[n + i] * mr[i] * ag
         p_d += y[n + i] * cv
     power[row, 0] = p_in
     power[row, 1] = p_d
@@ -86,19 +89,24 @@ def _deriv(y, ag, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap, ccode, cp
         b = cr[c]
         delta = y[a] - y[b] - cgap[c]
         rate = y[n + a] - y[n + b]
+        # Inside a step the contact keeps its committed status: an open contact pushes
+        # nothing even where δ > 0, a closed one follows its law's one-sided limit even
+        # where δ ≤ 0. Status changes only at located events, so every step integrates a
+        # smooth right-hand side (no force jump inside a step to spoil the error estimate).
         f = 0.0
-        if delta > 0.0 or committed[c, V0] > 0.0:
-            f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
-                          committed[c, V0], committed[c, SLIP], committed[c, DMAX])[0]
+        if committed[c, V0] > 0.0:
+            f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
+                          max(delta, DELTA_EPS), rate, committed[c, V0], committed[c, SLIP],
+                          committed[c, DMAX])[0]
         power[row, 2 + c] = f * rate
         if f != 0.0:
             # force f pushes the left floor left (−f) and the right floor right (+f)
-            for i in range(n):
-                dy[row, n + i] += f * (minv[i, b] - minv[i, a])
+            dy[row, n + a] -= f / m_diag[a]
+            dy[row, n + b] += f / m_diag[b]
 
 
 @njit(cache=True)
-def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap,
+def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap,
              ccode, cparams, committed, ks, ps, ytmp, y1, atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
 
@@ -111,30 +119,30 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, minv_k, minv_c, c_mat, mr, r, minv,
     ps[0, :] = p1[0]
     for i in range(m):
         ytmp[i] = y0[i] + h * _A21 * ks[0, i]
-    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
            cgap, ccode, cparams, committed, ks, ps, 1)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A31 * ks[0, i] + _A32 * ks[1, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
            cgap, ccode, cparams, committed, ks, ps, 2)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A41 * ks[0, i] + _A42 * ks[1, i] + _A43 * ks[2, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
            cgap, ccode, cparams, committed, ks, ps, 3)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A51 * ks[0, i] + _A52 * ks[1, i] + _A53 * ks[2, i]
                                + _A54 * ks[3, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
            cgap, ccode, cparams, committed, ks, ps, 4)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A61 * ks[0, i] + _A62 * ks[1, i] + _A63 * ks[2, i]
                                + _A64 * ks[3, i] + _A65 * ks[4, i])
-    _deriv(ytmp, ag0 + dag * (s0 + h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+    _deriv(ytmp, ag0 + dag * (s0 + h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
            cgap, ccode, cparams, committed, ks, ps, 5)
     for i in range(m):
         y1[i] = y0[i] + h * (_B1 * ks[0, i] + _B3 * ks[2, i] + _B4 * ks[3, i]
                              + _B5 * ks[4, i] + _B6 * ks[5, i])
-    _deriv(y1, ag0 + dag * (s0 + h), n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+    _deriv(y1, ag0 + dag * (s0 + h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
            cgap, ccode, cparams, committed, ks, ps, 6)
     err = 0.0
     for i in range(m):
@@ -247,8 +255,8 @@ def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind
 
 
 @njit(cache=True)
-def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c, c_mat,
-                    k_mat, m_mat, mr, r, minv, cl, cr, cgap, ccode, cparams, rtol, atol,
+def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
+                    m_diag, mr, r, cl, cr, cgap, ccode, cparams, rtol, atol,
                     h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
                     u_out, v_out, acc_out, pen_out, f_out, e_out, imp):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``.
@@ -257,10 +265,13 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
     ----------
     dt : float
         Grid step [s]. ``ag`` (nt,) ground acceleration at grid points [m/s²].
+    exact_free : bool
+        Take steps without contact with the exact propagator (cost O(N²) a step, cheapest
+        for small models); otherwise with the adaptive RK (O(N·bw) a stage).
     phi, g0, g1 / phih, g0h, g1h
-        Exact propagators over dt and dt/2.
-    minv_k, minv_c, c_mat, k_mat, m_mat, mr, r, minv
-        M⁻¹K, M⁻¹C, C, K, M, M r, r, M⁻¹.
+        Exact propagators over dt and dt/2 (unused unless ``exact_free``).
+    bw, k_mat, c_mat, m_diag, mr, r
+        Half-bandwidth of K and C, K [N/m], C [N·s/m], lumped floor masses [kg], M r, r.
     cl, cr, cgap, ccode, cparams
         Contacts: left/right DOF, gap [m], law code, law constants.
     rtol : float; atol : (2N,)
@@ -356,24 +367,24 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
                     x[i] = x1[i]
                 # relative acceleration for the output (no contact force acts)
                 for i in range(n):
-                    acc = -r[i] * a1
-                    for j in range(n):
-                        acc -= minv_k[i, j] * x[j] + minv_c[i, j] * x[n + j]
-                    kx[0, n + i] = acc
+                    ku = 0.0
+                    for j in range(max(0, i - bw), min(n, i + bw + 1)):
+                        ku += k_mat[i, j] * x[j] + c_mat[i, j] * x[n + j]
+                    kx[0, n + i] = -ku / m_diag[i] - r[i] * a1
             else:
                 ws_i[I_MODE] = 1
         if ws_i[I_MODE] == 1:
             # ---------------- adaptive RK with events, landing on t_k + dt
             s = 0.0
             h = min(ws_f[W_H], dt, h_max)
-            _deriv(x, a0, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr, cgap, ccode, cparams,
+            _deriv(x, a0, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cparams,
                    committed, kx, px, 0)
             while s < dt:
                 last = False
                 if s + h >= dt * (1.0 - 1e-12):
                     h = dt - s
                     last = True
-                err = _rk_step(x, kx, px, h, a0, dag, s, n, minv_k, minv_c, c_mat, mr, r, minv,
+                err = _rk_step(x, kx, px, h, a0, dag, s, n, bw, k_mat, c_mat, m_diag, mr, r, 
                                cl, cr, cgap, ccode, cparams, committed, ks, ps, ytmp,
                                y1, atol, rtol)
                 ws_i[I_NSTEPS] += 1
@@ -406,8 +417,8 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
                     found_hi = side_ok
                     if not side_ok:
                         # grazing: both ends on the 'before' side; test the estimate
-                        err = _rk_step(x, kx, px, te, a0, dag, s, n, minv_k, minv_c, c_mat, mr,
-                                       r, minv, cl, cr, cgap, ccode, cparams, committed,
+                        err = _rk_step(x, kx, px, te, a0, dag, s, n, bw, k_mat, c_mat, m_diag, mr,
+                                       r,  cl, cr, cgap, ccode, cparams, committed,
                                        ks_b, ps_b, ytmp, yb, atol, rtol)
                         g_te = _event_value(kind, ce, yb, n, cl, cr, cgap)
                         if (g_te > 0.0) == upward and g_te != 0.0:
@@ -424,8 +435,8 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
                     side = 0
                     have_after = False
                     for _ in range(60):
-                        err = _rk_step(x, kx, px, t_try, a0, dag, s, n, minv_k, minv_c, c_mat,
-                                       mr, r, minv, cl, cr, cgap, ccode, cparams, committed,
+                        err = _rk_step(x, kx, px, t_try, a0, dag, s, n, bw, k_mat, c_mat,
+                                       m_diag, mr, r, cl, cr, cgap, ccode, cparams, committed,
                                        ks_b, ps_b, ytmp, yb, atol, rtol)
                         ws_i[I_NSTEPS] += 1
                         g = _event_value(kind, ce, yb, n, cl, cr, cgap)
@@ -459,8 +470,8 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
                             t_try = 0.5 * (lo + hi)
                     if not have_after:
                         # the bracket's after end is the full step (or the grazing test)
-                        err_after = _rk_step(x, kx, px, hi, a0, dag, s, n, minv_k, minv_c,
-                                             c_mat, mr, r, minv, cl, cr, cgap, ccode, cparams,
+                        err_after = _rk_step(x, kx, px, hi, a0, dag, s, n, bw, k_mat, c_mat,
+                                             m_diag, mr, r,  cl, cr, cgap, ccode, cparams,
                                              committed, ks, ps, ytmp, y1, atol, rtol)
                         ws_i[I_NSTEPS] += 1
                     err = err_after
@@ -569,7 +580,7 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
                             if ev_c == c:
                                 ws_i[I_NEVENTS] += 1
                 if state_changed:
-                    _deriv(x, a0 + dag * s_new, n, minv_k, minv_c, c_mat, mr, r, minv, cl, cr,
+                    _deriv(x, a0 + dag * s_new, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
                            cgap, ccode, cparams, committed, kx, px, 0)
                 else:
                     for i in range(m):
@@ -592,7 +603,7 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
             for c in range(nc):
                 if committed[c, V0] > 0.0:
                     any_closed = True
-            if not any_closed:
+            if not any_closed and exact_free:
                 ws_i[I_MODE] = 0
         # ---------------- outputs at grid point k + 1
         o = k + 1
@@ -602,12 +613,10 @@ def integrate_chunk(k0, k1, dt, ag, phi, g0, g1, phih, g0h, g1h, minv_k, minv_c,
             u_out[o, i] = x[i]
             v_out[o, i] = x[n + i]
             acc_out[o, i] = kx[0, n + i] + r[i] * a1
-            mv = 0.0
             kv = 0.0
-            for j in range(n):
-                mv += m_mat[i, j] * x[n + j]
+            for j in range(max(0, i - bw), min(n, i + bw + 1)):
                 kv += k_mat[i, j] * x[j]
-            ek += 0.5 * x[n + i] * mv
+            ek += 0.5 * m_diag[i] * x[n + i] * x[n + i]
             es += 0.5 * x[i] * kv
         wsum = 0.0
         stored = 0.0

@@ -66,8 +66,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     def forces(y: NDArray[np.float64]) -> NDArray[np.float64]:
         f = np.zeros(nc)
         for c in range(nc):
-            d = y[cl[c]] - y[cr[c]] - gap[c]
-            if d > 0.0 or committed[c, V0] > 0.0:
+            # between events a contact keeps its committed status (see the kernel)
+            if committed[c, V0] > 0.0:
+                d = max(y[cl[c]] - y[cr[c]] - gap[c], 1e-300)
                 f[c] = contact_trial(codes[c], params[c], d, y[n + cl[c]] - y[n + cr[c]],
                                      committed[c], scratch)[0]
         return f

@@ -1,0 +1,254 @@
+"""`pounding run` / `pounding demo` and :func:`pounding.run.run`: outputs, and never a
+half-written output folder."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+from matplotlib.figure import Figure
+
+import pounding.run as run_mod
+from pounding.cli import main
+from pounding.config import dump_toml, parse_config
+from pounding.integrate import simulate
+from pounding.plot.response import (
+    plot_contact_forces,
+    plot_displacements,
+    plot_energy,
+    plot_hysteresis,
+)
+from pounding.result import IMPACT_COLUMNS
+from pounding.run import FIGURE_FILES, OUTPUT_FILES, run, run_config
+
+ROOT = Path(__file__).resolve().parents[1]
+SEED = ROOT / "examples" / "seed_sdof_pair.toml"
+ALL_FILES = sorted([*OUTPUT_FILES.values(), *FIGURE_FILES.values()])
+
+
+def short_model(tmp_path: Path, duration: float = 3.0, **changes: Any) -> Path:
+    """The seed pair, simulated for ``duration`` s only (impacts start near 2 s)."""
+    data = {
+        "name": "short pair",
+        "record": {"bundled": "el_centro"},
+        "building": [{"mass": 2e5, "period": 0.5}, {"mass": 3e5, "period": 1.0}],
+        "contact": {"law": "nonlinear-viscoelastic", "k_h": 2.75e9, "e": 0.65, "gap": 0.02},
+        "solver": {"duration": duration},
+        **changes,
+    }
+    path = tmp_path / "short.toml"
+    path.write_text(dump_toml(data), encoding="utf-8")
+    return path
+
+
+def leftovers(folder: Path) -> list[str]:
+    """Hidden temporary entries left in ``folder``."""
+    return sorted(p.name for p in folder.iterdir() if p.name.startswith("."))
+
+
+# ------------------------------------------------------------------------ the CLI
+def test_run_seed_example_writes_everything(tmp_path: Path,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "out"
+    assert main(["run", str(SEED), "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    for expected in ("impacts", "26", "peak contact force [N]", "peak roof displacement [m]",
+                     "peak drift", "dissipated in contacts [J]", "energy-balance error",
+                     "wall time [s]", "B1F1-B2F1", str(out)):
+        assert expected in text, expected
+    assert sorted(p.name for p in out.iterdir()) == ALL_FILES
+    assert leftovers(tmp_path) == []
+
+    with xr.open_dataset(out / "timehistories.nc", engine="h5netcdf") as ds:
+        assert ds["displacement"].attrs["units"] == "m"
+        assert ds["contact_force"].attrs["units"] == "N"
+        assert ds["energy"].attrs["units"] == "J"
+        assert ds["time"].attrs["units"] == "s"
+        assert ds.sizes["floor"] == 2 and ds.sizes["contact"] == 1
+        assert float(ds["time"][-1]) == pytest.approx(39.99)
+    imp = pd.read_csv(out / "impacts.csv", comment="#")
+    assert list(imp.columns) == ["contact", "elevation", *IMPACT_COLUMNS[1:]]
+    assert len(imp) == 26 and (imp["contact"] == "B1F1-B2F1").all()
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["n_impacts"] == 26 and summary["model"] == "seed SDOF pair"
+    assert summary["energy_balance_error"] < 1e-6
+    for name in FIGURE_FILES.values():
+        assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # the copy of the model file runs again as it is
+    assert main(["run", str(out / "model.toml"), "--out", str(tmp_path / "again"),
+                 "--no-figures"]) == 0
+    again = json.loads((tmp_path / "again" / "summary.json").read_text())
+    assert again["n_impacts"] == 26
+    assert again["peak_contact_force_N"] == summary["peak_contact_force_N"]
+
+
+def test_existing_output_needs_overwrite(tmp_path: Path,
+                                         capsys: pytest.CaptureFixture[str]) -> None:
+    model = short_model(tmp_path)
+    out = tmp_path / "out"
+    assert main(["run", str(model), "--out", str(out), "--no-figures"]) == 0
+    first = (out / "summary.json").read_text()
+    capsys.readouterr()
+    assert main(["run", str(model), "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "already exists" in err and "--overwrite" in err and len(err.splitlines()) == 1
+    assert (out / "summary.json").read_text() == first
+    assert not (out / "energy.png").exists()
+    assert main(["run", str(model), "--out", str(out), "--overwrite"]) == 0
+    assert (out / "energy.png").exists()
+    assert leftovers(tmp_path) == []
+    # a folder that is not an earlier output is never replaced
+    other = tmp_path / "precious"
+    other.mkdir()
+    (other / "thesis.tex").write_text("x")
+    assert main(["run", str(model), "--out", str(other), "--overwrite"]) == 2
+    assert "not a pounding output" in capsys.readouterr().err
+    assert [p.name for p in other.iterdir()] == ["thesis.tex"]
+
+
+@pytest.mark.parametrize("change, expected", [
+    ({"building": [{"mass": -2e5, "period": 0.5}, {"mass": 3e5, "period": 1.0}]},
+     "building[0].mass: must be > 0 (got -200000)"),
+    ({"contact": {"law": "nope", "gap": 0.02}}, "contact.law: unknown law 'nope'"),
+    ({"contact": {"law": "hertz", "k_h": 1e9, "gap": 0.02, "gapp": 1}},
+     "contact.gapp: unknown key"),
+    ({"contact": {"law": "hertz", "k_h": 1e9, "gaps": [0.02, 0.01]}},
+     "contact.gaps: need 1 value(s) for 2 buildings (got 2: [0.02, 0.01])"),
+    ({"record": {"file": "missing.AT2"}}, "record.file: no such file"),
+])
+def test_bad_model_exits_2_with_one_line_and_writes_nothing(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], change: dict[str, Any],
+        expected: str) -> None:
+    model = short_model(tmp_path, **change)
+    out = tmp_path / "deep" / "out"
+    assert main(["run", str(model), "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert err.startswith("error: ") and expected in err
+    assert str(model) in err
+    assert not (tmp_path / "deep").exists()
+    assert leftovers(tmp_path) == []
+
+
+def test_missing_model_file_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["run", str(tmp_path / "none.toml"), "--out", str(tmp_path / "o")]) == 2
+    assert "no such model file" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
+
+
+def test_demo(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "demo"
+    assert main(["demo", "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "two 10-storey buildings" in text and "B1F10-B2F10" in text
+    assert sorted(p.name for p in out.iterdir()) == ALL_FILES
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["n_impacts"] > 10 and len(summary["peak_displacement_m"]) == 20
+
+
+# ------------------------------------------------------------------------ failures mid-run
+def test_failure_mid_run_leaves_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    def failing(*args: Any, progress: Any = None, **kw: Any) -> Any:
+        if progress is not None:
+            progress(0.3)
+        raise RuntimeError("integration failed at t = 1.2 s")
+
+    monkeypatch.setattr(run_mod, "simulate", failing)
+    out = tmp_path / "new" / "out"
+    with pytest.raises(RuntimeError, match="integration failed"):
+        run(short_model(tmp_path), out, progress=lambda f: None)
+    assert not (tmp_path / "new").exists()
+    assert leftovers(tmp_path) == []
+
+
+def test_failure_while_writing_keeps_the_previous_output(tmp_path: Path,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    model = short_model(tmp_path)
+    out = tmp_path / "out"
+    run(model, out, figures=False)
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+
+    def broken(*args: Any, **kw: Any) -> Any:
+        raise OSError("disk full")
+
+    # fails after the data files are already written into the temporary folder
+    monkeypatch.setattr(run_mod, "_write_figures", broken)
+    with pytest.raises(OSError, match="disk full"):
+        run(model, out, overwrite=True, figures=True)
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert leftovers(tmp_path) == []
+
+    monkeypatch.setattr(run_mod, "simulate", lambda *a, **k: (_ for _ in ()).throw(
+        KeyboardInterrupt()))
+    with pytest.raises(KeyboardInterrupt):
+        run(model, out, overwrite=True)
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    assert leftovers(tmp_path) == []
+
+
+def test_run_returns_its_outputs(tmp_path: Path) -> None:
+    fractions: list[float] = []
+    res = run(short_model(tmp_path), tmp_path / "o", progress=fractions.append)
+    assert res.out_dir == tmp_path / "o"
+    assert sorted(p.name for p in res.files.values()) == ALL_FILES
+    assert all(p.is_file() for p in res.files.values())
+    assert res.result.n_impacts >= 1 and res.wall_time > 0
+    assert fractions and fractions[-1] == pytest.approx(1.0)
+    mode = (tmp_path / "o" / "summary.json").stat().st_mode & 0o777
+    assert mode & 0o044  # readable by others as with an ordinary write (umask 022)
+
+
+def test_out_must_be_a_folder_name(tmp_path: Path) -> None:
+    with pytest.raises(ValueError, match="not a folder name"):
+        run(short_model(tmp_path), ".")
+    f = tmp_path / "file"
+    f.write_text("x")
+    with pytest.raises(ValueError, match="not a folder"):
+        run(short_model(tmp_path), f, overwrite=True)
+
+
+# ------------------------------------------------------------------------ figures
+def _labels(fig: Figure) -> str:
+    return " ".join(ax.get_xlabel() + " " + ax.get_ylabel() for ax in fig.axes)
+
+
+def test_figures_have_units_and_handle_no_contacts(tmp_path: Path) -> None:
+    cfg = parse_config({"record": {"bundled": "el_centro"},
+                        "building": [{"n_storeys": 3, "mass": 1e5, "period": 0.4},
+                                     {"n_storeys": 2, "mass": 1e5, "period": 0.3}],
+                        "contact": {"law": "kelvin-voigt", "k": 9.3e8, "e": 0.65,
+                                    "gap": 0.02},
+                        "solver": {"duration": 3.0}})
+    model, motion, solver = cfg.build()
+    r = simulate(model, motion, **solver)
+    for make, units in ((plot_displacements, ["[m]", "[s]"]),
+                        (plot_contact_forces, ["[N]", "[s]"]),
+                        (plot_hysteresis, ["[N]", "[m]"]),
+                        (plot_energy, ["[J]", "[s]"])):
+        fig = make(r)
+        assert isinstance(fig, Figure)
+        for u in units:
+            assert u in _labels(fig), (make.__name__, u)
+    # displacement panels: roof and both contact floors of the 3-storey building
+    legend = [t.get_text() for t in plot_displacements(r).axes[0].get_legend().get_texts()]
+    assert legend == ["F1 (3 m)", "F2 (6 m)", "F3 (roof, 9 m)"]
+
+    one = parse_config({"record": {"bundled": "el_centro", "duration": 1.0},
+                        "building": [{"mass": 1e5, "period": 0.5}]})
+    res = run_config(one, tmp_path / "single")
+    assert sorted(p.name for p in res.out_dir.iterdir()) == ALL_FILES
+    assert res.result.n_impacts == 0
+
+
+def test_hysteresis_draws_only_closed_part(tmp_path: Path) -> None:
+    res = run(short_model(tmp_path, duration=6.0), tmp_path / "o", figures=False)
+    fig = plot_hysteresis(res.result)
+    xs = np.concatenate([ln.get_xdata() for ax in fig.axes for ln in ax.get_lines()
+                         if len(ln.get_xdata()) > 2])
+    xs = xs[np.isfinite(xs)]
+    assert xs.size > 10 and (xs > 0).all()
