@@ -77,7 +77,7 @@ LAW_FIELDS: dict[str, frozenset[str]] = {
     "hertzdamp": frozenset({"k_h", "e", "formula", "chi", "n"}),
     "nonlinear-viscoelastic": frozenset({"k_h", "e", "formula", "zeta"}),
     "naderpour": frozenset({"k_h", "e", "formula", "zeta"}),
-    "bilinear-impact": frozenset({"k_h", "e", "delta_m", "n"}),
+    "bilinear-impact": frozenset({"k_h", "e", "delta_m", "n", "a"}),
 }
 """The ``[contact]`` keys each law reads (:func:`pounding.contact.factory.make_law`); giving
 another is an error rather than being silently ignored."""
@@ -334,7 +334,7 @@ class ContactConfig(_Section):
     ``law`` is a name of :data:`pounding.contact.factory.LAW_NAMES`; the other keys are
     those of :class:`pounding.model.ContactSpec` (``k`` [N/m], ``k_h`` [N/m^n], ``e`` [-],
     ``formula``, ``c`` [N·s/m], ``zeta`` [-], ``chi`` [-], ``n`` [-], ``tension``,
-    ``delta_m`` [m]); only the keys the law reads are accepted (:data:`LAW_FIELDS`).
+    ``delta_m`` [m], ``a`` [-]); only the keys the law reads are accepted (:data:`LAW_FIELDS`).
     ``gap`` [m] is the gap between every pair of neighbours, or ``gaps`` one per pair.
     """
 
@@ -349,6 +349,7 @@ class ContactConfig(_Section):
     n: Pos = 1.5
     tension: bool = True
     delta_m: Pos | None = None
+    a: Annotated[float, Field(gt=0, lt=1)] = 0.1
     gap: NonNeg | None = None
     gaps: list[NonNeg] | None = None
 

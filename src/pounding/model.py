@@ -53,6 +53,8 @@ class ContactSpec:
         Kelvin–Voigt only: may the dashpot pull before separation.
     delta_m : float, optional
         Bilinear element: assumed maximum penetration [m].
+    a : float
+        Bilinear element: yield ratio δy/δm (Muthukumar's 0.1).
     """
 
     law: str
@@ -66,6 +68,7 @@ class ContactSpec:
     n: float = 1.5
     tension: bool = True
     delta_m: float | None = None
+    a: float = 0.1
 
     def __post_init__(self) -> None:
         # build once with unit masses so a bad spec fails here, naming its field
@@ -75,7 +78,7 @@ class ContactSpec:
         """The contact law between two floors of masses ``m1`` and ``m2`` [kg]."""
         return make_law(self.law, k=self.k, k_h=self.k_h, e=self.e, formula=self.formula,
                         c=self.c, zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n,
-                        tension=self.tension, delta_m=self.delta_m)
+                        tension=self.tension, delta_m=self.delta_m, a=self.a)
 
 
 @dataclass(frozen=True)

@@ -118,7 +118,11 @@ class Result:
     def impacts(self) -> pd.DataFrame:
         """One row per impact: contact label, start/end [s], impact velocity v0 [m/s], peak
         force [N], maximum penetration [m], achieved restitution, energy dissipated [J].
-        Impacts still open at the end have NaN end, restitution and energy."""
+
+        ``restitution`` is ``−δ̇_separation / v0``. Between buildings it is not bounded by 1:
+        the floors are not free bodies, and the rest of each building can push them apart
+        faster than they met. Impacts still open at the end have NaN end, restitution and
+        energy."""
         df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
         labels = [c.label for c in self.model.contacts]
         df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
