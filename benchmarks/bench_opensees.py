@@ -359,7 +359,7 @@ def section_compare(ctx: Ctx) -> None:
                          f"{ratio_a:.1f} / {ratio_t:.1f}" if tool == "pounding" else "",
                          f"{pct(F, F_ref):+.3f}", f"{nimp} ({n_ref})",
                          f"{pct(u1, u1_ref):+.4f}", f"{pct(u2, u2_ref):+.4f}"])
-        if "u_left" in ref:  # per-floor peak forces
+        if np.ndim(ref["peak_force"]) > 0 and np.size(ref["peak_force"]) > 1:  # per floor
             for tool, r in (("OpenSees", r_os), ("pounding", r_ours)):
                 e = [abs(pct(a, b)) for a, b in zip(r["peak_force"], ref["peak_force"]) if b > 0]
                 print(f"  {label}, {tool}: worst per-floor peak-force error "

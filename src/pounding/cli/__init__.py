@@ -12,8 +12,11 @@ import sys
 from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
     commands_contact,
     commands_ellipse,
+    commands_gap,
     commands_record,
+    commands_report,
     commands_run,
+    commands_sweep,
 )
 from pounding.cli.app import app, err_console
 

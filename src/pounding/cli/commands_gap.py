@@ -1,0 +1,3 @@
+"""`pounding gap`."""
+
+from pounding.cli.app import app, console  # noqa: F401

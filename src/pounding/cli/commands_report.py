@@ -1,0 +1,3 @@
+"""`pounding report`."""
+
+from pounding.cli.app import app, console  # noqa: F401

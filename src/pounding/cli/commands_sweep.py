@@ -1,0 +1,3 @@
+"""`pounding sweep`."""
+
+from pounding.cli.app import app, console  # noqa: F401
