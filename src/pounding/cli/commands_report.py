@@ -1,3 +1,28 @@
 """`pounding report`."""
 
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
 from pounding.cli.app import app, console  # noqa: F401
+
+
+@app.command("report")
+def report_cmd(
+    results_dir: Annotated[Path, typer.Argument(
+        help="Output folder of `pounding run` (summary.json, timehistories.nc) or of "
+             "`pounding sweep` (results.parquet).", show_default=False)],
+    out: Annotated[Path | None, typer.Option(
+        "--out", "-o", help="HTML file to write (default: RESULTS_DIR/report.html). Written "
+                            "complete or not at all.", show_default=False)] = None,
+) -> None:
+    """Write one self-contained HTML page (figures embedded) for a run or a sweep."""
+    from pounding.report import write_report
+
+    path = write_report(results_dir, out)
+    size = path.stat().st_size
+    console.print(f"report written: [bold]{path}[/] ({size / 1024:.0f} kB, self-contained)",
+                  highlight=False)

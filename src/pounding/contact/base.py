@@ -68,7 +68,7 @@ NONLINEAR_VISCOELASTIC: int = 5
 BILINEAR_IMPACT: int = 6
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def open_or_onset(delta: float, rate: float, v0: float, slip: float, dmax: float):
     """Steps 2–3 of the contract, shared by every law (scalar, pure).
 

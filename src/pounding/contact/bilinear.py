@@ -16,7 +16,7 @@ from pounding.contact.base import BILINEAR_IMPACT, ContactLaw, open_or_onset
 from pounding.validation import in_range, positive, restitution
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def bilinear_impact_trial(k1, k2, dy, delta, rate, v0, slip, dmax):
     """Bilinear impact element (params: [K1, K2, δy]).
 

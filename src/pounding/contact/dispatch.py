@@ -36,7 +36,7 @@ PARAMS_SIZE: int = 3
 """Every law's constants fit in three numbers (zero-padded)."""
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
     """Trial of the law ``code`` (contract step 4), all scalars.
 
@@ -88,7 +88,7 @@ def respond_path(code, params, delta, rate):
     return force
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def stored_energy(code, p0, p1, p2, delta, slip):
     """Elastic energy [J] the contact would give back if unloaded now (scalar form).
 

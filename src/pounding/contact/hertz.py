@@ -27,7 +27,7 @@ DELTA_TINY: float = 1e-300
 # --------------------------------------------------------------------------- kernels
 # Compiled trials (contract step 4): (p0, p1, p2, δ, δ̇, v0, slip, dmax) →
 # (F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax').
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def hertz_trial(k, n, _p2, delta, rate, v0, slip, dmax):
     """Hertz ``F = k_h δⁿ`` (params: [k_h, n])."""
     v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
@@ -37,7 +37,7 @@ def hertz_trial(k, n, _p2, delta, rate, v0, slip, dmax):
     return f, n * f / max(delta, DELTA_TINY), 0.0, v0, slip, dmax
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def hunt_crossley_trial(k, n, chi, delta, rate, v0, slip, dmax):
     """Hunt–Crossley ``F = k_h δⁿ (1 + χ δ̇ / v0)`` (params: [k_h, n, χ]), clipped at F ≥ 0."""
     v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
@@ -51,7 +51,7 @@ def hunt_crossley_trial(k, n, chi, delta, rate, v0, slip, dmax):
             v0, slip, dmax)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def nonlinear_viscoelastic_trial(k, zeta, m, delta, rate, v0, slip, dmax):
     """Jankowski ``F = k_h δ^1.5 + c δ̇`` approaching, ``k_h δ^1.5`` separating, with
     ``c = 2 ζ sqrt(k_h sqrt(δ) m_eff)`` (params: [k_h, ζ, m_eff]).

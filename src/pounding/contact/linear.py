@@ -26,7 +26,7 @@ from pounding.validation import non_negative, positive
 # --------------------------------------------------------------------------- kernels
 # Compiled trials (contract step 4): (p0, p1, p2, δ, δ̇, v0, slip, dmax) →
 # (F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax').
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def linear_spring_trial(k, _p1, _p2, delta, rate, v0, slip, dmax):
     """Gap spring ``F = k δ`` (params: [k])."""
     v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
@@ -35,7 +35,7 @@ def linear_spring_trial(k, _p1, _p2, delta, rate, v0, slip, dmax):
     return k * delta, k, 0.0, v0, slip, dmax
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def kelvin_voigt_trial(k, c, tension, delta, rate, v0, slip, dmax):
     """Kelvin–Voigt ``F = k δ + c δ̇`` (params: [k, c, tension]).
 
@@ -51,7 +51,7 @@ def kelvin_voigt_trial(k, c, tension, delta, rate, v0, slip, dmax):
     return f, k, c, v0, slip, dmax
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def modified_kelvin_voigt_trial(k, c, _p2, delta, rate, v0, slip, dmax):
     """Modified Kelvin–Voigt: ``F = k δ + c δ̇`` approaching, ``F = k δ`` separating."""
     v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)

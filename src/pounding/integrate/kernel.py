@@ -59,7 +59,7 @@ W_T_LOCAL, W_H, W_E_INPUT, W_E_DAMP = range(4)
 I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS = range(6)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cparams,
            committed, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, per-contact F δ̇].
@@ -105,7 +105,7 @@ def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cpara
             dy[row, n + b] += f / m_diag[b]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap,
              ccode, cparams, committed, ks, ps, ytmp, y1, atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
@@ -115,8 +115,10 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl
     Row 6 of ks/ps is f at y1 (first-same-as-last).
     """
     m = y0.shape[0]
-    ks[0, :] = k1[0]
-    ps[0, :] = p1[0]
+    for i in range(m):
+        ks[0, i] = k1[0, i]
+    for i in range(ps.shape[1]):
+        ps[0, i] = p1[0, i]
     for i in range(m):
         ytmp[i] = y0[i] + h * _A21 * ks[0, i]
     _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
@@ -153,7 +155,7 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl
     return np.sqrt(err / m)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _hermite_root(g0, d0, g1, d1, h, upward):
     """First root in (0, h] of the cubic Hermite interpolant of g (values g0, g1; slopes d0,
     d1), crossing upward (g from ≤ 0 to > 0) if ``upward`` else downward. −1 if none.
@@ -192,7 +194,7 @@ def _hermite_root(g0, d0, g1, d1, h, upward):
     return -1.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _event_value(kind, c, y, n, cl, cr, cgap):
     """Event function of contact c: δ for onset/separation, δ̇ for phase switches."""
     a = cl[c]
@@ -202,7 +204,7 @@ def _event_value(kind, c, y, n, cl, cr, cgap):
     return y[a] - y[b] - cgap[c]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind):
     # k0: row 0 is f(y0); k1: row 6 is f(y1)
     """Earliest event in a step, from the Hermite interpolants of every contact's δ and δ̇.
@@ -254,7 +256,7 @@ def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind
     return best_t, best_c, best_k
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
                     m_diag, mr, r, cl, cr, cgap, ccode, cparams, rtol, atol,
                     h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
@@ -452,8 +454,11 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             err_after = err
                             for i in range(m):
                                 y1[i] = yb[i]
-                            ks[:, :] = ks_b
-                            ps[:, :] = ps_b
+                            for q in range(7):
+                                for i in range(m):
+                                    ks[q, i] = ks_b[q, i]
+                                for i in range(2 + nc):
+                                    ps[q, i] = ps_b[q, i]
                             if abs(g) <= g_tol:
                                 break
                         else:

@@ -1,0 +1,72 @@
+"""The separation-gap figure: critical gap against elevation, simulated and by code rules."""
+
+from __future__ import annotations
+
+from matplotlib.figure import Figure
+
+from pounding.studies.gap import DesignSpectrum, GapStudy
+
+RULE_STYLE = {"ABS": "tab:red", "SRSS": "tab:green", "DDC": "tab:purple"}
+"""Colour of each code rule."""
+
+
+def plot_gap_study(study: GapStudy, spectrum: DesignSpectrum | None = None) -> Figure:
+    """Gap [m] against elevation [m], one panel per pair of neighbours.
+
+    * thin grey lines: the critical gap by simulation for each record;
+    * thick black line: its maximum over the records;
+    * dashed: ABS, SRSS and DDC from the mean simulated peak displacements;
+    * dotted (with ``spectrum``): the same rules from the design spectrum.
+
+    A pair with one shared level shows points (markers on every line).
+
+    Parameters
+    ----------
+    study : GapStudy
+        From :func:`pounding.studies.gap.critical_gaps`.
+    spectrum : DesignSpectrum, optional
+        Adds the rules from this spectrum.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Write it with :func:`pounding.plot.save_figure`.
+    """
+    n_pairs = len(study.model.buildings) - 1
+    pairs = [p for p in range(n_pairs) if (study.pair == p).any()]
+    fig = Figure(figsize=(4.2 * len(pairs) + 1.4, 5.2))
+    axes = [fig.add_subplot(1, len(pairs), i + 1) for i in range(len(pairs))]
+    from_peaks = study.rules_from_peaks("mean")
+    from_spec = study.rules_from_spectrum(spectrum) if spectrum is not None else None
+    for ax, p in zip(axes, pairs):
+        sel = study.pair == p
+        z = study.elevation[sel]
+        mk = "o" if sel.sum() == 1 else "."
+        for i, name in enumerate(study.records):
+            ax.plot(study.critical[i, sel], z, color="0.55", lw=0.8, marker=mk, ms=3,
+                    label="simulated, each record" if i == 0 else None)
+        ax.plot(study.max_critical[sel], z, color="k", lw=2.4, marker=mk, ms=5,
+                label="simulated, max over records")
+        for rule, values in from_peaks.items():
+            ax.plot(values[sel], z, ls="--", lw=1.4, color=RULE_STYLE[rule], marker=mk, ms=4,
+                    label=f"{rule} (mean simulated peaks)")
+        if from_spec is not None:
+            for rule, values in from_spec.items():
+                ax.plot(values[sel], z, ls=":", lw=1.6, color=RULE_STYLE[rule], marker="x",
+                        ms=5, label=f"{rule} (design spectrum)")
+        b1, b2 = study.model.buildings[p], study.model.buildings[p + 1]
+        ax.set_title(f"B{p + 1} {b1.name} – B{p + 2} {b2.name}\n"
+                     f"T1 = {study.period[p]:.3g} s / {study.period[p + 1]:.3g} s, "
+                     f"ρ = {study.rho[p]:.3f}", fontsize=9)
+        ax.set_xlabel("separation gap [m]")
+        ax.set_xlim(left=0.0)
+        ax.set_ylim(0.0, max(float(z.max()) * 1.08, 0.1))
+        ax.grid(True, lw=0.4, alpha=0.5)
+    axes[0].set_ylabel("elevation above ground [m]")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=2,
+               fontsize=7, frameon=False)
+    fig.suptitle(f"{study.model.name}: critical gap by simulation ({len(study.records)} "
+                 f"record{'s' if len(study.records) != 1 else ''}) and code rules", fontsize=10)
+    fig.tight_layout()
+    return fig
