@@ -381,8 +381,8 @@ def _building_of(label: str) -> int:
 def _damping_text(d: Any) -> str:
     name = type(d).__name__
     fields = getattr(d, "__dataclass_fields__", {})
-    args = ", ".join(f"{k}={_num(getattr(d, k)) if isinstance(getattr(d, k), float) else getattr(d, k)}"
-                     for k in fields)
+    values = {k: getattr(d, k) for k in fields}
+    args = ", ".join(f"{k}={_num(v) if isinstance(v, float) else v}" for k, v in values.items())
     return f"{name}({args})"
 
 
@@ -569,7 +569,8 @@ def _result_from(r: _Run) -> Any:
             arr[:, j] = r.impacts[col].to_numpy(dtype=float)
     sv = r.summary.get("solver", {}) or {}
     stats = SolverStats(solver=str(sv.get("name", "?")), rtol=float(sv.get("rtol") or 0.0),
-                        rk_steps=int(sv.get("rk_steps") or 0), rejected=int(sv.get("rejected") or 0),
+                        rk_steps=int(sv.get("rk_steps") or 0),
+                        rejected=int(sv.get("rejected") or 0),
                         events=int(sv.get("events") or 0),
                         impact_overflow=bool(sv.get("impact_table_overflow")),
                         wall_time=float(sv.get("wall_time_s") or 0.0))
@@ -735,8 +736,9 @@ def _gap_check_section(r: _Run) -> str:
         t.html(),
         _note("Displacements are positive to the right, so the gap between a floor of the "
               "left building and the floor of its right neighbour closes when "
-              "u_left − u_right reaches the gap; the penetration is δ = u_left − u_right − gap "
-              "(timehistories.nc). max(u_left − u_right) is taken over the output samples; "
+              "u_left − u_right reaches the gap; the penetration is "
+              "δ = u_left − u_right − gap (timehistories.nc). max(u_left − u_right) is "
+              "taken over the output samples; "
               "the peak penetration also uses the impact table (resolved between samples)."),
         _note("Critical gap: the smallest gap that avoids contact under this record is "
               "max(u_left − u_right) of a run in which the buildings never touch. It is "

@@ -64,26 +64,26 @@ def _load_records(cfg: Any, files: list[Path], dt: float | None, units: str | No
 
 @app.command("gap")
 def gap_cmd(
-    model_file: Annotated[Path, typer.Argument(
-        metavar="MODEL", help="TOML model file, as for `pounding run` (its gaps and contact "
+    model: Annotated[Path, typer.Argument(
+        help="TOML model file, as for `pounding run` (its gaps and contact "
                               "law are not used).", show_default=False)],
     more_records: Annotated[list[Path] | None, typer.Argument(
-        metavar="[FILE ...]", help="More record files after --records FILE.",
+        metavar="RECORDS", help="More record files, after --records FILE.",
         show_default=False)] = None,
     records: Annotated[list[Path] | None, typer.Option(
         "--records", metavar="FILE", help="Record files (PEER .AT2 or text, read as by "
         "`pounding record`): --records A.AT2 B.AT2 ... or --records A --records B. "
-        "Default: the model file's [record]. The [record] duration, scale and pga_g of the "
-        "model file are applied to every file (see --unscaled).", show_default=False)] = None,
+        "Default: the model file's \\[record], whose duration, scale and pga_g are also "
+        "applied to every file given here (see --unscaled).", show_default=False)] = None,
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for record files that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
         "--units", help="Acceleration unit for record files that do not state one.")] = None,
     unscaled: Annotated[bool, typer.Option(
         "--unscaled", help="Use the --records files as recorded: ignore the model file's "
-                           "[record] scale / pga_g.")] = False,
+                           "\\[record] scale / pga_g.")] = False,
     duration: Annotated[float | None, typer.Option(
-        "--duration", help="Time simulated \\[s] for every record (default: [solver] "
+        "--duration", help="Time simulated \\[s] for every record (default: \\[solver] "
                            "duration of the model file, else each record's duration).")] = None,
     spectrum: Annotated[Path | None, typer.Option(
         "--spectrum", metavar="FILE", help="Design spectrum (TOML: kind, units, periods, "
@@ -103,10 +103,11 @@ def gap_cmd(
         raise ValueError(f"unexpected argument(s) {', '.join(map(str, more_records))}: "
                          "give record files after --records")
     files = [*(records or []), *(more_records or [])]
-    cfg = load_config(model_file)
+    model_path = model
+    cfg = load_config(model_path)
     model, _, solver = cfg.build()
     if len(model.buildings) < 2:
-        raise ValueError(f"{model_file}: a gap study needs at least two buildings "
+        raise ValueError(f"{model_path}: a gap study needs at least two buildings "
                          f"(got {len(model.buildings)})")
     spec = DesignSpectrum.from_file(spectrum) if spectrum is not None else None
     if spec is not None:  # fail before simulating if a fundamental period is off the table
@@ -185,7 +186,7 @@ def gap_cmd(
     if csv is not None:
         from pounding.io import write_text
 
-        write_text(csv, "# lengths in m, elevation in m; */max = rule / max simulated\n"
+        write_text(csv, "# lengths in m, elevation in m; */max, */mean = rule / simulated max, mean\n"
                    + study.to_frame(spec).to_csv(index=False))
         console.print(f"table: {csv}", highlight=False)
     if plot is not None:

@@ -516,22 +516,24 @@ class GapStudy:
     def to_frame(self, spectrum: DesignSpectrum | None = None) -> pd.DataFrame:
         """One row per level: pair, elevation [m], critical gap per record [m], mean, max,
         the rules from the mean simulated peaks and (with ``spectrum``) from the spectrum,
-        each with its ratio to the simulated max."""
+        each with its ratio to the simulated max and to the simulated mean (NaN where the
+        simulated gap is 0)."""
         df = pd.DataFrame({"pair": [f"B{p + 1}-B{p + 2}" for p in self.pair],
                            "contact": list(self.labels), "elevation_m": self.elevation})
         for name, row in zip(_unique(self.records), self.critical):
             df[f"critical_m[{name}]"] = row
         df["mean_m"] = self.mean_critical
         df["max_m"] = self.max_critical
-        sim = self.max_critical
+        sim, avg = self.max_critical, self.mean_critical
         sets: list[tuple[str, dict[str, FloatArray]]] = [("peaks", self.rules_from_peaks())]
         if spectrum is not None:
             sets.append(("spectrum", self.rules_from_spectrum(spectrum)))
         for where, rules in sets:
             for k, v in rules.items():
                 df[f"{k}_{where}_m"] = v
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    df[f"{k}_{where}/max"] = np.where(sim > 0, v / np.where(sim > 0, sim, 1), np.nan)
+                for ref, stat in ((sim, "max"), (avg, "mean")):
+                    df[f"{k}_{where}/{stat}"] = np.where(ref > 0, v / np.where(ref > 0, ref, 1.0),
+                                                         np.nan)
         return df
 
 
