@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import sys
 
+from rich.markup import escape
+
 from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
     commands_contact,
     commands_ellipse,
@@ -34,7 +36,8 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as exc:  # typer/click end every run this way in standalone mode
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     except (ValueError, FileNotFoundError, IsADirectoryError, NotADirectoryError) as exc:
-        err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
+        err_console.print(f"[bold red]error:[/] {escape(str(exc))}", highlight=False,
+                          soft_wrap=True)
         code = 2
     if argv is None:
         sys.exit(code)
