@@ -15,7 +15,8 @@ from pounding.model import PoundingModel
 from pounding.structure import ModalDamping, RayleighDamping
 
 ROOT = Path(__file__).resolve().parents[1]
-EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
+# model files (sweep files, sweep_*.toml, are tested in tests/studies/test_sweep.py)
+EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml") if not p.name.startswith("sweep_"))
 DEMO = ROOT / "src" / "pounding" / "data" / "demo.toml"
 
 

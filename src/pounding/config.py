@@ -19,6 +19,8 @@ error messages of the library itself). The format, key by key, is in ``docs/runn
 
 from __future__ import annotations
 
+import functools
+
 import difflib
 import json
 import math
@@ -103,6 +105,14 @@ class _Section(BaseModel):
 
 
 # ============================================================================ record
+@functools.lru_cache(maxsize=32)
+def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float | None,
+                        units: str | None) -> GroundMotion:
+    """:func:`read_record`, remembered per file version (modification time and size), so a
+    sweep reading one record for thousands of cases parses it once per process."""
+    return read_record(path, dt=dt, units=units)
+
+
 class RecordConfig(_Section):
     """``[record]``: the ground motion.
 
@@ -168,7 +178,10 @@ class RecordConfig(_Section):
             gm = (el_centro() if self.bundled.lower() in EL_CENTRO_ALIASES
                   else load_bundled(self.bundled))
         else:
-            gm = read_record(self.path, dt=self.dt, units=self.units)  # type: ignore[arg-type]
+            path = self.path
+            stat = path.stat() if path is not None and path.exists() else None
+            gm = _read_record_cached(path, None if stat is None else (stat.st_mtime_ns, stat.st_size),
+                                     self.dt, self.units)
         if self.duration is not None:
             gm = gm.trimmed(self.duration)
         if self.scale is not None:

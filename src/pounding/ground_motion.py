@@ -18,6 +18,7 @@ Every reader raises :class:`ValueError` naming the file, the line and the bad va
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import os
 import re
@@ -662,8 +663,11 @@ def bundled_records() -> list[str]:
                   if f.is_file() and f.name.lower().endswith(".at2"))
 
 
+@functools.lru_cache(maxsize=16)
 def load_bundled(name: str) -> GroundMotion:
-    """Read a bundled record by file name (see :func:`bundled_records`); the stem works too."""
+    """Read a bundled record by file name (see :func:`bundled_records`); the stem works too.
+
+    Cached: the data ship with the package and a GroundMotion is immutable."""
     names = bundled_records()
     match = [n for n in names if name in (n, Path(n).stem)]
     if not match:
@@ -675,6 +679,7 @@ def load_bundled(name: str) -> GroundMotion:
     return dataclasses.replace(gm, source=f"pounding/data/{match[0]} (bundled)")
 
 
+@functools.lru_cache(maxsize=1)
 def el_centro() -> GroundMotion:
     """Imperial Valley 1940, El Centro Array #9, component 180 (PEER; bundled).
 

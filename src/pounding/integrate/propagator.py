@@ -18,6 +18,8 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+import hashlib
+
 import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
@@ -43,8 +45,30 @@ def state_matrix(M: NDArray[np.float64], C: NDArray[np.float64],
     return a
 
 
+_CACHE: dict[bytes, Propagator] = {}
+_CACHE_SIZE = 64
+
+
 def propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
                r: NDArray[np.float64], h: float) -> Propagator:
+    """Exact propagator of the linear structure over a step ``h`` [s] with linear ``a_g``
+    (see :func:`compute_propagator`), remembered per structure and step: a sweep over gaps,
+    restitution or records reuses one matrix exponential. The arrays are read-only."""
+    key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
+                                for a in (M, C, K, r)) + repr((M.shape, float(h))).encode()).digest()
+    hit = _CACHE.get(key)
+    if hit is None:
+        hit = compute_propagator(M, C, K, r, h)
+        for a in hit:
+            a.setflags(write=False)
+        if len(_CACHE) >= _CACHE_SIZE:
+            _CACHE.pop(next(iter(_CACHE)))
+        _CACHE[key] = hit
+    return hit
+
+
+def compute_propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                       r: NDArray[np.float64], h: float) -> Propagator:
     """Exact propagator of the linear structure over a step ``h`` [s] with linear ``a_g``.
 
     Parameters

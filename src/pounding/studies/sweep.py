@@ -25,14 +25,12 @@ from __future__ import annotations
 
 import contextlib
 import copy
-import functools
 import hashlib
 import itertools
 import json
 import math
 import os
 import shutil
-import threading
 import time
 import tomllib
 from collections.abc import Callable, Iterator, Sequence
@@ -511,77 +509,14 @@ def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Seq
 
 
 # ============================================================================ worker side
-class _Caches:
-    """Per-process memo of the pure, costly steps repeated from case to case: reading a
-    record file and the exact propagator (a matrix exponential) of an unchanged structure.
-
-    They are installed by wrapping the module-level names :mod:`pounding.config` and
-    :mod:`pounding.integrate` call; the wrapped functions are pure and return immutable
-    data (read-only arrays), so results are bit-identical with and without the memo.
-    """
-
-    lock = threading.Lock()
-    depth = 0
-    saved: dict[tuple[Any, str], Any] = {}
-
-    @classmethod
-    @contextlib.contextmanager
-    def installed(cls) -> Iterator[None]:
-        import pounding.config as config_mod
-        import pounding.integrate as integ_mod
-
-        with cls.lock:
-            if cls.depth == 0:
-                targets = [(config_mod, "el_centro"), (config_mod, "load_bundled"),
-                           (config_mod, "read_record"), (integ_mod, "propagator")]
-                for mod, name in targets:
-                    orig = getattr(mod, name)
-                    cls.saved[(mod, name)] = orig
-                    wrapped = (_memo_propagator(orig) if name == "propagator"
-                               else functools.lru_cache(maxsize=32)(orig))
-                    setattr(mod, name, wrapped)
-            cls.depth += 1
-        try:
-            yield
-        finally:
-            with cls.lock:
-                cls.depth -= 1
-                if cls.depth == 0:
-                    for (mod, name), orig in cls.saved.items():
-                        setattr(mod, name, orig)
-                    cls.saved.clear()
-
-
-def _memo_propagator(orig: Callable[..., Any]) -> Callable[..., Any]:
-    cache: dict[bytes, Any] = {}
-
-    def wrapped(M: np.ndarray, C: np.ndarray, K: np.ndarray, r: np.ndarray, h: float) -> Any:
-        key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
-                                    for a in (M, C, K, r)) + repr((M.shape, float(h))).encode()
-                           ).digest()
-        hit = cache.get(key)
-        if hit is None:
-            hit = orig(M, C, K, r, h)
-            for arr in hit:
-                if isinstance(arr, np.ndarray):
-                    arr.setflags(write=False)
-            if len(cache) >= 64:
-                cache.pop(next(iter(cache)))
-            cache[key] = hit
-        return hit
-
-    return wrapped
-
-
 def _run_batch(payload: dict[str, Any], batch: list[tuple[int, str, tuple]]
                ) -> list[tuple[str, dict[str, Any], Any]]:
     """Run a batch of cases (one Dask task): ``[(case_id, row, dataset), ...]``."""
     out = []
-    with _Caches.installed():
-        for _, cid, values in batch:
-            row, ds = run_case(payload["base"], payload["base_dir"], payload["params"], values,
-                               history=payload["histories"] is not None)
-            out.append((cid, row, ds))
+    for _, cid, values in batch:
+        row, ds = run_case(payload["base"], payload["base_dir"], payload["params"], values,
+                           history=payload["histories"] is not None)
+        out.append((cid, row, ds))
     return out
 
 
@@ -815,8 +750,12 @@ def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
             yield client
         return
     n = n_workers or (os.cpu_count() or 1)
-    with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                      dashboard_address=None, silence_logs=40) as cluster, \
+    import dask
+
+    # the statistical profiler samples every thread each 10 ms: measurable on ms-long cases
+    with dask.config.set({"distributed.worker.profile.enabled": False}), \
+            LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                         dashboard_address=None, silence_logs=40) as cluster, \
             Client(cluster) as client:
         yield client
 
