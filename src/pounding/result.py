@@ -73,6 +73,9 @@ class Result:
     impact_array : ndarray (n_impacts, 8)
         Rows of the impact table, columns :data:`IMPACT_COLUMNS`.
     stats : SolverStats
+    contact_peak, contact_impacts : ndarray (n_c,), optional
+        Peak force [N] and number of impacts of each contact, kept by the solver even when
+        the impact table overflows (derived from the table when not given).
     """
 
     model: PoundingModel
@@ -87,6 +90,8 @@ class Result:
     energy: NDArray[np.float64] = field(repr=False)
     impact_array: NDArray[np.float64] = field(repr=False)
     stats: SolverStats
+    contact_peak: NDArray[np.float64] | None = field(default=None, repr=False)
+    contact_impacts: NDArray[np.int64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property
@@ -119,7 +124,10 @@ class Result:
         """One row per impact: contact label, start/end [s], impact velocity v0 [m/s], peak
         force [N], maximum penetration [m], achieved restitution, energy dissipated [J].
 
-        ``restitution`` is ``−δ̇_separation / v0``. Between buildings it is not bounded by 1:
+        An impact ends when the penetration returns to zero (``end``); for laws that cannot
+        pull (clipped Kelvin–Voigt, Hunt–Crossley) the force may have returned to zero a
+        little earlier, which is where :func:`pounding.contact.collision.simulate_collision`
+        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``. Between buildings it is not bounded by 1:
         the floors are not free bodies, and the rest of each building can push them apart
         faster than they met. Impacts still open at the end have NaN end, restitution and
         energy."""
@@ -133,16 +141,19 @@ class Result:
     @property
     def n_impacts(self) -> int:
         """Number of impacts (all contacts)."""
+        if self.contact_impacts is not None:
+            return int(np.sum(self.contact_impacts))
         return int(self.impact_array.shape[0])
 
-    @property
+    @cached_property
     def peak_contact_force(self) -> NDArray[np.float64]:
-        """Largest force of every contact [N] (n_c,), from the impact table (sub-step
-        resolution), or 0 for a contact that never closed."""
+        """Largest force of every contact [N] (n_c,), located inside solver steps, or 0 for
+        a contact that never closed."""
+        if self.contact_peak is not None:
+            return np.asarray(self.contact_peak, dtype=float)
         out = np.zeros(len(self.model.contacts))
-        for row in self.impact_array:
-            c = int(row[0])
-            out[c] = max(out[c], row[4])
+        if self.impact_array.size:
+            np.maximum.at(out, self.impact_array[:, 0].astype(int), self.impact_array[:, 4])
         return out
 
     @property
@@ -157,11 +168,15 @@ class Result:
 
     @cached_property
     def energy_balance_error(self) -> float:
-        """Largest ``|E_input − (E_kin + E_strain + E_damping + W_contact)|`` over the run,
-        relative to the largest input energy (dimensionless)."""
+        """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + W_contact)|`` over the
+        run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
+        largest input energy and ``E_0`` (dimensionless; 0 for a run with no energy)."""
         e = self.energy
-        closure = e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4])
-        scale = max(np.abs(e[:, 0]).max(), 1e-300)
+        e0 = e[0, 1] + e[0, 2]
+        closure = e0 + e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4])
+        scale = max(np.abs(e[:, 0]).max(), e0)
+        if scale <= 0.0:
+            return 0.0
         return float(np.abs(closure).max() / scale)
 
     # ----------------------------------------------------------------- exports

@@ -219,3 +219,42 @@ def test_exact_and_rk_free_stepping_agree(el_centro_8s):
 def test_free_stepping_is_validated():
     with pytest.raises(ValueError, match="free_stepping"):
         simulate(sdof_pair(KV), zero_motion(0.1), free_stepping="fast")
+
+
+def test_free_vibration_after_the_record_does_not_depend_on_the_output_step():
+    # after its last sample the record returns to zero over one record step, whatever dt
+    model = sdof_pair(KV, gap=1.0)
+    gm = el_centro().trimmed(4.0)
+    a = simulate(model, gm, dt=0.001, duration=6.0)
+    b = simulate(model, gm, dt=0.005, duration=6.0)
+    ref = simulate_reference(model, gm, dt=0.005, duration=6.0)
+    assert np.max(np.abs(a.displacement[::5] - b.displacement)) < 1e-10
+    assert np.max(np.abs(b.displacement - ref.displacement)) < 1e-8
+
+
+def test_energy_balance_counts_the_initial_energy():
+    # no ground motion: all the energy is the initial kinetic energy, shared by the end
+    # between viscous damping, contact dissipation and what is left
+    model = sdof_pair(NLVE, gap=0.001)
+    v0 = np.array([0.5, 0.0])
+    res = simulate(model, zero_motion(3.0), initial_velocity=v0)
+    assert res.n_impacts >= 1
+    e0 = 0.5 * M1 * v0[0] ** 2
+    assert res.energy[0, 1] == pytest.approx(e0, rel=1e-12)
+    assert res.energy_balance_error < 1e-6
+    end = res.energy[-1]
+    assert end[1] + end[2] + end[3] + end[4] == pytest.approx(e0, rel=1e-6)
+
+
+def test_row_of_three_with_different_heights_matches_reference():
+    # seed cases 2B and 2C together: short impacts between the upper floors too
+    left = ShearBuilding.uniform(4, 3e5, 4e8)
+    mid = ShearBuilding.uniform(2, 2e5, 2e8)
+    right = ShearBuilding.uniform(3, 2.5e5, 5e8)
+    model = PoundingModel([left, mid, right], [0.01, 0.01], NLVE)
+    gm = el_centro().trimmed(5.0).scaled(1.5)
+    res = simulate(model, gm)
+    ref = simulate_reference(model, gm)
+    assert res.n_impacts == ref.n_impacts > 5
+    np.testing.assert_allclose(res.peak_contact_force, ref.peak_contact_force, rtol=5e-4)
+    np.testing.assert_allclose(res.impacts["peak_force"], ref.impacts["peak_force"], rtol=1e-3)

@@ -10,6 +10,7 @@ is the one compiled kernel of :mod:`pounding.integrate.kernel`; the answer is a
 from __future__ import annotations
 
 import math
+import warnings
 import time
 from collections.abc import Callable
 
@@ -79,10 +80,18 @@ def grid_step(record_dt: float, dt: float | None = None) -> float:
 
 
 def ground_on_grid(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
-    """Ground acceleration [m/s²] at ``k·dt`` for k = 0 … ⌈t_end/dt⌉ (zero after the record)."""
-    nt = int(round(t_end / dt)) + 1
+    """Ground acceleration [m/s²] at ``k·dt`` for k = 0 … ⌈t_end/dt⌉.
+
+    The record is linear between its samples; after its last sample it returns linearly to
+    zero over one record step and stays there — a rule that does not depend on ``dt``.
+    """
+    nt = int(math.ceil(t_end / dt - 1e-9)) + 1
+    if nt < 2:
+        raise ValueError(f"duration: {t_end:g} s is shorter than one output step ({dt:g} s)")
     t = np.arange(nt) * dt
-    return np.interp(t, motion.time, motion.accel, right=0.0)
+    t_rec = np.append(motion.time, motion.time[-1] + motion.dt)
+    a_rec = np.append(motion.accel, 0.0)
+    return np.interp(t, t_rec, a_rec, right=0.0)
 
 
 def initial_state(model: PoundingModel, u0: np.ndarray | None,
@@ -190,6 +199,8 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     f_out = np.zeros((nt, nc))
     e_out = np.zeros((nt, ENERGY_COLUMNS))
     imp = np.full((cap, IMP_COLUMNS), np.nan)
+    cpeak = np.zeros(nc)
+    ccount = np.zeros(nc, dtype=np.int64)
     u_out[0] = x[:n]
     v_out[0] = x[n:]
     pen_out[0] = x[cl] - x[cr] - cgap
@@ -202,7 +213,8 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
             half.gamma1, bw, np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
             np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cl, cr, cgap, ccode,
             np.ascontiguousarray(cparams), rtol, atol, h_max, x, committed, wc, w_start,
-            imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, e_out, imp)
+            imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, e_out, imp,
+            cpeak, ccount)
     start = time.perf_counter()
     for k0 in range(0, nt - 1, chunk):
         k1 = min(nt - 1, k0 + chunk)
@@ -214,10 +226,15 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
             progress(k1 / (nt - 1))
     wall = time.perf_counter() - start
     n_imp = int(ws_i[I_NIMP])
+    if n_imp > cap:
+        warnings.warn(f"impact table full: {n_imp} impacts, {cap} rows kept (raise "
+                      f"impact_capacity); peak forces and counts per contact are complete",
+                      RuntimeWarning, stacklevel=2)
     stats = SolverStats(solver="kernel", rtol=rtol, rk_steps=int(ws_i[I_NSTEPS]),
                         rejected=int(ws_i[I_NREJECT]), events=int(ws_i[I_NEVENTS]),
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
     return Result(model=model, motion=motion, dt=step, ground=ag,
                   displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
                   penetration=pen_out, contact_force=f_out, energy=e_out,
-                  impact_array=imp[: min(n_imp, cap)].copy(), stats=stats)
+                  impact_array=imp[: min(n_imp, cap)].copy(), stats=stats,
+                  contact_peak=cpeak, contact_impacts=ccount)

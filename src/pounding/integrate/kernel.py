@@ -195,6 +195,41 @@ def _hermite_root(g0, d0, g1, d1, h, upward):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+def _hermite_max(f0, d0, f1, d1, h):
+    """Largest value inside (0, h) of the cubic Hermite through (0, f0, slope d0) and
+    (h, f1, slope d1); −inf if it has no interior maximum."""
+    best = -np.inf
+    if h <= 0.0:
+        return best
+    # p(s) = f0 + b1 s + b2 s² + b3 s³ on s in [0, 1]
+    dlt = f1 - f0
+    b1 = h * d0
+    b2 = 3.0 * dlt - h * (2.0 * d0 + d1)
+    b3 = h * (d0 + d1) - 2.0 * dlt
+    # p'(s) = b1 + 2 b2 s + 3 b3 s² = 0
+    qa = 3.0 * b3
+    qb = 2.0 * b2
+    r1 = -1.0
+    r2 = -1.0
+    if abs(qa) < 1e-300 * (abs(qb) + abs(b1) + 1e-300):
+        if qb != 0.0:
+            r1 = -b1 / qb
+    else:
+        disc = qb * qb - 4.0 * qa * b1
+        if disc < 0.0:
+            return best
+        sq = np.sqrt(disc)
+        r1 = (-qb + sq) / (2.0 * qa)
+        r2 = (-qb - sq) / (2.0 * qa)
+    for sr in (r1, r2):
+        if 0.0 < sr < 1.0 and qb + 2.0 * qa * sr < 0.0:
+            val = f0 + sr * (b1 + sr * (b2 + sr * b3))
+            if val > best:
+                best = val
+    return best
+
+
+@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
 def _event_value(kind, c, y, n, cl, cr, cgap):
     """Event function of contact c: δ for onset/separation, δ̇ for phase switches."""
     a = cl[c]
@@ -260,7 +295,7 @@ def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind
 def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
                     m_diag, mr, r, cl, cr, cgap, ccode, cparams, rtol, atol,
                     h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
-                    u_out, v_out, acc_out, pen_out, f_out, e_out, imp):
+                    u_out, v_out, acc_out, pen_out, f_out, e_out, imp, cpeak, ccount):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``.
 
     Parameters (all arrays are updated in place)
@@ -287,12 +322,16 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
     imp_row : (n_c,) int
         Row of each contact's open impact in ``imp`` (−1 if none).
     last_f : (n_c, 4)
-        Last two step-end (t, F) per contact, for the parabolic peak-force refinement.
+        Per closed contact: time, force and force rate dF/dt at the start of the current
+        step, for locating the peak force inside each step (cubic Hermite).
     ws_f, ws_i
         Workspace scalars (local time, RK step, cumulative input and viscous energy) and
         counters (mode, impacts, overflow, RK steps, rejections, events).
     u_out, v_out, acc_out : (nt, N); pen_out, f_out : (nt, n_c); e_out : (nt, 6); imp : (cap, 8)
         Outputs.
+    cpeak, ccount : (n_c,)
+        Peak force [N] and number of impacts of every contact (kept even if the impact
+        table overflows).
     """
     n = r.shape[0]
     m = 2 * n
@@ -531,11 +570,15 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             ws_i[I_OVERFLOW] = 1
                             imp_row[c] = -1
                         ws_i[I_NIMP] += 1
+                        ccount[c] += 1
+                        if f0 > cpeak[c]:
+                            cpeak[c] = f0
                         w_start[c] = wc[c]
                         last_f[c, 0] = t_now
                         last_f[c, 1] = f0
-                        last_f[c, 2] = t_now
-                        last_f[c, 3] = f0
+                        # dF/dt at δ = 0+ can be unbounded (Hertz-type laws): no interior
+                        # peak is sought in the first step, whose end value is kept instead
+                        last_f[c, 2] = np.nan
                         ws_i[I_NEVENTS] += 1
                     elif committed[c, V0] > 0.0:
                         if c == ev_c and ev_kind == 2:
@@ -551,37 +594,28 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             state_changed = True
                             ws_i[I_NEVENTS] += 1
                         else:
-                            f, _, _, tv0, tslip, tdmax = law_trial(
+                            f, kd, kr, tv0, tslip, tdmax = law_trial(
                                 ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta,
                                 rate, committed[c, V0], committed[c, SLIP], committed[c, DMAX])
                             committed[c, V0] = tv0
                             committed[c, SLIP] = tslip
                             committed[c, DMAX] = tdmax
+                            # force rate at the step end, then the largest force inside the
+                            # step from the cubic Hermite of (F, dF/dt) at its two ends
+                            df1 = kd * rate + kr * (ks[6, n + a] - ks[6, n + b])
+                            fmax = max(f, _hermite_max(last_f[c, 1], last_f[c, 2], f, df1,
+                                                       t_now - last_f[c, 0]))
+                            if fmax > cpeak[c]:
+                                cpeak[c] = fmax
                             row = imp_row[c]
                             if row >= 0:
                                 if delta > imp[row, IMP_DMAX]:
                                     imp[row, IMP_DMAX] = delta
-                                if f > imp[row, IMP_PEAK]:
-                                    imp[row, IMP_PEAK] = f
-                                # parabola through the last three step-end forces
-                                t1 = last_f[c, 0]
-                                f1 = last_f[c, 1]
-                                t2 = last_f[c, 2]
-                                f2 = last_f[c, 3]
-                                if f2 >= f1 and f2 >= f and t2 > t1 and t_now > t2:
-                                    d1 = (f2 - f1) / (t2 - t1)
-                                    d2 = (f - f2) / (t_now - t2)
-                                    curv = (d2 - d1) / (t_now - t1)
-                                    if curv < 0.0:
-                                        tv = 0.5 * (t1 + t2) - d1 / (2.0 * curv)
-                                        if t1 <= tv <= t_now:
-                                            fv = f1 + d1 * (tv - t1) + curv * (tv - t1) * (tv - t2)
-                                            if fv > imp[row, IMP_PEAK]:
-                                                imp[row, IMP_PEAK] = fv
-                            last_f[c, 0] = last_f[c, 2]
-                            last_f[c, 1] = last_f[c, 3]
-                            last_f[c, 2] = t_now
-                            last_f[c, 3] = f
+                                if fmax > imp[row, IMP_PEAK]:
+                                    imp[row, IMP_PEAK] = fmax
+                            last_f[c, 0] = t_now
+                            last_f[c, 1] = f
+                            last_f[c, 2] = df1
                             if ev_c == c:
                                 ws_i[I_NEVENTS] += 1
                 if state_changed:
