@@ -25,7 +25,6 @@ import difflib
 import json
 import math
 import os
-import tomllib
 import types
 import typing
 from pathlib import Path
@@ -44,6 +43,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from pounding.contact.factory import LAW_NAMES
+from pounding.io import read_toml
 from pounding.ground_motion import GroundMotion, bundled_records, el_centro, load_bundled, read_record
 from pounding.model import ContactSpec, PoundingModel
 from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding
@@ -566,14 +566,7 @@ def load_config(path: str | os.PathLike[str]) -> RunConfig:
         one line per problem naming the key path and the value.
     """
     p = Path(path)
-    if not p.is_file():
-        raise ValueError(f"{p}: no such model file")
-    try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{p}: not valid TOML: {exc}") from None
-    except UnicodeDecodeError as exc:
-        raise ValueError(f"{p}: not a UTF-8 text file ({exc.reason})") from None
+    data = read_toml(p, "model file")
     cfg = parse_config(data, base_dir=p.resolve().parent, where=str(p))
     cfg._source = p.resolve()
     return cfg

@@ -37,6 +37,22 @@ def atomic_path(target: str | os.PathLike[str]) -> Iterator[Path]:
         raise
 
 
+def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
+    """Read a TOML file, raising one-line ``ValueError``s naming the file: missing, not
+    UTF-8, or not valid TOML. ``kind`` names what the file should be (``"model file"``)."""
+    import tomllib
+
+    p = Path(path)
+    if not p.is_file():
+        raise ValueError(f"{p}: no such {kind}")
+    try:
+        return tomllib.loads(p.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{p}: not valid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{p}: not a UTF-8 text file ({exc.reason})") from None
+
+
 def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)

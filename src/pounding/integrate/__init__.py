@@ -43,7 +43,7 @@ DEFAULT_OUTPUT_STEP: float = 1e-3
 """Default largest output (grid) step [s]."""
 
 
-EXACT_FREE_MAX_DOF: int = 12
+EXACT_FREE_MAX_DOF: int = 80
 """``free_stepping="auto"`` uses the exact propagator up to this many floors in all (measured
 crossover: see ``benchmarks/bench_scaling.py``)."""
 

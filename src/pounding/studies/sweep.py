@@ -32,13 +32,14 @@ import math
 import os
 import shutil
 import time
-import tomllib
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from pounding.io import read_toml
 
 __all__ = [
     "FLOOR_MEASURES",
@@ -288,12 +289,7 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
 def load_sweep(path: str | os.PathLike[str]) -> Sweep:
     """Read and validate a sweep file (see :func:`parse_sweep`)."""
     p = Path(path)
-    if not p.is_file():
-        raise ValueError(f"{p}: no such sweep file")
-    try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{p}: not valid TOML: {exc}") from None
+    data = read_toml(p, "sweep file")
     sweep = parse_sweep(data, base_dir=p.resolve().parent, where=str(p))
     sweep.source = p.resolve()
     return sweep
