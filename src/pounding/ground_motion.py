@@ -658,9 +658,14 @@ _EL_CENTRO = "elcentro_1940_IV_ELC9_180_PEER.AT2"
 
 def bundled_records() -> list[str]:
     """File names of the records shipped in ``pounding/data`` (provenance in its SOURCES.md)."""
+    return list(_bundled_names())
+
+
+@functools.lru_cache(maxsize=1)
+def _bundled_names() -> tuple[str, ...]:
     folder = resources.files("pounding").joinpath(_DATA)
-    return sorted(f.name for f in folder.iterdir()
-                  if f.is_file() and f.name.lower().endswith(".at2"))
+    return tuple(sorted(f.name for f in folder.iterdir()
+                        if f.is_file() and f.name.lower().endswith(".at2")))
 
 
 @functools.lru_cache(maxsize=16)

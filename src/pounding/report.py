@@ -37,6 +37,7 @@ import numpy as np
 import pandas as pd
 
 from pounding.io import write_text
+from pounding.result import peak_abs
 
 __all__ = ["DEFAULT_NAME", "MAX_IMPACT_ROWS", "MAX_SWEEP_ROWS", "RUN_FILES", "SWEEP_FILE",
            "detect_kind", "render_report", "write_report"]
@@ -489,9 +490,9 @@ def _record_section(r: _Run) -> str:
 def _response_table(r: _Run) -> str:
     ds = r.ds
     labels = [str(x) for x in ds["floor"].values]
-    disp = np.abs(np.asarray(ds["displacement"].values, dtype=float)).max(axis=0)
-    drift = np.abs(np.asarray(ds["drift"].values, dtype=float)).max(axis=0)
-    acc = (np.abs(np.asarray(ds["absolute_acceleration"].values, dtype=float)).max(axis=0)
+    disp = peak_abs(ds["displacement"].values)
+    drift = peak_abs(ds["drift"].values)
+    acc = (peak_abs(ds["absolute_acceleration"].values)
            if "absolute_acceleration" in ds else np.full(len(labels), np.nan))
     elev = (np.asarray(ds["floor_elevation"].values, dtype=float)
             if "floor_elevation" in ds.coords else np.full(len(labels), np.nan))

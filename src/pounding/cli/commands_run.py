@@ -24,7 +24,8 @@ from rich.progress import (
 from rich.table import Table
 from rich.text import Text
 
-from pounding.cli.app import app, console  # noqa: F401
+from pounding.cli.app import app, console
+from pounding.result import peak_abs  # noqa: F401
 
 PROGRESS_DELAY = 1.0
 """Seconds before the progress bar appears: quick runs print no bar."""
@@ -107,7 +108,7 @@ def _print_summary(out: Any) -> None:
                       ("peak roof displacement [m]", "right"), ("peak drift [m]", "right"),
                       ("at storey", "right"), ("peak drift ratio", "right")):
         bt.add_column(_h(col), justify=just)  # type: ignore[arg-type]
-    drift = np.abs(r.drift).max(axis=0)
+    drift = peak_abs(r.drift)
     for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
         d = drift[off: off + bl.n]
         j = int(np.argmax(d))

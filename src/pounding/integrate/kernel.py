@@ -291,7 +291,7 @@ def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind
     return best_t, best_c, best_k
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", nogil=True, fastmath={"reassoc", "contract"})
 def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
                     m_diag, mr, r, cl, cr, cgap, ccode, cparams, rtol, atol,
                     h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
