@@ -19,6 +19,10 @@ Two regimes, one kernel:
    step 4). Energies (input, viscous, contact work per contact) are integrated with the
    same RK weights, so they are as accurate as the motion.
 
+Floating point: no reassociation (``fastmath`` allows only fused multiply-add), so results
+do not depend on how arrays happen to be aligned in memory — a sweep's cases are
+bit-identical whichever process runs them.
+
 The kernel advances a chunk of grid steps ``[k0, k1)`` and keeps everything it needs between
 chunks in a workspace, so the caller can show progress on long runs.
 """
@@ -59,7 +63,7 @@ W_T_LOCAL, W_H, W_E_INPUT, W_E_DAMP = range(4)
 I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS = range(6)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cparams,
            committed, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, per-contact F δ̇].
@@ -105,7 +109,7 @@ def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cpara
             dy[row, n + b] += f / m_diag[b]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap,
              ccode, cparams, committed, ks, ps, ytmp, y1, atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
@@ -155,7 +159,7 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl
     return np.sqrt(err / m)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _hermite_root(g0, d0, g1, d1, h, upward):
     """First root in (0, h] of the cubic Hermite interpolant of g (values g0, g1; slopes d0,
     d1), crossing upward (g from ≤ 0 to > 0) if ``upward`` else downward. −1 if none.
@@ -194,7 +198,7 @@ def _hermite_root(g0, d0, g1, d1, h, upward):
     return -1.0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _hermite_max(f0, d0, f1, d1, h):
     """Largest value inside (0, h) of the cubic Hermite through (0, f0, slope d0) and
     (h, f1, slope d1); −inf if it has no interior maximum."""
@@ -229,7 +233,7 @@ def _hermite_max(f0, d0, f1, d1, h):
     return best
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _event_value(kind, c, y, n, cl, cr, cgap):
     """Event function of contact c: δ for onset/separation, δ̇ for phase switches."""
     a = cl[c]
@@ -239,7 +243,7 @@ def _event_value(kind, c, y, n, cl, cr, cgap):
     return y[a] - y[b] - cgap[c]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind):
     # k0: row 0 is f(y0); k1: row 6 is f(y1)
     """Earliest event in a step, from the Hermite interpolants of every contact's δ and δ̇.
@@ -291,7 +295,7 @@ def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind
     return best_t, best_c, best_k
 
 
-@njit(cache=True, error_model="numpy", nogil=True, fastmath={"reassoc", "contract"})
+@njit(cache=True, error_model="numpy", nogil=True, fastmath={"contract"})
 def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
                     m_diag, mr, r, cl, cr, cgap, ccode, cparams, rtol, atol,
                     h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
