@@ -310,7 +310,8 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         Take steps without contact with the exact propagator (cost O(N²) a step, cheapest
         for small models); otherwise with the adaptive RK (O(N·bw) a stage).
     phi, g0, g1 / phih, g0h, g1h
-        Exact propagators over dt and dt/2 (unused unless ``exact_free``).
+        Exact propagators over dt and dt/2 (unused unless ``exact_free``); ``phi`` and
+        ``phih`` are passed transposed (``Φᵀ``, C-contiguous).
     bw, k_mat, c_mat, m_diag, mr, r
         Half-bandwidth of K and C, K [N/m], C [N·s/m], lumped floor masses [kg], M r, r.
     cl, cr, cgap, ccode, cparams
@@ -361,11 +362,14 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         if ws_i[I_MODE] == 0:
             # ---------------- exact step (all gaps open)
             amid = 0.5 * (a0 + a1)
+            # x1 = Φ x + Γ0 a0 + Γ1 a1, column by column (phi is stored transposed): the
+            # inner loop has no reduction, so it vectorises without reassociating sums
             for i in range(m):
-                s1 = g0[i] * a0 + g1[i] * a1
-                for j in range(m):
-                    s1 += phi[i, j] * x[j]
-                x1[i] = s1
+                x1[i] = g0[i] * a0 + g1[i] * a1
+            for j in range(m):
+                xj = x[j]
+                for i in range(m):
+                    x1[i] += phi[j, i] * xj
             touched = False
             for c in range(nc):
                 a = cl[c]
@@ -382,10 +386,11 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
             if not touched:
                 # mid-step velocity (exact), then Simpson's rule for input and viscous energy
                 for i in range(n, m):
-                    sh = g0h[i] * a0 + g1h[i] * amid
-                    for j in range(m):
-                        sh += phih[i, j] * x[j]
-                    xm[i] = sh
+                    xm[i] = g0h[i] * a0 + g1h[i] * amid
+                for j in range(m):
+                    xj = x[j]
+                    for i in range(n, m):
+                        xm[i] += phih[j, i] * xj
                 pin0 = 0.0
                 pinm = 0.0
                 pin1 = 0.0
