@@ -209,8 +209,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     e_out[0, 2] = 0.5 * x[:n] @ K @ x[:n]
 
     chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
-    args = (step, ag, exact, np.ascontiguousarray(full.phi.T), full.gamma0, full.gamma1,
-            np.ascontiguousarray(half.phi.T), half.gamma0,
+    args = (step, ag, exact, full.phi, full.gamma0, full.gamma1, half.phi, half.gamma0,
             half.gamma1, bw, np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
             np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cl, cr, cgap, ccode,
             np.ascontiguousarray(cparams), rtol, atol, h_max, x, committed, wc, w_start,

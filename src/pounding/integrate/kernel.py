@@ -310,8 +310,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         Take steps without contact with the exact propagator (cost O(N²) a step, cheapest
         for small models); otherwise with the adaptive RK (O(N·bw) a stage).
     phi, g0, g1 / phih, g0h, g1h
-        Exact propagators over dt and dt/2 (unused unless ``exact_free``); ``phi`` and
-        ``phih`` are passed transposed (``Φᵀ``, C-contiguous).
+        Exact propagators over dt and dt/2 (unused unless ``exact_free``).
     bw, k_mat, c_mat, m_diag, mr, r
         Half-bandwidth of K and C, K [N/m], C [N·s/m], lumped floor masses [kg], M r, r.
     cl, cr, cgap, ccode, cparams
@@ -362,14 +361,25 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         if ws_i[I_MODE] == 0:
             # ---------------- exact step (all gaps open)
             amid = 0.5 * (a0 + a1)
-            # x1 = Φ x + Γ0 a0 + Γ1 a1, column by column (phi is stored transposed): the
-            # inner loop has no reduction, so it vectorises without reassociating sums
+            # x1 = Φ x + Γ0 a0 + Γ1 a1
+            # four interleaved partial sums in a fixed order: instruction-level parallelism
+            # without reassociation
             for i in range(m):
-                x1[i] = g0[i] * a0 + g1[i] * a1
-            for j in range(m):
-                xj = x[j]
-                for i in range(m):
-                    x1[i] += phi[j, i] * xj
+                s0 = g0[i] * a0 + g1[i] * a1
+                s1 = 0.0
+                s2 = 0.0
+                s3 = 0.0
+                j = 0
+                while j + 3 < m:
+                    s0 += phi[i, j] * x[j]
+                    s1 += phi[i, j + 1] * x[j + 1]
+                    s2 += phi[i, j + 2] * x[j + 2]
+                    s3 += phi[i, j + 3] * x[j + 3]
+                    j += 4
+                while j < m:
+                    s0 += phi[i, j] * x[j]
+                    j += 1
+                x1[i] = (s0 + s1) + (s2 + s3)
             touched = False
             for c in range(nc):
                 a = cl[c]
@@ -386,11 +396,10 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
             if not touched:
                 # mid-step velocity (exact), then Simpson's rule for input and viscous energy
                 for i in range(n, m):
-                    xm[i] = g0h[i] * a0 + g1h[i] * amid
-                for j in range(m):
-                    xj = x[j]
-                    for i in range(n, m):
-                        xm[i] += phih[j, i] * xj
+                    sh = g0h[i] * a0 + g1h[i] * amid
+                    for j in range(m):
+                        sh += phih[i, j] * x[j]
+                    xm[i] = sh
                 pin0 = 0.0
                 pinm = 0.0
                 pin1 = 0.0
