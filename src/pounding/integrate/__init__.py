@@ -24,6 +24,7 @@ from pounding.integrate.kernel import (
     I_NIMP,
     I_NREJECT,
     I_NSTEPS,
+    I_FAILED,
     I_OVERFLOW,
     IMP_COLUMNS,
     W_H,
@@ -186,10 +187,10 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     wc = np.zeros(nc)
     w_start = np.zeros(nc)
     imp_row = -np.ones(nc, dtype=np.int64)
-    last_f = np.zeros((nc, 4))
-    ws_f = np.zeros(4)
+    last_f = np.zeros((nc, 3))
+    ws_f = np.zeros(3)
     ws_f[W_H] = step * 0.1
-    ws_i = np.zeros(6, dtype=np.int64)
+    ws_i = np.zeros(7, dtype=np.int64)
     ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
     u_out = np.zeros((nt, n))
@@ -219,7 +220,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     for k0 in range(0, nt - 1, chunk):
         k1 = min(nt - 1, k0 + chunk)
         integrate_chunk(k0, k1, *args)
-        if ws_i[I_OVERFLOW] == 2:
+        if ws_i[I_FAILED]:
             raise RuntimeError(f"integration failed at t = {k1 * step:.4f} s: step size "
                                f"underflow (contact too stiff for rtol={rtol:g}?)")
         if progress is not None:

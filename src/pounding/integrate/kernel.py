@@ -59,8 +59,8 @@ E_INPUT, E_KINETIC, E_STRAIN, E_DAMPING, E_CONTACT_WORK, E_CONTACT_STORED = rang
 ENERGY_COLUMNS = 6
 
 # Workspace scalars (ws_f) and integers (ws_i)
-W_T_LOCAL, W_H, W_E_INPUT, W_E_DAMP = range(4)
-I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS = range(6)
+W_H, W_E_INPUT, W_E_DAMP = range(3)
+I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED = range(7)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
@@ -325,12 +325,12 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         Cumulative contact work [J], and its value at each open impact's start.
     imp_row : (n_c,) int
         Row of each contact's open impact in ``imp`` (−1 if none).
-    last_f : (n_c, 4)
+    last_f : (n_c, 3)
         Per closed contact: time, force and force rate dF/dt at the start of the current
         step, for locating the peak force inside each step (cubic Hermite).
     ws_f, ws_i
-        Workspace scalars (local time, RK step, cumulative input and viscous energy) and
-        counters (mode, impacts, overflow, RK steps, rejections, events).
+        Workspace scalars (proposed RK step, cumulative input and viscous energy) and
+        counters (mode, impacts, table overflow, RK steps, rejections, events, failure).
     u_out, v_out, acc_out : (nt, N); pen_out, f_out : (nt, n_c); e_out : (nt, 6); imp : (cap, 8)
         Outputs.
     cpeak, ccount : (n_c,)
@@ -453,7 +453,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                     h *= max(0.1, fac)
                     ws_f[W_H] = h
                     if h < 1e-14 * dt:
-                        ws_i[I_OVERFLOW] = 2  # step size underflow
+                        ws_i[I_FAILED] = 1  # step size underflow
                         return
                     continue
                 # events inside the accepted step?
