@@ -21,6 +21,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.contact.base import ContactLaw
+from pounding.contact.dispatch import PARAMS_SIZE
 from pounding.contact.factory import make_law
 from pounding.structure import ShearBuilding
 from pounding.structure.assembly import AssembledSystem, assemble, shared_levels
@@ -197,8 +198,7 @@ class PoundingModel:
         params : float64 (n_c, p) law constants, zero-padded
         """
         cs = self.contacts
-        width = max((c.law.params().size for c in cs), default=1)
-        params = np.zeros((len(cs), width))
+        params = np.zeros((len(cs), PARAMS_SIZE))  # every law's constants fit, zero-padded
         for c in cs:
             p = c.law.params()
             params[c.index, : p.size] = p
