@@ -23,7 +23,10 @@ import pytest
 
 from pounding.cli import main
 from pounding.config import dump_toml
-from pounding.report import DEFAULT_NAME, FIGURE_TITLES, detect_kind, render_report, write_report
+from pounding.plot.response import RUN_FIGURES
+from pounding.report import DEFAULT_NAME, detect_kind, render_report, write_report
+
+FIGURE_TITLES = {f.file: f.caption for f in RUN_FIGURES.values()}  # the run's figures
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"

@@ -60,14 +60,6 @@ MAX_SWEEP_ROWS = 50
 MAX_SWEEP_PLOTS = 8
 """At most this many swept parameters get a plot."""
 
-FIGURE_TITLES: dict[str, str] = {
-    "displacements.png": "Floor displacements",
-    "contact_forces.png": "Contact forces",
-    "hysteresis.png": "Contact hysteresis (force against penetration)",
-    "energy.png": "Energy balance",
-}
-"""The figures of a run folder, in page order (file name → caption)."""
-
 ENERGY_DESCRIPTIONS: dict[str, str] = {
     "input": "input energy −∫u̇ᵀMr·a_g dt",
     "kinetic": "kinetic energy ½u̇ᵀMu̇ (relative to the ground)",
@@ -589,19 +581,13 @@ def _result_from(r: _Run) -> Any:
 
 
 def _figures_section(r: _Run) -> str:
-    from pounding.plot.response import (
-        plot_contact_forces,
-        plot_displacements,
-        plot_energy,
-        plot_hysteresis,
-    )
+    from pounding.plot.response import RUN_FIGURES
 
-    makers = {"displacements.png": plot_displacements, "contact_forces.png": plot_contact_forces,
-              "hysteresis.png": plot_hysteresis, "energy.png": plot_energy}
     parts = []
     result = None
     why_not = ""
-    for name, caption in FIGURE_TITLES.items():
+    for fig in RUN_FIGURES.values():
+        name, caption = fig.file, fig.caption
         path = r.folder / name
         if path.is_file():
             parts.append(_img(path.read_bytes(), caption, f"{caption} ({name} of the run)."))
@@ -615,7 +601,7 @@ def _figures_section(r: _Run) -> str:
                 except (ValueError, KeyError) as exc:
                     why_not = f"the results could not be reloaded ({exc})"
         if result is not None:
-            parts.append(_img(_png_bytes(makers[name](result)), caption,
+            parts.append(_img(_png_bytes(fig.make(result)), caption,
                               f"{caption} (regenerated from timehistories.nc: {name} is not "
                               "in the folder)."))
         else:

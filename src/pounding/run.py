@@ -24,6 +24,7 @@ from pathlib import Path
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
 from pounding.io import write_text
+from pounding.plot.response import RUN_FIGURES
 from pounding.result import Result
 
 __all__ = ["OUTPUT_FILES", "FIGURE_FILES", "RunOutput", "default_out_dir", "run", "run_config"]
@@ -36,12 +37,7 @@ OUTPUT_FILES: dict[str, str] = {
 }
 """Data files of every run (key → file name)."""
 
-FIGURE_FILES: dict[str, str] = {
-    "displacement_figure": "displacements.png",
-    "force_figure": "contact_forces.png",
-    "hysteresis_figure": "hysteresis.png",
-    "energy_figure": "energy.png",
-}
+FIGURE_FILES: dict[str, str] = {key: fig.file for key, fig in RUN_FIGURES.items()}
 """Figures written unless turned off (key → file name)."""
 
 
@@ -127,18 +123,10 @@ def _normal_permissions(folder: Path) -> None:
 
 def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
     from pounding.plot import save_figure
-    from pounding.plot.response import (
-        plot_contact_forces,
-        plot_displacements,
-        plot_energy,
-        plot_hysteresis,
-    )
 
-    makers = {"displacement_figure": plot_displacements, "force_figure": plot_contact_forces,
-              "hysteresis_figure": plot_hysteresis, "energy_figure": plot_energy}
     out = {}
-    for key, make in makers.items():
-        out[key] = save_figure(make(result), folder / FIGURE_FILES[key], dpi=dpi)
+    for key, fig in RUN_FIGURES.items():
+        out[key] = save_figure(fig.make(result), folder / fig.file, dpi=dpi)
     return out
 
 

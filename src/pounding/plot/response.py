@@ -7,6 +7,9 @@ registered globally, so nothing leaks); save it with :func:`pounding.plot.save_f
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import NamedTuple
+
 import math
 from collections import defaultdict
 
@@ -213,3 +216,23 @@ def plot_energy(result: Result) -> Figure:
                    loc="left")
     fig.tight_layout()
     return fig
+
+
+class RunFigure(NamedTuple):
+    """One of the figures of a run folder."""
+
+    file: str
+    caption: str
+    make: Callable[[Result], Figure]
+
+
+RUN_FIGURES: dict[str, RunFigure] = {
+    "displacement_figure": RunFigure("displacements.png", "Floor displacements",
+                                     plot_displacements),
+    "force_figure": RunFigure("contact_forces.png", "Contact forces", plot_contact_forces),
+    "hysteresis_figure": RunFigure("hysteresis.png",
+                                   "Contact hysteresis (force against penetration)",
+                                   plot_hysteresis),
+    "energy_figure": RunFigure("energy.png", "Energy balance", plot_energy),
+}
+"""The figures `pounding run` writes and `pounding report` embeds, in page order."""
