@@ -35,6 +35,19 @@ def _col(table: Table, title: str, **kw) -> None:
     table.add_column(Text(title), **kw)
 
 
+# options shared by the impact commands (each command sets its own default)
+Mass1 = Annotated[float, typer.Option(help="Mass of body 1 (kg).")]
+Mass2 = Annotated[float, typer.Option(help="Mass of body 2 (kg).")]
+ImpactVelocity = Annotated[float, typer.Option(help="Impact velocity (m/s).")]
+HertzStiffness = Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")]
+LinearStiffness = Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")]
+NoTension = Annotated[bool, typer.Option("--no-tension", help="Kelvin-Voigt: clip F >= 0.")]
+
+LawName = Annotated[str, typer.Argument(help="linear-spring, kelvin-voigt, modified-kelvin-voigt, "
+                                        "hertz, hunt-crossley, hertzdamp, nonlinear-viscoelastic, "
+                                        "naderpour, bilinear-impact.")]
+
+
 @app.command("zeta")
 def zeta_cmd(
     e: Annotated[str | None, typer.Option("--e", help=E_HELP)] = None,
@@ -72,11 +85,11 @@ def zeta_cmd(
 @app.command("audit")
 def audit_cmd(
     e: Annotated[str | None, typer.Option("--e", help=E_HELP)] = None,
-    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")] = 2.0e5,
-    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")] = 3.0e5,
-    v0: Annotated[float, typer.Option(help="Impact velocity (m/s).")] = 0.5,
-    k_h: Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")] = 2.75e9,
-    k: Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")] = 9.3e8,
+    m1: Mass1 = 2.0e5,
+    m2: Mass2 = 3.0e5,
+    v0: ImpactVelocity = 0.5,
+    k_h: HertzStiffness = 2.75e9,
+    k: LinearStiffness = 9.3e8,
     plot: Annotated[Path | None, typer.Option("--plot", metavar="FILE",
                     help="Draw achieved against target e to FILE.")] = None,
     csv: Annotated[Path | None, typer.Option("--csv", metavar="FILE",
@@ -117,22 +130,17 @@ def audit_cmd(
         console.print(f"figure: {save_figure(plot_audit(df), plot)}", highlight=False)
 
 
-LawName = Annotated[str, typer.Argument(help="linear-spring, kelvin-voigt, modified-kelvin-voigt, "
-                                        "hertz, hunt-crossley, hertzdamp, nonlinear-viscoelastic, "
-                                        "naderpour, bilinear-impact.")]
-
-
 @app.command("collide")
 def collide_cmd(
     law: LawName,
     e: Annotated[float | None, typer.Option("--e", help="Target coefficient of restitution.")] = None,
     formula: Annotated[str | None, typer.Option(help="Damping formula for e (default: the law's own).")] = None,
-    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")] = 2.0e5,
-    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")] = 3.0e5,
-    v0: Annotated[float, typer.Option(help="Impact velocity (m/s).")] = 0.5,
-    k_h: Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")] = 2.75e9,
-    k: Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")] = 9.3e8,
-    no_tension: Annotated[bool, typer.Option("--no-tension", help="Kelvin-Voigt: clip F >= 0.")] = False,
+    m1: Mass1 = 2.0e5,
+    m2: Mass2 = 3.0e5,
+    v0: ImpactVelocity = 0.5,
+    k_h: HertzStiffness = 2.75e9,
+    k: LinearStiffness = 9.3e8,
+    no_tension: NoTension = False,
     delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the elastic Hertz value.")] = None,
 ) -> None:
     """Simulate one impact of two free masses and report what the law really does."""
@@ -166,12 +174,12 @@ def collide_cmd(
 def calibrate_cmd(
     law: LawName,
     e: Annotated[float, typer.Option("--e", help="Target coefficient of restitution.")],
-    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")] = 2.0e5,
-    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")] = 3.0e5,
-    v0: Annotated[float, typer.Option(help="Impact velocity (m/s).")] = 0.5,
-    k_h: Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")] = 2.75e9,
-    k: Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")] = 9.3e8,
-    no_tension: Annotated[bool, typer.Option("--no-tension", help="Kelvin-Voigt: clip F >= 0.")] = False,
+    m1: Mass1 = 2.0e5,
+    m2: Mass2 = 3.0e5,
+    v0: ImpactVelocity = 0.5,
+    k_h: HertzStiffness = 2.75e9,
+    k: LinearStiffness = 9.3e8,
+    no_tension: NoTension = False,
 ) -> None:
     """Find the damping that makes a law achieve exactly the target e."""
     from pounding.contact.calibration import calibrate, calibrate_bilinear
@@ -191,8 +199,8 @@ def calibrate_cmd(
 @app.command("fit")
 def fit_cmd(
     force_file: Annotated[Path, typer.Argument(help="Two columns: time after first contact (s), contact force (N); '#' comments, comma or space separated.")],
-    m1: Annotated[float, typer.Option(help="Mass of body 1 (kg).")],
-    m2: Annotated[float, typer.Option(help="Mass of body 2 (kg).")],
+    m1: Mass1,
+    m2: Mass2,
     v0: Annotated[float, typer.Option(help="Measured impact velocity (m/s).")],
     law: Annotated[str, typer.Option(help="Law to fit: linear-spring, kelvin-voigt, modified-kelvin-voigt, hertz, hunt-crossley, nonlinear-viscoelastic.")] = "hunt-crossley",
 ) -> None:
