@@ -253,6 +253,7 @@ def test_structural_problems() -> None:
     assert error_of(data).startswith("m.toml: contact: required with 2 buildings")
     data = base()
     data["building"][1]["height"] = 3.5
+    data["contact"]["floor_to_column"] = False
     assert "no floor at the same elevation" in error_of(data)
     data = base()
     data["record"] = {"bundled": "el_centro", "scale": 2.0, "pga_g": 0.5}

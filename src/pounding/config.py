@@ -84,6 +84,9 @@ LAW_FIELDS: dict[str, frozenset[str]] = {
 """The ``[contact]`` keys each law reads (:func:`pounding.contact.factory.make_law`); giving
 another is an error rather than being silently ignored."""
 
+_CONTACT_COMMON = frozenset({"law", "gap", "gaps", "floor_to_column", "level_tolerance"})
+"""``[contact]`` keys of every law."""
+
 
 def _field_error(field: str | tuple[str | int, ...], message: str) -> PydanticCustomError:
     """An error about ``field`` of the model being validated (located by the formatter)."""
@@ -234,6 +237,72 @@ class DampingConfig(_Section):
         return RayleighDamping(zeta_i=zi, zeta_j=zj, mode_i=mi, mode_j=mj)
 
 
+class StoreyLawConfig(_Section):
+    """``storey_law = {...}``: how the storeys of one building yield (default: linear).
+
+    * ``{ type = "bilinear", yield_force = 2.0e6, hardening = 0.05 }`` — bilinear with
+      kinematic hardening (:class:`pounding.hysteresis.Bilinear`);
+    * ``{ type = "bouc-wen", yield_drift_ratio = 0.005, alpha = 0.05, n = 2, beta = 0.5,
+      gamma = 0.5 }`` — Bouc–Wen (:class:`pounding.hysteresis.BoucWen`).
+
+    The yield point is one of ``yield_force`` [N], ``yield_drift`` [m] or
+    ``yield_drift_ratio`` [-] (yield drift / storey height), each a number for every storey
+    or a list with one value per storey. The elastic stiffness is the building's.
+    """
+
+    type: str
+    yield_force: Pos | list[Pos] | None = None
+    yield_drift: Pos | list[Pos] | None = None
+    yield_drift_ratio: Pos | list[Pos] | None = None
+    hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
+    alpha: Annotated[float, Field(ge=0, lt=1)] | None = None
+    n: Annotated[float, Field(ge=1)] | None = None
+    beta: float | None = None
+    gamma: float | None = None
+
+    @field_validator("type")
+    @classmethod
+    def _known_type(cls, v: str) -> str:
+        from pounding.hysteresis import STOREY_LAWS
+
+        key = v.strip().lower()
+        if key not in STOREY_LAWS:
+            raise ValueError(f"unknown storey law {v!r}; choose one of "
+                             f"{', '.join(STOREY_LAWS)}")
+        return key
+
+    @model_validator(mode="after")
+    def _keys(self) -> StoreyLawConfig:
+        own = {"bilinear": {"hardening"}, "bouc-wen": {"alpha", "n", "beta", "gamma"}}[self.type]
+        for key in ("hardening", "alpha", "n", "beta", "gamma"):
+            if key not in own and getattr(self, key) is not None:
+                raise _field_error(key, f"not a constant of the {self.type} law (got "
+                                        f"{_fmt(getattr(self, key))}); it reads "
+                                        f"{', '.join(sorted(own))}")
+        given = [k for k in ("yield_force", "yield_drift", "yield_drift_ratio")
+                 if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise _field_error("yield_force", "give exactly one of yield_force [N], "
+                                              "yield_drift [m] or yield_drift_ratio [-] "
+                                              f"(got {', '.join(given) or 'none'})")
+        return self
+
+    def build(self, heights: Any) -> Any:
+        """The :class:`pounding.hysteresis.StoreyLaw` for storeys of these heights [m]."""
+        import numpy as np
+
+        from pounding.hysteresis import STOREY_LAWS
+
+        kw = self.model_dump(exclude={"type", "yield_drift_ratio"}, exclude_none=True)
+        if self.yield_drift_ratio is not None:
+            ratio = np.asarray(self.yield_drift_ratio, dtype=float)
+            if ratio.size not in (1, len(heights)):
+                raise _field_error("yield_drift_ratio", f"need one value or {len(heights)} "
+                                   f"(one per storey), got {ratio.size}")
+            kw["yield_drift"] = [float(v) for v in ratio * np.asarray(heights, dtype=float)]
+        return STOREY_LAWS[self.type](**kw)
+
+
 _SDOF_KEYS = ("mass", "stiffness", "period", "height")
 _UNIFORM_KEYS = ("n_storeys", "mass", "stiffness", "period", "height")
 _STOREY_KEYS = ("masses", "stiffnesses", "heights", "height", "period")
@@ -252,7 +321,8 @@ class BuildingConfig(_Section):
       stiffnesses to that fundamental period.
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF and 5 %
-    Rayleigh at modes 1 and 2 otherwise.
+    Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
+    storeys yield; without it they stay linear.
     """
 
     name: str | None = None
@@ -265,6 +335,7 @@ class BuildingConfig(_Section):
     stiffnesses: Annotated[list[Pos], Field(min_length=1)] | None = None
     heights: Annotated[list[Pos], Field(min_length=1)] | None = None
     damping: DampingConfig | None = None
+    storey_law: StoreyLawConfig | None = None
 
     @property
     def kind(self) -> str:
@@ -326,8 +397,9 @@ class BuildingConfig(_Section):
             assert self.mass is not None
             k = (self.stiffness if self.stiffness is not None
                  else self.mass * (2.0 * math.pi / self.period) ** 2)  # type: ignore[operator]
-            return ShearBuilding(masses=[self.mass], stiffnesses=[k], heights=[h],
-                                 damping=damping or ModalDamping(0.05), name=name)
+            return self._with_law(ShearBuilding(masses=[self.mass], stiffnesses=[k],
+                                                heights=[h], damping=damping or ModalDamping(0.05),
+                                                name=name))
         if self.kind == "uniform":
             assert self.mass is not None and self.n_storeys is not None
             b = ShearBuilding.uniform(self.n_storeys, self.mass, self.stiffness or 1.0, h,
@@ -337,7 +409,14 @@ class BuildingConfig(_Section):
             heights = self.heights if self.heights is not None else [h] * n
             b = ShearBuilding(masses=self.masses, stiffnesses=self.stiffnesses,
                               heights=heights, damping=damping or RayleighDamping(), name=name)
-        return b.with_period(self.period) if self.period is not None else b
+        b = b.with_period(self.period) if self.period is not None else b
+        return self._with_law(b)
+
+    def _with_law(self, b: ShearBuilding) -> ShearBuilding:
+        if self.storey_law is None:
+            return b
+        with _prefixed("storey_law"):
+            return b.with_storey_law(self.storey_law.build(b.heights))
 
 
 # ============================================================================ contact
@@ -349,6 +428,10 @@ class ContactConfig(_Section):
     ``formula``, ``c`` [N·s/m], ``zeta`` [-], ``chi`` [-], ``n`` [-], ``tension``,
     ``delta_m`` [m], ``a`` [-]); only the keys the law reads are accepted (:data:`LAW_FIELDS`).
     ``gap`` [m] is the gap between every pair of neighbours, or ``gaps`` one per pair.
+    ``floor_to_column`` (default true): a floor that does not line up with a floor of its
+    neighbour strikes the neighbour's column (:class:`pounding.model.ContactPoint`); false
+    keeps floor-to-floor contacts only. ``level_tolerance`` [m] (default 0.1): floors closer
+    in elevation than this meet slab to slab.
     """
 
     law: str
@@ -365,6 +448,8 @@ class ContactConfig(_Section):
     a: Annotated[float, Field(gt=0, lt=1)] = 0.1
     gap: NonNeg | None = None
     gaps: list[NonNeg] | None = None
+    floor_to_column: bool = True
+    level_tolerance: Pos = 0.1
 
     @field_validator("law")
     @classmethod
@@ -379,7 +464,7 @@ class ContactConfig(_Section):
     @model_validator(mode="after")
     def _law_keys(self) -> ContactConfig:
         used = LAW_FIELDS[self.law]
-        for key in sorted(self.model_fields_set - used - {"law", "gap", "gaps"}):
+        for key in sorted(self.model_fields_set - used - _CONTACT_COMMON):
             raise _field_error(key, f"not used by the {self.law} law (got "
                                     f"{_fmt(getattr(self, key))}); it reads "
                                     f"{', '.join(sorted(used))}")
@@ -396,7 +481,7 @@ class ContactConfig(_Section):
 
     def spec(self) -> ContactSpec:
         """The :class:`ContactSpec` (domain errors propagate unprefixed)."""
-        kw = self.model_dump(exclude={"gap", "gaps"}, exclude_none=True)
+        kw = self.model_dump(exclude=set(_CONTACT_COMMON - {"law"}), exclude_none=True)
         return ContactSpec(**kw)
 
 
@@ -484,8 +569,12 @@ class RunConfig(_Section):
             gaps = self.contact.gap_list(len(buildings) - 1)
         else:
             spec, gaps = ContactSpec("linear-spring", k=1.0), []
+        geometry: dict[str, Any] = {}
+        if self.contact is not None:
+            geometry = {"floor_to_column": self.contact.floor_to_column,
+                        "level_tolerance": self.contact.level_tolerance}
         with _prefixed("contact"):
-            model = PoundingModel(buildings, gaps, spec, name=self.name)
+            model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry)
             model.contacts  # noqa: B018  (builds every contact law with its floor masses)
         for p in range(len(buildings) - 1):
             if not any(c.pair == p for c in model.contacts):
@@ -494,8 +583,8 @@ class RunConfig(_Section):
                     f"building[{p}] and building[{p + 1}]: no floor at the same elevation, "
                     "so they can never collide (floor levels [m]: "
                     f"{[round(float(x), 6) for x in a.floor_levels]} and "
-                    f"{[round(float(x), 6) for x in b.floor_levels]}); floors meet only at "
-                    "equal levels")
+                    f"{[round(float(x), 6) for x in b.floor_levels]}); with "
+                    "contact.floor_to_column = false floors meet only at equal levels")
         with _prefixed("record"):
             motion = self.record.load()
         return Built(model, motion, self.solver.kwargs())
@@ -509,7 +598,7 @@ class RunConfig(_Section):
         """
         data = self.model_dump(exclude_none=True)
         if self.contact is not None:
-            keep = LAW_FIELDS[self.contact.law] | {"law", "gap", "gaps"}
+            keep = LAW_FIELDS[self.contact.law] | _CONTACT_COMMON
             data["contact"] = {k: v for k, v in data["contact"].items() if k in keep}
         if resolve_paths and self.record.file is not None and self.record.path is not None:
             data["record"]["file"] = str(self.record.path)

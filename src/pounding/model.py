@@ -6,9 +6,14 @@ A :class:`PoundingModel` is pure data: it says *what* collides, not how to integ
 Geometry. Buildings stand left to right along x, building ``b`` and ``b + 1`` separated by
 ``gaps[b]``. Displacements are positive to the right, so at a shared floor level the
 penetration is ``δ = u_left − u_right − gap`` (seed case 2A for two buildings of equal
-floor levels, 2C for a row). Floors meet only where both buildings have a floor at the same
-elevation; buildings of different heights therefore collide only up to the lower roof
-(case 2B, floor-to-floor).
+floor levels, 2C for a row). Where both buildings have a floor at the same elevation the
+floors meet floor to floor; a floor of one building that lies between two floors of the
+other strikes the other's column there (floor to column, :class:`ContactPoint`), unless
+``floor_to_column=False``. Nothing collides above the lower roof (case 2B).
+
+For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
+their shear comes from their storey law, and the stiffness matrix handed to the kernel
+(:meth:`PoundingModel.linear_stiffness`) holds only the linear storeys.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
+import scipy.linalg
 from numpy.typing import NDArray
 
 from pounding.contact.base import ContactLaw
@@ -25,7 +31,7 @@ from pounding.contact.dispatch import PARAMS_SIZE
 from pounding.contact.factory import make_law
 from pounding.structure import ShearBuilding
 from pounding.structure.assembly import AssembledSystem, assemble, shared_levels
-from pounding.validation import non_negative
+from pounding.validation import non_negative, positive
 
 
 @dataclass(frozen=True)
@@ -83,8 +89,81 @@ class ContactSpec:
 
 
 @dataclass(frozen=True)
+class ContactPoint:
+    """Where a contact element meets one building: a floor slab, or a column between floors.
+
+    The contact point moves with ``(1 − ξ) u_lower + ξ u_upper`` (linear interpolation
+    between the two floors of the struck storey, ``u = 0`` for the ground), and the contact
+    force ``F`` is shared back to those floors as ``(1 − ξ) F`` and ``ξ F``: the same
+    weights, so the work the force does on the building equals ``F`` times the point's
+    displacement (energy-consistent, virtual work) and the shares sum to ``F`` (equal and
+    opposite to the force on the other building). A floor contact is ``ξ = 1`` at its floor.
+
+    Attributes
+    ----------
+    building : int
+        0-based building index.
+    upper : int
+        0-based index of the floor struck (a floor contact) or of the floor above the struck
+        storey (a column contact).
+    xi : float
+        Position of the point in storey ``upper + 1``: 0 at the floor below, 1 at floor
+        ``upper``. Exactly 1 for a floor contact.
+    """
+
+    building: int
+    upper: int
+    xi: float = 1.0
+
+    @property
+    def is_floor(self) -> bool:
+        """True for a slab (floor) contact point, False for a point on a column."""
+        return self.xi == 1.0
+
+    @property
+    def lower(self) -> int:
+        """0-based index of the floor below the struck storey (−1: the ground)."""
+        return self.upper - 1
+
+    @property
+    def storey(self) -> int:
+        """1-based number of the storey the point lies in (or below, for a floor)."""
+        return self.upper + 1
+
+    def floor_weights(self) -> list[tuple[int, float]]:
+        """``(floor index, weight)`` pairs that make the point's displacement (ground
+        omitted); weights of a column point are ``1 − ξ`` and ``ξ``."""
+        if self.is_floor:
+            return [(self.upper, 1.0)]
+        out = [(self.upper, self.xi)]
+        if self.lower >= 0:
+            out.insert(0, (self.lower, 1.0 - self.xi))
+        return out
+
+    def of(self, floors: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The point's value from per-floor values of its building, ``floors[..., floor]``."""
+        return sum(w * floors[..., i] for i, w in self.floor_weights())
+
+    def effective_mass(self, masses: NDArray[np.float64]) -> float:
+        """Apparent mass at the point [kg]: ``1 / Σ w_i² / m_i`` (the mass a short impulse
+        at the point meets, the floors being the only masses); the floor mass for a slab."""
+        return 1.0 / sum(w * w / float(masses[i]) for i, w in self.floor_weights())
+
+    def label(self) -> str:
+        """``'B2F3'`` for a floor, ``'B2S3@0.40'`` for storey 3's column at 40 % of its
+        height (1-based building, floor and storey numbers)."""
+        if self.is_floor:
+            return f"B{self.building + 1}F{self.upper + 1}"
+        return f"B{self.building + 1}S{self.storey}@{self.xi:.2f}"
+
+
+@dataclass(frozen=True)
 class Contact:
-    """One contact element between two floors at the same elevation.
+    """One contact element between two neighbouring buildings.
+
+    Floor to floor where both have a floor at the same elevation (seed case 2A); floor to
+    column where a slab of one lies between two floors of the other (case 2B with floors
+    that do not line up): the slab strikes the other building's column.
 
     Attributes
     ----------
@@ -92,32 +171,80 @@ class Contact:
         Position in :attr:`PoundingModel.contacts`.
     pair : int
         Which gap: between building ``pair`` and ``pair + 1``.
-    left_floor, right_floor : int
-        0-based floor index in the left / right building.
-    dof_left, dof_right : int
-        Global degrees of freedom of the two floors.
+    left, right : ContactPoint
+        Where the element meets the left and the right building.
     elevation : float
         Height of the contact above ground [m].
     gap : float
         Separation gap at rest [m].
     law : ContactLaw
-        The contact law, built with the two floor masses.
+        The contact law, built with the apparent masses of the two contact points.
     """
 
     index: int
     pair: int
-    left_floor: int
-    right_floor: int
-    dof_left: int
-    dof_right: int
+    left: ContactPoint
+    right: ContactPoint
     elevation: float
     gap: float
     law: ContactLaw
 
     @property
+    def is_floor_to_floor(self) -> bool:
+        """True if both points are floor slabs."""
+        return self.left.is_floor and self.right.is_floor
+
+    @property
+    def struck(self) -> ContactPoint | None:
+        """The column point of a floor-to-column contact (None for floor to floor)."""
+        if self.is_floor_to_floor:
+            return None
+        return self.right if self.left.is_floor else self.left
+
+    @property
+    def left_floor(self) -> int:
+        """0-based floor index of the left point (the floor above, for a column point)."""
+        return self.left.upper
+
+    @property
+    def right_floor(self) -> int:
+        """0-based floor index of the right point (the floor above, for a column point)."""
+        return self.right.upper
+
+    @property
     def label(self) -> str:
-        """Readable name, e.g. ``'B1F3-B2F3'`` (1-based building and floor numbers)."""
-        return f"B{self.pair + 1}F{self.left_floor + 1}-B{self.pair + 2}F{self.right_floor + 1}"
+        """Readable name, e.g. ``'B1F3-B2F3'`` or ``'B1F2-B2S3@0.40'``."""
+        return f"{self.left.label()}-{self.right.label()}"
+
+
+def contact_points(a: ShearBuilding, b: ShearBuilding, floor_to_column: bool = True,
+                   tol: float = 1e-6) -> list[tuple[float, int, float, int, float]]:
+    """Where two neighbouring buildings can touch: ``(elevation, i, ξ_i, j, ξ_j)`` rows.
+
+    Floors at the same elevation (within ``tol`` [m]) meet floor to floor (``ξ = 1`` both).
+    With ``floor_to_column``, every other floor of one building below the roof of the other
+    meets the other's column at the same elevation, in storey ``j + 1`` at position ``ξ_j``
+    (0 at floor ``j − 1`` or the ground, 1 at floor ``j``). Rows are sorted by elevation.
+    """
+    za, zb = a.floor_levels, b.floor_levels
+    rows: list[tuple[float, int, float, int, float]] = []
+    paired_a: set[int] = set()
+    paired_b: set[int] = set()
+    for i, j in shared_levels(a, b, tol):
+        rows.append((float(za[i]), i, 1.0, j, 1.0))
+        paired_a.add(i)
+        paired_b.add(j)
+    if floor_to_column:
+        for levels, other, paired, left in ((za, zb, paired_a, True), (zb, za, paired_b, False)):
+            for i, z in enumerate(levels):
+                if i in paired or z >= other[-1] - tol:
+                    continue  # paired already, or level with / above the other's roof
+                j = int(np.searchsorted(other, z))  # storey j + 1: other[j-1] < z < other[j]
+                below = float(other[j - 1]) if j > 0 else 0.0
+                xi = (float(z) - below) / (float(other[j]) - below)
+                rows.append((float(z), i, 1.0, j, xi) if left else (float(z), j, xi, i, 1.0))
+    rows.sort(key=lambda r: (r[0], r[1], r[3]))
+    return rows
 
 
 @dataclass(frozen=True)
@@ -131,9 +258,15 @@ class PoundingModel:
     gaps : sequence of float
         Separation gap between each pair of neighbours [m], ``len(buildings) − 1`` values.
     contact : ContactSpec
-        The contact law used at every shared floor level.
+        The contact law used at every contact.
     name : str
         A label for outputs.
+    floor_to_column : bool
+        Let a floor that does not line up with a floor of its neighbour strike the
+        neighbour's column (default True); False keeps floor-to-floor contacts only.
+    level_tolerance : float
+        Floors whose elevations differ by at most this much [m] line up and meet slab to
+        slab (default 0.1 m, about half a slab's thickness: closer slabs overlap).
 
     Examples
     --------
@@ -150,6 +283,8 @@ class PoundingModel:
     gaps: Sequence[float]
     contact: ContactSpec
     name: str = "model"
+    floor_to_column: bool = True
+    level_tolerance: float = 0.1
 
     def __post_init__(self) -> None:
         if len(self.buildings) < 1:
@@ -160,6 +295,8 @@ class PoundingModel:
         if len(self.gaps) != len(self.buildings) - 1:
             raise ValueError(f"gaps: need {len(self.buildings) - 1} value(s) for "
                              f"{len(self.buildings)} buildings (got {len(self.gaps)})")
+        object.__setattr__(self, "level_tolerance", positive("level_tolerance",
+                                                             self.level_tolerance))
         object.__setattr__(self, "buildings", tuple(self.buildings))
         object.__setattr__(self, "gaps", tuple(non_negative(f"gaps[{i}]", g)
                                                for i, g in enumerate(self.gaps)))
@@ -171,14 +308,15 @@ class PoundingModel:
 
     @cached_property
     def contacts(self) -> tuple[Contact, ...]:
-        """Every floor-to-floor contact, pair by pair, bottom to top."""
+        """Every contact, pair by pair, bottom to top (see :func:`contact_points`)."""
         out: list[Contact] = []
-        offsets = self.system.offsets
         for p, (a, b) in enumerate(zip(self.buildings[:-1], self.buildings[1:])):
-            for i, j in shared_levels(a, b):
-                law = self.contact.build(float(a.masses[i]), float(b.masses[j]))
-                out.append(Contact(len(out), p, i, j, int(offsets[p] + i), int(offsets[p + 1] + j),
-                                   float(a.floor_levels[i]), float(self.gaps[p]), law))
+            for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column,
+                                                      self.level_tolerance):
+                left, right = ContactPoint(p, i, xi_i), ContactPoint(p + 1, j, xi_j)
+                law = self.contact.build(left.effective_mass(a.masses),
+                                         right.effective_mass(b.masses))
+                out.append(Contact(len(out), p, left, right, z, float(self.gaps[p]), law))
         return tuple(out)
 
     @property
@@ -186,13 +324,46 @@ class PoundingModel:
         """Total number of floors (degrees of freedom)."""
         return self.system.n_dof
 
-    def contact_arrays(self) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.float64],
+    @property
+    def is_inelastic(self) -> bool:
+        """True if any building has yielding storeys."""
+        return any(b.is_inelastic for b in self.buildings)
+
+    def contact_kinematics(self) -> tuple[NDArray[np.int64], NDArray[np.float64]]:
+        """Global DOFs and signed weights of every contact, each shape ``(n_c, 4)``.
+
+        ``δ = Σ_q w[c, q] u[dof[c, q]] − gap``: weights of the left point positive, of the
+        right point negative; unused slots carry weight 0 (on a valid DOF). The force ``F`` of
+        contact c acts on DOF ``dof[c, q]`` as ``−w[c, q] F``.
+        """
+        cs = self.contacts
+        dof = np.zeros((len(cs), 4), dtype=np.int64)
+        w = np.zeros((len(cs), 4))
+        offsets = self.system.offsets
+        for c in cs:
+            for side, point, sign in ((0, c.left, 1.0), (2, c.right, -1.0)):
+                fw = point.floor_weights()
+                base = int(offsets[point.building])
+                for q in range(2):
+                    i, wt = fw[q] if q < len(fw) else (fw[0][0], 0.0)
+                    dof[c.index, side + q] = base + i
+                    w[c.index, side + q] = sign * wt
+        return dof, w
+
+    def contact_penetration(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
+        """Penetration ``δ`` [m] of every contact from floor displacements ``u[..., N]``."""
+        dof, w = self.contact_kinematics()
+        gap = np.array([c.gap for c in self.contacts])
+        return np.einsum("...cq,cq->...c", u[..., dof], w) - gap
+
+    def contact_arrays(self) -> tuple[NDArray[np.int64], NDArray[np.float64], NDArray[np.float64],
                                       NDArray[np.int64], NDArray[np.float64]]:
         """The contacts as plain arrays for the compiled kernel.
 
         Returns
         -------
-        dof_left, dof_right : int64 (n_c,)
+        dof, weight : int64 / float64 (n_c, 4)
+            :meth:`contact_kinematics`.
         gap : float64 (n_c,) [m]
         code : int64 (n_c,) law codes
         params : float64 (n_c, p) law constants, zero-padded
@@ -202,10 +373,60 @@ class PoundingModel:
         for c in cs:
             p = c.law.params()
             params[c.index, : p.size] = p
-        return (np.array([c.dof_left for c in cs], dtype=np.int64),
-                np.array([c.dof_right for c in cs], dtype=np.int64),
-                np.array([c.gap for c in cs], dtype=float),
+        dof, w = self.contact_kinematics()
+        return (dof, w, np.array([c.gap for c in cs], dtype=float),
                 np.array([c.law.code for c in cs], dtype=np.int64), params)
+
+    @cached_property
+    def yielding_storeys(self) -> tuple[tuple[int, int], ...]:
+        """``(building, storey index)`` of every storey with a storey law, in DOF order."""
+        return tuple((p, j) for p, b in enumerate(self.buildings) if b.is_inelastic
+                     for j in range(b.n))
+
+    def storey_arrays(self) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64],
+                                     NDArray[np.float64], NDArray[np.int64]]:
+        """The yielding storeys as plain arrays for the compiled kernel.
+
+        Returns
+        -------
+        lower, upper : int64 (n_s,)
+            Global DOF of the floor below (−1: the ground) and above each storey.
+        code : int64 (n_s,)
+            Storey-law codes (:mod:`pounding.hysteresis.base`).
+        params : float64 (n_s, P)
+            Storey-law constants ``[k, F_y, …]``.
+        z_index : int64 (n_s,)
+            Index of the storey's internal variable among the ``z`` states (−1: none).
+        """
+        offsets = self.system.offsets
+        lower, upper, code, zi = [], [], [], []
+        rows = []
+        nz = 0
+        for p, b in enumerate(self.buildings):
+            if not b.is_inelastic:
+                continue
+            law = b.storey_law
+            assert law is not None
+            prm = b.storey_law_params()
+            for j in range(b.n):
+                upper.append(int(offsets[p] + j))
+                lower.append(int(offsets[p] + j - 1) if j > 0 else -1)
+                code.append(law.code)
+                rows.append(prm[j])
+                zi.append(nz if law.has_internal_variable else -1)
+                nz += 1 if law.has_internal_variable else 0
+        width = rows[0].size if rows else 6
+        return (np.array(lower, dtype=np.int64), np.array(upper, dtype=np.int64),
+                np.array(code, dtype=np.int64),
+                np.array(rows, dtype=float).reshape(len(rows), width),
+                np.array(zi, dtype=np.int64))
+
+    def linear_stiffness(self) -> NDArray[np.float64]:
+        """Stiffness matrix [N/m] of the linear storeys only (yielding storeys left out: the
+        kernel adds their shear from their laws)."""
+        blocks = [b.stiffness_matrix() if not b.is_inelastic else np.zeros((b.n, b.n))
+                  for b in self.buildings]
+        return np.ascontiguousarray(scipy.linalg.block_diag(*blocks))
 
     def dof_labels(self) -> list[str]:
         """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based)."""

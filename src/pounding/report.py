@@ -37,7 +37,7 @@ import numpy as np
 import pandas as pd
 
 from pounding.io import write_text
-from pounding.result import peak_abs
+from pounding.result import ENERGY_NAMES, peak_abs
 
 __all__ = ["DEFAULT_NAME", "MAX_IMPACT_ROWS", "MAX_SWEEP_ROWS", "RUN_FILES", "SWEEP_FILE",
            "detect_kind", "render_report", "write_report"]
@@ -63,10 +63,12 @@ MAX_SWEEP_PLOTS = 8
 ENERGY_DESCRIPTIONS: dict[str, str] = {
     "input": "input energy −∫u̇ᵀMr·a_g dt",
     "kinetic": "kinetic energy ½u̇ᵀMu̇ (relative to the ground)",
-    "strain": "elastic strain energy ½uᵀKu",
+    "strain": "elastic strain energy ½uᵀKu (plus the recoverable energy of yielding storeys)",
     "damping": "dissipated by structural (viscous) damping ∫u̇ᵀCu̇ dt",
     "contact_work": "work of the contact forces ∫ΣF·δ̇ dt",
     "contact_stored": "elastic energy still stored in closed contacts",
+    "hysteretic": "hysteretic energy of yielding storeys (their work less what they would give "
+                  "back)",
 }
 
 CONTACT_UNITS: dict[str, str] = {
@@ -573,11 +575,19 @@ def _result_from(r: _Run) -> Any:
     def a(name: str) -> np.ndarray:
         return np.asarray(ds[name].values, dtype=float)
 
+    energy = a("energy")
+    if energy.shape[1] < len(ENERGY_NAMES):  # runs saved before the hysteretic column
+        energy = np.pad(energy, ((0, 0), (0, len(ENERGY_NAMES) - energy.shape[1])))
+    yielding = None
+    if model.is_inelastic:
+        offsets = model.system.offsets
+        cols = [offsets[p] + j for p, j in model.yielding_storeys]
+        yielding = a("storey_shear")[:, cols]
     return Result(model=model, motion=motion, dt=dt, ground=a("ground_acceleration"),
                   displacement=a("displacement"), velocity=a("velocity"),
                   abs_acceleration=a("absolute_acceleration"), penetration=a("penetration"),
-                  contact_force=a("contact_force"), energy=a("energy"), impact_array=arr,
-                  stats=stats)
+                  contact_force=a("contact_force"), energy=energy, impact_array=arr,
+                  stats=stats, yielding_shear=yielding)
 
 
 def _figures_section(r: _Run) -> str:

@@ -26,11 +26,15 @@ from pounding.io import atomic_path, write_text
 from pounding.model import PoundingModel
 
 ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "contact_work",
-                                 "contact_stored")
+                                 "contact_stored", "hysteretic")
 """Columns of :attr:`Result.energy` [J]: input energy ``−∫u̇ᵀMr a_g dt``, kinetic
-``½u̇ᵀMu̇`` (relative), elastic strain ``½uᵀKu``, viscous damping ``∫u̇ᵀCu̇ dt``, total work
-of the contact forces ``∫ΣF δ̇ dt``, and the elastic energy still stored in closed contacts.
-Contact-dissipated energy is ``contact_work − contact_stored``."""
+``½u̇ᵀMu̇`` (relative), elastic strain (``½uᵀKu`` of the linear storeys plus the recoverable
+energy of the yielding ones), viscous damping ``∫u̇ᵀCu̇ dt``, total work of the contact forces
+``∫ΣF δ̇ dt``, the elastic energy still stored in closed contacts, and the hysteretic energy
+of the yielding storeys (their work ``∫ΣV ḋ dt`` minus their recoverable energy; see
+:mod:`pounding.hysteresis.base`). Contact-dissipated energy is
+``contact_work − contact_stored``. The balance: ``E_0 + input = kinetic + strain + damping
++ hysteretic + contact_work``."""
 
 def peak_abs(a: NDArray[np.float64]) -> NDArray[np.float64]:
     """Largest absolute value of each column of a (time, item) history.
@@ -87,6 +91,11 @@ class Result:
     contact_peak, contact_impacts : ndarray (n_c,), optional
         Peak force [N] and number of impacts of each contact, kept by the solver even when
         the impact table overflows (derived from the table when not given).
+    yielding_shear : ndarray (nt, n_s), optional
+        Shear [N] of every yielding storey (:attr:`PoundingModel.yielding_storeys` order),
+        from its storey law.
+    final_z : ndarray (n_z,), optional
+        Bouc–Wen internal variables at the end (for the residual drift).
     """
 
     model: PoundingModel
@@ -103,6 +112,8 @@ class Result:
     stats: SolverStats
     contact_peak: NDArray[np.float64] | None = field(default=None, repr=False)
     contact_impacts: NDArray[np.int64] | None = field(default=None, repr=False)
+    yielding_shear: NDArray[np.float64] | None = field(default=None, repr=False)
+    final_z: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property
@@ -125,9 +136,92 @@ class Result:
 
     @cached_property
     def storey_shear(self) -> NDArray[np.float64]:
-        """Storey shear ``k_j × drift_j`` [N] (nt, N)."""
+        """Storey shear [N] (nt, N): ``k_j × drift_j`` for linear storeys, the storey law's
+        shear for yielding ones."""
         k = np.concatenate([b.stiffnesses for b in self.model.buildings])
-        return self.drift * k
+        out = self.drift * k
+        cols = self._yielding_columns()
+        if cols.size:
+            if self.yielding_shear is None:
+                raise ValueError("result: the model has yielding storeys but no yielding_shear")
+            out[:, cols] = self.yielding_shear
+        return out
+
+    def _yielding_columns(self) -> NDArray[np.int64]:
+        offsets = self.model.system.offsets
+        return np.array([offsets[p] + j for p, j in self.model.yielding_storeys], dtype=np.int64)
+
+    @cached_property
+    def ductility(self) -> NDArray[np.float64]:
+        """Storey ductility demand ``max|drift| / (F_y / k)`` [-] (N,); NaN for linear
+        storeys (no yield point). Peaks are read at the output steps."""
+        out = np.full(self.model.n_dof, np.nan)
+        peak = peak_abs(self.drift)
+        for off, b in zip(self.model.system.offsets, self.model.buildings):
+            fy = b.yield_forces
+            if fy is not None:
+                out[off: off + b.n] = peak[off: off + b.n] / (fy / b.stiffnesses)
+        return out
+
+    @cached_property
+    def residual_drift(self) -> NDArray[np.float64]:
+        """Residual storey drift [m] (N,): the drift left when the storey, from its state at
+        the end of the run, is unloaded to zero shear along its unloading stiffness,
+        ``d_end − V_end / k_unload`` (for the bilinear law: its plastic drift). 0 for linear
+        storeys. Run on past the record (``duration``) to let the motion die out first."""
+        out = np.zeros(self.model.n_dof)
+        if not self.model.is_inelastic:
+            return out
+        d_end = self.drift[-1]
+        v_end = self.storey_shear[-1]
+        z_end = self.final_z if self.final_z is not None else np.zeros(0)
+        zk = 0
+        for off, b in zip(self.model.system.offsets, self.model.buildings):
+            law = b.storey_law
+            if law is None:
+                continue
+            prm = b.storey_law_params()
+            for j in range(b.n):
+                col = off + j
+                z = 0.0
+                if law.has_internal_variable:
+                    z = float(z_end[zk]) if zk < z_end.size else 0.0
+                    zk += 1
+                direction = -np.sign(v_end[col])
+                out[col] = d_end[col] - v_end[col] / law.unloading_stiffness(prm[j], z, direction)
+        return out
+
+    @cached_property
+    def column_shear(self) -> NDArray[np.float64]:
+        """Shear demand on each struck column [N] (nt, n_c): NaN for floor-to-floor contacts.
+
+        A floor-to-column contact at position ξ of storey j of the struck building loads
+        its column with a point force ``P`` (the contact force, signed in the direction it
+        pushes the struck building), shared to the floors as ``(1 − ξ)P`` and ``ξP``
+        (:class:`pounding.model.ContactPoint`). With the storey shear ``V`` (from the
+        drift), equilibrium of the column gives the local shear ``V + (1 − ξ)P`` below the
+        point and ``V − ξP`` above it; the demand is the larger in magnitude. Read at the
+        output steps (the contact force peak itself is located inside steps:
+        :attr:`peak_contact_force`)."""
+        nt = self.displacement.shape[0]
+        out = np.full((nt, len(self.model.contacts)), np.nan)
+        offsets = self.model.system.offsets
+        shear = self.storey_shear
+        for c in self.model.contacts:
+            pt = c.struck
+            if pt is None:
+                continue
+            p = self.contact_force[:, c.index] * (1.0 if pt is c.right else -1.0)
+            v = shear[:, offsets[pt.building] + pt.upper]
+            out[:, c.index] = np.maximum(np.abs(v + (1.0 - pt.xi) * p), np.abs(v - pt.xi * p))
+        return out
+
+    @cached_property
+    def peak_column_shear(self) -> NDArray[np.float64]:
+        """Largest :attr:`column_shear` of every contact [N] (NaN: floor to floor)."""
+        cs = self.column_shear
+        return np.array([np.nanmax(cs[:, j]) if np.isfinite(cs[:, j]).any() else np.nan
+                         for j in range(cs.shape[1])])
 
     # ----------------------------------------------------------------- impacts and peaks
     @cached_property
@@ -179,12 +273,12 @@ class Result:
 
     @cached_property
     def energy_balance_error(self) -> float:
-        """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + W_contact)|`` over the
+        """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + E_hyst + W_contact)|`` over the
         run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
         largest input energy and ``E_0`` (dimensionless; 0 for a run with no energy)."""
         e = self.energy
         e0 = e[0, 1] + e[0, 2]
-        closure = e0 + e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4])
+        closure = e0 + e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4] + e[:, 6])
         scale = max(np.abs(e[:, 0]).max(), e0)
         if scale <= 0.0:
             return 0.0
@@ -234,6 +328,16 @@ class Result:
                    "energy_balance_error": self.energy_balance_error,
                    "units": "SI (m, kg, s, N, J)"},
         )
+        if self.model.is_inelastic:
+            ds["ductility"] = da(self.ductility, ("floor",), "1",
+                                 "storey ductility demand max|drift| / yield drift "
+                                 "(NaN: linear storey)")
+            ds["residual_drift"] = da(self.residual_drift, ("floor",), "m",
+                                      "residual storey drift after elastic unloading")
+        if any(c.struck is not None for c in self.model.contacts):
+            ds["column_shear"] = da(self.column_shear, ("time", "contact"), "N",
+                                    "shear demand on the struck column of a floor-to-column "
+                                    "contact (NaN: floor to floor)")
         return ds
 
     def summary(self) -> dict[str, Any]:
@@ -254,11 +358,27 @@ class Result:
             "energy_final_J": {name: float(v) for name, v in zip(ENERGY_NAMES, self.energy[-1])},
             "contact_dissipated_J": float(self.contact_dissipated[-1]),
             "energy_balance_error": self.energy_balance_error,
+            **self._inelastic_summary(),
             "solver": {"name": self.stats.solver, "rtol": self.stats.rtol, "rk_steps": self.stats.rk_steps,
                        "rejected": self.stats.rejected, "events": self.stats.events,
                        "impact_table_overflow": self.stats.impact_overflow,
                        "wall_time_s": self.stats.wall_time},
         }
+
+    def _inelastic_summary(self) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        labels = self.model.dof_labels()
+        if self.model.is_inelastic:
+            out["hysteretic_energy_J"] = float(self.energy[-1, 6])
+            out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, self.ductility)
+                                       if np.isfinite(v)}
+            out["residual_drift_m"] = {lb: float(v) for lb, v in
+                                       zip(labels, self.residual_drift)}
+        struck = [c for c in self.model.contacts if c.struck is not None]
+        if struck:
+            pcs = self.peak_column_shear
+            out["peak_column_shear_N"] = {c.label: float(pcs[c.index]) for c in struck}
+        return out
 
     def save(self, folder: str | os.PathLike[str]) -> dict[str, Path]:
         """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``.

@@ -235,7 +235,10 @@ def test_bad_inputs_of_the_api(seed: PoundingModel, elc) -> None:
     a = ShearBuilding.sdof(1e5, period=0.5, height=3.0)
     b = ShearBuilding.sdof(1e5, period=0.5, height=4.0)
     with pytest.raises(ValueError, match="no shared floor level"):
-        critical_gaps(PoundingModel([a, b], [0.01], seed.contact), elc)
+        critical_gaps(PoundingModel([a, b], [0.01], seed.contact, floor_to_column=False), elc)
+    # the 3 m slab faces the 4 m building's column: one floor-to-column level
+    assert [c.label for c in PoundingModel([a, b], [0.01], seed.contact).contacts] == \
+        ["B1F1-B2S1@0.75"]
 
 
 # ============================================================================ design spectra

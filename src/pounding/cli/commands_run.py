@@ -104,31 +104,53 @@ def _print_summary(out: Any) -> None:
     console.print(head)
 
     bt = Table(title="Buildings")
-    for col, just in (("building", "left"), ("storeys", "right"), ("T1 [s]", "right"),
-                      ("peak roof displacement [m]", "right"), ("peak drift [m]", "right"),
-                      ("at storey", "right"), ("peak drift ratio", "right")):
+    cols = [("building", "left"), ("storeys", "right"), ("T1 [s]", "right"),
+            ("peak roof displacement [m]", "right"), ("peak drift [m]", "right"),
+            ("at storey", "right"), ("peak drift ratio", "right")]
+    inelastic = model.is_inelastic
+    if inelastic:
+        cols += [("storey law", "left"), ("peak ductility", "right"),
+                 ("largest residual drift [m]", "right")]
+    for col, just in cols:
         bt.add_column(_h(col), justify=just)  # type: ignore[arg-type]
     drift = peak_abs(r.drift)
     for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
         d = drift[off: off + bl.n]
         j = int(np.argmax(d))
-        bt.add_row(f"B{b + 1} {bl.name}".strip(), str(bl.n), f"{bl.fundamental_period:.3f}",
-                   f"{r.peak_displacement[off + bl.n - 1]:.4f}", f"{d[j]:.4f}", str(j + 1),
-                   f"{d[j] / bl.heights[j]:.2%}")
+        row = [f"B{b + 1} {bl.name}".strip(), str(bl.n), f"{bl.fundamental_period:.3f}",
+               f"{r.peak_displacement[off + bl.n - 1]:.4f}", f"{d[j]:.4f}", str(j + 1),
+               f"{d[j] / bl.heights[j]:.2%}"]
+        if inelastic:
+            law = bl.storey_law
+            if law is None:
+                row += ["linear", "-", "-"]
+            else:
+                mu = r.ductility[off: off + bl.n]
+                res = r.residual_drift[off: off + bl.n]
+                jr = int(np.argmax(np.abs(res)))
+                row += [law.label, f"{np.max(mu):.2f} (storey {int(np.argmax(mu)) + 1})",
+                        f"{res[jr]:+.4f} (storey {jr + 1})"]
+        bt.add_row(*row)
     console.print(bt)
 
     if model.contacts:
         ct = Table(title="Contacts")
+        columns = any(c.struck is not None for c in model.contacts)
         for col in ("contact", "elevation [m]", "gap [m]", "impacts", "peak force [N]",
-                    "dissipated [J]"):
+                    "dissipated [J]") + (("peak column shear [N]",) if columns else ()):
             ct.add_column(_h(col), justify="left" if col == "contact" else "right")
         imp = r.impacts
         pcf = r.peak_contact_force
+        pcs = r.peak_column_shear if columns else None
         for c in model.contacts:
             rows = imp[imp["contact"] == c.label] if len(imp) else imp
-            ct.add_row(c.label, f"{c.elevation:g}", f"{c.gap:g}", str(len(rows)),
-                       f"{pcf[c.index]:.4g}" if len(rows) else "-",
-                       f"{np.nansum(rows['energy_dissipated']):.4g}" if len(rows) else "-")
+            cells = [c.label, f"{c.elevation:g}", f"{c.gap:g}", str(len(rows)),
+                     f"{pcf[c.index]:.4g}" if len(rows) else "-",
+                     f"{np.nansum(rows['energy_dissipated']):.4g}" if len(rows) else "-"]
+            if pcs is not None:
+                cells.append(f"{pcs[c.index]:.4g}" if c.struck is not None and len(rows)
+                             else "-")
+            ct.add_row(*cells)
         console.print(ct)
 
     console.print(f"outputs in [bold]{out.out_dir}[/]: "

@@ -30,6 +30,7 @@ from pounding.integrate.kernel import (
     W_H,
     integrate_chunk,
 )
+from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
 from pounding.integrate.propagator import Propagator, propagator
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
@@ -97,7 +98,9 @@ def ground_on_grid(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
 
 def initial_state(model: PoundingModel, u0: np.ndarray | None,
                   v0: np.ndarray | None) -> np.ndarray:
-    """State ``[u, u̇]`` at t = 0, checked: right length, finite, every gap open."""
+    """State ``[u, u̇]`` at t = 0, checked: right length, finite, every gap open.
+
+    (Yielding storeys start unloaded at these drifts: see :func:`initial_storeys`.)"""
     n = model.n_dof
     x = np.zeros(2 * n)
     for name, val, sl in (("initial_displacement", u0, slice(0, n)),
@@ -107,12 +110,32 @@ def initial_state(model: PoundingModel, u0: np.ndarray | None,
             if arr.shape != (n,) or not np.all(np.isfinite(arr)):
                 raise ValueError(f"{name}: need {n} finite values, one per floor (got {val!r})")
             x[sl] = arr
-    for c in model.contacts:
-        d = x[c.dof_left] - x[c.dof_right] - c.gap
+    for c, d in zip(model.contacts, model.contact_penetration(x[:n])):
         if d > 0.0:
             raise ValueError(f"initial_displacement: contact {c.label} starts closed "
                              f"(penetration {d:g} m); start with every gap open")
     return x
+
+
+def initial_storeys(model: PoundingModel, u0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Committed ``(drift, shear)`` of every yielding storey at t = 0, and their ``z``.
+
+    A storey given an initial drift is taken as loaded monotonically to it from rest (its
+    law followed from zero), so a drift beyond yield starts on the yield branch.
+    """
+    from pounding.hysteresis.dispatch import _drive
+
+    lo, hi, code, par, zi = model.storey_arrays()
+    state = np.zeros((lo.size, 2))
+    z = np.zeros(int(np.sum(zi >= 0)))
+    for s in range(lo.size):
+        d = u0[hi[s]] - (u0[lo[s]] if lo[s] >= 0 else 0.0)
+        if d != 0.0:
+            v, zz = _drive(int(code[s]), par[s: s + 1], np.array([0.0, d]), 200)
+            state[s] = (d, v[-1])
+            if zi[s] >= 0:
+                z[zi[s]] = zz[-1]
+    return state, z
 
 
 def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = None,
@@ -148,7 +171,9 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     free_stepping : {"auto", "exact", "rk"}
         How steps without contact are taken: ``"exact"`` propagator (O(N²) a step, exact),
         adaptive ``"rk"`` (O(N·bandwidth) a step), or ``"auto"``: exact for small models,
-        RK for large ones, so the cost grows linearly with the number of storeys.
+        RK for large ones, so the cost grows linearly with the number of storeys. A model
+        with yielding storeys is not linear between impacts, so it is always stepped by RK
+        (``"exact"`` is refused).
     progress : callable, optional
         Called with the fraction done (0 … 1) after each chunk of steps.
 
@@ -163,32 +188,42 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     ag = ground_on_grid(motion, step, t_end)
     nt = ag.size
     sys_ = model.system
-    M, C, K, r = sys_.M, sys_.C, sys_.K, sys_.r
+    M, C, r = sys_.M, sys_.C, sys_.r
+    K = model.linear_stiffness()
     n = r.size
     m_diag = np.diag(M).copy()
     if np.any(M != np.diag(m_diag)):
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
     bw = half_bandwidth(K, C)
-    exact = choose_free_stepping(free_stepping, n, bw)
+    s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
+    ns = s_lo.size
+    nz = int(np.sum(s_zi >= 0))
+    if ns and free_stepping == "exact":
+        raise ValueError("free_stepping: 'exact' needs linear storeys; this model has "
+                         "yielding storeys (use 'auto' or 'rk')")
+    exact = choose_free_stepping(free_stepping, n, bw) and ns == 0
     if exact:
         full = propagator(M, C, K, r, step)
         half = propagator(M, C, K, r, 0.5 * step)
     else:
         full = half = Propagator(np.zeros((2 * n, 2 * n)), np.zeros(2 * n), np.zeros(2 * n))
-    cl, cr, cgap, ccode, cparams = model.contact_arrays()
-    nc = cl.size
+    cdof, cw, cgap, ccode, cparams = model.contact_arrays()
+    nc = cgap.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
     u_scale = max(min(cgap) if nc else 0.0, 1e-3)
     v_scale = max(motion.pgv, 1e-3)
-    atol = np.concatenate([np.full(n, rtol * 1e-3 * u_scale), np.full(n, rtol * 1e-3 * v_scale)])
+    atol = np.concatenate([np.full(n, rtol * 1e-3 * u_scale), np.full(n, rtol * 1e-3 * v_scale),
+                           np.full(nz, rtol * 1e-3)])  # z is dimensionless, |z| ≲ 1
 
-    x = initial_state(model, initial_displacement, initial_velocity)
+    x0 = initial_state(model, initial_displacement, initial_velocity)
+    sstate, z0 = initial_storeys(model, x0[:n])
+    x = np.concatenate([x0, z0])
     committed = np.zeros((max(nc, 1), STATE_SIZE))[:nc]
     wc = np.zeros(nc)
     w_start = np.zeros(nc)
     imp_row = -np.ones(nc, dtype=np.int64)
     last_f = np.zeros((nc, 3))
-    ws_f = np.zeros(3)
+    ws_f = np.zeros(4)
     ws_f[W_H] = step * 0.1
     ws_i = np.zeros(7, dtype=np.int64)
     ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
@@ -198,24 +233,33 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     acc_out = np.zeros((nt, n))
     pen_out = np.zeros((nt, nc))
     f_out = np.zeros((nt, nc))
+    vs_out = np.zeros((nt, ns))
+    vs_out[0] = sstate[:, 1]
     e_out = np.zeros((nt, ENERGY_COLUMNS))
     imp = np.full((cap, IMP_COLUMNS), np.nan)
     cpeak = np.zeros(nc)
     ccount = np.zeros(nc, dtype=np.int64)
     u_out[0] = x[:n]
-    v_out[0] = x[n:]
-    pen_out[0] = x[cl] - x[cr] - cgap
-    acc_out[0] = -(K @ x[:n] + C @ x[n:]) / m_diag
-    e_out[0, 1] = 0.5 * x[n:] @ M @ x[n:]
-    e_out[0, 2] = 0.5 * x[:n] @ K @ x[:n]
+    v_out[0] = x[n:2 * n]
+    pen_out[0] = model.contact_penetration(x[:n])
+    storey_force = np.zeros(n)
+    np.add.at(storey_force, s_hi, sstate[:, 1])
+    np.add.at(storey_force, s_lo[s_lo >= 0], -sstate[s_lo >= 0, 1])
+    acc_out[0] = -(K @ x[:n] + C @ x[n:2 * n] + storey_force) / m_diag
+    e_out[0, 1] = 0.5 * x[n:2 * n] @ M @ x[n:2 * n]
+    e_out[0, 2] = 0.5 * x[:n] @ K @ x[:n] + sum(
+        _recoverable(int(s_code[s]), s_par, s, sstate[s, 0],
+                     x[2 * n + s_zi[s]] if s_zi[s] >= 0 else 0.0, sstate[s, 1])
+        for s in range(ns))
 
     chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
     args = (step, ag, exact, full.phi, full.gamma0, full.gamma1, half.phi, half.gamma0,
             half.gamma1, bw, np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
-            np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cl, cr, cgap, ccode,
-            np.ascontiguousarray(cparams), rtol, atol, h_max, x, committed, wc, w_start,
-            imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, e_out, imp,
-            cpeak, ccount)
+            np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cdof, cw, cgap,
+            ccode, np.ascontiguousarray(cparams), s_lo, s_hi, s_code,
+            np.ascontiguousarray(s_par), s_zi, rtol, atol, h_max, x, committed, sstate, wc,
+            w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out,
+            vs_out, e_out, imp, cpeak, ccount)
     start = time.perf_counter()
     for k0 in range(0, nt - 1, chunk):
         k1 = min(nt - 1, k0 + chunk)
@@ -237,5 +281,6 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     return Result(model=model, motion=motion, dt=step, ground=ag,
                   displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
                   penetration=pen_out, contact_force=f_out, energy=e_out,
+                  yielding_shear=vs_out, final_z=x[2 * n:].copy(),
                   impact_array=imp[: min(n_imp, cap)].copy(), stats=stats,
                   contact_peak=cpeak, contact_impacts=ccount)

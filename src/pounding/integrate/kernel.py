@@ -34,6 +34,8 @@ from numba import njit
 
 from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
 from pounding.contact.dispatch import law_trial, stored_energy
+from pounding.hysteresis.base import D_C, V_C
+from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 
 # Dormand–Prince 5(4) tableau
 _C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
@@ -55,25 +57,59 @@ IMP_CONTACT, IMP_START, IMP_END, IMP_V0, IMP_PEAK, IMP_DMAX, IMP_E, IMP_ENERGY =
 IMP_COLUMNS = 8
 
 # Columns of the energy history
-E_INPUT, E_KINETIC, E_STRAIN, E_DAMPING, E_CONTACT_WORK, E_CONTACT_STORED = range(6)
-ENERGY_COLUMNS = 6
+(E_INPUT, E_KINETIC, E_STRAIN, E_DAMPING, E_CONTACT_WORK, E_CONTACT_STORED,
+ E_HYSTERETIC) = range(7)
+ENERGY_COLUMNS = 7
+
+# Columns of the power rows (input, viscous, yielding storeys, then one per contact)
+P_INPUT, P_DAMP, P_STOREY = range(3)
+P_CONTACT = 3
+
+# Event kinds
+EV_ONSET, EV_SEPARATION, EV_MAX_COMPRESSION, EV_RELOADING = 1, 2, 3, 4
+EV_DRIFT_MAX, EV_DRIFT_MIN = 5, 6
 
 # Workspace scalars (ws_f) and integers (ws_i)
-W_H, W_E_INPUT, W_E_DAMP = range(3)
+W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY = range(4)
 I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED = range(7)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cparams,
-           committed, dy, power, row):
-    """dy = f(y) for the structure with contacts; power = [input, viscous, per-contact F δ̇].
+@njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+def _gap(c, y, n, cdof, cw):
+    """``(Σ w u, Σ w u̇)`` of contact c: its penetration plus the gap, and its rate
+    (:meth:`pounding.model.PoundingModel.contact_kinematics`)."""
+    d = 0.0
+    v = 0.0
+    for q in range(4):
+        j = cdof[c, q]
+        d += cw[c, q] * y[j]
+        v += cw[c, q] * y[n + j]
+    return d, v
 
-    Writes row ``row`` of ``dy`` and ``power`` (2-D arrays: no views in the hot loop).
-    Contact forces use the committed states (read only).
+
+@njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+def _drift(s, y, n, s_lo, s_hi):
+    """Drift and drift rate of yielding storey s (``u_upper − u_lower``, ground = 0)."""
+    hi = s_hi[s]
+    lo = s_lo[s]
+    if lo >= 0:
+        return y[hi] - y[lo], y[n + hi] - y[n + lo]
+    return y[hi], y[n + hi]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw, cgap, ccode, cparams,
+           committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, dy, power, row):
+    """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
+    per-contact F δ̇].
+
+    ``y = [u (n), u̇ (n), z (one per Bouc–Wen storey)]``. Writes row ``row`` of ``dy`` and
+    ``power`` (2-D arrays: no views in the hot loop). Contact forces and yielding storeys
+    use their committed states (read only).
     """
-    nc = cl.shape[0]
-    # structural part: acc = −M⁻¹(K u + C v) − r a_g, K and C banded (half-bandwidth bw),
-    # M diagonal (lumped floor masses): O(N·bw) work
+    nc = cgap.shape[0]
+    # linear part: acc = −M⁻¹(K u + C v) − r a_g, K (linear storeys only) and C banded
+    # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work
     p_in = 0.0
     p_d = 0.0
     for i in range(n):
@@ -86,13 +122,27 @@ def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cpara
         dy[row, n + i] = -(ku + cv) / m_diag[i] - r[i] * ag
         p_in -= y[n + i] * mr[i] * ag
         p_d += y[n + i] * cv
-    power[row, 0] = p_in
-    power[row, 1] = p_d
+    power[row, P_INPUT] = p_in
+    power[row, P_DAMP] = p_d
+    # yielding storeys: shear V from the storey law, −V on the floor above, +V below
+    p_s = 0.0
+    for s in range(s_lo.shape[0]):
+        d, dr = _drift(s, y, n, s_lo, s_hi)
+        zi = s_zi[s]
+        z = y[2 * n + zi] if zi >= 0 else 0.0
+        v, kt, zd = storey_trial(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])
+        hi = s_hi[s]
+        lo = s_lo[s]
+        dy[row, n + hi] -= v / m_diag[hi]
+        if lo >= 0:
+            dy[row, n + lo] += v / m_diag[lo]
+        if zi >= 0:
+            dy[row, 2 * n + zi] = zd
+        p_s += v * dr
+    power[row, P_STOREY] = p_s
     for c in range(nc):
-        a = cl[c]
-        b = cr[c]
-        delta = y[a] - y[b] - cgap[c]
-        rate = y[n + a] - y[n + b]
+        dsum, rate = _gap(c, y, n, cdof, cw)
+        delta = dsum - cgap[c]
         # Inside a step the contact keeps its committed status: an open contact pushes
         # nothing even where δ > 0, a closed one follows its law's one-sided limit even
         # where δ ≤ 0. Status changes only at located events, so every step integrates a
@@ -102,16 +152,19 @@ def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cpara
             f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
                           max(delta, DELTA_EPS), rate, committed[c, V0], committed[c, SLIP],
                           committed[c, DMAX])[0]
-        power[row, 2 + c] = f * rate
+        power[row, P_CONTACT + c] = f * rate
         if f != 0.0:
-            # force f pushes the left floor left (−f) and the right floor right (+f)
-            dy[row, n + a] -= f / m_diag[a]
-            dy[row, n + b] += f / m_diag[b]
+            # the force pushes the left point left and the right point right, shared to
+            # the floors with the point's weights (−w F on each)
+            for q in range(4):
+                j = cdof[c, q]
+                dy[row, n + j] -= cw[c, q] * f / m_diag[j]
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap,
-             ccode, cparams, committed, ks, ps, ytmp, y1, atol, rtol):
+def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw, cgap,
+             ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, ytmp,
+             y1, atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
 
     ``ag0 + dag * s`` is the ground acceleration at local time s; s0 is the local start.
@@ -125,31 +178,31 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_mat, c_mat, m_diag, mr, r, cl
         ps[0, i] = p1[0, i]
     for i in range(m):
         ytmp[i] = y0[i] + h * _A21 * ks[0, i]
-    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-           cgap, ccode, cparams, committed, ks, ps, 1)
+    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, 1)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A31 * ks[0, i] + _A32 * ks[1, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-           cgap, ccode, cparams, committed, ks, ps, 2)
+    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, 2)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A41 * ks[0, i] + _A42 * ks[1, i] + _A43 * ks[2, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-           cgap, ccode, cparams, committed, ks, ps, 3)
+    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, 3)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A51 * ks[0, i] + _A52 * ks[1, i] + _A53 * ks[2, i]
                                + _A54 * ks[3, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-           cgap, ccode, cparams, committed, ks, ps, 4)
+    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, 4)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A61 * ks[0, i] + _A62 * ks[1, i] + _A63 * ks[2, i]
                                + _A64 * ks[3, i] + _A65 * ks[4, i])
-    _deriv(ytmp, ag0 + dag * (s0 + h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-           cgap, ccode, cparams, committed, ks, ps, 5)
+    _deriv(ytmp, ag0 + dag * (s0 + h), n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, 5)
     for i in range(m):
         y1[i] = y0[i] + h * (_B1 * ks[0, i] + _B3 * ks[2, i] + _B4 * ks[3, i]
                              + _B5 * ks[4, i] + _B6 * ks[5, i])
-    _deriv(y1, ag0 + dag * (s0 + h), n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-           cgap, ccode, cparams, committed, ks, ps, 6)
+    _deriv(y1, ag0 + dag * (s0 + h), n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, 6)
     err = 0.0
     for i in range(m):
         e = h * (_E1 * ks[0, i] + _E3 * ks[2, i] + _E4 * ks[3, i] + _E5 * ks[4, i]
@@ -234,62 +287,89 @@ def _hermite_max(f0, d0, f1, d1, h):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _event_value(kind, c, y, n, cl, cr, cgap):
-    """Event function of contact c: δ for onset/separation, δ̇ for phase switches."""
-    a = cl[c]
-    b = cr[c]
-    if kind == 3 or kind == 4:
-        return y[n + a] - y[n + b]
-    return y[a] - y[b] - cgap[c]
+def _event_value(kind, c, y, n, cdof, cw, cgap, s_lo, s_hi):
+    """Event function: δ of contact c (onset/separation), δ̇ (phase switches), or the drift
+    rate of yielding storey c (drift reversals)."""
+    if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
+        return _drift(c, y, n, s_lo, s_hi)[1]
+    d, v = _gap(c, y, n, cdof, cw)
+    if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING:
+        return v
+    return d - cgap[c]
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind):
-    # k0: row 0 is f(y0); k1: row 6 is f(y1)
-    """Earliest event in a step, from the Hermite interpolants of every contact's δ and δ̇.
+def _rate_event(r0, acc0, r1, acc1, h, best_t):
+    """Time of a rate sign change in a step (−1 if none earlier than ``best_t``); the
+    crossing direction is read from the end values."""
+    if r0 > 0.0 and r1 <= 0.0:
+        t = _hermite_root(r0, acc0, r1, acc1, h, False)
+    elif r0 < 0.0 and r1 >= 0.0:
+        t = _hermite_root(r0, acc0, r1, acc1, h, True)
+    else:
+        return -1.0
+    if t < 0.0:
+        t = h
+    return t if t < best_t else -1.0
 
-    Returns (time estimate, contact, kind) with kind 1 onset, 2 separation, 3 maximum
-    compression (δ̇: + → −), 4 reloading (δ̇: − → +); (−1, −1, 0) if none.
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, committed, s_lo, s_hi, skip_c,
+                skip_kind):
+    # k0: row 0 is f(y0); k1: row 6 is f(y1)
+    """Earliest event in a step, from the Hermite interpolants of every contact's δ and δ̇
+    and every yielding storey's drift rate.
+
+    Returns (time estimate, contact or storey, kind): kind 1 onset, 2 separation, 3 maximum
+    compression (δ̇: + → −), 4 reloading (δ̇: − → +), 5 / 6 a yielding storey's drift rate
+    turning negative / positive (the drift reverses); (−1, −1, 0) if none.
     """
     best_t = 1e300
     best_c = -1
     best_k = 0
-    for c in range(cl.shape[0]):
-        a = cl[c]
-        b = cr[c]
-        d0 = y0[a] - y0[b] - cgap[c]
-        d1 = y1[a] - y1[b] - cgap[c]
-        r0 = y0[n + a] - y0[n + b]
-        r1 = y1[n + a] - y1[n + b]
+    for c in range(cgap.shape[0]):
+        ds0, r0 = _gap(c, y0, n, cdof, cw)
+        ds1, r1 = _gap(c, y1, n, cdof, cw)
+        d0 = ds0 - cgap[c]
+        d1 = ds1 - cgap[c]
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
         if committed[c, V0] == 0.0:
             if max(d0, d1) + bound <= 0.0:
                 continue
-            if not (c == skip_c and skip_kind == 1):
+            if not (c == skip_c and skip_kind == EV_ONSET):
                 t = _hermite_root(d0, r0, d1, r1, h, True)
                 if t > 0.0 and t < best_t:
-                    best_t, best_c, best_k = t, c, 1
+                    best_t, best_c, best_k = t, c, EV_ONSET
         else:
-            if not (c == skip_c and skip_kind == 2) and min(d0, d1) - bound <= 0.0:
+            if not (c == skip_c and skip_kind == EV_SEPARATION) and min(d0, d1) - bound <= 0.0:
                 t = _hermite_root(d0, r0, d1, r1, h, False)
                 if d1 <= 0.0 and t < 0.0:
                     t = h
                 if t > 0.0 and t < best_t:
-                    best_t, best_c, best_k = t, c, 2
-            acc0 = k0[0, n + a] - k0[0, n + b]
-            acc1 = k1[6, n + a] - k1[6, n + b]
-            if r0 > 0.0 and r1 <= 0.0 and not (c == skip_c and skip_kind == 3):
-                t = _hermite_root(r0, acc0, r1, acc1, h, False)
-                if t < 0.0:
-                    t = h
-                if t < best_t:
-                    best_t, best_c, best_k = t, c, 3
-            elif r0 < 0.0 and r1 >= 0.0 and not (c == skip_c and skip_kind == 4):
-                t = _hermite_root(r0, acc0, r1, acc1, h, True)
-                if t < 0.0:
-                    t = h
-                if t < best_t:
-                    best_t, best_c, best_k = t, c, 4
+                    best_t, best_c, best_k = t, c, EV_SEPARATION
+            acc0 = 0.0
+            acc1 = 0.0
+            for q in range(4):
+                acc0 += cw[c, q] * k0[0, n + cdof[c, q]]
+                acc1 += cw[c, q] * k1[6, n + cdof[c, q]]
+            kind = EV_MAX_COMPRESSION if r0 > 0.0 else EV_RELOADING
+            if not (c == skip_c and skip_kind == kind):
+                t = _rate_event(r0, acc0, r1, acc1, h, best_t)
+                if t >= 0.0:
+                    best_t, best_c, best_k = t, c, kind
+    for s in range(s_lo.shape[0]):
+        r0 = _drift(s, y0, n, s_lo, s_hi)[1]
+        r1 = _drift(s, y1, n, s_lo, s_hi)[1]
+        kind = EV_DRIFT_MAX if r0 > 0.0 else EV_DRIFT_MIN
+        if s == skip_c and skip_kind == kind:
+            continue
+        hi = s_hi[s]
+        lo = s_lo[s]
+        acc0 = k0[0, n + hi] - (k0[0, n + lo] if lo >= 0 else 0.0)
+        acc1 = k1[6, n + hi] - (k1[6, n + lo] if lo >= 0 else 0.0)
+        t = _rate_event(r0, acc0, r1, acc1, h, best_t)
+        if t >= 0.0:
+            best_t, best_c, best_k = t, s, kind
     if best_c < 0:
         return -1.0, -1, 0
     return best_t, best_c, best_k
@@ -297,9 +377,10 @@ def _find_event(y0, k0, y1, k1, h, n, cl, cr, cgap, committed, skip_c, skip_kind
 
 @njit(cache=True, error_model="numpy", nogil=True, fastmath={"contract"})
 def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
-                    m_diag, mr, r, cl, cr, cgap, ccode, cparams, rtol, atol,
-                    h_max, x, committed, wc, w_start, imp_row, last_f, ws_f, ws_i,
-                    u_out, v_out, acc_out, pen_out, f_out, e_out, imp, cpeak, ccount):
+                    m_diag, mr, r, cdof, cw, cgap, ccode, cparams, s_lo, s_hi, s_code, s_par,
+                    s_zi, rtol, atol, h_max, x, committed, sstate, wc, w_start, imp_row, last_f,
+                    ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, imp,
+                    cpeak, ccount):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``.
 
     Parameters (all arrays are updated in place)
@@ -312,15 +393,23 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
     phi, g0, g1 / phih, g0h, g1h
         Exact propagators over dt and dt/2 (unused unless ``exact_free``).
     bw, k_mat, c_mat, m_diag, mr, r
-        Half-bandwidth of K and C, K [N/m], C [N·s/m], lumped floor masses [kg], M r, r.
-    cl, cr, cgap, ccode, cparams
-        Contacts: left/right DOF, gap [m], law code, law constants.
+        Half-bandwidth of K and C, K of the linear storeys [N/m], C [N·s/m], lumped floor
+        masses [kg], M r, r.
+    cdof, cw, cgap, ccode, cparams
+        Contacts: DOFs and signed weights of the two contact points (n_c, 4), gap [m], law
+        code, law constants.
+    s_lo, s_hi, s_code, s_par, s_zi
+        Yielding storeys: DOF below (−1 ground) and above, storey-law code and constants,
+        index of the storey's ``z`` among the extra states (−1: none). Empty for linear
+        buildings (then ``exact_free`` may be true).
     rtol : float; atol : (2N,)
         RK tolerances. ``h_max`` caps RK steps [s].
-    x : (2N,)
-        State [u, u̇] at grid point k0 (relative to the ground).
+    x : (2N + n_z,)
+        State [u, u̇, z] at grid point k0 (relative to the ground; z of Bouc–Wen storeys).
     committed : (n_c, STATE_SIZE)
         Committed contact states.
+    sstate : (n_s, 2)
+        Committed drift [m] and shear [N] of every yielding storey.
     wc, w_start : (n_c,)
         Cumulative contact work [J], and its value at each open impact's start.
     imp_row : (n_c,) int
@@ -329,26 +418,29 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         Per closed contact: time, force and force rate dF/dt at the start of the current
         step, for locating the peak force inside each step (cubic Hermite).
     ws_f, ws_i
-        Workspace scalars (proposed RK step, cumulative input and viscous energy) and
+        Workspace scalars (proposed RK step, cumulative input, viscous and storey work) and
         counters (mode, impacts, table overflow, RK steps, rejections, events, failure).
-    u_out, v_out, acc_out : (nt, N); pen_out, f_out : (nt, n_c); e_out : (nt, 6); imp : (cap, 8)
-        Outputs.
+    u_out, v_out, acc_out : (nt, N); pen_out, f_out : (nt, n_c); vs_out : (nt, n_s);
+    e_out : (nt, 7); imp : (cap, 8)
+        Outputs (vs_out: shear of every yielding storey).
     cpeak, ccount : (n_c,)
         Peak force [N] and number of impacts of every contact (kept even if the impact
         table overflows).
     """
     n = r.shape[0]
-    m = 2 * n
-    nc = cl.shape[0]
+    m = x.shape[0]
+    nc = cgap.shape[0]
+    ns = s_lo.shape[0]
+    npw = P_CONTACT + nc
     ks = np.zeros((7, m))
-    ps = np.zeros((7, 2 + nc))
+    ps = np.zeros((7, npw))
     ks_b = np.zeros((7, m))
-    ps_b = np.zeros((7, 2 + nc))
+    ps_b = np.zeros((7, npw))
     ytmp = np.zeros(m)
     y1 = np.zeros(m)
     yb = np.zeros(m)
     kx = np.zeros((1, m))
-    px = np.zeros((1, 2 + nc))
+    px = np.zeros((1, npw))
     xm = np.zeros(m)
     x1 = np.zeros(m)
     cap = imp.shape[0]
@@ -382,12 +474,10 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                 x1[i] = (s0 + s1) + (s2 + s3)
             touched = False
             for c in range(nc):
-                a = cl[c]
-                b = cr[c]
-                d0 = x[a] - x[b] - cgap[c]
-                d1 = x1[a] - x1[b] - cgap[c]
-                r0 = x[n + a] - x[n + b]
-                r1 = x1[n + a] - x1[n + b]
+                ds0, r0 = _gap(c, x, n, cdof, cw)
+                ds1, r1 = _gap(c, x1, n, cdof, cw)
+                d0 = ds0 - cgap[c]
+                d1 = ds1 - cgap[c]
                 # cheap bound first: the cubic cannot rise above this
                 if d1 > 0.0 or (max(d0, d1) + 0.25 * dt * (abs(r0) + abs(r1)) > 0.0
                                 and _hermite_root(d0, r0, d1, r1, dt, True) > 0.0):
@@ -436,15 +526,15 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
             # ---------------- adaptive RK with events, landing on t_k + dt
             s = 0.0
             h = min(ws_f[W_H], dt, h_max)
-            _deriv(x, a0, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr, cgap, ccode, cparams,
-                   committed, kx, px, 0)
+            _deriv(x, a0, n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw, cgap, ccode, cparams,
+                   committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, kx, px, 0)
             while s < dt:
                 last = False
                 if s + h >= dt * (1.0 - 1e-12):
                     h = dt - s
                     last = True
                 err = _rk_step(x, kx, px, h, a0, dag, s, n, bw, k_mat, c_mat, m_diag, mr, r, 
-                               cl, cr, cgap, ccode, cparams, committed, ks, ps, ytmp,
+                               cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, ytmp,
                                y1, atol, rtol)
                 ws_i[I_NSTEPS] += 1
                 if err > 1.0 or not np.isfinite(err):
@@ -460,14 +550,15 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                 h_try = h
                 fac_try = min(5.0, max(0.2, 0.9 * err ** -0.2)) if err > 0.0 else 5.0
                 h_acc = h
-                te, ce, kind = _find_event(x, kx, y1, ks, h, n, cl, cr, cgap, committed, -1, 0)
+                te, ce, kind = _find_event(x, kx, y1, ks, h, n, cdof, cw, cgap, committed, s_lo,
+                                           s_hi, -1, 0)
                 ev_c = -1
                 ev_kind = 0
                 while ce >= 0:
                     # locate on real RK steps by the Illinois method, keeping the 'after' side
-                    g_lo = _event_value(kind, ce, x, n, cl, cr, cgap)
-                    g_hi = _event_value(kind, ce, y1, n, cl, cr, cgap)
-                    upward = kind == 1 or kind == 4
+                    g_lo = _event_value(kind, ce, x, n, cdof, cw, cgap, s_lo, s_hi)
+                    g_hi = _event_value(kind, ce, y1, n, cdof, cw, cgap, s_lo, s_hi)
+                    upward = kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
                     lo = 0.0
                     hi = h_acc
                     side_ok = (g_hi > 0.0) if upward else (g_hi <= 0.0)
@@ -477,9 +568,9 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                     if not side_ok:
                         # grazing: both ends on the 'before' side; test the estimate
                         err = _rk_step(x, kx, px, te, a0, dag, s, n, bw, k_mat, c_mat, m_diag, mr,
-                                       r,  cl, cr, cgap, ccode, cparams, committed,
+                                       r,  cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
                                        ks_b, ps_b, ytmp, yb, atol, rtol)
-                        g_te = _event_value(kind, ce, yb, n, cl, cr, cgap)
+                        g_te = _event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
                         if (g_te > 0.0) == upward and g_te != 0.0:
                             hi = te
                             g_hi = g_te
@@ -487,18 +578,20 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                     if not found_hi:
                         break  # the interpolant's touch was not real
                     t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
-                    if kind == 3 or kind == 4:
-                        g_tol = atol[n + cl[ce]]
+                    if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
+                        g_tol = atol[n + s_hi[ce]]
+                    elif kind == EV_MAX_COMPRESSION or kind == EV_RELOADING:
+                        g_tol = atol[n + cdof[ce, 0]]
                     else:
-                        g_tol = atol[cl[ce]]
+                        g_tol = atol[cdof[ce, 0]]
                     side = 0
                     have_after = False
                     for _ in range(60):
                         err = _rk_step(x, kx, px, t_try, a0, dag, s, n, bw, k_mat, c_mat,
-                                       m_diag, mr, r, cl, cr, cgap, ccode, cparams, committed,
+                                       m_diag, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
                                        ks_b, ps_b, ytmp, yb, atol, rtol)
                         ws_i[I_NSTEPS] += 1
-                        g = _event_value(kind, ce, yb, n, cl, cr, cgap)
+                        g = _event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
                         after = (g > 0.0) if upward else (g <= 0.0)
                         if after:
                             hi = t_try
@@ -514,7 +607,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             for q in range(7):
                                 for i in range(m):
                                     ks[q, i] = ks_b[q, i]
-                                for i in range(2 + nc):
+                                for i in range(npw):
                                     ps[q, i] = ps_b[q, i]
                             if abs(g) <= g_tol:
                                 break
@@ -533,8 +626,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                     if not have_after:
                         # the bracket's after end is the full step (or the grazing test)
                         err_after = _rk_step(x, kx, px, hi, a0, dag, s, n, bw, k_mat, c_mat,
-                                             m_diag, mr, r,  cl, cr, cgap, ccode, cparams,
-                                             committed, ks, ps, ytmp, y1, atol, rtol)
+                                             m_diag, mr, r,  cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, ks, ps, ytmp, y1, atol, rtol)
                         ws_i[I_NSTEPS] += 1
                     err = err_after
                     h_acc = hi
@@ -542,29 +634,44 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                     ev_kind = kind
                     last = False
                     # any other event earlier in this shorter step?
-                    te, ce, kind = _find_event(x, kx, y1, ks, h_acc, n, cl, cr, cgap,
-                                               committed, ev_c, ev_kind)
+                    te, ce, kind = _find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap,
+                                               committed, s_lo, s_hi, ev_c, ev_kind)
                 # ---- accept the step [s, s + h_acc]
                 ws_f[W_E_INPUT] += h_acc * (_B1 * ps[0, 0] + _B3 * ps[2, 0] + _B4 * ps[3, 0]
                                             + _B5 * ps[4, 0] + _B6 * ps[5, 0])
                 ws_f[W_E_DAMP] += h_acc * (_B1 * ps[0, 1] + _B3 * ps[2, 1] + _B4 * ps[3, 1]
                                            + _B5 * ps[4, 1] + _B6 * ps[5, 1])
+                if ns > 0:
+                    ws_f[W_E_STOREY] += h_acc * (_B1 * ps[0, 2] + _B3 * ps[2, 2]
+                                                 + _B4 * ps[3, 2] + _B5 * ps[4, 2]
+                                                 + _B6 * ps[5, 2])
                 for c in range(nc):
-                    wc[c] += h_acc * (_B1 * ps[0, 2 + c] + _B3 * ps[2, 2 + c]
-                                      + _B4 * ps[3, 2 + c] + _B5 * ps[4, 2 + c]
-                                      + _B6 * ps[5, 2 + c])
+                    q = P_CONTACT + c
+                    wc[c] += h_acc * (_B1 * ps[0, q] + _B3 * ps[2, q] + _B4 * ps[3, q]
+                                      + _B5 * ps[4, q] + _B6 * ps[5, q])
                 for i in range(m):
                     x[i] = y1[i]
                 s_new = dt if last else s + h_acc
                 t_now = t_k + s_new
+                # commit the yielding storeys (contract step 3 of pounding.hysteresis.base)
+                for q in range(ns):
+                    d, dr = _drift(q, x, n, s_lo, s_hi)
+                    zi = s_zi[q]
+                    sstate[q, V_C] = storey_trial(s_code[q], s_par, q, d, dr,
+                                                  x[2 * n + zi] if zi >= 0 else 0.0,
+                                                  sstate[q, D_C], sstate[q, V_C])[0]
+                    sstate[q, D_C] = d
+                was_event = ev_c >= 0
+                if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN:
+                    ws_i[I_NEVENTS] += 1
+                    ev_c = -1  # a storey, not a contact: the contact loop must not see it
+                    ev_kind = 0
                 # commit contact states at the step end; handle the event
                 state_changed = False
                 for c in range(nc):
-                    a = cl[c]
-                    b = cr[c]
-                    delta = x[a] - x[b] - cgap[c]
-                    rate = x[n + a] - x[n + b]
-                    if c == ev_c and ev_kind == 1:
+                    dsum, rate = _gap(c, x, n, cdof, cw)
+                    delta = dsum - cgap[c]
+                    if c == ev_c and ev_kind == EV_ONSET:
                         # contact onset (contract step 3): commit v0 at the located instant
                         committed[c, V0] = max(rate, V0_MIN)
                         committed[c, SLIP] = 0.0
@@ -599,7 +706,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                         last_f[c, 2] = np.nan
                         ws_i[I_NEVENTS] += 1
                     elif committed[c, V0] > 0.0:
-                        if c == ev_c and ev_kind == 2:
+                        if c == ev_c and ev_kind == EV_SEPARATION:
                             # separation: close the impact's row, open the state
                             row = imp_row[c]
                             if row >= 0:
@@ -620,7 +727,10 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             committed[c, DMAX] = tdmax
                             # force rate at the step end, then the largest force inside the
                             # step from the cubic Hermite of (F, dF/dt) at its two ends
-                            df1 = kd * rate + kr * (ks[6, n + a] - ks[6, n + b])
+                            acc = 0.0
+                            for q in range(4):
+                                acc += cw[c, q] * ks[6, n + cdof[c, q]]
+                            df1 = kd * rate + kr * acc
                             fmax = max(f, _hermite_max(last_f[c, 1], last_f[c, 2], f, df1,
                                                        t_now - last_f[c, 0]))
                             if fmax > cpeak[c]:
@@ -637,16 +747,17 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             if ev_c == c:
                                 ws_i[I_NEVENTS] += 1
                 if state_changed:
-                    _deriv(x, a0 + dag * s_new, n, bw, k_mat, c_mat, m_diag, mr, r, cl, cr,
-                           cgap, ccode, cparams, committed, kx, px, 0)
+                    _deriv(x, a0 + dag * s_new, n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw,
+                           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
+                           sstate, kx, px, 0)
                 else:
                     for i in range(m):
                         kx[0, i] = ks[6, i]
-                    for i in range(2 + nc):
+                    for i in range(npw):
                         px[0, i] = ps[6, i]
                 # next step size (PI-free elementary controller); a step cut short by the
                 # grid does not shrink the proposal, one cut by an event restarts from it
-                if ev_c >= 0:
+                if was_event:
                     ws_f[W_H] = h_try
                 elif last:
                     ws_f[W_H] = max(ws_f[W_H], h_acc * fac_try)
@@ -675,13 +786,17 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                 kv += k_mat[i, j] * x[j]
             ek += 0.5 * m_diag[i] * x[n + i] * x[n + i]
             es += 0.5 * x[i] * kv
+        recov = 0.0
+        for q in range(ns):
+            vs_out[o, q] = sstate[q, V_C]
+            zi = s_zi[q]
+            recov += storey_recoverable(s_code[q], s_par, q, sstate[q, D_C],
+                                        x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])
         wsum = 0.0
         stored = 0.0
         for c in range(nc):
-            a = cl[c]
-            b = cr[c]
-            delta = x[a] - x[b] - cgap[c]
-            rate = x[n + a] - x[n + b]
+            dsum, rate = _gap(c, x, n, cdof, cw)
+            delta = dsum - cgap[c]
             pen_out[o, c] = delta
             f = 0.0
             if committed[c, V0] > 0.0:
@@ -693,7 +808,8 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
             wsum += wc[c]
         e_out[o, E_INPUT] = ws_f[W_E_INPUT]
         e_out[o, E_KINETIC] = ek
-        e_out[o, E_STRAIN] = es
+        e_out[o, E_STRAIN] = es + recov
         e_out[o, E_DAMPING] = ws_f[W_E_DAMP]
         e_out[o, E_CONTACT_WORK] = wsum
         e_out[o, E_CONTACT_STORED] = stored
+        e_out[o, E_HYSTERETIC] = ws_f[W_E_STOREY] - recov

@@ -1,17 +1,25 @@
 """The slow, plain, obviously-correct reference solution (SciPy ``solve_ivp``).
 
 Used by the tests and benchmarks to hold the compiled kernel to account; never by users for
-production runs. It integrates the full first-order system ``[u, u̇, E_in, E_visc, W_c]``
-with ``DOP853`` at tight tolerance, one record interval at a time (the ground acceleration
-is linear on each), and stops at every located event — a gap closing or opening, and the
-penetration rate changing sign inside a contact — to commit the contact state there
-(contract steps 3–4) and restart. Peak forces are found on the dense output of each
-segment and refined with a bounded scalar search.
+production runs. It integrates the full first-order system ``[u, u̇, h, E_in, E_visc,
+W_storey, W_c]`` with ``DOP853`` at tight tolerance, one record interval at a time (the
+ground acceleration is linear on each), and stops at every located event — a gap closing
+or opening, the penetration rate changing sign inside a contact, a storey yielding or
+unloading — to commit the state there (contract steps 3–4) and restart. Peak forces are
+found on the dense output of each segment and refined with a bounded scalar search.
+
+Yielding storeys are written here independently of :mod:`pounding.hysteresis` (which the
+kernel uses): each has one state ``h`` integrated with the motion. For the bilinear storey
+``h`` is the shear itself, in *rate form* — ``V̇ = k ḋ`` while elastic, ``V̇ = b k ḋ`` on the
+yield branch — switching at located events (the shear reaching ``b k d ± (1 − b) F_y``, and
+the drift rate changing sign on the yield branch), instead of the kernel's return mapping.
+For Bouc–Wen ``h = z`` with the evolution law coded afresh.
 """
 
 from __future__ import annotations
 
 import time
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -43,35 +51,68 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     nt = ag.size
     t_grid = np.arange(nt) * step
     sys_ = model.system
-    M, C, K, r = sys_.M, sys_.C, sys_.K, sys_.r
+    M, C, r = sys_.M, sys_.C, sys_.r
+    K = model.linear_stiffness()
     n = r.size
     minv = np.linalg.inv(M)
     minv_k, minv_c, mr = minv @ K, minv @ C, M @ r
     contacts = model.contacts
     nc = len(contacts)
-    cl = np.array([c.dof_left for c in contacts], dtype=int)
-    cr = np.array([c.dof_right for c in contacts], dtype=int)
+    cdof, cw = model.contact_kinematics()
     gap = np.array([c.gap for c in contacts])
     codes = [c.law.code for c in contacts]
     params = [c.law.params() for c in contacts]
     committed = np.zeros((nc, STATE_SIZE))
     scratch = np.zeros(STATE_SIZE)
     phase = np.zeros(nc, dtype=int)  # +1 approaching, −1 restitution (closed contacts)
+    storeys = _storeys(model)
+    ns = len(storeys)
+    yld = np.zeros(ns, dtype=int)  # bilinear: 0 elastic, ±1 on the yield branch
     u_scale = max(min(gap) if nc else 0.0, 1e-3)
     v_scale = max(motion.pgv, 1e-3)
     e_scale = max(float(np.sum(M)) * v_scale**2, 1.0)
+    i_h = 2 * n                 # hysteretic states
+    i_e = 2 * n + ns            # E_in, E_visc, W_storey, W_c...
+    h_scale = [st.fy if st.kind == "bilinear" else 1.0 for st in storeys]
     atol = np.concatenate([np.full(n, 1e-3 * rtol * u_scale), np.full(n, 1e-3 * rtol * v_scale),
-                           np.full(2 + nc, 1e-3 * rtol * e_scale)])
+                           1e-3 * rtol * np.array(h_scale, dtype=float),
+                           np.full(3 + nc, 1e-3 * rtol * e_scale)])
+
+    def kin(y: NDArray[np.float64], c: int) -> tuple[float, float]:
+        return (float(cw[c] @ y[cdof[c]] - gap[c]), float(cw[c] @ y[n + cdof[c]]))
 
     def forces(y: NDArray[np.float64]) -> NDArray[np.float64]:
         f = np.zeros(nc)
         for c in range(nc):
             # between events a contact keeps its committed status (see the kernel)
             if committed[c, V0] > 0.0:
-                d = max(y[cl[c]] - y[cr[c]] - gap[c], 1e-300)
-                f[c] = contact_trial(codes[c], params[c], d, y[n + cl[c]] - y[n + cr[c]],
+                d, rate = kin(y, c)
+                f[c] = contact_trial(codes[c], params[c], max(d, 1e-300), rate,
                                      committed[c], scratch)[0]
         return f
+
+    def drift(y: NDArray[np.float64], s: int) -> tuple[float, float]:
+        st = storeys[s]
+        lo_u = y[st.lower] if st.lower >= 0 else 0.0
+        lo_v = y[n + st.lower] if st.lower >= 0 else 0.0
+        return y[st.upper] - lo_u, y[n + st.upper] - lo_v
+
+    def storey_shears(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Shear of every yielding storey and the rate of its state h."""
+        v = np.zeros(ns)
+        hdot = np.zeros(ns)
+        for s, st in enumerate(storeys):
+            d, dd = drift(y, s)
+            h = y[i_h + s]
+            if st.kind == "bilinear":
+                v[s] = h
+                hdot[s] = (st.b * st.k if yld[s] else st.k) * dd
+            else:
+                v[s] = st.alpha * st.k * d + (1.0 - st.alpha) * st.fy * h
+                # Wen (1976): dy ż = A ḋ − β|ḋ||z|^(n−1) z − γ ḋ|z|^n, A = 1
+                hdot[s] = (dd - st.beta * abs(dd) * abs(h) ** (st.n - 1.0) * h
+                           - st.gamma * dd * abs(h) ** st.n) / (st.fy / st.k)
+        return v, hdot
 
     def rhs_factory(t0: float, a0: float, slope: float):
         def rhs(t: float, y: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -79,39 +120,69 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
             a_g = a0 + slope * (t - t0)
             f = forces(y)
             p = np.zeros(n)
-            np.add.at(p, cl, -f)
-            np.add.at(p, cr, f)
+            for c in range(nc):
+                np.add.at(p, cdof[c], -cw[c] * f[c])
+            vs, hdot = storey_shears(y)
+            p_storey = 0.0
+            for s, st in enumerate(storeys):
+                p[st.upper] -= vs[s]
+                if st.lower >= 0:
+                    p[st.lower] += vs[s]
+                p_storey += vs[s] * drift(y, s)[1]
             acc = -minv_k @ u - minv_c @ v + minv @ p - r * a_g
-            rate = v[cl] - v[cr]
-            return np.concatenate([v, acc, [-(v @ mr) * a_g, v @ (C @ v)], f * rate])
+            rate = np.array([kin(y, c)[1] for c in range(nc)])
+            return np.concatenate([v, acc, hdot, [-(v @ mr) * a_g, v @ (C @ v), p_storey],
+                                   f * rate])
         return rhs
 
     def make_events() -> list:
+        """Terminal events, each tagged (kind, index)."""
         evs = []
         for c in range(nc):
-            if committed[c, V0] == 0.0:
-                def ev(t, y, c=c):
-                    return y[cl[c]] - y[cr[c]] - gap[c]
-                ev.direction = 1.0
-            else:
-                def ev(t, y, c=c):
-                    return y[cl[c]] - y[cr[c]] - gap[c]
-                ev.direction = -1.0
+            def ev(t, y, c=c):
+                return kin(y, c)[0]
+            ev.direction = 1.0 if committed[c, V0] == 0.0 else -1.0
             ev.terminal = True
+            ev.tag = ("gap", c)
             evs.append(ev)
             if committed[c, V0] > 0.0:
                 def evr(t, y, c=c):
-                    return y[n + cl[c]] - y[n + cr[c]]
+                    return kin(y, c)[1]
                 evr.direction = -1.0 if phase[c] > 0 else 1.0
                 evr.terminal = True
+                evr.tag = ("rate", c)
                 evs.append(evr)
+        for s, st in enumerate(storeys):
+            if st.kind == "bilinear" and yld[s] == 0:
+                for sign in (1.0, -1.0):
+                    def evy(t, y, s=s, sign=sign, st=st):
+                        d = drift(y, s)[0]
+                        return sign * (y[i_h + s] - st.b * st.k * d) - (1.0 - st.b) * st.fy
+                    evy.direction = 1.0
+                    evy.terminal = True
+                    evy.tag = ("yield", s, int(sign))
+                    evs.append(evy)
+            elif st.kind == "bilinear":
+                # leaving the yield branch: the drift rate changes sign
+                def evu(t, y, s=s):
+                    return drift(y, s)[1]
+                evu.direction = -1.0 if yld[s] > 0 else 1.0
+                evu.terminal = True
+                evu.tag = ("unload", s)
+                evs.append(evu)
+            # (Bouc–Wen: ż is continuous where ḋ changes sign, only its slope jumps; the
+            # tight-tolerance steps go through it without an event)
         return evs
 
-    y = np.zeros(2 * n + 2 + nc)
+    y = np.zeros(i_e + 3 + nc)
     y[: 2 * n] = initial_state(model, initial_displacement, initial_velocity)
-    out = np.zeros((nt, 2 * n + 2 + nc))
+    if ns and np.any(y[:n] != 0.0):
+        raise ValueError("initial_displacement: the reference starts yielding storeys at rest "
+                         "only")
+    out = np.zeros((nt, y.size))
     out[0] = y
     f_out = np.zeros((nt, nc))
+    vs_out = np.zeros((nt, ns))
     stored = np.zeros(nt)
     impacts: list[list[float]] = []
     open_row = [-1] * nc
@@ -140,8 +211,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 yk = sol.sol(t_grid[k])
                 out[k] = yk
                 f_out[k] = forces(yk)
-                stored[k] = sum(contact_stored_energy(codes[c], params[c],
-                                                      yk[cl[c]] - yk[cr[c]] - gap[c], committed[c])
+                vs_out[k] = storey_shears(yk)[0]
+                stored[k] = sum(contact_stored_energy(codes[c], params[c], kin(yk, c)[0],
+                                                      committed[c])
                                 for c in range(nc) if committed[c, V0] > 0.0)
             # peak force over the segment for every closed contact
             for c in range(nc):
@@ -168,21 +240,14 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
             _, kev = min(fired)
             y = sol.y_events[kev][0].copy()
             events += 1
-            # map event index back to (contact, kind)
-            idx = 0
-            for c in range(nc):
-                if idx == kev:
-                    kind = "gap"
-                    break
-                idx += 1
-                if committed[c, V0] > 0.0:
-                    if idx == kev:
-                        kind = "rate"
-                        break
-                    idx += 1
-            d = y[cl[c]] - y[cr[c]] - gap[c]
-            rate = y[n + cl[c]] - y[n + cr[c]]
-            if kind == "gap" and committed[c, V0] == 0.0:
+            tag = evs[kev].tag
+            if tag[0] == "yield":
+                yld[tag[1]] = tag[2]
+            elif tag[0] == "unload":
+                yld[tag[1]] = 0
+            elif tag[0] == "gap" and committed[tag[1], V0] == 0.0:
+                c = tag[1]
+                d, rate = kin(y, c)
                 committed[c] = 0.0
                 committed[c, V0] = max(rate, V0_MIN)
                 phase[c] = 1
@@ -190,18 +255,21 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                                    scratch)[0]
                 impacts.append([c, t, np.nan, committed[c, V0], f0, 0.0, np.nan, np.nan])
                 open_row[c] = len(impacts) - 1
-                w_start[c] = y[2 * n + 2 + c]
-            elif kind == "gap":
+                w_start[c] = y[i_e + 3 + c]
+            elif tag[0] == "gap":
+                c = tag[1]
+                d, rate = kin(y, c)
                 row = impacts[open_row[c]]
                 row[2] = t
                 row[6] = max(-rate, 0.0) / committed[c, V0]
-                row[7] = y[2 * n + 2 + c] - w_start[c]
+                row[7] = y[i_e + 3 + c] - w_start[c]
                 open_row[c] = -1
                 committed[c] = 0.0
                 phase[c] = 0
             else:
-                contact_trial(codes[c], params[c], d, rate,
-                              committed[c], scratch)
+                c = tag[1]
+                d, rate = kin(y, c)
+                contact_trial(codes[c], params[c], d, rate, committed[c], scratch)
                 committed[c] = scratch
                 impacts[open_row[c]][5] = max(impacts[open_row[c]][5], d)
                 phase[c] = -phase[c]
@@ -210,9 +278,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
         # commit states of closed contacts at the interval end (contract step 4)
         for c in range(nc):
             if committed[c, V0] > 0.0:
-                d = y[cl[c]] - y[cr[c]] - gap[c]
-                contact_trial(codes[c], params[c], d, y[n + cl[c]] - y[n + cr[c]],
-                              committed[c], scratch)
+                d, rate = kin(y, c)
+                contact_trial(codes[c], params[c], d, rate, committed[c], scratch)
                 committed[c] = scratch
                 impacts[open_row[c]][5] = max(impacts[open_row[c]][5], d)
     wall = time.perf_counter() - start
@@ -221,19 +288,72 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     acc = np.empty((nt, n))
     for k in range(nt):
         p = np.zeros(n)
-        np.add.at(p, cl, -f_out[k])
-        np.add.at(p, cr, f_out[k])
+        for c in range(nc):
+            np.add.at(p, cdof[c], -cw[c] * f_out[k, c])
+        for s, st in enumerate(storeys):
+            p[st.upper] -= vs_out[k, s]
+            if st.lower >= 0:
+                p[st.lower] += vs_out[k, s]
         acc[k] = -minv_k @ u_out[k] - minv_c @ v_out[k] + minv @ p
+    recov = np.zeros(nt)
+    for s, st in enumerate(storeys):
+        d = u_out[:, st.upper] - (u_out[:, st.lower] if st.lower >= 0 else 0.0)
+        if st.kind == "bilinear":
+            recov += vs_out[:, s] ** 2 / (2.0 * st.k)
+        else:
+            z = out[:, i_h + s]
+            recov += 0.5 * st.alpha * st.k * d**2 + 0.5 * (1 - st.alpha) * st.fy**2 / st.k * z**2
     energy = np.zeros((nt, ENERGY_COLUMNS))
-    energy[:, 0] = out[:, 2 * n]
+    energy[:, 0] = out[:, i_e]
     energy[:, 1] = 0.5 * np.einsum("ki,ij,kj->k", v_out, M, v_out)
-    energy[:, 2] = 0.5 * np.einsum("ki,ij,kj->k", u_out, K, u_out)
-    energy[:, 3] = out[:, 2 * n + 1]
-    energy[:, 4] = out[:, 2 * n + 2:].sum(axis=1)
+    energy[:, 2] = 0.5 * np.einsum("ki,ij,kj->k", u_out, K, u_out) + recov
+    energy[:, 3] = out[:, i_e + 1]
+    energy[:, 4] = out[:, i_e + 3:].sum(axis=1)
     energy[:, 5] = stored
-    pen = u_out[:, cl] - u_out[:, cr] - gap
+    energy[:, 6] = out[:, i_e + 2] - recov
+    pen = model.contact_penetration(u_out)
     imp = np.array(impacts, dtype=float).reshape(-1, IMP_COLUMNS)
     stats = SolverStats(solver="scipy-reference", rtol=rtol, events=events, wall_time=wall)
     return Result(model=model, motion=motion, dt=step, ground=ag, displacement=u_out,
                   velocity=v_out, abs_acceleration=acc, penetration=pen, contact_force=f_out,
-                  energy=energy, impact_array=imp, stats=stats)
+                  energy=energy, impact_array=imp, stats=stats, yielding_shear=vs_out,
+                  final_z=np.array([out[-1, i_h + s] for s, st in enumerate(storeys)
+                                    if st.kind != "bilinear"]))
+
+
+class _Storey(NamedTuple):
+    kind: str
+    lower: int
+    upper: int
+    k: float
+    fy: float
+    b: float = 0.0
+    alpha: float = 0.0
+    n: float = 1.0
+    beta: float = 0.5
+    gamma: float = 0.5
+
+
+def _storeys(model: PoundingModel) -> list[_Storey]:
+    """The yielding storeys, read from the building definitions (not the kernel arrays)."""
+    from pounding.hysteresis import Bilinear, BoucWen
+
+    out = []
+    offsets = model.system.offsets
+    for p, b in enumerate(model.buildings):
+        law = b.storey_law
+        if law is None:
+            continue
+        fy = law.yield_forces(b.stiffnesses)
+        for j in range(b.n):
+            lo = int(offsets[p] + j - 1) if j > 0 else -1
+            hi = int(offsets[p] + j)
+            k = float(b.stiffnesses[j])
+            if isinstance(law, Bilinear):
+                out.append(_Storey("bilinear", lo, hi, k, float(fy[j]), b=law.hardening))
+            elif isinstance(law, BoucWen):
+                out.append(_Storey("bouc-wen", lo, hi, k, float(fy[j]), alpha=law.alpha,
+                                   n=law.n, beta=law.beta, gamma=law.gamma))
+            else:
+                raise ValueError(f"reference: no reference for storey law {law!r}")
+    return out

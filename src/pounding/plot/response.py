@@ -182,8 +182,9 @@ def plot_hysteresis(result: Result) -> Figure:
 
 
 def plot_energy(result: Result) -> Figure:
-    """Energy balance [J]: stacked kinetic, strain, structural damping, contact-dissipated and
-    contact-stored energy against the input energy; below, the closure error."""
+    """Energy balance [J]: stacked kinetic, strain, structural damping, hysteretic (yielding
+    storeys), contact-dissipated and contact-stored energy against the input energy; below,
+    the closure error."""
     from pounding.result import ENERGY_NAMES
 
     e = result.energy
@@ -196,12 +197,14 @@ def plot_energy(result: Result) -> Figure:
         ("dissipated in contacts", col["contact_work"] - col["contact_stored"]),
         ("stored in closed contacts", col["contact_stored"]),
     ]
+    if result.model.is_inelastic:
+        terms.insert(3, ("hysteretic (storeys yielding)", col["hysteretic"]))
     total = sum(v for _, v in terms)
     closure = col["input"] - total
     fig = Figure(figsize=(10, 6))
     ax, ax_r = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 1]})
     ax.stackplot(t, *[v for _, v in terms], labels=[n for n, _ in terms], alpha=0.8,
-                 colors=[matplotlib.colormaps["tab10"](i) for i in (0, 1, 2, 3, 4)])
+                 colors=[matplotlib.colormaps["tab10"](i) for i in range(len(terms))])
     ax.plot(t, col["input"], "k", lw=1.2, label="input")
     ax.set_ylabel("energy [J]")
     ax.legend(fontsize=8, loc="upper left")

@@ -6,7 +6,9 @@ Floor ``j`` (``j = 1 … n``; floor 1 is the first suspended floor above the gro
 ``n`` the roof) carries the lumped mass ``m_j`` [kg] and moves laterally by ``u_j`` [m]
 relative to the ground. Storey ``j`` joins floor ``j − 1`` (the ground for ``j = 1``) to
 floor ``j``; it has lateral stiffness ``k_j`` [N/m] and height ``h_j`` [m]. The storey shear
-is ``V_j = k_j (u_j − u_{j−1})`` with ``u_0 = 0``. In Python (0-based) floor ``j`` is index
+is ``V_j = k_j (u_j − u_{j−1})`` with ``u_0 = 0`` — or, for a building with a
+:attr:`ShearBuilding.storey_law`, the shear of that yielding law
+(:mod:`pounding.hysteresis`), whose elastic stiffness is ``k_j``. In Python (0-based) floor ``j`` is index
 ``j − 1`` of every array. A single-degree-of-freedom (SDOF) system is the one-storey case.
 
 Relative to the ground, the equation of motion is (Chopra §9.4.1)
@@ -29,6 +31,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.hysteresis.base import StoreyLaw
 from pounding.structure.damping import DampingModel, ModalDamping, RayleighDamping
 from pounding.structure.modal import ModalResult, modes
 from pounding.validation import positive
@@ -101,6 +104,11 @@ class ShearBuilding:
         and 2 (the usual choice in pounding studies).
     name : str
         A label for tables and plots.
+    storey_law : StoreyLaw, optional
+        How the storeys yield (:class:`pounding.hysteresis.Bilinear`,
+        :class:`pounding.hysteresis.BoucWen`); ``None`` (default) keeps them linear. Its
+        elastic stiffness is ``stiffnesses``, which also sets the periods and the damping
+        matrix (initial-stiffness Rayleigh damping).
 
     Raises
     ------
@@ -126,6 +134,7 @@ class ShearBuilding:
     heights: NDArray[np.float64]
     damping: DampingModel = field(default_factory=RayleighDamping)
     name: str = ""
+    storey_law: StoreyLaw | None = None
 
     def __post_init__(self) -> None:
         m = _floor_vector("masses", self.masses)
@@ -140,6 +149,11 @@ class ShearBuilding:
                              f"ModalDamping (got {self.damping!r})")
         if not isinstance(self.name, str):
             raise ValueError(f"name must be a string (got {self.name!r})")
+        if self.storey_law is not None and not isinstance(self.storey_law, StoreyLaw):
+            raise ValueError(f"storey_law must be a StoreyLaw such as Bilinear or BoucWen, or "
+                             f"None for linear storeys (got {self.storey_law!r})")
+        if self.storey_law is not None:
+            self.storey_law.yield_forces(k)  # one yield value, or one per storey
         object.__setattr__(self, "masses", m)
         object.__setattr__(self, "stiffnesses", k)
         object.__setattr__(self, "heights", h)
@@ -239,6 +253,28 @@ class ShearBuilding:
         s = (self.fundamental_period / T) ** 2
         return dataclasses.replace(self, stiffnesses=self.stiffnesses * s)
 
+    def with_storey_law(self, law: StoreyLaw | None) -> ShearBuilding:
+        """A copy whose storeys follow ``law`` (None: linear), e.g.
+        ``b.with_storey_law(Bilinear(yield_drift=0.01, hardening=0.05))``."""
+        return dataclasses.replace(self, storey_law=law)
+
+    @property
+    def is_inelastic(self) -> bool:
+        """True if the storeys follow a yielding :attr:`storey_law`."""
+        return self.storey_law is not None
+
+    def storey_law_params(self) -> NDArray[np.float64]:
+        """Constants of every storey's law, shape (n, P) (see
+        :mod:`pounding.hysteresis.base`); raises if the storeys are linear."""
+        if self.storey_law is None:
+            raise ValueError(f"building {self.name!r}: its storeys are linear (no storey_law)")
+        return self.storey_law.params(self.stiffnesses)
+
+    @property
+    def yield_forces(self) -> NDArray[np.float64] | None:
+        """Storey yield shears [N], or None for linear storeys."""
+        return None if self.storey_law is None else self.storey_law.yield_forces(self.stiffnesses)
+
     # ----------------------------------------------------------------- geometry
     @property
     def n(self) -> int:
@@ -297,6 +333,7 @@ class ShearBuilding:
         return (np.array_equal(self.masses, other.masses)
                 and np.array_equal(self.stiffnesses, other.stiffnesses)
                 and np.array_equal(self.heights, other.heights)
-                and self.damping == other.damping and self.name == other.name)
+                and self.damping == other.damping and self.name == other.name
+                and self.storey_law == other.storey_law)
 
     __hash__ = None  # type: ignore[assignment]

@@ -504,8 +504,9 @@ class GapStudy:
         """Peak displacements [m] of the left and right building at every level from
         ``spectrum`` (:func:`spectral_displacements`), (n_levels,) each."""
         per_b = [spectral_displacements(b, spectrum) for b in self.model.buildings]
-        u1 = np.array([per_b[c.pair][c.left_floor] for c in self.model.contacts])
-        u2 = np.array([per_b[c.pair + 1][c.right_floor] for c in self.model.contacts])
+        # fundamental-mode peaks: linear between the floors of a struck storey, like the mode
+        u1 = np.array([c.left.of(np.asarray(per_b[c.pair])) for c in self.model.contacts])
+        u2 = np.array([c.right.of(np.asarray(per_b[c.pair + 1])) for c in self.model.contacts])
         return u1, u2
 
     def rules_from_spectrum(self, spectrum: DesignSpectrum) -> dict[str, FloatArray]:
@@ -588,7 +589,8 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
         raise ValueError("model: a gap study needs at least two buildings (got "
                          f"{len(model.buildings)})")
     if not model.contacts:
-        raise ValueError("model: no shared floor level between neighbours, so no gap to study")
+        raise ValueError("model: no contact level between neighbours (no shared floor level "
+                         "and no floor facing a column), so no gap to study")
     ms = [motions] if isinstance(motions, GroundMotion) else list(motions)
     if not ms:
         raise ValueError("motions: give at least one ground motion")
@@ -611,8 +613,9 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
         durs[i] = float(runs[0].time[-1])
         for c in cs:
             left, right = runs[c.pair], runs[c.pair + 1]
-            ul, vl = left.displacement[:, c.left_floor], left.velocity[:, c.left_floor]
-            ur, vr = right.displacement[:, c.right_floor], right.velocity[:, c.right_floor]
+            # contact points: a floor, or a column point between two floors (interpolated)
+            ul, vl = c.left.of(left.displacement), c.left.of(left.velocity)
+            ur, vr = c.right.of(right.displacement), c.right.of(right.velocity)
             d, dd = ul - ur, vl - vr
             top, when = hermite_max(d, dd, step)
             low, _ = hermite_max(-d, -dd, step)
