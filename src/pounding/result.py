@@ -187,8 +187,7 @@ class Result:
                 if law.has_internal_variable:
                     z = float(z_end[zk]) if zk < z_end.size else 0.0
                     zk += 1
-                direction = -np.sign(v_end[col])
-                out[col] = d_end[col] - v_end[col] / law.unloading_stiffness(prm[j], z, direction)
+                out[col] = d_end[col] - v_end[col] / law.unloading_stiffness(prm[j], z)
         return out
 
     @cached_property
@@ -222,6 +221,21 @@ class Result:
         cs = self.column_shear
         return np.array([np.nanmax(cs[:, j]) if np.isfinite(cs[:, j]).any() else np.nan
                          for j in range(cs.shape[1])])
+
+    @cached_property
+    def column_shear_ratio(self) -> NDArray[np.float64]:
+        """:attr:`peak_column_shear` over the struck storey's own peak storey shear [-]
+        (n_c,): how much the impacts raise the shear the column must carry (1: not at all;
+        NaN: floor to floor)."""
+        out = np.full(len(self.model.contacts), np.nan)
+        peak_v = peak_abs(self.storey_shear)
+        offsets = self.model.system.offsets
+        for c in self.model.contacts:
+            pt = c.struck
+            if pt is not None:
+                v = peak_v[offsets[pt.building] + pt.upper]
+                out[c.index] = self.peak_column_shear[c.index] / v if v > 0 else np.inf
+        return out
 
     # ----------------------------------------------------------------- impacts and peaks
     @cached_property
@@ -378,6 +392,9 @@ class Result:
         if struck:
             pcs = self.peak_column_shear
             out["peak_column_shear_N"] = {c.label: float(pcs[c.index]) for c in struck}
+            ratio = self.column_shear_ratio
+            out["column_shear_over_storey_shear"] = {c.label: float(ratio[c.index])
+                                                     for c in struck}
         return out
 
     def save(self, folder: str | os.PathLike[str]) -> dict[str, Path]:

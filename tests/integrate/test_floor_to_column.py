@@ -127,6 +127,10 @@ def test_column_shear_demand(elc):
     ds = res.to_dataset()
     assert ds["column_shear"].attrs["units"] == "N"
     assert set(res.summary()["peak_column_shear_N"]) == {c.label for c in m.contacts}
+    # a struck column carries at least its storey's shear; more where it was hit hard
+    ratio = res.column_shear_ratio
+    assert np.all(ratio >= 1.0 - 1e-12)
+    assert ratio[int(np.argmax(res.peak_contact_force))] > 1.0
 
 
 def test_level_tolerance_is_validated():

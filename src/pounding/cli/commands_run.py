@@ -137,7 +137,8 @@ def _print_summary(out: Any) -> None:
         ct = Table(title="Contacts")
         columns = any(c.struck is not None for c in model.contacts)
         for col in ("contact", "elevation [m]", "gap [m]", "impacts", "peak force [N]",
-                    "dissipated [J]") + (("peak column shear [N]",) if columns else ()):
+                    "dissipated [J]") + (("peak column shear [N]", "÷ storey shear")
+                                         if columns else ()):
             ct.add_column(_h(col), justify="left" if col == "contact" else "right")
         imp = r.impacts
         pcf = r.peak_contact_force
@@ -148,8 +149,9 @@ def _print_summary(out: Any) -> None:
                      f"{pcf[c.index]:.4g}" if len(rows) else "-",
                      f"{np.nansum(rows['energy_dissipated']):.4g}" if len(rows) else "-"]
             if pcs is not None:
-                cells.append(f"{pcs[c.index]:.4g}" if c.struck is not None and len(rows)
-                             else "-")
+                hit = c.struck is not None and len(rows) > 0
+                cells += [f"{pcs[c.index]:.4g}" if hit else "-",
+                          f"{r.column_shear_ratio[c.index]:.2f}" if hit else "-"]
             ct.add_row(*cells)
         console.print(ct)
 

@@ -27,10 +27,13 @@ Contract
    dimensionless variable ``z`` that the caller integrates *with the motion*, as one more
    first-order equation ``ż = trial(...)[2]``; laws without one return ``ż = 0``.
 5. **Energy.** :func:`pounding.hysteresis.dispatch.storey_recoverable` is the elastic
-   energy the storey would give back if unloaded to zero shear along its elastic
-   (unloading) branch; the work ``∫V ḋ dt`` done on the storey minus it is the *hysteretic*
-   energy (dissipated by yielding, plus the energy locked in the hardening branch, as is
-   customary in seismic energy balances, e.g. Uang & Bertero 1990).
+   (recoverable) energy stored in the storey: for the bilinear law ``V²/(2k)``, what it gives
+   back when unloaded to zero shear along its elastic branch; for Bouc–Wen the energy of its
+   two springs, ``½ α k d² + ½ (1 − α) F_y d_y z²`` (the usual convention: for β = γ it
+   differs from the unloading-branch energy by terms of order ``α``). The work ``∫V ḋ dt``
+   done on the storey minus it is the *hysteretic* energy (dissipated by yielding, plus the
+   energy locked in the hardening branch, as is customary in seismic energy balances, e.g.
+   Uang & Bertero 1990).
 """
 
 from __future__ import annotations
@@ -132,10 +135,10 @@ class StoreyLaw(ABC):
         """True if the law carries a ``z`` integrated with the motion (contract step 4)."""
         return False
 
-    def unloading_stiffness(self, params: NDArray[np.float64], z: float,
-                            direction: float) -> float:
-        """Tangent stiffness [N/m] when the storey unloads (moves by ``direction`` against
-        its shear), used for the residual drift. Elastic ``k`` unless overridden."""
+    def unloading_stiffness(self, params: NDArray[np.float64], z: float) -> float:
+        """Tangent stiffness [N/m] when the storey unloads (its drift moving against its
+        shear) from internal variable ``z``, used for the residual drift. Elastic ``k``
+        unless overridden."""
         return float(params[P_K])
 
     def describe(self) -> str:

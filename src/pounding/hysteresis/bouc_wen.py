@@ -106,7 +106,7 @@ class BoucWen(StoreyLaw):
         """Limit of ``z`` on monotonic loading, ``(1/(β + γ))^(1/n)``."""
         return (1.0 / (self.beta + self.gamma)) ** (1.0 / self.n)
 
-    def unloading_stiffness(self, params, z, direction):  # noqa: D102 (see base)
+    def unloading_stiffness(self, params, z):  # noqa: D102 (see base)
         k = float(params[P_K])
         return k * (self.alpha + (1.0 - self.alpha)
                     * (1.0 - abs(z) ** self.n * (self.gamma - self.beta)))

@@ -18,7 +18,7 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from pounding.result import Result
+from pounding.result import Result, peak_abs
 
 __all__ = ["plot_contact_forces", "plot_displacements", "plot_energy", "plot_hysteresis",
            "contact_floors"]
@@ -221,6 +221,52 @@ def plot_energy(result: Result) -> Figure:
     return fig
 
 
+MAX_STOREY_PANELS = 3
+"""Storeys drawn per building in the storey figure (those with the largest peak drift)."""
+
+
+def plot_storey_hysteresis(result: Result) -> Figure:
+    """Storey shear [N] against storey drift [m]: the hysteresis of the storeys.
+
+    One row per building, its :data:`MAX_STOREY_PANELS` storeys of largest peak drift; for a
+    yielding storey the yield shears ``±F_y`` are dashed and the title gives the ductility
+    demand and the residual drift. A linear storey draws a straight line of slope ``k``.
+    """
+    model = result.model
+    nb = len(model.buildings)
+    ncol = min(MAX_STOREY_PANELS, max(b.n for b in model.buildings))
+    fig = Figure(figsize=(3.6 * ncol + 0.6, 2.9 * nb + 0.8))
+    axes = fig.subplots(nb, ncol, squeeze=False)
+    drift, shear = result.drift, result.storey_shear
+    peak = peak_abs(drift)
+    for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
+        order = sorted(range(bl.n), key=lambda j: -peak[off + j])[:ncol]
+        fy = bl.yield_forces
+        for ax, j in zip(axes[b], sorted(order)):
+            col = off + j
+            ax.plot(drift[:, col], shear[:, col], lw=0.7, color="tab:blue")
+            title = f"B{b + 1} storey {j + 1}: peak drift {peak[col]:.3g} m"
+            if fy is not None:
+                for sgn in (1.0, -1.0):
+                    ax.axhline(sgn * fy[j], color="0.5", lw=0.6, ls="--")
+                title += (f"\nductility {result.ductility[col]:.2f}, residual "
+                          f"{result.residual_drift[col]:+.3g} m")
+            ax.set_title(title, fontsize=8)
+            ax.set_xlabel("storey drift [m]")
+            ax.set_ylabel("storey shear [N]")
+            ax.axhline(0.0, color="0.7", lw=0.4)
+            ax.axvline(0.0, color="0.7", lw=0.4)
+            ax.grid(True, alpha=0.3)
+            ax.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
+        for ax in axes[b][len(order):]:
+            ax.set_axis_off()
+    fig.suptitle(f"{model.name}: storey shear against drift"
+                 + (" (dashed: yield shear)" if model.is_inelastic else " (linear storeys)"),
+                 fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
 class RunFigure(NamedTuple):
     """One of the figures of a run folder."""
 
@@ -236,6 +282,8 @@ RUN_FIGURES: dict[str, RunFigure] = {
     "hysteresis_figure": RunFigure("hysteresis.png",
                                    "Contact hysteresis (force against penetration)",
                                    plot_hysteresis),
+    "storey_figure": RunFigure("storeys.png", "Storey shear against drift (hysteresis)",
+                               plot_storey_hysteresis),
     "energy_figure": RunFigure("energy.png", "Energy balance", plot_energy),
 }
 """The figures `pounding run` writes and `pounding report` embeds, in page order."""
