@@ -490,9 +490,14 @@ def _response_table(r: _Run) -> str:
            if "absolute_acceleration" in ds else np.full(len(labels), np.nan))
     elev = (np.asarray(ds["floor_elevation"].values, dtype=float)
             if "floor_elevation" in ds.coords else np.full(len(labels), np.nan))
-    t = _Table(("building", "storeys", "peak roof displacement [m]", "peak storey drift [m]",
-                "at storey", "peak drift ratio [%]", "peak absolute floor acceleration [m/s²]"),
-               caption="Peak response of each building (absolute values over the run)")
+    inelastic = "ductility" in ds
+    cols = ("building", "storeys", "peak roof displacement [m]", "peak storey drift [m]",
+            "at storey", "peak drift ratio [%]", "peak absolute floor acceleration [m/s²]")
+    if inelastic:
+        cols += ("peak storey ductility [-]", "largest residual drift [m]")
+    t = _Table(cols, caption="Peak response of each building (absolute values over the run)"
+               + ("; ductility = peak drift / yield drift (NaN: linear storeys), residual "
+                  "drift after elastic unloading" if inelastic else ""))
     groups: dict[int, list[int]] = {}
     for i, lb in enumerate(labels):
         groups.setdefault(_building_of(lb), []).append(i)
@@ -505,8 +510,14 @@ def _response_table(r: _Run) -> str:
         name = ""
         if r.built is not None and b < len(r.built.model.buildings):
             name = r.built.model.buildings[b].name
-        t.add(f"B{b + 1}" + (f" ({name})" if name else ""), len(idx), float(disp[idx[-1]]),
-              float(d[j]), j + 1, ratio, float(acc[idx].max()))
+        row = [f"B{b + 1}" + (f" ({name})" if name else ""), len(idx), float(disp[idx[-1]]),
+               float(d[j]), j + 1, ratio, float(acc[idx].max())]
+        if inelastic:
+            mu = np.asarray(ds["ductility"].values, dtype=float)[idx]
+            res = np.asarray(ds["residual_drift"].values, dtype=float)[idx]
+            row += [float(np.nanmax(mu)) if np.isfinite(mu).any() else float("nan"),
+                    float(res[int(np.argmax(np.abs(res)))])]
+        t.add(*row)
     return t.html()
 
 

@@ -97,7 +97,7 @@ def _drift(s, y, n, s_lo, s_hi):
     return y[hi], y[n + hi]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract"})
+@njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
 def _deriv(y, ag, n, bw, k_mat, c_mat, m_diag, mr, r, cdof, cw, cgap, ccode, cparams,
            committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
