@@ -193,3 +193,20 @@ def test_two_dask_runs_bit_identical(tmp_path: Path) -> None:
     # a finished sweep started again runs nothing and rewrites the same table
     rc = run_sweep(a)
     assert rc.n_run == 0 and pq.read_table(rc.results).equals(pq.read_table(ra.results))
+
+
+def test_sweep_over_yield_strength_reports_ductility(tmp_path: Path) -> None:
+    """Issue 5 in a parameter study: weaker storeys yield more, and the table says so."""
+    base = ROOT / "examples" / "inelastic_5_storey.toml"
+    p = tmp_path / "sweep.toml"
+    p.write_text(f'base = "{base}"\nname = "y"\nout = "out"\n[grid]\n'
+                 '"building.0.storey_law.yield_drift_ratio" = [0.003, 0.006, 0.5]\n'
+                 '"record.duration" = [6.0]\n', encoding="utf-8")
+    res = run_sweep(load_sweep(p), scheduler="synchronous")
+    df = load_results(res.results)
+    assert (df["status"] == "ok").all()
+    assert (df["energy_balance_error"] < 1e-6).all()
+    mu = df["max_ductility"].to_numpy()
+    assert mu[0] > mu[1] > 1.0                        # building 1 weaker: more demand
+    assert df["hysteretic_energy_J"].iloc[0] > df["hysteretic_energy_J"].iloc[2] > 0.0
+    assert df["max_column_shear_ratio"].isna().all()  # floors line up: no column contact
