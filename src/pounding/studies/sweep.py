@@ -81,8 +81,8 @@ energy dissipated in the contacts and put in by the ground at the end, relative
 energy-balance error, largest storey drift / storey height over all storeys, PGA of the
 record as applied, whether the impact table overflowed; with yielding storeys the
 hysteretic energy at the end, the largest storey ductility demand and the largest
-|residual drift| (NaN, NaN and 0 for linear storeys); with floor-to-column contacts the
-largest struck-column shear over its storey's peak shear (NaN without)."""
+|residual drift| (null, null and 0 for linear storeys); with floor-to-column contacts the
+largest struck-column shear over its storey's peak shear (null without)."""
 
 FLOOR_MEASURES: tuple[str, ...] = ("peak_displacement_m", "peak_drift_m", "peak_abs_accel_m_s2")
 """Per-floor measures, one column per floor: ``<measure>_B1F1``, ``<measure>_B1F2``, …
@@ -475,13 +475,13 @@ def _measures(result: Any) -> dict[str, Any]:
         "peak_drift_ratio": float(np.max(drift / heights)),
         "record_pga_g": float(result.motion.pga_g),
         "impact_overflow": bool(result.stats.impact_overflow),
-        "hysteretic_energy_J": float(e[-1, 6]) if result.model.is_inelastic else float("nan"),
+        # not applicable → null (not NaN: a null compares equal, so tables stay comparable)
+        "hysteretic_energy_J": float(e[-1, 6]) if result.model.is_inelastic else None,
         "max_ductility": (float(np.nanmax(result.ductility)) if result.model.is_inelastic
-                          else float("nan")),
+                          else None),
         "max_residual_drift_m": float(np.max(np.abs(result.residual_drift))),
         "max_column_shear_ratio": (float(np.nanmax(result.column_shear_ratio))
-                                   if np.isfinite(result.column_shear_ratio).any()
-                                   else float("nan")),
+                                   if np.isfinite(result.column_shear_ratio).any() else None),
     }
     floor = {
         "peak_displacement_m": result.peak_displacement,
