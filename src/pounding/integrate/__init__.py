@@ -31,7 +31,7 @@ from pounding.integrate.kernel import (
     integrate_chunk,
 )
 from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
-from pounding.integrate.propagator import Propagator, propagator
+from pounding.integrate.propagator import FreeStep, free_step
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
 from pounding.validation import positive
@@ -203,10 +203,10 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
                          "yielding storeys (use 'auto' or 'rk')")
     exact = choose_free_stepping(free_stepping, n, bw) and ns == 0
     if exact:
-        full = propagator(M, C, K, r, step)
-        half = propagator(M, C, K, r, 0.5 * step)
+        fs = free_step(M, C, K, r, step)
     else:
-        full = half = Propagator(np.zeros((2 * n, 2 * n)), np.zeros(2 * n), np.zeros(2 * n))
+        fs = FreeStep(np.array([0, n], dtype=np.int64), np.zeros((2 * n, 4 * n + 4)),
+                      np.zeros(2 * n), np.zeros(2 * n), np.zeros((2, 3)))
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
     nc = cgap.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
@@ -253,8 +253,8 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         for s in range(ns))
 
     chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
-    args = (step, ag, exact, full.phi, full.gamma0, full.gamma1, half.phi, half.gamma0,
-            half.gamma1, bw, np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
+    args = (step, ag, exact, fs.blk, fs.ops, fs.gamma0, fs.gamma1, fs.aa, bw,
+            np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
             np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cdof, cw, cgap,
             ccode, np.ascontiguousarray(cparams), s_lo, s_hi, s_code,
             np.ascontiguousarray(s_par), s_zi, rtol, atol, h_max, x, committed, sstate, wc,

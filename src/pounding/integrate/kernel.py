@@ -4,8 +4,11 @@ Two regimes, one kernel:
 
 1. **All gaps open.** The structure is linear and the ground acceleration is linear between
    grid points, so each grid step is taken with the exact propagator of
-   :mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``). Input and
-   viscous energies over the step use Simpson's rule with the exact mid-step state.
+   :mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``), block by
+   block (the buildings are uncoupled while the gaps are open). Input and viscous energies
+   over the step are exact quadratic forms in ``(x, a_k, a_{k+1})`` (Van Loan integrals,
+   :func:`pounding.integrate.propagator.step_energy_forms`), evaluated in the same sweep
+   over the operator's columns as Φ x.
    After each step every gap is checked for closing at the step end *and inside it* (an
    interior maximum of the cubic Hermite interpolant of δ), so no touch is missed.
 2. **Any contact closed (or about to close).** The step is re-taken with an adaptive
@@ -376,7 +379,7 @@ def _find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, committed, s_lo, s_hi, ski
 
 
 @njit(cache=True, error_model="numpy", nogil=True, fastmath={"contract"})
-def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw, k_mat, c_mat,
+def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_mat, c_mat,
                     m_diag, mr, r, cdof, cw, cgap, ccode, cparams, s_lo, s_hi, s_code, s_par,
                     s_zi, rtol, atol, h_max, x, committed, sstate, wc, w_start, imp_row, last_f,
                     ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, imp,
@@ -390,8 +393,9 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
     exact_free : bool
         Take steps without contact with the exact propagator (cost O(N²) a step, cheapest
         for small models); otherwise with the adaptive RK (O(N·bw) a stage).
-    phi, g0, g1 / phih, g0h, g1h
-        Exact propagators over dt and dt/2 (unused unless ``exact_free``).
+    blk, fops, g0, g1, faa
+        The exact step over dt (:class:`pounding.integrate.propagator.FreeStep`: blocks,
+        block operators, Γ0, Γ1, energy coefficients of a_g²; unused unless ``exact_free``).
     bw, k_mat, c_mat, m_diag, mr, r
         Half-bandwidth of K and C, K of the linear storeys [N/m], C [N·s/m], lumped floor
         masses [kg], M r, r.
@@ -441,8 +445,9 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
     yb = np.zeros(m)
     kx = np.zeros((1, m))
     px = np.zeros((1, npw))
-    xm = np.zeros(m)
     x1 = np.zeros(m)
+    nblk = blk.shape[0] - 1
+    acc = np.zeros(2 * m + 4)
     cap = imp.shape[0]
 
     for k in range(k0, k1):
@@ -450,28 +455,56 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         a0 = ag[k]
         a1 = ag[k + 1]
         dag = (a1 - a0) / dt
+        exact_step = False
         if ws_i[I_MODE] == 0:
-            # ---------------- exact step (all gaps open)
-            amid = 0.5 * (a0 + a1)
-            # x1 = Φ x + Γ0 a0 + Γ1 a1
-            # four interleaved partial sums in a fixed order: instruction-level parallelism
-            # without reassociation
-            for i in range(m):
-                s0 = g0[i] * a0 + g1[i] * a1
-                s1 = 0.0
-                s2 = 0.0
-                s3 = 0.0
-                j = 0
-                while j + 3 < m:
-                    s0 += phi[i, j] * x[j]
-                    s1 += phi[i, j + 1] * x[j + 1]
-                    s2 += phi[i, j + 2] * x[j + 2]
-                    s3 += phi[i, j + 3] * x[j + 3]
-                    j += 4
-                while j < m:
-                    s0 += phi[i, j] * x[j]
-                    j += 1
-                x1[i] = (s0 + s1) + (s2 + s3)
+            # ---------------- exact step (all gaps open), block by block (FreeStep):
+            # acc = [Φ_b z, Q_b z, w·z] in one sweep over the columns of the block operator
+            # (each row accumulates in a fixed order: vectorises without reassociation)
+            lin_i0 = 0.0
+            lin_i1 = 0.0
+            lin_d0 = 0.0
+            lin_d1 = 0.0
+            quad = 0.0
+            for b in range(nblk):
+                p = blk[b]
+                nb = blk[b + 1] - p
+                if nb == 1:
+                    # one floor: the same sums as below, written out
+                    u = x[p]
+                    v = x[n + p]
+                    x1[p] = g0[p] * a0 + g1[p] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
+                    x1[n + p] = (g0[n + p] * a0 + g1[n + p] * a1 + fops[p, 1] * u
+                                 + fops[n + p, 1] * v)
+                    quad += u * (fops[p, 2] * u + fops[n + p, 2] * v)
+                    quad += v * (fops[p, 3] * u + fops[n + p, 3] * v)
+                    lin_i0 += fops[p, 4] * u + fops[n + p, 4] * v
+                    lin_i1 += fops[p, 5] * u + fops[n + p, 5] * v
+                    lin_d0 += fops[p, 6] * u + fops[n + p, 6] * v
+                    lin_d1 += fops[p, 7] * u + fops[n + p, 7] * v
+                    continue
+                nb2 = 2 * nb
+                rows = 2 * nb2 + 4
+                for l in range(nb):
+                    acc[l] = g0[p + l] * a0 + g1[p + l] * a1
+                    acc[nb + l] = g0[n + p + l] * a0 + g1[n + p + l] * a1
+                for l in range(nb2, rows):
+                    acc[l] = 0.0
+                # columns of floor j's displacement and velocity together; every row sums in
+                # a fixed order, and the loop over rows vectorises without reassociation
+                for j in range(nb):
+                    xu = x[p + j]
+                    xv = x[n + p + j]
+                    for l in range(rows):
+                        acc[l] = acc[l] + fops[p + j, l] * xu + fops[n + p + j, l] * xv
+                for l in range(nb):
+                    x1[p + l] = acc[l]
+                    x1[n + p + l] = acc[nb + l]
+                    quad += x[p + l] * acc[nb2 + l]
+                    quad += x[n + p + l] * acc[nb2 + nb + l]
+                lin_i0 += acc[2 * nb2]
+                lin_i1 += acc[2 * nb2 + 1]
+                lin_d0 += acc[2 * nb2 + 2]
+                lin_d1 += acc[2 * nb2 + 3]
             touched = False
             for c in range(nc):
                 ds0, r0 = _gap(c, x, n, cdof, cw)
@@ -484,42 +517,16 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                     touched = True
                     break
             if not touched:
-                # mid-step velocity (exact), then Simpson's rule for input and viscous energy
-                for i in range(n, m):
-                    sh = g0h[i] * a0 + g1h[i] * amid
-                    for j in range(m):
-                        sh += phih[i, j] * x[j]
-                    xm[i] = sh
-                pin0 = 0.0
-                pinm = 0.0
-                pin1 = 0.0
-                pd0 = 0.0
-                pdm = 0.0
-                pd1 = 0.0
-                for i in range(n):
-                    pin0 -= x[n + i] * mr[i]
-                    pinm -= xm[n + i] * mr[i]
-                    pin1 -= x1[n + i] * mr[i]
-                    c0 = 0.0
-                    cm = 0.0
-                    c1 = 0.0
-                    for j in range(n):
-                        c0 += c_mat[i, j] * x[n + j]
-                        cm += c_mat[i, j] * xm[n + j]
-                        c1 += c_mat[i, j] * x1[n + j]
-                    pd0 += x[n + i] * c0
-                    pdm += xm[n + i] * cm
-                    pd1 += x1[n + i] * c1
-                ws_f[W_E_INPUT] += dt / 6.0 * (pin0 * a0 + 4.0 * pinm * amid + pin1 * a1)
-                ws_f[W_E_DAMP] += dt / 6.0 * (pd0 + 4.0 * pdm + pd1)
+                # input and viscous energy over the step: exact quadratic forms
+                ws_f[W_E_INPUT] += (a0 * lin_i0 + a1 * lin_i1
+                                    + (faa[0, 0] * a0 * a0 + faa[0, 1] * a0 * a1
+                                       + faa[0, 2] * a1 * a1))
+                ws_f[W_E_DAMP] += (quad + a0 * lin_d0 + a1 * lin_d1
+                                   + (faa[1, 0] * a0 * a0 + faa[1, 1] * a0 * a1
+                                      + faa[1, 2] * a1 * a1))
                 for i in range(m):
                     x[i] = x1[i]
-                # relative acceleration for the output (no contact force acts)
-                for i in range(n):
-                    ku = 0.0
-                    for j in range(max(0, i - bw), min(n, i + bw + 1)):
-                        ku += k_mat[i, j] * x[j] + c_mat[i, j] * x[n + j]
-                    kx[0, n + i] = -ku / m_diag[i] - r[i] * a1
+                exact_step = True
             else:
                 ws_i[I_MODE] = 1
         if ws_i[I_MODE] == 1:
@@ -727,10 +734,10 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
                             committed[c, DMAX] = tdmax
                             # force rate at the step end, then the largest force inside the
                             # step from the cubic Hermite of (F, dF/dt) at its two ends
-                            acc = 0.0
+                            rel_acc = 0.0
                             for q in range(4):
-                                acc += cw[c, q] * ks[6, n + cdof[c, q]]
-                            df1 = kd * rate + kr * acc
+                                rel_acc += cw[c, q] * ks[6, n + cdof[c, q]]
+                            df1 = kd * rate + kr * rel_acc
                             fmax = max(f, _hermite_max(last_f[c, 1], last_f[c, 2], f, df1,
                                                        t_now - last_f[c, 0]))
                             if fmax > cpeak[c]:
@@ -780,12 +787,19 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, phi, g0, g1, phih, g0h, g1h, bw,
         for i in range(n):
             u_out[o, i] = x[i]
             v_out[o, i] = x[n + i]
-            acc_out[o, i] = kx[0, n + i] + r[i] * a1
-            kv = 0.0
+            ku = 0.0
+            cv = 0.0
             for j in range(max(0, i - bw), min(n, i + bw + 1)):
-                kv += k_mat[i, j] * x[j]
+                ku += k_mat[i, j] * x[j]
+                cv += c_mat[i, j] * x[n + j]
+            if exact_step:
+                # no contact force, no yielding storey: absolute acceleration
+                # ü + r a_g = −M⁻¹(K u + C u̇)
+                acc_out[o, i] = -(ku + cv) / m_diag[i]
+            else:
+                acc_out[o, i] = kx[0, n + i] + r[i] * a1
             ek += 0.5 * m_diag[i] * x[n + i] * x[n + i]
-            es += 0.5 * x[i] * kv
+            es += 0.5 * x[i] * ku
         recov = 0.0
         for q in range(ns):
             vs_out[o, q] = sstate[q, V_C]

@@ -91,3 +91,163 @@ def compute_propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArra
     e12 = e[: 2 * n, 2 * n]
     e13 = e[: 2 * n, 2 * n + 1]
     return Propagator(phi, np.ascontiguousarray(e12 - e13 / h), np.ascontiguousarray(e13 / h))
+
+
+# ----------------------------------------------------------------------------- exact steps
+class FreeStep(NamedTuple):
+    """Everything the kernel needs for one exact grid step with every gap open.
+
+    The structure splits into independent blocks of consecutive floors (no stiffness or
+    damping couples two blocks: typically one block per building). Block ``b`` holds floors
+    ``blk[b] … blk[b+1]−1``; its local state is ``z_b = [u_b, u̇_b]`` (length ``2 n_b``).
+    ``ops[ofs[b]:ofs[b+1]]`` is that block's operator, stored column by column: column
+    ``j`` (``R_b = 4 n_b + 4`` numbers) multiplies ``z_b[j]`` and holds
+
+    * rows ``0 … 2n_b−1``: column ``j`` of the block of Φ;
+    * rows ``2n_b … 4n_b−1``: column ``j`` of ``Q_b`` (viscous energy, quadratic part);
+    * rows ``4n_b … 4n_b+3``: the linear energy terms ``w_in,0, w_in,1, w_d,0, w_d,1``.
+
+    Over the step, with ``z = z_b(0)`` and ground accelerations ``a0``, ``a1`` at its ends,
+
+        z_b(h)   = Φ_b z + γ0_b a0 + γ1_b a1
+        E_input  = Σ_b (w_in,0 · z) a0 + (w_in,1 · z) a1 + aa[0] · (a0², a0 a1, a1²)
+        E_visc   = Σ_b zᵀ Q_b z + (w_d,0 · z) a0 + (w_d,1 · z) a1 + aa[1] · (a0², a0 a1, a1²)
+
+    exactly (see :func:`step_energy_forms`). ``gamma0``/``gamma1`` are in the global state
+    order ``[u, u̇]``.
+    """
+
+    blk: NDArray[np.int64]
+    ops: NDArray[np.float64]
+    gamma0: NDArray[np.float64]
+    gamma1: NDArray[np.float64]
+    aa: NDArray[np.float64]
+
+
+def independent_blocks(*mats: NDArray[np.float64]) -> NDArray[np.int64]:
+    """Boundaries ``[0, …, N]`` of the finest split of the floors into runs of consecutive
+    floors that no non-zero entry of any matrix couples (a run ends after floor i when no
+    entry links a floor ≤ i to a floor > i)."""
+    n = mats[0].shape[0]
+    reach = np.arange(n)  # reach[i]: the largest floor coupled to floor i
+    for a in mats:
+        i, j = np.nonzero(a)
+        np.maximum.at(reach, i, j)
+        np.maximum.at(reach, j, i)
+    bounds = [0]
+    far = -1
+    for i in range(n):
+        far = max(far, int(reach[i]))
+        if far == i:
+            bounds.append(i + 1)
+    return np.array(bounds, dtype=np.int64)
+
+
+def _van_loan_integral(f: NDArray[np.float64], w: NDArray[np.float64],
+                       h: float) -> NDArray[np.float64]:
+    """``∫₀ʰ e^{Fᵀs} W e^{Fs} ds`` from one matrix exponential (Van Loan 1978, §4): with
+    ``H = [[−Fᵀ, W], [0, F]]``, ``e^{Hh} = [[·, G], [0, e^{Fh}]]`` and the integral is
+    ``e^{Fh}ᵀ G``. The result is linear in W, so W is scaled to the size of F first (the
+    exponential's scaling-and-squaring then sees a balanced matrix) and scaled back."""
+    k = f.shape[0]
+    wn = np.abs(w).max()
+    if wn == 0.0:
+        return np.zeros((k, k))
+    scale = max(np.abs(f).max(), 1.0 / h) / wn
+    big = np.zeros((2 * k, 2 * k))
+    big[:k, :k] = -f.T
+    big[:k, k:] = w * scale
+    big[k:, k:] = f
+    e = scipy.linalg.expm(big * h)
+    out = e[k:, k:].T @ e[:k, k:] / scale
+    return 0.5 * (out + out.T)
+
+
+def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                      r: NDArray[np.float64], h: float
+                      ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Input and viscous energy over one exact step as quadratic forms in ``[x0, a0, a1]``.
+
+    With every gap open, ``y = [x, a_g, ȧ_g]`` obeys ``ẏ = F y``, ``F = [[A, B, 0], [0, 0, 1],
+    [0, 0, 0]]`` (a_g linear in the step), so ``y(s) = e^{Fs} y0``. The input power
+    ``−a_g (M r)ᵀ u̇`` and the viscous power ``u̇ᵀ C u̇`` are quadratic forms ``yᵀ W y``,
+    hence their integrals over the step are ``y0ᵀ (∫ e^{Fᵀs} W e^{Fs} ds) y0`` — exact, for
+    any step and any frequency content. ``y0 = T [x0, a0, a1]`` with
+    ``ȧ_g = (a1 − a0) / h`` gives the forms in the grid values.
+
+    Returns ``(Q_in, Q_visc)``, each ``(2N+2, 2N+2)`` symmetric.
+    """
+    n = M.shape[0]
+    k = 2 * n + 2
+    f = np.zeros((k, k))
+    f[: 2 * n, : 2 * n] = state_matrix(M, C, K)
+    f[n : 2 * n, 2 * n] = -r
+    f[2 * n, 2 * n + 1] = 1.0
+    w_in = np.zeros((k, k))
+    mr = M @ r
+    w_in[n : 2 * n, 2 * n] = -0.5 * mr
+    w_in[2 * n, n : 2 * n] = -0.5 * mr
+    w_d = np.zeros((k, k))
+    w_d[n : 2 * n, n : 2 * n] = 0.5 * (C + C.T)
+    t = np.eye(k)
+    t[2 * n + 1, 2 * n] = -1.0 / h
+    t[2 * n + 1, 2 * n + 1] = 1.0 / h
+    return tuple(t.T @ _van_loan_integral(f, w, h) @ t for w in (w_in, w_d))  # type: ignore
+
+
+def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                      r: NDArray[np.float64], h: float) -> FreeStep:
+    """The :class:`FreeStep` operators of the structure for a grid step ``h`` [s]."""
+    n = M.shape[0]
+    blk = independent_blocks(M, C, K)
+    gamma0 = np.zeros(2 * n)
+    gamma1 = np.zeros(2 * n)
+    aa = np.zeros((2, 3))
+    parts = []
+    for b in range(blk.size - 1):
+        p, q = int(blk[b]), int(blk[b + 1])
+        nb = q - p
+        glob = np.r_[p:q, n + p : n + q]
+        sl = slice(p, q)
+        mb, cb, kb, rb = M[sl, sl], C[sl, sl], K[sl, sl], r[sl]
+        prop = compute_propagator(mb, cb, kb, rb, h)
+        gamma0[glob] = prop.gamma0
+        gamma1[glob] = prop.gamma1
+        q_in, q_d = step_energy_forms(mb, cb, kb, rb, h)
+        x_, a0_, a1_ = slice(0, 2 * nb), 2 * nb, 2 * nb + 1
+        op = np.zeros((2 * nb, 4 * nb + 4))
+        op[:, : 2 * nb] = prop.phi.T
+        op[:, 2 * nb : 4 * nb] = q_d[x_, x_]  # symmetric: column j is row j
+        # the cross terms appear twice in zᵀQz: 2 Q[x, a] is the linear coefficient
+        op[:, 4 * nb + 0] = 2.0 * q_in[x_, a0_]
+        op[:, 4 * nb + 1] = 2.0 * q_in[x_, a1_]
+        op[:, 4 * nb + 2] = 2.0 * q_d[x_, a0_]
+        op[:, 4 * nb + 3] = 2.0 * q_d[x_, a1_]
+        for row, qq in enumerate((q_in, q_d)):
+            aa[row] += (qq[a0_, a0_], 2.0 * qq[a0_, a1_], qq[a1_, a1_])
+        parts.append((glob, op))
+    width = max((op.shape[1] for _, op in parts), default=0)
+    ops = np.zeros((2 * n, width))
+    for glob, op in parts:
+        ops[glob, : op.shape[1]] = op
+    return FreeStep(blk, ops, gamma0, gamma1, aa)
+
+
+_FREE_CACHE: dict[bytes, FreeStep] = {}
+
+
+def free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+              r: NDArray[np.float64], h: float) -> FreeStep:
+    """:func:`compute_free_step`, remembered per structure and step like
+    :func:`propagator` (the arrays are read-only)."""
+    key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
+                                for a in (M, C, K, r)) + repr((M.shape, float(h))).encode()).digest()
+    hit = _FREE_CACHE.get(key)
+    if hit is None:
+        hit = compute_free_step(M, C, K, r, h)
+        for a in hit:
+            a.setflags(write=False)
+        if len(_FREE_CACHE) >= _CACHE_SIZE:
+            _FREE_CACHE.pop(next(iter(_FREE_CACHE)))
+        _FREE_CACHE[key] = hit
+    return hit
