@@ -54,16 +54,22 @@ def propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.flo
     """Exact propagator of the linear structure over a step ``h`` [s] with linear ``a_g``
     (see :func:`compute_propagator`), remembered per structure and step: a sweep over gaps,
     restitution or records reuses one matrix exponential. The arrays are read-only."""
+    return _remembered(_CACHE, compute_propagator, M, C, K, r, h)
+
+
+def _remembered(cache: dict, compute, M, C, K, r, h):  # noqa: ANN001 (private helper)
+    """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes and ``h``;
+    the result's arrays are made read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
     key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
                                 for a in (M, C, K, r)) + repr((M.shape, float(h))).encode()).digest()
-    hit = _CACHE.get(key)
+    hit = cache.get(key)
     if hit is None:
-        hit = compute_propagator(M, C, K, r, h)
+        hit = compute(M, C, K, r, h)
         for a in hit:
             a.setflags(write=False)
-        if len(_CACHE) >= _CACHE_SIZE:
-            _CACHE.pop(next(iter(_CACHE)))
-        _CACHE[key] = hit
+        if len(cache) >= _CACHE_SIZE:
+            cache.pop(next(iter(cache)))
+        cache[key] = hit
     return hit
 
 
@@ -240,14 +246,4 @@ def free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.floa
               r: NDArray[np.float64], h: float) -> FreeStep:
     """:func:`compute_free_step`, remembered per structure and step like
     :func:`propagator` (the arrays are read-only)."""
-    key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
-                                for a in (M, C, K, r)) + repr((M.shape, float(h))).encode()).digest()
-    hit = _FREE_CACHE.get(key)
-    if hit is None:
-        hit = compute_free_step(M, C, K, r, h)
-        for a in hit:
-            a.setflags(write=False)
-        if len(_FREE_CACHE) >= _CACHE_SIZE:
-            _FREE_CACHE.pop(next(iter(_FREE_CACHE)))
-        _FREE_CACHE[key] = hit
-    return hit
+    return _remembered(_FREE_CACHE, compute_free_step, M, C, K, r, h)
