@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 from pounding.contact.base import ContactLaw
 from pounding.contact.dispatch import PARAMS_SIZE
 from pounding.contact.factory import make_law
+from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.structure import ShearBuilding
 from pounding.structure.assembly import AssembledSystem, assemble, shared_levels
 from pounding.validation import non_negative, positive
@@ -415,7 +416,7 @@ class PoundingModel:
                 rows.append(prm[j])
                 zi.append(nz if law.has_internal_variable else -1)
                 nz += 1 if law.has_internal_variable else 0
-        width = rows[0].size if rows else 6
+        width = rows[0].size if rows else STOREY_PARAMS_SIZE
         return (np.array(lower, dtype=np.int64), np.array(upper, dtype=np.int64),
                 np.array(code, dtype=np.int64),
                 np.array(rows, dtype=float).reshape(len(rows), width),

@@ -47,7 +47,7 @@ def storey_recoverable(code, sp, s, d, z, v):
 
 
 @njit(cache=True, error_model="numpy")
-def _drive(code, sp, drift, substeps):
+def drive_path(code, sp, drift, substeps):
     """Shear along a drift path, committing at every sample; ``z`` of Bouc–Wen integrated
     in drift (rate-independent: ``dz/dd = ż/ḋ``) by classical RK4 with ``substeps`` steps per
     sample interval."""
@@ -110,9 +110,9 @@ def respond_drift_path(law: StoreyLaw | None, stiffness: float, drift: ArrayLike
     if law is None:
         return k * d
     sp = law.params(np.array([k]))
-    v, _ = _drive(law.code, sp, d, int(substeps))
+    v, _ = drive_path(law.code, sp, d, int(substeps))
     return v
 
 
-__all__ = ["storey_trial", "storey_recoverable", "respond_drift_path", "STATE_SIZE",
+__all__ = ["storey_trial", "storey_recoverable", "respond_drift_path", "drive_path", "STATE_SIZE",
            "P_K", "P_FY"]

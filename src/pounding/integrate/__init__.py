@@ -123,7 +123,7 @@ def initial_storeys(model: PoundingModel, u0: np.ndarray) -> tuple[np.ndarray, n
     A storey given an initial drift is taken as loaded monotonically to it from rest (its
     law followed from zero), so a drift beyond yield starts on the yield branch.
     """
-    from pounding.hysteresis.dispatch import _drive
+    from pounding.hysteresis.dispatch import drive_path
 
     lo, hi, code, par, zi = model.storey_arrays()
     state = np.zeros((lo.size, 2))
@@ -131,7 +131,7 @@ def initial_storeys(model: PoundingModel, u0: np.ndarray) -> tuple[np.ndarray, n
     for s in range(lo.size):
         d = u0[hi[s]] - (u0[lo[s]] if lo[s] >= 0 else 0.0)
         if d != 0.0:
-            v, zz = _drive(int(code[s]), par[s: s + 1], np.array([0.0, d]), 200)
+            v, zz = drive_path(int(code[s]), par[s: s + 1], np.array([0.0, d]), 200)
             state[s] = (d, v[-1])
             if zi[s] >= 0:
                 z[zi[s]] = zz[-1]
