@@ -137,9 +137,10 @@ class GroundMotion:
         """Peak ground acceleration in units of standard gravity [g]."""
         return self.pga / G
 
-    @property
+    @functools.cached_property
     def pgv(self) -> float:
-        """Peak ground velocity, ``max |v|`` [m/s], from :meth:`velocity`."""
+        """Peak ground velocity, ``max |v|`` [m/s], from :meth:`velocity` (computed once:
+        the record is read-only)."""
         return float(np.max(np.abs(self.velocity())))
 
     @property

@@ -424,10 +424,16 @@ class PoundingModel:
 
     def linear_stiffness(self) -> NDArray[np.float64]:
         """Stiffness matrix [N/m] of the linear storeys only (yielding storeys left out: the
-        kernel adds their shear from their laws)."""
+        kernel adds their shear from their laws). Assembled once per model; read-only."""
+        return self._linear_stiffness
+
+    @cached_property
+    def _linear_stiffness(self) -> NDArray[np.float64]:
         blocks = [b.stiffness_matrix() if not b.is_inelastic else np.zeros((b.n, b.n))
                   for b in self.buildings]
-        return np.ascontiguousarray(scipy.linalg.block_diag(*blocks))
+        k = np.ascontiguousarray(scipy.linalg.block_diag(*blocks))
+        k.setflags(write=False)
+        return k
 
     def dof_labels(self) -> list[str]:
         """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based)."""

@@ -10,8 +10,9 @@ is the one compiled kernel of :mod:`pounding.integrate.kernel`; the answer is a
 from __future__ import annotations
 
 import math
-import warnings
 import time
+import warnings
+import weakref
 from collections.abc import Callable
 
 import numpy as np
@@ -27,7 +28,10 @@ from pounding.integrate.kernel import (
     I_FAILED,
     I_OVERFLOW,
     IMP_COLUMNS,
+    W_ERR_OLD,
     W_H,
+    WS_F_SIZE,
+    WS_I_SIZE,
     integrate_chunk,
 )
 from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
@@ -58,6 +62,18 @@ def half_bandwidth(*mats: np.ndarray) -> int:
         if i.size:
             bw = max(bw, int(np.max(np.abs(i - j))))
     return bw
+
+
+def band_storage(a: np.ndarray, bw: int) -> np.ndarray:
+    """``(2 bw + 1, N)`` band storage of a square matrix: ``out[d, i] = a[i, i + d − bw]``
+    (zero outside the matrix), the layout the kernel's O(N·bw) products read."""
+    n = a.shape[0]
+    out = np.zeros((2 * bw + 1, n))
+    for d in range(2 * bw + 1):
+        off = d - bw
+        i = np.arange(max(0, -off), min(n, n - off))
+        out[d, i] = a[i, i + off]
+    return out
 
 
 def choose_free_stepping(mode: str, n_dof: int, bw: int) -> bool:
@@ -94,6 +110,26 @@ def ground_on_grid(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
     t_rec = np.append(motion.time, motion.time[-1] + motion.dt)
     a_rec = np.append(motion.accel, 0.0)
     return np.interp(t, t_rec, a_rec, right=0.0)
+
+
+_GRID_MEMO: "weakref.WeakKeyDictionary[GroundMotion, dict[tuple[float, float], np.ndarray]]" = (
+    weakref.WeakKeyDictionary())
+
+
+def _ground_on_grid_memo(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
+    """:func:`ground_on_grid`, remembered per record (records are read-only) for a few
+    (step, duration) pairs: repeated runs and sweeps on one record interpolate it once.
+    The array is read-only."""
+    per = _GRID_MEMO.setdefault(motion, {})
+    key = (float(dt), float(t_end))
+    ag = per.get(key)
+    if ag is None:
+        ag = ground_on_grid(motion, dt, t_end)
+        ag.setflags(write=False)
+        if len(per) >= 8:
+            per.clear()
+        per[key] = ag
+    return ag
 
 
 def initial_state(model: PoundingModel, u0: np.ndarray | None,
@@ -185,7 +221,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     t_end = motion.duration if duration is None else positive("duration", duration)
     rtol = positive("rtol", rtol)
     h_max = step if h_max is None else positive("h_max", h_max)
-    ag = ground_on_grid(motion, step, t_end)
+    ag = _ground_on_grid_memo(motion, step, t_end)
     nt = ag.size
     sys_ = model.system
     M, C, r = sys_.M, sys_.C, sys_.r
@@ -205,8 +241,8 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     if exact:
         fs = free_step(M, C, K, r, step)
     else:
-        fs = FreeStep(np.array([0, n], dtype=np.int64), np.zeros((2 * n, 4 * n + 4)),
-                      np.zeros(2 * n), np.zeros(2 * n), np.zeros((2, 3)))
+        fs = FreeStep(np.array([0, n], dtype=np.int64), np.zeros((2 * n, 2 * n + 2)),
+                      np.zeros(2 * n), np.zeros(2 * n), np.zeros(3))
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
     nc = cgap.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
@@ -222,10 +258,11 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     wc = np.zeros(nc)
     w_start = np.zeros(nc)
     imp_row = -np.ones(nc, dtype=np.int64)
-    last_f = np.zeros((nc, 3))
-    ws_f = np.zeros(4)
+    last_f = np.zeros((nc, 4))
+    ws_f = np.zeros(WS_F_SIZE)
+    ws_f[W_ERR_OLD] = 1e-4
     ws_f[W_H] = step * 0.1
-    ws_i = np.zeros(7, dtype=np.int64)
+    ws_i = np.zeros(WS_I_SIZE, dtype=np.int64)
     ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
     u_out = np.zeros((nt, n))
@@ -254,7 +291,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
 
     chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
     args = (step, ag, exact, fs.blk, fs.ops, fs.gamma0, fs.gamma1, fs.aa, bw,
-            np.ascontiguousarray(K), np.ascontiguousarray(C), m_diag,
+            band_storage(K, bw), band_storage(C, bw), m_diag,
             np.ascontiguousarray(M @ r), np.ascontiguousarray(r, dtype=float), cdof, cw, cgap,
             ccode, np.ascontiguousarray(cparams), s_lo, s_hi, s_code,
             np.ascontiguousarray(s_par), s_zi, rtol, atol, h_max, x, committed, sstate, wc,

@@ -106,21 +106,22 @@ class FreeStep(NamedTuple):
     The structure splits into independent blocks of consecutive floors (no stiffness or
     damping couples two blocks: typically one block per building). Block ``b`` holds floors
     ``blk[b] … blk[b+1]−1``; its local state is ``z_b = [u_b, u̇_b]`` (length ``2 n_b``).
-    ``ops[ofs[b]:ofs[b+1]]`` is that block's operator, stored column by column: column
-    ``j`` (``R_b = 4 n_b + 4`` numbers) multiplies ``z_b[j]`` and holds
+    ``ops[glob_b, :2n_b+2]`` is that block's operator, stored column by column: column ``j``
+    (``2 n_b + 2`` numbers) multiplies ``z_b[j]`` and holds
 
     * rows ``0 … 2n_b−1``: column ``j`` of the block of Φ;
-    * rows ``2n_b … 4n_b−1``: column ``j`` of ``Q_b`` (viscous energy, quadratic part);
-    * rows ``4n_b … 4n_b+3``: the linear energy terms ``w_in,0, w_in,1, w_d,0, w_d,1``.
+    * rows ``2n_b, 2n_b+1``: the linear input-energy terms ``w_in,0, w_in,1``.
 
     Over the step, with ``z = z_b(0)`` and ground accelerations ``a0``, ``a1`` at its ends,
 
         z_b(h)   = Φ_b z + γ0_b a0 + γ1_b a1
-        E_input  = Σ_b (w_in,0 · z) a0 + (w_in,1 · z) a1 + aa[0] · (a0², a0 a1, a1²)
-        E_visc   = Σ_b zᵀ Q_b z + (w_d,0 · z) a0 + (w_d,1 · z) a1 + aa[1] · (a0², a0 a1, a1²)
+        E_input  = Σ_b (w_in,0 · z) a0 + (w_in,1 · z) a1 + aa · (a0², a0 a1, a1²)
 
-    exactly (see :func:`step_energy_forms`). ``gamma0``/``gamma1`` are in the global state
-    order ``[u, u̇]``.
+    exactly (see :func:`step_energy_forms`). The viscous work of the step is then exactly
+    the input work less the change of kinetic and strain energy (nothing else stores or
+    dissipates energy while every gap is open), which the kernel uses instead of the
+    viscous quadratic form: half the work a step. ``gamma0``/``gamma1`` are in the global
+    state order ``[u, u̇]``.
     """
 
     blk: NDArray[np.int64]
@@ -169,6 +170,40 @@ def _van_loan_integral(f: NDArray[np.float64], w: NDArray[np.float64],
     return 0.5 * (out + out.T)
 
 
+def _augmented(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+               r: NDArray[np.float64], h: float
+               ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``F`` of ``ẏ = F y`` for ``y = [x, a_g, ȧ_g]`` and ``T`` with ``y0 = T [x0, a0, a1]``."""
+    n = M.shape[0]
+    k = 2 * n + 2
+    f = np.zeros((k, k))
+    f[: 2 * n, : 2 * n] = state_matrix(M, C, K)
+    f[n : 2 * n, 2 * n] = -r
+    f[2 * n, 2 * n + 1] = 1.0
+    t = np.eye(k)
+    t[2 * n + 1, 2 * n] = -1.0 / h
+    t[2 * n + 1, 2 * n + 1] = 1.0 / h
+    return f, t
+
+
+def _input_weight(M: NDArray[np.float64], r: NDArray[np.float64]) -> NDArray[np.float64]:
+    """W of the input power ``−a_g (M r)ᵀ u̇ = yᵀ W y``."""
+    n = M.shape[0]
+    w_in = np.zeros((2 * n + 2, 2 * n + 2))
+    mr = M @ r
+    w_in[n : 2 * n, 2 * n] = -0.5 * mr
+    w_in[2 * n, n : 2 * n] = -0.5 * mr
+    return w_in
+
+
+def step_input_form(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                    r: NDArray[np.float64], h: float) -> NDArray[np.float64]:
+    """Input energy over one exact step as a quadratic form in ``[x0, a0, a1]`` (the first
+    of :func:`step_energy_forms`)."""
+    f, t = _augmented(M, C, K, r, h)
+    return t.T @ _van_loan_integral(f, _input_weight(M, r), h) @ t
+
+
 def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
                       r: NDArray[np.float64], h: float
                       ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -181,24 +216,15 @@ def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     any step and any frequency content. ``y0 = T [x0, a0, a1]`` with
     ``ȧ_g = (a1 − a0) / h`` gives the forms in the grid values.
 
-    Returns ``(Q_in, Q_visc)``, each ``(2N+2, 2N+2)`` symmetric.
+    Returns ``(Q_in, Q_visc)``, each ``(2N+2, 2N+2)`` symmetric. (The kernel needs only
+    ``Q_in``; ``Q_visc`` checks that the viscous work it infers from the balance is exact.)
     """
     n = M.shape[0]
-    k = 2 * n + 2
-    f = np.zeros((k, k))
-    f[: 2 * n, : 2 * n] = state_matrix(M, C, K)
-    f[n : 2 * n, 2 * n] = -r
-    f[2 * n, 2 * n + 1] = 1.0
-    w_in = np.zeros((k, k))
-    mr = M @ r
-    w_in[n : 2 * n, 2 * n] = -0.5 * mr
-    w_in[2 * n, n : 2 * n] = -0.5 * mr
-    w_d = np.zeros((k, k))
+    f, t = _augmented(M, C, K, r, h)
+    w_d = np.zeros_like(f)
     w_d[n : 2 * n, n : 2 * n] = 0.5 * (C + C.T)
-    t = np.eye(k)
-    t[2 * n + 1, 2 * n] = -1.0 / h
-    t[2 * n + 1, 2 * n + 1] = 1.0 / h
-    return tuple(t.T @ _van_loan_integral(f, w, h) @ t for w in (w_in, w_d))  # type: ignore
+    return tuple(t.T @ _van_loan_integral(f, w, h) @ t  # type: ignore
+                 for w in (_input_weight(M, r), w_d))
 
 
 def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
@@ -208,7 +234,7 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     blk = independent_blocks(M, C, K)
     gamma0 = np.zeros(2 * n)
     gamma1 = np.zeros(2 * n)
-    aa = np.zeros((2, 3))
+    aa = np.zeros(3)
     parts = []
     for b in range(blk.size - 1):
         p, q = int(blk[b]), int(blk[b + 1])
@@ -219,18 +245,14 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
         prop = compute_propagator(mb, cb, kb, rb, h)
         gamma0[glob] = prop.gamma0
         gamma1[glob] = prop.gamma1
-        q_in, q_d = step_energy_forms(mb, cb, kb, rb, h)
+        q_in = step_input_form(mb, cb, kb, rb, h)
         x_, a0_, a1_ = slice(0, 2 * nb), 2 * nb, 2 * nb + 1
-        op = np.zeros((2 * nb, 4 * nb + 4))
+        op = np.zeros((2 * nb, 2 * nb + 2))
         op[:, : 2 * nb] = prop.phi.T
-        op[:, 2 * nb : 4 * nb] = q_d[x_, x_]  # symmetric: column j is row j
-        # the cross terms appear twice in zᵀQz: 2 Q[x, a] is the linear coefficient
-        op[:, 4 * nb + 0] = 2.0 * q_in[x_, a0_]
-        op[:, 4 * nb + 1] = 2.0 * q_in[x_, a1_]
-        op[:, 4 * nb + 2] = 2.0 * q_d[x_, a0_]
-        op[:, 4 * nb + 3] = 2.0 * q_d[x_, a1_]
-        for row, qq in enumerate((q_in, q_d)):
-            aa[row] += (qq[a0_, a0_], 2.0 * qq[a0_, a1_], qq[a1_, a1_])
+        # the cross terms appear twice in yᵀQy: 2 Q[x, a] is the linear coefficient
+        op[:, 2 * nb + 0] = 2.0 * q_in[x_, a0_]
+        op[:, 2 * nb + 1] = 2.0 * q_in[x_, a1_]
+        aa += (q_in[a0_, a0_], 2.0 * q_in[a0_, a1_], q_in[a1_, a1_])
         parts.append((glob, op))
     width = max((op.shape[1] for _, op in parts), default=0)
     ops = np.zeros((2 * n, width))
