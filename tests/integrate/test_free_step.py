@@ -82,3 +82,36 @@ def test_free_step_matches_propagator_and_quadrature():
     y0 = np.r_[x0, a0, a1]
     assert abs(y0 @ step_energy_forms(M, C, K, r, h)[1] @ y0 - q_d) < 1e-12 * abs(q_d)
     assert np.allclose(state_matrix(M, C, K).shape, (2 * n, 2 * n))
+
+
+def test_band_storage_reproduces_the_matrix():
+    """The kernel's banded products read K and C from band storage: every entry of the band
+    lands where ``out[d, i] = a[i, i + d − bw]`` says, and nothing else is kept."""
+    from pounding.integrate import band_storage, half_bandwidth
+
+    s = _pair().system
+    for a in (s.K, s.C):
+        bw = half_bandwidth(a)
+        band = band_storage(a, bw)
+        n = a.shape[0]
+        back = np.zeros_like(a)
+        for d in range(2 * bw + 1):
+            for i in range(n):
+                j = i + d - bw
+                if 0 <= j < n:
+                    back[i, j] = band[d, i]
+                else:
+                    assert band[d, i] == 0.0
+        assert np.array_equal(back, a)
+
+
+def test_record_grid_is_remembered_read_only():
+    from pounding.ground_motion import GroundMotion
+    from pounding.integrate import _ground_on_grid_memo, ground_on_grid
+
+    gm = GroundMotion(0.01, np.sin(np.arange(50) * 0.3), name="memo")
+    a = _ground_on_grid_memo(gm, 0.005, 0.3)
+    assert a is _ground_on_grid_memo(gm, 0.005, 0.3)
+    assert not a.flags.writeable
+    assert np.array_equal(a, ground_on_grid(gm, 0.005, 0.3))
+    assert _ground_on_grid_memo(gm, 0.01, 0.3).size != a.size

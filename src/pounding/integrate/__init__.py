@@ -51,7 +51,7 @@ DEFAULT_OUTPUT_STEP: float = 1e-3
 
 EXACT_FREE_MAX_DOF: int = 80
 """``free_stepping="auto"`` uses the exact propagator up to this many floors in all (measured
-crossover: see ``benchmarks/bench_scaling.py``)."""
+crossover: ``python benchmarks/bench_opensees.py --sections scaling``)."""
 
 
 def half_bandwidth(*mats: np.ndarray) -> int:

@@ -439,7 +439,18 @@ def _free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
         # columns of the block operator (each row accumulates in a fixed order)
         lin_i0 = 0.0
         lin_i1 = 0.0
-        for b in range(nblk):
+        if nblk == n:
+            # every floor a block of its own (a row of SDOF oscillators): the sums below,
+            # written out floor by floor
+            for i in range(n):
+                u = x[i]
+                v = x[n + i]
+                x1[i] = g0[i] * a0 + g1[i] * a1 + fops[i, 0] * u + fops[n + i, 0] * v
+                x1[n + i] = (g0[n + i] * a0 + g1[n + i] * a1 + fops[i, 1] * u
+                             + fops[n + i, 1] * v)
+                lin_i0 += fops[i, 2] * u + fops[n + i, 2] * v
+                lin_i1 += fops[i, 3] * u + fops[n + i, 3] * v
+        for b in range(nblk if nblk < n else 0):
             p = blk[b]
             nb = blk[b + 1] - p
             if nb == 1:
