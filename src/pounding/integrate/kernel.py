@@ -135,14 +135,14 @@ def _band_mv(kb, cb, y, n, bw, lin):
 
 
 @njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
-def _deriv(y, ag, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw, cgap, ccode, cparams,
+def _deriv(y, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
            committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
     per-contact F δ̇].
 
     ``y = [u (n), u̇ (n), z (one per Bouc–Wen storey)]``. Writes row ``row`` of ``dy`` and
-    ``power`` (2-D arrays: no views in the hot loop). Contact forces and yielding storeys
-    use their committed states (read only).
+    ``power`` (2-D arrays: no views in the hot loop); ``m_inv``: 1 / floor mass. Contact
+    forces and yielding storeys use their committed states (read only).
     """
     nc = cgap.shape[0]
     # linear part: acc = −M⁻¹(K u + C v) − r a_g, K (linear storeys only) and C banded
@@ -152,7 +152,7 @@ def _deriv(y, ag, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw, cgap, ccode, c
     p_d = 0.0
     for i in range(n):
         dy[row, i] = y[n + i]
-        dy[row, n + i] = -(lin[0, i] + lin[1, i]) / m_diag[i] - r[i] * ag
+        dy[row, n + i] = -(lin[0, i] + lin[1, i]) * m_inv[i] - r[i] * ag
         p_in -= y[n + i] * mr[i] * ag
         p_d += y[n + i] * lin[1, i]
     power[row, P_INPUT] = p_in
@@ -166,9 +166,9 @@ def _deriv(y, ag, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw, cgap, ccode, c
         v, kt, zd = storey_trial(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])
         hi = s_hi[s]
         lo = s_lo[s]
-        dy[row, n + hi] -= v / m_diag[hi]
+        dy[row, n + hi] -= v * m_inv[hi]
         if lo >= 0:
-            dy[row, n + lo] += v / m_diag[lo]
+            dy[row, n + lo] += v * m_inv[lo]
         if zi >= 0:
             dy[row, 2 * n + zi] = zd
         p_s += v * dr
@@ -191,16 +191,18 @@ def _deriv(y, ag, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw, cgap, ccode, c
             # the floors with the point's weights (−w F on each)
             for q in range(4):
                 j = cdof[c, q]
-                dy[row, n + j] -= cw[c, q] * f / m_diag[j]
+                dy[row, n + j] -= cw[c, q] * f * m_inv[j]
 
 
 @njit(**_NRT_FREE)
-def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw, cgap,
-             ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps,
-             ytmp, y1, atol, rtol):
+def _rk_step(y0, k1, p1, h, ag0, dag, s0, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof,
+             cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin,
+             ks, ps, ytmp, y1, atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
 
-    ``ag0 + dag * s`` is the ground acceleration at local time s; s0 is the local start.
+    ``ag0 + dag * s`` is the ground acceleration at local time s; s0 is the local start;
+    ``ag_end`` the value at the step end (given, so that a step ending on a grid point uses
+    the record value there bit for bit, and its last stage is the next step's first).
     Writes y1 and the stage derivatives/powers (ks, ps: 7 rows); returns the error norm.
     Row 6 of ks/ps is f at y1 (first-same-as-last).
     """
@@ -211,30 +213,30 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, n, bw, k_band, c_band, m_diag, mr, r, 
         ps[0, i] = p1[0, i]
     for i in range(m):
         ytmp[i] = y0[i] + h * _A21 * ks[0, i]
-    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
+    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 1)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A31 * ks[0, i] + _A32 * ks[1, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
+    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 2)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A41 * ks[0, i] + _A42 * ks[1, i] + _A43 * ks[2, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
+    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 3)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A51 * ks[0, i] + _A52 * ks[1, i] + _A53 * ks[2, i]
                                + _A54 * ks[3, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
+    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 4)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A61 * ks[0, i] + _A62 * ks[1, i] + _A63 * ks[2, i]
                                + _A64 * ks[3, i] + _A65 * ks[4, i])
-    _deriv(ytmp, ag0 + dag * (s0 + h), n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
+    _deriv(ytmp, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 5)
     for i in range(m):
         y1[i] = y0[i] + h * (_B1 * ks[0, i] + _B3 * ks[2, i] + _B4 * ks[3, i]
                              + _B5 * ks[4, i] + _B6 * ks[5, i])
-    _deriv(y1, ag0 + dag * (s0 + h), n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
+    _deriv(y1, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 6)
     err = 0.0
     for i in range(m):
@@ -631,6 +633,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
         gd[c] = dsum - cgap[c]
 
     onset_c = -1  # contact whose onset ended the last accepted step (−1: none)
+    kx_at = -1  # grid point at which kx holds f(x) (its last RK step's FSAL stage), or −1
     k = k0
     while k < k1:
         if ws_i[I_MODE] == 0:
@@ -649,16 +652,23 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
             # ---------------- adaptive RK with events, landing on t_k + dt
             s = 0.0
             h = min(ws_f[W_H], dt, h_max)
-            _deriv(x, a0, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw, cgap, ccode, cparams,
-                   committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx, px, 0)
+            if kx_at != k:
+                # (else the last step of the previous grid step ended here, evaluating
+                # f(x, ag[k]) as its last stage: the same numbers)
+                _deriv(x, a0, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+                       cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx,
+                       px, 0)
+            kx_at = -1
+            on_grid = False
             while s < dt:
                 last = False
                 if s + h >= dt * (1.0 - 1e-12):
                     h = dt - s
                     last = True
-                err = _rk_step(x, kx, px, h, a0, dag, s, n, bw, k_band, c_band, m_diag, mr, r, 
-                               cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp,
-                               y1, atol, rtol)
+                a_end = a1 if last else a0 + dag * (s + h)
+                err = _rk_step(x, kx, px, h, a0, dag, s, a_end, n, bw, k_band, c_band, m_inv,
+                               mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi,
+                               s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1, atol, rtol)
                 ws_i[I_NSTEPS] += 1
                 if err > 1.0 or not np.isfinite(err):
                     ws_i[I_NREJECT] += 1
@@ -690,9 +700,10 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                     found_hi = side_ok
                     if not side_ok:
                         # grazing: both ends on the 'before' side; test the estimate
-                        err = _rk_step(x, kx, px, te, a0, dag, s, n, bw, k_band, c_band, m_diag, mr,
-                                       r,  cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin,
-                                       ks_b, ps_b, ytmp, yb, atol, rtol)
+                        err = _rk_step(x, kx, px, te, a0, dag, s, a0 + dag * (s + te), n, bw,
+                                       k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+                                       cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
+                                       sstate, lin, ks_b, ps_b, ytmp, yb, atol, rtol)
                         g_te = _event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
                         if (g_te > 0.0) == upward and g_te != 0.0:
                             hi = te
@@ -710,9 +721,10 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                     side = 0
                     have_after = False
                     for _ in range(60):
-                        err = _rk_step(x, kx, px, t_try, a0, dag, s, n, bw, k_band, c_band,
-                                       m_diag, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin,
-                                       ks_b, ps_b, ytmp, yb, atol, rtol)
+                        err = _rk_step(x, kx, px, t_try, a0, dag, s, a0 + dag * (s + t_try),
+                                       n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                                       ccode, cparams, committed, s_lo, s_hi, s_code, s_par,
+                                       s_zi, sstate, lin, ks_b, ps_b, ytmp, yb, atol, rtol)
                         ws_i[I_NSTEPS] += 1
                         g = _event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
                         after = (g > 0.0) if upward else (g <= 0.0)
@@ -748,8 +760,11 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                             t_try = 0.5 * (lo + hi)
                     if not have_after:
                         # the bracket's after end is the full step (or the grazing test)
-                        err_after = _rk_step(x, kx, px, hi, a0, dag, s, n, bw, k_band, c_band,
-                                             m_diag, mr, r,  cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1, atol, rtol)
+                        err_after = _rk_step(x, kx, px, hi, a0, dag, s, a0 + dag * (s + hi), n,
+                                             bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                                             ccode, cparams, committed, s_lo, s_hi, s_code,
+                                             s_par, s_zi, sstate, lin, ks, ps, ytmp, y1, atol,
+                                             rtol)
                         ws_i[I_NSTEPS] += 1
                     err = err_after
                     h_acc = hi
@@ -781,6 +796,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                 for i in range(m):
                     x[i] = y1[i]
                 s_new = dt if last else s + h_acc
+                on_grid = last
                 t_now = t_k + s_new
                 # commit the yielding storeys (contract step 3 of pounding.hysteresis.base)
                 for q in range(ns):
@@ -876,9 +892,10 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                             if ev_c == c:
                                 ws_i[I_NEVENTS] += 1
                 if state_changed:
-                    _deriv(x, a0 + dag * s_new, n, bw, k_band, c_band, m_diag, mr, r, cdof, cw,
-                           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
-                           sstate, lin, kx, px, 0)
+                    a_end = a1 if last else a0 + dag * s_new
+                    _deriv(x, a_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                           ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
+                           lin, kx, px, 0)
                 else:
                     for i in range(m):
                         kx[0, i] = ks[6, i]
@@ -899,6 +916,8 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                 h = ws_f[W_H]
                 h = min(h, h_max)
                 s = s_new
+            if on_grid:
+                kx_at = k + 1
             # back to exact stepping once every contact is open
             any_closed = False
             for c in range(nc):
