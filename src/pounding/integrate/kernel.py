@@ -410,6 +410,17 @@ def _find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, committed, s_lo, s_hi, ski
     return best_t, best_c, best_k
 
 
+@njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+def _one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1):
+    """The exact step of a one-floor block p (the block sweep of :func:`_free_run`, written
+    out): writes ``x1[p]``, ``x1[n + p]``; returns the block's two input-energy terms."""
+    u = x[p]
+    v = x[n + p]
+    x1[p] = g0[p] * a0 + g1[p] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
+    x1[n + p] = g0[n + p] * a0 + g1[n + p] * a1 + fops[p, 1] * u + fops[n + p, 1] * v
+    return (fops[p, 2] * u + fops[n + p, 2] * v, fops[p, 3] * u + fops[n + p, 3] * v)
+
+
 @njit(**_NRT_FREE)
 def _free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, m_inv, cdof,
               cw, cgap, x, x1, acc, lin, gd, gr, gd1, gr1, wc, ws_f, u_out, v_out, acc_out,
@@ -442,28 +453,18 @@ def _free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
         lin_i0 = 0.0
         lin_i1 = 0.0
         if nblk == n:
-            # every floor a block of its own (a row of SDOF oscillators): the sums below,
-            # written out floor by floor
+            # every floor a block of its own (a row of SDOF oscillators): no block loop
             for i in range(n):
-                u = x[i]
-                v = x[n + i]
-                x1[i] = g0[i] * a0 + g1[i] * a1 + fops[i, 0] * u + fops[n + i, 0] * v
-                x1[n + i] = (g0[n + i] * a0 + g1[n + i] * a1 + fops[i, 1] * u
-                             + fops[n + i, 1] * v)
-                lin_i0 += fops[i, 2] * u + fops[n + i, 2] * v
-                lin_i1 += fops[i, 3] * u + fops[n + i, 3] * v
+                w0, w1 = _one_floor_step(i, n, x, x1, fops, g0, g1, a0, a1)
+                lin_i0 += w0
+                lin_i1 += w1
         for b in range(nblk if nblk < n else 0):
             p = blk[b]
             nb = blk[b + 1] - p
             if nb == 1:
-                # one floor: the same sums as below, written out
-                u = x[p]
-                v = x[n + p]
-                x1[p] = g0[p] * a0 + g1[p] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
-                x1[n + p] = (g0[n + p] * a0 + g1[n + p] * a1 + fops[p, 1] * u
-                             + fops[n + p, 1] * v)
-                lin_i0 += fops[p, 2] * u + fops[n + p, 2] * v
-                lin_i1 += fops[p, 3] * u + fops[n + p, 3] * v
+                w0, w1 = _one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1)
+                lin_i0 += w0
+                lin_i1 += w1
                 continue
             nb2 = 2 * nb
             rows = nb2 + 2
