@@ -82,7 +82,7 @@ def _loop_deriv(calls, y, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
     total = 0.0
     for _ in range(calls):
         y[0] += 1e-12
-        kernel._deriv(y, 0.1, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+        kernel._deriv(y, y, 0.1, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                       cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 1)
         total += ks[1, n]
     return total
@@ -138,7 +138,7 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
     structure = (a["bw"], a["k_band"], a["c_band"], m_inv, a["mr"], a["r"])
     contacts = (a["cdof"], a["cw"], a["cgap"], a["ccode"], a["cparams"])
     storeys = (a["s_lo"], a["s_hi"], a["s_code"], a["s_par"], a["s_zi"], a["sstate"], lin)
-    kernel._deriv(y, 0.1, n, *structure, *contacts, closed, *storeys, kx, px, 0)
+    kernel._deriv(y, y, 0.1, n, *structure, *contacts, closed, *storeys, kx, px, 0)
     rk = per_call_ns(_loop_rk_step, calls, y, kx, px, n, *structure, *contacts, closed,
                      *storeys, ks, ps, np.zeros(m), np.zeros(m), a["atol"], a["rtol"])
     rows.append(("one Dormand–Prince step (contact closed)", f"{rk:.0f} ns"))

@@ -36,7 +36,17 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
+from pounding.contact.base import (
+    BILINEAR_IMPACT,
+    DMAX,
+    KELVIN_VOIGT,
+    LINEAR_SPRING,
+    MODIFIED_KELVIN_VOIGT,
+    SLIP,
+    STATE_SIZE,
+    V0,
+    V0_MIN,
+)
 from pounding.contact.dispatch import law_trial, stored_energy
 from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
@@ -69,6 +79,10 @@ tighter only costs RK steps (measured: about 5 % of them for the SDOF pair)."""
 
 DELTA_EPS: float = 1e-300
 """Penetration at which a closed contact is evaluated when δ ≤ 0 inside a step [m]."""
+
+RATE_SIDE: float = 1e-300
+"""A closing rate [m/s] just above zero: where a law is evaluated on its approach branch
+at δ̇ = 0 (see :func:`_deriv`)."""
 
 # Columns of the impact table
 IMP_CONTACT, IMP_START, IMP_END, IMP_V0, IMP_PEAK, IMP_DMAX, IMP_E, IMP_ENERGY = range(8)
@@ -134,13 +148,21 @@ def _band_mv(kb, cb, y, n, bw, lin):
             lin[1, i] += cb[d, i] * y[n + i + off]
 
 
+@njit(cache=True, inline="always")
+def _linear_spring(code):
+    """True for the laws whose spring is linear in δ (bounded tangent at δ = 0)."""
+    return (code == LINEAR_SPRING or code == KELVIN_VOIGT or code == MODIFIED_KELVIN_VOIGT
+            or code == BILINEAR_IMPACT)
+
+
 @njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
-def _deriv(y, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
+def _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
            committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
     per-contact F δ̇].
 
-    ``y = [u (n), u̇ (n), z (one per Bouc–Wen storey)]``. Writes row ``row`` of ``dy`` and
+    ``y = [u (n), u̇ (n), z (one per Bouc–Wen storey)]``; ``y_start``: the state at the
+    start of the step (``y`` itself outside a step). Writes row ``row`` of ``dy`` and
     ``power`` (2-D arrays: no views in the hot loop); ``m_inv``: 1 / floor mass. Contact
     forces and yielding storeys use their committed states (read only).
     """
@@ -177,14 +199,30 @@ def _deriv(y, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cp
         dsum, rate = _gap(c, y, n, cdof, cw)
         delta = dsum - cgap[c]
         # Inside a step the contact keeps its committed status: an open contact pushes
-        # nothing even where δ > 0, a closed one follows its law's one-sided limit even
-        # where δ ≤ 0. Status changes only at located events, so every step integrates a
-        # smooth right-hand side (no force jump inside a step to spoil the error estimate).
+        # nothing even where δ > 0; a closed one goes on past δ = 0, and past δ̇ = 0 keeps
+        # the approach or restitution branch the step began on, its law continued smoothly
+        # (below). Status and branch change only at located events, so every
+        # step integrates a smooth right-hand side: no jump or kink in a force inside a
+        # step to spoil the error estimate and have the step rejected.
         f = 0.0
         if committed[c, V0] > 0.0:
-            f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
-                          max(delta, DELTA_EPS), rate, committed[c, V0], committed[c, SLIP],
-                          committed[c, DMAX])[0]
+            # the law at max(δ, DELTA_EPS), on the δ̇ branch the step began on (at RATE_SIDE
+            # for approach, 0 for restitution), continued linearly: in δ̇ with ∂F/∂δ̇ (every
+            # law here is linear in δ̇ on a branch), and in δ with ∂F/∂δ for the laws with
+            # a linear spring. A Hertz spring's force and stiffness both vanish at δ = 0,
+            # so its limit there is already smooth (and its ∂F/∂δ, unbounded at δ = 0
+            # while approaching, is not used). Where nothing is crossed this is the law.
+            rate_law = rate
+            rate_start = _gap(c, y_start, n, cdof, cw)[1]
+            if (rate_start > 0.0) != (rate > 0.0):
+                rate_law = RATE_SIDE if rate_start > 0.0 else 0.0
+            f, kd, kr, _, _, _ = law_trial(ccode[c], cparams[c, 0], cparams[c, 1],
+                                           cparams[c, 2], max(delta, DELTA_EPS), rate_law,
+                                           committed[c, V0], committed[c, SLIP],
+                                           committed[c, DMAX])
+            f += kr * (rate - rate_law)
+            if delta < DELTA_EPS and _linear_spring(ccode[c]):
+                f += kd * (delta - DELTA_EPS)
         power[row, P_CONTACT + c] = f * rate
         if f != 0.0:
             # the force pushes the left point left and the right point right, shared to
@@ -213,30 +251,30 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, ag_end, n, bw, k_band, c_band, m_inv, 
         ps[0, i] = p1[0, i]
     for i in range(m):
         ytmp[i] = y0[i] + h * _A21 * ks[0, i]
-    _deriv(ytmp, ag0 + dag * (s0 + _C2 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+    _deriv(ytmp, y0, ag0 + dag * (s0 + _C2 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 1)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A31 * ks[0, i] + _A32 * ks[1, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C3 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+    _deriv(ytmp, y0, ag0 + dag * (s0 + _C3 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 2)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A41 * ks[0, i] + _A42 * ks[1, i] + _A43 * ks[2, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C4 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+    _deriv(ytmp, y0, ag0 + dag * (s0 + _C4 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 3)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A51 * ks[0, i] + _A52 * ks[1, i] + _A53 * ks[2, i]
                                + _A54 * ks[3, i])
-    _deriv(ytmp, ag0 + dag * (s0 + _C5 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+    _deriv(ytmp, y0, ag0 + dag * (s0 + _C5 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 4)
     for i in range(m):
         ytmp[i] = y0[i] + h * (_A61 * ks[0, i] + _A62 * ks[1, i] + _A63 * ks[2, i]
                                + _A64 * ks[3, i] + _A65 * ks[4, i])
-    _deriv(ytmp, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+    _deriv(ytmp, y0, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 5)
     for i in range(m):
         y1[i] = y0[i] + h * (_B1 * ks[0, i] + _B3 * ks[2, i] + _B4 * ks[3, i]
                              + _B5 * ks[4, i] + _B6 * ks[5, i])
-    _deriv(y1, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+    _deriv(y1, y0, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
            cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 6)
     err = 0.0
     for i in range(m):
@@ -656,7 +694,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
             if kx_at != k:
                 # (else the last step of the previous grid step ended here, evaluating
                 # f(x, ag[k]) as its last stage: the same numbers)
-                _deriv(x, a0, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+                _deriv(x, x, a0, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                        cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx,
                        px, 0)
             kx_at = -1
@@ -894,7 +932,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                                 ws_i[I_NEVENTS] += 1
                 if state_changed:
                     a_end = a1 if last else a0 + dag * s_new
-                    _deriv(x, a_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                    _deriv(x, x, a_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                            ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
                            lin, kx, px, 0)
                 else:
