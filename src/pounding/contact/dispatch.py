@@ -102,7 +102,7 @@ def stored_energy(code, p0, p1, p2, delta, slip):
     if code == HERTZ or code == HUNT_CROSSLEY:
         return p0 * delta ** (p1 + 1.0) / (p1 + 1.0)
     if code == NONLINEAR_VISCOELASTIC:
-        return p0 * delta**2.5 / 2.5
+        return p0 * delta * delta * np.sqrt(delta) / 2.5  # k_h δ^2.5 / 2.5
     # bilinear: K2 spring plus the elastic part of the elasto-plastic branch
     kp = p0 - p1
     fp = min(max(kp * (delta - slip), 0.0), kp * p2)
