@@ -42,6 +42,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import opensees_inelastic as osi  # noqa: E402
+from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from bench_opensees import best_of, header, linear_peaks, pct, table  # noqa: E402
 from pounding.ground_motion import GroundMotion, el_centro  # noqa: E402
@@ -271,11 +272,16 @@ def main(argv: list[str] | None = None) -> int:
                     help="seconds of El Centro to use (default: the whole record)")
     ap.add_argument("--repeat", type=int, default=3, help="timing repeats, best kept (3)")
     ap.add_argument("--dt", type=float, default=1e-3, help="output / analysis step [s] (1e-3)")
+    ap.add_argument("--fresh-memory", action="store_true",
+                    help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
+                         "see benchmarks/_memory.py)")
     args = ap.parse_args(argv)
     wanted = [s.strip() for s in args.sections.split(",") if s.strip()]
     bad = [s for s in wanted if s not in SECTIONS]
     if bad:
         ap.error(f"unknown section(s) {bad}; choose from {list(SECTIONS)}")
+    if not args.fresh_memory:
+        keep_freed_memory()
 
     import platform
     from importlib.metadata import PackageNotFoundError, version

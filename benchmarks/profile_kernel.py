@@ -14,12 +14,10 @@ kernel (caught on their way in), so this measures the shipped code, not a copy. 
     python benchmarks/profile_kernel.py            # both laws
     python benchmarks/profile_kernel.py --law jankowski --calls 200000
 
-Timings on a shared machine move by about ±10 %; take the best of a few runs. The whole-
-kernel figures also include first-touch page faults of the output arrays whenever glibc
-hands them out as fresh memory (allocations over its mmap threshold), which can add
-~0.8 ms to a 40 s record; ``MALLOC_MMAP_THRESHOLD_=1000000000
-MALLOC_TRIM_THRESHOLD_=2000000000 python benchmarks/profile_kernel.py`` keeps freed memory
-for reuse and shows the kernel without them.
+Timings on a shared machine move by about ±10 %; take the best of a few runs. Freed
+memory is kept for reuse (``benchmarks/_memory.py``); ``--fresh-memory`` leaves glibc's
+malloc alone, and the whole-kernel figures then include first-touch page faults of the
+output arrays on some calls.
 """
 
 from __future__ import annotations
@@ -35,6 +33,7 @@ from numba import njit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_opensees as bench  # noqa: E402
+from _memory import keep_freed_memory  # noqa: E402
 
 import pounding.integrate as integrate  # noqa: E402
 from pounding.contact.base import V0  # noqa: E402
@@ -162,7 +161,11 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--law", choices=("kelvin-voigt", "jankowski", "both"), default="both")
     p.add_argument("--calls", type=int, default=100_000, help="calls per timed loop")
     p.add_argument("--repeat", type=int, default=20, help="whole-kernel timings, best kept")
+    p.add_argument("--fresh-memory", action="store_true",
+                   help="leave glibc's malloc as it is (see benchmarks/_memory.py)")
     args = p.parse_args(argv)
+    if not args.fresh_memory:
+        keep_freed_memory()
     laws = ("kelvin-voigt", "jankowski") if args.law == "both" else (args.law,)
     for law in laws:
         print(f"SDOF pair, {law} (El Centro, 1 ms)")
