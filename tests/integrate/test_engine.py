@@ -271,3 +271,27 @@ def test_row_of_three_with_different_heights_matches_reference():
     assert res.n_impacts == ref.n_impacts > 5
     np.testing.assert_allclose(res.peak_contact_force, ref.peak_contact_force, rtol=5e-4)
     np.testing.assert_allclose(res.impacts["peak_force"], ref.impacts["peak_force"], rtol=1e-3)
+
+
+@pytest.mark.parametrize("case", ["exact", "rk", "yielding"])
+def test_every_output_row_is_written(case, el_centro_8s, monkeypatch):
+    """simulate() allocates its histories uninitialised and relies on the kernel to write
+    every row: allocate them full of NaN instead and no NaN may survive (contacts closing
+    and opening, exact and adaptive stepping, yielding storeys, progress chunks)."""
+    import pounding.integrate as integrate
+    from pounding.hysteresis import Bilinear
+
+    monkeypatch.setattr(integrate.np, "empty",
+                        lambda shape, dtype=float: np.full(shape, np.nan, dtype=dtype))
+    model = sdof_pair(KV)
+    mode = "rk" if case == "rk" else "auto"
+    if case == "yielding":
+        left = ShearBuilding.sdof(M1, period=T1, damping_ratio=0.05).with_storey_law(
+            Bilinear(yield_force=0.15 * M1 * 9.81, hardening=0.05))
+        model = PoundingModel([left, ShearBuilding.sdof(M2, period=T2, damping_ratio=0.05)],
+                              [0.02], KV)
+    res = simulate(model, el_centro_8s, free_stepping=mode, progress=lambda f: None)
+    assert res.n_impacts > 0
+    for name in ("displacement", "velocity", "abs_acceleration", "penetration",
+                 "contact_force", "energy"):
+        assert np.all(np.isfinite(np.asarray(getattr(res, name)))), name
