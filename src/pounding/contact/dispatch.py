@@ -59,6 +59,15 @@ def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
     return bilinear_impact_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
 
 
+@njit(cache=True, inline="always")
+def has_linear_spring(code):
+    """True for the laws whose spring is linear in δ (∂F/∂δ bounded at δ = 0): linear
+    spring, Kelvin–Voigt, modified Kelvin–Voigt, bilinear impact. The Hertz family's is not
+    (a Hertz-damped law's ∂F/∂δ is unbounded at δ = 0 while approaching)."""
+    return (code == LINEAR_SPRING or code == KELVIN_VOIGT or code == MODIFIED_KELVIN_VOIGT
+            or code == BILINEAR_IMPACT)
+
+
 @njit(cache=True)
 def contact_trial(code, params, delta, rate, committed, out):
     """Array form of :func:`law_trial`: reads ``committed`` (STATE_SIZE), writes the trial

@@ -214,9 +214,8 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         How steps without contact are taken: ``"exact"`` propagator (O(N²) a step, exact),
         adaptive ``"rk"`` (O(N·bandwidth) a step), or ``"auto"``: exact up to
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
-        beyond. A model
-        with yielding storeys is not linear between impacts, so it is always stepped by RK
-        (``"exact"`` is refused).
+        beyond. A model with yielding storeys is not linear between impacts, so it is always
+        stepped by RK (``"exact"`` is refused).
     progress : callable, optional
         Called with the fraction done (0 … 1) after each chunk of steps.
 

@@ -36,28 +36,19 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import (
-    BILINEAR_IMPACT,
-    DMAX,
-    KELVIN_VOIGT,
-    LINEAR_SPRING,
-    MODIFIED_KELVIN_VOIGT,
-    SLIP,
-    STATE_SIZE,
-    V0,
-    V0_MIN,
-)
-from pounding.contact.dispatch import law_trial, stored_energy
+from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
+from pounding.contact.dispatch import has_linear_spring, law_trial, stored_energy
 from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 
 _NRT_FREE = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
                  _nrt=False)
 """Options of the kernel's working functions. They allocate nothing (the scratch comes from
-:func:`integrate_chunk`), so they run with numba's reference-counting runtime off: with it
-on, every array passed to a call or to an inlined helper costs an atomic increment and
-decrement, which made an RK stage of a small model several times dearer than its
-arithmetic (measured: 120 ns against 20 ns for the SDOF pair's right-hand side)."""
+:func:`integrate_chunk`), so they run with numba's reference-counting runtime off: no array
+passed to a call costs an atomic increment and decrement. (When introduced this took the
+SDOF pair's right-hand side from 120 ns to 20 ns; with every right-hand side now inlined
+into the step, turning the runtime back on changes the kernel's time by no more than the
+run-to-run noise: docs/engine.md.)"""
 
 # Dormand–Prince 5(4) tableau
 _C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
@@ -148,13 +139,6 @@ def _band_mv(kb, cb, y, n, bw, lin):
             lin[1, i] += cb[d, i] * y[n + i + off]
 
 
-@njit(cache=True, inline="always")
-def _linear_spring(code):
-    """True for the laws whose spring is linear in δ (bounded tangent at δ = 0)."""
-    return (code == LINEAR_SPRING or code == KELVIN_VOIGT or code == MODIFIED_KELVIN_VOIGT
-            or code == BILINEAR_IMPACT)
-
-
 @njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
 def _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
            committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
@@ -221,7 +205,7 @@ def _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, 
                                            committed[c, V0], committed[c, SLIP],
                                            committed[c, DMAX])
             f += kr * (rate - rate_law)
-            if delta < DELTA_EPS and _linear_spring(ccode[c]):
+            if delta < DELTA_EPS and has_linear_spring(ccode[c]):
                 f += kd * (delta - DELTA_EPS)
         power[row, P_CONTACT + c] = f * rate
         if f != 0.0:
@@ -496,33 +480,34 @@ def _free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
                 w0, w1 = _one_floor_step(i, n, x, x1, fops, g0, g1, a0, a1)
                 lin_i0 += w0
                 lin_i1 += w1
-        for b in range(nblk if nblk < n else 0):
-            p = blk[b]
-            nb = blk[b + 1] - p
-            if nb == 1:
-                w0, w1 = _one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1)
-                lin_i0 += w0
-                lin_i1 += w1
-                continue
-            nb2 = 2 * nb
-            rows = nb2 + 2
-            for l in range(nb):
-                acc[l] = g0[p + l] * a0 + g1[p + l] * a1
-                acc[nb + l] = g0[n + p + l] * a0 + g1[n + p + l] * a1
-            acc[nb2] = 0.0
-            acc[nb2 + 1] = 0.0
-            # columns of floor j's displacement and velocity together; the loop over rows
-            # vectorises without reassociation
-            for j in range(nb):
-                xu = x[p + j]
-                xv = x[n + p + j]
-                for l in range(rows):
-                    acc[l] = acc[l] + fops[p + j, l] * xu + fops[n + p + j, l] * xv
-            for l in range(nb):
-                x1[p + l] = acc[l]
-                x1[n + p + l] = acc[nb + l]
-            lin_i0 += acc[nb2]
-            lin_i1 += acc[nb2 + 1]
+        else:
+            for b in range(nblk):
+                p = blk[b]
+                nb = blk[b + 1] - p
+                if nb == 1:
+                    w0, w1 = _one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1)
+                    lin_i0 += w0
+                    lin_i1 += w1
+                    continue
+                nb2 = 2 * nb
+                rows = nb2 + 2
+                for ir in range(nb):
+                    acc[ir] = g0[p + ir] * a0 + g1[p + ir] * a1
+                    acc[nb + ir] = g0[n + p + ir] * a0 + g1[n + p + ir] * a1
+                acc[nb2] = 0.0
+                acc[nb2 + 1] = 0.0
+                # columns of floor j's displacement and velocity together; the loop over rows
+                # vectorises without reassociation
+                for j in range(nb):
+                    xu = x[p + j]
+                    xv = x[n + p + j]
+                    for ir in range(rows):
+                        acc[ir] = acc[ir] + fops[p + j, ir] * xu + fops[n + p + j, ir] * xv
+                for ir in range(nb):
+                    x1[p + ir] = acc[ir]
+                    x1[n + p + ir] = acc[nb + ir]
+                lin_i0 += acc[nb2]
+                lin_i1 += acc[nb2 + 1]
         # does any gap close at the step end or inside it (interior maximum of the cubic
         # Hermite of δ)? Then the step is not taken.
         for c in range(nc):
