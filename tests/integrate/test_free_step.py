@@ -115,3 +115,43 @@ def test_record_grid_is_remembered_read_only():
     assert not a.flags.writeable
     assert np.array_equal(a, ground_on_grid(gm, 0.005, 0.3))
     assert _ground_on_grid_memo(gm, 0.01, 0.3).size != a.size
+
+
+def test_kernel_model_is_assembled_once_per_model_and_forgotten_with_it():
+    import gc
+
+    from pounding.integrate import _KERNEL_MODELS, band_storage, kernel_model
+
+    model = _pair()
+    km = kernel_model(model)
+    assert kernel_model(model) is km
+    # the arrays are the model's own, assembled independently here
+    sys_ = model.system
+    assert np.array_equal(km.k_band, band_storage(sys_.K, km.bw))
+    assert np.array_equal(km.c_band, band_storage(sys_.C, km.bw))
+    assert np.array_equal(km.m_diag, np.diag(sys_.M))
+    assert np.array_equal(km.mr, sys_.M @ sys_.r)
+    assert np.array_equal(km.cgap, [c.gap for c in model.contacts])
+    # writeable, so numba keeps one compiled signature (the kernel never writes them)
+    assert all(a.flags.writeable for a in (km.k_band, km.c_band, km.m_diag, km.cparams))
+    key = id(model)
+    assert key in _KERNEL_MODELS
+    del model, km
+    gc.collect()
+    assert key not in _KERNEL_MODELS
+
+
+def test_start_at_rest_shortcut_matches_the_general_start():
+    from pounding.ground_motion import GroundMotion
+    from pounding.integrate import simulate
+
+    model = _pair()
+    gm = GroundMotion(0.01, 3.0 * np.sin(np.arange(200) * 0.25), name="shortcut")
+    a = simulate(model, gm, dt=0.005)
+    b = simulate(model, gm, dt=0.005, initial_displacement=np.zeros(5),
+                 initial_velocity=np.zeros(5))
+    assert a.stats.rk_steps > 0 and len(a.impacts) > 0  # the gap does close
+    for name in ("displacement", "velocity", "abs_acceleration", "penetration",
+                 "contact_force", "energy"):
+        assert np.array_equal(getattr(a, name), getattr(b, name)), name
+    assert np.array_equal(a.penetration[0], [-0.02, -0.02])  # two shared floors
