@@ -141,6 +141,16 @@ def test_missing_model_file_exits_2(tmp_path: Path, capsys: pytest.CaptureFixtur
     assert not (tmp_path / "o").exists()
 
 
+def test_sweep_file_given_to_run_says_to_use_sweep(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    sweep = Path(__file__).resolve().parents[1] / "examples" / "sweep_gap_e.toml"
+    assert main(["run", str(sweep), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert "this is a sweep file" in err and f"pounding sweep {sweep}" in err
+    assert not (tmp_path / "o").exists()
+
+
 def test_demo(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "demo"
     assert main(["demo", "--out", str(out)]) == 0

@@ -656,6 +656,9 @@ def load_config(path: str | os.PathLike[str]) -> RunConfig:
     """
     p = Path(path)
     data = read_toml(p, "model file")
+    if "base" in data and any(k in data for k in ("grid", "list", "random")):
+        raise ValueError(f"{p}: this is a sweep file (it has 'base' and a [grid], [list] or "
+                         f"[random] table), not a model file: run it with `pounding sweep {p}`")
     cfg = parse_config(data, base_dir=p.resolve().parent, where=str(p))
     cfg._source = p.resolve()
     return cfg

@@ -62,7 +62,8 @@ class SolverStats:
     events: int = 0
     impact_overflow: bool = False
     wall_time: float = 0.0
-    """Seconds spent integrating (excluding set-up)."""
+    """Seconds spent integrating (excluding set-up, and the loading of the compiled kernel
+    that the first run in a process pays)."""
 
 
 @dataclass(frozen=True, eq=False)
