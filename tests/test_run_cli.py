@@ -308,3 +308,20 @@ def test_floor_to_column_example_runs_from_the_cli(tmp_path: Path,
     assert main(["gap", str(model_file), "--duration", "8"]) == 0
     gap_text = capsys.readouterr().out
     assert "critical separation gap" in gap_text and "11.5" in gap_text   # a column level
+
+
+def test_a_bar_stuck_at_zero_says_the_solver_is_compiling() -> None:
+    from rich.progress import Progress
+
+    from pounding.cli.commands_run import COMPILE_NOTE_AFTER, _CompilingNote
+
+    clock = [0.0]
+    bar = Progress(get_time=lambda: clock[0])
+    task_id = bar.add_task("simulating", total=1.0)
+    task = bar.tasks[0]
+    note = _CompilingNote()
+    assert note.render(task).plain == ""  # just started
+    clock[0] = COMPILE_NOTE_AFTER + 1.0
+    assert "compiling the solver" in note.render(task).plain
+    bar.update(task_id, completed=0.02)  # the first chunk is done: running, not compiling
+    assert note.render(task).plain == ""

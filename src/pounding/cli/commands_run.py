@@ -16,6 +16,8 @@ import typer
 from rich.progress import (
     BarColumn,
     Progress,
+    ProgressColumn,
+    Task,
     TaskProgressColumn,
     TextColumn,
     TimeElapsedColumn,
@@ -44,11 +46,27 @@ class _DelayedProgress(Progress):
             yield from super().get_renderables()
 
 
+COMPILE_NOTE_AFTER = 5.0
+"""Seconds at 0 % after which the bar says why: the first run compiles the solver."""
+
+
+class _CompilingNote(ProgressColumn):
+    """Says what a bar stuck at 0 % is waiting for: on the first run after an install (or
+    after the kernel's source changed) numba compiles the solver, which takes minutes on a
+    small machine; the compiled code is cached, and later runs start at once."""
+
+    def render(self, task: Task) -> Text:
+        if task.completed == 0 and (task.elapsed or 0.0) >= COMPILE_NOTE_AFTER:
+            return Text("compiling the solver: first run only, a few minutes (cached after)",
+                        style="dim")
+        return Text("")
+
+
 @contextlib.contextmanager
 def _progress_bar(label: str) -> Iterator[Callable[[float], None]]:
     bar = _DelayedProgress(TextColumn("[bold]{task.description}"), BarColumn(),
                            TaskProgressColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-                           console=console, transient=True)
+                           _CompilingNote(), console=console, transient=True)
     task = bar.add_task(label, total=1.0)
 
     def update(fraction: float) -> None:
