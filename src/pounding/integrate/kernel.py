@@ -139,6 +139,28 @@ def _band_mv(kb, cb, y, n, bw, lin):
             lin[1, i] += cb[d, i] * y[n + i + off]
 
 
+@njit(**_NRT_FREE)
+def _law_out_of_line(code, p0, p1, p2, delta, rate, v0, slip, dmax):
+    """:func:`pounding.contact.dispatch.law_trial`, called rather than inlined where
+    :func:`_deriv` needs it.
+
+    ``_deriv`` is inlined into each of a Dormand–Prince step's six stages; with every contact
+    law inlined into it as well, all the laws were compiled six times over, and a first run
+    compiled for 240 s on 2 cores. Called, they compile once: 78 s, and no measurable change
+    in the kernel's time (a closed contact's right-hand side 21 → 25 ns for Kelvin–Voigt, the
+    SDOF pair's kernel within the run-to-run noise; 2026-11-23,
+    ``benchmarks/profile_kernel.py``).
+    """
+    return law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax)
+
+
+@njit(**_NRT_FREE)
+def _storey_out_of_line(code, par, s, d, dr, z, d_c, v_c):
+    """:func:`pounding.hysteresis.dispatch.storey_trial`, called rather than inlined in
+    :func:`_deriv`, for the reason given in :func:`_law_out_of_line`."""
+    return storey_trial(code, par, s, d, dr, z, d_c, v_c)
+
+
 @njit(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
 def _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
            committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
@@ -179,7 +201,8 @@ def _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, 
         d, dr = _drift(s, y, n, s_lo, s_hi)
         zi = s_zi[s]
         z = y[2 * n + zi] if zi >= 0 else 0.0
-        v, kt, zd = storey_trial(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])
+        v, kt, zd = _storey_out_of_line(s_code[s], s_par, s, d, dr, z, sstate[s, D_C],
+                                          sstate[s, V_C])
         hi = s_hi[s]
         lo = s_lo[s]
         dy[row, n + hi] -= v * m_inv[hi]
@@ -210,10 +233,10 @@ def _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, 
             rate_start = _gap(c, y_start, n, cdof, cw)[1]
             if (rate_start > 0.0) != (rate > 0.0):
                 rate_law = RATE_SIDE if rate_start > 0.0 else 0.0
-            f, kd, kr, _, _, _ = law_trial(ccode[c], cparams[c, 0], cparams[c, 1],
-                                           cparams[c, 2], max(delta, DELTA_EPS), rate_law,
-                                           committed[c, V0], committed[c, SLIP],
-                                           committed[c, DMAX])
+            f, kd, kr, _, _, _ = _law_out_of_line(ccode[c], cparams[c, 0], cparams[c, 1],
+                                                  cparams[c, 2], max(delta, DELTA_EPS),
+                                                  rate_law, committed[c, V0],
+                                                  committed[c, SLIP], committed[c, DMAX])
             f += kr * (rate - rate_law)
             if delta < DELTA_EPS and has_linear_spring(ccode[c]):
                 f += kd * (delta - DELTA_EPS)
