@@ -341,8 +341,12 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
             sys_ = model.system
             fs = km.free_steps[step] = free_step(sys_.M, sys_.C, km.K, sys_.r, step)
     else:
+        # unused placeholders, read-only like a real FreeStep's arrays, so that numba
+        # compiles the kernel for one signature, not a second one for RK-stepped models
         fs = FreeStep(np.array([0, n], dtype=np.int64), np.zeros((2 * n, 2 * n + 2)),
                       np.zeros(2 * n), np.zeros(2 * n), np.zeros(3))
+        for a in fs:
+            a.setflags(write=False)
     nc = km.cgap.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
     u_scale = max(float(km.cgap.min()) if nc else 0.0, 1e-3)
