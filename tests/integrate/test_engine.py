@@ -69,7 +69,10 @@ def test_harmonic_steady_state_matches_closed_form():
 def test_uncoupled_floors_without_contact_match_reference(free_stepping):
     # a row of SDOF oscillators (no floor coupled to another: the kernel's floor-by-floor
     # branch, bandwidth 0) in both ways of stepping: every output against SciPy
+    from pounding.integrate import kernel_model
+
     model = sdof_pair(KV, gap=1.0)
+    assert kernel_model(model).bw == 0  # the branch under test
     gm = el_centro()
     res = simulate(model, gm, duration=6.0, free_stepping=free_stepping)
     ref = simulate_reference(model, gm, duration=6.0)

@@ -157,9 +157,30 @@ def test_start_at_rest_shortcut_matches_the_general_start():
     assert np.array_equal(a.penetration[0], [-0.02, -0.02])  # two shared floors
 
 
+def test_start_at_rest_shortcut_matches_the_general_start_with_yielding_storeys():
+    # what the shortcut skips for yielding storeys: their committed state and Bouc–Wen z
+    from pathlib import Path
+
+    from pounding.config import load_config
+    from pounding.integrate import simulate
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "inelastic_5_storey.toml"
+    model, motion, _ = load_config(path).build()
+    assert model.is_inelastic
+    n = model.n_dof
+    a = simulate(model, motion, duration=4.0)
+    b = simulate(model, motion, duration=4.0, initial_displacement=np.zeros(n),
+                 initial_velocity=np.zeros(n))
+    for name in ("displacement", "velocity", "abs_acceleration", "penetration",
+                 "contact_force", "energy", "yielding_shear", "final_z"):
+        assert np.array_equal(getattr(a, name), getattr(b, name)), name
+
+
 def test_exact_and_rk_stepping_share_one_compiled_kernel():
     # the unused exact-step arrays of an RK-stepped run are read-only like a real
-    # FreeStep's, so numba does not compile the kernel a second time (~40 s on 2 cores)
+    # FreeStep's, so numba does not compile the kernel a second time (~40 s on 2 cores).
+    # (Counts the signatures of the whole test process: any test that hands the kernel
+    # other array types fails it too, which is meant.)
     from pounding.ground_motion import GroundMotion
     from pounding.integrate import simulate
     from pounding.integrate.kernel import integrate_chunk

@@ -57,8 +57,8 @@ class _CompilingNote(ProgressColumn):
 
     def render(self, task: Task) -> Text:
         if task.completed == 0 and (task.elapsed or 0.0) >= COMPILE_NOTE_AFTER:
-            return Text("compiling the solver: first run only, a few minutes (cached after)",
-                        style="dim")
+            return Text("probably compiling the solver: first run only, about 1–2 min "
+                        "(cached after)", style="dim")
         return Text("")
 
 

@@ -183,8 +183,12 @@ def kernel_model(model: PoundingModel) -> KernelModel:
     km = _KERNEL_MODELS.get(key)
     if km is None:
         km = _assemble_kernel_model(model)
+        try:
+            # the entry must go when the model does (before its id can be reused)
+            weakref.finalize(model, _KERNEL_MODELS.pop, key, None)
+        except TypeError:
+            return km  # a model that cannot be weakly referenced is not remembered
         _KERNEL_MODELS[key] = km
-        weakref.finalize(model, _KERNEL_MODELS.pop, key, None)
     return km
 
 
@@ -261,7 +265,7 @@ def _write_initial_row(model: PoundingModel, km: KernelModel, x: np.ndarray,
         u_out[0] = 0.0
         v_out[0] = 0.0
         acc_out[0] = 0.0
-        pen_out[0] = -km.cgap
+        pen_out[0] = 0.0 - km.cgap  # (+0.0, not −0.0, for a zero gap)
         return
     u, v = x[:n], x[n:2 * n]
     u_out[0] = u

@@ -569,8 +569,9 @@ def _free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
         es = 0.0
         if bw == 0:
             # no floor coupled to another (a row of SDOF oscillators): K u and C u̇ floor
-            # by floor, fused with the outputs (the products of _band_mv, without its
-            # generic band loops and scratch stores: a third of an exact step's cost)
+            # by floor, fused with the outputs (the products of _band_mv, rounded alike up
+            # to a fused multiply-add, without its generic band loops and scratch stores: a
+            # third of an exact step's cost)
             for i in range(n):
                 u = x[i]
                 v = x[n + i]
