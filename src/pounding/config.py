@@ -645,6 +645,11 @@ def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     return cfg
 
 
+SWEEP_CASE_TABLES = ("grid", "list", "random")
+"""The tables of a sweep file that give its cases (:mod:`pounding.studies.sweep`); a file
+with ``base`` and one of them is a sweep file, not a model file."""
+
+
 def load_config(path: str | os.PathLike[str]) -> RunConfig:
     """Read and validate a TOML model file (and check it builds).
 
@@ -656,7 +661,7 @@ def load_config(path: str | os.PathLike[str]) -> RunConfig:
     """
     p = Path(path)
     data = read_toml(p, "model file")
-    if "base" in data and any(k in data for k in ("grid", "list", "random")):
+    if "base" in data and any(k in data for k in SWEEP_CASE_TABLES):
         raise ValueError(f"{p}: this is a sweep file (it has 'base' and a [grid], [list] or "
                          f"[random] table), not a model file: run it with `pounding sweep {p}`")
     cfg = parse_config(data, base_dir=p.resolve().parent, where=str(p))

@@ -178,7 +178,7 @@ def test_start_at_rest_shortcut_matches_the_general_start_with_yielding_storeys(
 
 def test_exact_and_rk_stepping_share_one_compiled_kernel():
     # the unused exact-step arrays of an RK-stepped run are read-only like a real
-    # FreeStep's, so numba does not compile the kernel a second time (~40 s on 2 cores).
+    # FreeStep's, so numba does not compile the kernel a second time (37–56 s on 2 cores).
     # (Counts the signatures of the whole test process: any test that hands the kernel
     # other array types fails it too, which is meant.)
     from pounding.ground_motion import GroundMotion

@@ -175,6 +175,19 @@ class KernelModel(NamedTuple):
 _KERNEL_MODELS: dict[int, KernelModel] = {}
 
 
+def _read_only_free_step(fs: FreeStep) -> FreeStep:
+    for a in fs:
+        a.setflags(write=False)
+    return fs
+
+
+_NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), np.zeros((2, 4)),
+                                              np.zeros(2), np.zeros(2), np.zeros(3)))
+"""The exact-step arguments of an RK-stepped run, which the kernel never reads: read-only
+like a real :class:`FreeStep`'s arrays, so that numba compiles the kernel for one signature
+only (not a second one, 37–56 s on 2 cores, for yielding or very large models)."""
+
+
 def kernel_model(model: PoundingModel) -> KernelModel:
     """The model's :class:`KernelModel`, assembled on its first run and remembered until the
     model is garbage-collected (models are frozen; they hold NumPy arrays, so they are
@@ -345,12 +358,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
             sys_ = model.system
             fs = km.free_steps[step] = free_step(sys_.M, sys_.C, km.K, sys_.r, step)
     else:
-        # unused placeholders, read-only like a real FreeStep's arrays, so that numba
-        # compiles the kernel for one signature, not a second one for RK-stepped models
-        fs = FreeStep(np.array([0, n], dtype=np.int64), np.zeros((2 * n, 2 * n + 2)),
-                      np.zeros(2 * n), np.zeros(2 * n), np.zeros(3))
-        for a in fs:
-            a.setflags(write=False)
+        fs = _NO_FREE_STEP
     nc = km.cgap.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
     u_scale = max(float(km.cgap.min()) if nc else 0.0, 1e-3)

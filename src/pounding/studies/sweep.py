@@ -213,10 +213,10 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
         One message naming the key at fault: a bad sweep table, an unknown parameter
         path, or an invalid base model (its own validation message).
     """
-    from pounding.config import load_config, parse_config
+    from pounding.config import SWEEP_CASE_TABLES, load_config, parse_config
 
     here = Path(base_dir).resolve()
-    known = {"name", "base", "out", "histories", "batch_size", "grid", "list", "random"}
+    known = {"name", "base", "out", "histories", "batch_size", *SWEEP_CASE_TABLES}
     extra = sorted(set(data) - known)
     if extra:
         raise ValueError(f"{where}: unknown key(s) {', '.join(extra)}; keys of a sweep file: "
@@ -234,7 +234,7 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     base_data = cfg.to_dict(resolve_paths=True)
     base_data.setdefault("output", {})["figures"] = False
 
-    kinds = [k for k in ("grid", "list", "random") if k in data]
+    kinds = [k for k in SWEEP_CASE_TABLES if k in data]
     if len(kinds) != 1:
         raise ValueError(f"{where}: give exactly one of [grid], [list] and [random] "
                          f"(got {', '.join(kinds) or 'none'})")
