@@ -61,6 +61,16 @@ _A61, _A62, _A63, _A64, _A65 = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0
 _B1, _B3, _B4, _B5, _B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0
 _E1, _E3, _E4, _E5, _E6, _E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0,
                                 -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0)
+_DP_A = np.array([
+    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [_A21, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [_A31, _A32, 0.0, 0.0, 0.0, 0.0],
+    [_A41, _A42, _A43, 0.0, 0.0, 0.0],
+    [_A51, _A52, _A53, _A54, 0.0, 0.0],
+    [_A61, _A62, _A63, _A64, _A65, 0.0],
+    [_B1, 0.0, _B3, _B4, _B5, _B6]])
+"""Rows 1 … 5: the stages' a coefficients; row 6: the fifth-order weights b (b2 = 0)."""
+_DP_C = np.array([0.0, _C2, _C3, _C4, _C5, 1.0, 1.0])
 
 EVENT_TOL: float = 1000.0
 """An event is located once its function (δ, δ̇ or a drift rate) is within this many
@@ -141,15 +151,12 @@ def _band_mv(kb, cb, y, n, bw, lin):
 
 @njit(**_NRT_FREE)
 def _law_out_of_line(code, p0, p1, p2, delta, rate, v0, slip, dmax):
-    """:func:`pounding.contact.dispatch.law_trial`, called rather than inlined where
-    :func:`_deriv` needs it.
+    """:func:`pounding.contact.dispatch.law_trial`, called rather than inlined.
 
-    ``_deriv`` is inlined into each of a Dormand–Prince step's six stages; with every contact
-    law inlined into it as well, all the laws were compiled six times over, and a first run
-    compiled for 240 s on 2 cores. Called, they compile once: 78 s, and no measurable change
-    in the kernel's time (a closed contact's right-hand side 21 → 25 ns for Kelvin–Voigt, the
-    SDOF pair's kernel within the run-to-run noise; 2026-11-23,
-    ``benchmarks/profile_kernel.py``).
+    numba's ``inline="always"`` copies and re-types a function at every call site; with every
+    contact law inlined into the right-hand side and the step loop, all the laws were compiled
+    many times over (a first run compiled for 240 s on 2 cores). Called, they compile once,
+    with no measurable change in the kernel's time (docs/engine.md, "Compiled once").
     """
     return law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax)
 
@@ -266,33 +273,18 @@ def _rk_step(y0, k1, p1, h, ag0, dag, s0, ag_end, n, bw, k_band, c_band, m_inv, 
         ks[0, i] = k1[0, i]
     for i in range(ps.shape[1]):
         ps[0, i] = p1[0, i]
-    for i in range(m):
-        ytmp[i] = y0[i] + h * _A21 * ks[0, i]
-    _deriv(ytmp, y0, ag0 + dag * (s0 + _C2 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 1)
-    for i in range(m):
-        ytmp[i] = y0[i] + h * (_A31 * ks[0, i] + _A32 * ks[1, i])
-    _deriv(ytmp, y0, ag0 + dag * (s0 + _C3 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 2)
-    for i in range(m):
-        ytmp[i] = y0[i] + h * (_A41 * ks[0, i] + _A42 * ks[1, i] + _A43 * ks[2, i])
-    _deriv(ytmp, y0, ag0 + dag * (s0 + _C4 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 3)
-    for i in range(m):
-        ytmp[i] = y0[i] + h * (_A51 * ks[0, i] + _A52 * ks[1, i] + _A53 * ks[2, i]
-                               + _A54 * ks[3, i])
-    _deriv(ytmp, y0, ag0 + dag * (s0 + _C5 * h), n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 4)
-    for i in range(m):
-        ytmp[i] = y0[i] + h * (_A61 * ks[0, i] + _A62 * ks[1, i] + _A63 * ks[2, i]
-                               + _A64 * ks[3, i] + _A65 * ks[4, i])
-    _deriv(ytmp, y0, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 5)
-    for i in range(m):
-        y1[i] = y0[i] + h * (_B1 * ks[0, i] + _B3 * ks[2, i] + _B4 * ks[3, i]
-                             + _B5 * ks[4, i] + _B6 * ks[5, i])
-    _deriv(y1, y0, ag_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-           cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 6)
+    # stages 1 … 5 at y0 + h Σ a_sq k_q, then the solution y1 (row 6: the b weights) and f
+    # there; one call site of _deriv, so that it is compiled into the step once, not six times
+    for st in range(1, 7):
+        yt = y1 if st == 6 else ytmp
+        for i in range(m):
+            acc = _DP_A[st, 0] * ks[0, i]
+            for q in range(1, st):
+                acc += _DP_A[st, q] * ks[q, i]
+            yt[i] = y0[i] + h * acc
+        ag_st = ag_end if st >= 5 else ag0 + dag * (s0 + _DP_C[st] * h)
+        _deriv(yt, y0, ag_st, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+               cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, st)
     err = 0.0
     for i in range(m):
         e = h * (_E1 * ks[0, i] + _E3 * ks[2, i] + _E4 * ks[3, i] + _E5 * ks[4, i]
@@ -614,6 +606,28 @@ def _free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
     return k
 
 
+@njit(**_NRT_FREE)
+def _recoverable_out_of_line(code, par, s, d, z, v):
+    """:func:`pounding.hysteresis.dispatch.storey_recoverable`, called (see
+    :func:`_law_out_of_line`)."""
+    return storey_recoverable(code, par, s, d, z, v)
+
+
+@njit(**_NRT_FREE)
+def _stored_out_of_line(code, p0, p1, p2, delta, slip):
+    """:func:`pounding.contact.dispatch.stored_energy`, called (see :func:`_law_out_of_line`)."""
+    return stored_energy(code, p0, p1, p2, delta, slip)
+
+
+@njit(**_NRT_FREE)
+def _deriv_out_of_line(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                       ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin,
+                       dy, power, row):
+    """:func:`_deriv`, called: where :func:`_advance` needs f(x) at a grid point or event."""
+    _deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
+           committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row)
+
+
 @njit(cache=True, error_model="numpy", nogil=True, fastmath={"contract"})
 def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_band,
                     m_diag, mr, r, cdof, cw, cgap, ccode, cparams, s_lo, s_hi, s_code, s_par,
@@ -729,7 +743,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
             if kx_at != k:
                 # (else the last step of the previous grid step ended here, evaluating
                 # f(x, ag[k]) as its last stage: the same numbers)
-                _deriv(x, x, a0, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+                _deriv_out_of_line(x, x, a0, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                        cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx,
                        px, 0)
             kx_at = -1
@@ -876,7 +890,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                 for q in range(ns):
                     d, dr = _drift(q, x, n, s_lo, s_hi)
                     zi = s_zi[q]
-                    sstate[q, V_C] = storey_trial(s_code[q], s_par, q, d, dr,
+                    sstate[q, V_C] = _storey_out_of_line(s_code[q], s_par, q, d, dr,
                                                   x[2 * n + zi] if zi >= 0 else 0.0,
                                                   sstate[q, D_C], sstate[q, V_C])[0]
                     sstate[q, D_C] = d
@@ -896,7 +910,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                         committed[c, SLIP] = 0.0
                         committed[c, DMAX] = max(delta, 0.0)
                         state_changed = True
-                        f0 = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
+                        f0 = _law_out_of_line(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
                                        max(delta, 1e-300), rate, committed[c, V0],
                                        committed[c, SLIP], committed[c, DMAX])[0]
                         row = ws_i[I_NIMP]
@@ -938,7 +952,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                             state_changed = True
                             ws_i[I_NEVENTS] += 1
                         else:
-                            f, kd, kr, tv0, tslip, tdmax = law_trial(
+                            f, kd, kr, tv0, tslip, tdmax = _law_out_of_line(
                                 ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta,
                                 rate, committed[c, V0], committed[c, SLIP], committed[c, DMAX])
                             committed[c, V0] = tv0
@@ -967,7 +981,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
                                 ws_i[I_NEVENTS] += 1
                 if state_changed:
                     a_end = a1 if last else a0 + dag * s_new
-                    _deriv(x, x, a_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                    _deriv_out_of_line(x, x, a_end, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                            ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
                            lin, kx, px, 0)
                 else:
@@ -1015,7 +1029,7 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
         for q in range(ns):
             vs_out[o, q] = sstate[q, V_C]
             zi = s_zi[q]
-            recov += storey_recoverable(s_code[q], s_par, q, sstate[q, D_C],
+            recov += _recoverable_out_of_line(s_code[q], s_par, q, sstate[q, D_C],
                                         x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])
         wsum = 0.0
         stored = 0.0
@@ -1027,9 +1041,9 @@ def _advance(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_band, c_b
             pen_out[o, c] = delta
             f = 0.0
             if committed[c, V0] > 0.0:
-                f = law_trial(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
+                f = _law_out_of_line(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
                               committed[c, V0], committed[c, SLIP], committed[c, DMAX])[0]
-                stored += stored_energy(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
+                stored += _stored_out_of_line(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
                                         delta, committed[c, SLIP])
             f_out[o, c] = f
             wsum += wc[c]
