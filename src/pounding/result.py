@@ -2,28 +2,32 @@
 
 :class:`Result` holds plain arrays (SI units) and derives everything else from them:
 storey drifts and shears, peaks, the impact table as a DataFrame, an xarray Dataset with
-units in its attributes (saved to NetCDF), and a JSON summary. :meth:`Result.save` writes
-all of them into a folder, each file atomically.
+units in its attributes, and a JSON summary. :meth:`Result.save` writes the files of a run
+into a folder (:mod:`pounding.outputs`), each file atomically.
+
+pandas and xarray are imported only by the methods that return their objects
+(:attr:`Result.impacts`, :meth:`Result.to_dataset`): writing a run's files needs neither.
 """
 
 from __future__ import annotations
 
-import json
-import math
 import os
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
+
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
-import xarray as xr
 from numpy.typing import NDArray
 
-from pounding.ground_motion import GroundMotion
-from pounding.io import atomic_path, write_text
-from pounding.model import PoundingModel
+if TYPE_CHECKING:
+    import pandas as pd
+    import xarray as xr
+
+    from pounding.ground_motion import GroundMotion
+    from pounding.model import PoundingModel
 
 ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "contact_work",
                                  "contact_stored", "hysteretic")
@@ -251,12 +255,33 @@ class Result:
         the floors are not free bodies, and the rest of each building can push them apart
         faster than they met. Impacts still open at the end have NaN end, restitution and
         energy."""
+        import pandas as pd
+
         df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
         labels = [c.label for c in self.model.contacts]
         df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
         df.insert(1, "elevation", [self.model.contacts[labels.index(lb)].elevation
                                    for lb in df["contact"]] if len(df) else [])
         return df
+
+    @cached_property
+    def impacts_per_contact(self) -> NDArray[np.int64]:
+        """Number of impacts of every contact (n_c,), complete even when the impact table
+        overflowed."""
+        if self.contact_impacts is not None:
+            return np.asarray(self.contact_impacts, dtype=np.int64)
+        return np.bincount(self.impact_array[:, 0].astype(np.int64),
+                           minlength=len(self.model.contacts))
+
+    @cached_property
+    def dissipated_per_contact(self) -> NDArray[np.float64]:
+        """Energy dissipated by the finished impacts of every contact [J] (n_c,), summed over
+        the impact table (an impact still open at the end is not counted)."""
+        out = np.zeros(len(self.model.contacts))
+        rows = self.impact_array
+        done = np.isfinite(rows[:, 7]) if rows.size else np.zeros(0, dtype=bool)
+        np.add.at(out, rows[done, 0].astype(np.int64), rows[done, 7])
+        return out
 
     @property
     def n_impacts(self) -> int:
@@ -300,60 +325,76 @@ class Result:
         return float(np.abs(closure).max() / scale)
 
     # ----------------------------------------------------------------- exports
+    def history_variables(self) -> HistoryVariables:
+        """Every time history and per-floor result as named variables with dimensions, units
+        and descriptions: what :meth:`to_dataset` and the NetCDF file hold (one description,
+        two writers)."""
+        model = self.model
+        contacts = model.contacts
+
+        def var(values: Any, dims: tuple[str, ...], units: str, desc: str) -> Variable:
+            return Variable(dims, np.asarray(values), {"units": units, "long_name": desc})
+
+        data = {
+            "ground_acceleration": var(self.ground, ("time",), "m/s^2", "ground acceleration"),
+            "displacement": var(self.displacement, ("time", "floor"), "m",
+                                "floor displacement relative to the ground"),
+            "velocity": var(self.velocity, ("time", "floor"), "m/s",
+                            "floor velocity relative to the ground"),
+            "absolute_acceleration": var(self.abs_acceleration, ("time", "floor"), "m/s^2",
+                                         "absolute floor acceleration"),
+            "drift": var(self.drift, ("time", "floor"), "m",
+                         "storey drift (floor minus floor below)"),
+            "storey_shear": var(self.storey_shear, ("time", "floor"), "N", "storey shear"),
+            "penetration": var(self.penetration, ("time", "contact"), "m",
+                               "penetration u_left - u_right - gap (negative: open)"),
+            "contact_force": var(self.contact_force, ("time", "contact"), "N",
+                                 "contact force (compression positive)"),
+            "energy": var(self.energy, ("time", "energy_term"), "J", "cumulative energies"),
+        }
+        if model.is_inelastic:
+            data["ductility"] = var(self.ductility, ("floor",), "1",
+                                    "storey ductility demand max|drift| / yield drift "
+                                    "(NaN: linear storey)")
+            data["residual_drift"] = var(self.residual_drift, ("floor",), "m",
+                                         "residual storey drift after elastic unloading")
+        if any(c.struck is not None for c in contacts):
+            data["column_shear"] = var(self.column_shear, ("time", "contact"), "N",
+                                       "shear demand on the struck column of a "
+                                       "floor-to-column contact (NaN: floor to floor)")
+        buildings = [f"B{b + 1}" for b, bl in enumerate(model.buildings) for _ in range(bl.n)]
+        coords = {
+            "time": var(self.time, ("time",), "s", "time"),
+            "floor": Variable(("floor",), np.array(model.dof_labels(), dtype=object), {}),
+            "contact": Variable(("contact",), np.array([c.label for c in contacts],
+                                                       dtype=object), {}),
+            "energy_term": Variable(("energy_term",), np.array(ENERGY_NAMES, dtype=object), {}),
+            "building": Variable(("floor",), np.array(buildings, dtype=object),
+                                 {"long_name": "building of each floor (B1 leftmost)"}),
+            "floor_elevation": var(np.concatenate([b.floor_levels for b in model.buildings]),
+                                   ("floor",), "m", "floor elevation above the ground"),
+            "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
+                                     "elevation of the contact"),
+        }
+        attrs = {"model": model.name, "record": self.motion.name,
+                 "solver": self.stats.solver, "rtol": self.stats.rtol,
+                 "energy_balance_error": self.energy_balance_error,
+                 "units": "SI (m, kg, s, N, J)"}
+        return HistoryVariables(data, coords, attrs)
+
     def to_dataset(self) -> xr.Dataset:
-        """All time histories as an xarray Dataset with units and descriptions."""
-        dofs = self.model.dof_labels()
-        contacts = [c.label for c in self.model.contacts]
-        t = self.time
+        """All time histories as an xarray Dataset with units and descriptions
+        (:meth:`history_variables`)."""
+        import xarray as xr
 
-        def da(values: np.ndarray, dims: tuple[str, ...], units: str, desc: str) -> xr.DataArray:
-            return xr.DataArray(values, dims=dims, attrs={"units": units, "long_name": desc})
+        hv = self.history_variables()
 
-        ds = xr.Dataset(
-            {
-                "ground_acceleration": da(self.ground, ("time",), "m/s^2", "ground acceleration"),
-                "displacement": da(self.displacement, ("time", "floor"), "m",
-                                   "floor displacement relative to the ground"),
-                "velocity": da(self.velocity, ("time", "floor"), "m/s",
-                               "floor velocity relative to the ground"),
-                "absolute_acceleration": da(self.abs_acceleration, ("time", "floor"), "m/s^2",
-                                            "absolute floor acceleration"),
-                "drift": da(self.drift, ("time", "floor"), "m",
-                            "storey drift (floor minus floor below)"),
-                "storey_shear": da(self.storey_shear, ("time", "floor"), "N", "storey shear"),
-                "penetration": da(self.penetration, ("time", "contact"), "m",
-                                  "penetration u_left - u_right - gap (negative: open)"),
-                "contact_force": da(self.contact_force, ("time", "contact"), "N",
-                                    "contact force (compression positive)"),
-                "energy": da(self.energy, ("time", "energy_term"), "J", "cumulative energies"),
-            },
-            coords={
-                "time": xr.DataArray(t, dims=("time",), attrs={"units": "s"}),
-                "floor": dofs,
-                "contact": contacts,
-                "energy_term": list(ENERGY_NAMES),
-                "contact_elevation": xr.DataArray([c.elevation for c in self.model.contacts],
-                                                  dims=("contact",), attrs={"units": "m"}),
-                "floor_elevation": xr.DataArray(
-                    np.concatenate([b.floor_levels for b in self.model.buildings]),
-                    dims=("floor",), attrs={"units": "m"}),
-            },
-            attrs={"model": self.model.name, "record": self.motion.name,
-                   "solver": self.stats.solver, "rtol": self.stats.rtol,
-                   "energy_balance_error": self.energy_balance_error,
-                   "units": "SI (m, kg, s, N, J)"},
-        )
-        if self.model.is_inelastic:
-            ds["ductility"] = da(self.ductility, ("floor",), "1",
-                                 "storey ductility demand max|drift| / yield drift "
-                                 "(NaN: linear storey)")
-            ds["residual_drift"] = da(self.residual_drift, ("floor",), "m",
-                                      "residual storey drift after elastic unloading")
-        if any(c.struck is not None for c in self.model.contacts):
-            ds["column_shear"] = da(self.column_shear, ("time", "contact"), "N",
-                                    "shear demand on the struck column of a floor-to-column "
-                                    "contact (NaN: floor to floor)")
-        return ds
+        def da(v: Variable) -> xr.DataArray:
+            return xr.DataArray(v.values, dims=v.dims, attrs=dict(v.attrs))
+
+        return xr.Dataset({k: da(v) for k, v in hv.data.items()},
+                          coords={k: da(v) for k, v in hv.coords.items()},
+                          attrs=dict(hv.attrs))
 
     def summary(self) -> dict[str, Any]:
         """Headline numbers (JSON-ready), each key naming its unit."""
@@ -399,27 +440,27 @@ class Result:
         return out
 
     def save(self, folder: str | os.PathLike[str]) -> dict[str, Path]:
-        """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``.
+        """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``
+        (:func:`pounding.outputs.save_result`); each file is written under a temporary name
+        and moved into place when complete."""
+        from pounding.outputs import save_result
 
-        Each file is written under a temporary name and moved into place when complete.
-        """
-        folder = Path(folder)
-        folder.mkdir(parents=True, exist_ok=True)
-        out = {"timehistories": folder / "timehistories.nc", "impacts": folder / "impacts.csv",
-               "summary": folder / "summary.json"}
-        with atomic_path(out["timehistories"]) as tmp:
-            self.to_dataset().to_netcdf(tmp, engine="h5netcdf")
-        write_text(out["impacts"], "# units: start, end [s]; v0 [m/s]; peak_force [N]; "
-                   "max_penetration [m]; restitution [-]; energy_dissipated [J]; elevation [m]\n"
-                   + self.impacts.to_csv(index=False))
-        write_text(out["summary"], json.dumps(_finite(self.summary()), indent=2))
-        return out
+        return save_result(self, folder)
 
 
-def _finite(obj: Any) -> Any:
-    """JSON cannot hold NaN/inf: turn them into None."""
-    if isinstance(obj, dict):
-        return {k: _finite(v) for k, v in obj.items()}
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return None
-    return obj
+class Variable(NamedTuple):
+    """One named array of a result: its dimensions, values and attributes (units, long
+    name), as NetCDF and xarray hold it."""
+
+    dims: tuple[str, ...]
+    values: NDArray[Any]
+    attrs: dict[str, Any]
+
+
+class HistoryVariables(NamedTuple):
+    """A result's data variables, coordinates and global attributes
+    (:meth:`Result.history_variables`)."""
+
+    data: dict[str, Variable]
+    coords: dict[str, Variable]
+    attrs: dict[str, Any]

@@ -21,10 +21,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from typing import Any
+
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
 from pounding.io import write_text
-from pounding.plot.response import RUN_FIGURES
 from pounding.result import Result
 
 __all__ = ["OUTPUT_FILES", "FIGURE_FILES", "RunOutput", "default_out_dir", "run", "run_config"]
@@ -37,8 +38,16 @@ OUTPUT_FILES: dict[str, str] = {
 }
 """Data files of every run (key → file name)."""
 
-FIGURE_FILES: dict[str, str] = {key: fig.file for key, fig in RUN_FIGURES.items()}
-"""Figures written unless turned off (key → file name)."""
+
+
+def __getattr__(name: str) -> Any:
+    # FIGURE_FILES: the figures written unless turned off (key → file name); read from the
+    # figure registry on first use, so that importing this module does not import matplotlib
+    if name == "FIGURE_FILES":
+        from pounding.plot.response import RUN_FIGURES
+
+        return {key: fig.file for key, fig in RUN_FIGURES.items()}
+    raise AttributeError(f"module 'pounding.run' has no attribute {name!r}")
 
 
 @dataclass(frozen=True)
@@ -123,6 +132,7 @@ def _normal_permissions(folder: Path) -> None:
 
 def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
     from pounding.plot import save_figure
+    from pounding.plot.response import RUN_FIGURES
 
     out = {}
     for key, fig in RUN_FIGURES.items():

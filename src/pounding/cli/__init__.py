@@ -1,14 +1,23 @@
 """Command-line interface: ``pounding <command>``; see ``pounding --help``.
 
-:func:`main` is the console-script entry point. Bad input (a ``ValueError`` from the public
-API, a missing file) is printed as one line naming the field and value, without a
-traceback, and the process exits with status 2; usage errors also exit with 2.
+:func:`main` is the console-script entry point (and ``python -m pounding``). Every error
+reaches the user as one line on standard error that starts with ``error:`` and names the
+field (or option) and the value, without a traceback:
+
+* bad input (a ``ValueError`` from the public API, a missing or unreadable file, an output
+  folder that cannot be written) and usage errors (an unknown option, a bad option value)
+  exit with status 2;
+* a run stopped with Ctrl-C or SIGTERM exits with status 130 after saying what was kept.
+
+Command modules import only typer and rich at module level; everything else is imported by
+the command that uses it, so ``pounding --help`` and ``pounding --version`` start at once.
 """
 
 from __future__ import annotations
 
 import sys
 
+import typer
 from rich.markup import escape
 
 from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
@@ -22,23 +31,66 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
 )
 from pounding.cli.app import app, err_console
 
-__all__ = ["app", "main"]
+__all__ = ["app", "main", "error_line"]
+
+EXIT_BAD_INPUT = 2
+"""Exit status of bad input and usage errors."""
+
+EXIT_INTERRUPTED = 130
+"""Exit status of a command stopped by Ctrl-C (128 + SIGINT), as shells report it."""
+
+
+def error_line(message: str) -> None:
+    """Print one error line on standard error: ``error: <message>`` (newlines folded)."""
+    text = " ".join(str(message).split())
+    err_console.print(f"[bold red]error:[/] {escape(text)}", highlight=False, soft_wrap=True)
+
+
+def _usage_error(exc: typer.TyperException) -> int:
+    """One line for a usage error (unknown option, bad value): what, and where to look."""
+    ctx = getattr(exc, "ctx", None)
+    if type(exc).__name__ == "NoArgsIsHelpError" and ctx is not None:
+        # ``pounding`` (or a group) given no command: its help, as click prints it
+        typer.echo(ctx.get_help())
+        return 0
+    where = ctx.command_path if ctx is not None else "pounding"
+    message = exc.format_message() if hasattr(exc, "format_message") else str(exc)
+    error_line(f"{where}: {message} (see '{where} --help')")
+    return int(getattr(exc, "exit_code", EXIT_BAD_INPUT) or EXIT_BAD_INPUT)
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the CLI and return its exit status: 0 success, 2 bad input or usage.
+    """Run the CLI and return its exit status: 0 success, 2 bad input or usage, 130
+    interrupted.
 
     Called with ``argv=None`` (the console script) it exits the process with that status.
     """
     try:
-        app(args=argv, prog_name="pounding")
-        code = 0
-    except SystemExit as exc:  # typer/click end every run this way in standalone mode
+        rv = app(args=argv, prog_name="pounding", standalone_mode=False)
+        code = rv if isinstance(rv, int) else 0
+    except SystemExit as exc:  # a command that ended itself with a status
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
-    except (ValueError, FileNotFoundError, IsADirectoryError, NotADirectoryError) as exc:
-        err_console.print(f"[bold red]error:[/] {escape(str(exc))}", highlight=False,
-                          soft_wrap=True)
-        code = 2
+    except typer.Exit as exc:
+        code = exc.exit_code
+    except (typer.Abort, KeyboardInterrupt):
+        error_line("stopped (interrupted); finished results were kept and no half-written "
+                   "output was left")
+        code = EXIT_INTERRUPTED
+    except typer.TyperException as exc:
+        code = _usage_error(exc)
+    except (ValueError, OSError) as exc:
+        # bad input from the public API (field and value named there), or a file that
+        # cannot be read or written (the OS names the path)
+        error_line(_os_error_text(exc) if isinstance(exc, OSError) else str(exc))
+        code = EXIT_BAD_INPUT
     if argv is None:
         sys.exit(code)
     return code
+
+
+def _os_error_text(exc: OSError) -> str:
+    """``<path>: <reason>`` for a file-system error (no errno prefix)."""
+    reason = exc.strerror or str(exc)
+    if exc.filename is not None:
+        return f"{exc.filename}: {reason.lower() if reason[:1].isupper() else reason}"
+    return reason

@@ -6,6 +6,9 @@ public API and print; they hold no computation.
 
 from __future__ import annotations
 
+import sys
+from typing import Annotated
+
 import typer
 from rich.console import Console
 
@@ -17,7 +20,22 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-import sys  # noqa: E402
+
+
+def _print_version(value: bool) -> None:
+    if value:
+        from pounding import __version__
+
+        typer.echo(f"pounding {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(version: Annotated[bool, typer.Option(
+        "--version", callback=_print_version, is_eager=True,
+        help="Print the version and exit.")] = False) -> None:
+    """Seismic pounding of adjacent buildings: impact laws, restitution, time histories."""
+
 
 console = Console(width=None if sys.stdout.isatty() else 160)
 """Where tables and messages go (standard output); 160 columns wide when not a terminal, so

@@ -12,7 +12,6 @@ from rich.table import Table
 from rich.text import Text
 
 from pounding.cli.app import app, console
-from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
 
 SHORT = {"anagnostopoulos": "ζ Anag.", "jankowski": "ζ Jank.(19)", "mahmoud": "ζ Mahm.(20)",
          "naderpour": "ζ eq 39", "hunt-crossley": "χ H-C", "lankarani-nikravesh": "χ L-N",
@@ -55,6 +54,7 @@ def zeta_cmd(
                     help="Draw the seed's Fig 4 (every formula against e) to FILE.")] = None,
 ) -> None:
     """Print the seed's Table 1 beside every damping formula (zeta and chi against e)."""
+    from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
     from pounding.validation import restitution
 
     values = restitution(_parse_floats(e, "--e", TABLE1_E), "--e")
@@ -97,6 +97,7 @@ def audit_cmd(
 ) -> None:
     """Restitution audit: the e each formula really achieves, with each law, in a simulated impact."""
     from pounding.contact.audit import PAIRINGS, AuditCase, restitution_audit
+    from pounding.contact.restitution import TABLE1_E
     from pounding.validation import restitution
 
     targets = restitution(_parse_floats(e, "--e", TABLE1_E), "--e")

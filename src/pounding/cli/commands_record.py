@@ -10,9 +10,6 @@ from rich.table import Table
 from rich.text import Text
 
 from pounding.cli.app import app, console  # noqa: F401
-from pounding.ground_motion import read_record
-from pounding.plot import save_figure
-from pounding.plot.record import plot_record
 
 
 @app.command("record")
@@ -39,6 +36,8 @@ def record(
 
     PGV is the peak of the trapezoidal integral of the acceleration (no baseline correction).
     """
+    from pounding.ground_motion import read_record
+
     motions = [read_record(f, dt=dt, units=units) for f in files]
 
     table = Table(title="Ground-motion records")
@@ -68,6 +67,9 @@ def record(
                              "would overwrite each other; plot them one at a time")
         targets = [plot / f"{s}.png" for s in stems]
     for gm, target in zip(motions, targets, strict=True):
+        from pounding.plot import save_figure
+        from pounding.plot.record import plot_record
+
         fig = plot_record(gm)
         save_figure(fig, target)
         console.print(f"figure: {target}", highlight=False)

@@ -27,7 +27,6 @@ from rich.table import Table
 from rich.text import Text
 
 from pounding.cli.app import app, console
-from pounding.result import peak_abs  # noqa: F401
 
 PROGRESS_DELAY = 1.0
 """Seconds before the progress bar appears: quick runs print no bar."""
@@ -101,6 +100,8 @@ def _h(text: str) -> Text:
 
 def _print_summary(out: Any) -> None:
     """The tables printed after a run (``out`` is a :class:`pounding.run.RunOutput`)."""
+    from pounding.result import peak_abs
+
     r = out.result
     model = r.model
     s = r.summary()
@@ -158,16 +159,17 @@ def _print_summary(out: Any) -> None:
                     "dissipated [J]") + (("peak column shear [N]", "÷ storey shear")
                                          if columns else ()):
             ct.add_column(_h(col), justify="left" if col == "contact" else "right")
-        imp = r.impacts
+        counts = r.impacts_per_contact
+        dissipated = r.dissipated_per_contact
         pcf = r.peak_contact_force
         pcs = r.peak_column_shear if columns else None
         for c in model.contacts:
-            rows = imp[imp["contact"] == c.label] if len(imp) else imp
-            cells = [c.label, f"{c.elevation:g}", f"{c.gap:g}", str(len(rows)),
-                     f"{pcf[c.index]:.4g}" if len(rows) else "-",
-                     f"{np.nansum(rows['energy_dissipated']):.4g}" if len(rows) else "-"]
+            hit = counts[c.index] > 0
+            cells = [c.label, f"{c.elevation:g}", f"{c.gap:g}", str(counts[c.index]),
+                     f"{pcf[c.index]:.4g}" if hit else "-",
+                     f"{dissipated[c.index]:.4g}" if hit else "-"]
             if pcs is not None:
-                hit = c.struck is not None and len(rows) > 0
+                hit = hit and c.struck is not None
                 cells += [f"{pcs[c.index]:.4g}" if hit else "-",
                           f"{r.column_shear_ratio[c.index]:.2f}" if hit else "-"]
             ct.add_row(*cells)
@@ -217,7 +219,10 @@ def run_cmd(
 def demo_cmd(
     out: Annotated[Path, typer.Option(
         "--out", "-o", help="Output folder.")] = Path("pounding-demo"),
-    overwrite: OverwriteOpt = False,
+    overwrite: Annotated[bool, typer.Option(
+        "--overwrite/--no-overwrite",
+        help="Replace an earlier output in the folder (default: yes, so the demo can be run "
+             "again; a folder that is not a pounding output is never replaced).")] = True,
     figures: FiguresOpt = None,
 ) -> None:
     """Two 10-storey buildings pounding under El Centro 1940 (examples/two_10_storey.toml)."""

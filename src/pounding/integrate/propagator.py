@@ -16,12 +16,10 @@ contact; it is exact to round-off whatever the step.
 
 from __future__ import annotations
 
+import hashlib
 from typing import NamedTuple
 
-import hashlib
-
 import numpy as np
-import scipy.linalg
 from numpy.typing import NDArray
 
 
@@ -92,7 +90,9 @@ def compute_propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArra
     z[: 2 * n, : 2 * n] = a
     z[n : 2 * n, 2 * n] = -r
     z[2 * n, 2 * n + 1] = 1.0
-    e = scipy.linalg.expm(z * h)
+    from scipy.linalg import expm
+
+    e = expm(z * h)
     phi = np.ascontiguousarray(e[: 2 * n, : 2 * n])
     e12 = e[: 2 * n, 2 * n]
     e13 = e[: 2 * n, 2 * n + 1]
@@ -165,7 +165,9 @@ def _van_loan_integral(f: NDArray[np.float64], w: NDArray[np.float64],
     big[:k, :k] = -f.T
     big[:k, k:] = w * scale
     big[k:, k:] = f
-    e = scipy.linalg.expm(big * h)
+    from scipy.linalg import expm
+
+    e = expm(big * h)
     out = e[k:, k:].T @ e[:k, k:] / scale
     return 0.5 * (out + out.T)
 

@@ -1,0 +1,124 @@
+"""The files of a run: ``timehistories.nc``, ``impacts.csv`` and ``summary.json``.
+
+Each is written atomically (:mod:`pounding.io`). The NetCDF file is written with h5netcdf
+directly from :meth:`pounding.result.Result.history_variables` — the same variables, units
+and coordinates :meth:`~pounding.result.Result.to_dataset` gives as an xarray Dataset, which
+is also how to read the file back (``xarray.open_dataset(path, engine="h5netcdf")``). Going
+without xarray and pandas here keeps a run's start-up short: importing them costs about a
+second, more than the whole simulation of a small model.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from pounding.io import atomic_path, write_text
+
+if TYPE_CHECKING:
+    from pounding.result import HistoryVariables, Result
+
+__all__ = ["IMPACTS_HEADER", "impacts_csv", "save_result", "write_netcdf"]
+
+IMPACTS_HEADER = ("# units: start, end [s]; v0 [m/s]; peak_force [N]; max_penetration [m]; "
+                  "restitution [-]; energy_dissipated [J]; elevation [m]\n")
+"""The comment line that opens ``impacts.csv``: the unit of every column."""
+
+
+def save_result(result: Result, folder: str | os.PathLike[str]) -> dict[str, Path]:
+    """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``.
+
+    Returns the paths by key (``timehistories``, ``impacts``, ``summary``).
+    """
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    out = {"timehistories": folder / "timehistories.nc", "impacts": folder / "impacts.csv",
+           "summary": folder / "summary.json"}
+    with atomic_path(out["timehistories"]) as tmp:
+        write_netcdf(result.history_variables(), tmp)
+    write_text(out["impacts"], IMPACTS_HEADER + impacts_csv(result))
+    write_text(out["summary"], json.dumps(json_ready(result.summary()), indent=2))
+    return out
+
+
+def write_netcdf(variables: HistoryVariables, path: str | os.PathLike[str]) -> None:
+    """Write a result's variables to a NetCDF-4 file (HDF5, via h5netcdf).
+
+    Coordinates named like their dimension become NetCDF dimension variables; the others
+    (e.g. ``building`` and ``floor_elevation`` along ``floor``) are listed in each data
+    variable's ``coordinates`` attribute, as the CF conventions and xarray read them.
+    Strings are stored as variable-length UTF-8.
+    """
+    import h5netcdf
+
+    sizes: dict[str, int] = {}
+    for v in (*variables.coords.values(), *variables.data.values()):
+        for dim, n in zip(v.dims, v.values.shape):
+            sizes[dim] = n
+    aux = [name for name, v in variables.coords.items() if v.dims != (name,)]
+    with h5netcdf.File(path, "w") as f:
+        f.dimensions = sizes
+        for name, v in variables.coords.items():
+            _create(f, name, v.dims, v.values, v.attrs)
+        for name, v in variables.data.items():
+            attrs = dict(v.attrs)
+            own = [c for c in aux if set(variables.coords[c].dims) <= set(v.dims)]
+            if own:
+                attrs["coordinates"] = " ".join(own)
+            _create(f, name, v.dims, v.values, attrs)
+        for key, value in variables.attrs.items():
+            f.attrs[key] = value
+
+
+def _create(f: Any, name: str, dims: tuple[str, ...], values: np.ndarray,
+            attrs: dict[str, Any]) -> None:
+    if values.dtype == object or values.dtype.kind in "US":
+        import h5py
+
+        var = f.create_variable(name, dims, dtype=h5py.string_dtype(),
+                                data=np.asarray([str(x) for x in values.ravel()],
+                                                dtype=object).reshape(values.shape))
+    else:
+        var = f.create_variable(name, dims, data=np.ascontiguousarray(values))
+    for key, value in attrs.items():
+        var.attrs[key] = value
+
+
+def impacts_csv(result: Result) -> str:
+    """The impact table as CSV text (no unit line): one row per impact, columns
+    ``contact, elevation`` and :data:`pounding.result.IMPACT_COLUMNS` after ``contact``;
+    a missing value (an impact still open at the end) is an empty field."""
+    from pounding.result import IMPACT_COLUMNS
+
+    contacts = result.model.contacts
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["contact", "elevation", *IMPACT_COLUMNS[1:]])
+    for row in result.impact_array:
+        c = contacts[int(row[0])]
+        w.writerow([c.label, _number(c.elevation), *(_number(x) for x in row[1:])])
+    return buf.getvalue()
+
+
+def _number(x: float) -> str:
+    """Shortest text that reads back as the same float; empty for NaN."""
+    x = float(x)
+    return "" if math.isnan(x) else repr(x)
+
+
+def json_ready(obj: Any) -> Any:
+    """JSON cannot hold NaN or infinity: turn them into None (recursively)."""
+    if isinstance(obj, dict):
+        return {k: json_ready(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [json_ready(v) for v in obj]
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    return obj

@@ -1,0 +1,88 @@
+"""Start-up: what ``import pounding`` and the CLI load, the public API at the top level,
+``--version`` and ``python -m pounding``, and the run's files written without xarray/pandas
+read back identical to what xarray/pandas give."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+import pounding
+from pounding.cli import main
+from pounding.config import load_config
+from pounding.integrate import simulate
+from pounding.outputs import IMPACTS_HEADER, save_result
+
+ROOT = Path(__file__).resolve().parents[1]
+SEED = ROOT / "examples" / "seed_sdof_pair.toml"
+HEAVY = ("numba", "scipy", "pandas", "xarray", "matplotlib", "dask", "pydantic")
+
+
+def _modules_after(code: str) -> set[str]:
+    out = subprocess.run([sys.executable, "-c", code + "\nimport sys\n"
+                          "print(' '.join(sorted({m.split('.')[0] for m in sys.modules})))"],
+                         capture_output=True, text=True, check=True)
+    return set(out.stdout.split())
+
+
+@pytest.mark.parametrize("code", ["import pounding", "import pounding.cli",
+                                  "from pounding.cli import app"])
+def test_start_up_imports_no_heavy_library(code: str) -> None:
+    loaded = _modules_after(code)
+    assert not loaded & set(HEAVY), sorted(loaded & set(HEAVY))
+
+
+def test_every_public_name_resolves_from_the_top_level() -> None:
+    for name in pounding.__all__:
+        assert getattr(pounding, name) is not None, name
+    assert {"PoundingModel", "ContactSpec", "ShearBuilding", "simulate", "Result",
+            "el_centro", "KelvinVoigt", "run"} <= set(pounding.__all__)
+    assert pounding.simulate is simulate
+    with pytest.raises(AttributeError, match="no attribute 'nope'"):
+        pounding.nope  # noqa: B018
+
+
+def test_top_level_docstring_example_runs() -> None:
+    import doctest
+
+    failures, tried = doctest.testmod(pounding, verbose=False)
+    assert tried >= 4 and failures == 0
+
+
+@pytest.mark.parametrize("argv", [["-m", "pounding", "--version"],
+                                  ["-c", "from pounding.cli import main; main(['--version'])"]])
+def test_version(argv: list[str]) -> None:
+    out = subprocess.run([sys.executable, *argv], capture_output=True, text=True)
+    assert out.returncode == 0
+    assert out.stdout.strip() == f"pounding {pounding.__version__}"
+
+
+def test_usage_error_is_one_line(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["run", str(SEED), "--no-such-option"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: pounding run: ")
+    assert "--no-such-option" in err[0]
+
+
+def test_files_written_without_xarray_read_back_as_xarray_and_pandas_give(
+        tmp_path: Path) -> None:
+    model, motion, solver = load_config(SEED).build()
+    res = simulate(model, motion, **solver)
+    files = save_result(res, tmp_path)
+    with xr.open_dataset(files["timehistories"], engine="h5netcdf") as ds:
+        ds.load()
+        xr.testing.assert_identical(ds, res.to_dataset())
+        assert list(ds["building"].values) == ["B1", "B2"]
+        assert ds["building"].dims == ("floor",)
+    assert files["impacts"].read_text().startswith(IMPACTS_HEADER)
+    back = pd.read_csv(files["impacts"], comment="#")
+    pd.testing.assert_frame_equal(back, res.impacts, check_dtype=False)
+    assert len(back) == res.n_impacts == int(res.impacts_per_contact.sum())
+    np.testing.assert_allclose(res.dissipated_per_contact,
+                               [np.nansum(res.impacts["energy_dissipated"])])
