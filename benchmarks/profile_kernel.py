@@ -3,9 +3,9 @@
 Times, for the SDOF pair of ``bench_opensees.py`` under El Centro at 1 ms:
 
 * the whole kernel with a 10 m gap (exact steps only) and with the real 20 mm gap;
-* one adaptive Dormand–Prince step (``kernel._rk_step``), one right-hand side
-  (``kernel._deriv``, contact closed, contact open, no contact) and one event search
-  (``kernel._find_event``), each called in a compiled loop, so the figures are the
+* one adaptive Dormand–Prince step (``dormand_prince.rk_step``), one right-hand side
+  (``rhs.deriv``, contact closed, contact open, no contact) and one event search
+  (``events.find_event``), each called in a compiled loop, so the figures are the
   kernel's own cost per call.
 
 The kernel's private functions are called with the very arrays ``simulate`` hands to the
@@ -38,7 +38,7 @@ from _memory import keep_freed_memory  # noqa: E402
 import pounding.integrate as integrate  # noqa: E402
 from pounding.contact.base import V0  # noqa: E402
 from pounding.ground_motion import el_centro  # noqa: E402
-from pounding.integrate import kernel  # noqa: E402
+from pounding.integrate import dormand_prince, events, layout, rhs  # noqa: E402
 
 _LOOP = dict(cache=False, error_model="numpy", fastmath={"contract"}, _nrt=False)
 
@@ -68,7 +68,7 @@ def _loop_rk_step(calls, y, kx, px, n, bw, k_band, c_band, m_inv, mr, r, cdof, c
     total = 0.0
     for i in range(calls):
         h = 1e-4 * (1.0 + 1e-9 * i)  # not loop-invariant: nothing can be hoisted
-        total += kernel._rk_step(y, kx, px, h, 0.1, 0.0, 0.0, 0.1, n, bw, k_band, c_band,
+        total += dormand_prince.rk_step(y, kx, px, h, 0.1, 0.0, 0.0, 0.1, n, bw, k_band, c_band,
                                  m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo,
                                  s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1,
                                  atol, rtol)
@@ -81,18 +81,18 @@ def _loop_deriv(calls, y, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
     total = 0.0
     for _ in range(calls):
         y[0] += 1e-12
-        kernel._deriv(y, y, 0.1, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+        rhs.deriv(y, y, 0.1, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                       cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 1)
         total += ks[1, n]
     return total
 
 
 @njit(**_LOOP)
-def _loop_find_event(calls, y0, ks, y1, n, cdof, cw, cgap, committed, s_lo, s_hi):
+def _loop_find_event(calls, y0, ks, y1, n, cdof, cw, cgap, committed, s_lo, s_hi, grazed):
     total = 0.0
     for i in range(calls):
-        te, _, _ = kernel._find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, cdof, cw,
-                                      cgap, committed, s_lo, s_hi, -1, 0)
+        te, _, _ = events.find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, cdof, cw,
+                                     cgap, committed, s_lo, s_hi, -1, 0, 2e-10, grazed)
         total += te
     return total
 
@@ -125,7 +125,7 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
     a = kernel_arguments(bench.sdof_pair_model(law))
     n = a["r"].shape[0]
     m = a["x"].shape[0]
-    npw = kernel.P_CONTACT + a["cgap"].shape[0]
+    npw = layout.P_CONTACT + a["cgap"].shape[0]
     closed = a["committed"].copy()
     closed[0, V0] = 0.3  # a contact closing at 0.3 m/s
     y = np.zeros(m)
@@ -137,7 +137,7 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
     structure = (a["bw"], a["k_band"], a["c_band"], m_inv, a["mr"], a["r"])
     contacts = (a["cdof"], a["cw"], a["cgap"], a["ccode"], a["cparams"])
     storeys = (a["s_lo"], a["s_hi"], a["s_code"], a["s_par"], a["s_zi"], a["sstate"], lin)
-    kernel._deriv(y, y, 0.1, n, *structure, *contacts, closed, *storeys, kx, px, 0)
+    rhs.deriv(y, y, 0.1, n, *structure, *contacts, closed, *storeys, kx, px, 0)
     rk = per_call_ns(_loop_rk_step, calls, y, kx, px, n, *structure, *contacts, closed,
                      *storeys, ks, ps, np.zeros(m), np.zeros(m), a["atol"], a["rtol"])
     rows.append(("one Dormand–Prince step (contact closed)", f"{rk:.0f} ns"))
@@ -151,7 +151,7 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
                      ks, ps)
     rows.append(("one right-hand side, no contact element", f"{ns:.1f} ns"))
     ns = per_call_ns(_loop_find_event, calls * 5, y, ks, y + 1e-6, n, a["cdof"], a["cw"],
-                     a["cgap"], closed, a["s_lo"], a["s_hi"])
+                     a["cgap"], closed, a["s_lo"], a["s_hi"], np.zeros(a["cgap"].shape[0]))
     rows.append(("one event search (contact closed)", f"{ns:.1f} ns"))
     return rows
 

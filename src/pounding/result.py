@@ -51,8 +51,13 @@ def peak_abs(a: NDArray[np.float64]) -> NDArray[np.float64]:
     return np.array([np.abs(a[:, j]).max() if a.shape[0] else 0.0 for j in range(a.shape[1])])
 
 
-IMPACT_COLUMNS: tuple[str, ...] = ("contact", "start", "end", "v0", "peak_force", "max_penetration",
-                                   "restitution", "energy_dissipated")
+IMPACT_COLUMNS: tuple[str, ...] = ("contact", "start", "end", "v0", "peak_force",
+                                   "peak_force_time", "max_penetration", "restitution",
+                                   "energy_dissipated")
+"""Columns of :attr:`Result.impact_array` (the contact as its index) and of
+:attr:`Result.impacts` (the contact as its label): start and end [s], closing velocity v0
+[m/s], peak force [N] and its time [s], largest penetration [m], achieved restitution [-],
+energy dissipated [J]."""
 
 
 @dataclass(frozen=True)
@@ -101,6 +106,13 @@ class Result:
         from its storey law.
     final_z : ndarray (n_z,), optional
         Bouc–Wen internal variables at the end (for the residual drift).
+    contact_peak_time : ndarray (n_c,), optional
+        Time of each contact's peak force [s].
+    located_peaks : ndarray (N, 6), optional
+        Every floor's largest |displacement| [m], |storey drift| [m] and |absolute
+        acceleration| [m/s²], each followed by its time [s], located inside solver steps
+        (:mod:`pounding.integrate.peaks`). Without it the peaks are read at the output
+        steps.
     """
 
     model: PoundingModel
@@ -119,6 +131,8 @@ class Result:
     contact_impacts: NDArray[np.int64] | None = field(default=None, repr=False)
     yielding_shear: NDArray[np.float64] | None = field(default=None, repr=False)
     final_z: NDArray[np.float64] | None = field(default=None, repr=False)
+    contact_peak_time: NDArray[np.float64] | None = field(default=None, repr=False)
+    located_peaks: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property
@@ -159,9 +173,10 @@ class Result:
     @cached_property
     def ductility(self) -> NDArray[np.float64]:
         """Storey ductility demand ``max|drift| / (F_y / k)`` [-] (N,); NaN for linear
-        storeys (no yield point). Peaks are read at the output steps."""
+        storeys (no yield point). The peak drift is :attr:`peak_drift` (located inside
+        steps)."""
         out = np.full(self.model.n_dof, np.nan)
-        peak = peak_abs(self.drift)
+        peak = self.peak_drift
         for off, b in zip(self.model.system.offsets, self.model.buildings):
             fy = b.yield_forces
             if fy is not None:
@@ -279,8 +294,9 @@ class Result:
         the impact table (an impact still open at the end is not counted)."""
         out = np.zeros(len(self.model.contacts))
         rows = self.impact_array
-        done = np.isfinite(rows[:, 7]) if rows.size else np.zeros(0, dtype=bool)
-        np.add.at(out, rows[done, 0].astype(np.int64), rows[done, 7])
+        col = IMPACT_COLUMNS.index("energy_dissipated")
+        done = np.isfinite(rows[:, col]) if rows.size else np.zeros(0, dtype=bool)
+        np.add.at(out, rows[done, 0].astype(np.int64), rows[done, col])
         return out
 
     @property
@@ -301,10 +317,87 @@ class Result:
             np.maximum.at(out, self.impact_array[:, 0].astype(int), self.impact_array[:, 4])
         return out
 
+    @cached_property
+    def peak_contact_force_time(self) -> NDArray[np.float64]:
+        """Time of every contact's peak force [s] (n_c,); NaN for a contact that never
+        closed."""
+        if self.contact_peak_time is not None:
+            t = np.asarray(self.contact_peak_time, dtype=float).copy()
+        else:
+            t = np.full(len(self.model.contacts), np.nan)
+            rows = self.impact_array
+            for c in range(t.size):
+                mine = rows[rows[:, 0] == c] if rows.size else rows
+                if len(mine):
+                    t[c] = mine[int(np.argmax(mine[:, 4])), 5]
+        t[self.peak_contact_force <= 0.0] = np.nan
+        return t
+
+    def _peak(self, col: int, sampled: NDArray[np.float64]) -> tuple[NDArray[np.float64],
+                                                                     NDArray[np.float64]]:
+        if self.located_peaks is not None:
+            return self.located_peaks[:, col].copy(), self.located_peaks[:, col + 1].copy()
+        a = np.abs(sampled)
+        k = np.argmax(a, axis=0)
+        return a[k, np.arange(a.shape[1])], self.time[k]
+
     @property
     def peak_displacement(self) -> NDArray[np.float64]:
-        """Largest |displacement| of every floor [m] (N,)."""
-        return peak_abs(self.displacement)
+        """Largest |displacement| of every floor [m] (N,), located inside solver steps."""
+        return self._peak(0, self.displacement)[0]
+
+    @property
+    def peak_displacement_time(self) -> NDArray[np.float64]:
+        """Time of every floor's :attr:`peak_displacement` [s] (N,)."""
+        return self._peak(0, self.displacement)[1]
+
+    @property
+    def peak_drift(self) -> NDArray[np.float64]:
+        """Largest |storey drift| of every storey [m] (N,: the storey below each floor),
+        located inside solver steps."""
+        return self._peak(2, self.drift)[0]
+
+    @property
+    def peak_drift_time(self) -> NDArray[np.float64]:
+        """Time of every storey's :attr:`peak_drift` [s] (N,)."""
+        return self._peak(2, self.drift)[1]
+
+    @property
+    def peak_drift_ratio(self) -> NDArray[np.float64]:
+        """:attr:`peak_drift` over the storey height [-] (N,)."""
+        return self.peak_drift / np.concatenate([b.heights for b in self.model.buildings])
+
+    @property
+    def peak_abs_acceleration(self) -> NDArray[np.float64]:
+        """Largest |absolute acceleration| of every floor [m/s²] (N,), located inside solver
+        steps (at an impact the largest of the values just before and after)."""
+        return self._peak(4, self.abs_acceleration)[0]
+
+    @property
+    def peak_abs_acceleration_time(self) -> NDArray[np.float64]:
+        """Time of every floor's :attr:`peak_abs_acceleration` [s] (N,)."""
+        return self._peak(4, self.abs_acceleration)[1]
+
+    @cached_property
+    def peak_storey_shear(self) -> NDArray[np.float64]:
+        """Largest |storey shear| of every storey [N] (N,): ``k × peak drift`` for a linear
+        storey (so located inside steps with the drift), the largest of the storey law's
+        shear at the output steps for a yielding one."""
+        k = np.concatenate([b.stiffnesses for b in self.model.buildings])
+        out = k * self.peak_drift
+        cols = self._yielding_columns()
+        if cols.size:
+            out[cols] = np.abs(self.storey_shear[:, cols]).max(axis=0)
+        return out
+
+    @cached_property
+    def peak_storey_shear_time(self) -> NDArray[np.float64]:
+        """Time of every storey's :attr:`peak_storey_shear` [s] (N,)."""
+        out = self.peak_drift_time.copy()
+        cols = self._yielding_columns()
+        if cols.size:
+            out[cols] = self.time[np.argmax(np.abs(self.storey_shear[:, cols]), axis=0)]
+        return out
 
     @property
     def contact_dissipated(self) -> NDArray[np.float64]:
@@ -397,8 +490,21 @@ class Result:
                           attrs=dict(hv.attrs))
 
     def summary(self) -> dict[str, Any]:
-        """Headline numbers (JSON-ready), each key naming its unit."""
+        """Headline numbers (JSON-ready), each key naming its unit.
+
+        Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3; the drift and
+        shear of a floor are those of the storey below it) and located inside solver steps,
+        each with its time (``…_time_s``). ``buildings`` repeats them building by building,
+        storey by storey, with the building's natural periods — the table an engineer reads
+        first.
+        """
         pcf = self.peak_contact_force
+        labels = self.model.dof_labels()
+        contacts = self.model.contacts
+
+        def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
+            return {lb: float(v) for lb, v in zip(labels, values)}
+
         return {
             "model": self.model.name,
             "record": self.motion.name,
@@ -407,10 +513,23 @@ class Result:
             "output_step_s": self.dt,
             "n_impacts": self.n_impacts,
             "peak_contact_force_N": float(pcf.max()) if pcf.size else 0.0,
-            "peak_contact_force_by_contact_N": {c.label: float(f) for c, f in zip(self.model.contacts, pcf)},
-            "peak_displacement_m": {lb: float(v) for lb, v in zip(self.model.dof_labels(), self.peak_displacement)},
-            "peak_drift_m": {lb: float(v) for lb, v in zip(self.model.dof_labels(), peak_abs(self.drift))},
-            "peak_abs_acceleration_m_s2": {lb: float(v) for lb, v in zip(self.model.dof_labels(), peak_abs(self.abs_acceleration))},
+            "peak_contact_force_time_s": (float(self.peak_contact_force_time[int(np.argmax(pcf))])
+                                          if pcf.size and pcf.max() > 0 else None),
+            "peak_contact_force_by_contact_N": {c.label: float(f) for c, f in zip(contacts, pcf)},
+            "peak_contact_force_time_by_contact_s": {
+                c.label: float(t) for c, t in zip(contacts, self.peak_contact_force_time)},
+            "impacts_by_contact": {c.label: int(k) for c, k in
+                                   zip(contacts, self.impacts_per_contact)},
+            "peak_displacement_m": by_floor(self.peak_displacement),
+            "peak_displacement_time_s": by_floor(self.peak_displacement_time),
+            "peak_drift_m": by_floor(self.peak_drift),
+            "peak_drift_time_s": by_floor(self.peak_drift_time),
+            "peak_drift_ratio": by_floor(self.peak_drift_ratio),
+            "peak_storey_shear_N": by_floor(self.peak_storey_shear),
+            "peak_storey_shear_time_s": by_floor(self.peak_storey_shear_time),
+            "peak_abs_acceleration_m_s2": by_floor(self.peak_abs_acceleration),
+            "peak_abs_acceleration_time_s": by_floor(self.peak_abs_acceleration_time),
+            "buildings": self._building_summary(),
             "energy_final_J": {name: float(v) for name, v in zip(ENERGY_NAMES, self.energy[-1])},
             "contact_dissipated_J": float(self.contact_dissipated[-1]),
             "energy_balance_error": self.energy_balance_error,
@@ -418,8 +537,35 @@ class Result:
             "solver": {"name": self.stats.solver, "rtol": self.stats.rtol, "rk_steps": self.stats.rk_steps,
                        "rejected": self.stats.rejected, "events": self.stats.events,
                        "impact_table_overflow": self.stats.impact_overflow,
-                       "wall_time_s": self.stats.wall_time},
+                       "wall_time_s": self.stats.wall_time,
+                       "peaks": ("located inside solver steps" if self.located_peaks is not None
+                                 else "read at the output steps")},
         }
+
+    def _building_summary(self) -> list[dict[str, Any]]:
+        """Per building: its natural periods and, storey by storey, the peaks and times."""
+        out = []
+        quantities = (("peak_displacement_m", self.peak_displacement),
+                      ("peak_displacement_time_s", self.peak_displacement_time),
+                      ("peak_drift_m", self.peak_drift),
+                      ("peak_drift_time_s", self.peak_drift_time),
+                      ("peak_drift_ratio", self.peak_drift_ratio),
+                      ("peak_storey_shear_N", self.peak_storey_shear),
+                      ("peak_storey_shear_time_s", self.peak_storey_shear_time),
+                      ("peak_abs_acceleration_m_s2", self.peak_abs_acceleration),
+                      ("peak_abs_acceleration_time_s", self.peak_abs_acceleration_time))
+        for b, (bl, off) in enumerate(zip(self.model.buildings, self.model.system.offsets)):
+            storeys = []
+            for j in range(bl.n):
+                row: dict[str, Any] = {"storey": j + 1,
+                                       "floor_elevation_m": float(bl.floor_levels[j]),
+                                       "height_m": float(bl.heights[j])}
+                row.update({key: float(v[off + j]) for key, v in quantities})
+                storeys.append(row)
+            out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": bl.n,
+                        "periods_s": [float(t) for t in bl.modes().periods],
+                        "storeys": storeys})
+        return out
 
     def _inelastic_summary(self) -> dict[str, Any]:
         out: dict[str, Any] = {}

@@ -10,6 +10,7 @@ is the one compiled kernel of :mod:`pounding.integrate.kernel`; the answer is a
 from __future__ import annotations
 
 import math
+import sys
 import time
 import warnings
 import weakref
@@ -20,28 +21,56 @@ import numpy as np
 
 from pounding.contact.base import STATE_SIZE
 from pounding.ground_motion import GroundMotion
-from pounding.integrate.kernel import (
+from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
+from pounding.integrate.kernel import integrate_chunk
+from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
+from pounding.integrate.layout import (
     ENERGY_COLUMNS,
+    FAIL_BUDGET,
+    I_FAIL_STEP,
+    I_FAILED,
     I_NEVENTS,
     I_NIMP,
     I_NREJECT,
     I_NSTEPS,
-    I_FAILED,
+    I_ONSET_C,
     I_OVERFLOW,
+    I_STEP_BUDGET,
     IMP_COLUMNS,
+    PK_COLUMNS,
     W_ERR_OLD,
     W_H,
     WS_F_SIZE,
     WS_I_SIZE,
-    integrate_chunk,
 )
-from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
 from pounding.integrate.propagator import FreeStep, free_step
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
 from pounding.validation import positive
 
-__all__ = ["simulate", "grid_step", "DEFAULT_RTOL"]
+__all__ = ["simulate", "grid_step", "DEFAULT_RTOL", "IntegrationError"]
+
+invalidate_if_stale([sys.modules[name] for name in KERNEL_MODULES])
+
+
+class IntegrationError(ValueError):
+    """A run that cannot be integrated: the adaptive step fell below 10⁻¹⁴ of the grid
+    step, or the run used up its budget of adaptive steps. The message names the time, the
+    contacts closed then, and what to check. (A ``ValueError``: it comes from input the
+    solver cannot resolve — masses, stiffnesses or damping far outside a building's range —
+    and the command line reports it in one line with exit status 2.)"""
+
+
+def default_step_budget(n_grid: int) -> int:
+    """Most adaptive steps a run may take: 100 a grid step, and at least 10⁵.
+
+    Measured needs (2026-11-24): 0.04–0.11 a grid step for the pounding examples (El Centro,
+    1 ms), about 1–3 for yielding storeys stepped adaptively throughout. A run that needs
+    more is resolving a contact millions of times faster than the building moves (a
+    contact far too stiff, or damped far beyond critical, for the floor masses): it would
+    take hours, so it is stopped and reported instead.
+    """
+    return 100 * n_grid + 100_000
 
 DEFAULT_RTOL: float = 1e-8
 """Default relative tolerance of the RK steps taken through contacts."""
@@ -169,6 +198,7 @@ class KernelModel(NamedTuple):
     s_code: np.ndarray  #: storey-law codes
     s_par: np.ndarray  #: storey-law constants
     s_zi: np.ndarray  #: index of each storey's z (−1 none)
+    below: np.ndarray  #: DOF of the floor below each floor (−1: the ground)
     free_steps: dict[float, FreeStep]  #: exact grid steps already built, by step [s]
 
 
@@ -221,7 +251,16 @@ def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
                        cdof=cdof, cw=cw, cgap=cgap, ccode=ccode,
                        cparams=np.ascontiguousarray(cparams), s_lo=s_lo, s_hi=s_hi,
                        s_code=s_code, s_par=np.ascontiguousarray(s_par), s_zi=s_zi,
-                       free_steps={})
+                       below=floor_below(model), free_steps={})
+
+
+def floor_below(model: PoundingModel) -> np.ndarray:
+    """The DOF of the floor below each floor (−1 for a first floor: the ground), so that
+    the drift of storey j is ``u[j] − u[below[j]]``."""
+    below = np.arange(model.n_dof, dtype=np.int64) - 1
+    for off in model.system.offsets[: len(model.buildings)]:
+        below[int(off)] = -1
+    return below
 
 
 def initial_state(model: PoundingModel, u0: np.ndarray | None,
@@ -301,7 +340,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
              h_max: float | None = None, impact_capacity: int | None = None,
              initial_displacement: np.ndarray | None = None,
              initial_velocity: np.ndarray | None = None,
-             free_stepping: str = "auto",
+             free_stepping: str = "auto", max_rk_steps: int | None = None,
              progress: Callable[[float], None] | None = None) -> Result:
     """Simulate the model under a ground motion.
 
@@ -332,12 +371,21 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
         beyond. A model with yielding storeys is not linear between impacts, so it is always
         stepped by RK (``"exact"`` is refused).
+    max_rk_steps : int, optional
+        Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
+        grid step); a run that needs more stops with an :class:`IntegrationError`.
     progress : callable, optional
         Called with the fraction done (0 … 1) after each chunk of steps.
 
     Returns
     -------
     Result
+
+    Raises
+    ------
+    IntegrationError
+        The run cannot be integrated (step-size underflow, or the step budget used up); one
+        line says when, at which contacts, and what to check.
     """
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
@@ -381,12 +429,15 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     wc = np.zeros(nc)
     w_start = np.zeros(nc)
     imp_row = np.full(nc, -1, dtype=np.int64)
-    last_f = np.zeros((nc, 4))
+    last_f = np.zeros((nc, 5))
     ws_f = np.zeros(WS_F_SIZE)
     ws_f[W_ERR_OLD] = 1e-4
     ws_f[W_H] = step * 0.1
     ws_i = np.zeros(WS_I_SIZE, dtype=np.int64)
     ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
+    ws_i[I_ONSET_C] = -1
+    ws_i[I_STEP_BUDGET] = (default_step_budget(nt) if max_rk_steps is None
+                           else int(positive("max_rk_steps", max_rk_steps)))
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
     # The kernel writes every row after the first of these, so they are not zeroed first
     # (zeroing ~5 MB costs as much as a tenth of an SDOF pair's run when the memory is
@@ -400,16 +451,19 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     e_out = np.empty((nt, ENERGY_COLUMNS))
     imp = np.full((cap, IMP_COLUMNS), np.nan)
     cpeak = np.zeros(nc)
+    cpeak_t = np.zeros(nc)
     ccount = np.zeros(nc, dtype=np.int64)
     _write_initial_row(model, km, x, sstate, u_out, v_out, acc_out, pen_out, vs_out, e_out,
                        at_rest)
 
     chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
+    pk = _initial_peaks(u_out[0], acc_out[0], km.below)
     args = (step, ag, exact, fs.blk, fs.ops, fs.gamma0, fs.gamma1, fs.aa, bw, km.k_band,
             km.c_band, km.m_diag, km.mr, km.r, km.cdof, km.cw, km.cgap, km.ccode, km.cparams,
-            km.s_lo, km.s_hi, km.s_code, km.s_par, km.s_zi, rtol, atol, h_max, x, committed,
-            sstate, wc, w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out,
-            f_out, vs_out, e_out, imp, cpeak, ccount)
+            km.s_lo, km.s_hi, km.s_code, km.s_par, km.s_zi, km.below, rtol, atol, h_max, x,
+            committed, sstate, wc, w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out,
+            pen_out, f_out, vs_out, e_out, imp, cpeak, cpeak_t, ccount, pk,
+            *kernel_scratch(km, x.size))
     # An empty chunk first: the process's first call loads the compiled kernel from numba's
     # cache (~0.3 s), which is not integrating and is kept out of stats.wall_time (a few µs
     # once loaded).
@@ -419,11 +473,11 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         k1 = min(nt - 1, k0 + chunk)
         integrate_chunk(k0, k1, *args)
         if ws_i[I_FAILED]:
-            raise RuntimeError(f"integration failed at t = {k1 * step:.4f} s: step size "
-                               f"underflow (contact too stiff for rtol={rtol:g}?)")
+            raise IntegrationError(_failure_text(model, ws_i, committed, step, rtol))
         if progress is not None:
             progress(k1 / (nt - 1))
     wall = time.perf_counter() - start
+    _final_peaks(pk, u_out[-1], acc_out[-1], km.below, (nt - 1) * step)
     n_imp = int(ws_i[I_NIMP])
     if n_imp > cap:
         warnings.warn(f"impact table full: {n_imp} impacts, {cap} rows kept (raise "
@@ -437,4 +491,60 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
                   penetration=pen_out, contact_force=f_out, energy=e_out,
                   yielding_shear=vs_out, final_z=x[2 * n:].copy(),
                   impact_array=imp[: min(n_imp, cap)].copy(), stats=stats,
-                  contact_peak=cpeak, contact_impacts=ccount)
+                  contact_peak=cpeak, contact_peak_time=cpeak_t, contact_impacts=ccount,
+                  located_peaks=pk)
+
+
+def kernel_scratch(km: KernelModel, m: int) -> tuple[np.ndarray, ...]:
+    """The kernel's scratch arrays for a model (see
+    :func:`pounding.integrate.kernel.integrate_chunk`), ``m`` the length of the state."""
+    n, nc = km.n, km.cgap.size
+    npw = 3 + nc
+    stages = np.zeros((2, 7, m))
+    powers = np.zeros((2, 7, npw))
+    states = np.zeros((4, m))
+    gaps = np.zeros((4, nc))
+    floors = np.zeros((6, n))
+    return (stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)), np.zeros((1, npw)),
+            *states, np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n), *gaps, *floors,
+            1.0 / km.m_diag)
+
+
+def _initial_peaks(u0: np.ndarray, a0: np.ndarray, below: np.ndarray) -> np.ndarray:
+    """The peaks table at t = 0: every floor's |u|, |drift| and |absolute acceleration|."""
+    pk = np.zeros((u0.size, PK_COLUMNS))
+    pk[:, 0] = np.abs(u0)
+    lower = np.where(below >= 0, u0[np.maximum(below, 0)], 0.0)
+    pk[:, 2] = np.abs(u0 - lower)
+    pk[:, 4] = np.abs(a0)
+    return pk
+
+
+def _final_peaks(pk: np.ndarray, u: np.ndarray, a: np.ndarray, below: np.ndarray,
+                 t: float) -> None:
+    """Compare the values at the end of the run with the peaks (the kernel examines only
+    steps in which a rate changes sign: pounding.integrate.peaks)."""
+    lower = np.where(below >= 0, u[np.maximum(below, 0)], 0.0)
+    for col, v in ((0, np.abs(u)), (2, np.abs(u - lower)), (4, np.abs(a))):
+        more = v > pk[:, col]
+        pk[more, col] = v[more]
+        pk[more, col + 1] = t
+
+
+def _failure_text(model: PoundingModel, ws_i: np.ndarray, committed: np.ndarray, step: float,
+                  rtol: float) -> str:
+    """One line: why and when the integration stopped, the contacts closed then, and what
+    to check."""
+    t = int(ws_i[I_FAIL_STEP]) * step
+    closed = [c.label for c, st in zip(model.contacts, committed) if st[0] > 0.0]
+    where = (f" with contact {', '.join(closed[:4])}{' …' if len(closed) > 4 else ''} closed"
+             if closed else "")
+    if ws_i[I_FAILED] == FAIL_BUDGET:
+        why = (f"solver: stopped after {int(ws_i[I_STEP_BUDGET]):,} adaptive steps at "
+               f"t = {t:.4f} s{where}")
+    else:
+        why = (f"solver: the adaptive step fell below 1e-14 of the {step:g} s output step at "
+               f"t = {t:.4f} s{where} (rtol = {rtol:g})")
+    return (why + ": the model moves millions of times faster than a building does there; "
+            "check the masses, storey and contact stiffnesses and the contact damping "
+            "(e.g. e far below 0.1), or raise max_rk_steps")

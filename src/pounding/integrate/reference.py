@@ -30,7 +30,7 @@ from pounding.contact.base import STATE_SIZE, V0, V0_MIN
 from pounding.contact.dispatch import contact_stored_energy, contact_trial
 from pounding.ground_motion import GroundMotion
 from pounding.integrate import ground_on_grid, grid_step, initial_state
-from pounding.integrate.kernel import ENERGY_COLUMNS, IMP_COLUMNS
+from pounding.integrate.layout import ENERGY_COLUMNS, IMP_COLUMNS, PK_COLUMNS
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
 
@@ -181,6 +181,28 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                          "only")
     out = np.zeros((nt, y.size))
     out[0] = y
+    below = np.array(_floor_below(model), dtype=np.int64)
+
+    def floor_values(yt: NDArray[np.float64]) -> NDArray[np.float64]:
+        """|u|, |drift| and |absolute acceleration| of every floor at the states ``yt``
+        (columns): an array (3, N, n_times)."""
+        u, v = yt[:n], yt[n:2 * n]
+        lower = np.where(below[:, None] >= 0, u[np.maximum(below, 0)], 0.0)
+        p = np.zeros_like(u)
+        for k in range(yt.shape[1]):
+            f = forces(yt[:, k])
+            for c in range(nc):
+                np.add.at(p[:, k], cdof[c], -cw[c] * f[c])
+            vs = storey_shears(yt[:, k])[0]
+            for s, st in enumerate(storeys):
+                p[st.upper, k] -= vs[s]
+                if st.lower >= 0:
+                    p[st.lower, k] += vs[s]
+        a_abs = -minv_k @ u - minv_c @ v + minv @ p
+        return np.abs(np.stack([u, u - lower, a_abs]))
+
+    peaks = np.zeros((n, PK_COLUMNS))
+    peaks[:, 0::2] = floor_values(y[:, None])[:, :, 0].T
     f_out = np.zeros((nt, nc))
     vs_out = np.zeros((nt, ns))
     stored = np.zeros(nt)
@@ -224,13 +246,17 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                     ts = np.linspace(t, t_stop, 64)
                     fs = np.array([-neg_f(s) for s in ts])
                     kmax = int(np.argmax(fs))
-                    best = fs[kmax]
+                    best, t_best = fs[kmax], ts[kmax]
                     if 0 < kmax < len(ts) - 1:
                         res = minimize_scalar(neg_f, bounds=(ts[kmax - 1], ts[kmax + 1]),
                                               method="bounded", options={"xatol": 1e-12})
-                        best = max(best, -res.fun)
+                        if -res.fun > best:
+                            best, t_best = -res.fun, float(res.x)
                     row = impacts[open_row[c]]
-                    row[4] = max(row[4], best)
+                    if best > row[4]:
+                        row[4], row[5] = best, t_best
+            if t_stop > t:
+                _update_peaks(peaks, sol.sol, t, t_stop, floor_values)
             y = sol.y[:, -1].copy()
             t = t_stop
             if sol.status != 1:
@@ -253,7 +279,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 phase[c] = 1
                 f0 = contact_trial(codes[c], params[c], max(d, 1e-300), rate, committed[c],
                                    scratch)[0]
-                impacts.append([c, t, np.nan, committed[c, V0], f0, 0.0, np.nan, np.nan])
+                impacts.append([c, t, np.nan, committed[c, V0], f0, t, 0.0, np.nan, np.nan])
                 open_row[c] = len(impacts) - 1
                 w_start[c] = y[i_e + 3 + c]
             elif tag[0] == "gap":
@@ -261,8 +287,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 d, rate = kin(y, c)
                 row = impacts[open_row[c]]
                 row[2] = t
-                row[6] = max(-rate, 0.0) / committed[c, V0]
-                row[7] = y[i_e + 3 + c] - w_start[c]
+                row[7] = max(-rate, 0.0) / committed[c, V0]
+                row[8] = y[i_e + 3 + c] - w_start[c]
                 open_row[c] = -1
                 committed[c] = 0.0
                 phase[c] = 0
@@ -271,7 +297,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 d, rate = kin(y, c)
                 contact_trial(codes[c], params[c], d, rate, committed[c], scratch)
                 committed[c] = scratch
-                impacts[open_row[c]][5] = max(impacts[open_row[c]][5], d)
+                impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
                 phase[c] = -phase[c]
             if t >= t1:
                 break
@@ -281,7 +307,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 d, rate = kin(y, c)
                 contact_trial(codes[c], params[c], d, rate, committed[c], scratch)
                 committed[c] = scratch
-                impacts[open_row[c]][5] = max(impacts[open_row[c]][5], d)
+                impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
     wall = time.perf_counter() - start
     u_out = out[:, :n]
     v_out = out[:, n:2 * n]
@@ -318,7 +344,40 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                   velocity=v_out, abs_acceleration=acc, penetration=pen, contact_force=f_out,
                   energy=energy, impact_array=imp, stats=stats, yielding_shear=vs_out,
                   final_z=np.array([out[-1, i_h + s] for s, st in enumerate(storeys)
-                                    if st.kind != "bilinear"]))
+                                    if st.kind != "bilinear"]),
+                  located_peaks=peaks)
+
+
+def _floor_below(model: PoundingModel) -> list[int]:
+    """The DOF below each floor (−1: the ground), from the building definitions."""
+    out = []
+    for p, b in enumerate(model.buildings):
+        off = int(model.system.offsets[p])
+        out += [off + j - 1 if j > 0 else -1 for j in range(b.n)]
+    return out
+
+
+def _update_peaks(peaks: NDArray[np.float64], dense, t0: float, t1: float, values) -> None:  # noqa: ANN001
+    """Largest |u|, |drift|, |absolute acceleration| of every floor over ``[t0, t1]`` from
+    the dense output ``dense``: 64 samples, then a bounded scalar search (to 10⁻¹² s) around
+    the largest, as for the peak contact forces."""
+    ts = np.linspace(t0, t1, 64)
+    vals = values(dense(ts))  # (3, N, 64)
+    for q in range(3):
+        for i in range(vals.shape[1]):
+            kmax = int(np.argmax(vals[q, i]))
+            best, t_best = float(vals[q, i, kmax]), float(ts[kmax])
+            # refine only where the samples come within 1 % of the peak so far (64 samples of
+            # a step under the record's sample interval miss a smooth peak by far less)
+            if 0 < kmax < ts.size - 1 and best >= 0.99 * peaks[i, 2 * q]:
+                res = minimize_scalar(lambda s, q=q, i=i: -values(dense(np.array([s])))[q, i, 0],
+                                      bounds=(ts[kmax - 1], ts[kmax + 1]), method="bounded",
+                                      options={"xatol": 1e-12})
+                if -res.fun > best:
+                    best, t_best = float(-res.fun), float(res.x)
+            if best > peaks[i, 2 * q]:
+                peaks[i, 2 * q] = best
+                peaks[i, 2 * q + 1] = t_best
 
 
 class _Storey(NamedTuple):

@@ -1,0 +1,344 @@
+"""One grid step taken by the adaptive integrator (regime 2 of
+:mod:`pounding.integrate.kernel`): Dormand–Prince steps that land exactly on the grid point,
+cut short at every located event, with states committed at each accepted step.
+
+Step-size control is the elementary controller (``h ← h · min(5, max(0.2, 0.9 err^−1/5))``,
+Hairer, Nørsett & Wanner I, §II.4); a step cut short by the grid does not shrink the
+proposal, one cut by an event restarts from it, and the first step after a contact's onset
+starts from the size the previous impact of that contact began with. The work is bounded:
+the run stops (and reports why) when a step falls below 10⁻¹⁴ of the grid step or the
+number of RK steps exceeds its budget (``ws_i[I_STEP_BUDGET]``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from pounding.contact.base import V0
+from pounding.hysteresis.base import D_C, V_C
+from pounding.integrate.commit import commit_contacts, commit_storeys
+from pounding.integrate.dormand_prince import rk_step, weighted_sum
+from pounding.integrate.events import event_tolerance, event_value, find_event, locate
+from pounding.integrate.layout import (
+    E_CONTACT_STORED,
+    E_CONTACT_WORK,
+    E_DAMPING,
+    E_HYSTERETIC,
+    E_INPUT,
+    E_KINETIC,
+    E_STRAIN,
+    EV_DRIFT_MAX,
+    EV_DRIFT_MIN,
+    EV_GRAZE,
+    EV_ONSET,
+    EV_RELOADING,
+    EV_SEPARATION,
+    FAIL_BUDGET,
+    FAIL_UNDERFLOW,
+    I_FAIL_STEP,
+    I_FAILED,
+    I_NEVENTS,
+    I_NREJECT,
+    I_NSTEPS,
+    I_ONSET_C,
+    I_STEP_BUDGET,
+    P_CONTACT,
+    P_DAMP,
+    P_INPUT,
+    P_STOREY,
+    W_E_DAMP,
+    W_E_INPUT,
+    W_E_STOREY,
+    W_ERR_OLD,
+    W_H,
+)
+from pounding.integrate.peaks import track_point, track_step
+from pounding.integrate.rhs import (
+    INLINE,
+    NRT_FREE,
+    band_mv,
+    deriv_call,
+    gap_row,
+    jerk,
+    law_call,
+    recoverable_call,
+    stored_call,
+)
+
+# per-contact memory (columns of last_f)
+LF_TIME, LF_FORCE, LF_RATE, LF_ONSET_STEP, LF_GRAZED = range(5)
+
+
+@njit(**NRT_FREE)
+def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, mr, r, cdof, cw,
+                 cgap, ccode, cparams, s_lo, s_hi, s_code, s_par, s_zi, below, rtol, atol,
+                 h_max, graze_tol, x, committed, sstate, wc, w_start, imp_row, last_f, ws_f,
+                 ws_i, u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, imp, cpeak,
+                 cpeak_t, ccount, pk, kx, px, ks, ps, ks_b, ps_b, ytmp, y1, yb, lin, work,
+                 arel0, jk, jk1, aabs0, aabs1, gd, gr):
+    """Grid steps from k with adaptive RK steps and events, writing the outputs of each,
+    while a contact is closed (or to ``k1`` if not ``exact_free``). At entry ``kx`` (row 0)
+    holds f(x) at ``ag[k]`` and ``jk`` the jerk; on return x, ``kx``, ``arel0``, ``jk``,
+    ``gd`` and ``gr`` are those of the grid point reached.
+
+    Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
+    says why). One call for a whole contact episode: a call passes some sixty arrays.
+    """
+    n = r.shape[0]
+    m = x.shape[0]
+    nc = cgap.shape[0]
+    ns = s_lo.shape[0]
+    npw = P_CONTACT + nc
+    while k < k1:
+        # ---------------- grid step k → k + 1: RK steps landing on t_k + dt
+        t_k = k * dt
+        a0 = ag[k]
+        a1 = ag[k + 1]
+        dag = (a1 - a0) / dt
+        s = 0.0
+        h = min(ws_f[W_H], dt, h_max)
+        for i in range(n):
+            aabs0[i] = kx[0, n + i] + r[i] * a0
+        while s < dt:
+            last = False
+            if s + h >= dt * (1.0 - 1e-12):
+                h = dt - s
+                last = True
+            a_end = a1 if last else a0 + dag * (s + h)
+            err = rk_step(x, kx, px, h, a0, dag, s, a_end, n, bw, k_band, c_band, m_inv, mr, r,
+                          cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par,
+                          s_zi, sstate, lin, ks, ps, ytmp, y1, atol, rtol)
+            ws_i[I_NSTEPS] += 1
+            if ws_i[I_NSTEPS] > ws_i[I_STEP_BUDGET]:
+                ws_i[I_FAILED] = FAIL_BUDGET
+                ws_i[I_FAIL_STEP] = k
+                return -1
+            if err > 1.0 or not np.isfinite(err):
+                ws_i[I_NREJECT] += 1
+                fac = 0.9 * err ** -0.2 if np.isfinite(err) else 0.1
+                h *= max(0.1, fac)
+                ws_f[W_H] = h
+                if h < 1e-14 * dt:
+                    ws_i[I_FAILED] = FAIL_UNDERFLOW
+                    ws_i[I_FAIL_STEP] = k
+                    return -1
+                continue
+            # events inside the accepted step?
+            h_try = h
+            fac_try = min(5.0, max(0.2, 0.9 * err ** -0.2)) if err > 0.0 else 5.0
+            h_acc = h
+            # a contact found, on real steps, not to touch is not searched again until it
+            # recedes (its rate negative at a step's start)
+            for c in range(nc):
+                if last_f[c, LF_GRAZED] != 0.0 and gap_row(c, x, n, cdof, cw)[1] < 0.0:
+                    last_f[c, LF_GRAZED] = 0.0
+            te, ce, kind = find_event(x, kx, y1, ks, h, n, cdof, cw, cgap, committed, s_lo, s_hi,
+                                      -1, 0, graze_tol, last_f[:, LF_GRAZED])
+            ev_c = -1
+            ev_kind = 0
+            while ce >= 0:
+                # locate on real RK steps by the Illinois method, keeping the 'after' side
+                g_lo = event_value(kind, ce, x, n, cdof, cw, cgap, s_lo, s_hi)
+                g_hi = event_value(kind, ce, y1, n, cdof, cw, cgap, s_lo, s_hi)
+                upward = kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
+                lo = 0.0
+                hi = h_acc
+                side_ok = (g_hi > 0.0) if upward else (g_hi <= 0.0)
+                if kind == EV_SEPARATION and g_hi == 0.0:
+                    side_ok = True
+                found_hi = side_ok
+                if not side_ok:
+                    # grazing: both ends on the 'before' side; test the estimate
+                    err = rk_step(x, kx, px, te, a0, dag, s, a0 + dag * (s + te), n, bw, k_band,
+                                  c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
+                                  s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp,
+                                  yb, atol, rtol)
+                    ws_i[I_NSTEPS] += 1
+                    g_te = event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
+                    if (g_te > 0.0) == upward and g_te != 0.0:
+                        hi = te
+                        g_hi = g_te
+                        found_hi = True
+                if not found_hi:
+                    break  # the interpolant's touch was not real
+                t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
+                g_tol = event_tolerance(kind, ce, n, cdof, s_hi, atol)
+                h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0,
+                                    dag, s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                                    ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
+                                    sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i)
+                if kind == EV_GRAZE:
+                    # the step now ends at the peak of the gap's penetration: closed there?
+                    d_peak = gap_row(ce, y1, n, cdof, cw)[0] - cgap[ce]
+                    if d_peak > 0.0:
+                        # yes: the gap closed before the peak; locate that onset in (0, h_acc]
+                        g_lo = gap_row(ce, x, n, cdof, cw)[0] - cgap[ce]
+                        h_acc, err = locate(EV_ONSET, ce, 0.0, h_acc, g_lo, d_peak,
+                                            0.5 * h_acc, atol[cdof[ce, 0]], dt, x, kx, px, a0,
+                                            dag, s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+                                            cgap, ccode, cparams, committed, s_lo, s_hi, s_code,
+                                            s_par, s_zi, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1,
+                                            yb, atol, rtol, ws_i)
+                        kind = EV_ONSET
+                    else:
+                        # no: accept the step to the peak, and do not search this gap again
+                        # until it recedes
+                        last_f[ce, LF_GRAZED] = 1.0
+                        ws_i[I_NEVENTS] += 1
+                ev_c = ce
+                ev_kind = kind
+                last = False
+                # any other event earlier in this shorter step?
+                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, committed,
+                                          s_lo, s_hi, ev_c, ev_kind, graze_tol,
+                                          last_f[:, LF_GRAZED])
+            if ev_kind == EV_GRAZE:
+                ev_c = -1  # nothing happened at the peak of a gap that stayed open
+                ev_kind = 0
+            # ---- accept the step [s, s + h_acc]
+            ws_f[W_ERR_OLD] = max(err, 1e-4)
+            onset_c = ws_i[I_ONSET_C]
+            if onset_c >= 0:
+                # the first step accepted after this contact's onset: where the next onset of
+                # the contact will start (no rejections from a free-flight step)
+                last_f[onset_c, LF_ONSET_STEP] = h_acc
+                ws_i[I_ONSET_C] = -1
+            ws_f[W_E_INPUT] += weighted_sum(ps, P_INPUT, h_acc)
+            ws_f[W_E_DAMP] += weighted_sum(ps, P_DAMP, h_acc)
+            if ns > 0:
+                ws_f[W_E_STOREY] += weighted_sum(ps, P_STOREY, h_acc)
+            for c in range(nc):
+                wc[c] += weighted_sum(ps, P_CONTACT + c, h_acc)
+            s_new = dt if last else s + h_acc
+            t_now = t_k + s_new
+            a_now = a1 if last else a0 + dag * s_new
+            # peaks over the step, from both ends (the states of its start still committed)
+            for i in range(n):
+                aabs1[i] = ks[6, n + i] + r[i] * a_now
+            jerk(y1, ks[6], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
+                 committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk1)
+            track_step(t_k + s, h_acc, n, below, x, kx[0, n:], aabs0, jk, y1, ks[6, n:], aabs1,
+                       jk1, pk)
+            for i in range(m):
+                x[i] = y1[i]
+            if ns > 0:
+                commit_storeys(x, n, s_lo, s_hi, s_code, s_par, s_zi, sstate)
+            was_event = ev_c >= 0
+            if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN:
+                ws_i[I_NEVENTS] += 1
+                ev_c = -1  # a storey, not a contact: the contact loop must not see it
+                ev_kind = 0
+            # commit contact states at the step end; handle the event
+            state_changed = commit_contacts(x, ks[6], t_now, ev_c, ev_kind, n, cdof, cw, cgap,
+                                            ccode, cparams, committed, wc, w_start, imp_row,
+                                            last_f, ws_i, imp, cpeak, cpeak_t, ccount)
+            if state_changed:
+                deriv_call(x, x, a_now, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+                           cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx,
+                           px, 0)
+                for i in range(n):
+                    aabs0[i] = kx[0, n + i] + r[i] * a_now
+                jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
+                     committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
+            else:
+                for i in range(m):
+                    kx[0, i] = ks[6, i]
+                for i in range(npw):
+                    px[0, i] = ps[6, i]
+                if ns > 0:
+                    # the jerk with the storeys' newly committed states
+                    jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
+                         committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
+                else:
+                    for i in range(n):
+                        jk[i] = jk1[i]
+                for i in range(n):
+                    aabs0[i] = aabs1[i]
+            if was_event:
+                # a corner or a jump of the acceleration: its values at the event (after a jump,
+                # also just before it: the step's end value)
+                track_point(t_now, n, below, x, aabs1, pk)
+                if state_changed:
+                    track_point(t_now, n, below, x, aabs0, pk)
+            # next step size; a step cut short by the grid does not shrink the proposal, one
+            # cut by an event restarts from it
+            if was_event:
+                ws_f[W_H] = h_try
+                if ev_kind == EV_ONSET:
+                    ws_i[I_ONSET_C] = ev_c
+                    if last_f[ev_c, LF_ONSET_STEP] > 0.0:
+                        ws_f[W_H] = min(h_try, last_f[ev_c, LF_ONSET_STEP])
+            elif last:
+                ws_f[W_H] = max(ws_f[W_H], h_acc * fac_try)
+            else:
+                ws_f[W_H] = h_acc * fac_try
+            h = min(ws_f[W_H], h_max)
+            s = s_new
+        for i in range(n):
+            arel0[i] = kx[0, n + i]
+        grid_outputs(k + 1, ag[k + 1], x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap,
+                     ccode, cparams, committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f,
+                     u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, lin)
+        k += 1
+        if exact_free and not any_closed(committed):
+            break  # back to exact stepping once every contact is open
+    for c in range(cgap.shape[0]):
+        dsum, gr[c] = gap_row(c, x, r.shape[0], cdof, cw)
+        gd[c] = dsum - cgap[c]
+    return k
+
+
+@njit(**INLINE)
+def grid_outputs(o, a_o, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, ccode, cparams,
+                 committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f, u_out, v_out, acc_out,
+                 pen_out, f_out, vs_out, e_out, lin):
+    """Write the outputs of grid point ``o`` (ground acceleration ``a_o``) from the state
+    ``x`` and ``kx = f(x)`` after an adaptive grid step."""
+    n = r.shape[0]
+    band_mv(k_band, c_band, x, n, bw, lin)
+    for i in range(n):
+        u_out[o, i] = x[i]
+        v_out[o, i] = x[n + i]
+        acc_out[o, i] = kx[0, n + i] + r[i] * a_o
+    ek = 0.0
+    es = 0.0
+    for i in range(n):
+        ek += 0.5 * m_diag[i] * x[n + i] * x[n + i]
+        es += 0.5 * x[i] * lin[0, i]
+    recov = 0.0
+    for q in range(s_lo.shape[0]):
+        vs_out[o, q] = sstate[q, V_C]
+        zi = s_zi[q]
+        recov += recoverable_call(s_code[q], s_par, q, sstate[q, D_C],
+                                  x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])
+    wsum = 0.0
+    stored = 0.0
+    for c in range(cgap.shape[0]):
+        dsum, rate = gap_row(c, x, n, cdof, cw)
+        delta = dsum - cgap[c]
+        pen_out[o, c] = delta
+        f = 0.0
+        if committed[c, V0] > 0.0:
+            f = law_call(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
+                         committed[c, V0], committed[c, 1], committed[c, 2])[0]
+            stored += stored_call(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
+                                  delta, committed[c, 1])
+        f_out[o, c] = f
+        wsum += wc[c]
+    e_out[o, E_INPUT] = ws_f[W_E_INPUT]
+    e_out[o, E_KINETIC] = ek
+    e_out[o, E_STRAIN] = es + recov
+    e_out[o, E_DAMPING] = ws_f[W_E_DAMP]
+    e_out[o, E_CONTACT_WORK] = wsum
+    e_out[o, E_CONTACT_STORED] = stored
+    e_out[o, E_HYSTERETIC] = ws_f[W_E_STOREY] - recov
+
+
+@njit(**NRT_FREE)
+def any_closed(committed):
+    """True while any contact is closed."""
+    for c in range(committed.shape[0]):
+        if committed[c, V0] > 0.0:
+            return True
+    return False

@@ -1,0 +1,245 @@
+"""Exact grid steps while every gap is open (regime 1 of :mod:`pounding.integrate.kernel`).
+
+With every contact open and every storey linear, the structure is linear and the ground
+acceleration is linear over a grid step, so the step is taken with the exact propagator of
+:mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``), block by block
+(the buildings are uncoupled while the gaps are open). The input energy over the step is an
+exact quadratic form in ``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same
+sweep over the operator's columns as Φ x; the viscous work of the step is the input work
+less the change of kinetic and strain energy, exactly.
+
+After each step every gap is checked for closing at the step end and inside it, from the
+quintic Hermite of its ``(δ, δ̇, δ̈)`` at both ends (:func:`pounding.integrate.events.
+touch_possible`): a gap that could come within the event tolerance of closing hands the
+step to the adaptive integrator, which locates the touch — or finds there is none — on
+real steps. So whether a grazing approach is an impact does not depend on the output step.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from pounding.integrate.events import touch_possible
+from pounding.integrate.layout import (
+    PK_A,
+    PK_D,
+    PK_U,
+    E_CONTACT_STORED,
+    E_CONTACT_WORK,
+    E_DAMPING,
+    E_HYSTERETIC,
+    E_INPUT,
+    E_KINETIC,
+    E_STRAIN,
+    W_E_DAMP,
+    W_E_INPUT,
+    W_E_STOREY,
+)
+from pounding.integrate.peaks import track_floor, update_cubic, update_quintic
+from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row
+
+
+@njit(**NRT_FREE)
+def one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1):
+    """The exact step of a one-floor block p (the block sweep of :func:`free_run`, written
+    out): writes ``x1[p]``, ``x1[n + p]``; returns the block's two input-energy terms."""
+    u = x[p]
+    v = x[n + p]
+    x1[p] = g0[p] * a0 + g1[p] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
+    x1[n + p] = g0[n + p] * a0 + g1[n + p] * a1 + fops[p, 1] * u + fops[n + p, 1] * v
+    return (fops[p, 2] * u + fops[n + p, 2] * v, fops[p, 3] * u + fops[n + p, 3] * v)
+
+
+@njit(**NRT_FREE)
+def floor_rel_acc(j, y, ag, n, bw, k_band, c_band, m_inv, r):
+    """Relative acceleration of floor j at state y with every gap open and every storey
+    linear: ``−(K u + C u̇)_j / m_j − r_j a_g`` (row j of the banded products)."""
+    s = 0.0
+    for d in range(2 * bw + 1):
+        col = j + d - bw
+        if 0 <= col < n:
+            s += k_band[d, j] * y[col] + c_band[d, j] * y[n + col]
+    return -s * m_inv[j] - r[j] * ag
+
+
+@njit(**NRT_FREE)
+def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, m_inv, r,
+             cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, work, gd, gr, gd1, gr1, jk,
+             jk1, wc, ws_f, u_out, v_out, acc_out, pen_out, e_out, pk):
+    """Exact grid steps from grid point ``k`` while every gap stays open, writing the
+    outputs and peaks of each; returns the grid point whose step could close a gap (that
+    step not taken: the caller re-takes it with RK) or ``k1``.
+
+    A small function of its own, so that its loop compiles tight. ``gd``, ``gr``: every
+    contact's δ and δ̇ at grid point k; ``jk``: every floor's jerk there (kept for coupled
+    floors only; both updated as the steps go); ``graze_tol`` [m]: how near zero a gap's
+    peak inside a step must come to hand the step over; the other arrays as in
+    :func:`pounding.integrate.kernel.integrate_chunk` (``x1``, ``acc``, ``lin``, ``work``,
+    ``gd1``, ``gr1``, ``jk1``: scratch).
+    """
+    n = m_diag.shape[0]
+    nc = cgap.shape[0]
+    nblk = blk.shape[0] - 1
+    e_in = ws_f[W_E_INPUT]
+    e_d = ws_f[W_E_DAMP]
+    e_h = ws_f[W_E_STOREY]
+    e_prev = e_out[k, E_KINETIC] + e_out[k, E_STRAIN]
+    wsum = 0.0  # contact work does not change while every gap is open
+    for c in range(nc):
+        wsum += wc[c]
+    while k < k1:
+        a0 = ag[k]
+        a1 = ag[k + 1]
+        # block by block (FreeStep): acc = [Φ_b z, w_in · z] in one sweep over the
+        # columns of the block operator (each row accumulates in a fixed order)
+        lin_i0 = 0.0
+        lin_i1 = 0.0
+        if nblk == n:
+            # every floor a block of its own (a row of SDOF oscillators): no block loop
+            for i in range(n):
+                w0, w1 = one_floor_step(i, n, x, x1, fops, g0, g1, a0, a1)
+                lin_i0 += w0
+                lin_i1 += w1
+        else:
+            for b in range(nblk):
+                p = blk[b]
+                nb = blk[b + 1] - p
+                if nb == 1:
+                    w0, w1 = one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1)
+                    lin_i0 += w0
+                    lin_i1 += w1
+                    continue
+                nb2 = 2 * nb
+                rows = nb2 + 2
+                for ir in range(nb):
+                    acc[ir] = g0[p + ir] * a0 + g1[p + ir] * a1
+                    acc[nb + ir] = g0[n + p + ir] * a0 + g1[n + p + ir] * a1
+                acc[nb2] = 0.0
+                acc[nb2 + 1] = 0.0
+                # columns of floor j's displacement and velocity together; the loop over rows
+                # vectorises without reassociation
+                for j in range(nb):
+                    xu = x[p + j]
+                    xv = x[n + p + j]
+                    for ir in range(rows):
+                        acc[ir] = acc[ir] + fops[p + j, ir] * xu + fops[n + p + j, ir] * xv
+                for ir in range(nb):
+                    x1[p + ir] = acc[ir]
+                    x1[n + p + ir] = acc[nb + ir]
+                lin_i0 += acc[nb2]
+                lin_i1 += acc[nb2 + 1]
+        # could any gap close at the step end, or come within graze_tol of closing inside
+        # it? Then the step is not taken. (A cheap bound on the cubic through δ, δ̇ first;
+        # the quintic through δ, δ̇, δ̈ only where that cannot rule a touch out.)
+        for c in range(nc):
+            ds1, r1 = gap_row(c, x1, n, cdof, cw)
+            d1 = ds1 - cgap[c]
+            gd1[c] = d1
+            gr1[c] = r1
+            if d1 > 0.0 or max(gd[c], d1) + 0.25 * dt * (abs(gr[c]) + abs(r1)) > -graze_tol:
+                q0 = 0.0
+                q1 = 0.0
+                for q in range(4):
+                    j = cdof[c, q]
+                    q0 += cw[c, q] * floor_rel_acc(j, x, a0, n, bw, k_band, c_band, m_inv, r)
+                    q1 += cw[c, q] * floor_rel_acc(j, x1, a1, n, bw, k_band, c_band, m_inv, r)
+                if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
+                    ws_f[W_E_INPUT] = e_in
+                    ws_f[W_E_DAMP] = e_d
+                    return k
+        # input energy over the step: an exact quadratic form
+        e_step = (a0 * lin_i0 + a1 * lin_i1
+                  + (faa[0] * a0 * a0 + faa[1] * a0 * a1 + faa[2] * a1 * a1))
+        e_in += e_step
+        # outputs at grid point k + 1: no contact force, no yielding storey, so the absolute
+        # acceleration is ü + r a_g = −M⁻¹(K u + C u̇); and the peaks over the step: a
+        # floor's step is examined only where a rate (velocity, drift rate, jerk) changes
+        # sign (pounding.integrate.peaks), the jerk being −M⁻¹(K u̇ + C ü)
+        o = k + 1
+        t0 = k * dt
+        ek = 0.0
+        es = 0.0
+        if bw == 0:
+            # no floor coupled to another (a row of SDOF oscillators, each a building of
+            # one storey): floor by floor, without the generic band loops, and every value
+            # at the step's start recomputed from its outputs rather than kept in scratch
+            for i in range(n):
+                kk = k_band[0, i]
+                cc = c_band[0, i]
+                mi = m_inv[i]
+                u0 = x[i]
+                v0 = x[n + i]
+                u = x1[i]
+                v = x1[n + i]
+                ku = kk * u
+                aa = -(ku + cc * v) * mi
+                u_out[o, i] = u
+                v_out[o, i] = v
+                acc_out[o, i] = aa
+                ek += 0.5 * m_diag[i] * v * v
+                es += 0.5 * u * ku
+                x[i] = u
+                x[n + i] = v
+                ar = aa - r[i] * a1
+                j1 = -(kk * v + cc * ar) * mi
+                aa0 = acc_out[k, i]
+                ar0 = aa0 - r[i] * a0
+                j0 = -(kk * v0 + cc * ar0) * mi
+                if (v0 > 0.0) != (v > 0.0):
+                    update_quintic(pk, i, PK_U, t0, dt, u0, v0, ar0, u, v, ar)
+                    update_quintic(pk, i, PK_D, t0, dt, u0, v0, ar0, u, v, ar)
+                if (j0 > 0.0) != (j1 > 0.0):
+                    update_cubic(pk, i, PK_A, t0, dt, aa0, j0, aa, j1)
+        else:
+            band_mv(k_band, c_band, x1, n, bw, lin)
+            for i in range(n):
+                u = x1[i]
+                v = x1[n + i]
+                aa = -(lin[0, i] + lin[1, i]) * m_inv[i]
+                u_out[o, i] = u
+                v_out[o, i] = v
+                acc_out[o, i] = aa
+                ek += 0.5 * m_diag[i] * v * v
+                es += 0.5 * u * lin[0, i]
+                work[i] = v
+                work[n + i] = aa - r[i] * a1
+            # jerk at the step end (kept for the next step's start)
+            band_mv(k_band, c_band, work, n, bw, lin)
+            for i in range(n):
+                jk1[i] = -(lin[0, i] + lin[1, i]) * m_inv[i]
+            for i in range(n - 1, -1, -1):
+                # from the top floor down, so that the floor below is still at the start
+                v0 = x[n + i]
+                v = x1[n + i]
+                lo = below[i]
+                dr0 = v0 - x[n + lo] if lo >= 0 else v0
+                dr1 = v - x1[n + lo] if lo >= 0 else v
+                if ((v0 > 0.0) != (v > 0.0) or (dr0 > 0.0) != (dr1 > 0.0)
+                        or (jk[i] > 0.0) != (jk1[i] > 0.0)):
+                    track_floor(t0, dt, n, i, below, x, a0, x1, a1, r, acc_out[k], jk,
+                                acc_out[o], jk1, pk)
+                x[i] = x1[i]
+                x[n + i] = v
+                jk[i] = jk1[i]
+        # nothing but the viscous dampers takes energy out (every gap open, linear
+        # storeys): the step's viscous work is the input work less the change of kinetic
+        # and strain energy, exactly
+        e_d += e_step - ((ek + es) - e_prev)
+        e_prev = ek + es
+        for c in range(nc):
+            gd[c] = gd1[c]
+            gr[c] = gr1[c]
+            pen_out[o, c] = gd1[c]
+        # (f_out[o] stays as allocated, zero: its pages are not even touched while every
+        # gap is open, and writing the outputs is about half of an exact step's cost)
+        e_out[o, E_INPUT] = e_in
+        e_out[o, E_KINETIC] = ek
+        e_out[o, E_STRAIN] = es
+        e_out[o, E_DAMPING] = e_d
+        e_out[o, E_CONTACT_WORK] = wsum
+        e_out[o, E_CONTACT_STORED] = 0.0
+        e_out[o, E_HYSTERETIC] = e_h
+        k += 1
+    ws_f[W_E_INPUT] = e_in
+    ws_f[W_E_DAMP] = e_d
+    return k

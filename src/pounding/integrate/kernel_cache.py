@@ -1,0 +1,75 @@
+"""Keep numba's on-disk cache of the kernel consistent with the kernel's sources.
+
+numba decides whether a cached function is still valid from the time stamp and size of the
+one source file that defines it. The kernel's entry point (``integrate_chunk`` in
+:mod:`pounding.integrate.kernel`) compiles in the functions of a dozen other modules (the
+right-hand side, the step, the events, the contact and storey laws), and a change to any
+of those alone would leave a stale compiled kernel in the cache. So a stamp of every kernel
+source file (name, size, modification time) is kept beside the cache, and when it differs
+every cached kernel function is flushed (numba then compiles afresh, once).
+
+This costs a dozen ``stat`` calls at import; it matters for anyone who edits the kernel, and
+for installs that replace some files but not others.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import os
+from pathlib import Path
+from types import ModuleType
+
+KERNEL_MODULES: tuple[str, ...] = (
+    "pounding.integrate.kernel", "pounding.integrate.adaptive", "pounding.integrate.commit",
+    "pounding.integrate.dormand_prince", "pounding.integrate.events",
+    "pounding.integrate.exact_steps", "pounding.integrate.layout", "pounding.integrate.peaks",
+    "pounding.integrate.rhs", "pounding.contact.base", "pounding.contact.dispatch",
+    "pounding.contact.linear", "pounding.contact.hertz", "pounding.contact.bilinear",
+    "pounding.hysteresis.base", "pounding.hysteresis.dispatch",
+    "pounding.hysteresis.bilinear", "pounding.hysteresis.bouc_wen",
+)
+"""Every module whose compiled code ends up in the kernel."""
+
+STAMP_FILE = "pounding-kernel-sources.stamp"
+
+
+def sources_stamp(modules: list[ModuleType]) -> str:
+    """A hash of the kernel's source files' names, sizes and modification times."""
+    h = hashlib.sha1()
+    for mod in modules:
+        path = Path(mod.__file__ or "")
+        with contextlib.suppress(OSError):
+            st = path.stat()
+            h.update(f"{mod.__name__}:{st.st_size}:{st.st_mtime_ns};".encode())
+    return h.hexdigest()
+
+
+def invalidate_if_stale(modules: list[ModuleType]) -> bool:
+    """Flush every cached compiled function of ``modules`` if their sources changed since
+    the stamp was written (then write the new stamp). Returns True if it flushed.
+
+    Never raises: a cache that cannot be read or written only means compiling again.
+    """
+    from numba.core.registry import CPUDispatcher
+
+    dispatchers = [obj for mod in modules for obj in vars(mod).values()
+                   if isinstance(obj, CPUDispatcher) and obj.__module__ == mod.__name__]
+    cache = getattr(modules[0].integrate_chunk, "_cache", None)
+    folder = getattr(cache, "_cache_path", None)
+    if folder is None:
+        return False
+    stamp = sources_stamp(modules)
+    path = Path(folder) / STAMP_FILE
+    with contextlib.suppress(OSError):
+        if path.read_text() == stamp:
+            return False
+    for disp in dispatchers:
+        with contextlib.suppress(Exception):
+            disp._cache.flush()  # numba's own invalidation: empties the cache index
+    with contextlib.suppress(OSError):
+        Path(folder).mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_text(stamp)
+        os.replace(tmp, path)
+    return True

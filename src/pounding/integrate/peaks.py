@@ -1,0 +1,144 @@
+"""Peaks of the response located inside steps, as the kernel steps.
+
+For every floor the kernel keeps the largest |displacement|, |storey drift| (the storey
+below the floor) and |absolute acceleration| with their times (columns
+:data:`~pounding.integrate.layout.PK_U` …). After each step — exact or adaptive, whose ends
+never straddle an event — the end values are compared, and an extremum inside the step is
+taken from an interpolant through both ends:
+
+* displacement and drift: the quintic Hermite of ``(u, u̇, ü)`` (error O(h⁶));
+* absolute acceleration: the cubic Hermite of ``(a, ȧ)``, ``ȧ`` the jerk from the
+  differentiated equations of motion (:func:`pounding.integrate.rhs.jerk`; error O(h⁴)).
+
+A smooth quantity takes its largest magnitude where its rate is zero, or at the ends of the
+run; so a step is examined only where the rate changes sign inside it (then its end value
+and the interpolant's extremum are compared with the peak so far), and the values at t = 0,
+at the end of the run and just after every event (where the acceleration may jump or turn
+a corner: :func:`track_point`) are compared as they are. Tracking costs three sign tests a
+floor and step.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from pounding.integrate.events import hermite_max, quintic_max
+from pounding.integrate.layout import PK_A, PK_D, PK_U
+from pounding.integrate.rhs import INLINE, NRT_FREE
+
+
+@njit(**NRT_FREE)
+def update_quintic(pk, i, col, t0, h, f0, d0, q0, f1, d1, q1):
+    """Peak of |f| over one step (value and time in ``pk[i, col]``, ``pk[i, col + 1]``)
+    from its values, rates and second rates at both ends, if its rate changes sign."""
+    if (d0 > 0.0) == (d1 > 0.0):
+        return  # |f| is monotonic over the step: no peak inside or at its end
+    a1 = abs(f1)
+    if a1 > pk[i, col]:
+        pk[i, col] = a1
+        pk[i, col + 1] = t0 + h
+    bound = (max(abs(f0), a1) + 0.25 * h * (abs(d0) + abs(d1))
+             + 0.125 * h * h * (abs(q0) + abs(q1)))
+    if bound <= pk[i, col]:
+        return
+    if d0 > 0.0 or d1 < 0.0:
+        val, s = quintic_max(f0, d0, q0, f1, d1, q1, h)
+        if val > pk[i, col]:
+            pk[i, col] = val
+            pk[i, col + 1] = t0 + s * h
+    if d0 < 0.0 or d1 > 0.0:
+        val, s = quintic_max(-f0, -d0, -q0, -f1, -d1, -q1, h)
+        if val > pk[i, col]:
+            pk[i, col] = val
+            pk[i, col + 1] = t0 + s * h
+
+
+@njit(**NRT_FREE)
+def update_cubic(pk, i, col, t0, h, f0, d0, f1, d1):
+    """Peak of |f| over one step from its values and rates at both ends (cubic Hermite),
+    if its rate changes sign."""
+    if (d0 > 0.0) == (d1 > 0.0):
+        return
+    a1 = abs(f1)
+    if a1 > pk[i, col]:
+        pk[i, col] = a1
+        pk[i, col + 1] = t0 + h
+    if max(abs(f0), a1) + 0.25 * h * (abs(d0) + abs(d1)) <= pk[i, col]:
+        return
+    if d0 > 0.0 or d1 < 0.0:
+        val, s = hermite_max(f0, d0, f1, d1, h)
+        if val > pk[i, col]:
+            pk[i, col] = val
+            pk[i, col + 1] = t0 + s * h
+    if d0 < 0.0 or d1 > 0.0:
+        val, s = hermite_max(-f0, -d0, -f1, -d1, h)
+        if val > pk[i, col]:
+            pk[i, col] = val
+            pk[i, col + 1] = t0 + s * h
+
+
+@njit(**INLINE)
+def track_step(t0, h, n, below, x0, arel0, aabs0, j0, x1, arel1, aabs1, j1, pk):
+    """Update every floor's peaks over the step ``[t0, t0 + h]`` from the states ``x``
+    (``[u, u̇, …]``), relative accelerations ``arel``, absolute accelerations ``aabs`` and
+    jerks ``j`` at its two ends. ``below[i]``: the DOF of the floor below floor i (−1:
+    the ground). Inlined: the sign tests are all most steps cost."""
+    for i in range(n):
+        lo = below[i]
+        v0 = x0[n + i]
+        v1 = x1[n + i]
+        dr0 = v0 - x0[n + lo] if lo >= 0 else v0
+        dr1 = v1 - x1[n + lo] if lo >= 0 else v1
+        if (v0 > 0.0) != (v1 > 0.0):
+            update_quintic(pk, i, PK_U, t0, h, x0[i], v0, arel0[i], x1[i], v1, arel1[i])
+        if (dr0 > 0.0) != (dr1 > 0.0):
+            if lo >= 0:
+                update_quintic(pk, i, PK_D, t0, h, x0[i] - x0[lo], dr0, arel0[i] - arel0[lo],
+                               x1[i] - x1[lo], dr1, arel1[i] - arel1[lo])
+            else:
+                update_quintic(pk, i, PK_D, t0, h, x0[i], v0, arel0[i], x1[i], v1, arel1[i])
+        if (j0[i] > 0.0) != (j1[i] > 0.0):
+            update_cubic(pk, i, PK_A, t0, h, aabs0[i], j0[i], aabs1[i], j1[i])
+
+
+@njit(**NRT_FREE)
+def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, j0, aabs1, j1, pk):
+    """The peaks of floor i over an exact step ``[t0, t0 + h]`` (called where one of its
+    rates changes sign) from the states ``x0``, ``x1`` at its ends, the ground accelerations
+    ``a0``, ``a1`` there, the absolute accelerations and the jerks."""
+    lo = below[i]
+    v0 = x0[n + i]
+    v1 = x1[n + i]
+    ar0 = aabs0[i] - r[i] * a0
+    ar1 = aabs1[i] - r[i] * a1
+    if (v0 > 0.0) != (v1 > 0.0):
+        update_quintic(pk, i, PK_U, t0, h, x0[i], v0, ar0, x1[i], v1, ar1)
+    if lo >= 0:
+        dr0 = v0 - x0[n + lo]
+        dr1 = v1 - x1[n + lo]
+        if (dr0 > 0.0) != (dr1 > 0.0):
+            update_quintic(pk, i, PK_D, t0, h, x0[i] - x0[lo], dr0,
+                           ar0 - (aabs0[lo] - r[lo] * a0), x1[i] - x1[lo], dr1,
+                           ar1 - (aabs1[lo] - r[lo] * a1))
+    elif (v0 > 0.0) != (v1 > 0.0):
+        update_quintic(pk, i, PK_D, t0, h, x0[i], v0, ar0, x1[i], v1, ar1)
+    if (j0[i] > 0.0) != (j1[i] > 0.0):
+        update_cubic(pk, i, PK_A, t0, h, aabs0[i], j0[i], aabs1[i], j1[i])
+
+
+@njit(**NRT_FREE)
+def track_point(t, n, below, x, aabs, pk):
+    """Update every floor's peaks with its values at one instant: t = 0, the end of the run,
+    and every event (where the acceleration may jump or turn a corner; after a jump, the
+    value just after it)."""
+    for i in range(n):
+        if abs(x[i]) > pk[i, PK_U]:
+            pk[i, PK_U] = abs(x[i])
+            pk[i, PK_U + 1] = t
+        d = x[i] - x[below[i]] if below[i] >= 0 else x[i]
+        if abs(d) > pk[i, PK_D]:
+            pk[i, PK_D] = abs(d)
+            pk[i, PK_D + 1] = t
+        if abs(aabs[i]) > pk[i, PK_A]:
+            pk[i, PK_A] = abs(aabs[i])
+            pk[i, PK_A + 1] = t

@@ -1,0 +1,248 @@
+"""The equations of motion as the compiled kernel evaluates them: ``ẏ = f(y)`` for buildings
+whose floors may strike each other, and the jerk (rate of the acceleration) the kernel uses
+to locate acceleration peaks inside steps.
+
+``y = [u (N), u̇ (N), z (one per Bouc–Wen storey)]``, displacements and velocities relative to
+the ground; ``M ü + C u̇ + K u + V(storeys) − Σ contact forces = −M r a_g``, M lumped
+(diagonal), K and C banded. Contact forces act on *contact rows*: the penetration of contact
+c is ``δ = Σ_q w_cq u_(j_cq) − gap_c`` (four DOFs and weights, so floor-to-floor and
+floor-to-column contacts are the same kind of row).
+
+Every function here is compiled with numba's reference counting off (they allocate
+nothing); see :data:`NRT_FREE`.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from pounding.contact.base import V0
+from pounding.contact.dispatch import has_linear_spring, law_trial, stored_energy
+from pounding.hysteresis.base import D_C, V_C
+from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
+from pounding.integrate.layout import DELTA_EPS, P_CONTACT, P_DAMP, P_INPUT, P_STOREY, RATE_SIDE
+
+NRT_FREE = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
+                _nrt=False)
+"""Options of the kernel's working functions. They allocate nothing (the scratch comes from
+:func:`pounding.integrate.kernel.integrate_chunk`), so they run with numba's
+reference-counting runtime off: no array passed to a call costs an atomic increment and
+decrement. Sums are never reassociated (``fastmath`` allows only fused multiply-add), so
+results do not depend on how arrays happen to be aligned in memory."""
+
+INLINE = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+"""Options of the functions numba inlines where they are called: the right-hand side, inside
+the Dormand–Prince step (a call would pass some twenty arrays as flattened structures, 35 ns
+each time), and parts of the step loop that have a single call site. numba's inlining copies
+and re-types the function at every call site, so small helpers (:func:`gap_row`, …) are
+plain functions instead: LLVM inlines them without that cost (making them so cut a fresh
+compile from 31 s to 26 s, with the kernel's time unchanged within the noise)."""
+
+
+@njit(**NRT_FREE)
+def gap_row(c, y, n, cdof, cw):
+    """``(Σ w u, Σ w u̇)`` of contact c: its penetration plus the gap, and its rate
+    (:meth:`pounding.model.PoundingModel.contact_kinematics`)."""
+    d = 0.0
+    v = 0.0
+    for q in range(4):
+        j = cdof[c, q]
+        d += cw[c, q] * y[j]
+        v += cw[c, q] * y[n + j]
+    return d, v
+
+
+@njit(**NRT_FREE)
+def drift_of(lo, hi, y, n):
+    """Drift and drift rate of the storey between DOF ``lo`` (−1: the ground) and ``hi``."""
+    if lo >= 0:
+        return y[hi] - y[lo], y[n + hi] - y[n + lo]
+    return y[hi], y[n + hi]
+
+
+@njit(**NRT_FREE)
+def band_mv(kb, cb, y, n, bw, lin):
+    """``lin[0] = K y[:n]``, ``lin[1] = C y[n:2n]`` with K and C in band storage
+    (``kb[d, i] = K[i, i + d − bw]``): O(N·bw), each row summed in column order, and the
+    loop over rows vectorises without reassociation."""
+    for i in range(n):
+        lin[0, i] = 0.0
+        lin[1, i] = 0.0
+    for d in range(2 * bw + 1):
+        off = d - bw
+        lo = max(0, -off)
+        hi = min(n, n - off)
+        for i in range(lo, hi):
+            lin[0, i] += kb[d, i] * y[i + off]
+            lin[1, i] += cb[d, i] * y[n + i + off]
+
+
+@njit(**NRT_FREE)
+def law_call(code, p0, p1, p2, delta, rate, v0, slip, dmax):
+    """:func:`pounding.contact.dispatch.law_trial`, called rather than inlined.
+
+    numba's ``inline="always"`` copies and re-types a function at every call site; with every
+    contact law inlined into the right-hand side and the step loop, all the laws were compiled
+    many times over (a first run compiled for 240 s on 2 cores). Called, they compile once,
+    with no measurable change in the kernel's time (docs/engine.md, "Compiled once").
+    """
+    return law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax)
+
+
+@njit(**NRT_FREE)
+def storey_call(code, par, s, d, dr, z, d_c, v_c):
+    """:func:`pounding.hysteresis.dispatch.storey_trial`, called (see :func:`law_call`)."""
+    return storey_trial(code, par, s, d, dr, z, d_c, v_c)
+
+
+@njit(**NRT_FREE)
+def recoverable_call(code, par, s, d, z, v):
+    """:func:`pounding.hysteresis.dispatch.storey_recoverable`, called (see
+    :func:`law_call`)."""
+    return storey_recoverable(code, par, s, d, z, v)
+
+
+@njit(**NRT_FREE)
+def stored_call(code, p0, p1, p2, delta, slip):
+    """:func:`pounding.contact.dispatch.stored_energy`, called (see :func:`law_call`)."""
+    return stored_energy(code, p0, p1, p2, delta, slip)
+
+
+@njit(**INLINE)
+def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
+          committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
+    """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
+    per-contact F δ̇].
+
+    ``y_start``: the state at the start of the step (``y`` itself outside a step). Writes row
+    ``row`` of ``dy`` and ``power`` (2-D arrays: no views in the hot loop); ``m_inv``: 1 /
+    floor mass. Contact forces and yielding storeys use their committed states (read only).
+
+    Inlined at its one call site in the Dormand–Prince step (where a call would pass some
+    twenty arrays as flattened structures, 35 ns a call); called through
+    :func:`deriv_call` elsewhere.
+    """
+    nc = cgap.shape[0]
+    # linear part: acc = −M⁻¹(K u + C v) − r a_g, K (linear storeys only) and C banded
+    # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work
+    p_in = 0.0
+    p_d = 0.0
+    if bw == 0:
+        # no floor coupled to another (a row of SDOF oscillators): floor by floor
+        for i in range(n):
+            v = y[n + i]
+            cv = c_band[0, i] * v
+            dy[row, i] = v
+            dy[row, n + i] = -(k_band[0, i] * y[i] + cv) * m_inv[i] - r[i] * ag
+            p_in -= v * mr[i] * ag
+            p_d += v * cv
+    else:
+        band_mv(k_band, c_band, y, n, bw, lin)
+        for i in range(n):
+            dy[row, i] = y[n + i]
+            dy[row, n + i] = -(lin[0, i] + lin[1, i]) * m_inv[i] - r[i] * ag
+            p_in -= y[n + i] * mr[i] * ag
+            p_d += y[n + i] * lin[1, i]
+    power[row, P_INPUT] = p_in
+    power[row, P_DAMP] = p_d
+    # yielding storeys: shear V from the storey law, −V on the floor above, +V below
+    p_s = 0.0
+    for s in range(s_lo.shape[0]):
+        d, dr = drift_of(s_lo[s], s_hi[s], y, n)
+        zi = s_zi[s]
+        z = y[2 * n + zi] if zi >= 0 else 0.0
+        v, kt, zd = storey_call(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])
+        hi = s_hi[s]
+        lo = s_lo[s]
+        dy[row, n + hi] -= v * m_inv[hi]
+        if lo >= 0:
+            dy[row, n + lo] += v * m_inv[lo]
+        if zi >= 0:
+            dy[row, 2 * n + zi] = zd
+        p_s += v * dr
+    power[row, P_STOREY] = p_s
+    for c in range(nc):
+        dsum, rate = gap_row(c, y, n, cdof, cw)
+        delta = dsum - cgap[c]
+        # Inside a step the contact keeps its committed status: an open contact pushes
+        # nothing even where δ > 0; a closed one goes on past δ = 0, and past δ̇ = 0 keeps
+        # the approach or restitution branch the step began on, its law continued smoothly
+        # (below). Status and branch change only at located events, so every
+        # step integrates a smooth right-hand side: no jump or kink in a force inside a
+        # step to spoil the error estimate and have the step rejected.
+        f = 0.0
+        if committed[c, V0] > 0.0:
+            # the law at max(δ, DELTA_EPS), on the δ̇ branch the step began on (at RATE_SIDE
+            # for approach, 0 for restitution), continued linearly: in δ̇ with ∂F/∂δ̇ (every
+            # law here is linear in δ̇ on a branch), and in δ with ∂F/∂δ for the laws with
+            # a linear spring. A Hertz spring's force and stiffness both vanish at δ = 0,
+            # so its limit there is already smooth (and its ∂F/∂δ, unbounded at δ = 0
+            # while approaching, is not used). Where nothing is crossed this is the law.
+            rate_law = rate
+            rate_start = gap_row(c, y_start, n, cdof, cw)[1]
+            if (rate_start > 0.0) != (rate > 0.0):
+                rate_law = RATE_SIDE if rate_start > 0.0 else 0.0
+            f, kd, kr, _, _, _ = law_call(ccode[c], cparams[c, 0], cparams[c, 1],
+                                          cparams[c, 2], max(delta, DELTA_EPS), rate_law,
+                                          committed[c, V0], committed[c, 1], committed[c, 2])
+            f += kr * (rate - rate_law)
+            if delta < DELTA_EPS and has_linear_spring(ccode[c]):
+                f += kd * (delta - DELTA_EPS)
+        power[row, P_CONTACT + c] = f * rate
+        if f != 0.0:
+            # the force pushes the left point left and the right point right, shared to
+            # the floors with the point's weights (−w F on each)
+            for q in range(4):
+                j = cdof[c, q]
+                dy[row, n + j] -= cw[c, q] * f * m_inv[j]
+
+
+@njit(**NRT_FREE)
+def deriv_call(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+               cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
+    """:func:`deriv`, called: where the step loop needs f at a grid point or an event."""
+    deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
+          committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row)
+
+
+@njit(**NRT_FREE)
+def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, committed, s_lo,
+         s_hi, s_code, s_par, s_zi, sstate, lin, work, out):
+    """Rate of the absolute floor accelerations [m/s³] at state ``x`` with ``dx = f(x)``.
+
+    Differentiating the equations of motion along the motion (the ground term cancels:
+    ``ü + r a_g = −M⁻¹(K u + C u̇ + V + F)``)::
+
+        d/dt (ü + r a_g) = −M⁻¹ (K u̇ + C ü + V̇ + Ḟ)
+
+    with the storey shears' rates ``V̇ = (∂V/∂d) ḋ`` and every closed contact's force rate
+    ``Ḟ = (∂F/∂δ) δ̇ + (∂F/∂δ̇) δ̈`` from its law's tangents at the committed state.
+    ``work``: scratch of length 2N; ``out``: (N,) written.
+    """
+    for i in range(n):
+        work[i] = x[n + i]
+        work[n + i] = dx[n + i]
+    band_mv(k_band, c_band, work, n, bw, lin)
+    for i in range(n):
+        out[i] = lin[0, i] + lin[1, i]
+    for s in range(s_lo.shape[0]):
+        d, dr = drift_of(s_lo[s], s_hi[s], x, n)
+        zi = s_zi[s]
+        z = x[2 * n + zi] if zi >= 0 else 0.0
+        kt = storey_call(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])[1]
+        vdot = kt * dr
+        out[s_hi[s]] += vdot
+        if s_lo[s] >= 0:
+            out[s_lo[s]] -= vdot
+    for c in range(cgap.shape[0]):
+        if committed[c, V0] > 0.0:
+            dsum, rate = gap_row(c, x, n, cdof, cw)
+            acc = gap_row(c, dx, n, cdof, cw)[1]
+            _, kd, kr, _, _, _ = law_call(ccode[c], cparams[c, 0], cparams[c, 1],
+                                          cparams[c, 2], max(dsum - cgap[c], DELTA_EPS), rate,
+                                          committed[c, V0], committed[c, 1], committed[c, 2])
+            fdot = kd * rate + kr * acc
+            for q in range(4):
+                out[cdof[c, q]] += cw[c, q] * fdot
+    for i in range(n):
+        out[i] = -out[i] * m_inv[i]
