@@ -36,7 +36,8 @@ _LAID_OUT: weakref.WeakSet[Any] = weakref.WeakSet()
 """Figures whose margins were set by :func:`new_figure` (they fit as they are)."""
 
 
-def new_figure(width: float, height: float, *, laid_out: bool = True) -> Figure:
+def new_figure(width: float, height: float, *, laid_out: bool = True,
+               layout: str | None = None) -> Figure:
     """A figure ``width`` × ``height`` inches on its own Agg canvas (files only, no pyplot).
 
     Parameters
@@ -47,11 +48,13 @@ def new_figure(width: float, height: float, *, laid_out: bool = True) -> Figure:
         True if the caller places every artist inside the figure itself (fixed margins,
         :mod:`pounding.plot.layout`): :func:`save_figure` then saves the page as it is,
         without the costly ``bbox_inches="tight"`` pass, which draws the figure twice.
+    layout : str, optional
+        A matplotlib layout engine (``"constrained"``, ``"tight"``); none by default.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(width, height))
+    fig = Figure(figsize=(width, height), layout=layout)
     FigureCanvasAgg(fig)
     if laid_out:
         _LAID_OUT.add(fig)

@@ -100,7 +100,7 @@ def plot_envelopes(result: Result) -> Figure:
     force = scale_for(float(env.shear.max()) if env.shear.size else 0.0, "N")
     fig = new_figure(10.0, 4.4)
     ax_u, ax_d, ax_v = axes_grid(fig, 1, 3, left=0.7, right=0.3, top=0.45, bottom=0.95,
-                                 wspace=0.35, sharey=True)[0]
+                                 wspace=0.5, sharey=True)[0]
     colours = matplotlib.colormaps["tab10"]
     panels = ((ax_u, env.displacement, MM, _floor_profile, "peak |displacement|"),
               (ax_d, env.drift_ratio, DRIFT_RATIO, _storey_profile, "peak |storey drift ratio|"),

@@ -102,12 +102,11 @@ def plot_hysteresis(result: Result) -> Figure:
         axes[0].text(0.5, 0.5, "no impact" if model.contacts else
                      "no contacts (a single building)", transform=axes[0].transAxes,
                      ha="center", va="center", color="0.4")
-    for i, ax in enumerate(axes):
-        row, column = divmod(i, ncol)
-        if column == 0:
+    n_drawn = max(len(chosen), 1)
+    for i, ax in enumerate(axes[:n_drawn]):
+        if i % ncol == 0:
             ax.set_ylabel(f"contact force [{force.unit}]")
-        # the bottom panel of each column (the last row may be short)
-        if row == nrow - 1 or i + ncol >= max(len(chosen), 1):
+        if i + ncol >= n_drawn:  # the lowest panel of its column (the last row may be short)
             ax.set_xlabel(f"penetration δ [{MM.unit}]")
             ax.xaxis.set_tick_params(labelbottom=True)
     more = len(labels) - len(chosen)
