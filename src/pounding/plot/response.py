@@ -46,6 +46,10 @@ PANEL_HEIGHT = 2.1
 """Height of one response panel [in]."""
 GROUND_HEIGHT = 1.1
 """Height of the ground-acceleration panel [in]."""
+ENERGY_COLOURS = {"kinetic": "tab:blue", "elastic strain": "tab:orange",
+                  "structural damping": "tab:green", "hysteretic (storeys yielding)": "tab:brown",
+                  "dissipated in contacts": "tab:red", "stored in closed contacts": "tab:purple"}
+"""One colour per energy term, the same in every run."""
 _CHAR_WIDTH = 0.052
 """Mean width of a legend character at :data:`LEGEND_SIZE` [in] (for the legend column)."""
 
@@ -204,7 +208,7 @@ def plot_energy(result: Result) -> Figure:
     n = buckets_for_width(axes_width(ax))
     idx = union_indices(np.column_stack([edges, col["input"]]), n)
     ax.stackplot(t[idx], *(stack[idx].T * energy.factor), labels=[name for name, _ in terms],
-                 alpha=0.8, colors=[matplotlib.colormaps["tab10"](i) for i in range(len(terms))])
+                 alpha=0.8, colors=[ENERGY_COLOURS[name] for name, _ in terms])
     ax.plot(t[idx], col["input"][idx] * energy.factor, "k", lw=1.2, label="input")
     ax.set_ylabel(f"energy [{energy.unit}]")
     handles, labels = ax.get_legend_handles_labels()  # input first: it bounds the stack
