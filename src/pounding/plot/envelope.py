@@ -123,10 +123,12 @@ def plot_envelopes(result: Result) -> Figure:
     ax_u.set_ylim(0.0, top * 1.04)
     ax_u.set_ylabel("height above ground [m]")
     handles, labels = ax_u.get_legend_handles_labels()
-    if model.contacts:
-        handles += [Line2D([], [], ls="", marker="<", ms=5, mec="tab:red", mfc=face)
-                    for face in ("tab:red", "none")]
-        labels += ["contact elevation, impacts", "contact elevation, gap never closed"]
+    hit = result.peak_contact_force > 0.0
+    for shown, face, text in ((hit.any(), "tab:red", "contact elevation, impacts"),
+                              ((~hit).any(), "none", "contact elevation, gap never closed")):
+        if shown:
+            handles.append(Line2D([], [], ls="", marker="<", ms=5, mec="tab:red", mfc=face))
+            labels.append(text)
     fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 4),
                fontsize=LEGEND_SIZE + 1, frameon=False,
                bbox_to_anchor=(0.5, 0.02 / fig.get_figheight()))
