@@ -602,12 +602,17 @@ def _result_from(r: _Run) -> Any:
 
 
 def _figures_section(r: _Run) -> str:
-    from pounding.plot.response import RUN_FIGURES
+    from pounding.plot.registry import RUN_FIGURES, figures_for
 
     parts = []
     result = None
     why_not = ""
-    for fig in RUN_FIGURES.values():
+    # the figures a run of this model has (no storey hysteresis without yielding storeys);
+    # model unknown: those in the folder and those every run has
+    wanted = (figures_for(r.built.model) if r.built is not None else
+              {k: f for k, f in RUN_FIGURES.items()
+               if not f.yielding_only or (r.folder / f.file).is_file()})
+    for fig in wanted.values():
         name, caption = fig.file, fig.caption
         path = r.folder / name
         if path.is_file():

@@ -8,6 +8,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
+from pounding.plot import new_figure
 
 
 def plot_damping_formulas(e: np.ndarray | None = None) -> Figure:
@@ -19,7 +20,7 @@ def plot_damping_formulas(e: np.ndarray | None = None) -> Figure:
         Coefficients of restitution to draw (default 0.05 … 1).
     """
     e = np.linspace(0.05, 1.0, 400) if e is None else np.asarray(e, dtype=float)
-    fig = Figure(figsize=(11, 4.5))
+    fig = new_figure(11, 4.5, laid_out=False)
     ax_z, ax_c = fig.subplots(1, 2)
     for f in FORMULAS.values():
         ax = ax_z if f.kind == "zeta" else ax_c
@@ -49,7 +50,7 @@ def plot_audit(table: pd.DataFrame) -> Figure:
     table : pandas.DataFrame
         Output of :func:`pounding.contact.audit.restitution_audit`.
     """
-    fig = Figure(figsize=(11, 5))
+    fig = new_figure(11, 5, laid_out=False)
     ax_a, ax_b = fig.subplots(1, 2, sharex=True)
     colors = matplotlib.colormaps["tab20"].colors
     for i, ((formula, law), g) in enumerate(table.groupby(["formula", "law"], sort=False)):

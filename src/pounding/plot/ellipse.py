@@ -6,6 +6,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
 from pounding.link_element import ellipse_area, harmonic_loop
+from pounding.plot import new_figure
 
 
 def plot_hysteresis_ellipse(k: float, c: float, omega: float, delta0: float,
@@ -37,7 +38,7 @@ def plot_hysteresis_ellipse(k: float, c: float, omega: float, delta0: float,
     """
     loop = harmonic_loop(k, c, omega, delta0, n=n)
     e_d = ellipse_area(c, omega, delta0)
-    fig = Figure(figsize=(6.4, 4.8))
+    fig = new_figure(6.4, 4.8, laid_out=False)
     ax = fig.add_subplot(1, 1, 1)
     ax.plot(loop.delta, loop.f_spring, color="tab:blue", lw=1.6, label=r"spring $f_S = k\delta$")
     ax.plot(loop.delta, loop.f_dashpot, color="tab:green", lw=1.6,

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from matplotlib.figure import Figure
 
+from pounding.plot import new_figure
 from pounding.studies.gap import DesignSpectrum, GapStudy
 
 RULE_STYLE = {"ABS": "tab:red", "SRSS": "tab:green", "DDC": "tab:purple"}
@@ -34,7 +35,7 @@ def plot_gap_study(study: GapStudy, spectrum: DesignSpectrum | None = None) -> F
     """
     n_pairs = len(study.model.buildings) - 1
     pairs = [p for p in range(n_pairs) if (study.pair == p).any()]
-    fig = Figure(figsize=(4.2 * len(pairs) + 1.4, 5.2))
+    fig = new_figure(4.2 * len(pairs) + 1.4, 5.2, laid_out=False)
     axes = [fig.add_subplot(1, len(pairs), i + 1) for i in range(len(pairs))]
     from_peaks = study.rules_from_peaks("mean")
     from_spec = study.rules_from_spectrum(spectrum) if spectrum is not None else None

@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
-from matplotlib.figure import Figure
+from typing import TYPE_CHECKING
 
-from pounding.ground_motion import GroundMotion
+from pounding.plot import new_figure
 from pounding.units import G
+
+if TYPE_CHECKING:  # `pounding record` imports this module at start-up: no matplotlib here
+    from matplotlib.figure import Figure
+
+    from pounding.ground_motion import GroundMotion
 
 __all__ = ["plot_record"]
 
@@ -34,7 +39,7 @@ def plot_record(gm: GroundMotion) -> Figure:
         (gm.velocity(), "velocity [m/s]", "PGV", "m/s", "tab:blue"),
         (gm.displacement(), "displacement [m]", "PGD", "m", "tab:green"),
     ]
-    fig = Figure(figsize=(8.0, 7.0), layout="constrained")
+    fig = new_figure(8.0, 7.0, layout="constrained", laid_out=False)
     axes = fig.subplots(3, 1, sharex=True)
     for ax, (y, label, peak_name, unit, colour) in zip(axes, series, strict=True):
         ax.plot(t, y, color=colour, lw=0.8)

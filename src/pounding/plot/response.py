@@ -1,14 +1,16 @@
-"""Figures of one simulation (:class:`pounding.result.Result`): floor displacements,
-contact forces, contact hysteresis loops, and the energy balance.
+"""Time-history figures of one simulation (:class:`pounding.result.Result`): floor
+displacements and contact forces (each with the ground acceleration in a panel below,
+sharing the time axis), and the energy balance.
 
-Each function returns a :class:`matplotlib.figure.Figure` built without pyplot (nothing is
-registered globally, so nothing leaks); save it with :func:`pounding.plot.save_figure`.
+Each function returns a :class:`matplotlib.figure.Figure` on its own Agg canvas, built
+without pyplot; save it with :func:`pounding.plot.save_figure`. Histories are drawn
+decimated for display (:mod:`pounding.plot.decimate`): every peak is drawn exactly.
+Displacements are in mm, forces and energies in the multiple of N and J that reads between
+1 and 1000 (:func:`pounding.plot.layout.scale_for`), no axis uses offset or scientific
+notation.
 """
 
 from __future__ import annotations
-
-from collections.abc import Callable
-from typing import NamedTuple
 
 import math
 from collections import defaultdict
@@ -18,13 +20,38 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from pounding.result import Result, peak_abs
+from pounding.plot import new_figure
+from pounding.plot.decimate import buckets_for_width, union_indices
+from pounding.plot.layout import (
+    LEGEND_SIZE,
+    MM,
+    TITLE_SIZE,
+    axes_grid,
+    axes_width,
+    ground_panel,
+    history,
+    plain_ticks,
+    scale_for,
+)
+from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
+from pounding.plot.registry import RUN_FIGURES, RunFigure, figures_for
+from pounding.result import Result
 
-__all__ = ["plot_contact_forces", "plot_displacements", "plot_energy", "plot_hysteresis",
-           "contact_floors"]
+__all__ = ["plot_contact_forces", "plot_displacements", "plot_energy", "contact_floors",
+           # re-exported for callers of the former single module
+           "plot_hysteresis", "plot_storey_hysteresis", "RUN_FIGURES", "RunFigure",
+           "figures_for"]
 
-MAX_HYSTERESIS_PANELS = 12
-"""At most this many contacts get a hysteresis panel (those with the largest peak force)."""
+PANEL_HEIGHT = 2.1
+"""Height of one response panel [in]."""
+GROUND_HEIGHT = 1.1
+"""Height of the ground-acceleration panel [in]."""
+ENERGY_COLOURS = {"kinetic": "tab:blue", "elastic strain": "tab:orange",
+                  "structural damping": "tab:green", "hysteretic (storeys yielding)": "tab:brown",
+                  "dissipated in contacts": "tab:red", "stored in closed contacts": "tab:purple"}
+"""One colour per energy term, the same in every run."""
+_CHAR_WIDTH = 0.052
+"""Mean width of a legend character at :data:`LEGEND_SIZE` [in] (for the legend column)."""
 
 
 def _empty(ax: Axes, text: str) -> None:
@@ -45,146 +72,114 @@ def _building_label(result: Result, b: int) -> str:
     return f"B{b + 1}" + (f" ({name})" if name and name != f"B{b + 1}" else "")
 
 
-def plot_displacements(result: Result) -> Figure:
-    """Displacement histories [m] of each building's roof and of every floor with a contact.
+def _legend_columns(labels: list[str], rows: int) -> tuple[int, float]:
+    """Columns of a legend of ``labels`` with at most ``rows`` rows, and its width [in]."""
+    ncol = max(1, math.ceil(len(labels) / max(rows, 1)))
+    longest = max((len(s) for s in labels), default=0)
+    return ncol, ncol * (0.35 + _CHAR_WIDTH * longest)
 
-    One panel per building, left to right from the top; the roof is drawn thick.
+
+def _history_figure(result: Result, n_panels: int, legend_width: float
+                    ) -> tuple[Figure, list[Axes], Axes]:
+    """A figure of ``n_panels`` response panels and the ground panel below, time shared."""
+    height = 0.55 + n_panels * (PANEL_HEIGHT + 0.4) + GROUND_HEIGHT + 0.55
+    fig = new_figure(10.0 + legend_width, height)
+    axes = axes_grid(fig, n_panels + 1, 1, left=0.8, right=0.25 + legend_width, top=0.55,
+                     bottom=0.55, hspace=0.4,
+                     height_ratios=[PANEL_HEIGHT] * n_panels + [GROUND_HEIGHT],
+                     sharex="col")[:, 0]
+    ground_panel(axes[-1], result.time, result.ground, result.motion.name)
+    axes[-1].set_xlabel("time [s]")
+    axes[-1].set_xlim(0.0, float(result.time[-1]) if result.time.size > 1 else 1.0)
+    return fig, list(axes[:-1]), axes[-1]
+
+
+def _suptitle(fig: Figure, text: str) -> None:
+    fig.suptitle(text, fontsize=TITLE_SIZE + 1, y=1.0 - 0.1 / fig.get_figheight(), va="top")
+
+
+def plot_displacements(result: Result) -> Figure:
+    """Displacement histories [mm] of each building's roof and of every floor with a
+    contact, one panel per building, the ground acceleration [g] below.
+
+    The roof is drawn thick; the legend gives each floor's elevation [m].
     """
     model = result.model
     t = result.time
-    nb = len(model.buildings)
-    fig = Figure(figsize=(10, 2.4 * nb + 0.8))
-    axes = np.atleast_1d(fig.subplots(nb, 1, sharex=True, squeeze=False)[:, 0])
     floors = contact_floors(result)
+    shown = [sorted(floors.get(b, set()) | {bl.n - 1}) for b, bl in enumerate(model.buildings)]
+    labels = [[f"F{j + 1} (roof, {bl.floor_levels[j]:g} m)" if j == bl.n - 1
+               else f"F{j + 1} ({bl.floor_levels[j]:g} m)" for j in show]
+              for bl, show in zip(model.buildings, shown)]
+    rows = int(PANEL_HEIGHT / 0.15)
+    ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
+    fig, axes, _ = _history_figure(result, len(model.buildings), max(width))
     cmap = matplotlib.colormaps["viridis"]
     for b, (ax, bl, off) in enumerate(zip(axes, model.buildings, model.system.offsets)):
-        show = sorted(floors.get(b, set()) | {bl.n - 1})
-        for j in show:
+        for j, label in zip(shown[b], labels[b]):
             roof = j == bl.n - 1
             colour = "k" if roof else cmap(0.1 + 0.75 * j / max(bl.n - 1, 1))
-            label = (f"F{j + 1} (roof, {bl.floor_levels[j]:g} m)" if roof
-                     else f"F{j + 1} ({bl.floor_levels[j]:g} m)")
-            ax.plot(t, result.displacement[:, off + j], color=colour, lw=1.4 if roof else 0.8,
-                    label=label, zorder=3 if roof else 2)
+            history(ax, t, result.displacement[:, off + j] * MM.factor, color=colour,
+                    lw=1.3 if roof else 0.7, label=label, zorder=3 if roof else 2)
         ax.axhline(0.0, color="0.6", lw=0.5)
-        ax.set_ylabel("displacement [m]")
+        ax.set_ylabel(f"displacement [{MM.unit}]")
         ax.set_title(f"{_building_label(result, b)}: {bl.n} storey(s); roof and floors "
-                     "with a contact", fontsize=9, loc="left")
+                     "with a contact", fontsize=TITLE_SIZE, loc="left")
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="upper right", ncol=max(1, math.ceil(len(show) / 6)))
-    axes[-1].set_xlabel("time [s]")
-    fig.suptitle(f"{model.name}: floor displacements relative to the ground "
-                 f"({result.motion.name})", fontsize=10)
-    fig.tight_layout()
-    return fig
+        ax.legend(fontsize=LEGEND_SIZE, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                  borderaxespad=0.0, ncol=ncols[b], frameon=False)
+    _suptitle(fig, f"{model.name}: floor displacements relative to the ground")
+    return plain_ticks(fig)
 
 
 def plot_contact_forces(result: Result) -> Figure:
-    """Contact force histories [N], one panel per gap; dots mark each impact's peak force
-    from the impact table (resolved between output samples)."""
+    """Contact force histories [kN or MN], one panel per gap, the ground acceleration [g]
+    below; dots mark each impact's peak force from the impact table (resolved between
+    output samples)."""
     model = result.model
     t = result.time
     n_pairs = max(len(model.buildings) - 1, 1)
-    fig = Figure(figsize=(10, 2.6 * n_pairs + 0.8))
-    axes = np.atleast_1d(fig.subplots(n_pairs, 1, sharex=True, squeeze=False)[:, 0])
     imp = result.impacts
+    peak = result.peak_contact_force
+    force = scale_for(float(peak.max()) if peak.size else 0.0, "N")
+    hit_by_pair = [[c for c in model.contacts if c.pair == p and peak[c.index] > 0.0]
+                   for p in range(n_pairs)]
+    labels = [[f"{c.label} ({c.elevation:g} m)" for c in hit] for hit in hit_by_pair]
+    rows = int(PANEL_HEIGHT / 0.15)
+    ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
+    fig, axes, _ = _history_figure(result, n_pairs, max(width) if any(labels) else 0.0)
     cmap = matplotlib.colormaps["tab10"]
     for p, ax in enumerate(axes):
         cs = [c for c in model.contacts if c.pair == p]
-        hit = [c for c in cs if (imp["contact"] == c.label).any()] if len(imp) else []
-        for i, c in enumerate(hit):
+        hit = hit_by_pair[p]
+        for i, (c, label) in enumerate(zip(hit, labels[p])):
             colour = cmap(i % 10)
-            ax.plot(t, result.contact_force[:, c.index], color=colour, lw=0.8,
-                    label=f"{c.label} ({c.elevation:g} m)")
-            rows = imp[imp["contact"] == c.label]
-            mid = 0.5 * (rows["start"] + rows["end"].fillna(t[-1]))
-            ax.plot(mid, rows["peak_force"], "o", ms=3, color=colour)
+            history(ax, t, result.contact_force[:, c.index] * force.factor, color=colour,
+                    lw=0.8, label=label)
+            rows_c = imp[imp["contact"] == c.label]
+            mid = 0.5 * (rows_c["start"] + rows_c["end"].fillna(t[-1]))
+            ax.plot(mid, rows_c["peak_force"] * force.factor, "o", ms=3, color=colour)
         if not cs:
             _empty(ax, "no contacts (a single building)")
         elif not hit:
             _empty(ax, "no impact: the gap never closed")
         else:
-            ax.legend(fontsize=7, loc="upper right", ncol=max(1, math.ceil(len(hit) / 6)))
+            ax.legend(fontsize=LEGEND_SIZE, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                      borderaxespad=0.0, ncol=ncols[p], frameon=False)
         gap = model.gaps[p] if p < len(model.gaps) else float("nan")
-        ax.set_title(f"gap {p + 1}: B{p + 1}–B{p + 2}, {gap:g} m"
-                     + (f"; {len(hit)} of {len(cs)} contacts closed" if cs else ""),
-                     fontsize=9, loc="left")
-        ax.set_ylabel("contact force [N]")
+        ax.set_title(f"gap {p + 1}: B{p + 1}–B{p + 2}, {gap * MM.factor:g} mm"
+                     + (f"; {len(hit)} of {len(cs)} contacts closed; dots: peak of each "
+                        "impact" if cs else ""), fontsize=TITLE_SIZE, loc="left")
+        ax.set_ylabel(f"contact force [{force.unit}]")
         ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("time [s]")
-    fig.suptitle(f"{model.name}: contact forces (dots: peak of each impact)", fontsize=10)
-    fig.tight_layout()
-    return fig
-
-
-def _closed_runs(pen: np.ndarray, force: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The samples with δ > 0, each run of consecutive samples separated by NaN."""
-    closed = pen > 0.0
-    x = np.where(closed, pen, np.nan)
-    y = np.where(closed, force, np.nan)
-    # drop all-but-one NaN of each open stretch so the arrays stay short
-    keep = closed | np.concatenate([[False], closed[:-1]])
-    return x[keep], y[keep]
-
-
-def plot_hysteresis(result: Result) -> Figure:
-    """Force [N] against penetration [m] while each contact is closed (the seed's Fig 2).
-
-    One panel per contact that had an impact (at most :data:`MAX_HYSTERESIS_PANELS`, those
-    with the largest peak force); each impact is one loop, later impacts lighter. The area of
-    a loop is the energy the impact dissipated.
-    """
-    model = result.model
-    imp = result.impacts
-    labels = list(imp["contact"].unique()) if len(imp) else []
-    peak = result.peak_contact_force
-    chosen = sorted((c for c in model.contacts if c.label in labels),
-                    key=lambda c: -peak[c.index])[:MAX_HYSTERESIS_PANELS]
-    chosen.sort(key=lambda c: c.index)
-    n = max(len(chosen), 1)
-    ncol = min(n, 3 if n > 4 else n)
-    nrow = math.ceil(n / ncol)
-    fig = Figure(figsize=(3.6 * ncol + 0.6, 3.0 * nrow + 0.8))
-    axes = fig.subplots(nrow, ncol, squeeze=False).ravel()
-    cmap = matplotlib.colormaps["plasma"]
-    t = result.time
-    for ax, c in zip(axes, chosen):
-        rows = imp[imp["contact"] == c.label]
-        pen = result.penetration[:, c.index]
-        force = result.contact_force[:, c.index]
-        k_rows = len(rows)
-        for i, (_, r) in enumerate(rows.iterrows()):
-            end = r["end"] if np.isfinite(r["end"]) else t[-1]
-            sel = (t >= r["start"] - result.dt) & (t <= end + result.dt)
-            x, y = _closed_runs(pen[sel], force[sel])
-            ax.plot(x, y, color=cmap(0.85 * i / max(k_rows - 1, 1)), lw=0.9)
-        e_diss = float(np.nansum(rows["energy_dissipated"]))
-        ax.set_title(f"{c.label} ({c.elevation:g} m): {k_rows} impact(s), "
-                     f"{e_diss:.3g} J", fontsize=8)
-        ax.set_xlabel("penetration δ [m]")
-        ax.set_ylabel("contact force [N]")
-        ax.axhline(0.0, color="0.6", lw=0.5)
-        ax.grid(True, alpha=0.3)
-        ax.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
-    for ax in axes[len(chosen):]:
-        ax.set_axis_off()
-    if not chosen:
-        axes[0].set_axis_on()
-        _empty(axes[0], "no impact" if model.contacts else "no contacts (a single building)")
-        axes[0].set_xlabel("penetration δ [m]")
-        axes[0].set_ylabel("contact force [N]")
-    more = len(labels) - len(chosen)
-    fig.suptitle(f"{model.name}: contact hysteresis while closed (dark: early impacts, light: "
-                 "late)" + (f"; {more} more contact(s) not shown" if more > 0 else ""),
-                 fontsize=10)
-    fig.tight_layout()
-    return fig
+    _suptitle(fig, f"{model.name}: contact forces")
+    return plain_ticks(fig)
 
 
 def plot_energy(result: Result) -> Figure:
-    """Energy balance [J]: stacked kinetic, strain, structural damping, hysteretic (yielding
-    storeys), contact-dissipated and contact-stored energy against the input energy; below,
-    the closure error."""
+    """Energy balance [kJ or MJ]: stacked kinetic, strain, structural damping, hysteretic
+    (yielding storeys), contact-dissipated and contact-stored energy against the input
+    energy; below, the closure error input − sum (in its own multiple of J)."""
     from pounding.result import ENERGY_NAMES
 
     e = result.energy
@@ -199,91 +194,36 @@ def plot_energy(result: Result) -> Figure:
     ]
     if result.model.is_inelastic:
         terms.insert(3, ("hysteretic (storeys yielding)", col["hysteretic"]))
-    total = sum(v for _, v in terms)
-    closure = col["input"] - total
-    fig = Figure(figsize=(10, 6))
-    ax, ax_r = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 1]})
-    ax.stackplot(t, *[v for _, v in terms], labels=[n for n, _ in terms], alpha=0.8,
-                 colors=[matplotlib.colormaps["tab10"](i) for i in range(len(terms))])
-    ax.plot(t, col["input"], "k", lw=1.2, label="input")
-    ax.set_ylabel("energy [J]")
-    ax.legend(fontsize=8, loc="upper left")
+    stack = np.column_stack([v for _, v in terms])
+    edges = np.cumsum(stack, axis=1)
+    closure = col["input"] - edges[:, -1]
+    energy = scale_for(float(np.abs(np.column_stack([edges, col["input"]])).max())
+                       if t.size else 0.0, "J")
+    err = scale_for(float(np.abs(closure).max()) if t.size else 0.0, "J")
+    names = [name for name, _ in terms] + ["input"]
+    ncol, legend_width = _legend_columns(names, 20)
+    fig = new_figure(10.0 + legend_width, 6.0)
+    ax, ax_r = axes_grid(fig, 2, 1, left=0.8, right=0.25 + legend_width, top=0.4,
+                         bottom=0.55, hspace=0.45, height_ratios=[3.0, 1.0], sharex="col")[:, 0]
+    n = buckets_for_width(axes_width(ax))
+    idx = union_indices(np.column_stack([edges, col["input"]]), n)
+    ax.stackplot(t[idx], *(stack[idx].T * energy.factor), labels=[name for name, _ in terms],
+                 alpha=0.8, colors=[ENERGY_COLOURS[name] for name, _ in terms])
+    ax.plot(t[idx], col["input"][idx] * energy.factor, "k", lw=1.2, label="input")
+    ax.set_ylabel(f"energy [{energy.unit}]")
+    handles, labels = ax.get_legend_handles_labels()  # input first: it bounds the stack
+    ax.legend(handles[-1:] + handles[:-1], labels[-1:] + labels[:-1], fontsize=LEGEND_SIZE,
+              loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False)
     ax.grid(True, alpha=0.3)
-    ax.set_title(f"{result.model.name}: energy balance ({result.motion.name})", fontsize=10)
-    ax_r.plot(t, closure, "r", lw=0.8)
-    ax_r.set_ylabel("input − sum [J]")
+    ax.set_title(f"{result.model.name}: energy balance ({result.motion.name})",
+                 fontsize=TITLE_SIZE + 1)
+    history(ax_r, t, closure * err.factor, color="r", lw=0.8)
+    ax_r.set_ylabel(f"input − sum [{err.unit}]")
     ax_r.set_xlabel("time [s]")
+    ax_r.set_xlim(0.0, float(t[-1]) if t.size > 1 else 1.0)
     ax_r.grid(True, alpha=0.3)
-    ax_r.set_title(f"closure error: largest |input − sum| = {np.abs(closure).max():.3g} J, "
-                   f"{result.energy_balance_error:.2e} of the largest input", fontsize=8,
-                   loc="left")
-    fig.tight_layout()
-    return fig
-
-
-MAX_STOREY_PANELS = 3
-"""Storeys drawn per building in the storey figure (those with the largest peak drift)."""
-
-
-def plot_storey_hysteresis(result: Result) -> Figure:
-    """Storey shear [N] against storey drift [m]: the hysteresis of the storeys.
-
-    One row per building, its :data:`MAX_STOREY_PANELS` storeys of largest peak drift; for a
-    yielding storey the yield shears ``±F_y`` are dashed and the title gives the ductility
-    demand and the residual drift. A linear storey draws a straight line of slope ``k``.
-    """
-    model = result.model
-    nb = len(model.buildings)
-    ncol = min(MAX_STOREY_PANELS, max(b.n for b in model.buildings))
-    fig = Figure(figsize=(3.6 * ncol + 0.6, 2.9 * nb + 0.8))
-    axes = fig.subplots(nb, ncol, squeeze=False)
-    drift, shear = result.drift, result.storey_shear
-    peak = peak_abs(drift)
-    for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
-        order = sorted(range(bl.n), key=lambda j: -peak[off + j])[:ncol]
-        fy = bl.yield_forces
-        for ax, j in zip(axes[b], sorted(order)):
-            col = off + j
-            ax.plot(drift[:, col], shear[:, col], lw=0.7, color="tab:blue")
-            title = f"B{b + 1} storey {j + 1}: peak drift {peak[col]:.3g} m"
-            if fy is not None:
-                for sgn in (1.0, -1.0):
-                    ax.axhline(sgn * fy[j], color="0.5", lw=0.6, ls="--")
-                title += (f"\nductility {result.ductility[col]:.2f}, residual "
-                          f"{result.residual_drift[col]:+.3g} m")
-            ax.set_title(title, fontsize=8)
-            ax.set_xlabel("storey drift [m]")
-            ax.set_ylabel("storey shear [N]")
-            ax.axhline(0.0, color="0.7", lw=0.4)
-            ax.axvline(0.0, color="0.7", lw=0.4)
-            ax.grid(True, alpha=0.3)
-            ax.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
-        for ax in axes[b][len(order):]:
-            ax.set_axis_off()
-    fig.suptitle(f"{model.name}: storey shear against drift"
-                 + (" (dashed: yield shear)" if model.is_inelastic else " (linear storeys)"),
-                 fontsize=10)
-    fig.tight_layout()
-    return fig
-
-
-class RunFigure(NamedTuple):
-    """One of the figures of a run folder."""
-
-    file: str
-    caption: str
-    make: Callable[[Result], Figure]
-
-
-RUN_FIGURES: dict[str, RunFigure] = {
-    "displacement_figure": RunFigure("displacements.png", "Floor displacements",
-                                     plot_displacements),
-    "force_figure": RunFigure("contact_forces.png", "Contact forces", plot_contact_forces),
-    "hysteresis_figure": RunFigure("hysteresis.png",
-                                   "Contact hysteresis (force against penetration)",
-                                   plot_hysteresis),
-    "storey_figure": RunFigure("storeys.png", "Storey shear against drift (hysteresis)",
-                               plot_storey_hysteresis),
-    "energy_figure": RunFigure("energy.png", "Energy balance", plot_energy),
-}
-"""The figures `pounding run` writes and `pounding report` embeds, in page order."""
+    worst = float(np.abs(closure).max()) if t.size else 0.0
+    ax_r.set_title(f"closure error: largest |input − sum| = {worst * err.factor:.3g} "
+                   f"{err.unit}, {result.energy_balance_error:.2e} of the largest input",
+                   fontsize=TITLE_SIZE - 1, loc="left")
+    return plain_ticks(fig)

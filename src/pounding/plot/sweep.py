@@ -9,6 +9,8 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
+from pounding.plot import new_figure
+
 __all__ = ["default_figure_name", "plot_sweep", "swept_parameters"]
 
 _REDUCERS = ("mean", "max", "min", "median")
@@ -61,7 +63,7 @@ def plot_sweep(df: pd.DataFrame, x: str | None = None, y: str | None = None,
     vals = pd.to_numeric(ok[measure], errors="coerce").astype(float)
     frame = ok[[x] + ([y] if y else [])].copy()
     frame["_v"] = vals.to_numpy()
-    fig = Figure(figsize=(6.4, 4.8))
+    fig = new_figure(6.4, 4.8, laid_out=False)
     ax = fig.add_subplot()
     others = [p for p in params if p not in (x, y)]
     note = f" ({reduce} over {', '.join(others)})" if others else ""

@@ -1,0 +1,137 @@
+"""The envelope figure: peak displacement, storey drift ratio and storey shear against
+height, one profile per building — the figure an engineer draws first.
+
+The quantities come from :class:`pounding.result.Result`'s histories at the output samples:
+peak ``|u|`` of each floor, peak ``|drift| / h`` of each storey (drift ``u_j − u_{j−1}``,
+storey height ``h_j``) and peak ``|V|`` of each storey.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import matplotlib
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.transforms import blended_transform_factory
+from numpy.typing import NDArray
+
+from pounding.plot import new_figure
+from pounding.plot.layout import (
+    LEGEND_SIZE,
+    MM,
+    TITLE_SIZE,
+    Scale,
+    axes_grid,
+    plain_ticks,
+    scale_for,
+)
+from pounding.result import Result, peak_abs
+
+__all__ = ["Envelopes", "envelopes", "plot_envelopes"]
+
+DRIFT_RATIO = Scale(100.0, "%")
+"""Drift ratios are drawn in per cent."""
+
+
+class Envelopes(NamedTuple):
+    """Peak responses of every floor / storey of a result (SI units, in the floor order of
+    :class:`pounding.model.PoundingModel`)."""
+
+    displacement: NDArray[np.float64]
+    """Peak |displacement| of each floor relative to the ground [m] (N,)."""
+    drift_ratio: NDArray[np.float64]
+    """Peak |storey drift| / storey height of each storey (the storey below each floor)
+    [-] (N,)."""
+    shear: NDArray[np.float64]
+    """Peak |storey shear| of each storey [N] (N,)."""
+
+
+def envelopes(result: Result) -> Envelopes:
+    """The peak displacement, drift ratio and storey shear of every floor of ``result``,
+    read at the output samples."""
+    heights = np.concatenate([b.heights for b in result.model.buildings])
+    return Envelopes(displacement=peak_abs(result.displacement),
+                     drift_ratio=peak_abs(result.drift) / heights,
+                     shear=peak_abs(result.storey_shear))
+
+
+def _floor_profile(levels: NDArray[np.float64], values: NDArray[np.float64]
+                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """A floor quantity as a line from the ground (0 at elevation 0) through each floor."""
+    return np.concatenate([[0.0], values]), np.concatenate([[0.0], levels])
+
+
+def _storey_profile(levels: NDArray[np.float64], values: NDArray[np.float64]
+                    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """A storey quantity as steps: constant over each storey, from its floor below to its
+    floor above."""
+    bottoms = np.concatenate([[0.0], levels[:-1]])
+    z = np.column_stack([bottoms, levels]).ravel()
+    return np.repeat(values, 2), z
+
+
+def _mark_contacts(ax: Axes, result: Result) -> None:
+    """Triangles on the right edge at each contact elevation: filled where impacts
+    happened, hollow where the gap never closed."""
+    hit = result.peak_contact_force > 0.0
+    tr = blended_transform_factory(ax.transAxes, ax.transData)
+    z = np.array([c.elevation for c in result.model.contacts])
+    for closed, face in ((True, "tab:red"), (False, "none")):
+        sel = hit == closed
+        if sel.any():
+            ax.plot(np.ones(int(sel.sum())), z[sel], "<", ms=5, mec="tab:red", mfc=face,
+                    transform=tr, clip_on=False, zorder=5)
+
+
+def plot_envelopes(result: Result) -> Figure:
+    """Peak |displacement| [mm], peak |storey drift ratio| [%] and peak |storey shear|
+    [kN or MN, by magnitude] against height [m], one line per building.
+
+    Displacements are drawn floor by floor from 0 at the ground; drift ratio and shear are
+    storey quantities, drawn as steps over each storey's height. Triangles on the right
+    edge of each panel mark the contact elevations: filled where the floors hit, hollow
+    where the gap never closed.
+    """
+    model = result.model
+    env = envelopes(result)
+    force = scale_for(float(env.shear.max()) if env.shear.size else 0.0, "N")
+    fig = new_figure(10.0, 4.4)
+    ax_u, ax_d, ax_v = axes_grid(fig, 1, 3, left=0.7, right=0.3, top=0.45, bottom=0.95,
+                                 wspace=0.5, sharey=True)[0]
+    colours = matplotlib.colormaps["tab10"]
+    panels = ((ax_u, env.displacement, MM, _floor_profile, "peak |displacement|"),
+              (ax_d, env.drift_ratio, DRIFT_RATIO, _storey_profile, "peak |storey drift ratio|"),
+              (ax_v, env.shear, force, _storey_profile, "peak |storey shear|"))
+    for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
+        sl = slice(off, off + bl.n)
+        label = f"B{b + 1}" + (f" {bl.name}" if bl.name and bl.name != f"B{b + 1}" else "")
+        for ax, values, unit, profile, _ in panels:
+            x, z = profile(bl.floor_levels, values[sl] * unit.factor)
+            ax.plot(x, z, color=colours(b % 10), lw=1.6, marker="o" if profile is
+                    _floor_profile else None, ms=3, label=label)
+    top = max(float(bl.total_height) for bl in model.buildings)
+    for ax, values, unit, _, what in panels:
+        ax.set_xlabel(f"{what} [{unit.unit}]")
+        largest = float(values.max()) * unit.factor if values.size else 0.0
+        ax.set_xlim(0.0, 1.1 * largest if largest > 0.0 else 1.0)
+        ax.grid(True, alpha=0.3)
+        if model.contacts:
+            _mark_contacts(ax, result)
+    ax_u.set_ylim(0.0, top * 1.04)
+    ax_u.set_ylabel("height above ground [m]")
+    handles, labels = ax_u.get_legend_handles_labels()
+    hit = result.peak_contact_force > 0.0
+    for shown, face, text in ((hit.any(), "tab:red", "contact elevation, impacts"),
+                              ((~hit).any(), "none", "contact elevation, gap never closed")):
+        if shown:
+            handles.append(Line2D([], [], ls="", marker="<", ms=5, mec="tab:red", mfc=face))
+            labels.append(text)
+    fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 4),
+               fontsize=LEGEND_SIZE + 1, frameon=False,
+               bbox_to_anchor=(0.5, 0.02 / fig.get_figheight()))
+    fig.suptitle(f"{model.name}: peak response against height ({result.motion.name})",
+                 fontsize=TITLE_SIZE + 1, y=1.0 - 0.12 / fig.get_figheight(), va="top")
+    return plain_ticks(fig)
