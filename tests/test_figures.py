@@ -153,6 +153,9 @@ def test_scale_for_reads_between_1_and_1000(peak: float, unit: str, factor: floa
 
 # ------------------------------------------------------------------------ what is drawn
 def test_envelope_figure_draws_the_peaks_of_the_histories(demo: Result) -> None:
+    # the envelopes are the result's peaks, located inside solver steps (checked against the
+    # SciPy reference in tests/integrate/test_peaks_and_limits.py): they equal the result's
+    # properties, and bound the peaks of the sampled histories from above by at most 1e-4
     fig = plot_envelopes(demo)
     ax_u, ax_d, ax_v = fig.axes[:3]
     assert [unit_of(ax.get_xlabel()) for ax in (ax_u, ax_d)] == ["mm", "%"]
@@ -164,9 +167,14 @@ def test_envelope_figure_draws_the_peaks_of_the_histories(demo: Result) -> None:
         floors = u[:, off:off + bl.n]
         drift = np.diff(np.column_stack([np.zeros(len(u)), floors]), axis=1)  # u_j − u_{j−1}
         shear = drift * bl.stiffnesses  # linear storeys: V = k d
-        peak_u = np.abs(floors).max(axis=0)
-        peak_ratio = np.abs(drift).max(axis=0) / bl.heights
-        peak_v = np.abs(shear).max(axis=0)
+        sampled = (np.abs(floors).max(axis=0), np.abs(drift).max(axis=0) / bl.heights,
+                   np.abs(shear).max(axis=0))
+        located = (demo.peak_displacement[off:off + bl.n],
+                   demo.peak_drift_ratio[off:off + bl.n],
+                   demo.peak_storey_shear[off:off + bl.n])
+        for s_, l_ in zip(sampled, located):
+            assert np.all(l_ >= s_) and np.all(l_ <= s_ * (1 + 1e-4))
+        peak_u, peak_ratio, peak_v = located
         levels = np.cumsum(bl.heights)
         ln = line(ax_u, label)  # from 0 at the ground through each floor
         np.testing.assert_allclose(ln.get_xdata(), np.r_[0.0, peak_u] * 1e3, rtol=1e-12)

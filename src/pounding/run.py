@@ -26,6 +26,7 @@ from typing import Any
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
 from pounding.io import write_text
+from pounding.plot.registry import RUN_FIGURES
 from pounding.result import Result
 
 __all__ = ["OUTPUT_FILES", "FIGURE_FILES", "RunOutput", "default_out_dir", "run", "run_config"]
@@ -39,15 +40,9 @@ OUTPUT_FILES: dict[str, str] = {
 """Data files of every run (key → file name)."""
 
 
-
-def __getattr__(name: str) -> Any:
-    # FIGURE_FILES: the figures written unless turned off (key → file name); read from the
-    # figure registry on first use, so that importing this module does not import matplotlib
-    if name == "FIGURE_FILES":
-        from pounding.plot.response import RUN_FIGURES
-
-        return {key: fig.file for key, fig in RUN_FIGURES.items()}
-    raise AttributeError(f"module 'pounding.run' has no attribute {name!r}")
+FIGURE_FILES: dict[str, str] = {key: fig.file for key, fig in RUN_FIGURES.items()}
+"""Every figure a run can write (key → file name); a run writes those of its model
+(:func:`pounding.plot.registry.figures_for`)."""
 
 
 @dataclass(frozen=True)
@@ -132,10 +127,10 @@ def _normal_permissions(folder: Path) -> None:
 
 def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
     from pounding.plot import save_figure
-    from pounding.plot.response import RUN_FIGURES
+    from pounding.plot.registry import figures_for
 
     out = {}
-    for key, fig in RUN_FIGURES.items():
+    for key, fig in figures_for(result).items():
         out[key] = save_figure(fig.make(result), folder / fig.file, dpi=dpi)
     return out
 
@@ -206,7 +201,8 @@ def run(config_path: str | os.PathLike[str], out_dir: str | os.PathLike[str] | N
         Output folder; default :func:`default_out_dir`. It receives ``timehistories.nc``,
         ``impacts.csv``, ``summary.json`` (:meth:`pounding.result.Result.save`),
         ``model.toml`` (the configuration as read, record path made absolute) and, unless
-        turned off, four PNG figures (:data:`FIGURE_FILES`).
+        turned off, the PNG figures of the model
+        (:func:`pounding.plot.registry.figures_for`: five, six with yielding storeys).
     progress : callable, optional
         Called with the fraction done (0 … 1) during the integration.
     overwrite : bool

@@ -1,7 +1,7 @@
 """The envelope figure: peak displacement, storey drift ratio and storey shear against
 height, one profile per building — the figure an engineer draws first.
 
-The quantities come from :class:`pounding.result.Result`'s histories at the output samples:
+The quantities are :class:`pounding.result.Result`'s peaks, located inside solver steps:
 peak ``|u|`` of each floor, peak ``|drift| / h`` of each storey (drift ``u_j − u_{j−1}``,
 storey height ``h_j``) and peak ``|V|`` of each storey.
 """
@@ -28,7 +28,7 @@ from pounding.plot.layout import (
     plain_ticks,
     scale_for,
 )
-from pounding.result import Result, peak_abs
+from pounding.result import Result
 
 __all__ = ["Envelopes", "envelopes", "plot_envelopes"]
 
@@ -50,12 +50,12 @@ class Envelopes(NamedTuple):
 
 
 def envelopes(result: Result) -> Envelopes:
-    """The peak displacement, drift ratio and storey shear of every floor of ``result``,
-    read at the output samples."""
-    heights = np.concatenate([b.heights for b in result.model.buildings])
-    return Envelopes(displacement=peak_abs(result.displacement),
-                     drift_ratio=peak_abs(result.drift) / heights,
-                     shear=peak_abs(result.storey_shear))
+    """The peak displacement, drift ratio and storey shear of every floor of ``result``
+    (:attr:`~pounding.result.Result.peak_displacement`, :attr:`~pounding.result.Result.
+    peak_drift_ratio`, :attr:`~pounding.result.Result.peak_storey_shear`)."""
+    return Envelopes(displacement=result.peak_displacement,
+                     drift_ratio=result.peak_drift_ratio,
+                     shear=result.peak_storey_shear)
 
 
 def _floor_profile(levels: NDArray[np.float64], values: NDArray[np.float64]
