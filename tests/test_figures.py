@@ -223,10 +223,14 @@ def test_time_history_figures_draw_exact_peaks_and_the_ground_below(demo: Result
         assert y.max() == pytest.approx(f.max() * UNIT_FACTOR[unit], rel=1e-14)
         drawn += 1
     assert drawn == (demo.peak_contact_force > 0).sum() > 0
-    # the dots: each impact's peak force of the impact table
-    dots = np.concatenate([ln.get_ydata() for ln in ax.get_lines() if ln.get_marker() == "o"])
-    np.testing.assert_allclose(np.sort(dots), np.sort(demo.impacts["peak_force"].to_numpy())
+    # the dots: each impact's peak force of the impact table, at its time
+    dots = [ln for ln in ax.get_lines() if ln.get_marker() == "o"]
+    ys = np.concatenate([ln.get_ydata() for ln in dots])
+    xs = np.concatenate([ln.get_xdata() for ln in dots])
+    np.testing.assert_allclose(np.sort(ys), np.sort(demo.impacts["peak_force"].to_numpy())
                                * UNIT_FACTOR[unit], rtol=1e-12)
+    np.testing.assert_allclose(np.sort(xs), np.sort(demo.impacts["peak_force_time"].to_numpy()),
+                               rtol=1e-12)
 
 
 def test_energy_figure_stacks_the_terms_up_to_the_input(demo: Result) -> None:

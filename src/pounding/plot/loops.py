@@ -53,10 +53,10 @@ def plot_hysteresis(result: Result) -> Figure:
     impacts lighter. The area of a loop is the energy the impact dissipated.
     """
     model = result.model
-    imp = result.impacts
-    labels = set(imp["contact"]) if len(imp) else set()
+    imp = result.impact_array  # (numpy, not the DataFrame: drawing needs no pandas)
+    hit = set(int(c) for c in imp[:, 0])
     peak = result.peak_contact_force
-    chosen = sorted((c for c in model.contacts if c.label in labels),
+    chosen = sorted((c for c in model.contacts if c.index in hit),
                     key=lambda c: -peak[c.index])[:MAX_HYSTERESIS_PANELS]
     chosen.sort(key=lambda c: c.index)
     n = max(len(chosen), 1)
@@ -70,10 +70,10 @@ def plot_hysteresis(result: Result) -> Figure:
                      wspace=0.25, hspace=0.45, sharex=True, sharey=True).ravel()
     cmap = matplotlib.colormaps["plasma"]
     t = result.time
-    starts = imp["start"].to_numpy() if len(imp) else np.zeros(0)
-    ends = imp["end"].to_numpy() if len(imp) else np.zeros(0)
+    starts = imp[:, 1]
+    ends = imp[:, 2]
     for ax, c in zip(axes, chosen):
-        sel_rows = np.flatnonzero((imp["contact"] == c.label).to_numpy())
+        sel_rows = np.flatnonzero(imp[:, 0] == c.index)
         pen = result.penetration[:, c.index] * MM.factor
         f = result.contact_force[:, c.index] * force.factor
         segments, colours = [], []
@@ -87,7 +87,7 @@ def plot_hysteresis(result: Result) -> Figure:
             segments += runs
             colours += [cmap(0.85 * i / max(k_rows - 1, 1))] * len(runs)
         ax.add_collection(LineCollection(segments, colors=colours, linewidths=0.9))
-        e_diss = float(np.nansum(imp["energy_dissipated"].to_numpy()[sel_rows]))
+        e_diss = float(np.nansum(imp[sel_rows, 8]))  # energy dissipated [J]
         joules = scale_for(e_diss, "J")
         ax.set_title(f"{c.label} ({c.elevation:g} m): {k_rows} impact(s), "
                      f"{e_diss * joules.factor:.3g} {joules.unit}", fontsize=TITLE_SIZE - 1)
@@ -109,7 +109,7 @@ def plot_hysteresis(result: Result) -> Figure:
         if i + ncol >= n_drawn:  # the lowest panel of its column (the last row may be short)
             ax.set_xlabel(f"penetration δ [{MM.unit}]")
             ax.xaxis.set_tick_params(labelbottom=True)
-    more = len(labels) - len(chosen)
+    more = len(hit) - len(chosen)
     fig.suptitle(f"{model.name}: contact hysteresis while closed (dark: early impacts, light: "
                  "late)" + (f"; {more} more contact(s) not shown" if more > 0 else ""),
                  fontsize=TITLE_SIZE + 1, y=1.0 - 0.1 / fig.get_figheight(), va="top")

@@ -134,12 +134,12 @@ def plot_displacements(result: Result) -> Figure:
 
 def plot_contact_forces(result: Result) -> Figure:
     """Contact force histories [kN or MN], one panel per gap, the ground acceleration [g]
-    below; dots mark each impact's peak force from the impact table (resolved between
-    output samples)."""
+    below; dots mark each impact's peak force at its time, from the impact table (located
+    between output samples)."""
     model = result.model
     t = result.time
     n_pairs = max(len(model.buildings) - 1, 1)
-    imp = result.impacts
+    imp = result.impact_array  # (numpy, not the DataFrame: drawing needs no pandas)
     peak = result.peak_contact_force
     force = scale_for(float(peak.max()) if peak.size else 0.0, "N")
     hit_by_pair = [[c for c in model.contacts if c.pair == p and peak[c.index] > 0.0]
@@ -156,9 +156,8 @@ def plot_contact_forces(result: Result) -> Figure:
             colour = cmap(i % 10)
             history(ax, t, result.contact_force[:, c.index] * force.factor, color=colour,
                     lw=0.8, label=label)
-            rows_c = imp[imp["contact"] == c.label]
-            mid = 0.5 * (rows_c["start"] + rows_c["end"].fillna(t[-1]))
-            ax.plot(mid, rows_c["peak_force"] * force.factor, "o", ms=3, color=colour)
+            rows_c = imp[imp[:, 0] == c.index]
+            ax.plot(rows_c[:, 5], rows_c[:, 4] * force.factor, "o", ms=3, color=colour)
         if not cs:
             _empty(ax, "no contacts (a single building)")
         elif not hit:
