@@ -1,0 +1,58 @@
+"""Model files: a pounding run described in TOML, validated before anything is computed.
+
+A model file names the ground motion, the buildings from left to right, the contact law
+and gaps, the solver options and what to write. :func:`load_config` reads and validates it
+into a :class:`RunConfig`; :meth:`RunConfig.build` turns that into the objects of the
+library — a :class:`~pounding.model.PoundingModel`, a
+:class:`~pounding.ground_motion.GroundMotion` and the keyword arguments of
+:func:`~pounding.integrate.simulate`.
+
+Every problem is reported as one :class:`ValueError` holding one line per problem, each
+naming the key by its path in the file and the value found, e.g.::
+
+    model.toml: building[1].period: must be > 0 (got -0.5)
+    model.toml: contact.gaps: need 1 value for 2 buildings (got 2: [0.02, 0.03])
+
+(``building[1]`` is the second ``[[building]]`` table: indices are 0-based, as in the
+error messages of the library itself). The format, key by key, is in ``docs/running.md``.
+
+One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.building`,
+:mod:`~pounding.config.contact`, :mod:`~pounding.config.run` (solver, output, the whole
+file, loading it); :mod:`~pounding.config.errors` turns validation errors into those lines,
+:mod:`~pounding.config.toml` writes a model file back.
+"""
+
+from pounding.config.building import BuildingConfig, DampingConfig, StoreyLawConfig
+from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
+from pounding.config.errors import format_validation_error
+from pounding.config.record import EL_CENTRO_ALIASES, RecordConfig
+from pounding.config.run import (
+    SWEEP_CASE_TABLES,
+    Built,
+    OutputConfig,
+    RunConfig,
+    SolverConfig,
+    load_config,
+    parse_config,
+)
+from pounding.config.toml import dump_toml
+
+__all__ = [
+    "BuildingConfig",
+    "Built",
+    "CONTACT_COMMON",
+    "ContactConfig",
+    "DampingConfig",
+    "EL_CENTRO_ALIASES",
+    "LAW_FIELDS",
+    "OutputConfig",
+    "RecordConfig",
+    "RunConfig",
+    "SWEEP_CASE_TABLES",
+    "SolverConfig",
+    "StoreyLawConfig",
+    "dump_toml",
+    "format_validation_error",
+    "load_config",
+    "parse_config",
+]

@@ -1,0 +1,235 @@
+"""``[[building]]``: the buildings of a model file, their damping and storey laws."""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any
+
+from pydantic import Field, field_validator, model_validator
+
+from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
+from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding
+from pounding.structure.damping import DampingModel
+
+class DampingConfig(Section):
+    """``damping = {...}``: inherent damping of one building.
+
+    * ``{ ratio = 0.05 }`` — the same ratio in every mode (:class:`ModalDamping`);
+    * ``{ rayleigh = [0.05, 0.05], modes = [1, 2] }`` — Rayleigh damping with those ratios
+      at those modes (default modes 1 and 2; one ratio means the same at both);
+    * ``{ rayleigh = [0.05, 0.05], periods = [1.0, 0.2] }`` — anchored at two periods [s].
+    """
+
+    ratio: Ratio | None = None
+    rayleigh: Annotated[list[Ratio], Field(min_length=1, max_length=2)] | None = None
+    modes: Annotated[list[Annotated[int, Field(ge=1)]],
+                     Field(min_length=2, max_length=2)] | None = None
+    periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
+
+    @model_validator(mode="after")
+    def _one_kind(self) -> DampingConfig:
+        if (self.ratio is None) == (self.rayleigh is None):
+            raise ValueError("give exactly one of ratio (same ratio in every mode) and "
+                             f"rayleigh (got ratio={self.ratio!r}, rayleigh={self.rayleigh!r})")
+        if self.ratio is not None:
+            for key in ("modes", "periods"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"only with rayleigh (got {getattr(self, key)!r})")
+        if self.modes is not None and self.periods is not None:
+            raise field_error("periods", "give modes or periods, not both "
+                                          f"(got modes={self.modes!r}, periods={self.periods!r})")
+        return self
+
+    def build(self) -> DampingModel:
+        """The damping model."""
+        if self.ratio is not None:
+            return ModalDamping(self.ratio)
+        assert self.rayleigh is not None
+        zi = self.rayleigh[0]
+        zj = self.rayleigh[-1]
+        if self.periods is not None:
+            return RayleighDamping.from_periods(self.periods[0], self.periods[1], zi, zj)
+        mi, mj = self.modes or (1, 2)
+        return RayleighDamping(zeta_i=zi, zeta_j=zj, mode_i=mi, mode_j=mj)
+
+
+class StoreyLawConfig(Section):
+    """``storey_law = {...}``: how the storeys of one building yield (default: linear).
+
+    * ``{ type = "bilinear", yield_force = 2.0e6, hardening = 0.05 }`` — bilinear with
+      kinematic hardening (:class:`pounding.hysteresis.Bilinear`);
+    * ``{ type = "bouc-wen", yield_drift_ratio = 0.005, alpha = 0.05, n = 2, beta = 0.5,
+      gamma = 0.5 }`` — Bouc–Wen (:class:`pounding.hysteresis.BoucWen`).
+
+    The yield point is one of ``yield_force`` [N], ``yield_drift`` [m] or
+    ``yield_drift_ratio`` [-] (yield drift / storey height), each a number for every storey
+    or a list with one value per storey. The elastic stiffness is the building's.
+    """
+
+    type: str
+    yield_force: Pos | list[Pos] | None = None
+    yield_drift: Pos | list[Pos] | None = None
+    yield_drift_ratio: Pos | list[Pos] | None = None
+    hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
+    alpha: Annotated[float, Field(ge=0, lt=1)] | None = None
+    n: Annotated[float, Field(ge=1)] | None = None
+    beta: float | None = None
+    gamma: float | None = None
+
+    @field_validator("type")
+    @classmethod
+    def _known_type(cls, v: str) -> str:
+        from pounding.hysteresis import STOREY_LAWS
+
+        key = v.strip().lower()
+        if key not in STOREY_LAWS:
+            raise ValueError(f"unknown storey law {v!r}; choose one of "
+                             f"{', '.join(STOREY_LAWS)}")
+        return key
+
+    @model_validator(mode="after")
+    def _keys(self) -> StoreyLawConfig:
+        own = {"bilinear": {"hardening"}, "bouc-wen": {"alpha", "n", "beta", "gamma"}}[self.type]
+        for key in ("hardening", "alpha", "n", "beta", "gamma"):
+            if key not in own and getattr(self, key) is not None:
+                raise field_error(key, f"not a constant of the {self.type} law (got "
+                                        f"{fmt(getattr(self, key))}); it reads "
+                                        f"{', '.join(sorted(own))}")
+        given = [k for k in ("yield_force", "yield_drift", "yield_drift_ratio")
+                 if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise field_error("yield_force", "give exactly one of yield_force [N], "
+                                              "yield_drift [m] or yield_drift_ratio [-] "
+                                              f"(got {', '.join(given) or 'none'})")
+        return self
+
+    def build(self, heights: Any) -> Any:
+        """The :class:`pounding.hysteresis.StoreyLaw` for storeys of these heights [m]."""
+        import numpy as np
+
+        from pounding.hysteresis import STOREY_LAWS
+
+        kw = self.model_dump(exclude={"type", "yield_drift_ratio"}, exclude_none=True)
+        if self.yield_drift_ratio is not None:
+            ratio = np.asarray(self.yield_drift_ratio, dtype=float)
+            if ratio.size not in (1, len(heights)):
+                raise field_error("yield_drift_ratio", f"need one value or {len(heights)} "
+                                   f"(one per storey), got {ratio.size}")
+            kw["yield_drift"] = [float(v) for v in ratio * np.asarray(heights, dtype=float)]
+        return STOREY_LAWS[self.type](**kw)
+
+
+_SDOF_KEYS = ("mass", "stiffness", "period", "height")
+_UNIFORM_KEYS = ("n_storeys", "mass", "stiffness", "period", "height")
+_STOREY_KEYS = ("masses", "stiffnesses", "heights", "height", "period")
+
+
+class BuildingConfig(Section):
+    """``[[building]]``: one building; the tables go left to right.
+
+    Three ways to give it, told apart by the keys present:
+
+    * SDOF: ``mass`` [kg] and ``period`` [s] or ``stiffness`` [N/m]; ``height`` [m] (3).
+    * uniform: ``n_storeys``, ``mass`` [kg] per floor, ``stiffness`` [N/m] per storey or
+      ``period`` [s] (fundamental; the stiffness follows), ``height`` [m] per storey (3).
+    * storeys: ``masses`` [kg], ``stiffnesses`` [N/m], ``heights`` [m] (or one ``height``
+      for all; default 3), ground storey first; optional ``period`` [s] rescales all
+      stiffnesses to that fundamental period.
+
+    ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF and 5 %
+    Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
+    storeys yield; without it they stay linear.
+    """
+
+    name: str | None = None
+    mass: Pos | None = None
+    stiffness: Pos | None = None
+    period: Pos | None = None
+    height: Pos | None = None
+    n_storeys: Annotated[int, Field(ge=1)] | None = None
+    masses: Annotated[list[Pos], Field(min_length=1)] | None = None
+    stiffnesses: Annotated[list[Pos], Field(min_length=1)] | None = None
+    heights: Annotated[list[Pos], Field(min_length=1)] | None = None
+    damping: DampingConfig | None = None
+    storey_law: StoreyLawConfig | None = None
+
+    @property
+    def kind(self) -> str:
+        """``'storeys'``, ``'uniform'`` or ``'sdof'``."""
+        if self.masses is not None:
+            return "storeys"
+        if self.n_storeys is not None:
+            return "uniform"
+        return "sdof"
+
+    @model_validator(mode="after")
+    def _consistent(self) -> BuildingConfig:
+        kind = self.kind
+        allowed = {"sdof": _SDOF_KEYS, "uniform": _UNIFORM_KEYS, "storeys": _STOREY_KEYS}[kind]
+        shape = {"sdof": "an SDOF building (mass, period|stiffness)",
+                 "uniform": "a uniform building (n_storeys, mass, stiffness|period)",
+                 "storeys": "a building given storey by storey (masses, stiffnesses, heights)"
+                 }[kind]
+        if kind == "sdof" and (self.stiffnesses is not None or self.heights is not None):
+            raise field_error("masses", "required with stiffnesses/heights: one value [kg] "
+                                         "per floor")
+        for key in (*_UNIFORM_KEYS, *_STOREY_KEYS):
+            if key not in allowed and getattr(self, key) is not None:
+                raise field_error(key, f"not a key of {shape} (got {fmt(getattr(self, key))})")
+        if kind in ("sdof", "uniform"):
+            if self.mass is None:
+                raise field_error("mass", f"required for {shape}")
+            if (self.stiffness is None) == (self.period is None):
+                raise field_error("period", f"give exactly one of period and stiffness "
+                                             f"(got period={self.period!r}, "
+                                             f"stiffness={self.stiffness!r})")
+        else:
+            n = len(self.masses)  # type: ignore[arg-type]
+            if self.stiffnesses is None:
+                raise field_error("stiffnesses", "required with masses, one value [N/m] "
+                                                  "per storey")
+            if len(self.stiffnesses) != n:
+                raise field_error("stiffnesses", f"need {n} values, one per floor like "
+                                                  f"masses (got {len(self.stiffnesses)})")
+            if self.heights is not None and self.height is not None:
+                raise field_error("height", "give heights or height, not both")
+            if self.heights is not None and len(self.heights) != n:
+                raise field_error("heights", f"need {n} values, one per floor like masses "
+                                              f"(got {len(self.heights)})")
+        return self
+
+    @property
+    def n(self) -> int:
+        """Number of storeys."""
+        return {"sdof": 1, "uniform": self.n_storeys or 1,
+                "storeys": len(self.masses or ())}[self.kind]
+
+    def build(self, default_name: str) -> ShearBuilding:
+        """The :class:`ShearBuilding` (domain errors propagate unprefixed)."""
+        name = self.name or default_name
+        damping = self.damping.build() if self.damping is not None else None
+        h = self.height if self.height is not None else 3.0
+        if self.kind == "sdof":
+            assert self.mass is not None
+            k = (self.stiffness if self.stiffness is not None
+                 else self.mass * (2.0 * math.pi / self.period) ** 2)  # type: ignore[operator]
+            return self._with_law(ShearBuilding(masses=[self.mass], stiffnesses=[k],
+                                                heights=[h], damping=damping or ModalDamping(0.05),
+                                                name=name))
+        if self.kind == "uniform":
+            assert self.mass is not None and self.n_storeys is not None
+            b = ShearBuilding.uniform(self.n_storeys, self.mass, self.stiffness or 1.0, h,
+                                      damping=damping, name=name)
+        else:
+            n = len(self.masses)  # type: ignore[arg-type]
+            heights = self.heights if self.heights is not None else [h] * n
+            b = ShearBuilding(masses=self.masses, stiffnesses=self.stiffnesses,
+                              heights=heights, damping=damping or RayleighDamping(), name=name)
+        b = b.with_period(self.period) if self.period is not None else b
+        return self._with_law(b)
+
+    def _with_law(self, b: ShearBuilding) -> ShearBuilding:
+        if self.storey_law is None:
+            return b
+        with prefixed("storey_law"):
+            return b.with_storey_law(self.storey_law.build(b.heights))

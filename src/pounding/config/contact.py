@@ -1,0 +1,94 @@
+"""``[contact]``: the contact law of a model file and the gaps."""
+
+from __future__ import annotations
+
+import difflib
+from typing import Annotated
+
+from pydantic import Field, field_validator, model_validator
+
+from pounding.config.base import NonNeg, Pos, Section, field_error, fmt
+from pounding.contact.factory import LAW_NAMES
+from pounding.model import ContactSpec
+
+LAW_FIELDS: dict[str, frozenset[str]] = {
+    "linear-spring": frozenset({"k"}),
+    "kelvin-voigt": frozenset({"k", "e", "formula", "c", "zeta", "tension"}),
+    "modified-kelvin-voigt": frozenset({"k", "e", "formula", "c", "zeta"}),
+    "hertz": frozenset({"k_h", "n"}),
+    "hunt-crossley": frozenset({"k_h", "e", "formula", "chi", "n"}),
+    "hertzdamp": frozenset({"k_h", "e", "formula", "chi", "n"}),
+    "nonlinear-viscoelastic": frozenset({"k_h", "e", "formula", "zeta"}),
+    "naderpour": frozenset({"k_h", "e", "formula", "zeta"}),
+    "bilinear-impact": frozenset({"k_h", "e", "delta_m", "n", "a"}),
+}
+"""The ``[contact]`` keys each law reads (:func:`pounding.contact.factory.make_law`); giving
+another is an error rather than being silently ignored."""
+
+CONTACT_COMMON = frozenset({"law", "gap", "gaps", "floor_to_column", "level_tolerance"})
+"""``[contact]`` keys of every law."""
+
+
+class ContactConfig(Section):
+    """``[contact]``: the contact law used at every shared floor level, and the gaps.
+
+    ``law`` is a name of :data:`pounding.contact.factory.LAW_NAMES`; the other keys are
+    those of :class:`pounding.model.ContactSpec` (``k`` [N/m], ``k_h`` [N/m^n], ``e`` [-],
+    ``formula``, ``c`` [N·s/m], ``zeta`` [-], ``chi`` [-], ``n`` [-], ``tension``,
+    ``delta_m`` [m], ``a`` [-]); only the keys the law reads are accepted (:data:`LAW_FIELDS`).
+    ``gap`` [m] is the gap between every pair of neighbours, or ``gaps`` one per pair.
+    ``floor_to_column`` (default true): a floor that does not line up with a floor of its
+    neighbour strikes the neighbour's column (:class:`pounding.model.ContactPoint`); false
+    keeps floor-to-floor contacts only. ``level_tolerance`` [m] (default 0.1): floors closer
+    in elevation than this meet slab to slab.
+    """
+
+    law: str
+    k: Pos | None = None
+    k_h: Pos | None = None
+    e: Annotated[float, Field(gt=0, le=1)] | None = None
+    formula: str | None = None
+    c: NonNeg | None = None
+    zeta: NonNeg | None = None
+    chi: NonNeg | None = None
+    n: Pos = 1.5
+    tension: bool = True
+    delta_m: Pos | None = None
+    a: Annotated[float, Field(gt=0, lt=1)] = 0.1
+    gap: NonNeg | None = None
+    gaps: list[NonNeg] | None = None
+    floor_to_column: bool = True
+    level_tolerance: Pos = 0.1
+
+    @field_validator("law")
+    @classmethod
+    def _known_law(cls, v: str) -> str:
+        key = v.strip().lower()
+        if key not in LAW_NAMES:
+            close = difflib.get_close_matches(key, LAW_NAMES, n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            raise ValueError(f"unknown law {v!r}{hint}; choose one of {', '.join(LAW_NAMES)}")
+        return key
+
+    @model_validator(mode="after")
+    def _law_keys(self) -> ContactConfig:
+        used = LAW_FIELDS[self.law]
+        for key in sorted(self.model_fields_set - used - CONTACT_COMMON):
+            raise field_error(key, f"not used by the {self.law} law (got "
+                                    f"{fmt(getattr(self, key))}); it reads "
+                                    f"{', '.join(sorted(used))}")
+        if self.gap is not None and self.gaps is not None:
+            raise field_error("gaps", "give gap (all pairs) or gaps (one per pair), not both")
+        if self.gap is None and self.gaps is None:
+            raise field_error("gap", "required: the separation [m] between neighbours "
+                                      "(gap = 0.02, or gaps = [...] one per pair)")
+        return self
+
+    def gap_list(self, n_pairs: int) -> list[float]:
+        """The gap of each pair of neighbours [m]."""
+        return list(self.gaps) if self.gaps is not None else [self.gap] * n_pairs  # type: ignore[list-item]
+
+    def spec(self) -> ContactSpec:
+        """The :class:`ContactSpec` (domain errors propagate unprefixed)."""
+        kw = self.model_dump(exclude=set(CONTACT_COMMON - {"law"}), exclude_none=True)
+        return ContactSpec(**kw)

@@ -1,0 +1,184 @@
+"""A whole model file: ``[solver]``, ``[output]``, the run they make, and loading it."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Annotated, Any, NamedTuple
+
+from pydantic import Field, PrivateAttr, ValidationError, model_validator
+
+from pounding.config.base import Pos, Section, field_error, prefixed
+from pounding.config.building import BuildingConfig
+from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
+from pounding.config.errors import format_validation_error
+from pounding.config.record import RecordConfig
+from pounding.config.toml import dump_toml
+from pounding.ground_motion import GroundMotion
+from pounding.io import read_toml
+from pounding.model import ContactSpec, PoundingModel
+
+class SolverConfig(Section):
+    """``[solver]``: options of :func:`pounding.integrate.simulate`.
+
+    ``dt`` [s] output step (rounded down to a divisor of the record step; default 1 ms),
+    ``duration`` [s] time simulated (default: the record's; after it, free vibration),
+    ``rtol`` [-] tolerance of the adaptive steps through contacts, ``h_max`` [s] their
+    largest size.
+    """
+
+    dt: Pos | None = None
+    duration: Pos | None = None
+    rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
+    h_max: Pos | None = None
+
+    def kwargs(self) -> dict[str, Any]:
+        """Keyword arguments of :func:`~pounding.integrate.simulate`."""
+        return {"dt": self.dt, "duration": self.duration, "rtol": self.rtol, "h_max": self.h_max}
+
+
+class OutputConfig(Section):
+    """``[output]``: ``figures`` (write the PNG figures), ``dpi`` (their resolution)."""
+
+    figures: bool = True
+    dpi: Annotated[int, Field(ge=30, le=1200)] = 150
+
+
+class Built(NamedTuple):
+    """What :meth:`RunConfig.build` returns: unpack as ``model, motion, solver_kwargs``."""
+
+    model: PoundingModel
+    motion: GroundMotion
+    solver: dict[str, Any]
+
+
+class RunConfig(Section):
+    """A whole model file. See the module docstring and ``docs/running.md``."""
+
+    name: str = "model"
+    description: str | None = None
+    record: RecordConfig
+    building: Annotated[list[BuildingConfig], Field(min_length=1)]
+    contact: ContactConfig | None = None
+    solver: SolverConfig = SolverConfig()
+    output: OutputConfig = OutputConfig()
+
+    _source: Path | None = PrivateAttr(default=None)
+
+    @model_validator(mode="after")
+    def _pairs(self) -> RunConfig:
+        nb = len(self.building)
+        if self.contact is None:
+            if nb > 1:
+                raise field_error("contact", f"required with {nb} buildings: a [contact] "
+                                              "table with law, its parameters and gap(s)")
+            return self
+        if self.contact.gaps is not None and len(self.contact.gaps) != nb - 1:
+            raise field_error(("contact", "gaps"),
+                               f"need {nb - 1} value(s) for {nb} buildings (got "
+                               f"{len(self.contact.gaps)}: {self.contact.gaps})")
+        return self
+
+    @property
+    def source(self) -> Path | None:
+        """The file this was read from, if any."""
+        return self._source
+
+    def build(self) -> Built:
+        """The model, the ground motion and the solver keyword arguments.
+
+        A :class:`ValueError` from a constructor of the library is re-raised prefixed
+        with the path of the section at fault (``building[1]: ...``).
+        """
+        buildings = []
+        for i, b in enumerate(self.building):
+            with prefixed(f"building[{i}]"):
+                buildings.append(b.build(f"B{i + 1}"))
+        if self.contact is not None:
+            with prefixed("contact"):
+                spec = self.contact.spec()
+            gaps = self.contact.gap_list(len(buildings) - 1)
+        else:
+            spec, gaps = ContactSpec("linear-spring", k=1.0), []
+        geometry: dict[str, Any] = {}
+        if self.contact is not None:
+            geometry = {"floor_to_column": self.contact.floor_to_column,
+                        "level_tolerance": self.contact.level_tolerance}
+        with prefixed("contact"):
+            model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry)
+            model.contacts  # noqa: B018  (builds every contact law with its floor masses)
+        for p in range(len(buildings) - 1):
+            if not any(c.pair == p for c in model.contacts):
+                a, b = buildings[p], buildings[p + 1]
+                raise ValueError(
+                    f"building[{p}] and building[{p + 1}]: no floor at the same elevation, "
+                    "so they can never collide (floor levels [m]: "
+                    f"{[round(float(x), 6) for x in a.floor_levels]} and "
+                    f"{[round(float(x), 6) for x in b.floor_levels]}); with "
+                    "contact.floor_to_column = false floors meet only at equal levels")
+        with prefixed("record"):
+            motion = self.record.load()
+        return Built(model, motion, self.solver.kwargs())
+
+    # ------------------------------------------------------------------ writing
+    def to_dict(self, resolve_paths: bool = False) -> dict[str, Any]:
+        """The configuration as plain data (no None values), ready for :meth:`to_toml`.
+
+        With ``resolve_paths`` the record file is written as an absolute path, so the
+        copy still works from another folder.
+        """
+        data = self.model_dump(exclude_none=True)
+        if self.contact is not None:
+            keep = LAW_FIELDS[self.contact.law] | CONTACT_COMMON
+            data["contact"] = {k: v for k, v in data["contact"].items() if k in keep}
+        if resolve_paths and self.record.file is not None and self.record.path is not None:
+            data["record"]["file"] = str(self.record.path)
+        return data
+
+    def to_toml(self, resolve_paths: bool = False, header: str = "") -> str:
+        """The configuration as TOML text that :func:`parse_config` reads back equal."""
+        return dump_toml(self.to_dict(resolve_paths), header=header)
+
+
+def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
+                 where: str = "config") -> RunConfig:
+    """Validate already-parsed TOML data; ``base_dir`` is where relative paths start.
+
+    Raises
+    ------
+    ValueError
+        One line per problem, each ``<where>: <key path>: <problem> (got <value>)``.
+    """
+    try:
+        cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
+    except ValidationError as exc:
+        raise ValueError(format_validation_error(exc, prefix=f"{where}: ")) from None
+    try:
+        cfg.build()
+    except ValueError as exc:
+        raise ValueError(f"{where}: {exc}") from None
+    return cfg
+
+
+SWEEP_CASE_TABLES = ("grid", "list", "random")
+"""The tables of a sweep file that give its cases (:mod:`pounding.studies.sweep`); a file
+with ``base`` and one of them is a sweep file, not a model file."""
+
+
+def load_config(path: str | os.PathLike[str]) -> RunConfig:
+    """Read and validate a TOML model file (and check it builds).
+
+    Raises
+    ------
+    ValueError
+        If the file is missing or not TOML, or any key is unknown or has a bad value:
+        one line per problem naming the key path and the value.
+    """
+    p = Path(path)
+    data = read_toml(p, "model file")
+    if "base" in data and any(k in data for k in SWEEP_CASE_TABLES):
+        raise ValueError(f"{p}: this is a sweep file (it has 'base' and a [grid], [list] or "
+                         f"[random] table), not a model file: run it with `pounding sweep {p}`")
+    cfg = parse_config(data, base_dir=p.resolve().parent, where=str(p))
+    cfg._source = p.resolve()
+    return cfg
