@@ -1,9 +1,11 @@
 """Run a model file end to end: load, simulate, write every output into one folder.
 
 :func:`run` never leaves a half-written output folder. Everything is written into a hidden
-temporary folder beside the target (``.<name>.tmp-XXXX``) and moved into place only when
-complete; if anything fails (or the run is interrupted with Ctrl-C) the temporary folder is
-removed and a previous output folder is left untouched.
+temporary folder beside the target (``.<name>.tmp-<pid>-XXXX``) and moved into place only
+when complete; if anything fails (or the run is interrupted with Ctrl-C or SIGTERM) the
+temporary folder is removed and a previous output folder is left untouched. A run killed
+outright (SIGKILL) cannot clean up after itself: the next run into the same folder removes
+what it left (and puts back an earlier output it was replacing).
 
 An existing output folder is replaced only with ``overwrite=True``, and only if it looks like
 an earlier output (it holds ``summary.json``) or is empty: the new folder is complete before
@@ -87,6 +89,49 @@ def _check_target(out_dir: Path, overwrite: bool) -> None:
                              "output (no summary.json); not replacing it")
 
 
+def _check_writable(out_dir: Path) -> None:
+    """The nearest existing folder above ``out_dir`` must be a folder we can write in."""
+    p = out_dir.absolute().parent
+    while not p.exists() and not p.is_symlink():
+        p = p.parent
+    if not p.is_dir():
+        raise ValueError(f"out: {out_dir} cannot be made: {p} is a file, not a folder; "
+                         "choose another --out")
+    if not os.access(p, os.W_OK | os.X_OK):
+        raise ValueError(f"out: cannot write in {p} (a read-only file system, or no "
+                         "permission); choose another --out")
+
+
+def _pid_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OSError):
+        return True
+    return True
+
+
+def _remove_stale(out_dir: Path) -> None:
+    """Remove what a run into ``out_dir`` killed outright (SIGKILL, power loss) left behind:
+    its temporary folder ``.<name>.tmp-<pid>-*``; and if it was killed while replacing an
+    earlier output, put that output back from ``.<name>.old-<pid>-*``. Only folders of
+    processes no longer running are touched."""
+    parent = out_dir.absolute().parent
+    if not parent.is_dir():
+        return
+    for kind in ("old", "tmp"):
+        for p in parent.glob(f".{out_dir.name}.{kind}-*-*"):
+            pid = p.name[len(f".{out_dir.name}.{kind}-"):].split("-", 1)[0]
+            if not pid.isdigit() or _pid_alive(int(pid)):
+                continue
+            held = p / out_dir.name
+            if kind == "old" and held.is_dir() and not out_dir.exists():
+                with contextlib.suppress(OSError):
+                    os.replace(held, out_dir)
+            shutil.rmtree(p, ignore_errors=True)
+
+
 def _make_parents(folder: Path) -> list[Path]:
     """Create ``folder`` and its missing ancestors; return those created, deepest last."""
     missing = []
@@ -146,20 +191,24 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
     out = Path(out_dir)
     if out.name in ("", ".", ".."):
         raise ValueError(f"out: {out_dir!s} is not a folder name; give e.g. --out results")
+    _check_writable(out)
+    _remove_stale(out)
     _check_target(out, overwrite)
     model, motion, solver = cfg.build()
     want_figures = cfg.output.figures if figures is None else figures
 
     created = _make_parents(out.absolute().parent)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.absolute().parent))
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-{os.getpid()}-",
+                                dir=out.absolute().parent))
     try:
         result = simulate(model, motion, progress=progress, **solver)
         files = result.save(tmp)
         source = str(cfg.source) if cfg.source is not None else "(not read from a file)"
         files["model"] = write_text(
             tmp / OUTPUT_FILES["model"],
-            cfg.to_toml(resolve_paths=True,
-                        header=f"The model file of this run, as pounding read it.\n"
+            cfg.to_toml(resolve_paths=True, defaults=True,
+                        header=f"The model file of this run, as pounding read it, with every "
+                               f"default it took written out.\n"
                                f"Source: {source}\nRe-run: pounding run model.toml"))
         if want_figures:
             files.update(_write_figures(result, tmp, cfg.output.dpi))
@@ -168,7 +217,8 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
         _check_target(out, overwrite)
         old = None
         if out.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.absolute().parent))
+            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-{os.getpid()}-",
+                                        dir=out.absolute().parent))
             os.replace(out, old / out.name)
         try:
             os.replace(tmp, out)

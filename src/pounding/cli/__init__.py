@@ -41,9 +41,13 @@ EXIT_INTERRUPTED = 130
 
 
 def error_line(message: str) -> None:
-    """Print one error line on standard error: ``error: <message>`` (newlines folded)."""
-    text = " ".join(str(message).split())
-    err_console.print(f"[bold red]error:[/] {escape(text)}", highlight=False, soft_wrap=True)
+    """Print an error on standard error, every line starting ``error: `` (a model file with
+    three problems gives three such lines)."""
+    for line in str(message).splitlines() or [""]:
+        text = " ".join(line.split())
+        if text:
+            err_console.print(f"[bold red]error:[/] {escape(text)}", highlight=False,
+                              soft_wrap=True)
 
 
 def _usage_error(exc: typer.TyperException) -> int:

@@ -184,11 +184,18 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
     from pounding.config import load_config
     from pounding.run import default_out_dir, run_config
 
+    from pounding.cli import EXIT_INTERRUPTED, error_line
+
     cfg = load_config(model_file)
     target = out if out is not None else default_out_dir(model_file)
-    with _sigterm_as_interrupt(), _progress_bar(label) as progress:
-        result = run_config(cfg, target, progress=progress, overwrite=overwrite,
-                            figures=figures)
+    try:
+        with _sigterm_as_interrupt(), _progress_bar(label) as progress:
+            result = run_config(cfg, target, progress=progress, overwrite=overwrite,
+                                figures=figures)
+    except KeyboardInterrupt:
+        error_line(f"stopped: the run was interrupted, so nothing was written to {target} "
+                   "(an earlier output there is as it was); run the same command again")
+        raise typer.Exit(EXIT_INTERRUPTED) from None
     _print_summary(result)
 
 

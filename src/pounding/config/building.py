@@ -9,6 +9,7 @@ from pydantic import Field, field_validator, model_validator
 
 from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
 from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding
+from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
 from pounding.structure.damping import DampingModel
 
 class DampingConfig(Section):
@@ -146,10 +147,10 @@ class BuildingConfig(Section):
     stiffness: Pos | None = None
     period: Pos | None = None
     height: Pos | None = None
-    n_storeys: Annotated[int, Field(ge=1)] | None = None
-    masses: Annotated[list[Pos], Field(min_length=1)] | None = None
-    stiffnesses: Annotated[list[Pos], Field(min_length=1)] | None = None
-    heights: Annotated[list[Pos], Field(min_length=1)] | None = None
+    n_storeys: Annotated[int, Field(ge=1, le=MAX_FLOORS)] | None = None
+    masses: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    stiffnesses: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    heights: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
     damping: DampingConfig | None = None
     storey_law: StoreyLawConfig | None = None
 
@@ -164,6 +165,13 @@ class BuildingConfig(Section):
 
     @model_validator(mode="after")
     def _consistent(self) -> BuildingConfig:
+        for key in ("mass", "stiffness", "masses", "stiffnesses"):
+            value = getattr(self, key)
+            for i, x in enumerate([value] if isinstance(value, float) else value or []):
+                if x < SMALLEST:
+                    where = key if isinstance(value, float) else (key, i)
+                    raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
+                                             f"positive numbers are subnormal (got {x:g})")
         kind = self.kind
         allowed = {"sdof": _SDOF_KEYS, "uniform": _UNIFORM_KEYS, "storeys": _STOREY_KEYS}[kind]
         shape = {"sdof": "an SDOF building (mass, period|stiffness)",
@@ -213,6 +221,10 @@ class BuildingConfig(Section):
             assert self.mass is not None
             k = (self.stiffness if self.stiffness is not None
                  else self.mass * (2.0 * math.pi / self.period) ** 2)  # type: ignore[operator]
+            if not SMALLEST <= k < math.inf:
+                raise ValueError(f"mass {self.mass:g} kg with period {self.period:g} s gives a "
+                                 f"storey stiffness m (2π/T)² = {k:g} N/m, outside the "
+                                 "floating-point range; check mass and period")
             return self._with_law(ShearBuilding(masses=[self.mass], stiffnesses=[k],
                                                 heights=[h], damping=damping or ModalDamping(0.05),
                                                 name=name))

@@ -135,9 +135,45 @@ class RunConfig(Section):
             data["record"]["file"] = str(self.record.path)
         return data
 
-    def to_toml(self, resolve_paths: bool = False, header: str = "") -> str:
-        """The configuration as TOML text that :func:`parse_config` reads back equal."""
-        return dump_toml(self.to_dict(resolve_paths), header=header)
+    def to_toml(self, resolve_paths: bool = False, header: str = "",
+                defaults: bool = False) -> str:
+        """The configuration as TOML text that :func:`parse_config` reads back equal (with
+        ``defaults``: :meth:`with_defaults`, which builds the same run)."""
+        data = self.with_defaults(resolve_paths) if defaults else self.to_dict(resolve_paths)
+        return dump_toml(data, header=header)
+
+    def with_defaults(self, resolve_paths: bool = False) -> dict[str, Any]:
+        """:meth:`to_dict` with every default the run takes written out: each building's
+        name, storey height and damping, the contact's damping formula, and the solver's
+        output step (the one used: the largest divisor of the record step not above the
+        one asked for), duration and largest adaptive step. The file it makes runs the same
+        model to the last bit, and says what was assumed."""
+        from pounding.contact.factory import DEFAULT_FORMULA
+        from pounding.integrate import DEFAULT_OUTPUT_STEP, grid_step
+
+        data = self.to_dict(resolve_paths)
+        for i, (b, raw) in enumerate(zip(self.building, data["building"])):
+            raw.setdefault("name", f"B{i + 1}")
+            if b.kind in ("sdof", "uniform"):
+                raw.setdefault("height", 3.0)
+            elif b.heights is None:
+                raw.setdefault("height", 3.0)
+            if b.damping is None:
+                raw["damping"] = ({"ratio": 0.05} if b.kind == "sdof" else
+                                  {"rayleigh": [0.05, 0.05], "modes": [1, 2]})
+        if self.contact is not None:
+            c = data["contact"]
+            law = self.contact.law
+            if ("formula" in LAW_FIELDS[law] and law in DEFAULT_FORMULA and "e" in c
+                    and "formula" not in c):
+                c["formula"] = DEFAULT_FORMULA[law]
+        motion = self.record.load()
+        step = grid_step(motion.dt, self.solver.dt or DEFAULT_OUTPUT_STEP)
+        sol = data.setdefault("solver", {})
+        sol["dt"] = step
+        sol.setdefault("duration", motion.duration)
+        sol.setdefault("h_max", step)
+        return data
 
 
 def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",

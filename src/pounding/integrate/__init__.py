@@ -10,6 +10,7 @@ is the one compiled kernel of :mod:`pounding.integrate.kernel`; the answer is a
 from __future__ import annotations
 
 import math
+import os
 import sys
 import time
 import warnings
@@ -120,6 +121,43 @@ def choose_free_stepping(mode: str, n_dof: int, bw: int) -> bool:
     if mode == "auto":
         return n_dof <= EXACT_FREE_MAX_DOF
     return mode == "exact"
+
+
+HISTORY_MEMORY_FRACTION: float = 0.5
+"""A run whose histories would take more than this fraction of the machine's memory is
+refused before anything is allocated."""
+
+
+def history_bytes(model: PoundingModel, nt: int) -> int:
+    """Bytes of the histories a run of ``nt`` output times writes: displacement, velocity,
+    acceleration of every floor, penetration and force of every contact, shear of every
+    yielding storey, seven energies and the ground acceleration, 8 bytes each."""
+    n, nc = model.n_dof, len(model.contacts)
+    ns = len(model.yielding_storeys)
+    return 8 * nt * (3 * n + 2 * nc + ns + ENERGY_COLUMNS + 1)
+
+
+def physical_memory() -> int:
+    """This machine's physical memory [bytes] (8 GiB if the system does not say)."""
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (ValueError, OSError, AttributeError):
+        return 8 * 2**30
+
+
+def check_history_size(model: PoundingModel, t_end: float, step: float) -> None:
+    """Refuse, before allocating, a run whose histories would not fit in memory
+    (:data:`HISTORY_MEMORY_FRACTION` of it): one line naming the output step and duration
+    and what it would take."""
+    nt = t_end / step + 1.0
+    need = 8.0 * nt * (history_bytes(model, 1) / 8.0)
+    have = physical_memory()
+    if need > HISTORY_MEMORY_FRACTION * have:
+        raise ValueError(
+            f"solver: {t_end:g} s at an output step of {step:g} s is {nt:.3g} output times; "
+            f"the histories would take {need / 2**30:.3g} GiB (this machine has "
+            f"{have / 2**30:.3g} GiB): use a larger dt (the accuracy does not depend on it) "
+            "or a shorter duration")
 
 
 def grid_step(record_dt: float, dt: float | None = None) -> float:
@@ -389,6 +427,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     """
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
+    check_history_size(model, t_end, step)
     rtol = positive("rtol", rtol)
     h_max = step if h_max is None else positive("h_max", h_max)
     ag = _ground_on_grid_memo(motion, step, t_end)

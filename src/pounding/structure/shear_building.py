@@ -39,8 +39,18 @@ from pounding.validation import positive
 __all__ = ["ShearBuilding", "shear_stiffness_matrix"]
 
 
+MAX_FLOORS: int = 10_000
+"""Most floors a building may have: far beyond any real building (the tallest have about
+160), and a guard against a typo allocating terabytes (``n_storeys = 1e18``)."""
+
+SMALLEST: float = float(np.finfo(np.float64).tiny)
+"""Smallest normal positive float (2.2e-308): masses and stiffnesses below it are subnormal,
+their reciprocals infinite."""
+
+
 def _floor_vector(name: str, value: ArrayLike) -> NDArray[np.float64]:
-    """A read-only float64 copy of ``value``, 1-D, non-empty, every entry finite and > 0."""
+    """A read-only float64 copy of ``value``, 1-D, non-empty, at most :data:`MAX_FLOORS`
+    long, every entry finite and at least :data:`SMALLEST`."""
     try:
         arr = np.array(value, dtype=np.float64)
     except (TypeError, ValueError):
@@ -52,8 +62,13 @@ def _floor_vector(name: str, value: ArrayLike) -> NDArray[np.float64]:
                          f"(got shape {arr.shape})")
     if arr.size == 0:
         raise ValueError(f"{name} must hold at least one value (got {value!r})")
+    if arr.size > MAX_FLOORS:
+        raise ValueError(f"{name} must hold at most {MAX_FLOORS} values, one per floor "
+                         f"(got {arr.size})")
     for i, x in enumerate(arr):
-        positive(f"{name}[{i}]", x)
+        if positive(f"{name}[{i}]", x) < SMALLEST:
+            raise ValueError(f"{name}[{i}] must be at least {SMALLEST:.3g}: smaller "
+                             f"positive numbers are subnormal (got {x:g})")
     arr = np.ascontiguousarray(arr)
     arr.flags.writeable = False
     return arr
@@ -196,6 +211,10 @@ class ShearBuilding:
         if stiffness is None:
             T = positive("period", period)  # type: ignore[arg-type]
             k = m * (2.0 * math.pi / T) ** 2
+            if not SMALLEST <= k < math.inf:
+                raise ValueError(f"mass {m:g} kg with period {T:g} s gives a stiffness "
+                                 f"m (2π/T)² = {k:g} N/m, outside the floating-point range; "
+                                 "check mass and period")
         else:
             k = positive("stiffness", stiffness)
         h = positive("height", height)
@@ -231,6 +250,8 @@ class ShearBuilding:
         if (isinstance(n_storeys, bool) or not isinstance(n_storeys, (int, np.integer))
                 or n_storeys < 1):
             raise ValueError(f"n_storeys must be an integer >= 1 (got {n_storeys!r})")
+        if n_storeys > MAX_FLOORS:
+            raise ValueError(f"n_storeys must be at most {MAX_FLOORS} (got {n_storeys!r})")
         m = positive("mass", mass)
         k = positive("stiffness", stiffness)
         h = positive("height", height)
@@ -251,7 +272,12 @@ class ShearBuilding:
         """
         T = positive("period", period)
         s = (self.fundamental_period / T) ** 2
-        return dataclasses.replace(self, stiffnesses=self.stiffnesses * s)
+        k = self.stiffnesses * s
+        if not np.all((k >= SMALLEST) & np.isfinite(k)):
+            raise ValueError(f"period {T:g} s scales the storey stiffnesses by {s:g}, outside "
+                             f"the floating-point range (got {k.min():g} … {k.max():g} N/m); "
+                             "check period and the masses")
+        return dataclasses.replace(self, stiffnesses=k)
 
     def with_storey_law(self, law: StoreyLaw | None) -> ShearBuilding:
         """A copy whose storeys follow ``law`` (None: linear), e.g.
