@@ -327,3 +327,39 @@ def test_a_bar_stuck_at_zero_says_the_solver_is_compiling() -> None:
     assert "compiling the solver" in note.render(task).plain
     bar.update(task_id, completed=0.02)  # the first chunk is done: running, not compiling
     assert note.render(task).plain == ""
+
+
+def test_summary_carries_periods_and_per_storey_peaks_with_times(tmp_path: Path,
+                                                                 capsys: pytest.CaptureFixture[str]
+                                                                 ) -> None:
+    # two uniform 3-storey buildings: periods against the closed form of the uniform chain,
+    # ω_j = 2 √(k/m) sin((2j − 1) π / (2 (2n + 1))) (docs/structures.md)
+    data = {"name": "three storeys", "record": {"bundled": "el_centro"},
+            "building": [{"n_storeys": 3, "mass": 2e5, "stiffness": 2.5e8},
+                         {"n_storeys": 3, "mass": 3e5, "stiffness": 6e8}],
+            "contact": {"law": "kelvin-voigt", "k": 9.3e8, "e": 0.65, "gap": 0.01},
+            "solver": {"duration": 4.0}}
+    model = tmp_path / "three.toml"
+    model.write_text(dump_toml(data), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(model), "--out", str(out), "--no-figures"]) == 0
+    text = capsys.readouterr().out
+    for expected in ("T1, T2, T3 [s]", "Storeys: peaks and when", "drift ratio [%]",
+                     "storey shear [kN]", "abs. acceleration [m/s²]", "at t [s]"):
+        assert expected in text, expected
+    s = json.loads((out / "summary.json").read_text())
+    for b, (m, k) in zip(s["buildings"], ((2e5, 2.5e8), (3e5, 6e8))):
+        j = np.arange(1, 4)
+        omega = 2 * np.sqrt(k / m) * np.sin((2 * j - 1) * np.pi / 14)
+        np.testing.assert_allclose(b["periods_s"], 2 * np.pi / omega, rtol=1e-12)
+        assert [row["storey"] for row in b["storeys"]] == [1, 2, 3]
+        for row in b["storeys"]:
+            assert 0.0 < row["peak_drift_time_s"] <= 4.0
+            assert row["peak_storey_shear_N"] == pytest.approx(
+                k * row["peak_drift_m"], rel=1e-12)  # linear storeys: V = k d
+            assert row["peak_drift_ratio"] == pytest.approx(row["peak_drift_m"] / 3.0)
+    assert s["solver"]["peaks"] == "located inside solver steps"
+    assert set(s["peak_drift_time_s"]) == {f"B{b}F{f}" for b in (1, 2) for f in (1, 2, 3)}
+    assert s["peak_contact_force_time_s"] == pytest.approx(
+        max(s["peak_contact_force_time_by_contact_s"].items(),
+            key=lambda kv: s["peak_contact_force_by_contact_N"][kv[0]])[1])

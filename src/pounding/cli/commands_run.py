@@ -100,8 +100,6 @@ def _h(text: str) -> Text:
 
 def _print_summary(out: Any) -> None:
     """The tables printed after a run (``out`` is a :class:`pounding.run.RunOutput`)."""
-    from pounding.result import peak_abs
-
     r = out.result
     model = r.model
     s = r.summary()
@@ -113,7 +111,9 @@ def _print_summary(out: Any) -> None:
     head.add_row(_h("simulated [s] / output step [s]"), f"{s['duration_s']:g} / {r.dt:g}")
     head.add_row("buildings / contacts", f"{len(model.buildings)} / {len(model.contacts)}")
     head.add_row("impacts", str(r.n_impacts))
-    head.add_row(_h("peak contact force [N]"), f"{s['peak_contact_force_N']:.4g}")
+    t_peak = s["peak_contact_force_time_s"]
+    head.add_row(_h("peak contact force [N]"), f"{s['peak_contact_force_N']:.4g}"
+                 + (f" at {t_peak:.3f} s" if t_peak is not None else ""))
     head.add_row(_h("energy input [J]"), f"{s['energy_final_J']['input']:.4g}")
     head.add_row(_h("dissipated in contacts [J]"), f"{s['contact_dissipated_J']:.4g}")
     head.add_row("energy-balance error", f"{r.energy_balance_error:.2e} of peak input")
@@ -122,23 +122,30 @@ def _print_summary(out: Any) -> None:
     head.add_row(_h("wall time [s]"), f"{r.wall_time:.2f} integrating, {out.wall_time:.2f} total")
     console.print(head)
 
-    bt = Table(title="Buildings")
-    cols = [("building", "left"), ("storeys", "right"), ("T1 [s]", "right"),
-            ("peak roof displacement [m]", "right"), ("peak drift [m]", "right"),
-            ("at storey", "right"), ("peak drift ratio", "right")]
+    bt = Table(title="Buildings (peaks located inside solver steps)")
+    cols = [("building", "left"), ("storeys", "right"), ("T1, T2, T3 [s]", "right"),
+            ("peak roof displacement [m]", "right"), ("at t [s]", "right"),
+            ("peak drift [m]", "right"), ("at storey", "right"), ("peak drift ratio", "right"),
+            ("peak storey shear [kN]", "right")]
     inelastic = model.is_inelastic
     if inelastic:
         cols += [("storey law", "left"), ("peak ductility", "right"),
                  ("largest residual drift [m]", "right")]
     for col, just in cols:
         bt.add_column(_h(col), justify=just)  # type: ignore[arg-type]
-    drift = peak_abs(r.drift)
+    drift = r.peak_drift
+    shear = r.peak_storey_shear
     for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
         d = drift[off: off + bl.n]
         j = int(np.argmax(d))
-        row = [f"B{b + 1} {bl.name}".strip(), str(bl.n), f"{bl.fundamental_period:.3f}",
-               f"{r.peak_displacement[off + bl.n - 1]:.4f}", f"{d[j]:.4f}", str(j + 1),
-               f"{d[j] / bl.heights[j]:.2%}"]
+        v = shear[off: off + bl.n]
+        jv = int(np.argmax(v))
+        periods = ", ".join(f"{t:.3f}" for t in bl.modes().periods[:3])
+        roof = off + bl.n - 1
+        row = [f"B{b + 1} {bl.name}".strip(), str(bl.n), periods,
+               f"{r.peak_displacement[roof]:.4f}", f"{r.peak_displacement_time[roof]:.3f}",
+               f"{d[j]:.4f}", str(j + 1), f"{d[j] / bl.heights[j]:.2%}",
+               f"{v[jv] / 1e3:.4g} (storey {jv + 1})"]
         if inelastic:
             law = bl.storey_law
             if law is None:
@@ -151,12 +158,13 @@ def _print_summary(out: Any) -> None:
                         f"{res[jr]:+.4f} (storey {jr + 1})"]
         bt.add_row(*row)
     console.print(bt)
+    _print_storeys(r)
 
     if model.contacts:
         ct = Table(title="Contacts")
         columns = any(c.struck is not None for c in model.contacts)
         for col in ("contact", "elevation [m]", "gap [m]", "impacts", "peak force [N]",
-                    "dissipated [J]") + (("peak column shear [N]", "÷ storey shear")
+                    "at t [s]", "dissipated [J]") + (("peak column shear [N]", "÷ storey shear")
                                          if columns else ()):
             ct.add_column(_h(col), justify="left" if col == "contact" else "right")
         counts = r.impacts_per_contact
@@ -167,6 +175,7 @@ def _print_summary(out: Any) -> None:
             hit = counts[c.index] > 0
             cells = [c.label, f"{c.elevation:g}", f"{c.gap:g}", str(counts[c.index]),
                      f"{pcf[c.index]:.4g}" if hit else "-",
+                     f"{r.peak_contact_force_time[c.index]:.3f}" if hit else "-",
                      f"{dissipated[c.index]:.4g}" if hit else "-"]
             if pcs is not None:
                 hit = hit and c.struck is not None
@@ -177,6 +186,37 @@ def _print_summary(out: Any) -> None:
 
     console.print(f"outputs in [bold]{out.out_dir}[/]: "
                   + ", ".join(sorted(p.name for p in out.files.values())), highlight=False)
+
+
+STOREY_ROWS = 30
+"""Buildings with more storeys list only the :data:`STOREY_ROWS` … of largest drift ratio."""
+
+
+def _print_storeys(r: Any) -> None:
+    """Every storey's peaks with their times (the envelope figure, as numbers); a building
+    of more than :data:`STOREY_ROWS` storeys shows the ten with the largest drift ratio."""
+    st = Table(title="Storeys: peaks and when (all of them in summary.json)")
+    for col in ("building", "storey", "floor at [m]", "displacement [mm]", "t [s]",
+                "drift ratio [%]", "t [s]", "storey shear [kN]", "t [s]",
+                "abs. acceleration [m/s²]", "t [s]"):
+        st.add_column(_h(col), justify="left" if col == "building" else "right")
+    ratio = r.peak_drift_ratio
+    for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
+        rows = range(bl.n)
+        if bl.n > STOREY_ROWS:
+            rows = sorted(np.argsort(-ratio[off: off + bl.n])[:10])
+        for j in rows:
+            i = off + int(j)
+            st.add_row(f"B{b + 1} {bl.name}".strip(), str(int(j) + 1),
+                       f"{bl.floor_levels[j]:g}",
+                       f"{r.peak_displacement[i] * 1e3:.2f}", f"{r.peak_displacement_time[i]:.3f}",
+                       f"{ratio[i] * 100:.3f}", f"{r.peak_drift_time[i]:.3f}",
+                       f"{r.peak_storey_shear[i] / 1e3:.5g}", f"{r.peak_storey_shear_time[i]:.3f}",
+                       f"{r.peak_abs_acceleration[i]:.4g}",
+                       f"{r.peak_abs_acceleration_time[i]:.3f}")
+        if bl.n > STOREY_ROWS:
+            st.add_row(f"B{b + 1}", "…", "", "", "", "", "", "", "", "", "")
+    console.print(st)
 
 
 def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | None,
