@@ -1,6 +1,6 @@
 """Time each figure of a run (build + save as PNG) on the demo model, best of N.
 
-Runs the model `pounding demo` runs (``pounding/data/demo.toml``: two 10-storey buildings,
+Runs the model `pounding demo` runs (``pounding/examples/two_10_storey.toml``: two 10-storey buildings,
 El Centro 40 s at 1 ms, 40,000 samples a line) once, then builds and saves every figure
 of the run registry N times and prints the best time of each.
 
@@ -26,7 +26,7 @@ def main() -> None:
     from pounding.config import load_config
     from pounding.integrate import simulate
 
-    path = args.model or Path(str(resources.files("pounding") / "data" / "demo.toml"))
+    path = args.model or Path(str(resources.files("pounding") / "examples" / "two_10_storey.toml"))
     cfg = load_config(path)
     model, motion, solver = cfg.build()
     t0 = time.perf_counter()

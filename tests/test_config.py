@@ -17,7 +17,7 @@ from pounding.structure import ModalDamping, RayleighDamping
 ROOT = Path(__file__).resolve().parents[1]
 # model files (sweep files, sweep_*.toml, are tested in tests/studies/test_sweep.py)
 EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml") if not p.name.startswith("sweep_"))
-DEMO = ROOT / "src" / "pounding" / "data" / "demo.toml"
+DEMO = ROOT / "src" / "pounding" / "examples" / "two_10_storey.toml"
 
 
 def base() -> dict[str, Any]:
@@ -93,10 +93,26 @@ def test_row_of_three_has_two_gaps() -> None:
     assert model.buildings[0].damping.by_periods
 
 
-def test_demo_is_the_two_10_storey_example() -> None:
-    demo = load_config(DEMO)
-    ex = load_config(ROOT / "examples" / "two_10_storey.toml")
-    assert demo.model_dump() == ex.model_dump()
+def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> None:
+    from pounding.example_files import DEMO as DEMO_NAME
+    from pounding.example_files import copy_examples, example_path, examples
+
+    # the repository's examples/ is the package's folder (a link), so a wheel has them all
+    assert (ROOT / "examples").resolve() == example_path(DEMO_NAME).parent.resolve()
+    assert example_path(DEMO_NAME).resolve() == DEMO.resolve()
+    listed = {e.name: e.kind for e in examples()}
+    assert listed == {p.name: ("sweep" if p.name.startswith("sweep_") else "model")
+                      for p in (ROOT / "examples").glob("*.toml")}
+    assert all(e.description for e in examples())
+    copied = copy_examples(tmp_path / "mine")
+    assert {p.name for p in copied} == set(listed) | {"README.md"}
+    for p in copied:
+        if p.suffix == ".toml" and not p.name.startswith("sweep_"):
+            load_config(p)  # every copied model file runs from its new folder
+    with pytest.raises(ValueError, match="already has"):
+        copy_examples(tmp_path / "mine")
+    with pytest.raises(ValueError, match="no bundled example 'nope'"):
+        example_path("nope")
 
 
 # ------------------------------------------------------------------------ round trip

@@ -47,7 +47,7 @@ def simulate_file(path: Path, duration: float) -> Result:
 def demo() -> Result:
     """`pounding demo`'s two 10-storey buildings, the first 16 s (impacts from 2.5 s on;
     16,001 samples a history, more than the figures draw)."""
-    return simulate_file(Path(str(resources.files("pounding") / "data" / "demo.toml")), 16.0)
+    return simulate_file(Path(str(resources.files("pounding") / "examples" / "two_10_storey.toml")), 16.0)
 
 
 @pytest.fixture(scope="module")

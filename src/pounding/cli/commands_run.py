@@ -7,7 +7,6 @@ import signal
 import threading
 import time
 from collections.abc import Callable, Iterator
-from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -272,7 +271,49 @@ def demo_cmd(
              "again; a folder that is not a pounding output is never replaced).")] = True,
     figures: FiguresOpt = None,
 ) -> None:
-    """Two 10-storey buildings pounding under El Centro 1940 (examples/two_10_storey.toml)."""
-    res = resources.files("pounding").joinpath("data").joinpath("demo.toml")
-    with resources.as_file(res) as path:
-        _run(path, out, overwrite, figures, "demo: two 10-storey buildings")
+    """Two 10-storey buildings pounding under El Centro 1940: the bundled example
+    two_10_storey.toml (see it with `pounding examples`).
+
+    Examples:
+
+      pounding demo
+
+      pounding demo --out results/demo --no-figures
+    """
+    from pounding.example_files import DEMO, example_path
+
+    _run(example_path(DEMO), out, overwrite, figures, "demo: two 10-storey buildings")
+
+
+@app.command("examples")
+def examples_cmd(
+    copy: Annotated[Path | None, typer.Option(
+        "--copy", metavar="DIR", help="Copy every example (and its README) into the folder "
+                                      "DIR, made if missing.", show_default=False)] = None,
+    overwrite: Annotated[bool, typer.Option(
+        "--overwrite", help="With --copy: replace files of the same names.")] = False,
+) -> None:
+    """List the example model and sweep files that come with pounding, or copy them.
+
+    Examples:
+
+      pounding examples
+
+      pounding examples --copy my-examples && pounding run my-examples/seed_sdof_pair.toml
+    """
+    from pounding.example_files import copy_examples, example_path, examples
+
+    if copy is not None:
+        files = copy_examples(copy, overwrite=overwrite)
+        console.print(f"copied {len(files)} files into [bold]{copy}[/]: "
+                      + ", ".join(p.name for p in files), highlight=False)
+        return
+    table = Table(title=f"Examples (in {example_path('seed_sdof_pair').parent})")
+    table.add_column("file")
+    table.add_column("kind")
+    table.add_column("what it shows", overflow="fold")
+    for e in examples():
+        table.add_row(e.name, e.kind, e.description)
+    console.print(table)
+    console.print("Run one with `pounding run FILE` (a sweep: `pounding sweep FILE`); copy them "
+                  "with `pounding examples --copy DIR`.", highlight=False)

@@ -1,0 +1,78 @@
+"""The example model and sweep files that ship inside the package (``pounding/examples``).
+
+They are the same files as ``examples/`` of a clone of the repository (which links to
+them), so an installed ``pounding`` can show and copy them: ``pounding examples`` lists
+them, ``pounding examples --copy DIR`` copies them into a folder to edit and run, and
+``pounding demo`` runs ``two_10_storey.toml`` from here.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+from importlib import resources
+from pathlib import Path
+from typing import NamedTuple
+
+__all__ = ["DEMO", "Example", "copy_examples", "example_path", "examples"]
+
+DEMO = "two_10_storey.toml"
+"""The example ``pounding demo`` runs."""
+
+
+class Example(NamedTuple):
+    """One bundled example: file name, kind (``model`` or ``sweep``), what it shows."""
+
+    name: str
+    kind: str
+    description: str
+
+
+def _folder() -> Path:
+    return Path(str(resources.files("pounding") / "examples"))
+
+
+def example_path(name: str) -> Path:
+    """The bundled example file ``name`` (``"seed_sdof_pair.toml"``; the suffix may be
+    left out)."""
+    file = name if name.endswith(".toml") else f"{name}.toml"
+    path = _folder() / file
+    if not path.is_file():
+        raise ValueError(f"example: no bundled example {name!r}; there are "
+                         f"{', '.join(e.name for e in examples())}")
+    return path
+
+
+def examples() -> list[Example]:
+    """Every bundled example, with the first sentence of its opening comment."""
+    out = []
+    for path in sorted(_folder().glob("*.toml")):
+        lines = []
+        for line in path.read_text(encoding="utf-8").splitlines():
+            if not line.startswith("#"):
+                break
+            lines.append(line.lstrip("# ").strip())
+        text = " ".join(lines)
+        first = text.split(". ")[0].rstrip(".")
+        kind = "sweep" if path.name.startswith("sweep_") else "model"
+        out.append(Example(path.name, kind, first))
+    return out
+
+
+def copy_examples(dest: str | os.PathLike[str], overwrite: bool = False) -> list[Path]:
+    """Copy every bundled example (and their README) into the folder ``dest`` (made if
+    missing). An existing file is not replaced unless ``overwrite``. Returns the files
+    written."""
+    folder = Path(dest)
+    if folder.exists() and not folder.is_dir():
+        raise ValueError(f"copy: {folder} is a file, not a folder")
+    sources = sorted(_folder().glob("*.toml")) + [_folder() / "README.md"]
+    clash = [p.name for p in sources if (folder / p.name).exists()]
+    if clash and not overwrite:
+        raise ValueError(f"copy: {folder} already has {', '.join(clash)}; give --overwrite "
+                         "to replace them")
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for p in sources:
+        written.append(Path(shutil.copyfile(p, folder / p.name)))
+    return written
