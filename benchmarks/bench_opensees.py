@@ -66,7 +66,8 @@ OUR_LAW = {"kelvin-voigt": "kelvin-voigt", "jankowski": "nonlinear-viscoelastic"
 # ===================================================================== our engine
 def _contact_spec(law: str, e: float, k: float = K_KV, k_h: float = K_H) -> Any:
     if law == "kelvin-voigt":
-        return ContactSpec("kelvin-voigt", k=k, e=e)  # Anagnostopoulos c, dashpot may pull
+        # as OpenSees ViscoelasticGap: Anagnostopoulos c, the dashpot may pull (tension)
+        return ContactSpec("kelvin-voigt", k=k, e=e, formula="anagnostopoulos", tension=True)
     if law == "jankowski":
         return ContactSpec("nonlinear-viscoelastic", k_h=k_h, e=e)  # Jankowski 2006 ζ
     raise ValueError(f"law must be one of {osm.LAWS} (got {law!r})")

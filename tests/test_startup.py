@@ -86,3 +86,19 @@ def test_files_written_without_xarray_read_back_as_xarray_and_pandas_give(
     assert len(back) == res.n_impacts == int(res.impacts_per_contact.sum())
     np.testing.assert_allclose(res.dissipated_per_contact,
                                [np.nansum(res.impacts["energy_dissipated"])])
+
+
+def test_every_command_shows_examples_in_its_help(capsys: pytest.CaptureFixture[str]) -> None:
+    from typer.main import get_command
+
+    from pounding.cli import app
+
+    names = sorted(get_command(app).commands)  # type: ignore[attr-defined]
+    assert {"run", "demo", "examples", "record", "sweep", "report", "gap"} <= set(names)
+    for name in names:
+        assert main([name, "--help"]) == 0
+        text = capsys.readouterr().out
+        assert "Examples:" in text, name
+        after = text.split("Examples:", 1)[1]
+        shown = [ln.strip(" │") for ln in after.splitlines() if ln.strip().startswith("pounding ")]
+        assert shown and all(ln.split()[1] == name for ln in shown), (name, shown)

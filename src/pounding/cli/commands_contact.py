@@ -53,7 +53,14 @@ def zeta_cmd(
     plot: Annotated[Path | None, typer.Option("--plot", metavar="FILE",
                     help="Draw the seed's Fig 4 (every formula against e) to FILE.")] = None,
 ) -> None:
-    """Print the seed's Table 1 beside every damping formula (zeta and chi against e)."""
+    """Print the seed's Table 1 beside every damping formula (zeta and chi against e).
+
+    Examples:
+
+      pounding zeta
+
+      pounding zeta --e 0.3,0.5,0.7 --plot fig4.png
+    """
     from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
     from pounding.validation import restitution
 
@@ -95,7 +102,14 @@ def audit_cmd(
     csv: Annotated[Path | None, typer.Option("--csv", metavar="FILE",
                    help="Write the full audit table to FILE (CSV).")] = None,
 ) -> None:
-    """Restitution audit: the e each formula really achieves, with each law, in a simulated impact."""
+    """Restitution audit: the e each formula really achieves, with each law, in a simulated impact.
+
+    Examples:
+
+      pounding audit
+
+      pounding audit --e 0.5,0.7 --csv audit.csv --plot audit.png
+    """
     from pounding.contact.audit import PAIRINGS, AuditCase, restitution_audit
     from pounding.contact.restitution import TABLE1_E
     from pounding.validation import restitution
@@ -144,7 +158,14 @@ def collide_cmd(
     no_tension: NoTension = False,
     delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the elastic Hertz value.")] = None,
 ) -> None:
-    """Simulate one impact of two free masses and report what the law really does."""
+    """Simulate one impact of two free masses and report what the law really does.
+
+    Examples:
+
+      pounding collide nonlinear-viscoelastic --e 0.65
+
+      pounding collide kelvin-voigt --e 0.5 --m1 1e5 --m2 1e5
+    """
     from pounding.contact.calibration import hertz_delta_max
     from pounding.contact.base import m_effective
     from pounding.contact.collision import simulate_collision
@@ -182,7 +203,14 @@ def calibrate_cmd(
     k: LinearStiffness = 9.3e8,
     no_tension: NoTension = False,
 ) -> None:
-    """Find the damping that makes a law achieve exactly the target e."""
+    """Find the damping that makes a law achieve exactly the target e.
+
+    Examples:
+
+      pounding calibrate hunt-crossley --e 0.6
+
+      pounding calibrate nonlinear-viscoelastic --e 0.3 --v0 1.0
+    """
     from pounding.contact.calibration import calibrate, calibrate_bilinear
     from pounding.contact.factory import make_law
 
@@ -205,7 +233,12 @@ def fit_cmd(
     v0: Annotated[float, typer.Option(help="Measured impact velocity (m/s).")],
     law: Annotated[str, typer.Option(help="Law to fit: linear-spring, kelvin-voigt, modified-kelvin-voigt, hertz, hunt-crossley, nonlinear-viscoelastic.")] = "hunt-crossley",
 ) -> None:
-    """Fit a law's stiffness and damping to a measured impact-force history (least squares)."""
+    """Fit a law's stiffness and damping to a measured impact-force history (least squares).
+
+    Examples:
+
+      pounding fit force.csv --m1 2e5 --m2 3e5 --v0 0.5 --law hunt-crossley
+    """
     from pounding.contact.calibration import fit_impact
 
     try:

@@ -25,7 +25,14 @@ def ellipse(
     n: int = typer.Option(2001, "--n", help="Samples over the cycle."),
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write the seed's Fig 2 here."),
 ) -> None:
-    """Energy dissipated per cycle by a spring + dashpot link element (seed eqs 1-12, Fig 2)."""
+    """Energy dissipated per cycle by a spring + dashpot link element (seed eqs 1-12, Fig 2).
+
+    Examples:
+
+      pounding ellipse
+
+      pounding ellipse --zeta 0.1 --period 0.5 --plot fig2.png
+    """
     from pounding.link_element import (
         damping_coefficient_viscous,
         dissipated_energy,

@@ -95,7 +95,14 @@ def gap_cmd(
     csv: Annotated[Path | None, typer.Option(
         "--csv", metavar="FILE", help="Write the table (all numbers) to FILE.")] = None,
 ) -> None:
-    """Critical separation gap per floor level by simulation, beside ABS, SRSS and DDC."""
+    """Critical separation gap per floor level by simulation, beside ABS, SRSS and DDC.
+
+    Examples:
+
+      pounding gap examples/two_10_storey.toml
+
+      pounding gap model.toml A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
+    """
     from pounding.config import load_config
     from pounding.studies.gap import DesignSpectrum, critical_gaps
 

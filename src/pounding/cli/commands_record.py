@@ -35,6 +35,12 @@ def record(
     """Read ground-motion records and print their step, duration, PGA and PGV.
 
     PGV is the peak of the trapezoidal integral of the acceleration (no baseline correction).
+
+    Examples:
+
+      pounding record elcentro.AT2 --plot elcentro.png
+
+      pounding record accel.txt --dt 0.01 --units g
     """
     from pounding.ground_motion import read_record
 

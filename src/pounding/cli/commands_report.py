@@ -19,7 +19,14 @@ def report_cmd(
         "--out", "-o", help="HTML file to write (default: RESULTS_DIR/report.html). Written "
                             "complete or not at all.", show_default=False)] = None,
 ) -> None:
-    """Write one self-contained HTML page (figures embedded) for a run or a sweep."""
+    """Write one self-contained HTML page (figures embedded) for a run or a sweep.
+
+    Examples:
+
+      pounding report pounding-demo
+
+      pounding report sweep_gap_e-results --out study.html
+    """
     from pounding.report import write_report
 
     path = write_report(results_dir, out)

@@ -257,7 +257,14 @@ def run_cmd(
     overwrite: OverwriteOpt = False,
     figures: FiguresOpt = None,
 ) -> None:
-    """Simulate a model file and write time histories, impacts, summary and figures."""
+    """Simulate a model file and write time histories, impacts, summary and figures.
+
+    Examples:
+
+      pounding run examples/seed_sdof_pair.toml --out results/sdof
+
+      pounding run model.toml --no-figures --overwrite
+    """
     _run(model, out, overwrite, figures, f"simulating {model.name}")
 
 

@@ -51,7 +51,14 @@ def sweep_cmd(
     overwrite: Annotated[bool, typer.Option(
         "--overwrite", help="Start afresh: discard finished cases in the output folder.")] = False,
 ) -> None:
-    """Run a parameter sweep on Dask; resumable: a re-run does only the missing cases."""
+    """Run a parameter sweep on Dask; resumable: a re-run does only the missing cases.
+
+    Examples:
+
+      pounding sweep examples/sweep_gap_e.toml -j 2
+
+      pounding sweep study.toml --scheduler tcp://10.0.0.5:8786
+    """
     from pounding.cli.commands_run import _sigterm_as_interrupt
     from pounding.studies.sweep import load_sweep, run_sweep
 
@@ -115,7 +122,14 @@ def plot_cmd(
                             "table).", show_default=False)] = None,
     dpi: Annotated[int, typer.Option("--dpi", min=30, max=1200)] = 150,
 ) -> None:
-    """Draw a measure of a sweep against one or two swept parameters."""
+    """Draw a measure of a sweep against one or two swept parameters.
+
+    Examples:
+
+      pounding plot sweep_gap_e-results --x contact.gap --y contact.e
+
+      pounding plot sweep_gap_e-results --x contact.gap --measure peak_contact_force_N --out force.png
+    """
     from pounding.plot import save_figure
     from pounding.plot.sweep import default_figure_name, plot_sweep
     from pounding.studies.sweep import load_results
