@@ -34,8 +34,14 @@ from pounding.integrate.layout import (
     W_E_DAMP,
     W_E_INPUT,
     W_E_STOREY,
+    W_PEAK_MARGIN,
 )
-from pounding.integrate.peaks import track_floor, update_cubic, update_quintic
+from pounding.integrate.peaks import (
+    acc_peak_between,
+    track_exact_step,
+    update_cubic,
+    update_quintic,
+)
 from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row
 
 
@@ -64,22 +70,24 @@ def floor_rel_acc(j, y, ag, n, bw, k_band, c_band, m_inv, r):
 
 @njit(**NRT_FREE)
 def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, m_inv, r,
-             cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, work, gd, gr, gd1, gr1, jk,
-             jk1, wc, ws_f, u_out, v_out, acc_out, pen_out, e_out, pk):
+             cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, gd, gr, gd1, gr1, wc, ws_f,
+             u_out, v_out, acc_out, pen_out, e_out, pk):
     """Exact grid steps from grid point ``k`` while every gap stays open, writing the
     outputs and peaks of each; returns the grid point whose step could close a gap (that
     step not taken: the caller re-takes it with RK) or ``k1``.
 
     A small function of its own, so that its loop compiles tight. ``gd``, ``gr``: every
-    contact's δ and δ̇ at grid point k; ``jk``: every floor's jerk there (kept for coupled
-    floors only; both updated as the steps go); ``graze_tol`` [m]: how near zero a gap's
-    peak inside a step must come to hand the step over; the other arrays as in
-    :func:`pounding.integrate.kernel.integrate_chunk` (``x1``, ``acc``, ``lin``, ``work``,
-    ``gd1``, ``gr1``, ``jk1``: scratch).
+    contact's δ and δ̇ at grid point k (updated as the steps go); ``graze_tol`` [m]: how
+    near zero a gap's peak inside a step must come to hand the step over; the other arrays
+    as in :func:`pounding.integrate.kernel.integrate_chunk` (``x1``, ``acc``, ``lin``,
+    ``gd1``, ``gr1``: scratch). Peaks: uncoupled floors compute their jerk with the outputs
+    (two multiplications); coupled floors test the samples of |ü| and compute the jerk
+    only beside a sampled peak (:func:`pounding.integrate.peaks.acc_peak_between`).
     """
     n = m_diag.shape[0]
     nc = cgap.shape[0]
     nblk = blk.shape[0] - 1
+    k_entry = k
     e_in = ws_f[W_E_INPUT]
     e_d = ws_f[W_E_DAMP]
     e_h = ws_f[W_E_STOREY]
@@ -146,6 +154,12 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
                     ws_f[W_E_INPUT] = e_in
                     ws_f[W_E_DAMP] = e_d
+                    if bw != 0 and k - 1 >= k_entry:
+                        # the last exact step's acceleration peaks, whose test needed the
+                        # sample after it
+                        for i in range(n):
+                            acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out,
+                                             acc_out, n, bw, k_band, c_band, m_inv, r, pk)
                     return k
         # input energy over the step: an exact quadratic form
         e_step = (a0 * lin_i0 + a1 * lin_i1
@@ -201,26 +215,35 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                 acc_out[o, i] = aa
                 ek += 0.5 * m_diag[i] * v * v
                 es += 0.5 * u * lin[0, i]
-                work[i] = v
-                work[n + i] = aa - r[i] * a1
-            # jerk at the step end (kept for the next step's start)
-            band_mv(k_band, c_band, work, n, bw, lin)
+            # the peaks: displacement and drift where the velocity or the drift rate changes
+            # sign; acceleration where |a| peaks among the samples k − 1, k, k + 1 within
+            # the margin of the peak so far (its extremum then lies in one of the two steps
+            # beside k, where the jerk is computed from the outputs: for coupled floors a
+            # banded product). The tests first, in a loop without calls or branches; the
+            # rare floors they flag after.
+            km1 = k - 1 if k >= 1 else 0
+            keep = 1.0 - ws_f[W_PEAK_MARGIN]
+            anyhit = 0.0
             for i in range(n):
-                jk1[i] = -(lin[0, i] + lin[1, i]) * m_inv[i]
-            for i in range(n - 1, -1, -1):
-                # from the top floor down, so that the floor below is still at the start
                 v0 = x[n + i]
                 v = x1[n + i]
                 lo = below[i]
-                dr0 = v0 - x[n + lo] if lo >= 0 else v0
-                dr1 = v - x1[n + lo] if lo >= 0 else v
-                if ((v0 > 0.0) != (v > 0.0) or (dr0 > 0.0) != (dr1 > 0.0)
-                        or (jk[i] > 0.0) != (jk1[i] > 0.0)):
-                    track_floor(t0, dt, n, i, below, x, a0, x1, a1, r, acc_out[k], jk,
-                                acc_out[o], jk1, pk)
+                vlo0 = x[n + lo] if lo >= 0 else 0.0
+                vlo1 = x1[n + lo] if lo >= 0 else 0.0
+                ak = abs(acc_out[k, i])
+                hit = (((v0 > 0.0) != (v > 0.0)) | ((v0 - vlo0 > 0.0) != (v - vlo1 > 0.0))
+                       | ((ak >= abs(acc_out[km1, i])) & (ak >= abs(acc_out[o, i]))
+                          & (ak >= keep * pk[i, PK_A]) & (ak > 0.0) & (k >= 1)))
+                flag = 1.0 if hit else 0.0
+                acc[i] = flag
+                anyhit += flag
+            if anyhit > 0.0:
+                for i in range(n):
+                    if acc[i] != 0.0:
+                        track_exact_step(t0, dt, n, i, k, k_entry, below, x, x1, a0, a1, ag,
+                                         r, v_out, acc_out, bw, k_band, c_band, m_inv, pk)
+            for i in range(2 * n):
                 x[i] = x1[i]
-                x[n + i] = v
-                jk[i] = jk1[i]
         # nothing but the viscous dampers takes energy out (every gap open, linear
         # storeys): the step's viscous work is the input work less the change of kinetic
         # and strain energy, exactly

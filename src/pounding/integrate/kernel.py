@@ -45,14 +45,12 @@ from pounding.integrate.layout import (
     EVENT_TOL,
     I_MODE,
     IMP_COLUMNS,
-    P_CONTACT,
     PK_COLUMNS,
     WS_F_SIZE,
     WS_I_SIZE,
 )
 from pounding.integrate.rhs import (
     INLINE,
-    NRT_FREE,
     deriv_call,
     gap_row,
     jerk,
@@ -152,9 +150,8 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
             # exact steps while every gap stays open; stops at the step in which one could
             # close (x, gd and gr are then those of grid point k)
             k = free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
-                         m_inv, r, cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, work, gd,
-                         gr, gd1, gr1, jk, jk1, wc, ws_f, u_out, v_out,
-                         acc_out, pen_out, e_out, pk)
+                         m_inv, r, cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, gd, gr,
+                         gd1, gr1, wc, ws_f, u_out, v_out, acc_out, pen_out, e_out, pk)
             if k >= k1:
                 break
             ws_i[I_MODE] = 1

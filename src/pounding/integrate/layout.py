@@ -31,8 +31,11 @@ EV_GRAZE = 7
 the peak is located on real steps to decide whether the gap closes there."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
-W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD = range(5)
-WS_F_SIZE = 5
+W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN = range(6)
+WS_F_SIZE = 6
+"""Workspace scalars: proposed RK step [s], cumulative input, viscous and storey work [J],
+last error norm, and the margin by which an acceleration peak between two exact-step
+samples can exceed the larger sample (relative; :func:`pounding.integrate.peak_margin`)."""
 (I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED, I_FAIL_STEP,
  I_STEP_BUDGET, I_ONSET_C) = range(10)
 WS_I_SIZE = 10

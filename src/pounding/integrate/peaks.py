@@ -9,6 +9,9 @@ taken from an interpolant through both ends:
 * displacement and drift: the quintic Hermite of ``(u, u̇, ü)`` (error O(h⁶));
 * absolute acceleration: the cubic Hermite of ``(a, ȧ)``, ``ȧ`` the jerk from the
   differentiated equations of motion (:func:`pounding.integrate.rhs.jerk`; error O(h⁴)).
+  In exact steps of coupled floors the jerk costs a banded product, so there the samples
+  of |a| are tested first and the jerk computed only in the two steps beside a sampled
+  peak (the continuous peak lies in one of them).
 
 A smooth quantity takes its largest magnitude where its rate is zero, or at the ends of the
 run; so a step is examined only where the rate changes sign inside it (then its end value
@@ -102,10 +105,10 @@ def track_step(t0, h, n, below, x0, arel0, aabs0, j0, x1, arel1, aabs1, j1, pk):
 
 
 @njit(**NRT_FREE)
-def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, j0, aabs1, j1, pk):
-    """The peaks of floor i over an exact step ``[t0, t0 + h]`` (called where one of its
-    rates changes sign) from the states ``x0``, ``x1`` at its ends, the ground accelerations
-    ``a0``, ``a1`` there, the absolute accelerations and the jerks."""
+def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, aabs1, pk):
+    """The displacement and drift peaks of floor i over an exact step ``[t0, t0 + h]``
+    (called where its velocity or drift rate changes sign) from the states ``x0``, ``x1``
+    at its ends, the ground accelerations ``a0``, ``a1`` and the absolute accelerations."""
     lo = below[i]
     v0 = x0[n + i]
     v1 = x1[n + i]
@@ -122,8 +125,49 @@ def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, j0, aabs1, j1, pk)
                            ar1 - (aabs1[lo] - r[lo] * a1))
     elif (v0 > 0.0) != (v1 > 0.0):
         update_quintic(pk, i, PK_D, t0, h, x0[i], v0, ar0, x1[i], v1, ar1)
-    if (j0[i] > 0.0) != (j1[i] > 0.0):
-        update_cubic(pk, i, PK_A, t0, h, aabs0[i], j0[i], aabs1[i], j1[i])
+
+
+@njit(**NRT_FREE)
+def track_exact_step(t0, h, n, i, k, k_entry, below, x0, x1, a0, a1, ag, r, v_out, acc_out,
+                     bw, k_band, c_band, m_inv, pk):
+    """The peaks of floor i over the exact step from grid point k (time ``t0``) to k + 1,
+    where a sign test of :func:`pounding.integrate.exact_steps.free_run` found one may lie:
+    displacement and drift from the states, acceleration from the samples k − 1, k, k + 1
+    of the outputs (the step before k only if it was exact too, ``k − 1 ≥ k_entry``)."""
+    o = k + 1
+    track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, acc_out[k], acc_out[o], pk)
+    if k >= 1:
+        ak = abs(acc_out[k, i])
+        if ak >= abs(acc_out[k - 1, i]) and ak >= abs(acc_out[o, i]) and ak > 0.0:
+            acc_peak_between(i, k, o, t0, h, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv,
+                             r, pk)
+            if k - 1 >= k_entry:
+                acc_peak_between(i, k - 1, k, t0 - h, h, ag, v_out, acc_out, n, bw, k_band,
+                                 c_band, m_inv, r, pk)
+
+
+@njit(**NRT_FREE)
+def row_jerk(i, j, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r):
+    """Jerk of floor i at output row j of an exact step [m/s³]:
+    ``−(K u̇ + C ü)_i / m_i`` from the outputs (no contact closed, no yielding storey)."""
+    s = 0.0
+    for d in range(2 * bw + 1):
+        col = i + d - bw
+        if 0 <= col < n:
+            s += k_band[d, i] * v_out[j, col] + c_band[d, i] * (acc_out[j, col]
+                                                                 - r[col] * ag[j])
+    return -s * m_inv[i]
+
+
+@njit(**NRT_FREE)
+def acc_peak_between(i, j0, j1, t0, h, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r,
+                     pk):
+    """The absolute-acceleration peak of floor i inside the exact step from output row
+    ``j0`` (time ``t0``) to ``j1``, from the cubic Hermite of the acceleration and its jerk."""
+    update_cubic(pk, i, PK_A, t0, h, acc_out[j0, i],
+                 row_jerk(i, j0, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r),
+                 acc_out[j1, i],
+                 row_jerk(i, j1, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r))
 
 
 @njit(**NRT_FREE)
