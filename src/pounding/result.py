@@ -318,6 +318,17 @@ class Result:
         return out
 
     @cached_property
+    def contact_peaks(self) -> dict[str, ContactPeak]:
+        """Every contact's peak force [N] and its time [s], impacts and dissipated energy
+        [J], by contact label (``"B1F3-B2F3"``); a contact that never closed has force 0
+        and time NaN."""
+        return {c.label: ContactPeak(float(self.peak_contact_force[c.index]),
+                                     float(self.peak_contact_force_time[c.index]),
+                                     int(self.impacts_per_contact[c.index]),
+                                     float(self.dissipated_per_contact[c.index]))
+                for c in self.model.contacts}
+
+    @cached_property
     def peak_contact_force_time(self) -> NDArray[np.float64]:
         """Time of every contact's peak force [s] (n_c,); NaN for a contact that never
         closed."""
@@ -592,6 +603,19 @@ class Result:
         from pounding.outputs import save_result
 
         return save_result(self, folder)
+
+
+class ContactPeak(NamedTuple):
+    """One contact's peak (:attr:`Result.contact_peaks`)."""
+
+    force: float
+    """Largest contact force [N], located inside solver steps."""
+    time: float
+    """When it occurred [s] (NaN if the contact never closed)."""
+    impacts: int
+    """Number of impacts."""
+    dissipated: float
+    """Energy dissipated by its finished impacts [J]."""
 
 
 class Variable(NamedTuple):
