@@ -78,7 +78,8 @@ def our_model(sdofs: list[osi.YieldingSdof], gap: float | None) -> Any:
     blds = [ShearBuilding.sdof(s.mass, period=s.period, damping_ratio=s.zeta,
                                name=("left", "right")[i]).with_storey_law(our_law(s))
             for i, s in enumerate(sdofs)]
-    contact = ContactSpec("kelvin-voigt", k=K_KV, e=E_RESTITUTION, tension=True)
+    contact = ContactSpec("kelvin-voigt", k=K_KV, e=E_RESTITUTION, formula="anagnostopoulos",
+                          tension=True)  # as OpenSees ViscoelasticGap
     return PoundingModel(blds, [gap] if gap is not None else [], contact)
 
 
