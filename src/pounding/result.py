@@ -501,100 +501,11 @@ class Result:
                           attrs=dict(hv.attrs))
 
     def summary(self) -> dict[str, Any]:
-        """Headline numbers (JSON-ready), each key naming its unit.
+        """Headline numbers (JSON-ready), each key naming its unit
+        (:func:`pounding.summary.summarize`)."""
+        from pounding.summary import summarize
 
-        Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3; the drift and
-        shear of a floor are those of the storey below it) and located inside solver steps,
-        each with its time (``…_time_s``). ``buildings`` repeats them building by building,
-        storey by storey, with the building's natural periods — the table an engineer reads
-        first.
-        """
-        pcf = self.peak_contact_force
-        labels = self.model.dof_labels()
-        contacts = self.model.contacts
-
-        def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
-            return {lb: float(v) for lb, v in zip(labels, values)}
-
-        return {
-            "model": self.model.name,
-            "record": self.motion.name,
-            "record_pga_g": self.motion.pga_g,
-            "duration_s": float(self.time[-1]),
-            "output_step_s": self.dt,
-            "n_impacts": self.n_impacts,
-            "peak_contact_force_N": float(pcf.max()) if pcf.size else 0.0,
-            "peak_contact_force_time_s": (float(self.peak_contact_force_time[int(np.argmax(pcf))])
-                                          if pcf.size and pcf.max() > 0 else None),
-            "peak_contact_force_by_contact_N": {c.label: float(f) for c, f in zip(contacts, pcf)},
-            "peak_contact_force_time_by_contact_s": {
-                c.label: float(t) for c, t in zip(contacts, self.peak_contact_force_time)},
-            "impacts_by_contact": {c.label: int(k) for c, k in
-                                   zip(contacts, self.impacts_per_contact)},
-            "peak_displacement_m": by_floor(self.peak_displacement),
-            "peak_displacement_time_s": by_floor(self.peak_displacement_time),
-            "peak_drift_m": by_floor(self.peak_drift),
-            "peak_drift_time_s": by_floor(self.peak_drift_time),
-            "peak_drift_ratio": by_floor(self.peak_drift_ratio),
-            "peak_storey_shear_N": by_floor(self.peak_storey_shear),
-            "peak_storey_shear_time_s": by_floor(self.peak_storey_shear_time),
-            "peak_abs_acceleration_m_s2": by_floor(self.peak_abs_acceleration),
-            "peak_abs_acceleration_time_s": by_floor(self.peak_abs_acceleration_time),
-            "buildings": self._building_summary(),
-            "energy_final_J": {name: float(v) for name, v in zip(ENERGY_NAMES, self.energy[-1])},
-            "contact_dissipated_J": float(self.contact_dissipated[-1]),
-            "energy_balance_error": self.energy_balance_error,
-            **self._inelastic_summary(),
-            "solver": {"name": self.stats.solver, "rtol": self.stats.rtol, "rk_steps": self.stats.rk_steps,
-                       "rejected": self.stats.rejected, "events": self.stats.events,
-                       "impact_table_overflow": self.stats.impact_overflow,
-                       "wall_time_s": self.stats.wall_time,
-                       "peaks": ("located inside solver steps" if self.located_peaks is not None
-                                 else "read at the output steps")},
-        }
-
-    def _building_summary(self) -> list[dict[str, Any]]:
-        """Per building: its natural periods and, storey by storey, the peaks and times."""
-        out = []
-        quantities = (("peak_displacement_m", self.peak_displacement),
-                      ("peak_displacement_time_s", self.peak_displacement_time),
-                      ("peak_drift_m", self.peak_drift),
-                      ("peak_drift_time_s", self.peak_drift_time),
-                      ("peak_drift_ratio", self.peak_drift_ratio),
-                      ("peak_storey_shear_N", self.peak_storey_shear),
-                      ("peak_storey_shear_time_s", self.peak_storey_shear_time),
-                      ("peak_abs_acceleration_m_s2", self.peak_abs_acceleration),
-                      ("peak_abs_acceleration_time_s", self.peak_abs_acceleration_time))
-        for b, (bl, off) in enumerate(zip(self.model.buildings, self.model.system.offsets)):
-            storeys = []
-            for j in range(bl.n):
-                row: dict[str, Any] = {"storey": j + 1,
-                                       "floor_elevation_m": float(bl.floor_levels[j]),
-                                       "height_m": float(bl.heights[j])}
-                row.update({key: float(v[off + j]) for key, v in quantities})
-                storeys.append(row)
-            out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": bl.n,
-                        "periods_s": [float(t) for t in bl.modes().periods],
-                        "storeys": storeys})
-        return out
-
-    def _inelastic_summary(self) -> dict[str, Any]:
-        out: dict[str, Any] = {}
-        labels = self.model.dof_labels()
-        if self.model.is_inelastic:
-            out["hysteretic_energy_J"] = float(self.energy[-1, 6])
-            out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, self.ductility)
-                                       if np.isfinite(v)}
-            out["residual_drift_m"] = {lb: float(v) for lb, v in
-                                       zip(labels, self.residual_drift)}
-        struck = [c for c in self.model.contacts if c.struck is not None]
-        if struck:
-            pcs = self.peak_column_shear
-            out["peak_column_shear_N"] = {c.label: float(pcs[c.index]) for c in struck}
-            ratio = self.column_shear_ratio
-            out["column_shear_over_storey_shear"] = {c.label: float(ratio[c.index])
-                                                     for c in struck}
-        return out
+        return summarize(self)
 
     def save(self, folder: str | os.PathLike[str]) -> dict[str, Path]:
         """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``

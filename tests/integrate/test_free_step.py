@@ -107,7 +107,8 @@ def test_band_storage_reproduces_the_matrix():
 
 def test_record_grid_is_remembered_read_only():
     from pounding.ground_motion import GroundMotion
-    from pounding.integrate import _ground_on_grid_memo, ground_on_grid
+    from pounding.integrate.grid import ground_on_grid
+    from pounding.integrate.grid import ground_on_grid_memo as _ground_on_grid_memo
 
     gm = GroundMotion(0.01, np.sin(np.arange(50) * 0.3), name="memo")
     a = _ground_on_grid_memo(gm, 0.005, 0.3)
@@ -120,7 +121,8 @@ def test_record_grid_is_remembered_read_only():
 def test_kernel_model_is_assembled_once_per_model_and_forgotten_with_it():
     import gc
 
-    from pounding.integrate import _KERNEL_MODELS, band_storage, kernel_model
+    from pounding.integrate import band_storage, kernel_model
+    from pounding.integrate.kernel_model import _KERNEL_MODELS
 
     model = _pair()
     km = kernel_model(model)

@@ -1,0 +1,101 @@
+"""The output grid of a run: its step, the ground acceleration on it, and whether its
+histories fit in memory."""
+
+from __future__ import annotations
+
+import math
+import os
+import weakref
+
+import numpy as np
+
+from pounding.ground_motion import GroundMotion
+from pounding.integrate.layout import ENERGY_COLUMNS
+from pounding.model import PoundingModel
+from pounding.validation import positive
+
+DEFAULT_OUTPUT_STEP: float = 1e-3
+"""Default largest output (grid) step [s]."""
+
+
+HISTORY_MEMORY_FRACTION: float = 0.5
+"""A run whose histories would take more than this fraction of the machine's memory is
+refused before anything is allocated."""
+
+
+def history_bytes(model: PoundingModel, nt: int) -> int:
+    """Bytes of the histories a run of ``nt`` output times writes: displacement, velocity,
+    acceleration of every floor, penetration and force of every contact, shear of every
+    yielding storey, seven energies and the ground acceleration, 8 bytes each."""
+    n, nc = model.n_dof, len(model.contacts)
+    ns = len(model.yielding_storeys)
+    return 8 * nt * (3 * n + 2 * nc + ns + ENERGY_COLUMNS + 1)
+
+
+def physical_memory() -> int:
+    """This machine's physical memory [bytes] (8 GiB if the system does not say)."""
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (ValueError, OSError, AttributeError):
+        return 8 * 2**30
+
+
+def check_history_size(model: PoundingModel, t_end: float, step: float) -> None:
+    """Refuse, before allocating, a run whose histories would not fit in memory
+    (:data:`HISTORY_MEMORY_FRACTION` of it): one line naming the output step and duration
+    and what it would take."""
+    nt = t_end / step + 1.0
+    need = 8.0 * nt * (history_bytes(model, 1) / 8.0)
+    have = physical_memory()
+    if need > HISTORY_MEMORY_FRACTION * have:
+        raise ValueError(
+            f"solver: {t_end:g} s at an output step of {step:g} s is {nt:.3g} output times; "
+            f"the histories would take {need / 2**30:.3g} GiB (this machine has "
+            f"{have / 2**30:.3g} GiB): use a larger dt (the accuracy does not depend on it) "
+            "or a shorter duration")
+
+
+def grid_step(record_dt: float, dt: float | None = None) -> float:
+    """The grid step actually used: the largest ``record_dt / m`` (m integer) ≤ ``dt``.
+
+    The ground acceleration is then exactly linear on every grid step, which the exact
+    propagator between impacts requires.
+    """
+    want = DEFAULT_OUTPUT_STEP if dt is None else positive("dt", dt)
+    m = max(1, math.ceil(record_dt / want - 1e-9))
+    return record_dt / m
+
+
+def ground_on_grid(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
+    """Ground acceleration [m/s²] at ``k·dt`` for k = 0 … ⌈t_end/dt⌉.
+
+    The record is linear between its samples; after its last sample it returns linearly to
+    zero over one record step and stays there — a rule that does not depend on ``dt``.
+    """
+    nt = int(math.ceil(t_end / dt - 1e-9)) + 1
+    if nt < 2:
+        raise ValueError(f"duration: {t_end:g} s is shorter than one output step ({dt:g} s)")
+    t = np.arange(nt) * dt
+    t_rec = np.append(motion.time, motion.time[-1] + motion.dt)
+    a_rec = np.append(motion.accel, 0.0)
+    return np.interp(t, t_rec, a_rec, right=0.0)
+
+
+_GRID_MEMO: "weakref.WeakKeyDictionary[GroundMotion, dict[tuple[float, float], np.ndarray]]" = (
+    weakref.WeakKeyDictionary())
+
+
+def ground_on_grid_memo(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
+    """:func:`ground_on_grid`, remembered per record (records are read-only) for a few
+    (step, duration) pairs: repeated runs and sweeps on one record interpolate it once.
+    The array is read-only."""
+    per = _GRID_MEMO.setdefault(motion, {})
+    key = (float(dt), float(t_end))
+    ag = per.get(key)
+    if ag is None:
+        ag = ground_on_grid(motion, dt, t_end)
+        ag.setflags(write=False)
+        if len(per) >= 8:
+            per.clear()
+        per[key] = ag
+    return ag

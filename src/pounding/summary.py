@@ -1,0 +1,114 @@
+"""The headline numbers of a run (``summary.json`` and the printed summary), each key naming
+its unit: impacts, peak contact forces, every floor's and storey's peaks with their times,
+each building's periods, energies, and the solver's statistics."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from pounding.result import ENERGY_NAMES
+
+if TYPE_CHECKING:
+    from pounding.result import Result
+
+__all__ = ["building_summary", "inelastic_summary", "summarize"]
+
+
+def summarize(r: Result) -> dict[str, Any]:
+    """Headline numbers (JSON-ready), each key naming its unit.
+
+    Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3; the drift and
+    shear of a floor are those of the storey below it) and located inside solver steps,
+    each with its time (``…_time_s``). ``buildings`` repeats them building by building,
+    storey by storey, with the building's natural periods — the table an engineer reads
+    first.
+    """
+    pcf = r.peak_contact_force
+    labels = r.model.dof_labels()
+    contacts = r.model.contacts
+
+    def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
+        return {lb: float(v) for lb, v in zip(labels, values)}
+
+    return {
+        "model": r.model.name,
+        "record": r.motion.name,
+        "record_pga_g": r.motion.pga_g,
+        "duration_s": float(r.time[-1]),
+        "output_step_s": r.dt,
+        "n_impacts": r.n_impacts,
+        "peak_contact_force_N": float(pcf.max()) if pcf.size else 0.0,
+        "peak_contact_force_time_s": (float(r.peak_contact_force_time[int(np.argmax(pcf))])
+                                      if pcf.size and pcf.max() > 0 else None),
+        "peak_contact_force_by_contact_N": {c.label: float(f) for c, f in zip(contacts, pcf)},
+        "peak_contact_force_time_by_contact_s": {
+            c.label: float(t) for c, t in zip(contacts, r.peak_contact_force_time)},
+        "impacts_by_contact": {c.label: int(k) for c, k in
+                               zip(contacts, r.impacts_per_contact)},
+        "peak_displacement_m": by_floor(r.peak_displacement),
+        "peak_displacement_time_s": by_floor(r.peak_displacement_time),
+        "peak_drift_m": by_floor(r.peak_drift),
+        "peak_drift_time_s": by_floor(r.peak_drift_time),
+        "peak_drift_ratio": by_floor(r.peak_drift_ratio),
+        "peak_storey_shear_N": by_floor(r.peak_storey_shear),
+        "peak_storey_shear_time_s": by_floor(r.peak_storey_shear_time),
+        "peak_abs_acceleration_m_s2": by_floor(r.peak_abs_acceleration),
+        "peak_abs_acceleration_time_s": by_floor(r.peak_abs_acceleration_time),
+        "buildings": building_summary(r),
+        "energy_final_J": {name: float(v) for name, v in zip(ENERGY_NAMES, r.energy[-1])},
+        "contact_dissipated_J": float(r.contact_dissipated[-1]),
+        "energy_balance_error": r.energy_balance_error,
+        **inelastic_summary(r),
+        "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
+                   "rejected": r.stats.rejected, "events": r.stats.events,
+                   "impact_table_overflow": r.stats.impact_overflow,
+                   "wall_time_s": r.stats.wall_time,
+                   "peaks": ("located inside solver steps" if r.located_peaks is not None
+                             else "read at the output steps")},
+    }
+
+def building_summary(r: Result) -> list[dict[str, Any]]:
+    """Per building: its natural periods and, storey by storey, the peaks and times."""
+    out = []
+    quantities = (("peak_displacement_m", r.peak_displacement),
+                  ("peak_displacement_time_s", r.peak_displacement_time),
+                  ("peak_drift_m", r.peak_drift),
+                  ("peak_drift_time_s", r.peak_drift_time),
+                  ("peak_drift_ratio", r.peak_drift_ratio),
+                  ("peak_storey_shear_N", r.peak_storey_shear),
+                  ("peak_storey_shear_time_s", r.peak_storey_shear_time),
+                  ("peak_abs_acceleration_m_s2", r.peak_abs_acceleration),
+                  ("peak_abs_acceleration_time_s", r.peak_abs_acceleration_time))
+    for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
+        storeys = []
+        for j in range(bl.n):
+            row: dict[str, Any] = {"storey": j + 1,
+                                   "floor_elevation_m": float(bl.floor_levels[j]),
+                                   "height_m": float(bl.heights[j])}
+            row.update({key: float(v[off + j]) for key, v in quantities})
+            storeys.append(row)
+        out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": bl.n,
+                    "periods_s": [float(t) for t in bl.modes().periods],
+                    "storeys": storeys})
+    return out
+
+def inelastic_summary(r: Result) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    labels = r.model.dof_labels()
+    if r.model.is_inelastic:
+        out["hysteretic_energy_J"] = float(r.energy[-1, 6])
+        out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
+                                   if np.isfinite(v)}
+        out["residual_drift_m"] = {lb: float(v) for lb, v in
+                                   zip(labels, r.residual_drift)}
+    struck = [c for c in r.model.contacts if c.struck is not None]
+    if struck:
+        pcs = r.peak_column_shear
+        out["peak_column_shear_N"] = {c.label: float(pcs[c.index]) for c in struck}
+        ratio = r.column_shear_ratio
+        out["column_shear_over_storey_shear"] = {c.label: float(ratio[c.index])
+                                                 for c in struck}
+    return out
