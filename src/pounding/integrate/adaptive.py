@@ -44,6 +44,7 @@ from pounding.integrate.layout import (
     I_ONSET_C,
     I_STEP_BUDGET,
     P_CONTACT,
+    PK_A,
     P_DAMP,
     P_INPUT,
     P_STOREY,
@@ -79,8 +80,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                  arel0, jk, jk1, aabs0, aabs1, gd, gr):
     """Grid steps from k with adaptive RK steps and events, writing the outputs of each,
     while a contact is closed (or to ``k1`` if not ``exact_free``). At entry ``kx`` (row 0)
-    holds f(x) at ``ag[k]`` and ``jk`` the jerk; on return x, ``kx``, ``arel0``, ``jk``,
-    ``gd`` and ``gr`` are those of the grid point reached.
+    holds f(x) at ``ag[k]``; on return x, ``kx``, ``arel0``, ``gd`` and ``gr`` are those of
+    the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why). One call for a whole contact episode: a call passes some sixty arrays.
@@ -216,10 +217,21 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             # peaks over the step, from both ends (the states of its start still committed)
             for i in range(n):
                 aabs1[i] = ks[6, n + i] + r[i] * a_now
-            jerk(y1, ks[6], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
-                 committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk1)
+            # (the jerk at both ends only where an acceleration comes within half of its
+            # peak so far: an error-controlled step is a small fraction of the fastest
+            # period, so its interior cannot rise that far above its ends)
+            near = False
+            for i in range(n):
+                lim = 0.5 * pk[i, PK_A]
+                if abs(aabs0[i]) >= lim or abs(aabs1[i]) >= lim:
+                    near = True
+            if near:
+                jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
+                     committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
+                jerk(y1, ks[6], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
+                     committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk1)
             track_step(t_k + s, h_acc, n, below, x, kx[0, n:], aabs0, jk, y1, ks[6, n:], aabs1,
-                       jk1, pk)
+                       jk1, pk, near)
             for i in range(m):
                 x[i] = y1[i]
             if ns > 0:
@@ -239,20 +251,11 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                            px, 0)
                 for i in range(n):
                     aabs0[i] = kx[0, n + i] + r[i] * a_now
-                jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
-                     committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
             else:
                 for i in range(m):
                     kx[0, i] = ks[6, i]
                 for i in range(npw):
                     px[0, i] = ps[6, i]
-                if ns > 0:
-                    # the jerk with the storeys' newly committed states
-                    jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
-                         committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
-                else:
-                    for i in range(n):
-                        jk[i] = jk1[i]
                 for i in range(n):
                     aabs0[i] = aabs1[i]
             if was_event:

@@ -53,7 +53,6 @@ from pounding.integrate.rhs import (
     INLINE,
     deriv_call,
     gap_row,
-    jerk,
 )
 
 __all__ = ["ENERGY_COLUMNS", "IMP_COLUMNS", "PK_COLUMNS", "WS_F_SIZE", "WS_I_SIZE",
@@ -136,11 +135,9 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
     """
     n = r.shape[0]
     graze_tol = EVENT_TOL * atol[0]
-    # the state at grid point k0: f, every gap's δ and δ̇, the accelerations and jerks
+    # the state at grid point k0: f, every gap's δ and δ̇, the accelerations
     deriv_call(x, x, ag[k0], n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx, px, 0)
-    jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, committed,
-         s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
     _gaps_now(x, n, cdof, cw, cgap, gd, gr)
     for i in range(n):
         arel0[i] = kx[0, n + i]
@@ -158,8 +155,6 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
             deriv_call(x, x, ag[k], n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                        ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
                        lin, kx, px, 0)
-            jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
-                 committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
         # (else kx holds f at grid point k: the last stage of the grid step before, or
         # evaluated again after a contact opened or closed there)
         k = adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, mr, r,

@@ -81,11 +81,12 @@ def update_cubic(pk, i, col, t0, h, f0, d0, f1, d1):
 
 
 @njit(**INLINE)
-def track_step(t0, h, n, below, x0, arel0, aabs0, j0, x1, arel1, aabs1, j1, pk):
+def track_step(t0, h, n, below, x0, arel0, aabs0, j0, x1, arel1, aabs1, j1, pk, with_acc):
     """Update every floor's peaks over the step ``[t0, t0 + h]`` from the states ``x``
     (``[u, u̇, …]``), relative accelerations ``arel``, absolute accelerations ``aabs`` and
-    jerks ``j`` at its two ends. ``below[i]``: the DOF of the floor below floor i (−1:
-    the ground). Inlined: the sign tests are all most steps cost."""
+    (if ``with_acc``: the accelerations are searched too) jerks ``j`` at its two ends.
+    ``below[i]``: the DOF of the floor below floor i (−1: the ground). Inlined: the sign
+    tests are all most steps cost."""
     for i in range(n):
         lo = below[i]
         v0 = x0[n + i]
@@ -100,7 +101,7 @@ def track_step(t0, h, n, below, x0, arel0, aabs0, j0, x1, arel1, aabs1, j1, pk):
                                x1[i] - x1[lo], dr1, arel1[i] - arel1[lo])
             else:
                 update_quintic(pk, i, PK_D, t0, h, x0[i], v0, arel0[i], x1[i], v1, arel1[i])
-        if (j0[i] > 0.0) != (j1[i] > 0.0):
+        if with_acc and (j0[i] > 0.0) != (j1[i] > 0.0):
             update_cubic(pk, i, PK_A, t0, h, aabs0[i], j0[i], aabs1[i], j1[i])
 
 
