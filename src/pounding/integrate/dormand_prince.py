@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.integrate.rhs import NRT_FREE, deriv
+from pounding.integrate.rhs import INLINE, NRT_FREE, deriv
 
 # Dormand–Prince 5(4) tableau
 C2, C3, C4, C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
@@ -58,12 +58,30 @@ def rk_step(y0, k1, p1, h, ag0, dag, s0, ag_end, n, bw, k_band, c_band, m_inv, m
     # there; one call site of the right-hand side, so that it is compiled into the step
     # once, not six times (docs/engine.md, "Compiled once")
     for st in range(1, 7):
+        # the stage's point y0 + h Σ a_sq k_q, written out for each stage (a branch a stage,
+        # always taken the same way, costs less than a loop over the tableau)
+        if st == 1:
+            for i in range(m):
+                ytmp[i] = y0[i] + h * (A21 * ks[0, i])
+        elif st == 2:
+            for i in range(m):
+                ytmp[i] = y0[i] + h * (A31 * ks[0, i] + A32 * ks[1, i])
+        elif st == 3:
+            for i in range(m):
+                ytmp[i] = y0[i] + h * (A41 * ks[0, i] + A42 * ks[1, i] + A43 * ks[2, i])
+        elif st == 4:
+            for i in range(m):
+                ytmp[i] = y0[i] + h * (A51 * ks[0, i] + A52 * ks[1, i] + A53 * ks[2, i]
+                                       + A54 * ks[3, i])
+        elif st == 5:
+            for i in range(m):
+                ytmp[i] = y0[i] + h * (A61 * ks[0, i] + A62 * ks[1, i] + A63 * ks[2, i]
+                                       + A64 * ks[3, i] + A65 * ks[4, i])
+        else:
+            for i in range(m):
+                y1[i] = y0[i] + h * (B1 * ks[0, i] + B3 * ks[2, i] + B4 * ks[3, i]
+                                     + B5 * ks[4, i] + B6 * ks[5, i])
         yt = y1 if st == 6 else ytmp
-        for i in range(m):
-            acc = DP_A[st, 0] * ks[0, i]
-            for q in range(1, st):
-                acc += DP_A[st, q] * ks[q, i]
-            yt[i] = y0[i] + h * acc
         ag_st = ag_end if st >= 5 else ag0 + dag * (s0 + DP_C[st] * h)
         deriv(yt, y0, ag_st, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
               cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, st)
@@ -76,7 +94,7 @@ def rk_step(y0, k1, p1, h, ag0, dag, s0, ag_end, n, bw, k_band, c_band, m_inv, m
     return np.sqrt(err / m)
 
 
-@njit(**NRT_FREE)
+@njit(**INLINE)
 def weighted_sum(ps, q, h):
     """``h Σ b_i ps[i, q]``: the integral over an accepted step of power column q."""
     return h * (B1 * ps[0, q] + B3 * ps[2, q] + B4 * ps[3, q] + B5 * ps[4, q] + B6 * ps[5, q])

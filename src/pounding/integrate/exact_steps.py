@@ -22,8 +22,6 @@ from numba import njit
 from pounding.integrate.events import touch_possible
 from pounding.integrate.layout import (
     PK_A,
-    PK_D,
-    PK_U,
     E_CONTACT_STORED,
     E_CONTACT_WORK,
     E_DAMPING,
@@ -36,12 +34,7 @@ from pounding.integrate.layout import (
     W_E_STOREY,
     W_PEAK_MARGIN,
 )
-from pounding.integrate.peaks import (
-    acc_peak_between,
-    track_exact_step,
-    update_cubic,
-    update_quintic,
-)
+from pounding.integrate.peaks import acc_peak_between, track_exact_step, track_uncoupled_step
 from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row
 
 
@@ -167,10 +160,12 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
         e_in += e_step
         # outputs at grid point k + 1: no contact force, no yielding storey, so the absolute
         # acceleration is ü + r a_g = −M⁻¹(K u + C u̇); and the peaks over the step: a
-        # floor's step is examined only where a rate (velocity, drift rate, jerk) changes
-        # sign (pounding.integrate.peaks), the jerk being −M⁻¹(K u̇ + C ü)
+        # floor's step is examined only where its velocity or drift rate changes sign, or
+        # its acceleration comes within the margin of its peak so far
+        # (pounding.integrate.peaks), the jerk being −M⁻¹(K u̇ + C ü)
         o = k + 1
         t0 = k * dt
+        keep = 1.0 - ws_f[W_PEAK_MARGIN]
         ek = 0.0
         es = 0.0
         if bw == 0:
@@ -194,16 +189,13 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                 es += 0.5 * u * ku
                 x[i] = u
                 x[n + i] = v
-                ar = aa - r[i] * a1
-                j1 = -(kk * v + cc * ar) * mi
-                aa0 = acc_out[k, i]
-                ar0 = aa0 - r[i] * a0
-                j0 = -(kk * v0 + cc * ar0) * mi
-                if (v0 > 0.0) != (v > 0.0):
-                    update_quintic(pk, i, PK_U, t0, dt, u0, v0, ar0, u, v, ar)
-                    update_quintic(pk, i, PK_D, t0, dt, u0, v0, ar0, u, v, ar)
-                if (j0 > 0.0) != (j1 > 0.0):
-                    update_cubic(pk, i, PK_A, t0, dt, aa0, j0, aa, j1)
+                # peaks: where the velocity changes sign (displacement = drift of a one-storey
+                # building), or an end's acceleration comes within the margin of the peak
+                # so far (nothing between two samples further below can beat it)
+                lim = keep * pk[i, PK_A]
+                if ((v0 > 0.0) != (v > 0.0)) | (abs(aa) >= lim) | (abs(acc_out[k, i]) >= lim):
+                    track_uncoupled_step(t0, dt, i, u0, v0, acc_out[k, i], u, v, aa, a0, a1,
+                                         r[i], kk, cc, mi, pk)
         else:
             band_mv(k_band, c_band, x1, n, bw, lin)
             for i in range(n):
@@ -222,7 +214,6 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
             # banded product). The tests first, in a loop without calls or branches; the
             # rare floors they flag after.
             km1 = k - 1 if k >= 1 else 0
-            keep = 1.0 - ws_f[W_PEAK_MARGIN]
             anyhit = 0.0
             for i in range(n):
                 v0 = x[n + i]

@@ -129,6 +129,23 @@ def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, aabs1, pk):
 
 
 @njit(**NRT_FREE)
+def track_uncoupled_step(t0, h, i, u0, v0, aa0, u1, v1, aa1, a0, a1, ri, k, c, m_inv, pk):
+    """The peaks of floor i, a one-storey building of stiffness k and damping c, over an
+    exact step from ``t0`` (called where a test of :func:`pounding.integrate.exact_steps.
+    free_run` found one may lie): its relative accelerations and jerks ``−(k u̇ + c ü)/m``
+    at both ends, then the quintic for displacement and drift (the same here) and the
+    cubic for the absolute acceleration."""
+    ar0 = aa0 - ri * a0
+    ar1 = aa1 - ri * a1
+    if (v0 > 0.0) != (v1 > 0.0):
+        update_quintic(pk, i, PK_U, t0, h, u0, v0, ar0, u1, v1, ar1)
+        update_quintic(pk, i, PK_D, t0, h, u0, v0, ar0, u1, v1, ar1)
+    j0 = -(k * v0 + c * ar0) * m_inv
+    j1 = -(k * v1 + c * ar1) * m_inv
+    update_cubic(pk, i, PK_A, t0, h, aa0, j0, aa1, j1)
+
+
+@njit(**NRT_FREE)
 def track_exact_step(t0, h, n, i, k, k_entry, below, x0, x1, a0, a1, ag, r, v_out, acc_out,
                      bw, k_band, c_band, m_inv, pk):
     """The peaks of floor i over the exact step from grid point k (time ``t0``) to k + 1,
