@@ -5,6 +5,7 @@ depend on the output step; runs that cannot be integrated end at once with one l
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -78,10 +79,12 @@ def test_located_peaks_match_the_reference_at_any_output_step(name, dt, el_centr
                   & ((imp["peak_force_time"] <= imp["end"]) | imp["end"].isna()))
 
 
-def test_sampled_peaks_are_what_the_located_ones_improve_on(el_centro_4s, references):
+def test_sampled_peaks_are_what_the_located_ones_improve_on(el_centro_4s):
     # at a 10 ms output step the samples miss the peaks by far more than the tolerance above
-    ref = references["sdof-kv"]
-    res = simulate(sdof_pair(KV), el_centro_4s, dt=0.01)
+    # (Kelvin–Voigt with tension: its force, and so the acceleration, jumps at the impacts)
+    model = sdof_pair(replace(KV, tension=True))
+    ref = simulate_reference(model, el_centro_4s)
+    res = simulate(model, el_centro_4s, dt=0.01)
     sampled = np.abs(res.abs_acceleration).max(axis=0)
     assert np.max(np.abs(sampled / ref.peak_abs_acceleration - 1.0)) > 1e-3
     sampled_u = np.abs(res.displacement).max(axis=0)

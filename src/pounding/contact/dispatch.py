@@ -68,6 +68,23 @@ def has_linear_spring(code):
             or code == BILINEAR_IMPACT)
 
 
+@njit(cache=True, inline="always")
+def law_releases(code, p0, p1, p2):
+    """True for a law whose force returns to zero *before* δ = 0 and is clipped there:
+    Kelvin–Voigt without tension and with a dashpot (params ``[k, c, 0]``)."""
+    return code == KELVIN_VOIGT and p2 == 0.0 and p1 > 0.0
+
+
+@njit(cache=True, inline="always")
+def release_value(p0, p1, delta, rate):
+    """The unclipped force ``k δ + c δ̇`` of a releasing law (:func:`law_releases`): it
+    crosses zero downward where the clipped force leaves the bodies with the spring still
+    compressed (Schwager & Pöschel 2007, Granular Matter 9:465–469), upward where a
+    released contact engages again before δ = 0. The time-history kernel locates both as
+    events, so no step integrates across the clip's kink."""
+    return p0 * delta + p1 * rate
+
+
 @njit(cache=True)
 def contact_trial(code, params, delta, rate, committed, out):
     """Array form of :func:`law_trial`: reads ``committed`` (STATE_SIZE), writes the trial

@@ -19,7 +19,13 @@ from pounding.contact.base import V0
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.commit import commit_contacts, commit_storeys
 from pounding.integrate.dormand_prince import rk_step, weighted_sum
-from pounding.integrate.events import event_tolerance, event_value, find_event, locate
+from pounding.integrate.events import (
+    event_tolerance,
+    event_value,
+    find_event,
+    is_upward,
+    locate,
+)
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
     E_CONTACT_WORK,
@@ -32,7 +38,6 @@ from pounding.integrate.layout import (
     EV_DRIFT_MIN,
     EV_GRAZE,
     EV_ONSET,
-    EV_RELOADING,
     EV_SEPARATION,
     FAIL_BUDGET,
     FAIL_UNDERFLOW,
@@ -134,15 +139,16 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             for c in range(nc):
                 if last_f[c, LF_GRAZED] != 0.0 and gap_row(c, x, n, cdof, cw)[1] < 0.0:
                     last_f[c, LF_GRAZED] = 0.0
-            te, ce, kind = find_event(x, kx, y1, ks, h, n, cdof, cw, cgap, committed, s_lo, s_hi,
-                                      -1, 0, graze_tol, last_f[:, LF_GRAZED])
+            te, ce, kind = find_event(x, kx, y1, ks, h, n, cdof, cw, cgap, ccode, cparams,
+                                      committed, s_lo, s_hi, -1, 0, graze_tol,
+                                      last_f[:, LF_GRAZED])
             ev_c = -1
             ev_kind = 0
             while ce >= 0:
                 # locate on real RK steps by the Illinois method, keeping the 'after' side
-                g_lo = event_value(kind, ce, x, n, cdof, cw, cgap, s_lo, s_hi)
-                g_hi = event_value(kind, ce, y1, n, cdof, cw, cgap, s_lo, s_hi)
-                upward = kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
+                g_lo = event_value(kind, ce, x, n, cdof, cw, cgap, cparams, s_lo, s_hi)
+                g_hi = event_value(kind, ce, y1, n, cdof, cw, cgap, cparams, s_lo, s_hi)
+                upward = is_upward(kind)
                 lo = 0.0
                 hi = h_acc
                 side_ok = (g_hi > 0.0) if upward else (g_hi <= 0.0)
@@ -156,7 +162,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                                   s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp,
                                   yb, atol, rtol)
                     ws_i[I_NSTEPS] += 1
-                    g_te = event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
+                    g_te = event_value(kind, ce, yb, n, cdof, cw, cgap, cparams, s_lo, s_hi)
                     if (g_te > 0.0) == upward and g_te != 0.0:
                         hi = te
                         g_hi = g_te
@@ -164,7 +170,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 if not found_hi:
                     break  # the interpolant's touch was not real
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
-                g_tol = event_tolerance(kind, ce, n, cdof, s_hi, atol)
+                g_tol = event_tolerance(kind, ce, n, cdof, cparams, s_hi, atol)
                 h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0,
                                     dag, s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                                     ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
@@ -191,9 +197,9 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 ev_kind = kind
                 last = False
                 # any other event earlier in this shorter step?
-                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, committed,
-                                          s_lo, s_hi, ev_c, ev_kind, graze_tol,
-                                          last_f[:, LF_GRAZED])
+                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, ccode,
+                                          cparams, committed, s_lo, s_hi, ev_c, ev_kind,
+                                          graze_tol, last_f[:, LF_GRAZED])
             if ev_kind == EV_GRAZE:
                 ev_c = -1  # nothing happened at the peak of a gap that stayed open
                 ev_kind = 0

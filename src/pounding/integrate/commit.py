@@ -3,7 +3,9 @@
 
 A law's state changes only here: at the end of an accepted adaptive step, and at a located
 event — contact onset (``v0`` committed at the located instant, contract step 3), separation
-(the impact's row closed: end time, restitution, dissipated energy), or an ordinary step
+(the impact's row closed: end time, restitution, dissipated energy), a clipped law's release
+(its impact's end and restitution; the force evaluated again on the new branch) or engaging
+again, or an ordinary step
 through a contact (the law's trial state committed; the largest force inside the step taken
 from the cubic Hermite of the force and its rate at the step's two ends, with its time).
 """
@@ -18,6 +20,8 @@ from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.events import hermite_max
 from pounding.integrate.layout import (
     EV_ONSET,
+    EV_REENGAGE,
+    EV_RELEASE,
     EV_SEPARATION,
     I_NEVENTS,
     I_NIMP,
@@ -53,8 +57,8 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
                     wc, w_start, imp_row, last_f, ws_i, imp, cpeak, cpeak_t, ccount):
     """Commit every contact's state at the end of an accepted step (state ``x``, ``dx =
     f(x)`` with the states of the step's start) at time ``t_now`` [s], handling the event
-    ``(ev_c, ev_kind)`` that ended the step, if any. Returns True if a contact opened or
-    closed (f must then be evaluated again)."""
+    ``(ev_c, ev_kind)`` that ended the step, if any. Returns True if a contact opened, closed,
+    or changed the branch of a clipped law (f must then be evaluated again)."""
     nc = cgap.shape[0]
     cap = imp.shape[0]
     state_changed = False
@@ -102,8 +106,9 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
                 # separation: close the impact's row, open the state
                 row = imp_row[c]
                 if row >= 0:
-                    imp[row, IMP_END] = t_now
-                    imp[row, IMP_E] = max(-rate, 0.0) / committed[c, V0]
+                    if np.isnan(imp[row, IMP_END]):  # (not already ended by a release)
+                        imp[row, IMP_END] = t_now
+                        imp[row, IMP_E] = max(-rate, 0.0) / committed[c, V0]
                     imp[row, IMP_ENERGY] = wc[c] - w_start[c]
                 imp_row[c] = -1
                 for q in range(STATE_SIZE):
@@ -145,4 +150,15 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
                 last_f[c, 2] = df1
                 if ev_c == c:
                     ws_i[I_NEVENTS] += 1
+                    if ev_kind == EV_RELEASE or ev_kind == EV_REENGAGE:
+                        # the clipped law changes branch here: f evaluated again on it.
+                        # Its impact ends where the force does (the bodies part with the
+                        # spring still compressed, as in the collision analysis), unless
+                        # it engages again before δ = 0
+                        state_changed = True
+                        if row >= 0:
+                            released = ev_kind == EV_RELEASE
+                            imp[row, IMP_END] = t_now if released else np.nan
+                            imp[row, IMP_E] = (max(-rate, 0.0) / committed[c, V0] if released
+                                               else np.nan)
     return state_changed

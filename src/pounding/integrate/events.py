@@ -17,6 +17,7 @@ import numpy as np
 from numba import njit
 
 from pounding.contact.base import V0
+from pounding.contact.dispatch import law_releases, release_value
 from pounding.integrate.dormand_prince import rk_step
 from pounding.integrate.layout import (
     EV_DRIFT_MAX,
@@ -24,6 +25,8 @@ from pounding.integrate.layout import (
     EV_GRAZE,
     EV_MAX_COMPRESSION,
     EV_ONSET,
+    EV_REENGAGE,
+    EV_RELEASE,
     EV_RELOADING,
     EV_SEPARATION,
     EVENT_TOL,
@@ -162,14 +165,17 @@ def quintic_max(f0, d0, q0, f1, d1, q1, h):
 
 
 @njit(**NRT_FREE)
-def event_value(kind, c, y, n, cdof, cw, cgap, s_lo, s_hi):
+def event_value(kind, c, y, n, cdof, cw, cgap, cparams, s_lo, s_hi):
     """Event function: δ of contact c (onset, separation), δ̇ (phase switches, the peak of
-    an open gap's penetration), or the drift rate of yielding storey c (drift reversals)."""
+    an open gap's penetration), the unclipped force of a releasing law (release, engaging
+    again), or the drift rate of yielding storey c (drift reversals)."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return drift_of(s_lo[c], s_hi[c], y, n)[1]
     d, v = gap_row(c, y, n, cdof, cw)
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
         return v
+    if kind == EV_RELEASE or kind == EV_REENGAGE:
+        return release_value(cparams[c, 0], cparams[c, 1], d - cgap[c], v)
     return d - cgap[c]
 
 
@@ -206,8 +212,8 @@ def touch_possible(d0, r0, q0, d1, r1, q1, h, tol):
 
 
 @njit(**NRT_FREE)
-def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, committed, s_lo, s_hi, skip_c,
-               skip_kind, graze_tol, grazed):
+def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi,
+               skip_c, skip_kind, graze_tol, grazed):
     """Earliest event in a step, from Hermite interpolants of every contact's δ and δ̇ and
     every yielding storey's drift rate (``k0``: row 0 is f(y0); ``k1``: row 6 is f(y1)).
 
@@ -215,8 +221,9 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, committed, s_lo, s_hi, skip
     compression (δ̇: + → −), 4 reloading (δ̇: − → +), 5 / 6 a yielding storey's drift rate
     turning negative / positive (the drift reverses), 7 an open gap peaking within
     ``graze_tol`` [m] of closing (its peak is then located on real steps, :func:`locate`;
-    skipped for a contact whose ``grazed`` flag is set: one already found not to touch);
-    (−1, −1, 0) if none.
+    skipped for a contact whose ``grazed`` flag is set: one already found not to touch),
+    8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
+    (released before δ = 0 / engaged again); (−1, −1, 0) if none.
     """
     best_t = 1e300
     best_c = -1
@@ -256,6 +263,17 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, committed, s_lo, s_hi, skip
                 t = rate_event(r0, acc0, r1, acc1, h, best_t)
                 if t >= 0.0:
                     best_t, best_c, best_k = t, c, kind
+            kc = cparams[c, 0]
+            cc = cparams[c, 1]
+            if law_releases(ccode[c], kc, cc, cparams[c, 2]):
+                g0 = release_value(kc, cc, d0, r0)
+                g1 = release_value(kc, cc, d1, r1)
+                kind = EV_RELEASE if g0 > 0.0 else EV_REENGAGE
+                if not (c == skip_c and skip_kind == kind):
+                    t = rate_event(g0, kc * r0 + cc * acc0, g1, kc * r1 + cc * acc1, h,
+                                   best_t)
+                    if t >= 0.0:
+                        best_t, best_c, best_k = t, c, kind
     for s in range(s_lo.shape[0]):
         r0 = drift_of(s_lo[s], s_hi[s], y0, n)[1]
         r1 = drift_of(s_lo[s], s_hi[s], y1, n)[1]
@@ -285,11 +303,11 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0, dag, s
 
     Leaves the step to the located instant in ``y1`` (stages in ``ks``, ``ps``) and returns
     ``(its length, its error norm)``. The 'after' side: g > 0 for events crossing upward
-    (onset, reloading, a drift minimum), g ≤ 0 otherwise.
+    (:func:`is_upward`), g ≤ 0 otherwise.
     """
     m = x.shape[0]
     npw = ps.shape[1]
-    upward = kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
+    upward = is_upward(kind)
     side = 0
     have_after = False
     err_after = 0.0
@@ -299,7 +317,7 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0, dag, s
                       s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp, yb, atol,
                       rtol)
         ws_i[I_NSTEPS] += 1
-        g = event_value(kind, ce, yb, n, cdof, cw, cgap, s_lo, s_hi)
+        g = event_value(kind, ce, yb, n, cdof, cw, cgap, cparams, s_lo, s_hi)
         after = (g > 0.0) if upward else (g <= 0.0)
         if after:
             hi = t_try
@@ -342,10 +360,21 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0, dag, s
 
 
 @njit(**NRT_FREE)
-def event_tolerance(kind, ce, n, cdof, s_hi, atol):
-    """Absolute tolerance of an event function: of a drift rate, a gap's rate, or a gap."""
+def is_upward(kind):
+    """Does the event function of ``kind`` cross zero upward (onset, reloading, a drift
+    minimum, a released contact engaging again)?"""
+    return (kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
+            or kind == EV_REENGAGE)
+
+
+@njit(**NRT_FREE)
+def event_tolerance(kind, ce, n, cdof, cparams, s_hi, atol):
+    """Absolute tolerance of an event function: of a drift rate, a gap's rate, a gap, or
+    an unclipped force ``k δ + c δ̇`` (from the tolerances of δ and δ̇)."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return atol[n + s_hi[ce]]
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
         return atol[n + cdof[ce, 0]]
+    if kind == EV_RELEASE or kind == EV_REENGAGE:
+        return cparams[ce, 0] * atol[cdof[ce, 0]] + cparams[ce, 1] * atol[n + cdof[ce, 0]]
     return atol[cdof[ce, 0]]

@@ -29,6 +29,11 @@ EV_DRIFT_MAX, EV_DRIFT_MIN = 5, 6
 EV_GRAZE = 7
 """An open gap whose penetration peaks within the event tolerance of zero inside a step:
 the peak is located on real steps to decide whether the gap closes there."""
+EV_RELEASE, EV_REENGAGE = 8, 9
+"""A closed contact whose law clips its force at zero (Kelvin–Voigt without tension,
+:func:`pounding.contact.dispatch.law_releases`): the unclipped force ``k δ + c δ̇`` turning
+negative (the bodies released with the spring still compressed) or positive again before
+δ = 0 (engaged again)."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
 W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN = range(6)

@@ -4,8 +4,8 @@ Used by the tests and benchmarks to hold the compiled kernel to account; never b
 production runs. It integrates the full first-order system ``[u, u̇, h, E_in, E_visc,
 W_storey, W_c]`` with ``DOP853`` at tight tolerance, one record interval at a time (the
 ground acceleration is linear on each), and stops at every located event — a gap closing
-or opening, the penetration rate changing sign inside a contact, a storey yielding or
-unloading — to commit the state there (contract steps 3–4) and restart. Peak forces are
+or opening, the penetration rate changing sign inside a contact, a clipped contact force
+returning to zero or rising from it, a storey yielding or unloading — to commit the state there (contract steps 3–4) and restart. Peak forces are
 found on the dense output of each segment and refined with a bounded scalar search.
 
 Yielding storeys are written here independently of :mod:`pounding.hysteresis` (which the
@@ -65,6 +65,10 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     committed = np.zeros((nc, STATE_SIZE))
     scratch = np.zeros(STATE_SIZE)
     phase = np.zeros(nc, dtype=int)  # +1 approaching, −1 restitution (closed contacts)
+    # laws clipped at F = 0 before δ = 0 (Kelvin–Voigt without tension): where the clip
+    # bites, an event; released[c] while the clipped force is zero
+    release = [c.law.release_function() for c in contacts]
+    released = np.zeros(nc, dtype=bool)
     storeys = _storeys(model)
     ns = len(storeys)
     yld = np.zeros(ns, dtype=int)  # bilinear: 0 elastic, ±1 on the yield branch
@@ -152,6 +156,13 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 evr.terminal = True
                 evr.tag = ("rate", c)
                 evs.append(evr)
+                if release[c] is not None:
+                    def evc(t, y, c=c):
+                        return release[c](*kin(y, c), committed[c, V0])
+                    evc.direction = 1.0 if released[c] else -1.0
+                    evc.terminal = True
+                    evc.tag = ("release", c)
+                    evs.append(evc)
         for s, st in enumerate(storeys):
             if st.kind == "bilinear" and yld[s] == 0:
                 for sign in (1.0, -1.0):
@@ -247,8 +258,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                     fs = np.array([-neg_f(s) for s in ts])
                     kmax = int(np.argmax(fs))
                     best, t_best = fs[kmax], ts[kmax]
-                    if 0 < kmax < len(ts) - 1:
-                        res = minimize_scalar(neg_f, bounds=(ts[kmax - 1], ts[kmax + 1]),
+                    if len(ts) > 1:
+                        res = minimize_scalar(neg_f, bounds=_around(ts, kmax),
                                               method="bounded", options={"xatol": 1e-12})
                         if -res.fun > best:
                             best, t_best = -res.fun, float(res.x)
@@ -271,6 +282,14 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 yld[tag[1]] = tag[2]
             elif tag[0] == "unload":
                 yld[tag[1]] = 0
+            elif tag[0] == "release":
+                # the clipped force reaches zero (the impact ends there: end time and
+                # restitution) or rises from it again (the impact goes on)
+                c = tag[1]
+                released[c] = not released[c]
+                row = impacts[open_row[c]]
+                row[2] = t if released[c] else np.nan
+                row[7] = max(-kin(y, c)[1], 0.0) / committed[c, V0] if released[c] else np.nan
             elif tag[0] == "gap" and committed[tag[1], V0] == 0.0:
                 c = tag[1]
                 d, rate = kin(y, c)
@@ -286,12 +305,14 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 c = tag[1]
                 d, rate = kin(y, c)
                 row = impacts[open_row[c]]
-                row[2] = t
-                row[7] = max(-rate, 0.0) / committed[c, V0]
+                if np.isnan(row[2]):  # (not already ended by a release)
+                    row[2] = t
+                    row[7] = max(-rate, 0.0) / committed[c, V0]
                 row[8] = y[i_e + 3 + c] - w_start[c]
                 open_row[c] = -1
                 committed[c] = 0.0
                 phase[c] = 0
+                released[c] = False
             else:
                 c = tag[1]
                 d, rate = kin(y, c)
@@ -357,6 +378,11 @@ def _floor_below(model: PoundingModel) -> list[int]:
     return out
 
 
+def _around(ts: NDArray[np.float64], k: int) -> tuple[float, float]:
+    """The samples either side of sample k, within the segment (a bracket for a search)."""
+    return float(ts[max(k - 1, 0)]), float(ts[min(k + 1, ts.size - 1)])
+
+
 def _update_peaks(peaks: NDArray[np.float64], dense, t0: float, t1: float, values) -> None:  # noqa: ANN001
     """Largest |u|, |drift|, |absolute acceleration| of every floor over ``[t0, t1]`` from
     the dense output ``dense``: 64 samples, then a bounded scalar search (to 10⁻¹² s) around
@@ -368,10 +394,11 @@ def _update_peaks(peaks: NDArray[np.float64], dense, t0: float, t1: float, value
             kmax = int(np.argmax(vals[q, i]))
             best, t_best = float(vals[q, i, kmax]), float(ts[kmax])
             # refine only where the samples come within 1 % of the peak so far (64 samples of
-            # a step under the record's sample interval miss a smooth peak by far less)
-            if 0 < kmax < ts.size - 1 and best >= 0.99 * peaks[i, 2 * q]:
+            # a step under the record's sample interval miss a smooth peak by far less); a
+            # largest sample at an end of the segment too (the peak may lie just inside it)
+            if t1 > t0 and best >= 0.99 * peaks[i, 2 * q]:
                 res = minimize_scalar(lambda s, q=q, i=i: -values(dense(np.array([s])))[q, i, 0],
-                                      bounds=(ts[kmax - 1], ts[kmax + 1]), method="bounded",
+                                      bounds=_around(ts, kmax), method="bounded",
                                       options={"xatol": 1e-12})
                 if -res.fun > best:
                     best, t_best = float(-res.fun), float(res.x)

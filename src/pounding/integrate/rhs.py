@@ -17,7 +17,13 @@ from __future__ import annotations
 from numba import njit
 
 from pounding.contact.base import V0
-from pounding.contact.dispatch import has_linear_spring, law_trial, stored_energy
+from pounding.contact.dispatch import (
+    has_linear_spring,
+    law_releases,
+    law_trial,
+    release_value,
+    stored_energy,
+)
 from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 from pounding.integrate.layout import DELTA_EPS, P_CONTACT, P_DAMP, P_INPUT, P_STOREY, RATE_SIDE
@@ -179,15 +185,26 @@ def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
             # so its limit there is already smooth (and its ∂F/∂δ, unbounded at δ = 0
             # while approaching, is not used). Where nothing is crossed this is the law.
             rate_law = rate
-            rate_start = gap_row(c, y_start, n, cdof, cw)[1]
+            dsum_start, rate_start = gap_row(c, y_start, n, cdof, cw)
             if (rate_start > 0.0) != (rate > 0.0):
                 rate_law = RATE_SIDE if rate_start > 0.0 else 0.0
-            f, kd, kr, _, _, _ = law_call(ccode[c], cparams[c, 0], cparams[c, 1],
-                                          cparams[c, 2], max(delta, DELTA_EPS), rate_law,
-                                          committed[c, V0], committed[c, 1], committed[c, 2])
-            f += kr * (rate - rate_law)
-            if delta < DELTA_EPS and has_linear_spring(ccode[c]):
-                f += kd * (delta - DELTA_EPS)
+            p2 = cparams[c, 2]
+            engaged = True
+            if law_releases(ccode[c], cparams[c, 0], cparams[c, 1], p2):
+                # a law clipped at F = 0 keeps the side of the clip the step began on: no
+                # force if released, else k δ + c δ̇ unclipped (as with tension, p2 = 1);
+                # the crossing is a located event (EV_RELEASE, EV_REENGAGE)
+                engaged = release_value(cparams[c, 0], cparams[c, 1],
+                                        dsum_start - cgap[c], rate_start) > 0.0
+                p2 = 1.0
+            if engaged:
+                f, kd, kr, _, _, _ = law_call(ccode[c], cparams[c, 0], cparams[c, 1], p2,
+                                              max(delta, DELTA_EPS), rate_law,
+                                              committed[c, V0], committed[c, 1],
+                                              committed[c, 2])
+                f += kr * (rate - rate_law)
+                if delta < DELTA_EPS and has_linear_spring(ccode[c]):
+                    f += kd * (delta - DELTA_EPS)
         power[row, P_CONTACT + c] = f * rate
         if f != 0.0:
             # the force pushes the left point left and the right point right, shared to
