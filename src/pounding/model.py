@@ -58,7 +58,8 @@ class ContactSpec:
     n : float
         Hertz exponent.
     tension : bool
-        Kelvin–Voigt only: may the dashpot pull before separation.
+        Kelvin–Voigt only: may the dashpot pull before separation (default no: the force is
+        clipped at zero, the physical choice; ``True`` as OpenSees' ``ViscoelasticGap``).
     delta_m : float, optional
         Bilinear element: assumed maximum penetration [m].
     a : float
@@ -74,13 +75,31 @@ class ContactSpec:
     zeta: float | None = None
     chi: float | None = None
     n: float = 1.5
-    tension: bool = True
+    tension: bool = False
     delta_m: float | None = None
     a: float = 0.1
 
     def __post_init__(self) -> None:
         # build once with unit masses so a bad spec fails here, naming its field
         self.build(1.0, 1.0)
+
+    def describe(self) -> str:
+        """One line for outputs: the law, the fields given (with units), the damping formula
+        ``e`` goes through, and for Kelvin–Voigt whether the dashpot may pull."""
+        from pounding.contact.factory import default_formula
+
+        units = {"k": " N/m", "k_h": " N/m^n", "c": " N·s/m", "delta_m": " m"}
+        formula = self.formula or default_formula(self.law, self.tension)
+        parts = []
+        for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m"):
+            value = getattr(self, name)
+            if value is not None:
+                via = f" via {formula}" if name == "e" and formula else ""
+                parts.append(f"{name} = {value:g}{units.get(name, '')}{via}")
+        if self.law == "kelvin-voigt":
+            parts.append("tension (pulls until δ = 0)" if self.tension
+                         else "no tension (clipped at zero)")
+        return f"{self.law}: {', '.join(parts)}" if parts else self.law
 
     def build(self, m1: float, m2: float) -> ContactLaw:
         """The contact law between two floors of masses ``m1`` and ``m2`` [kg]."""

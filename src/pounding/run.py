@@ -23,7 +23,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from typing import Any
 
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate

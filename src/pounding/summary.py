@@ -37,6 +37,7 @@ def summarize(r: Result) -> dict[str, Any]:
         "model": r.model.name,
         "record": r.motion.name,
         "record_pga_g": r.motion.pga_g,
+        "contact_law": r.model.contact.describe() if contacts else None,
         "duration_s": float(r.time[-1]),
         "output_step_s": r.dt,
         "n_impacts": r.n_impacts,

@@ -118,12 +118,13 @@ def test_calibrate_reaches_target(law, target):
 
 @pytest.mark.parametrize("target", [0.2, 0.6, 0.9])
 def test_kelvin_voigt_closed_form_is_anagnostopoulos_and_root_finding_agrees(target):
-    cal = calibrate(KelvinVoigt(K, 1.0), target, M1, M2, V0)
+    cal = calibrate(KelvinVoigt(K, 1.0, tension=True), target, M1, M2, V0)
     assert cal.method == "closed form"
     ln = math.log(target)
     c_hand = 2 * (-ln / math.sqrt(math.pi**2 + ln**2)) * math.sqrt(K * M_EFF)
     assert cal.value == pytest.approx(c_hand, rel=1e-12)
-    c_root = brentq(lambda c: simulate_collision(KelvinVoigt(K, c), M1, M2, V0).e - target,
+    c_root = brentq(lambda c: simulate_collision(KelvinVoigt(K, c, tension=True), M1, M2,
+                                                      V0).e - target,
                     0.8 * c_hand, 1.25 * c_hand, xtol=1e-9 * c_hand, rtol=1e-12)
     assert cal.value == pytest.approx(c_root, rel=1e-6)
 

@@ -155,7 +155,7 @@ def test_energy_dissipated_matches_restitution(law):
 @pytest.mark.parametrize("e", [0.3, 0.8])
 def test_energy_dissipated_kelvin_voigt_closed_form(e):
     c = 2 * zeta_anag(e) * math.sqrt(K * M_EFF)
-    r = simulate_collision(KelvinVoigt(K, c), M1, M2, V0)
+    r = simulate_collision(KelvinVoigt(K, c, tension=True), M1, M2, V0)
     assert r.energy_dissipated == pytest.approx(0.5 * M_EFF * V0**2 * (1 - e * e), rel=1e-8)
 
 
@@ -270,7 +270,7 @@ def test_reduced_coordinate_against_two_bodies_kelvin_voigt():
         return K * d + c * r
 
     e_ref, peak_ref = two_body(kv, 1.0e5, 7.0e5, V0)
-    r = simulate_collision(KelvinVoigt(K, c), 1.0e5, 7.0e5, V0)
+    r = simulate_collision(KelvinVoigt(K, c, tension=True), 1.0e5, 7.0e5, V0)
     assert r.e == pytest.approx(e_ref, rel=1e-6)
     assert r.peak_force == pytest.approx(peak_ref, rel=1e-6)
 
@@ -291,7 +291,7 @@ def test_rigid_wall(wall_first):
     e = 0.55
     zeta = zeta_anag(e)
     m = 3.0e5
-    law = KelvinVoigt(K, 2 * zeta * math.sqrt(K * m))
+    law = KelvinVoigt(K, 2 * zeta * math.sqrt(K * m), tension=True)
     m1, m2 = (np.inf, m) if wall_first else (m, np.inf)
     r = simulate_collision(law, m1, m2, V0)
     assert r.m_eff == m

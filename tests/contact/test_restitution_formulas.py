@@ -56,8 +56,21 @@ def hand_naderpour(e):
     return ((1 - e * e) / (e * (math.sqrt(math.pi) * (0.5 * e + 1 / math.pi) - e))) ** 2
 
 
+def hand_schwager_poschel(e):
+    """ζ of the clipped Kelvin–Voigt law by bisection on Schwager & Pöschel's (2007) e(ζ),
+    Granular Matter 9:465–469, eq 22 for ζ < 1 (enough for e ≥ exp(−2) ≈ 0.135)."""
+    def e_of(z):
+        return math.exp(-z * (math.pi - 2 * math.asin(z)) / math.sqrt(1 - z * z))
+    lo, hi = 0.0, 1.0 - 1e-15
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if e_of(mid) > e else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
 HAND = {
     "anagnostopoulos": hand_anagnostopoulos,
+    "schwager-poschel": hand_schwager_poschel,
     "jankowski": hand_jankowski,
     "mahmoud": hand_mahmoud,
     "naderpour": hand_naderpour,
@@ -190,7 +203,9 @@ def test_audit_columns_and_shape(audit):
     assert (audit.loc[stuck, "achieved_e"] == 0.0).all()
     assert (audit["energy_error"] < 1e-8).all()
     np.testing.assert_allclose(audit["error"], audit["achieved_e"] - audit["target_e"], atol=1e-15)
-    assert (audit["peak_force"] > 0).all() and (audit["duration"] > 0).all()
+    assert (audit["peak_force"] > 0).all()
+    # a contact duration only where the bodies part (stuck: NaN, not when integration stopped)
+    assert (audit.loc[~stuck, "duration"] > 0).all() and audit.loc[stuck, "duration"].isna().all()
 
 
 def test_audit_anagnostopoulos_with_tension_is_exact(audit):

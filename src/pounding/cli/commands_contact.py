@@ -13,7 +13,7 @@ from rich.text import Text
 
 from pounding.cli.app import app, console
 
-SHORT = {"anagnostopoulos": "ζ Anag.", "jankowski": "ζ Jank.(19)", "mahmoud": "ζ Mahm.(20)",
+SHORT = {"anagnostopoulos": "ζ Anag.", "schwager-poschel": "ζ S&P", "jankowski": "ζ Jank.(19)", "mahmoud": "ζ Mahm.(20)",
          "naderpour": "ζ eq 39", "hunt-crossley": "χ H-C", "lankarani-nikravesh": "χ L-N",
          "flores": "χ Flores", "gonthier": "χ Gonth."}
 """Column titles of `pounding zeta` (full names and sources: `pounding.contact.FORMULAS`)."""
@@ -40,7 +40,11 @@ Mass2 = Annotated[float, typer.Option(help="Mass of body 2 (kg).")]
 ImpactVelocity = Annotated[float, typer.Option(help="Impact velocity (m/s).")]
 HertzStiffness = Annotated[float, typer.Option("--k-h", help="Hertz stiffness (N/m^1.5).")]
 LinearStiffness = Annotated[float, typer.Option("--k", help="Linear stiffness (N/m).")]
-NoTension = Annotated[bool, typer.Option("--no-tension", help="Kelvin-Voigt: clip F >= 0.")]
+Tension = Annotated[bool, typer.Option(
+    "--tension/--no-tension",
+    help="Kelvin-Voigt: may the dashpot pull before separation (model-file key tension; "
+         "default no: the force is clipped at zero, as buildings cannot pull each other; "
+         "--tension is OpenSees' ViscoelasticGap).")]
 
 LawName = Annotated[str, typer.Argument(help="linear-spring, kelvin-voigt, modified-kelvin-voigt, "
                                         "hertz, hunt-crossley, hertzdamp, nonlinear-viscoelastic, "
@@ -75,7 +79,8 @@ def zeta_cmd(
     for x in values:
         printed = next((f"{v:.2f}" for k, v in table1.items() if abs(k - x) < 1e-12), "")
         table.add_row(f"{x:.3g}", printed, *(f"{float(f(x)):.4g}" for f in FORMULAS.values()))
-    table.caption = ("Anag. = Anagnostopoulos 1988; Jank. = Jankowski 2006 (seed eq 19); Mahm. = "
+    table.caption = ("Anag. = Anagnostopoulos 1988 (Kelvin-Voigt with tension); S&P = Schwager & "
+                     "Pöschel 2007 (Kelvin-Voigt without tension, the default); Jank. = Jankowski 2006 (seed eq 19); Mahm. = "
                      "Mahmoud & Jankowski 2011 (seed eq 20); eq 39 = Naderpour et al. 2015; H-C = "
                      "Hunt & Crossley 1975; L-N = Lankarani & Nikravesh 1990 (Hertzdamp); Flores = "
                      "Ye et al. 2009 / Flores et al. 2011; Gonth. = Gonthier et al. 2004")
@@ -155,7 +160,7 @@ def collide_cmd(
     v0: ImpactVelocity = 0.5,
     k_h: HertzStiffness = 2.75e9,
     k: LinearStiffness = 9.3e8,
-    no_tension: NoTension = False,
+    tension: Tension = False,
     delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the elastic Hertz value.")] = None,
 ) -> None:
     """Simulate one impact of two free masses and report what the law really does.
@@ -164,7 +169,7 @@ def collide_cmd(
 
       pounding collide nonlinear-viscoelastic --e 0.65
 
-      pounding collide kelvin-voigt --e 0.5 --m1 1e5 --m2 1e5
+      pounding collide kelvin-voigt --e 0.5 --m1 1e5 --m2 1e5 --tension
     """
     from pounding.contact.calibration import hertz_delta_max
     from pounding.contact.base import m_effective
@@ -174,14 +179,15 @@ def collide_cmd(
     if law.strip().lower() == "bilinear-impact" and delta_m is None:
         delta_m = hertz_delta_max(k_h, m_effective(m1, m2), v0)
     obj = make_law(law, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
-                   tension=not no_tension, delta_m=delta_m)
+                   tension=tension, delta_m=delta_m)
     r = simulate_collision(obj, m1, m2, v0)
     table = Table(title=obj.describe())
     _col(table, "quantity")
     _col(table, "value", justify="right")
     rows = [("target e", f"{e:.6g}" if e is not None else "-"),
-            ("achieved e", f"{r.e:.6f}" + ("" if r.separated else " (bodies stick)")),
-            ("contact duration [s]", f"{r.duration:.6e}"),
+            ("achieved e", f"{r.e:.6f}" if r.separated else "0 (stuck: the bodies never "
+                                                             "separate)"),
+            ("contact duration [s]", f"{r.duration:.6e}" if r.separated else "stuck"),
             ("time to max compression [s]", f"{r.time_to_max:.6e}"),
             ("max penetration [m]", f"{r.delta_max:.6e}"),
             ("peak force [N]", f"{r.peak_force:.6e}"),
@@ -201,7 +207,7 @@ def calibrate_cmd(
     v0: ImpactVelocity = 0.5,
     k_h: HertzStiffness = 2.75e9,
     k: LinearStiffness = 9.3e8,
-    no_tension: NoTension = False,
+    tension: Tension = False,
 ) -> None:
     """Find the damping that makes a law achieve exactly the target e.
 
@@ -218,7 +224,7 @@ def calibrate_cmd(
     if name == "bilinear-impact":
         cal = calibrate_bilinear(k_h, e, m1, m2, v0)
     else:
-        start = make_law(name, k=k, k_h=k_h, e=e, m1=m1, m2=m2, tension=not no_tension) \
+        start = make_law(name, k=k, k_h=k_h, e=e, m1=m1, m2=m2, tension=tension) \
             if name not in ("linear-spring", "hertz") else make_law(name, k=k, k_h=k_h)
         cal = calibrate(start, e, m1, m2, v0)
     console.print(f"{cal.law.describe()}\n{cal.parameter} = {cal.value:.10g} ({cal.method}); "

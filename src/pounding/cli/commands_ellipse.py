@@ -23,7 +23,8 @@ def ellipse(
     period: Optional[float] = typer.Option(None, "--period", help="Period T (s); ω = 2π/T."),
     delta0: float = typer.Option(0.01, "--delta0", help="Amplitude δ0 (m)."),
     n: int = typer.Option(2001, "--n", help="Samples over the cycle."),
-    plot: Optional[Path] = typer.Option(None, "--plot", help="Write the seed's Fig 2 here."),
+    plot: Optional[Path] = typer.Option(None, "--plot", metavar="FILE",
+                                        help="Draw the seed's Fig 2 to FILE."),
 ) -> None:
     """Energy dissipated per cycle by a spring + dashpot link element (seed eqs 1-12, Fig 2).
 

@@ -109,6 +109,8 @@ def _print_summary(out: Any) -> None:
     head.add_row("record", f"{r.motion.name}, PGA {r.motion.pga_g:.3f} g")
     head.add_row(_h("simulated [s] / output step [s]"), f"{s['duration_s']:g} / {r.dt:g}")
     head.add_row("buildings / contacts", f"{len(model.buildings)} / {len(model.contacts)}")
+    if model.contacts:
+        head.add_row("contact law", model.contact.describe())
     head.add_row("impacts", str(r.n_impacts))
     t_peak = s["peak_contact_force_time_s"]
     head.add_row(_h("peak contact force [N]"), f"{s['peak_contact_force_N']:.4g}"

@@ -52,7 +52,7 @@ class ContactConfig(Section):
     zeta: NonNeg | None = None
     chi: NonNeg | None = None
     n: Pos = 1.5
-    tension: bool = True
+    tension: bool = False
     delta_m: Pos | None = None
     a: Annotated[float, Field(gt=0, lt=1)] = 0.1
     gap: NonNeg | None = None

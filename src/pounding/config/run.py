@@ -148,7 +148,7 @@ class RunConfig(Section):
         output step (the one used: the largest divisor of the record step not above the
         one asked for), duration and largest adaptive step. The file it makes runs the same
         model to the last bit, and says what was assumed."""
-        from pounding.contact.factory import DEFAULT_FORMULA
+        from pounding.contact.factory import default_formula
         from pounding.integrate import DEFAULT_OUTPUT_STEP, grid_step
 
         data = self.to_dict(resolve_paths)
@@ -164,9 +164,9 @@ class RunConfig(Section):
         if self.contact is not None:
             c = data["contact"]
             law = self.contact.law
-            if ("formula" in LAW_FIELDS[law] and law in DEFAULT_FORMULA and "e" in c
-                    and "formula" not in c):
-                c["formula"] = DEFAULT_FORMULA[law]
+            default = default_formula(law, self.contact.tension)
+            if "formula" in LAW_FIELDS[law] and default and "e" in c and "formula" not in c:
+                c["formula"] = default
         motion = self.record.load()
         step = grid_step(motion.dt, self.solver.dt or DEFAULT_OUTPUT_STEP)
         sol = data.setdefault("solver", {})

@@ -20,14 +20,25 @@ LAW_NAMES: tuple[str, ...] = (
 Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with ζ of seed eq 39."""
 
 DEFAULT_FORMULA: dict[str, str] = {
-    "kelvin-voigt": "anagnostopoulos",
+    "kelvin-voigt": "schwager-poschel",
     "modified-kelvin-voigt": "mahmoud",
     "hunt-crossley": "lankarani-nikravesh",
     "hertzdamp": "lankarani-nikravesh",
     "nonlinear-viscoelastic": "jankowski",
     "naderpour": "naderpour",
 }
-"""The formula each damped law uses for ``e`` unless told otherwise (the one it was derived for)."""
+"""The formula each damped law uses for ``e`` unless told otherwise (the one it was derived
+for; for Kelvin–Voigt, the exact one for the default end of contact, without tension: with
+tension it is ``anagnostopoulos``, :func:`default_formula`)."""
+
+
+def default_formula(law: str, tension: bool = False) -> str | None:
+    """The damping formula a law uses for ``e`` when none is named: Kelvin–Voigt's exact ζ
+    for its end of contact (Schwager & Pöschel without tension, Anagnostopoulos with it),
+    otherwise :data:`DEFAULT_FORMULA` (None for a law without damping)."""
+    if law == "kelvin-voigt" and tension:
+        return "anagnostopoulos"
+    return DEFAULT_FORMULA.get(law)
 
 
 def _need(name: str, value: float | None, law: str) -> float:
@@ -39,7 +50,7 @@ def _need(name: str, value: float | None, law: str) -> float:
 def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
              e: float | None = None, formula: str | None = None, c: float | None = None,
              zeta: float | None = None, chi: float | None = None, m1: float | None = None,
-             m2: float | None = None, n: float = 1.5, tension: bool = True,
+             m2: float | None = None, n: float = 1.5, tension: bool = False,
              delta_m: float | None = None, a: float = 0.1) -> ContactLaw:
     """Build a contact law by name.
 
@@ -64,7 +75,8 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
     n : float
         Hertz exponent (Hertz and Hunt–Crossley).
     tension : bool
-        Kelvin–Voigt only: whether the dashpot may pull before separation.
+        Kelvin–Voigt only: whether the dashpot may pull before separation (default no: the
+        force is clipped at zero, and ζ for ``e`` is then Schwager & Pöschel's exact one).
     delta_m : float
         Bilinear element: assumed maximum penetration [m].
     a : float
@@ -79,11 +91,18 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
         raise ValueError(f"formula: the naderpour law uses eq 39 (got {formula!r})")
     if sum(x is not None for x in (e, c, zeta, chi)) > 1:
         raise ValueError(f"{law}: give only one of e, c, zeta, chi")
+    if law in ("linear-spring", "hertz"):
+        for key, value in (("e", e), ("formula", formula), ("c", c), ("zeta", zeta),
+                           ("chi", chi)):
+            if value is not None:
+                raise ValueError(f"{key}: the {law} law is elastic, it has no damping (e = 1; "
+                                 f"got {key} = {value!r}); choose a damped law such as "
+                                 f"{'kelvin-voigt' if law == 'linear-spring' else 'hunt-crossley'}")
 
     def damping_ratio() -> float:
         if zeta is not None:
             return zeta
-        f = get_formula(formula or DEFAULT_FORMULA[law])
+        f = get_formula(formula or default_formula(law, tension))  # type: ignore[arg-type]
         if f.kind != "zeta":
             raise ValueError(f"formula: {f.key!r} gives a Hunt-Crossley chi; the {law} law "
                              f"needs a damping ratio formula")

@@ -93,8 +93,7 @@ class LinearSpring(ContactLaw):
 class KelvinVoigt(ContactLaw):
     """Linear viscoelastic (Kelvin–Voigt) law, ``F = k δ + c δ̇`` (seed eq 5).
 
-    Source: Anagnostopoulos (1988), EESD 16(3):443–456, with
-    ``c = 2 ζ sqrt(k m_eff)`` and ζ from :func:`~pounding.contact.restitution.zeta_anagnostopoulos`.
+    Source: Anagnostopoulos (1988), EESD 16(3):443–456, with ``c = 2 ζ sqrt(k m_eff)``.
 
     Parameters
     ----------
@@ -103,15 +102,19 @@ class KelvinVoigt(ContactLaw):
     c : float
         Dashpot coefficient [N·s/m].
     tension : bool
-        What happens at the end of contact. ``True`` (default, the law as Anagnostopoulos
-        derived his ζ for): the dashpot may pull with a small tensile force until ``δ = 0``.
-        ``False``: the force is clipped, ``F = max(k δ + c δ̇, 0)``; the bodies separate
-        when it returns to zero, with the spring still compressed.
+        What happens at the end of contact. ``False`` (default, the physical choice: a
+        contact cannot pull two buildings together): the force is clipped,
+        ``F = max(k δ + c δ̇, 0)``; the bodies separate when it returns to zero, with the
+        spring still compressed; ζ for a target e from Schwager & Pöschel's closed form
+        (:func:`~pounding.contact.restitution.zeta_kelvin_voigt_clipped`). ``True`` (the law
+        as Anagnostopoulos derived his ζ for, and as OpenSees' ``ViscoelasticGap`` does): the
+        dashpot may pull with a tensile force until ``δ = 0``; ζ from
+        :func:`~pounding.contact.restitution.zeta_anagnostopoulos`.
     """
 
     k: float
     c: float
-    tension: bool = True
+    tension: bool = False
     code: ClassVar[int] = KELVIN_VOIGT
     label: ClassVar[str] = "Kelvin-Voigt"
     damping_field: ClassVar[str | None] = "c"
@@ -124,6 +127,12 @@ class KelvinVoigt(ContactLaw):
     def params(self) -> np.ndarray:
         return np.array([self.k, self.c, 1.0 if self.tension else 0.0])
 
+    def describe(self) -> str:
+        """One line: the label, the fields, and whether the dashpot may pull."""
+        return (f"Kelvin-Voigt(k={self.k!r}, c={self.c!r}, tension={self.tension}: "
+                + ("the dashpot may pull until δ = 0)" if self.tension
+                   else "no tension, the force clipped at zero)"))
+
     def release_function(self):
         if self.tension or self.c == 0.0:
             return None
@@ -132,7 +141,7 @@ class KelvinVoigt(ContactLaw):
 
     @classmethod
     def from_zeta(cls, k: float, zeta: float, m1: float, m2: float,
-                  tension: bool = True) -> "KelvinVoigt":
+                  tension: bool = False) -> "KelvinVoigt":
         """Build from an impact damping ratio: ``c = 2 ζ sqrt(k m_eff)``."""
         z = non_negative("zeta", zeta)
         return cls(k=k, c=2.0 * z * np.sqrt(positive("k", k) * m_effective(m1, m2)),
@@ -140,11 +149,13 @@ class KelvinVoigt(ContactLaw):
 
     @classmethod
     def from_restitution(cls, k: float, e: float, m1: float, m2: float,
-                         formula: str = "anagnostopoulos", tension: bool = True) -> "KelvinVoigt":
-        """Build from a coefficient of restitution via a ζ formula (default Anagnostopoulos)."""
+                         formula: str | None = None, tension: bool = False) -> "KelvinVoigt":
+        """Build from a coefficient of restitution via a ζ formula (default: the exact one
+        for the chosen end of contact, ``schwager-poschel`` without tension and
+        ``anagnostopoulos`` with it)."""
         from pounding.contact.restitution import formula as _formula
 
-        f = _formula(formula)
+        f = _formula(formula or ("anagnostopoulos" if tension else "schwager-poschel"))
         if f.kind != "zeta":
             raise ValueError(f"formula: {formula!r} gives a Hunt-Crossley chi, not a damping ratio")
         return cls.from_zeta(k, float(f(e)), m1, m2, tension=tension)
