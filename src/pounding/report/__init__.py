@@ -1,0 +1,133 @@
+"""One self-contained HTML page for a run folder or a sweep folder (``pounding report``).
+
+:func:`write_report` reads what ``pounding run`` or ``pounding sweep`` wrote and writes a
+single HTML file: inline CSS, every figure embedded as a base64 PNG (``data:`` URI), no
+script, no external link — it opens the same offline, from a mail attachment or an archive.
+Every text taken from the files is HTML-escaped; every quantity carries its unit.
+
+* A **run** folder holds ``summary.json`` and ``timehistories.nc`` (and normally
+  ``impacts.csv``, ``model.toml`` and the PNG figures). The page shows the model, the record,
+  the headline numbers, the figures (the PNGs of the folder, or regenerated from the NetCDF
+  when the model file can be rebuilt), the impact table, the energy balance and a gap check.
+* A **sweep** folder holds ``results.parquet`` (one row per case: parameters and measures).
+  The page shows the parameter grid, the first rows of the results with summary statistics,
+  and the main measure plotted against each swept parameter.
+
+The report only reads the folder; it writes nothing there but the report itself (written
+atomically, :func:`pounding.io.write_text`). See ``docs/report.md``.
+
+The package, by concept: this module (what a folder is, writing the page);
+:mod:`~pounding.report.run` with :mod:`~pounding.report.run_folder` (reading it),
+:mod:`~pounding.report.run_inputs` (model, record), :mod:`~pounding.report.run_figures` and
+:mod:`~pounding.report.run_checks` (energy balance, gap check) for the run page;
+:mod:`~pounding.report.sweep` with :mod:`~pounding.report.sweep_folder` for the sweep page;
+:mod:`~pounding.report.format` (numbers, units, and the blocks a section is made of:
+tables, notes, figures) and :mod:`~pounding.report.page` (the page, rendered with Jinja2 from
+``templates/``) for both.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from pounding.io import write_text
+from pounding.report.run import MAX_IMPACT_ROWS, render_run
+from pounding.report.run_folder import RUN_FILES
+from pounding.report.sweep import MAX_SWEEP_ROWS, render_sweep
+from pounding.report.sweep_folder import SWEEP_FILE
+
+__all__ = ["DEFAULT_NAME", "MAX_IMPACT_ROWS", "MAX_SWEEP_ROWS", "RUN_FILES", "SWEEP_FILE",
+           "detect_kind", "render_report", "write_report"]
+
+DEFAULT_NAME = "report.html"
+"""File name of the report inside the results folder when no ``out`` is given."""
+
+
+def detect_kind(results_dir: str | os.PathLike[str]) -> str:
+    """``"run"`` or ``"sweep"``: what ``results_dir`` holds.
+
+    Parameters
+    ----------
+    results_dir : path-like
+        The folder to look at.
+
+    Returns
+    -------
+    str
+        ``"run"`` for a run output, ``"sweep"`` for a sweep output.
+
+    Raises
+    ------
+    ValueError
+        The folder does not exist, or is neither a run output (``summary.json`` and
+        ``timehistories.nc``) nor a sweep output (``results.parquet``); the message names
+        the folder and the files missing.
+    """
+    folder = Path(results_dir)
+    if not folder.is_dir():
+        what = "does not exist" if not folder.exists() else "is not a folder"
+        raise ValueError(f"report: {folder} {what}; give the output folder of "
+                         "`pounding run` or `pounding sweep`")
+    run_missing = [f for f in RUN_FILES if not (folder / f).is_file()]
+    if not run_missing:
+        return "run"
+    if (folder / SWEEP_FILE).is_file():
+        return "sweep"
+    raise ValueError(
+        f"report: {folder} is neither a run output (missing {', '.join(run_missing)}) nor a "
+        f"sweep output (missing {SWEEP_FILE}); give the output folder of `pounding run` or "
+        "`pounding sweep`")
+
+
+def write_report(results_dir: str | os.PathLike[str],
+                 out: str | os.PathLike[str] | None = None) -> Path:
+    """Write the HTML report of a run or sweep folder and return its path.
+
+    Parameters
+    ----------
+    results_dir : path-like
+        The output folder of ``pounding run`` or ``pounding sweep`` (:func:`detect_kind`).
+    out : path-like, optional
+        The HTML file to write; default ``results_dir/report.html``. Written atomically.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        ``results_dir`` is neither a run nor a sweep output, or a file in it is unreadable.
+    """
+    folder = Path(results_dir)
+    text = render_report(folder)
+    target = Path(out) if out is not None else folder / DEFAULT_NAME
+    if target.is_dir():
+        raise ValueError(f"report: --out {target} is a folder; give a file name such as "
+                         f"{target / DEFAULT_NAME}")
+    return write_text(target, text)
+
+
+def render_report(results_dir: str | os.PathLike[str]) -> str:
+    """The HTML text of the report of ``results_dir`` (see :func:`write_report`).
+
+    Parameters
+    ----------
+    results_dir : path-like
+        The output folder of ``pounding run`` or ``pounding sweep``.
+
+    Returns
+    -------
+    str
+        The whole page.
+
+    Raises
+    ------
+    ValueError
+        As :func:`write_report`.
+    """
+    folder = Path(results_dir)
+    kind = detect_kind(folder)
+    return render_run(folder) if kind == "run" else render_sweep(folder)

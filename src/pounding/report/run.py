@@ -1,0 +1,168 @@
+"""The run page: its sections in order, the headline numbers and the impact table.
+
+The model and record sections are in :mod:`pounding.report.run_inputs`, the figures in
+:mod:`pounding.report.run_figures`, the energy balance and gap check in
+:mod:`pounding.report.run_checks`.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from pounding.report.format import Block, Cards, Note, Section, Table, kv_table, num
+from pounding.report.page import render_page
+from pounding.report.run_checks import energy_section, gap_check_section
+from pounding.report.run_figures import figures_section
+from pounding.report.run_folder import RunFolder, read_run
+from pounding.report.run_inputs import model_section, record_section
+from pounding.result import peak_abs
+
+__all__ = ["IMPACT_HEADERS", "MAX_IMPACT_ROWS", "render_run"]
+
+MAX_IMPACT_ROWS = 500
+"""At most this many impacts are listed (all of them are in ``impacts.csv``)."""
+
+IMPACT_HEADERS: dict[str, str] = {
+    "contact": "contact", "elevation": "elevation [m]", "start": "start [s]", "end": "end [s]",
+    "v0": "impact velocity v0 [m/s]", "peak_force": "peak force [N]",
+    "max_penetration": "max penetration [m]", "restitution": "restitution [-]",
+    "energy_dissipated": "energy dissipated [J]",
+}
+"""Headers of the columns of ``impacts.csv``, with their units."""
+
+
+def render_run(folder: Path) -> str:
+    """The HTML text of the report of the run folder ``folder``.
+
+    Raises
+    ------
+    ValueError
+        A file of the folder is unreadable (:func:`pounding.report.run_folder.read_run`).
+    """
+    r = read_run(folder)
+    name = str(r.summary.get("model") or r.toml.get("name") or folder.name)
+    record = str(r.summary.get("record") or "")
+    pga = r.summary.get("record_pga_g")
+    sub = (f"Run report — record {record}"
+           + (f", PGA {pga:.3f} g" if isinstance(pga, (int, float)) else "")
+           + f"; folder {folder.resolve().name}")
+    sections = [
+        Section("summary", "Headline numbers", _headline_section(r)),
+        Section("model", "Model", model_section(r)),
+        Section("record", "Record", record_section(r)),
+        Section("figures", "Figures", figures_section(r)),
+        Section("impacts", "Impact table", _impacts_section(r)),
+        Section("energy", "Energy balance", energy_section(r)),
+        Section("gap-check", "Gap check", gap_check_section(r)),
+    ]
+    return render_page(f"{name}: pounding run report", sub, sections, folder)
+
+
+def _building_of(label: str) -> int:
+    m = re.match(r"B(\d+)F(\d+)$", label)
+    return int(m.group(1)) - 1 if m else 0
+
+
+def _headline_section(r: RunFolder) -> list[Block]:
+    s = r.summary
+    solver = s.get("solver", {}) or {}
+    e_err = s.get("energy_balance_error")
+    pdisp = s.get("peak_displacement_m", {}) or {}
+    out: list[Block] = [Cards([
+        ("impacts", num(s.get("n_impacts"))),
+        ("peak contact force [N]", num(s.get("peak_contact_force_N"))),
+        ("largest floor displacement [m]", num(max(pdisp.values())) if pdisp else "–"),
+        ("dissipated in contacts [J]", num(s.get("contact_dissipated_J"))),
+        ("energy-balance error [of peak input]", f"{e_err:.2e}" if isinstance(e_err, float)
+         else "–"),
+    ])]
+    pcf = s.get("peak_contact_force_by_contact_N", {}) or {}
+    if pcf:
+        t = Table(("contact", "impacts", "peak contact force [N]", "dissipated [J]"),
+                  caption="Per contact")
+        for label, f in pcf.items():
+            rows = r.impacts_of(label)
+            n = len(rows)
+            diss = float(np.nansum(rows["energy_dissipated"])) if n else 0.0
+            t.add(label, n, f, diss)
+        out.append(t)
+    out.append(_response_table(r))
+    items = [("solver", solver.get("name")), ("relative tolerance rtol [-]", solver.get("rtol")),
+             ("adaptive steps through contacts", solver.get("rk_steps")),
+             ("rejected steps", solver.get("rejected")),
+             ("contact events (closings and openings)", solver.get("events")),
+             ("impact table overflowed", solver.get("impact_table_overflow")),
+             ("integration wall time [s]", solver.get("wall_time_s"))]
+    out.append(kv_table([(k, v) for k, v in items if v is not None],
+                        caption="Solver statistics"))
+    if solver.get("impact_table_overflow"):
+        out.append(Note("The impact table overflowed: some impacts are not listed.", "warn"))
+    return out
+
+
+def _response_table(r: RunFolder) -> Table:
+    ds = r.ds
+    labels = [str(x) for x in ds["floor"].values]
+    disp = peak_abs(ds["displacement"].values)
+    drift = peak_abs(ds["drift"].values)
+    acc = (peak_abs(ds["absolute_acceleration"].values)
+           if "absolute_acceleration" in ds else np.full(len(labels), np.nan))
+    elev = (np.asarray(ds["floor_elevation"].values, dtype=float)
+            if "floor_elevation" in ds.coords else np.full(len(labels), np.nan))
+    inelastic = "ductility" in ds
+    cols: tuple[str, ...] = (
+        "building", "storeys", "peak roof displacement [m]", "peak storey drift [m]",
+        "at storey", "peak drift ratio [%]", "peak absolute floor acceleration [m/s²]")
+    if inelastic:
+        cols += ("peak storey ductility [-]", "largest residual drift [m]")
+    t = Table(cols, caption="Peak response of each building (absolute values over the run)"
+              + ("; ductility = peak drift / yield drift (NaN: linear storeys), residual "
+                 "drift after elastic unloading" if inelastic else ""))
+    groups: dict[int, list[int]] = {}
+    for i, lb in enumerate(labels):
+        groups.setdefault(_building_of(lb), []).append(i)
+    for b, idx in sorted(groups.items()):
+        d = drift[idx]
+        j = int(np.argmax(d))
+        below = elev[idx[j] - 1] if j > 0 else 0.0
+        h = elev[idx[j]] - below
+        ratio = 100.0 * d[j] / h if h > 0 else float("nan")
+        name = ""
+        if r.built is not None and b < len(r.built.model.buildings):
+            name = r.built.model.buildings[b].name
+        row = [f"B{b + 1}" + (f" ({name})" if name else ""), len(idx), float(disp[idx[-1]]),
+               float(d[j]), j + 1, ratio, float(acc[idx].max())]
+        if inelastic:
+            mu = np.asarray(ds["ductility"].values, dtype=float)[idx]
+            res = np.asarray(ds["residual_drift"].values, dtype=float)[idx]
+            row += [float(np.nanmax(mu)) if np.isfinite(mu).any() else float("nan"),
+                    float(res[int(np.argmax(np.abs(res)))])]
+        t.add(*row)
+    return t
+
+
+def _impacts_section(r: RunFolder) -> list[Block]:
+    imp = r.impacts
+    if not len(imp):
+        why = ("no impacts.csv in the folder" if not (r.folder / "impacts.csv").is_file()
+               else "no impact: the gap never closed")
+        return [Note(f"No impacts listed ({why}).")]
+    cols = list(imp.columns)
+    t = Table(["#"] + [IMPACT_HEADERS.get(c, c) for c in cols], cls="impacts", scroll=True)
+    for i, (_, row) in enumerate(imp.head(MAX_IMPACT_ROWS).iterrows()):
+        t.add(i + 1, *[row[c] for c in cols])
+    out: list[Block] = []
+    if len(imp) > MAX_IMPACT_ROWS:
+        out.append(Note(f"First {MAX_IMPACT_ROWS} of {len(imp)} impacts; all are in "
+                        "impacts.csv."))
+    else:
+        out.append(Note(f"{len(imp)} impact(s), in time order per the solver's impact table "
+                        "(impacts.csv). Restitution is −δ̇ at separation / v0; an impact "
+                        "still open at the end has no end, restitution or energy (–)."))
+    out.append(t)
+    if r.impacts_units:
+        out.append(Note(f"Units as stated in impacts.csv: {r.impacts_units}"))
+    return out

@@ -1,0 +1,117 @@
+"""The checks of the run page: the energy balance and the gap check."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pounding.report.format import Block, Note, Table, kv_table
+from pounding.report.run_folder import RunFolder
+
+__all__ = ["ENERGY_DESCRIPTIONS", "energy_section", "gap_check_section"]
+
+ENERGY_DESCRIPTIONS: dict[str, str] = {
+    "input": "input energy −∫u̇ᵀMr·a_g dt",
+    "kinetic": "kinetic energy ½u̇ᵀMu̇ (relative to the ground)",
+    "strain": "elastic strain energy ½uᵀKu (plus the recoverable energy of yielding storeys)",
+    "damping": "dissipated by structural (viscous) damping ∫u̇ᵀCu̇ dt",
+    "contact_work": "work of the contact forces ∫ΣF·δ̇ dt",
+    "contact_stored": "elastic energy still stored in closed contacts",
+    "hysteretic": "hysteretic energy of yielding storeys (their work less what they would give "
+                  "back)",
+}
+"""What each term of the energy balance (``energy_term`` of ``timehistories.nc``) is."""
+
+
+def energy_section(r: RunFolder) -> list[Block]:
+    """Each cumulative energy at the end and at its largest, and the closure of the balance."""
+    ds = r.ds
+    e = np.asarray(ds["energy"].values, dtype=float)
+    names = [str(x) for x in ds["energy_term"].values]
+    col = {n: e[:, i] for i, n in enumerate(names)}
+    t = Table(("term", "final value [J]", "largest |value| during the run [J]", "meaning"),
+              caption="Energy balance: cumulative energies at the end of the run")
+    for n in names:
+        t.add(n, float(col[n][-1]), float(np.abs(col[n]).max()), ENERGY_DESCRIPTIONS.get(n, ""))
+    out: list[Block] = [t]
+    needed = ("input", "kinetic", "strain", "damping", "contact_work")
+    if all(k in col for k in needed):
+        closure = col["input"] - (col["kinetic"] + col["strain"] + col["damping"]
+                                  + col["contact_work"])
+        scale = max(float(np.abs(col["input"]).max()), 1e-300)
+        diss = col["contact_work"] - col.get("contact_stored", 0.0)
+        items = [
+            ("dissipated in contacts = contact_work − contact_stored, final [J]",
+             float(diss[-1])),
+            ("kinetic + strain + damping + contact_work, final [J]",
+             float(col["input"][-1] - closure[-1])),
+            ("closure input − (kinetic + strain + damping + contact_work), final [J]",
+             float(closure[-1])),
+            ("largest |closure| during the run [J]", float(np.abs(closure).max())),
+            ("largest |closure| / largest |input| [-]", float(np.abs(closure).max() / scale)),
+            ("energy_balance_error in summary.json [-]", r.summary.get("energy_balance_error")),
+        ]
+        if col["input"][-1] > 0:
+            share = [("structural damping", col["damping"][-1]), ("contacts", diss[-1]),
+                     ("kinetic + strain (still in motion)",
+                      col["kinetic"][-1] + col["strain"][-1])]
+            items += [(f"share of the final input: {k} [%]", 100.0 * float(v) / col["input"][-1])
+                      for k, v in share]
+        out.append(kv_table(items, caption="Closure"))
+    return out
+
+
+def gap_check_section(r: RunFolder) -> list[Block]:
+    """One row per contact: its gap, whether it closed, the largest relative displacement,
+    and the critical gap where the buildings never touched."""
+    ds = r.ds
+    if "contact" not in ds.dims or ds.sizes["contact"] == 0:
+        return [Note("No contacts: a single building, nothing to check.")]
+    floors = [str(x) for x in ds["floor"].values]
+    u = np.asarray(ds["displacement"].values, dtype=float)
+    pen = np.asarray(ds["penetration"].values, dtype=float)
+    contacts = [str(x) for x in ds["contact"].values]
+    elev = (np.asarray(ds["contact_elevation"].values, dtype=float)
+            if "contact_elevation" in ds.coords else np.full(len(contacts), np.nan))
+    gaps_model = {}
+    if r.built is not None:
+        gaps_model = {c.label: c.gap for c in r.built.model.contacts}
+    t = Table(("contact", "elevation [m]", "gap [m]", "touched", "impacts",
+               "peak penetration [m]", "max(u_left − u_right) in this run [m]",
+               "gap − max(u_left − u_right) [m]", "critical gap (no contact) [m]"),
+              caption="Gap check, one row per contact element")
+    for i, label in enumerate(contacts):
+        left, _, right = label.partition("-")
+        if left in floors and right in floors:
+            rel = u[:, floors.index(left)] - u[:, floors.index(right)]
+            gap_from_nc = float(np.median(rel - pen[:, i]))
+        else:  # labels not parseable: penetration + gap with the model's gap
+            rel = None
+            gap_from_nc = float("nan")
+        gap = gaps_model.get(label, gap_from_nc)
+        if rel is None:
+            rel = pen[:, i] + gap
+        rows = r.impacts_of(label)
+        n = len(rows)
+        peak_pen = float(pen[:, i].max())
+        if n:
+            peak_pen = max(peak_pen, float(np.nanmax(rows["max_penetration"])))
+        touched = n > 0 or peak_pen > 0
+        max_rel = float(rel.max())
+        t.add(label, float(elev[i]), gap, "yes" if touched else "no", n,
+              peak_pen if touched else "– (never closed)", max_rel, gap - max_rel,
+              max_rel if not touched else "– (see note)")
+    return [
+        t,
+        Note("Displacements are positive to the right, so the gap between a floor of the "
+             "left building and the floor of its right neighbour closes when "
+             "u_left − u_right reaches the gap; the penetration is "
+             "δ = u_left − u_right − gap (timehistories.nc). max(u_left − u_right) is "
+             "taken over the output samples; "
+             "the peak penetration also uses the impact table (resolved between samples)."),
+        Note("Critical gap: the smallest gap that avoids contact under this record is "
+             "max(u_left − u_right) of a run in which the buildings never touch. It is "
+             "shown only for contacts that never closed (then this run is such a run). Where "
+             "the buildings touched, max(u_left − u_right) = gap + peak penetration is "
+             "bounded by the impacts and is NOT the critical gap: the buildings rebound "
+             "instead of moving freely; use the gap study (pounding gap) for that."),
+    ]

@@ -1,0 +1,130 @@
+"""What was run: the model and record sections of the run page."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from pounding.report.format import (Block, Figure, Note, Pre, Table, kv_table, num, png_bytes,
+                                    with_unit)
+from pounding.report.run_folder import RunFolder
+
+__all__ = ["CONTACT_UNITS", "model_section", "record_section"]
+
+CONTACT_UNITS: dict[str, str] = {
+    "k": "N/m", "k_h": "N/m^n", "e": "-", "c": "N·s/m", "zeta": "-", "chi": "-", "n": "-",
+    "delta_m": "m", "a": "-", "gap": "m", "gaps": "m", "formula": "", "tension": "",
+    "law": "",
+}
+"""Units of the keys of ``[contact]`` (``docs/running.md``)."""
+
+
+def _damping_text(d: Any) -> str:
+    name = type(d).__name__
+    fields = getattr(d, "__dataclass_fields__", {})
+    values = {k: getattr(d, k) for k in fields}
+    args = ", ".join(f"{k}={num(v) if isinstance(v, float) else v}" for k, v in values.items())
+    return f"{name}({args})"
+
+
+def _range_text(values: Sequence[float], unit: str) -> str:
+    v = np.asarray(values, dtype=float)
+    if v.size == 0:
+        return "–"
+    if np.allclose(v, v[0]):
+        return f"{num(v[0])} {unit}" + (f" × {v.size}" if v.size > 1 else "")
+    return f"{num(v.min())} … {num(v.max())} {unit}"
+
+
+def model_section(r: RunFolder) -> list[Block]:
+    """The model: name, buildings, contact law and elements, solver options, model.toml."""
+    parts: list[Block] = []
+    desc = r.toml.get("description") or ""
+    name = r.toml.get("name") or r.summary.get("model", "")
+    parts.append(kv_table([("model name", str(name)), ("description", str(desc) or "–")]))
+    if r.built is not None:
+        model = r.built.model
+        t = Table(("building", "name", "storeys", "height [m]", "total mass [kg]",
+                   "floor masses [kg]", "storey stiffnesses [N/m]", "T1 [s]",
+                   "first periods [s]", "damping"),
+                  caption="Buildings, left to right")
+        for b, bl in enumerate(model.buildings):
+            try:
+                periods = ", ".join(num(p) for p in bl.modes().periods[:3])
+            except Exception:  # noqa: BLE001  (a display nicety only)
+                periods = "–"
+            t.add(f"B{b + 1}", bl.name or "–", bl.n, float(bl.total_height),
+                  float(bl.total_mass), _range_text(bl.masses, "kg"),
+                  _range_text(bl.stiffnesses, "N/m"), float(bl.fundamental_period), periods,
+                  _damping_text(bl.damping))
+        parts.append(t)
+    else:
+        builds = r.toml.get("building", [])
+        if builds:
+            t = Table(("building", "as given in model.toml"),
+                      caption="Buildings, left to right (model.toml, not rebuilt)")
+            for b, entry in enumerate(builds):
+                t.add(f"B{b + 1}", ", ".join(f"{k} = {v}" for k, v in entry.items()))
+            parts.append(t)
+        parts.append(Note(f"The model could not be rebuilt: {r.build_error}. Periods and "
+                          "derived quantities are not shown.", "warn"))
+    contact = r.toml.get("contact")
+    if isinstance(contact, dict) and contact:
+        items = [(with_unit(k, CONTACT_UNITS.get(k)), v if not isinstance(v, list)
+                  else ", ".join(num(x) for x in v)) for k, v in contact.items()]
+        parts.append(kv_table(items, caption="Contact law ([contact] of model.toml)"))
+    if r.built is not None and r.built.model.contacts:
+        t = Table(("contact", "elevation [m]", "gap [m]", "law"), caption="Contact elements")
+        for c in r.built.model.contacts:
+            t.add(c.label, c.elevation, c.gap, repr(c.law))
+        parts.append(t)
+    solver = r.toml.get("solver")
+    if isinstance(solver, dict) and solver:
+        su = {"dt": "s", "duration": "s", "rtol": "-", "h_max": "s"}
+        parts.append(kv_table([(with_unit(k, su.get(k)), v) for k, v in solver.items()],
+                              caption="Solver options ([solver] of model.toml)"))
+    if r.toml_text is not None:
+        parts.append(Pre(r.toml_text, summary="model.toml (as run)"))
+    return parts
+
+
+def record_section(r: RunFolder) -> list[Block]:
+    """The record: name, source, step, duration, PGA, and the ground acceleration plotted."""
+    ds = r.ds
+    s = r.summary
+    t = np.asarray(ds["time"].values, dtype=float)
+    ag = np.asarray(ds["ground_acceleration"].values, dtype=float)
+    items: list[tuple[str, Any]] = [("record", str(s.get("record", ds.attrs.get("record", ""))))]
+    if r.built is not None:
+        gm = r.built.motion
+        items += [("source", gm.source or "–"), ("units of the source", gm.units_read),
+                  ("record step [s]", gm.dt), ("record duration [s]", gm.duration),
+                  ("PGA [g]", gm.pga_g), ("PGA [m/s²]", gm.pga)]
+    else:
+        items += [("PGA [g]", s.get("record_pga_g"))]
+    items += [("simulated duration [s]", float(t[-1]) if t.size else None),
+              ("output step [s]", s.get("output_step_s")),
+              ("largest |ground acceleration| at output samples [m/s²]",
+               float(np.abs(ag).max()) if ag.size else None)]
+    rec = r.toml.get("record", {})
+    for key, unit in (("duration", "s"), ("scale", "-"), ("pga_g", "g")):
+        if isinstance(rec, dict) and key in rec:
+            items.append((f"record.{key} in model.toml [{unit}]", rec[key]))
+    out: list[Block] = [kv_table(items)]
+    if t.size:
+        from matplotlib.figure import Figure as MplFigure
+
+        fig = MplFigure(figsize=(10, 2.4))
+        ax = fig.subplots()
+        ax.plot(t, ag, color="0.2", lw=0.6)
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("ground acceleration [m/s²]")
+        ax.grid(True, alpha=0.3)
+        ax.set_title(f"{s.get('record', '')}: ground acceleration over the simulated time",
+                     fontsize=9, loc="left")
+        fig.tight_layout()
+        out.append(Figure(png_bytes(fig), "ground acceleration", "Ground acceleration [m/s²] "
+                          "against time [s], at the output samples."))
+    return out
