@@ -104,7 +104,8 @@ def gap_cmd(
       pounding gap model.toml A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
     """
     from pounding.config import load_config
-    from pounding.studies.gap import DesignSpectrum, critical_gaps
+    from pounding.spectra import DesignSpectrum
+    from pounding.studies.gap import critical_gaps
 
     if more_records and not records:
         raise ValueError(f"unexpected argument(s) {', '.join(map(str, more_records))}: "
