@@ -39,7 +39,8 @@ def _load_records(cfg: Any, files: list[Path], dt: float | None, units: str | No
     motions = []
     for f in files:
         if not f.is_file():
-            raise ValueError(f"--records: {f}: no such file")
+            raise ValueError(f"--records: {f}: " + ("is a directory, not a record file"
+                                                    if f.is_dir() else "no such file"))
         gm = read_record(f, dt=dt, units=units)
         if rec.duration is not None:
             gm = gm.trimmed(rec.duration)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, overload
@@ -166,9 +167,23 @@ class GroundMotion:
 
     # ------------------------------------------------------------------ new records
     def scaled(self, factor: float) -> GroundMotion:
-        """Return this record with every acceleration multiplied by ``factor`` [-]."""
+        """Return this record with every acceleration multiplied by ``factor`` [-].
+
+        Raises
+        ------
+        ValueError
+            If ``factor`` is not finite, or takes an acceleration beyond the largest float.
+        """
         f = finite("scale factor", factor)
-        return dataclasses.replace(self, accel=self.accel * f,
+        with np.errstate(over="ignore"):
+            accel = self.accel * f
+        bad = ~np.isfinite(accel)
+        if np.any(bad):
+            i = int(np.flatnonzero(bad)[0])
+            raise ValueError(f"ground motion {self.name!r}: scale factor {f:g} takes accel[{i}] "
+                             f"= {self.accel[i]:g} m/s2 beyond the largest float "
+                             f"({sys.float_info.max:.3g})")
+        return dataclasses.replace(self, accel=accel,
                                    metadata={**self.metadata,
                                              "scale_factor": self.metadata.get(
                                                  "scale_factor", 1.0) * f})
@@ -179,13 +194,19 @@ class GroundMotion:
         Raises
         ------
         ValueError
-            If ``pga_g`` is not > 0, or the record is all zeros.
+            If ``pga_g`` is not > 0, the record is all zeros, or the scale factor is beyond
+            the largest float.
         """
         target = positive("pga_g", pga_g)
         if self.pga == 0.0:
             raise ValueError(f"ground motion {self.name!r}: cannot scale to pga_g={target:g}: "
                              "the record is all zeros")
-        return self.scaled(target * G / self.pga)
+        factor = target * G / self.pga
+        if not math.isfinite(factor):
+            raise ValueError(f"ground motion {self.name!r}: cannot scale to pga_g={target:g}: "
+                             f"the scale factor {target:g} g / {self.pga_g:g} g is beyond the "
+                             f"largest float ({sys.float_info.max:.3g})")
+        return self.scaled(factor)
 
     def trimmed(self, t_end: float) -> GroundMotion:
         """Return the samples at times ``t <= t_end`` [s] (at least the first one)."""

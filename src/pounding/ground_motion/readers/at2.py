@@ -8,18 +8,22 @@ accelerations, any number per line.
 
 from __future__ import annotations
 
+import bisect
 import math
 import os
 import re
 from typing import Any
 
-import numpy as np
-
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.files import check_file, read_lines
 from pounding.ground_motion.readers.numbers import is_numeric_line, parse_values, to_float
-from pounding.ground_motion.readers.units import ASSUMED, canonical_unit, same_unit, units_in
-from pounding.units import acceleration_factor
+from pounding.ground_motion.readers.units import (
+    ASSUMED,
+    canonical_unit,
+    same_unit,
+    to_si,
+    units_in,
+)
 from pounding.validation import positive
 
 __all__ = ["SUFFIXES", "looks_like_at2", "read_at2"]
@@ -161,6 +165,8 @@ def read_at2(path: str | os.PathLike[str], *, dt: float | None = None,
 
     # ---- data
     values: list[float] = []
+    starts: list[int] = []  # index in values of the first value of each data line
+    linenos: list[int] = []  # and that line's number
     last_line = data_start
     end_line: int | None = None
     for i in range(data_start, len(lines)):
@@ -170,6 +176,8 @@ def read_at2(path: str | os.PathLike[str], *, dt: float | None = None,
             break
         if not line.strip():
             continue
+        starts.append(len(values))
+        linenos.append(i + 1)
         values.extend(parse_values(line, i + 1, where))
         last_line = i + 1
     if not values:
@@ -186,7 +194,8 @@ def read_at2(path: str | os.PathLike[str], *, dt: float | None = None,
         metadata["npts_header"] = npts
     if end_line is not None:
         metadata["end_marker_line"] = end_line
-    accel = np.asarray(values, dtype=np.float64) * acceleration_factor(unit)
+    accel = to_si(values, unit, where,
+                  lambda k: linenos[bisect.bisect_right(starts, k) - 1])
     return GroundMotion(dt=step, accel=accel, name=p.stem, source=where,
                         units_read=units_read, metadata=metadata)
 

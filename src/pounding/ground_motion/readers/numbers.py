@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import math
 import re
+import sys
+from collections.abc import Mapping, Sequence
 
 __all__ = ["is_numeric_line", "parse_values", "split_fused", "to_float"]
 
@@ -46,8 +48,29 @@ def split_fused(token: str) -> list[float] | None:
     return None if any(v is None for v in values) else values  # type: ignore[return-value]
 
 
-def parse_values(line: str, lineno: int, where: str) -> list[float]:
-    """Every number on a data line; raise naming the line for a bad or non-finite token."""
+def parse_values(line: str, lineno: int, where: str,
+                 columns: Mapping[int, Sequence[str]] | None = None) -> list[float]:
+    """Every number on a data line.
+
+    Parameters
+    ----------
+    line : str
+        The data line.
+    lineno : int
+        Its line number in the file (1 for the first), for the messages.
+    where : str
+        The file, for the messages.
+    columns : mapping, optional
+        What the values are, by position, keyed by how many values the line holds (e.g.
+        ``{2: ("time", "acceleration")}``); values on any other line are accelerations.
+
+    Raises
+    ------
+    ValueError
+        Naming the file, the line and the token: a token that is not a number, or a value
+        that is not finite (NaN, infinite, or written finite but beyond the largest float,
+        such as ``1e309``, which overflows to infinity when read).
+    """
     tokens = line.replace(",", " ").split()
     try:
         values = [float(t) for t in tokens]
@@ -62,10 +85,31 @@ def parse_values(line: str, lineno: int, where: str) -> list[float]:
             if fused is None:
                 raise ValueError(f"{where}: line {lineno}: {tok!r} is not a number") from None
             values.extend(fused)
-    for v in values:
+    for i, v in enumerate(values):
         if not math.isfinite(v):
-            raise ValueError(f"{where}: line {lineno}: acceleration value {v} is not finite")
+            names = (columns or {}).get(len(values), ())
+            what = names[i] if i < len(names) else "acceleration"
+            raise ValueError(f"{where}: line {lineno}: {what} value "
+                             f"{_not_finite(_pieces(tokens)[i], v)}")
     return values
+
+
+def _pieces(tokens: list[str]) -> list[str]:
+    """The text of each number in ``tokens``: a fused run gives one piece per number."""
+    out: list[str] = []
+    for tok in tokens:
+        out.extend([tok] if to_float(tok) is not None else
+                   [m.group(0) for m in _FUSED_PIECE.finditer(tok)])
+    return out
+
+
+def _not_finite(text: str, value: float) -> str:
+    """Why a value is not finite: NaN and infinity as Python writes them; a number written
+    finite but beyond the largest float, as written, and what it reads as."""
+    if text.strip().lstrip("+-").lower() in ("nan", "inf", "infinity"):
+        return f"{value} is not finite"
+    return (f"{text} is not finite: it is beyond the largest float "
+            f"({sys.float_info.max:.3g}) and reads as {value}")
 
 
 def is_numeric_line(line: str) -> bool:

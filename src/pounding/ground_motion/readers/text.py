@@ -10,12 +10,14 @@ import numpy as np
 
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.files import check_file, read_lines
-from pounding.ground_motion.readers.units import canonical_unit
 from pounding.ground_motion.readers.numbers import parse_values
-from pounding.units import acceleration_factor
+from pounding.ground_motion.readers.units import canonical_unit, to_si
 from pounding.validation import positive
 
 __all__ = ["read_text"]
+
+_COLUMNS = {1: ("acceleration",), 2: ("time", "acceleration")}
+"""What the values of a line are, by how many it holds."""
 
 
 def read_text(path: str | os.PathLike[str], dt: float | None = None,
@@ -59,7 +61,7 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
         s = line.strip()
         if not s or s.startswith("#"):
             continue
-        vals = parse_values(s, i + 1, where)
+        vals = parse_values(s, i + 1, where, _COLUMNS)
         if len(vals) > 2:
             raise ValueError(f"{where}: line {i + 1}: expected 1 column (accel) or 2 columns "
                              f"(time, accel), got {len(vals)}")
@@ -102,5 +104,5 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
         step = float(f"{step:.12g}")  # 59.98 / 2999 -> 0.02, not 0.019999999999999997
         metadata["t0"] = float(t[0])
         accel = data[:, 1]
-    return GroundMotion(dt=step, accel=accel * acceleration_factor(unit), name=p.stem,
-                        source=where, units_read=unit, metadata=metadata)
+    return GroundMotion(dt=step, accel=to_si(accel, unit, where, linenos.__getitem__),
+                        name=p.stem, source=where, units_read=unit, metadata=metadata)

@@ -3,16 +3,21 @@
 :func:`units_in` finds the unit a header line states ("UNITS OF G", "(g)", "cm/s/s",
 "CM/S^2", "m/s2", "gal"...); :func:`canonical_unit` checks a unit given by the caller
 against :data:`pounding.units.ACCELERATION_UNITS`; :data:`ASSUMED` marks a unit that was
-not stated but assumed.
+not stated but assumed; :func:`to_si` converts the values read to m/s².
 """
 
 from __future__ import annotations
 
 import re
+import sys
+from collections.abc import Callable, Sequence
+
+import numpy as np
+from numpy.typing import NDArray
 
 from pounding.units import ACCELERATION_UNITS, acceleration_factor
 
-__all__ = ["ASSUMED", "canonical_unit", "same_unit", "units_in"]
+__all__ = ["ASSUMED", "canonical_unit", "same_unit", "to_si", "units_in"]
 
 ASSUMED = " (assumed)"
 """Suffix added to :attr:`GroundMotion.units_read` when the file did not state its units."""
@@ -53,3 +58,35 @@ def canonical_unit(unit: str, where: str) -> str:
 
 def same_unit(a: str, b: str) -> bool:
     return ACCELERATION_UNITS[a] == ACCELERATION_UNITS[b]
+
+
+def to_si(values: Sequence[float] | NDArray[np.float64], unit: str, where: str,
+          line_of: Callable[[int], int]) -> NDArray[np.float64]:
+    """Accelerations read in ``unit``, in m/s² (:func:`pounding.units.acceleration_factor`).
+
+    Parameters
+    ----------
+    values : sequence of float
+        The values as read, all finite.
+    unit : str
+        Their unit, a key of :data:`pounding.units.ACCELERATION_UNITS`.
+    where : str
+        The file, for the message.
+    line_of : callable
+        ``line_of(i)``: the line number of value ``i`` in the file, for the message.
+
+    Raises
+    ------
+    ValueError
+        Naming the file, the line and the value, for a value finite in ``unit`` but beyond
+        the largest float in m/s² (e.g. 1e308 g), which would overflow to infinity.
+    """
+    raw = np.asarray(values, dtype=np.float64)
+    with np.errstate(over="ignore"):
+        out = raw * acceleration_factor(unit)
+    bad = ~np.isfinite(out)
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"{where}: line {line_of(i)}: acceleration value {raw[i]:.9g} {unit} "
+                         f"is beyond the largest float ({sys.float_info.max:.3g}) in m/s2")
+    return out
