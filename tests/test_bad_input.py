@@ -114,6 +114,23 @@ def test_gap_records_folder_is_named_a_folder(tmp_path, capsys):
     assert err == [f"error: --records: {tmp_path}: is a directory, not a record file"]
 
 
+@pytest.mark.parametrize("argv, kind", [
+    (["run", "{d}", "--out", "{d}/out"], "model file"),
+    (["sweep", "{d}"], "sweep file"),
+    (["gap", "{model}", "--spectrum", "{d}"], "spectrum file"),
+])
+def test_a_folder_given_for_an_input_file_is_named_a_folder(tmp_path, capsys, argv, kind):
+    folder = tmp_path / "inputs"
+    folder.mkdir()
+    model = tmp_path / "model.toml"
+    model.write_text(BASE)
+    capsys.readouterr()
+    assert main([a.format(d=folder, model=model) for a in argv]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"error: {folder}: is a directory, not a {kind}"]
+    assert list(folder.iterdir()) == []
+
+
 def test_every_line_of_a_multi_error_message_starts_alike(tmp_path, capsys):
     code, err = run_file(tmp_path, BASE.replace("gap = 0.02", "gap = -1\nk_x = 3"), capsys)
     assert code == 2 and len(err) == 2

@@ -144,7 +144,8 @@ class DesignSpectrum:
         """
         p = Path(path)
         if not p.is_file():
-            raise ValueError(f"{p}: no such spectrum file")
+            raise ValueError(f"{p}: is a directory, not a spectrum file" if p.is_dir() else
+                             f"{p}: no such spectrum file")
         try:
             data = tomllib.loads(p.read_text(encoding="utf-8"))
         except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
