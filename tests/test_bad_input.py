@@ -78,6 +78,59 @@ def load_config_text(text: str):  # noqa: ANN201
         return load_config(p).build()
 
 
+@pytest.mark.parametrize("record, content, expected", [
+    ('file = "rec.txt"\ndt = 0.01', "0.1\n0.2\n1e309\n0.3\n",
+     "{model}: record: {rec}: line 3: acceleration value 1e309 is not finite: it is "
+     "beyond the largest float (1.8e+308) and reads as inf"),
+    ('file = "rec.txt"\ndt = 0.01\nunits = "g"', "0.1\n1e308\n",
+     "{model}: record: {rec}: line 2: acceleration value 1e+308 g is beyond the largest "
+     "float (1.8e+308) in m/s2"),
+    ('file = "rec.txt"', None,
+     "{model}: record.file: '{rec}' is a directory, not a record file (got 'rec.txt'; "
+     "relative paths start at the model file's folder)"),
+    ('bundled = "el_centro"\nscale = 1e308', None,
+     "{model}: record: ground motion 'El Centro 1940 (Array #9, 180)': scale factor "
+     "1e+308 takes accel[206] = -1.85054 m/s2 beyond the largest float (1.8e+308)"),
+])
+def test_record_files_that_overflow_or_are_folders_are_one_line(tmp_path, capsys, record,
+                                                                content, expected):
+    rec = tmp_path / "rec.txt"
+    if content is None:
+        rec.mkdir()
+    else:
+        rec.write_text(content)
+    code, err = run_file(tmp_path, BASE.replace('bundled = "el_centro"', record), capsys)
+    assert code == 2 and err == ["error: " + expected.format(model=tmp_path / "model.toml",
+                                                             rec=rec)], err
+    assert not (tmp_path / "out").exists()
+
+
+def test_gap_records_folder_is_named_a_folder(tmp_path, capsys):
+    model = tmp_path / "model.toml"
+    model.write_text(BASE)
+    capsys.readouterr()
+    assert main(["gap", str(model), "--records", str(tmp_path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"error: --records: {tmp_path}: is a directory, not a record file"]
+
+
+@pytest.mark.parametrize("argv, kind", [
+    (["run", "{d}", "--out", "{d}/out"], "model file"),
+    (["sweep", "{d}"], "sweep file"),
+    (["gap", "{model}", "--spectrum", "{d}"], "spectrum file"),
+])
+def test_a_folder_given_for_an_input_file_is_named_a_folder(tmp_path, capsys, argv, kind):
+    folder = tmp_path / "inputs"
+    folder.mkdir()
+    model = tmp_path / "model.toml"
+    model.write_text(BASE)
+    capsys.readouterr()
+    assert main([a.format(d=folder, model=model) for a in argv]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"error: {folder}: is a directory, not a {kind}"]
+    assert list(folder.iterdir()) == []
+
+
 def test_every_line_of_a_multi_error_message_starts_alike(tmp_path, capsys):
     code, err = run_file(tmp_path, BASE.replace("gap = 0.02", "gap = -1\nk_x = 3"), capsys)
     assert code == 2 and len(err) == 2

@@ -38,13 +38,15 @@ def atomic_path(target: str | os.PathLike[str]) -> Iterator[Path]:
 
 
 def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
-    """Read a TOML file, raising one-line ``ValueError``s naming the file: missing, not
-    UTF-8, or not valid TOML. ``kind`` names what the file should be (``"model file"``)."""
+    """Read a TOML file, raising one-line ``ValueError``s naming the file: missing, a
+    directory, not UTF-8, or not valid TOML. ``kind`` names what the file should be
+    (``"model file"``)."""
     import tomllib
 
     p = Path(path)
     if not p.is_file():
-        raise ValueError(f"{p}: no such {kind}")
+        raise ValueError(f"{p}: is a directory, not a {kind}" if p.is_dir() else
+                         f"{p}: no such {kind}")
     try:
         return tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:

@@ -65,3 +65,33 @@ def test_plot_record_labels() -> None:
                                               "displacement [m]"]
     assert axes[-1].get_xlabel() == "time [s]"
     assert "harmonic 2 Hz" in fig.texts[0].get_text()
+
+
+@pytest.mark.parametrize("name, text, expected", [
+    ("big.txt", "0.1\n0.2\n1e309\n0.3\n",
+     "big.txt: line 3: acceleration value 1e309 is not finite: it is beyond the largest "
+     "float (1.8e+308) and reads as inf"),
+    ("big.AT2", "NPTS= 4, DT= .01 SEC\n 0.1 0.2\n 1e309 0.3\n",
+     "big.AT2: line 3: acceleration value 1e309 is not finite"),
+    ("g.AT2", "IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n 0.1 0.2\n 1e308\n",
+     "g.AT2: line 4: acceleration value 1e+308 g is beyond the largest float"),
+])
+def test_record_value_beyond_the_largest_float_is_one_line_with_file_and_line(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], name: str, text: str,
+        expected: str) -> None:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    capsys.readouterr()
+    assert main(["record", str(path), "--dt", "0.01"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: {path}: ") and expected in err[0], err
+
+
+def test_record_directory_is_named_a_directory(tmp_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    folder = tmp_path / "records"
+    folder.mkdir()
+    capsys.readouterr()
+    assert main(["record", str(folder)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"error: {folder}: is a directory, not a record file"]

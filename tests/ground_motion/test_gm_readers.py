@@ -202,6 +202,35 @@ def test_non_finite_value(tmp_path: Path, bad: str) -> None:
         read_at2(path)
 
 
+@pytest.mark.parametrize("bad, shown", [
+    ("1e309", "1e309"),                      # overflows to inf when read
+    ("-2.5E+400", "-2.5E+400"),
+    ("1D309", "1D309"),                      # Fortran exponent
+    ("0.1E+00-0.2E+309", "-0.2E+309"),       # the second number of a fused run
+])
+def test_a_value_beyond_the_largest_float_is_named_as_written(tmp_path: Path, bad: str,
+                                                              shown: str) -> None:
+    path = _write(tmp_path, "big.AT2",
+                  PEER_HEADER + f"NPTS=  4, DT= .01 SEC\n  0.1  0.2\n  {bad}  0.3\n")
+    with pytest.raises(ValueError) as err:
+        read_at2(path)
+    assert str(err.value) == (f"{path}: line 6: acceleration value {shown} is not finite: it "
+                              "is beyond the largest float (1.8e+308) and reads as "
+                              f"{'-inf' if shown.startswith('-') else 'inf'}")
+
+
+def test_a_value_that_overflows_in_si_units_names_file_and_line(tmp_path: Path) -> None:
+    # finite in g, beyond the largest float in m/s²: no RuntimeWarning (an error in the tests)
+    path = _write(tmp_path, "g.AT2", PEER_HEADER + "NPTS=  5, DT= .01 SEC\n  0.1  0.2\n"
+                                                   "  0.3\n  0.4  1e308\n")
+    with pytest.raises(ValueError, match=r"g\.AT2: line 7: acceleration value 1e\+308 g is "
+                                         r"beyond the largest float \(1\.8e\+308\) in m/s2$"):
+        read_at2(path)
+    text = _write(tmp_path, "g.txt", "# accel [g]\n0.1\n-1.5e308\n")
+    with pytest.raises(ValueError, match=r"g\.txt: line 3: acceleration value -1\.5e\+308 g"):
+        read_text(text, dt=0.01, units="g")
+
+
 def test_empty_data(tmp_path: Path) -> None:
     path = _write(tmp_path, "empty.AT2", PEER_HEADER + "NPTS=  0, DT= .01 SEC\n")
     with pytest.raises(ValueError, match=r"empty\.AT2: line 4: NPTS must be a whole number"):
@@ -255,6 +284,15 @@ def test_text_bad_rows(tmp_path: Path) -> None:
         read_text(_write(tmp_path, "word.dat", "# header\ntime accel\n0 1\n"))
     with pytest.raises(ValueError, match=r"blank\.dat: no data values"):
         read_text(_write(tmp_path, "blank.dat", "# only a comment\n\n"))
+
+
+def test_text_names_the_column_of_a_value_that_is_not_finite(tmp_path: Path) -> None:
+    with pytest.raises(ValueError, match=r"t\.dat: line 2: time value 1e309 is not finite"):
+        read_text(_write(tmp_path, "t.dat", "0.0 1.0\n1e309 2.0\n"))
+    with pytest.raises(ValueError, match=r"a\.dat: line 2: acceleration value 1e309 is not"):
+        read_text(_write(tmp_path, "a.dat", "0.0 1.0\n0.1 1e309\n"))
+    with pytest.raises(ValueError, match=r"one\.dat: line 1: acceleration value inf is not"):
+        read_text(_write(tmp_path, "one.dat", "inf\n"), dt=0.01)
 
 
 # ------------------------------------------------------------------- dispatch

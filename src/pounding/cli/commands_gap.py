@@ -39,7 +39,8 @@ def _load_records(cfg: Any, files: list[Path], dt: float | None, units: str | No
     motions = []
     for f in files:
         if not f.is_file():
-            raise ValueError(f"--records: {f}: no such file")
+            raise ValueError(f"--records: {f}: " + ("is a directory, not a record file"
+                                                    if f.is_dir() else "no such file"))
         gm = read_record(f, dt=dt, units=units)
         if rec.duration is not None:
             gm = gm.trimmed(rec.duration)
@@ -104,7 +105,8 @@ def gap_cmd(
       pounding gap model.toml A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
     """
     from pounding.config import load_config
-    from pounding.studies.gap import DesignSpectrum, critical_gaps
+    from pounding.spectra import DesignSpectrum
+    from pounding.studies.gap import critical_gaps
 
     if more_records and not records:
         raise ValueError(f"unexpected argument(s) {', '.join(map(str, more_records))}: "

@@ -69,8 +69,10 @@ class RecordConfig(Section):
             base = Path((info.context or {}).get("base_dir", "."))
             path = (base / Path(self.file).expanduser()).resolve()  # type: ignore[arg-type]
             if not path.is_file():
-                raise field_error("file", f"no such file {str(path)!r} (got {self.file!r}; "
-                                           "relative paths start at the model file's folder)")
+                what = (f"{str(path)!r} is a directory, not a record file" if path.is_dir()
+                        else f"no such file {str(path)!r}")
+                raise field_error("file", f"{what} (got {self.file!r}; relative paths start "
+                                           "at the model file's folder)")
             self._path = path
         return self
 

@@ -5,7 +5,8 @@ from __future__ import annotations
 from matplotlib.figure import Figure
 
 from pounding.plot import new_figure
-from pounding.studies.gap import DesignSpectrum, GapStudy
+from pounding.spectra import DesignSpectrum
+from pounding.studies.gap import GapStudy
 
 RULE_STYLE = {"ABS": "tab:red", "SRSS": "tab:green", "DDC": "tab:purple"}
 """Colour of each code rule."""

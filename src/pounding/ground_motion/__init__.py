@@ -1,0 +1,40 @@
+"""Ground motions: acceleration records, their readers and synthetic inputs.
+
+A :class:`GroundMotion` is a uniformly sampled horizontal ground acceleration in m/s² whose
+first sample is at ``t = 0``. It is built by a reader, which converts the file's units to SI
+on reading (:func:`pounding.units.acceleration_factor`), or by a synthetic generator. One
+concept a module:
+
+* :mod:`~pounding.ground_motion.motion` -- :class:`GroundMotion`: peaks, velocity and
+  displacement, scaled and trimmed copies;
+* :mod:`~pounding.ground_motion.readers` -- the file readers, one module a format:
+  :func:`read_at2` (PEER strong-motion ``.AT2`` files, every header variant in common use),
+  :func:`read_text` (plain one-column, with ``dt``, or two-column time/acceleration text)
+  and :func:`read_record` (either of the above, chosen by suffix and content);
+* :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
+  :func:`bundled_records`: the records shipped in ``pounding/data`` (see
+  ``pounding/data/SOURCES.md`` for their provenance);
+* :mod:`~pounding.ground_motion.synthetic` -- :func:`harmonic`, :func:`sine_pulse`,
+  :func:`ricker`: closed-form inputs for tests.
+
+Every reader raises :class:`ValueError` naming the file, the line and the bad value. See
+``docs/ground_motion.md``.
+"""
+
+from pounding.ground_motion.bundled import bundled_records, el_centro, load_bundled
+from pounding.ground_motion.motion import GroundMotion
+from pounding.ground_motion.readers import ASSUMED, read_at2, read_record, read_text  # noqa: F401
+from pounding.ground_motion.synthetic import harmonic, ricker, sine_pulse
+
+__all__ = [
+    "GroundMotion",
+    "bundled_records",
+    "el_centro",
+    "harmonic",
+    "load_bundled",
+    "read_at2",
+    "read_record",
+    "read_text",
+    "ricker",
+    "sine_pulse",
+]
