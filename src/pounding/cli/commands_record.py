@@ -15,8 +15,9 @@ from pounding.cli.app import app, console  # noqa: F401
 @app.command("record")
 def record(
     files: Annotated[list[Path], typer.Argument(
-        help="Record files: PEER .AT2 (units from the header, g if none stated) or text "
-             "with one column (needs --dt) or two columns time, acceleration.",
+        help="Record files: PEER .AT2 (units from the header, g if none stated), K-NET/"
+             "KiK-net ASCII, COSMOS V1/V2, or text with one column (needs --dt) or two "
+             "columns time, acceleration.",
         show_default=False)],
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for files that do not give one.")] = None,
@@ -41,6 +42,8 @@ def record(
       pounding record elcentro.AT2 --plot elcentro.png
 
       pounding record accel.txt --dt 0.01 --units g
+
+      pounding record MYG0041103111446.NS CE1759.V2c
     """
     from pounding.ground_motion import read_record
 
