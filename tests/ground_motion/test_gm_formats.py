@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from pounding.cli import main
-from pounding.ground_motion import read_at2, read_cosmos, read_knet, read_record
+from pounding.ground_motion import load_bundled, read_at2, read_cosmos, read_knet, read_record
+from pounding.ground_motion.bundled import bundled_folder
 from pounding.units import G
 
 FORMATS = Path(__file__).parent / "formats"
@@ -22,7 +23,6 @@ KNET = FORMATS / "TST0010101010000.NS"
 KIKNET = FORMATS / "TSTH010007210339.NS2"
 COSMOS_ONE = FORMATS / "CE99999_chan1_360.V2c"
 COSMOS_CGS = FORMATS / "CE99999_all.V2C"
-PEKNOLD = Path(__file__).parent / "records" / "elcentro_1940_NS_peknold_8F10.5.AT2"
 
 KNET_COUNTS = [8009, 9006, 7998, 8001, 8009, 8007, 8002, 8005,
                8006, 8003, 8003, 8005, 8005, 8003, 8001, 8004,
@@ -201,8 +201,9 @@ VERIFICATION_HEADER = [  # OpenSees EXAMPLES/verification/elCentro.at2's layout 
 
 
 def _peknold_data_lines() -> list[str]:
-    """The data lines of the plain-layout Peknold file (its header is 4 lines)."""
-    return PEKNOLD.read_text(encoding="utf-8").splitlines()[4:]
+    """The data lines of the bundled plain-layout Peknold file (its header is 4 lines)."""
+    plain = bundled_folder().joinpath("elcentro_1940_NS_peknold_8F10.5.AT2")
+    return plain.read_text(encoding="utf-8").splitlines()[4:]
 
 
 def test_at2_seven_line_header_with_markers_reads_as_the_plain_file(tmp_path: Path) -> None:
@@ -213,7 +214,7 @@ def test_at2_seven_line_header_with_markers_reads_as_the_plain_file(tmp_path: Pa
                                *_peknold_data_lines(), "*** End Data ***"]) + "\n",
                     encoding="utf-8")
     gm = read_record(path)
-    plain = read_record(PEKNOLD)
+    plain = load_bundled("elcentro_1940_NS_peknold_8F10.5")
     assert gm.npts == plain.npts == 1559
     assert gm.dt == plain.dt == 0.02
     np.testing.assert_array_equal(gm.accel, plain.accel)

@@ -14,8 +14,11 @@ concept a module:
   time/acceleration text) and :func:`read_record` (any of the above, chosen by suffix and
   content; any other file is refused in one line naming the formats read);
 * :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
-  :func:`bundled_records`: the records shipped in ``pounding/data`` (see
-  ``pounding/data/SOURCES.md`` for their provenance);
+  :func:`bundled_records`: the ten records shipped in ``pounding/data/records`` (see its
+  ``SOURCES.md`` for their provenance);
+* :mod:`~pounding.ground_motion.suite` -- :class:`RecordSuite`, an ordered, named
+  collection of records (from a folder, a list of files or :func:`bundled_suite`), and
+  :func:`read_suite`;
 * :mod:`~pounding.ground_motion.synthetic` -- :func:`harmonic`, :func:`sine_pulse`,
   :func:`ricker`: closed-form inputs for tests.
 
@@ -33,11 +36,14 @@ from pounding.ground_motion.readers import (  # noqa: F401
     read_record,
     read_text,
 )
+from pounding.ground_motion.suite import RecordSuite, bundled_suite, read_suite
 from pounding.ground_motion.synthetic import harmonic, ricker, sine_pulse
 
 __all__ = [
     "GroundMotion",
+    "RecordSuite",
     "bundled_records",
+    "bundled_suite",
     "el_centro",
     "harmonic",
     "load_bundled",
@@ -45,6 +51,7 @@ __all__ = [
     "read_cosmos",
     "read_knet",
     "read_record",
+    "read_suite",
     "read_text",
     "ricker",
     "sine_pulse",
