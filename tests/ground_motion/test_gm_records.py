@@ -1,4 +1,4 @@
-"""The bundled real records (in ``pounding/data/records``) against the
+"""The bundled real records (the one copy of them, in ``pounding/data/records``) against the
 values an independent parser wrote into the SOURCES.md beside them, and their manifest."""
 
 from __future__ import annotations
