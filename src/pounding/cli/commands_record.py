@@ -46,7 +46,7 @@ def record(
 
       pounding record accel.txt --dt 0.01 --units g
 
-      pounding record MYG0041103111446.NS CE1759.V2c
+      pounding record MYG0041103111446.NS CE12345.V2c
 
       pounding record --bundled
     """
