@@ -35,7 +35,7 @@ The modules, one concept each:
   :func:`load_results`).
 """
 
-from pounding.studies.sweep.cases import Case, case_id
+from pounding.studies.sweep.cases import MAX_CASES, Case, case_id
 from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
 from pounding.studies.sweep.overrides import apply_overrides
@@ -51,6 +51,7 @@ from pounding.studies.sweep.table import NONDETERMINISTIC_COLUMNS, load_results
 
 __all__ = [
     "FLOOR_MEASURES",
+    "MAX_CASES",
     "MEASURES",
     "NONDETERMINISTIC_COLUMNS",
     "Case",

@@ -17,7 +17,13 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Case", "case_id"]
+__all__ = ["MAX_CASES", "Case", "case_id"]
+
+MAX_CASES = 1_000_000
+"""Most cases a sweep may have. The client holds every case and, at the end, every row in
+memory (about 2 kB a case), and a million cases of a few ms each are hours on a small
+machine: a larger table is almost surely a mistake (a grid with a parameter too many), and
+is refused before any case is made."""
 
 
 @dataclass(frozen=True)
@@ -52,8 +58,10 @@ def _norm(value: Any, where: str) -> Any:
     return value
 
 
-def _random_cases(table: dict[str, Any], where: str) -> tuple[tuple[str, ...], list[tuple]]:
-    """The parameters and rows of a ``[random]`` table (``n`` samples drawn with ``seed``)."""
+def _random_cases(table: dict[str, Any], where: str
+                  ) -> tuple[tuple[str, ...], list[tuple], list[list[Any]]]:
+    """The parameters, rows and samples (see :func:`case_rows`) of a ``[random]`` table
+    (``n`` samples drawn with ``seed``)."""
     t = dict(table)
     n = t.pop("n", None)
     seed = t.pop("seed", None)
@@ -62,10 +70,12 @@ def _random_cases(table: dict[str, Any], where: str) -> tuple[tuple[str, ...], l
                          f"(got {n!r})")
     if not isinstance(seed, int) or isinstance(seed, bool):
         raise ValueError(f"{where}: random.seed: required, an integer (got {seed!r})")
+    _check_count("random", n, f"n = {n:,}", where)
     if not t:
         raise ValueError(f"{where}: random: give at least one parameter, e.g. "
                          "\"contact.gap\" = [0.0, 0.05]")
     draws: list[Callable[[np.random.Generator], Any]] = []
+    choices: dict[int, list[Any]] = {}
     for key, spec in t.items():
         w = f"{where}: random.{key}"
         if isinstance(spec, list):
@@ -78,6 +88,7 @@ def _random_cases(table: dict[str, Any], where: str) -> tuple[tuple[str, ...], l
         if kind == "choice":
             if not isinstance(arg, list) or not arg:
                 raise ValueError(f"{w}: choice needs a non-empty list (got {arg!r})")
+            choices[len(draws)] = [_norm(v, w) for v in arg]
             draws.append(lambda g, a=arg: a[int(g.integers(len(a)))])
             continue
         if (not isinstance(arg, list) or len(arg) != 2
@@ -98,12 +109,26 @@ def _random_cases(table: dict[str, Any], where: str) -> tuple[tuple[str, ...], l
                              "choice")
     gen = np.random.Generator(np.random.PCG64(seed))
     rows = [tuple(d(gen) for d in draws) for _ in range(n)]
-    return tuple(t), rows
+    # the values to check: every choice, and the smallest and largest number drawn
+    samples = [choices[j] if j in choices else [min(r[j] for r in rows), max(r[j] for r in rows)]
+               for j in range(len(draws))]
+    return tuple(t), rows, samples
+
+
+def _check_count(kind: str, n: int, how: str, where: str) -> None:
+    """Refuse a case table of more than :data:`MAX_CASES` cases (before making them)."""
+    if n > MAX_CASES:
+        raise ValueError(f"{where}: [{kind}] gives {n:,} cases ({how}), more than the "
+                         f"{MAX_CASES:,} a sweep may have; split it into several sweeps or "
+                         "sample it with [random]")
 
 
 def case_rows(kind: str, table: dict[str, Any], where: str
-              ) -> tuple[tuple[str, ...], list[tuple]]:
-    """The parameters and the rows of values of a case table.
+              ) -> tuple[tuple[str, ...], list[tuple], list[list[Any]]]:
+    """The parameters, the rows of values and the values to check of a case table.
+
+    The number of cases is known before any is made: a table of more than
+    :data:`MAX_CASES` is refused first.
 
     Parameters
     ----------
@@ -120,11 +145,14 @@ def case_rows(kind: str, table: dict[str, Any], where: str
         The swept parameters (dotted paths), in the order of the table.
     rows : list of tuple
         One tuple of values per case, duplicates included.
+    samples : list of list
+        Per parameter, the values a check must see (:mod:`.checks`): every value given
+        (``[grid]``, ``[list]``, ``choice``), else the smallest and the largest drawn.
 
     Raises
     ------
     ValueError
-        A malformed table, one line naming the key.
+        A malformed table or one of too many cases, one line naming the key.
     """
     if kind == "random":
         return _random_cases(table, where)
@@ -139,14 +167,17 @@ def case_rows(kind: str, table: dict[str, Any], where: str
                              f"(got {vals!r})")
         cols.append([_norm(v, f"{where}: {kind}.{key}") for v in vals])
     if kind == "grid":
+        _check_count(kind, math.prod(len(c) for c in cols),
+                     " × ".join(f"{len(c):,}" for c in cols) + " values", where)
         rows = list(itertools.product(*cols))
     else:
         lengths = {len(c) for c in cols}
         if len(lengths) != 1:
             raise ValueError(f"{where}: list: every parameter needs the same number of "
                              f"values (got {dict(zip(params, map(len, cols)))})")
+        _check_count(kind, len(cols[0]), f"{len(cols[0]):,} values per parameter", where)
         rows = list(zip(*cols))
-    return params, rows
+    return params, rows, cols
 
 
 def unique_cases(params: Sequence[str], rows: list[tuple]) -> list[Case]:

@@ -1,10 +1,11 @@
-"""Checks of a sweep before anything runs: parameter paths name keys of a model file, and
-the cases pass the key check."""
+"""Checks of a sweep before anything runs: parameter paths name keys of a model file, every
+value of every parameter has the right type, and no case is too large for memory."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from pounding.studies.sweep.cases import _canon
 from pounding.studies.sweep.overrides import apply_overrides
 
 if TYPE_CHECKING:
@@ -69,20 +70,134 @@ def _unwrap(tp: Any) -> Any:
     return tp
 
 
-def _check_first_case(sweep: Sweep, where: str) -> None:
-    """The first case must at least pass the key check (catches misspelt paths early)."""
+def _is_type_error(err: dict[str, Any]) -> bool:
+    """A validation error that no value of the right type would give: a wrong type, or a
+    key the model file does not have (not a value out of range, checked per case)."""
+    typ = str(err.get("type", ""))
+    return typ.endswith(("_type", "_parsing")) or typ in ("int_from_float", "extra_forbidden")
+
+
+def _under(loc: tuple[Any, ...], path: str) -> bool:
+    """Whether a validation error at ``loc`` lies under the dotted parameter ``path``."""
+    parts = path.split(".")
+    if len(loc) < len(parts):
+        return False
+    for at, part in zip(loc, parts):
+        if part == "*" or part.isdigit():
+            if not isinstance(at, int) or (part.isdigit() and at != int(part)):
+                return False
+        elif at != part:
+            return False
+    return True
+
+
+def _errors_text(exc: Any, errors: list[Any]) -> str:
+    """The chosen errors of a ValidationError as one line (``; ``-separated)."""
     from pydantic import ValidationError
 
-    from pounding.config import RunConfig, format_validation_error
+    from pounding.config import format_validation_error
+
+    keep = [{k: e[k] for k in ("type", "loc", "input", "ctx") if k in e} for e in errors]
+    sub = ValidationError.from_exception_data(exc.title, keep)
+    return format_validation_error(sub).replace("\n", "; ")
+
+
+def _validate(sweep: Sweep, values: tuple[Any, ...]) -> tuple[Any, Any]:
+    """``(config, None)`` for a case that validates, else ``(None, the ValidationError)``."""
+    from pydantic import ValidationError
+
+    from pounding.config import RunConfig
+
+    data = apply_overrides(sweep.base, sweep.params, values)
+    try:
+        return RunConfig.model_validate(data, context={"base_dir": sweep.base_dir}), None
+    except ValidationError as exc:
+        return None, exc
+
+
+def _size_key(cfg: Any) -> str:
+    """What decides the memory of a run: structure, record, output step and duration (not
+    the contact law, its gaps, the record's scale, or the tolerances)."""
+    data = cfg.model_dump(mode="json", exclude_none=True)
+    contact = data.get("contact") or {}
+    record = {k: v for k, v in data["record"].items() if k not in ("scale", "pga_g")}
+    return _canon({"building": data["building"], "record": record,
+                   "solver": [data["solver"].get("dt"), data["solver"].get("duration")],
+                   "contact": [contact.get("floor_to_column"), contact.get("level_tolerance")]})
+
+
+def _check_size(cfg: Any, label: str, seen: set[str]) -> None:
+    """Refuse a case whose run would not fit in memory: the check of ``pounding run``
+    (:func:`pounding.integrate.check_history_size`), once per structure, record and grid."""
+    from pounding.integrate import check_history_size, grid_step
+
+    key = _size_key(cfg)
+    if key in seen:
+        return
+    seen.add(key)
+    try:
+        model, motion, solver = cfg.build()
+    except Exception:  # noqa: BLE001  (such a case fails when it runs, in its row)
+        return
+    step = grid_step(motion.dt, solver["dt"])
+    t_end = motion.duration if solver["duration"] is None else solver["duration"]
+    try:
+        check_history_size(model, t_end, step)
+    except ValueError as exc:
+        raise ValueError(f"{label}: {exc}") from None
+
+
+def check_cases(sweep: Sweep, samples: list[list[Any]], where: str, kind: str) -> None:
+    """Check the cases of a sweep before any runs, without making every case.
+
+    Every value of every parameter (``samples``, see :func:`.cases.case_rows`) is put,
+    alone, into the first case and validated: a value of the wrong type (``"abc"`` for a
+    number) or with unknown keys refuses the sweep; and the first case must pass the key
+    check (catches misspelt keys early). A value out of range is not refused here: its cases
+    fail in their rows and the sweep goes on. Each such case (and the first) that builds
+    must also fit in memory, as ``pounding run`` requires (checked once per structure,
+    record and output grid); combinations of values are checked when they run.
+
+    Parameters
+    ----------
+    sweep : Sweep
+        The sweep, its cases made.
+    samples : list of list
+        Per parameter, the values to check.
+    where : str
+        Prefix of error messages (the sweep file).
+    kind : str
+        The case table (``grid``, ``list``, ``random``), named in the messages.
+
+    Raises
+    ------
+    ValueError
+        One line naming the table, the parameter, the value and the problem.
+    """
+    from pounding.config import format_validation_error
 
     if not sweep.cases:
         raise ValueError(f"{where}: the sweep has no cases")
-    data = apply_overrides(sweep.base, sweep.params, sweep.cases[0].values)
-    try:
-        RunConfig.model_validate(data, context={"base_dir": sweep.base_dir})
-    except ValidationError as exc:
-        unknown = [e for e in exc.errors(include_url=False) if e.get("type") == "extra_forbidden"]
-        if unknown:
-            raise ValueError(f"{where}: case 0: "
-                             + format_validation_error(exc).replace("\n", "; ")) from None
-
+    first = sweep.cases[0].values
+    sized: set[str] = set()
+    for j, p in enumerate(sweep.params):
+        done: set[str] = set()
+        for v in samples[j]:
+            key = _canon(v)
+            if key in done:
+                continue
+            done.add(key)
+            cfg, exc = _validate(sweep, first[:j] + (v,) + first[j + 1:])
+            label = f"{where}: {kind}.{p} = {_canon(v)}"
+            if exc is not None:
+                bad = [e for e in exc.errors(include_url=False)
+                       if _is_type_error(e) and _under(tuple(e["loc"]), p)]
+                if bad:
+                    raise ValueError(f"{label}: {_errors_text(exc, bad)}")
+            else:
+                _check_size(cfg, label, sized)
+    _, exc = _validate(sweep, first)  # unknown keys elsewhere than under a parameter
+    if exc is not None and any(e.get("type") == "extra_forbidden"
+                               for e in exc.errors(include_url=False)):
+        raise ValueError(f"{where}: case 0: "
+                         + format_validation_error(exc).replace("\n", "; ")) from None

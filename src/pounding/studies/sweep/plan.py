@@ -15,7 +15,7 @@ from typing import Any
 
 from pounding.io import read_toml
 from pounding.studies.sweep.cases import Case, _canon, case_rows, unique_cases
-from pounding.studies.sweep.checks import _check_first_case, _check_path
+from pounding.studies.sweep.checks import _check_path, check_cases
 
 __all__ = ["HISTORY_FORMATS", "Sweep", "load_sweep", "parse_sweep"]
 
@@ -89,11 +89,12 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     table = data[kind]
     if not isinstance(table, dict):
         raise ValueError(f"{where}: {kind} must be a table (got {table!r})")
-    params, rows = case_rows(kind, table, where)
+    params, rows, samples = case_rows(kind, table, where)
     for p in params:
         _check_path(p, base_data, where)
     # record files in the cases are relative to the sweep file: make them absolute
     rows = [tuple(_resolve_value(p, v, here) for p, v in zip(params, r)) for r in rows]
+    samples = [[_resolve_value(p, v, here) for v in vals] for p, vals in zip(params, samples)]
     cases = unique_cases(params, rows)
     hist = data.get("histories", False)
     if hist is False or hist is None or hist == "none":
@@ -109,7 +110,7 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     sweep = Sweep(name=str(data.get("name", "sweep")), base=base_data, base_dir=model_dir,
                   params=params, cases=cases, out=here / out, histories=hist,
                   batch_size=batch, duplicates=len(rows) - len(cases))
-    _check_first_case(sweep, where)
+    check_cases(sweep, samples, where, kind)
     return sweep
 
 
