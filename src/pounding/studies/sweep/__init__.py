@@ -40,7 +40,7 @@ from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
 from pounding.studies.sweep.overrides import apply_overrides
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep, parse_sweep  # noqa: F401
-from pounding.studies.sweep.runner import SweepOutcome, run_sweep
+from pounding.studies.sweep.runner import SweepInterrupted, SweepOutcome, SweepStopped, run_sweep
 from pounding.studies.sweep.store import (  # noqa: F401  (names of the output folder)
     HISTORIES_DIR,
     MANIFEST_FILE,
@@ -56,7 +56,9 @@ __all__ = [
     "NONDETERMINISTIC_COLUMNS",
     "Case",
     "Sweep",
+    "SweepInterrupted",
     "SweepOutcome",
+    "SweepStopped",
     "apply_overrides",
     "case_id",
     "load_results",

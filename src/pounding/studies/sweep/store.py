@@ -11,6 +11,7 @@ Layout::
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -29,43 +30,92 @@ HISTORIES_DIR = "histories"
 MANIFEST_FILE = "sweep.json"
 
 
-def _prepare_out(sweep: Sweep, out: Path, overwrite: bool) -> None:
-    """Make ``out`` ready for ``sweep``: resume it, start it afresh, or refuse.
+def _check_out(sweep: Sweep, out: Path, overwrite: bool) -> bool:
+    """Whether ``out`` holds ``sweep`` to resume; refuse what cannot be its output folder.
+
+    Nothing is written: a sweep that cannot start (no scheduler answers, say) leaves the
+    folder as it was.
 
     Raises
     ------
     ValueError
-        ``out`` is a file, a folder of another sweep (without ``overwrite``) or a non-empty
+        One line: ``out`` cannot be made or written (a file on its path, a read-only
+        folder), is a file, holds another sweep (without ``overwrite``), or is a non-empty
         folder that is not a sweep's.
     """
-    manifest = out / MANIFEST_FILE
-    if out.exists():
-        if not out.is_dir():
-            raise ValueError(f"out: {out} exists and is not a folder")
-        if manifest.is_file():
-            old = json.loads(manifest.read_text(encoding="utf-8")).get("fingerprint")
-            if old == sweep.fingerprint and not overwrite:
-                return  # resume
-            if old != sweep.fingerprint and not overwrite:
-                raise ValueError(f"out: {out} holds the results of another sweep (its base "
-                                 "model or cases differ); give --overwrite to start afresh "
-                                 "or choose another --out")
-            for name in (PARTS_DIR, HISTORIES_DIR, RESULTS_FILE, MANIFEST_FILE):
-                target = out / name
-                if target.is_dir():
-                    shutil.rmtree(target)
-                elif target.exists():
-                    target.unlink()
-        elif any(out.iterdir()):
-            raise ValueError(f"out: {out} is a non-empty folder that is not a sweep output "
-                             f"(no {MANIFEST_FILE}); choose another --out")
-    out.mkdir(parents=True, exist_ok=True)
-    from pounding.io import write_text
+    from pounding.io import check_writable
 
-    write_text(manifest, json.dumps({"name": sweep.name, "fingerprint": sweep.fingerprint,
-                                     "params": list(sweep.params), "n_cases": len(sweep.cases),
-                                     "source": str(sweep.source) if sweep.source else None},
-                                    indent=2))
+    check_writable(out, inside=True)
+    if not out.exists():
+        return False
+    if not out.is_dir():
+        raise ValueError(f"out: {out} exists and is not a folder")
+    manifest = out / MANIFEST_FILE
+    if manifest.is_file():
+        old = json.loads(manifest.read_text(encoding="utf-8")).get("fingerprint")
+        if old != sweep.fingerprint and not overwrite:
+            raise ValueError(f"out: {out} holds the results of another sweep (its base "
+                             "model or cases differ); give --overwrite to start afresh "
+                             "or choose another --out")
+        return not overwrite
+    if any(out.iterdir()):
+        raise ValueError(f"out: {out} is a non-empty folder that is not a sweep output "
+                         f"(no {MANIFEST_FILE}); choose another --out")
+    return False
+
+
+def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path]) -> None:
+    """Make ``out`` ready (checked by :func:`_check_out`): unless resuming, remove an
+    earlier sweep's files and write the manifest; make the parts folder. What it creates
+    (folders, the manifest) is appended to ``created`` as it goes, for
+    :func:`_remove_created`."""
+    from pounding.io import make_folders, write_text
+
+    created += make_folders(out)
+    manifest = out / MANIFEST_FILE
+    if not resume:
+        for name in (PARTS_DIR, HISTORIES_DIR, RESULTS_FILE, MANIFEST_FILE):
+            target = out / name
+            if target.is_dir():
+                shutil.rmtree(target)
+            elif target.exists():
+                target.unlink()
+        write_text(manifest, json.dumps(
+            {"name": sweep.name, "fingerprint": sweep.fingerprint, "params": list(sweep.params),
+             "n_cases": len(sweep.cases), "source": str(sweep.source) if sweep.source else None},
+            indent=2))
+        created.append(manifest)
+    parts = out / PARTS_DIR
+    if not parts.is_dir():
+        parts.mkdir()
+        created.append(parts)
+
+
+def _remove_created(out: Path, created: list[Path]) -> None:
+    """After a sweep stopped with no case saved: remove what :func:`_prepare_out` created
+    (the folder, if it made it), so the folder is as it was. Nothing else is touched: a
+    part, a history or a file of an earlier sweep keeps the folder."""
+    from pounding.io import remove_empty_folders
+
+    parts = out / PARTS_DIR
+    if parts in created:
+        with contextlib.suppress(OSError):
+            parts.rmdir()  # only if empty
+    manifest = out / MANIFEST_FILE
+    if manifest in created and [p.name for p in out.iterdir()] == [MANIFEST_FILE]:
+        manifest.unlink()
+    remove_empty_folders([p for p in created if p not in (parts, manifest)])
+
+
+def _saved_ids(folder: Path) -> set[str]:
+    """The ids of the cases saved in the part files of ``folder`` (their id column only)."""
+    import pyarrow.parquet as pq
+
+    ids: set[str] = set()
+    for p in folder.glob("part-*.parquet") if folder.is_dir() else ():
+        with contextlib.suppress(Exception):
+            ids.update(pq.read_table(p, columns=["case_id"]).column("case_id").to_pylist())
+    return ids
 
 
 def _remove_temporaries(out: Path) -> None:
