@@ -157,3 +157,22 @@ def test_the_step_budget_is_an_option():
         simulate(sdof_pair(KV), el_centro(), duration=3.0, max_rk_steps=100)
     with pytest.raises(ValueError, match="max_rk_steps"):
         simulate(sdof_pair(KV), el_centro(), duration=3.0, max_rk_steps=0)
+
+
+def test_a_zero_gap_between_buildings_at_rest_is_integrated_and_matches_the_reference():
+    # Two 10-storey buildings touching at rest (gap 0): their floors come into contact at
+    # once, several closer together than the time resolution. Locating one such onset no
+    # longer shortens the step, so the event loop used to pass between two contacts for
+    # ever (a run that never ended); the step is now accepted and the other contact's impact
+    # begins at its end. Checked against the SciPy reference, which stops at every event.
+    b1 = ShearBuilding.uniform(10, 6e5, 8e8)
+    b2 = ShearBuilding.uniform(10, 4e5, 1.2e9)
+    model = PoundingModel([b1, b2], [0.0], NLVE)
+    gm = el_centro().trimmed(1.5)
+    res = simulate(model, gm, max_rk_steps=200_000)
+    ref = simulate_reference(model, gm)
+    assert res.n_impacts == ref.n_impacts > 5
+    scale = ref.peak_contact_force.max()
+    np.testing.assert_allclose(res.peak_contact_force, ref.peak_contact_force, atol=1e-5 * scale)
+    np.testing.assert_allclose(res.displacement, ref.displacement, atol=1e-7)
+    assert res.energy_balance_error < 1e-6

@@ -144,7 +144,12 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                                       last_f[:, LF_GRAZED])
             ev_c = -1
             ev_kind = 0
+            h_before = h_acc
             while ce >= 0:
+                if ws_i[I_NSTEPS] > ws_i[I_STEP_BUDGET]:
+                    ws_i[I_FAILED] = FAIL_BUDGET
+                    ws_i[I_FAIL_STEP] = k
+                    return -1
                 # locate on real RK steps by the Illinois method, keeping the 'after' side
                 g_lo = event_value(kind, ce, x, n, cdof, cw, cgap, cparams, s_lo, s_hi)
                 g_hi = event_value(kind, ce, y1, n, cdof, cw, cgap, cparams, s_lo, s_hi)
@@ -196,6 +201,13 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 ev_c = ce
                 ev_kind = kind
                 last = False
+                if h_acc >= h_before:
+                    # Two events closer than the time resolution (contacts touching at
+                    # once from rest at a zero gap): locating one no longer shortens the
+                    # step. Accept it; a contact it leaves open but penetrated starts its
+                    # impact at the step's end (commit_contacts).
+                    break
+                h_before = h_acc
                 # any other event earlier in this shorter step?
                 te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, ccode,
                                           cparams, committed, s_lo, s_hi, ev_c, ev_kind,

@@ -65,8 +65,10 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
     for c in range(nc):
         dsum, rate = gap_row(c, x, n, cdof, cw)
         delta = dsum - cgap[c]
-        if c == ev_c and ev_kind == EV_ONSET:
-            # contact onset (contract step 3): commit v0 at the located instant
+        if (c == ev_c and ev_kind == EV_ONSET) or (committed[c, V0] == 0.0 and delta > 0.0):
+            # contact onset (contract step 3): commit v0 at the located instant (or at the
+            # end of a step whose other event, closer than the time resolution, ended it
+            # with this gap already closed)
             committed[c, V0] = max(rate, V0_MIN)
             committed[c, SLIP] = 0.0
             committed[c, DMAX] = max(delta, 0.0)
