@@ -5,12 +5,20 @@ its period.
   Sa or Sd against the period, and the ASCE 7-16 §11.4.6 spectrum
   (:meth:`DesignSpectrum.asce7`);
 * :mod:`pounding.spectra.modal` -- a building's peak floor displacements from a spectrum,
-  fundamental mode only (:func:`spectral_displacements`, :func:`fundamental_mode`).
+  fundamental mode only (:func:`spectral_displacements`, :func:`fundamental_mode`);
+* :mod:`pounding.spectra.response` -- elastic response spectra of records (Sd, PSV, PSA,
+  absolute acceleration), exact for records linear between samples
+  (:func:`response_spectrum`, :class:`ResponseSpectrum`); its compiled kernel is
+  :mod:`pounding.spectra._kernel`, tested against :mod:`pounding.spectra.reference`.
+
+Nothing here imports numba until a spectrum is computed. See ``docs/spectra.md``.
 
 Used by the gap study (:mod:`pounding.studies.gap`, ``docs/gap.md``).
 """
 
 from pounding.spectra.design import DesignSpectrum
 from pounding.spectra.modal import fundamental_mode, spectral_displacements
+from pounding.spectra.response import ResponseSpectrum, response_spectrum
 
-__all__ = ["DesignSpectrum", "fundamental_mode", "spectral_displacements"]
+__all__ = ["DesignSpectrum", "ResponseSpectrum", "fundamental_mode", "response_spectrum",
+           "spectral_displacements"]
