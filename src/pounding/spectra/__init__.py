@@ -9,7 +9,9 @@ its period.
 * :mod:`pounding.spectra.response` -- elastic response spectra of records (Sd, PSV, PSA,
   absolute acceleration), exact for records linear between samples
   (:func:`response_spectrum`, :class:`ResponseSpectrum`); its compiled kernel is
-  :mod:`pounding.spectra._kernel`, tested against :mod:`pounding.spectra.reference`.
+  :mod:`pounding.spectra._kernel`, tested against :mod:`pounding.spectra.reference`;
+* :mod:`pounding.spectra.rotd` -- RotD50, RotD100 (Boore 2010) and the geometric mean of two
+  horizontal components (:func:`rotd_spectrum`, :class:`RotDSpectrum`).
 
 Nothing here imports numba until a spectrum is computed. See ``docs/spectra.md``.
 
@@ -19,6 +21,7 @@ Used by the gap study (:mod:`pounding.studies.gap`, ``docs/gap.md``).
 from pounding.spectra.design import DesignSpectrum
 from pounding.spectra.modal import fundamental_mode, spectral_displacements
 from pounding.spectra.response import ResponseSpectrum, response_spectrum
+from pounding.spectra.rotd import RotDSpectrum, rotd_spectrum
 
-__all__ = ["DesignSpectrum", "ResponseSpectrum", "fundamental_mode", "response_spectrum",
-           "spectral_displacements"]
+__all__ = ["DesignSpectrum", "ResponseSpectrum", "RotDSpectrum", "fundamental_mode",
+           "response_spectrum", "rotd_spectrum", "spectral_displacements"]
