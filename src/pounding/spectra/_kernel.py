@@ -161,6 +161,19 @@ def _step_peak(y0: float, y1: float, l0: float, l1: float, p: float, q: float, m
 
 
 @njit(cache=True)
+def _combined(wrow: np.ndarray, l0: np.ndarray, l1: np.ndarray, p: np.ndarray,
+              q: np.ndarray) -> tuple[float, float, float, float]:
+    """The linear and oscillating parts of one direction: each component's, weighted."""
+    a = b = c = d = 0.0
+    for k in range(wrow.size):
+        a += wrow[k] * l0[k]
+        b += wrow[k] * l1[k]
+        c += wrow[k] * p[k]
+        d += wrow[k] * q[k]
+    return a, b, c, d
+
+
+@njit(cache=True)
 def peaks(accel: np.ndarray, h: float, omegas: np.ndarray, zetas: np.ndarray,
           weights: np.ndarray, absolute: bool) -> tuple[np.ndarray, np.ndarray]:
     """Peak relative displacement and (if ``absolute``) peak absolute acceleration of every
@@ -191,18 +204,12 @@ def peaks(accel: np.ndarray, h: float, omegas: np.ndarray, zetas: np.ndarray,
     nz, nw = zetas.size, omegas.size
     sd = np.zeros((nz, nw, n_dir))
     sa = np.zeros((nz, nw, n_dir))
-    u = np.zeros(n_comp)
-    v = np.zeros(n_comp)
-    # per component over the current step: samples, linear and oscillating parts, bounds
-    un = np.zeros(n_comp)
-    vn = np.zeros(n_comp)
-    lu0 = np.zeros(n_comp)
-    lu1 = np.zeros(n_comp)
-    pu = np.zeros(n_comp)
-    qu = np.zeros(n_comp)
-    pa = np.zeros(n_comp)
-    qa = np.zeros(n_comp)
-    mc = np.zeros(n_comp)
+    # per component: the state, and over the current step the next samples, the linear and
+    # oscillating parts of u and of the absolute acceleration, and the bound on |ü|
+    st = np.zeros((13, n_comp))
+    u, v, un, vn, lu0, lu1, pu, qu, la0, la1, pa, qa, mc = (
+        st[0], st[1], st[2], st[3], st[4], st[5], st[6], st[7], st[8], st[9], st[10], st[11],
+        st[12])
     for iz in range(nz):
         zeta = zetas[iz]
         for iw in range(nw):
@@ -227,6 +234,8 @@ def peaks(accel: np.ndarray, h: float, omegas: np.ndarray, zetas: np.ndarray,
                     # ü = e^{−στ}(P cos + Q sin) over the step: no linear part
                     acc0 = -g0 - 2.0 * sig * v[c] - w2 * u[c]
                     jerk0 = -s - 2.0 * sig * acc0 - w2 * v[c]
+                    la0[c] = g0
+                    la1[c] = s
                     pa[c] = acc0
                     qa[c] = (jerk0 + sig * acc0) / wd
                     mc[c] = math.sqrt(pa[c] * pa[c] + qa[c] * qa[c])
@@ -244,16 +253,7 @@ def peaks(accel: np.ndarray, h: float, omegas: np.ndarray, zetas: np.ndarray,
                     if abs(y1) > pk_u[d]:
                         pk_u[d] = abs(y1)
                     if max(abs(yu[d]), abs(y1)) + m * h * h * 0.125 > pk_u[d]:
-                        l0 = 0.0
-                        l1 = 0.0
-                        p = 0.0
-                        q = 0.0
-                        for c in range(n_comp):
-                            wt = weights[d, c]
-                            l0 += wt * lu0[c]
-                            l1 += wt * lu1[c]
-                            p += wt * pu[c]
-                            q += wt * qu[c]
+                        l0, l1, p, q = _combined(weights[d], lu0, lu1, pu, qu)
                         pk_u[d] = _step_peak(yu[d], y1, l0, l1, p, q, m, sig, wd, w, h,
                                              pk_u[d])
                     yu[d] = y1
@@ -265,16 +265,7 @@ def peaks(accel: np.ndarray, h: float, omegas: np.ndarray, zetas: np.ndarray,
                         if abs(y1) > pk_a[d]:
                             pk_a[d] = abs(y1)
                         if max(abs(ya[d]), abs(y1)) + w2 * m * h * h * 0.125 > pk_a[d]:
-                            l0 = 0.0
-                            l1 = 0.0
-                            p = 0.0
-                            q = 0.0
-                            for c in range(n_comp):
-                                wt = weights[d, c]
-                                l0 += wt * accel[c, i]
-                                l1 += wt * (accel[c, i + 1] - accel[c, i]) / h
-                                p += wt * pa[c]
-                                q += wt * qa[c]
+                            l0, l1, p, q = _combined(weights[d], la0, la1, pa, qa)
                             pk_a[d] = _step_peak(ya[d], y1, l0, l1, p, q, w2 * m, sig, wd, w,
                                                  h, pk_a[d])
                         ya[d] = y1

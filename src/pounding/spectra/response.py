@@ -40,25 +40,31 @@ def default_periods() -> FloatArray:
     return np.geomspace(0.02, 5.0, 100)
 
 
+def _checked(values: ArrayLike, name: str, what: str, ok: Any, rule: str) -> FloatArray:
+    """``values`` as a 1-D float array, or a one-line ValueError naming the first one that
+    ``ok`` refuses."""
+    try:
+        x = np.atleast_1d(np.asarray(values, dtype=float)).ravel()
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}: must be numbers (got {values!r})") from None
+    if x.size == 0:
+        raise ValueError(f"{name}: give at least one {what} (got none)")
+    bad = ~(np.isfinite(x) & ok(x))
+    if np.any(bad):
+        raise ValueError(f"{name}: every {what} must be {rule} (got {x[bad][0]:g})")
+    return x
+
+
 def check_periods(periods: ArrayLike, name: str = "periods") -> FloatArray:
     """Periods [s] as a 1-D float array, each finite and > 0.
 
     Raises
     ------
     ValueError
-        ``"<name>: must be > 0 (got <value>)"`` for the first bad one.
+        ``"<name>: every period must be finite and > 0 s (got <value>)"`` for the first bad
+        one.
     """
-    try:
-        t = np.atleast_1d(np.asarray(periods, dtype=float)).ravel()
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}: must be numbers (got {periods!r})") from None
-    if t.size == 0:
-        raise ValueError(f"{name}: give at least one period (got none)")
-    bad = ~(np.isfinite(t) & (t > 0.0))
-    if np.any(bad):
-        raise ValueError(f"{name}: every period must be finite and > 0 s "
-                         f"(got {t[bad][0]:g})")
-    return t
+    return _checked(periods, name, "period", lambda t: t > 0.0, "finite and > 0 s")
 
 
 def check_damping(damping: ArrayLike, name: str = "damping") -> FloatArray:
@@ -67,19 +73,11 @@ def check_damping(damping: ArrayLike, name: str = "damping") -> FloatArray:
     Raises
     ------
     ValueError
-        ``"<name>: must be in [0, 1) (got <value>)"`` for the first bad one.
+        ``"<name>: every damping ratio must be in [0, 1), ... (got <value>)"`` for the first
+        bad one.
     """
-    try:
-        z = np.atleast_1d(np.asarray(damping, dtype=float)).ravel()
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}: must be numbers (got {damping!r})") from None
-    if z.size == 0:
-        raise ValueError(f"{name}: give at least one damping ratio (got none)")
-    bad = ~(np.isfinite(z) & (z >= 0.0) & (z < 1.0))
-    if np.any(bad):
-        raise ValueError(f"{name}: every damping ratio must be in [0, 1), a fraction of "
-                         f"critical (0.05 = 5 %) (got {z[bad][0]:g})")
-    return z
+    return _checked(damping, name, "damping ratio", lambda z: (z >= 0.0) & (z < 1.0),
+                    "in [0, 1), a fraction of critical (0.05 = 5 %)")
 
 
 def _numbers(spec: str, name: str) -> list[float]:
