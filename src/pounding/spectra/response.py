@@ -240,7 +240,9 @@ def compute_peaks(accel: FloatArray, dt: float, periods: FloatArray, damping: Fl
     and peak absolute acceleration [m/s²], shaped (n_damping, n_periods, n_directions)."""
     from pounding.spectra._kernel import peaks
 
-    return peaks(np.ascontiguousarray(accel, dtype=np.float64), float(dt),
+    # a writable copy: a record's read-only array would be another type to numba, and
+    # compile the kernel a second time
+    return peaks(np.array(accel, dtype=np.float64, order="C"), float(dt),
                  np.ascontiguousarray(2.0 * np.pi / periods, dtype=np.float64),
                  np.ascontiguousarray(damping, dtype=np.float64),
                  np.ascontiguousarray(weights, dtype=np.float64), bool(absolute))
