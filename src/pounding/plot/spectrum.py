@@ -32,7 +32,7 @@ def plot_spectra(periods: NDArray[np.float64],
     curves : sequence of (label, PSA [g]) pairs
         One line each (label: record and damping ratio, or a RotD measure).
     designs : sequence of DesignSpectrum
-        Drawn dashed (Sa [g]) over the periods of the plot that their tables cover.
+        Drawn in black, dashed, dotted, ... (Sa [g]) over the periods of the plot that their tables cover.
     title : str
         Figure title.
     log_period : bool
@@ -42,7 +42,8 @@ def plot_spectra(periods: NDArray[np.float64],
     ax = fig.subplots()
     for label, psa in curves:
         ax.plot(periods, psa, lw=1.2, label=label)
-    for spec in designs:
+    styles = ("--", ":", "-.", (0, (5, 2, 1, 2)))
+    for n, spec in enumerate(designs):
         lo, hi = max(spec.periods[0], float(periods.min())), min(spec.periods[-1],
                                                                  float(periods.max()))
         if hi <= lo:
@@ -50,7 +51,8 @@ def plot_spectra(periods: NDArray[np.float64],
         t = np.geomspace(max(lo, 1e-3), hi, 400) if log_period else np.linspace(lo, hi, 400)
         t = np.union1d(t, spec.periods[(spec.periods >= lo) & (spec.periods <= hi)])
         t = t[t > 0.0]
-        ax.plot(t, spec.sa_g(t), "--", color="black", lw=1.0, label=spec.name)
+        ax.plot(t, spec.sa_g(t), linestyle=styles[n % len(styles)], color="black", lw=1.2,
+                label=spec.name)
     if log_period:
         from matplotlib.ticker import FuncFormatter
 
