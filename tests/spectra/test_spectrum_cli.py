@@ -16,7 +16,8 @@ from pounding.ground_motion import el_centro
 from pounding.spectra import response_spectrum, rotd_spectrum
 
 ROOT = Path(__file__).resolve().parents[2]
-ELC = ROOT / "src" / "pounding" / "data" / "elcentro_1940_IV_ELC9_180_PEER.AT2"
+# the bundled El Centro file, wherever pounding/data keeps it
+ELC = next((ROOT / "src" / "pounding" / "data").rglob("elcentro_1940_IV_ELC9_180_PEER.AT2"))
 
 
 def _rows(path: Path) -> list[dict[str, str]]:
