@@ -1,5 +1,6 @@
 """Loss-free output: every file is written to a temporary name beside its target and moved
-into place only when complete, so an interrupted run never leaves a half-written file.
+into place only when complete, so an interrupted run never leaves a half-written file; and
+the checks and folder bookkeeping every output folder (of a run, of a sweep) shares.
 """
 
 from __future__ import annotations
@@ -66,3 +67,52 @@ def write_text(target: str | os.PathLike[str], text: str) -> Path:
     with atomic_path(target) as tmp:
         tmp.write_text(text, encoding="utf-8")
     return Path(target)
+
+
+def check_writable(out_dir: str | os.PathLike[str], inside: bool = False) -> None:
+    """Refuse, before anything is written, an output folder that cannot be made or written.
+
+    The nearest existing folder above ``out_dir`` (with ``inside``, ``out_dir`` itself if
+    it exists: for outputs written into the folder rather than moved into place) must be a
+    folder this process can write in.
+
+    Parameters
+    ----------
+    out_dir : path-like
+        The output folder (``--out``).
+    inside : bool
+        The output is written inside ``out_dir`` (a sweep's), not beside it (a run's).
+
+    Raises
+    ------
+    ValueError
+        One line: a file stands where a folder must be, or the folder is read-only.
+    """
+    out_dir = Path(out_dir)
+    p = out_dir.absolute() if inside else out_dir.absolute().parent
+    while not p.exists() and not p.is_symlink():
+        p = p.parent
+    if not p.is_dir():
+        raise ValueError(f"out: {out_dir} cannot be made: {p} is a file, not a folder; "
+                         "choose another --out")
+    if not os.access(p, os.W_OK | os.X_OK):
+        raise ValueError(f"out: cannot write in {p} (a read-only file system, or no "
+                         "permission); choose another --out")
+
+
+def make_folders(folder: str | os.PathLike[str]) -> list[Path]:
+    """Create ``folder`` and its missing ancestors; return those created, deepest last."""
+    missing = []
+    p = Path(folder).absolute()
+    while not p.exists():
+        missing.append(p)
+        p = p.parent
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    return missing[::-1]
+
+
+def remove_empty_folders(created: list[Path]) -> None:
+    """Remove the folders :func:`make_folders` created, deepest first, where still empty."""
+    for p in reversed(created):
+        with contextlib.suppress(OSError):
+            p.rmdir()

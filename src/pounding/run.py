@@ -26,7 +26,7 @@ from pathlib import Path
 
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
-from pounding.io import write_text
+from pounding.io import check_writable, make_folders, remove_empty_folders, write_text
 from pounding.plot.registry import RUN_FIGURES
 from pounding.result import Result
 
@@ -88,19 +88,6 @@ def _check_target(out_dir: Path, overwrite: bool) -> None:
                              "output (no summary.json); not replacing it")
 
 
-def _check_writable(out_dir: Path) -> None:
-    """The nearest existing folder above ``out_dir`` must be a folder we can write in."""
-    p = out_dir.absolute().parent
-    while not p.exists() and not p.is_symlink():
-        p = p.parent
-    if not p.is_dir():
-        raise ValueError(f"out: {out_dir} cannot be made: {p} is a file, not a folder; "
-                         "choose another --out")
-    if not os.access(p, os.W_OK | os.X_OK):
-        raise ValueError(f"out: cannot write in {p} (a read-only file system, or no "
-                         "permission); choose another --out")
-
-
 def _pid_alive(pid: int) -> bool:
     try:
         os.kill(pid, 0)
@@ -129,23 +116,6 @@ def _remove_stale(out_dir: Path) -> None:
                 with contextlib.suppress(OSError):
                     os.replace(held, out_dir)
             shutil.rmtree(p, ignore_errors=True)
-
-
-def _make_parents(folder: Path) -> list[Path]:
-    """Create ``folder`` and its missing ancestors; return those created, deepest last."""
-    missing = []
-    p = folder.absolute()
-    while not p.exists():
-        missing.append(p)
-        p = p.parent
-    folder.mkdir(parents=True, exist_ok=True)
-    return missing[::-1]
-
-
-def _remove_empty(created: list[Path]) -> None:
-    for p in reversed(created):
-        with contextlib.suppress(OSError):
-            p.rmdir()
 
 
 def _umask() -> int:
@@ -190,13 +160,13 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
     out = Path(out_dir)
     if out.name in ("", ".", ".."):
         raise ValueError(f"out: {out_dir!s} is not a folder name; give e.g. --out results")
-    _check_writable(out)
+    check_writable(out)
     _remove_stale(out)
     _check_target(out, overwrite)
     model, motion, solver = cfg.build()
     want_figures = cfg.output.figures if figures is None else figures
 
-    created = _make_parents(out.absolute().parent)
+    created = make_folders(out.absolute().parent)
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-{os.getpid()}-",
                                 dir=out.absolute().parent))
     try:
@@ -230,7 +200,7 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
             shutil.rmtree(old, ignore_errors=True)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
-        _remove_empty(created)
+        remove_empty_folders(created)
         raise
     files = {k: out / Path(v).name for k, v in files.items()}
     return RunOutput(out_dir=out, files=files, result=result, config=cfg,

@@ -8,9 +8,10 @@ import pytest
 
 from pounding.cli import main
 from pounding.ground_motion import harmonic
+from pounding.ground_motion.bundled import bundled_folder
 from pounding.plot.record import plot_record
 
-RECORDS = Path(__file__).parent / "records"
+RECORDS = Path(str(bundled_folder()))
 ELC = RECORDS / "elcentro_1940_IV_ELC9_180_PEER.AT2"
 SYLMAR = RECORDS / "northridge_1994_sylmar_county_2col_mps2.dat"
 
@@ -21,6 +22,21 @@ def test_record_prints_table(capsys: pytest.CaptureFixture[str]) -> None:
     # PGA [g] and points as in SOURCES.md; PGV [m/s] ≈ 30 and 129 cm/s
     for expected in ("0.3129", "4000", "0.8431", "3000", "0.297", "1.289"):
         assert expected in out
+
+
+def test_record_bundled_lists_the_ten_records(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["record", "--bundled"]) == 0
+    out = capsys.readouterr().out
+    # PGA [g] of each as in SOURCES.md
+    for expected in ("0.3129", "0.3188", "0.5904", "0.8431", "0.5700", "0.4190", "0.8540",
+                     "0.7252", "0.2302", "0.4783", "m/s2 (assumed)", "18000"):
+        assert expected in out
+    assert main(["record", str(ELC), "--bundled"]) == 0
+    assert capsys.readouterr().out.count("0.3129") == 2
+    assert main(["record"]) == 2
+    assert capsys.readouterr().err.strip() == ("error: record: give record FILEs, or "
+                                               "--bundled for the records shipped with "
+                                               "pounding")
 
 
 def test_record_plot_one_file_and_several(tmp_path: Path,

@@ -1,18 +1,26 @@
-"""The real records against the values an independent parser wrote into SOURCES.md."""
+"""The bundled real records (the one copy of them, in ``pounding/data/records``) against the
+values an independent parser wrote into the SOURCES.md beside them, and their manifest."""
 
 from __future__ import annotations
 
 import hashlib
-from importlib import resources
+import tomllib
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from pounding.ground_motion import bundled_records, el_centro, read_record
+from pounding.ground_motion import (
+    bundled_records,
+    bundled_suite,
+    el_centro,
+    load_bundled,
+    read_record,
+)
+from pounding.ground_motion.bundled import bundled_folder
 from pounding.units import G
 
-RECORDS = Path(__file__).parent / "records"
+RECORDS = Path(str(bundled_folder()))
 
 
 def _sources_table(path: Path) -> dict[str, dict[str, str]]:
@@ -32,6 +40,7 @@ def _sources_table(path: Path) -> dict[str, dict[str, str]]:
 
 
 SOURCES = _sources_table(RECORDS / "SOURCES.md")
+MANIFEST = tomllib.loads((RECORDS / "records.toml").read_text(encoding="utf-8"))["record"]
 
 
 def _git_blob_id(data: bytes) -> str:
@@ -40,14 +49,15 @@ def _git_blob_id(data: bytes) -> str:
 
 def test_sources_table_lists_every_record_file() -> None:
     files = sorted(p.name for p in RECORDS.iterdir()
-                   if p.is_file() and p.name not in {"SOURCES.md", ".gitattributes"})
-    assert sorted(SOURCES) == files
+                   if p.is_file() and p.name not in {"SOURCES.md", "records.toml",
+                                                     ".gitattributes"})
+    assert sorted(SOURCES) == files == sorted(bundled_records())
     assert len(files) == 10
 
 
 @pytest.mark.parametrize("name", sorted(SOURCES))
 def test_copy_is_byte_for_byte(name: str) -> None:
-    """The test copies (line ends included) hash to the blob ids SOURCES.md gives."""
+    """The bundled copies (line ends included) hash to the blob ids SOURCES.md gives."""
     assert _git_blob_id((RECORDS / name).read_bytes()) == SOURCES[name]["git blob"]
 
 
@@ -57,7 +67,7 @@ def test_record_matches_sources(name: str) -> None:
     gm = read_record(RECORDS / name)
     assert gm.npts == int(row["NPTS"])
     assert gm.dt == pytest.approx(float(row["DT s"]), rel=1e-9)
-    assert gm.pga_g == pytest.approx(float(row["PGA g"]), rel=1e-3)
+    assert gm.pga_g == pytest.approx(float(row["PGA g"]), abs=5e-5)  # its 4 digits
     # SOURCES.md rounds PGV to whole cm/s; allow that plus a few per cent
     assert gm.pgv * 100.0 == pytest.approx(float(row["PGV≈ cm/s"]), rel=0.05)
     assert gm.time[0] == 0.0
@@ -96,22 +106,44 @@ def test_peknold_last_value_without_trailing_newline() -> None:
     assert gm.accel[-1] == 0.0
 
 
-# ------------------------------------------------------------------- bundled record
-def test_bundled_el_centro_is_the_peer_file() -> None:
-    data = resources.files("pounding").joinpath("data").joinpath(
-        "elcentro_1940_IV_ELC9_180_PEER.AT2").read_bytes()
-    bundled_sources = _sources_table(
-        Path(str(resources.files("pounding").joinpath("data").joinpath("SOURCES.md"))))
-    row = bundled_sources["elcentro_1940_IV_ELC9_180_PEER.AT2"]
-    assert _git_blob_id(data) == row["git blob"] == \
-        SOURCES["elcentro_1940_IV_ELC9_180_PEER.AT2"]["git blob"]
-    assert "elcentro_1940_IV_ELC9_180_PEER.AT2" in bundled_records()
+# ------------------------------------------------------------------- the bundled suite
+def test_bundled_suite_reads_the_files_checked_above() -> None:
+    for name, gm in zip(bundled_records(), bundled_suite(), strict=True):
+        np.testing.assert_array_equal(gm.accel, read_record(RECORDS / name).accel)
+        assert gm.dt == read_record(RECORDS / name).dt
 
+
+def test_bundled_provenance_agrees_with_sources_md() -> None:
+    """The manifest's provenance is SOURCES.md's, and reaches each record's metadata."""
+    assert [e["file"] for e in MANIFEST] == bundled_records()
+    for entry, gm in zip(MANIFEST, bundled_suite(), strict=True):
+        row = SOURCES[entry["file"]]
+        assert entry["git_blob"] == row["git blob"]
+        assert entry["earthquake"] == row["earthquake"]
+        assert entry["station"] == row["station, component"]
+        _, path = (s.strip() for s in row["source (repo : path)"].split(":", 1))
+        assert entry["source"].endswith(path.removeprefix("GMS/"))
+        assert gm.metadata["provenance"] == {k: entry[k] for k in
+                                             ("earthquake", "station", "source", "git_blob")}
+
+
+def test_bundled_units_stated_or_assumed() -> None:
+    """Every AT2 states g; the Sylmar file states nothing and is read as m/s² (inferred in
+    SOURCES.md), which the bundled record reports as assumed."""
+    for gm in bundled_suite():
+        assert gm.units_read == ("m/s2 (assumed)" if gm.name.endswith("_mps2") else "g")
+
+
+def test_el_centro_is_the_peer_file() -> None:
     gm = el_centro()
     assert gm.npts == 4000
     assert gm.dt == 0.01
     assert gm.pga_g == pytest.approx(0.3129, rel=1e-3)
     assert gm.units_read == "g"
-    assert "El Centro" in gm.name
-    reference = read_record(RECORDS / "elcentro_1940_IV_ELC9_180_PEER.AT2")
-    np.testing.assert_array_equal(gm.accel, reference.accel)
+    assert gm.name == "El Centro 1940 (Array #9, 180)"
+    assert gm.source == "pounding/data/records/elcentro_1940_IV_ELC9_180_PEER.AT2 (bundled)"
+    np.testing.assert_array_equal(gm.accel, bundled_suite()[0].accel)
+    assert load_bundled("tabas_1978_TAB_L1_RSN143") is load_bundled("tabas_1978_TAB_L1_RSN143.AT2")
+    with pytest.raises(ValueError, match=r"bundled record: unknown name 'nope'; choose one of "
+                                         r"elcentro_1940_IV_ELC9_180_PEER\.AT2, "):
+        load_bundled("nope")

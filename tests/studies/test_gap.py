@@ -14,6 +14,7 @@ from scipy.integrate import quad
 from pounding.cli import main
 from pounding.config import dump_toml, load_config
 from pounding.ground_motion import el_centro, read_record
+from pounding.ground_motion.bundled import bundled_folder
 from pounding.integrate import simulate
 from pounding.model import ContactSpec, PoundingModel
 from pounding.plot.gap import plot_gap_study
@@ -33,7 +34,7 @@ from pounding.studies import (
 ROOT = Path(__file__).resolve().parents[2]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"
 TEN = ROOT / "examples" / "two_10_storey.toml"
-RECORDS = ROOT / "tests" / "ground_motion" / "records"
+RECORDS = Path(str(bundled_folder()))
 ELC = RECORDS / "elcentro_1940_IV_ELC9_180_PEER.AT2"
 NWH = RECORDS / "northridge_1994_newhall_360_RSN1044.AT2"
 SHORT = 6.0

@@ -7,7 +7,9 @@ field (or option) and the value, without a traceback:
 * bad input (a ``ValueError`` from the public API, a missing or unreadable file, an output
   folder that cannot be written) and usage errors (an unknown option, a bad option value)
   exit with status 2;
-* a run stopped with Ctrl-C or SIGTERM exits with status 130 after saying what was kept.
+* a run stopped with Ctrl-C or SIGTERM exits with status 130 after saying what was kept;
+* a sweep stopped by its cluster (a lost Dask scheduler, a failed worker) exits with
+  status 1 after saying what was kept and how to resume.
 
 Command modules import only typer and rich at module level; everything else is imported by
 the command that uses it, so ``pounding --help`` and ``pounding --version`` start at once.
@@ -39,6 +41,9 @@ EXIT_BAD_INPUT = 2
 
 EXIT_INTERRUPTED = 130
 """Exit status of a command stopped by Ctrl-C (128 + SIGINT), as shells report it."""
+
+EXIT_FAILED = 1
+"""Exit status of a command its environment stopped (a sweep whose Dask scheduler was lost)."""
 
 
 def error_line(message: str) -> None:

@@ -14,10 +14,14 @@ from pounding.cli.app import app, console  # noqa: F401
 
 @app.command("record")
 def record(
-    files: Annotated[list[Path], typer.Argument(
-        help="Record files: PEER .AT2 (units from the header, g if none stated) or text "
-             "with one column (needs --dt) or two columns time, acceleration.",
-        show_default=False)],
+    files: Annotated[list[Path] | None, typer.Argument(
+        help="Record files: PEER .AT2 (units from the header, g if none stated), K-NET/"
+             "KiK-net ASCII, COSMOS V1/V2, or text with one column (needs --dt) or two "
+             "columns time, acceleration.",
+        show_default=False)] = None,
+    bundled: Annotated[bool, typer.Option(
+        "--bundled", help="Also the ten real records shipped with pounding (the bundled "
+                          "suite; provenance in pounding/data/records/SOURCES.md).")] = False,
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for files that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
@@ -41,10 +45,22 @@ def record(
       pounding record elcentro.AT2 --plot elcentro.png
 
       pounding record accel.txt --dt 0.01 --units g
-    """
-    from pounding.ground_motion import read_record
 
+      pounding record MYG0041103111446.NS CE12345.V2c
+
+      pounding record --bundled
+    """
+    from pounding.ground_motion import bundled_suite, read_record
+
+    files = list(files or [])
+    if not files and not bundled:
+        raise ValueError("record: give record FILEs, or --bundled for the records shipped "
+                         "with pounding")
     motions = [read_record(f, dt=dt, units=units) for f in files]
+    if bundled:
+        suite = bundled_suite()
+        files += [Path(p) for p in suite.paths]
+        motions += list(suite)
 
     table = Table(title="Ground-motion records")
     table.add_column("file", overflow="fold")

@@ -50,12 +50,12 @@ COMPILE_NOTE_AFTER = 5.0
 
 class _CompilingNote(ProgressColumn):
     """Says what a bar stuck at 0 % is waiting for: on the first run after an install (or
-    after the kernel's source changed) numba compiles the solver, which takes minutes on a
-    small machine; the compiled code is cached, and later runs start at once."""
+    after the kernel's source changed) numba compiles the solver, about 20–30 s on a
+    2-core machine; the compiled code is cached, and later runs start at once."""
 
     def render(self, task: Task) -> Text:
         if task.completed == 0 and (task.elapsed or 0.0) >= COMPILE_NOTE_AFTER:
-            return Text("probably compiling the solver: first run only, about 1–2 min "
+            return Text("probably compiling the solver: first run only, about 20–30 s "
                         "(cached after)", style="dim")
         return Text("")
 

@@ -59,8 +59,9 @@ def sweep_cmd(
 
       pounding sweep study.toml --scheduler tcp://10.0.0.5:8786
     """
+    from pounding.cli import EXIT_FAILED, EXIT_INTERRUPTED, error_line
     from pounding.cli.commands_run import _sigterm_as_interrupt
-    from pounding.studies.sweep import load_sweep, run_sweep
+    from pounding.studies.sweep import SweepInterrupted, SweepStopped, load_sweep, run_sweep
 
     sweep = load_sweep(sweep_file)
     hist: Any = None if histories is None else (False if histories == "none" else histories)
@@ -78,10 +79,22 @@ def sweep_cmd(
             return
         bar.update(task, completed=done)
 
-    with _sigterm_as_interrupt(), bar:
-        res = run_sweep(sweep, out, scheduler=scheduler, n_workers=workers,
-                        batch_size=batch_size, overwrite=overwrite, histories=hist,
-                        progress=progress)
+    try:
+        with _sigterm_as_interrupt(), bar:
+            res = run_sweep(sweep, out, scheduler=scheduler, n_workers=workers,
+                            batch_size=batch_size, overwrite=overwrite, histories=hist,
+                            progress=progress)
+    except (SweepInterrupted, SweepStopped) as exc:
+        again = _again(sweep_file, out=out, scheduler=scheduler, workers=workers,
+                       batch_size=batch_size, histories=histories)
+        if exc.n_saved:
+            error_line(f"{exc.reason}: {exc.n_saved:,} of {exc.n_cases:,} cases are saved in "
+                       f"{exc.out_dir}; resume with: {again}")
+        else:
+            error_line(f"{exc.reason} before any case was saved, leaving {exc.out_dir} as it "
+                       f"was; start again with: {again}")
+        raise typer.Exit(EXIT_INTERRUPTED if isinstance(exc, SweepInterrupted)
+                         else EXIT_FAILED) from None
     t = Table(title=f"{sweep.name}: sweep", show_header=False)
     t.add_column("quantity")
     t.add_column("value", justify="right")
@@ -97,6 +110,17 @@ def sweep_cmd(
     t.add_row(Text("wall time [s]"), f"{res.wall_time:.2f}")
     console.print(t)
     console.print(f"table in [bold]{res.results}[/]", highlight=False)
+
+
+def _again(sweep_file: Path, **options: Any) -> str:
+    """The command that resumes a sweep: the same options, never ``--overwrite``."""
+    import shlex
+
+    argv = ["pounding", "sweep", str(sweep_file)]
+    for name, value in options.items():
+        if value is not None:
+            argv += [f"--{name.replace('_', '-')}", str(value)]
+    return shlex.join(argv)
 
 
 @app.command("plot")

@@ -15,8 +15,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
-import math
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq, least_squares
@@ -26,128 +24,18 @@ from pounding.contact.bilinear import BilinearImpact
 from pounding.contact.collision import simulate_collision
 from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
 from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
-from pounding.contact.restitution import (
-    restitution_kelvin_voigt_clipped,  # noqa: F401  (re-exported: its closed form lives beside its inverse)
-    zeta_anagnostopoulos,
-    zeta_jankowski,
+from pounding.contact.exact_restitution import (  # noqa: F401  (the exact e's, re-exported)
+    restitution_hunt_crossley,
+    restitution_kelvin_voigt_clipped,
+    restitution_modified_kelvin_voigt,
+    restitution_nonlinear_viscoelastic,
     zeta_kelvin_voigt_clipped,
 )
+from pounding.contact.restitution import zeta_anagnostopoulos, zeta_jankowski
 from pounding.validation import choice, positive, restitution
 
 
 # --------------------------------------------------------------------------- closed forms
-def restitution_modified_kelvin_voigt(zeta: ArrayLike) -> NDArray[np.float64] | float:
-    """Exact ``e`` achieved by the modified Kelvin–Voigt law with damping ratio ζ.
-
-    Approach is a damped oscillator from ``δ = 0, δ̇ = v0`` to maximum compression; restitution
-    is undamped, so ``e = ω δmax / v0``. With ``θ = arctan(sqrt(1 − ζ²)/ζ)``:
-
-    * ζ < 1: ``e = exp(−ζ θ / sqrt(1 − ζ²))``
-    * ζ = 1: ``e = exp(−1)``
-    * ζ > 1: ``e = exp(−ζ artanh(sqrt(ζ² − 1)/ζ) / sqrt(ζ² − 1))``
-
-    Derived here (Chopra's free-vibration solutions); the approximate inverse is Mahmoud &
-    Jankowski's eq 20 (:func:`~pounding.contact.restitution.zeta_mahmoud`).
-    """
-    z = np.asarray(zeta, dtype=float)
-    if np.any(~np.isfinite(z) | (z < 0.0)):
-        raise ValueError(f"zeta must be finite and >= 0 (got {z})")
-    out = np.empty_like(z)
-    under = z < 1.0 - 1e-9
-    over = z > 1.0 + 1e-9
-    crit = ~(under | over)
-    zu = z[under]
-    s = np.sqrt(1.0 - zu**2)
-    out[under] = np.exp(-zu * np.arctan2(s, zu) / np.where(s > 0, s, 1.0))
-    out[under & (z == 0.0)] = 1.0
-    zo = z[over]
-    s = np.sqrt(zo**2 - 1.0)
-    out[over] = np.exp(-zo * np.arctanh(s / zo) / s)
-    out[crit] = np.exp(-1.0)
-    return float(out) if out.ndim == 0 else out
-
-
-_BERNOULLI_SERIES = (1.0 / 12.0, -1.0 / 720.0, 1.0 / 30240.0, -1.0 / 1209600.0,
-                     1.0 / 47900160.0, -691.0 / 1307674368000.0)
-"""Coefficients of y², y⁴, … y¹² in ``y / (1 − e^−y) = 1 + y/2 + Σ`` (the Bernoulli numbers
-B_2k / (2k)!)."""
-
-
-def _bernoulli_excess(y: float) -> float:
-    """``y / (1 − e^−y) − 1`` to round-off for every y > 0: by its series below y = 0.5
-    (where the direct form loses digits to cancellation), directly above."""
-    if y < 0.5:
-        y2 = y * y
-        acc = 0.0
-        for c in reversed(_BERNOULLI_SERIES):
-            acc = acc * y2 + c
-        return 0.5 * y + y2 * acc
-    return y / -np.expm1(-y) - 1.0
-
-
-def restitution_hunt_crossley(chi: ArrayLike) -> NDArray[np.float64] | float:
-    """Exact ``e`` of the Hunt–Crossley law ``F = k δⁿ (1 + χ δ̇/v0)``, any ``n``.
-
-    Dividing the equation of motion by ``δ̇`` and integrating over approach and restitution
-    eliminates ``k`` and ``n``: ``χ (1 + e) = ln((1 + χ) / (1 − χ e))`` (Hunt & Crossley
-    1975). Lankarani–Nikravesh's ``χ = 3(1 − e²)/4`` is its small-dissipation limit.
-
-    Evaluated stably: with ``y = χ (1 + e)`` the relation reads
-    ``y / (1 − e^−y) − 1 = χ``, whose left side is computed without cancellation
-    (:func:`_bernoulli_excess`) and grows monotonically from 0; so ``y`` is found to
-    round-off by Brent's method and ``e = y/χ − 1``, accurate for any χ (the direct form lost
-    ``1 − e`` to cancellation: 9 % wrong at χ = 1e-5). The force never returns to zero before
-    the bodies separate (``1 − χ e > 0`` always), so ``e < 1/χ``.
-    """
-    x = np.atleast_1d(np.asarray(chi, dtype=float))
-    if np.any(~np.isfinite(x) | (x < 0.0)):
-        raise ValueError(f"chi must be finite and >= 0 (got {chi})")
-    out = np.empty_like(x)
-    for i, c in enumerate(x):
-        if c == 0.0:
-            out[i] = 1.0
-            continue
-        # χ < y < 2χ + 2: the excess is below y and above y/2
-        y = brentq(lambda yy, c=c: _bernoulli_excess(yy) - c, c, 2.0 * c + 2.0,
-                   xtol=1e-300, rtol=8.9e-16, maxiter=200)
-        out[i] = y / c - 1.0
-    return float(out[0]) if np.ndim(chi) == 0 else out
-
-
-def restitution_nonlinear_viscoelastic(zeta: float) -> float:
-    """Exact ``e`` of Jankowski's nonlinear viscoelastic law (seed eqs 17–18) for impact
-    damping ratio ζ, from the approach alone.
-
-    The law damps only while approaching (``c = 2 ζ sqrt(k_h sqrt(δ) m_eff)``) and is
-    elastic while restoring, so the restitution returns all the energy stored at maximum
-    compression: ``e = sqrt(0.8 x_max^2.5)`` in the variables ``δ = δ* x``, ``t = (δ*/v0) s``,
-    ``δ* = (m_eff v0² / k_h)^0.4``, where the approach is ``x'' = −x^1.5 − 2 ζ x^0.25 x'``
-    from ``x = 0, x' = 1`` to ``x' = 0`` — so e depends on ζ alone (Jankowski 2006, EESD
-    35(4):517–524, who fitted eq 19 to it). Solved here with SciPy's DOP853 at rtol 1e-12;
-    the full two-body collision (:func:`pounding.contact.collision.simulate_collision`)
-    agrees to 1e-10 (tests).
-    """
-    from scipy.integrate import solve_ivp
-
-    z = float(zeta)
-    if not (math.isfinite(z) and z >= 0.0):
-        raise ValueError(f"zeta must be finite and >= 0 (got {zeta!r})")
-
-    def rhs(_s: float, y: NDArray[np.float64]) -> list[float]:
-        x = max(y[0], 0.0)
-        return [y[1], -x**1.5 - 2.0 * z * x**0.25 * y[1]]
-
-    def at_max(_s: float, y: NDArray[np.float64]) -> float:
-        return y[1]
-
-    at_max.terminal = True  # type: ignore[attr-defined]
-    at_max.direction = -1.0  # type: ignore[attr-defined]
-    sol = solve_ivp(rhs, (0.0, 1e4), [0.0, 1.0], method="DOP853", rtol=1e-12, atol=1e-14,
-                    events=at_max)
-    x_max = float(sol.y_events[0][0][0])
-    return math.sqrt(0.8 * x_max**2.5)
-
-
 def hertz_delta_max(k_h: float, m_eff: float, v0: float, n: float = 1.5) -> float:
     """Maximum penetration [m] of an elastic Hertz impact: ``((n+1) m_eff v0² / (2 k_h))^(1/(n+1))``.
 

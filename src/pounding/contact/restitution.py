@@ -17,6 +17,7 @@ from typing import Callable, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.contact.exact_restitution import zeta_kelvin_voigt_clipped
 from pounding.validation import restitution as _check_e
 
 FloatArray = NDArray[np.float64]
@@ -81,60 +82,6 @@ def zeta_naderpour(e: ArrayLike) -> FloatArray | float:
     """
     x = _check_e(e)
     return _out(((1.0 - x**2) / (x * (np.sqrt(np.pi) * (0.5 * x + 1.0 / np.pi) - x))) ** 2)
-
-
-def restitution_kelvin_voigt_clipped(zeta: ArrayLike) -> FloatArray | float:
-    """Exact ``e`` of the Kelvin–Voigt law whose force is clipped at zero (no tension).
-
-    The bodies separate when ``k δ + c δ̇`` returns to zero, with the spring still
-    compressed (Schwager & Pöschel 2007, *Coefficient of restitution and linear–dashpot
-    model revisited*, Granular Matter 9:465–469, eqs 20–22; derived again in
-    ``docs/laws/kelvin-voigt.md`` from the damped free vibration):
-
-    * ζ < 1: ``e = exp(−ζ (π − 2 arcsin ζ) / sqrt(1 − ζ²))``
-    * ζ = 1: ``e = exp(−2)``
-    * ζ > 1: ``e = exp(−2 ζ arccosh(ζ) / sqrt(ζ² − 1))``
-    """
-    z = np.asarray(zeta, dtype=float)
-    if np.any(~np.isfinite(z) | (z < 0.0)):
-        raise ValueError(f"zeta must be finite and >= 0 (got {z})")
-    out = np.empty_like(z)
-    under = z < 1.0 - 1e-9
-    over = z > 1.0 + 1e-9
-    zu = z[under]
-    out[under] = np.exp(-zu * (np.pi - 2.0 * np.arcsin(zu)) / np.sqrt(1.0 - zu**2))
-    zo = z[over]
-    out[over] = np.exp(-2.0 * zo * np.arccosh(zo) / np.sqrt(zo**2 - 1.0))
-    out[~(under | over)] = np.exp(-2.0)
-    return float(out) if out.ndim == 0 else out
-
-
-def zeta_kelvin_voigt_clipped(e: ArrayLike) -> FloatArray | float:
-    """Impact damping ratio with which the Kelvin–Voigt law *without tension* achieves
-    exactly ``e``: the inverse of :func:`restitution_kelvin_voigt_clipped` (Schwager &
-    Pöschel 2007, Granular Matter 9:465–469), found to round-off by Brent's method (``e``
-    falls monotonically with ζ). ``c = 2 ζ sqrt(k m_eff)``.
-
-    This is the default for the Kelvin–Voigt law: the force clipped at zero, so the dashpot
-    never pulls the buildings together, and the restitution exactly the target.
-    Anagnostopoulos' ζ (:func:`zeta_anagnostopoulos`) is exact for the law whose dashpot
-    may pull (``tension = true``); used with the clipped law it gives a larger e (e.g. 0.71
-    for a target of 0.65).
-    """
-    from scipy.optimize import brentq
-
-    x = np.atleast_1d(_check_e(e)).astype(float)
-    out = np.empty_like(x)
-    for i, ei in enumerate(x):
-        if ei >= 1.0:
-            out[i] = 0.0
-            continue
-        hi = 1.0
-        while restitution_kelvin_voigt_clipped(hi) > ei:
-            hi *= 2.0
-        out[i] = brentq(lambda z: restitution_kelvin_voigt_clipped(z) - ei, 0.0, hi,
-                        xtol=1e-300, rtol=8.9e-16, maxiter=200)
-    return _out(out[0] if np.ndim(e) == 0 else out)
 
 
 # --------------------------------------------------------------------------- χ formulas

@@ -9,11 +9,16 @@ concept a module:
   displacement, scaled and trimmed copies;
 * :mod:`~pounding.ground_motion.readers` -- the file readers, one module a format:
   :func:`read_at2` (PEER strong-motion ``.AT2`` files, every header variant in common use),
-  :func:`read_text` (plain one-column, with ``dt``, or two-column time/acceleration text)
-  and :func:`read_record` (either of the above, chosen by suffix and content);
+  :func:`read_knet` (NIED's K-NET and KiK-net ASCII files), :func:`read_cosmos` (COSMOS
+  Volume 1 and 2 files), :func:`read_text` (plain one-column, with ``dt``, or two-column
+  time/acceleration text) and :func:`read_record` (any of the above, chosen by suffix and
+  content; any other file is refused in one line naming the formats read);
 * :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
-  :func:`bundled_records`: the records shipped in ``pounding/data`` (see
-  ``pounding/data/SOURCES.md`` for their provenance);
+  :func:`bundled_records`: the ten records shipped in ``pounding/data/records`` (see its
+  ``SOURCES.md`` for their provenance);
+* :mod:`~pounding.ground_motion.suite` -- :class:`RecordSuite`, an ordered, named
+  collection of records (from a folder, a list of files or :func:`bundled_suite`), and
+  :func:`read_suite`;
 * :mod:`~pounding.ground_motion.synthetic` -- :func:`harmonic`, :func:`sine_pulse`,
   :func:`ricker`: closed-form inputs for tests.
 
@@ -23,17 +28,30 @@ Every reader raises :class:`ValueError` naming the file, the line and the bad va
 
 from pounding.ground_motion.bundled import bundled_records, el_centro, load_bundled
 from pounding.ground_motion.motion import GroundMotion
-from pounding.ground_motion.readers import ASSUMED, read_at2, read_record, read_text  # noqa: F401
+from pounding.ground_motion.readers import (  # noqa: F401
+    ASSUMED,
+    read_at2,
+    read_cosmos,
+    read_knet,
+    read_record,
+    read_text,
+)
+from pounding.ground_motion.suite import RecordSuite, bundled_suite, read_suite
 from pounding.ground_motion.synthetic import harmonic, ricker, sine_pulse
 
 __all__ = [
     "GroundMotion",
+    "RecordSuite",
     "bundled_records",
+    "bundled_suite",
     "el_centro",
     "harmonic",
     "load_bundled",
     "read_at2",
+    "read_cosmos",
+    "read_knet",
     "read_record",
+    "read_suite",
     "read_text",
     "ricker",
     "sine_pulse",

@@ -17,13 +17,8 @@ from typing import Any
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.files import check_file, read_lines
 from pounding.ground_motion.readers.numbers import is_numeric_line, parse_values, to_float
-from pounding.ground_motion.readers.units import (
-    ASSUMED,
-    canonical_unit,
-    same_unit,
-    to_si,
-    units_in,
-)
+from pounding.ground_motion.readers.step import resolve_dt
+from pounding.ground_motion.readers.units import resolve_unit, to_si, units_in
 from pounding.validation import positive
 
 __all__ = ["SUFFIXES", "looks_like_at2", "read_at2"]
@@ -100,68 +95,38 @@ def read_at2(path: str | os.PathLike[str], *, dt: float | None = None,
     where = str(p)
     lines = read_lines(p)
 
+    # The header ends at a '*** Begin data ***' line where there is one (so a header line
+    # of numbers alone is still header), else at the first line of numbers alone.
+    begin = next((i for i, line in enumerate(lines) if _RE_BEGIN.match(line)), None)
+    header_end = begin if begin is not None else next(
+        (i for i, line in enumerate(lines) if is_numeric_line(line)), len(lines))
+    data_start = header_end if begin is None else begin + 1
+    header = lines[:header_end]
+
     npts: int | None = None
     npts_line = 0
     dt_file: float | None = None
     dt_line = 0
-    data_start: int | None = None  # index into lines
-    for i, line in enumerate(lines):
+    for i, line in enumerate(header):  # NPTS and DT anywhere in the header; the last wins
         lineno = i + 1
-        if _RE_BEGIN.match(line):
-            data_start = i + 1
-            break
         old = _RE_OLD.match(line)
         if old:
             npts, npts_line = _header_int(old.group(1), where, lineno), lineno
             dt_file, dt_line = _header_dt(old.group(2), where, lineno), lineno
             continue
-        if is_numeric_line(line):
-            data_start = i
-            break
         m_n = _RE_NPTS.search(line)
         if m_n:
             npts, npts_line = _header_int(m_n.group(1), where, lineno), lineno
         m_d = _RE_DT.search(line)
         if m_d:
             dt_file, dt_line = _header_dt(m_d.group(1), where, lineno), lineno
-    if data_start is None:
-        data_start = len(lines)
-    header = lines[:data_start]
-    if _RE_BEGIN.match(header[-1] if header else ""):
-        header = header[:-1]
 
-    # ---- time step
-    if dt_file is None:
-        if dt is None:
-            span = f"lines 1-{len(header)}" if header else "none before line 1"
-            raise ValueError(f"{where}: no DT in the header ({span}); expected a line such as "
-                             "'NPTS=  4000, DT= .01000 SEC' (or pass dt)")
-        step = positive("dt [s]", dt)
-    else:
-        step = dt_file
-        if dt is not None:
-            given = positive("dt [s]", dt)
-            if abs(given - dt_file) > 1e-6 * dt_file:
-                raise ValueError(f"{where}: line {dt_line}: DT = {dt_file:g} s in the file "
-                                 f"but dt = {given:g} s was given")
-
-    # ---- units
-    unit_file: str | None = None
-    for line in header:
-        unit_file = units_in(line)
-        if unit_file is not None:
-            break
-    if units is not None:
-        given_unit = canonical_unit(units, "units")
-        if unit_file is not None and not same_unit(given_unit, unit_file):
-            raise ValueError(f"{where}: the header states units {unit_file!r} but units="
-                             f"{units!r} was given")
-    if unit_file is not None:
-        unit, units_read = unit_file, unit_file
-    elif units is not None:
-        unit = units_read = canonical_unit(units, "units")
-    else:
-        unit, units_read = "g", "g" + ASSUMED
+    span = f"lines 1-{len(header)}" if header else "none before line 1"
+    step = resolve_dt(dt_file, dt, where, stated_at=f"line {dt_line}: DT",
+                      missing=f"no DT in the header ({span}); expected a line such as "
+                              "'NPTS=  4000, DT= .01000 SEC' (or pass dt)")
+    unit_file = next((u for u in map(units_in, header) if u is not None), None)
+    unit, units_read = resolve_unit(unit_file, units, where, default="g")
 
     # ---- data
     values: list[float] = []

@@ -1,8 +1,10 @@
 """One entry point for every record format: :func:`read_record` picks the reader of a file
-from its suffix, then from its first lines, and falls back to plain text.
+from its suffix, then from its first lines, and falls back to plain text; a file in none of
+these formats is refused in one line that names the formats read (:data:`SUPPORTED`).
 
 Each format is a :class:`RecordFormat` in :data:`FORMATS`, defined in its own module of
-:mod:`pounding.ground_motion.readers` (today :mod:`~pounding.ground_motion.readers.at2`);
+:mod:`pounding.ground_motion.readers` (:mod:`~pounding.ground_motion.readers.knet`,
+:mod:`~pounding.ground_motion.readers.cosmos`, :mod:`~pounding.ground_motion.readers.at2`);
 a new format adds its entry there.
 """
 
@@ -15,12 +17,13 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pounding.ground_motion.motion import GroundMotion
-from pounding.ground_motion.readers import at2
+from pounding.ground_motion.readers import at2, cosmos, knet
 from pounding.ground_motion.readers.files import check_file, read_lines
+from pounding.ground_motion.readers.numbers import is_numeric_line
 from pounding.ground_motion.readers.units import ASSUMED
 from pounding.ground_motion.readers.text import read_text
 
-__all__ = ["FORMATS", "RecordFormat", "read_record"]
+__all__ = ["FORMATS", "SUPPORTED", "RecordFormat", "read_record"]
 
 
 @dataclass(frozen=True)
@@ -46,9 +49,17 @@ class RecordFormat:
 
 
 FORMATS: tuple[RecordFormat, ...] = (
+    RecordFormat("K-NET/KiK-net ASCII", knet.SUFFIXES, knet.looks_like_knet, knet.read_knet),
+    RecordFormat("COSMOS V1/V2", cosmos.SUFFIXES, cosmos.looks_like_cosmos,
+                 cosmos.read_cosmos),
     RecordFormat("PEER AT2", at2.SUFFIXES, at2.looks_like_at2, at2.read_at2),
 )
-"""The formats other than plain text, tried in this order (suffixes first, then content)."""
+"""The formats other than plain text, tried in this order (suffixes first, then content:
+the first two are told by their first line alone)."""
+
+SUPPORTED: str = ", ".join(
+    [fmt.name for fmt in FORMATS] + ["plain text (one column, or two: time, acceleration)"])
+"""The formats :func:`read_record` reads, for the message that refuses any other."""
 
 
 def _format_of(p: Path) -> RecordFormat | None:
@@ -65,10 +76,13 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
                 units: str | None = None) -> GroundMotion:
     """Read an acceleration record, choosing the reader from the suffix and content.
 
-    A ``.AT2`` suffix (any case), or a header with ``NPTS``/``DT``, selects
-    :func:`~pounding.ground_motion.readers.at2.read_at2`; anything else
-    :func:`~pounding.ground_motion.readers.text.read_text`. For a text file read without
-    ``units`` the values are taken as m/s² and ``units_read`` says ``"m/s2 (assumed)"``.
+    A suffix of one of :data:`FORMATS` (any case: ``.AT2``; ``.NS``, ``.EW2``...; ``.V2``,
+    ``.V2c``...) selects its reader; so does a first line ``Origin Time`` (K-NET/KiK-net),
+    ``(Format v01.20 with 13 text lines)`` (COSMOS), or a header with ``NPTS``/``DT``
+    (AT2). A file whose first line that is not blank or a ``#`` comment holds numbers alone
+    is plain text (:func:`~pounding.ground_motion.readers.text.read_text`); read without
+    ``units`` its values are taken as m/s² and ``units_read`` says ``"m/s2 (assumed)"``.
+    Any other file is refused: the message names it and the formats read.
 
     Parameters
     ----------
@@ -83,13 +97,31 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     Raises
     ------
     ValueError
-        As raised by the reader, naming the file and line.
+        As raised by the reader, naming the file and line; or, for a file in none of the
+        formats, naming the file, its first line and the formats read.
     """
     p = check_file(path)
     fmt = _format_of(p)
     if fmt is not None:
         return fmt.read(p, dt=dt, units=units)
+    _check_plain_text(p)
     if units is None:
         gm = read_text(p, dt=dt, units="m/s2")
         return dataclasses.replace(gm, units_read="m/s2" + ASSUMED)
     return read_text(p, dt=dt, units=units)
+
+
+def _check_plain_text(p: Path) -> None:
+    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either."""
+    with p.open("rb") as f:
+        if b"\0" in f.read(4096):
+            raise ValueError(f"{p}: a binary file (miniSEED, SAC or the like), not a record "
+                             f"format pounding reads; it reads {SUPPORTED}")
+    for i, line in enumerate(read_lines(p)):
+        s = line.strip()
+        if not s or s.startswith("#"):
+            continue
+        if not is_numeric_line(s):
+            raise ValueError(f"{p}: not a record format pounding reads (line {i + 1}: "
+                             f"{s[:40]!r}); it reads {SUPPORTED}")
+        return

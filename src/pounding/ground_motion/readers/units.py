@@ -2,8 +2,10 @@
 
 :func:`units_in` finds the unit a header line states ("UNITS OF G", "(g)", "cm/s/s",
 "CM/S^2", "m/s2", "gal"...); :func:`canonical_unit` checks a unit given by the caller
-against :data:`pounding.units.ACCELERATION_UNITS`; :data:`ASSUMED` marks a unit that was
-not stated but assumed; :func:`to_si` converts the values read to m/s².
+against :data:`pounding.units.ACCELERATION_UNITS`; :func:`resolve_unit` settles the unit of
+a file from what it states, what the caller gives and the format's default;
+:data:`ASSUMED` marks a unit that was not stated but assumed; :func:`to_si` converts the
+values read to m/s².
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ from numpy.typing import NDArray
 
 from pounding.units import ACCELERATION_UNITS, acceleration_factor
 
-__all__ = ["ASSUMED", "canonical_unit", "same_unit", "to_si", "units_in"]
+__all__ = ["ASSUMED", "canonical_unit", "resolve_unit", "same_unit", "to_si", "units_in"]
 
 ASSUMED = " (assumed)"
 """Suffix added to :attr:`GroundMotion.units_read` when the file did not state its units."""
@@ -58,6 +60,45 @@ def canonical_unit(unit: str, where: str) -> str:
 
 def same_unit(a: str, b: str) -> bool:
     return ACCELERATION_UNITS[a] == ACCELERATION_UNITS[b]
+
+
+def resolve_unit(stated: str | None, given: str | None, where: str,
+                 default: str) -> tuple[str, str]:
+    """The unit to read a file's values in, and what to report as read.
+
+    Parameters
+    ----------
+    stated : str or None
+        The unit the file states (a key of :data:`pounding.units.ACCELERATION_UNITS`).
+    given : str or None
+        The unit the caller gives, for a file that states none.
+    where : str
+        The file, for the message.
+    default : str
+        The format's convention for a file that states none and is given none; it is
+        reported with :data:`ASSUMED` appended.
+
+    Returns
+    -------
+    tuple of str
+        ``(unit, units_read)``.
+
+    Raises
+    ------
+    ValueError
+        If ``given`` is not a known unit, or differs from the ``stated`` one: a file's own
+        statement is never overridden silently.
+    """
+    if given is not None:
+        given_unit = canonical_unit(given, "units")
+        if stated is not None and not same_unit(given_unit, stated):
+            raise ValueError(f"{where}: the header states units {stated!r} but units="
+                             f"{given!r} was given")
+    if stated is not None:
+        return stated, stated
+    if given is not None:
+        return given_unit, given_unit
+    return default, default + ASSUMED
 
 
 def to_si(values: Sequence[float] | NDArray[np.float64], unit: str, where: str,

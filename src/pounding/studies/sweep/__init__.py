@@ -1,0 +1,69 @@
+"""Parameter sweeps: one base model, many cases, one tidy Parquet table — run on Dask.
+
+A sweep file (TOML, see ``docs/sweep.md``) names a base model file (or holds one inline)
+and the cases: a ``[grid]`` (every combination), a ``[list]`` (columns zipped row by row)
+or ``[random]`` samples drawn with a seed. Parameters are dotted paths into the model
+file: ``"contact.gap"``, ``"contact.e"``, ``"record.scale"``, ``"building.0.period"``,
+``"building.*.period"`` (every building), ``"contact.law"``, ``"record.file"``, …
+
+Every case gets a deterministic id, a hash of its parameter values. Each case is applied to
+the base configuration, validated by :mod:`pounding.config` (a bad value names the key),
+built, simulated and reduced to one row of summary measures. A case that fails is recorded
+(``status = "error"`` and the message) and the sweep goes on; an invalid base model or an
+unknown parameter path stops the sweep before anything runs.
+
+Persistence is loss-free and resumable. Cases run in batches (one Dask task each); the
+client writes every finished batch as a small Parquet file ``parts/part-<hash>.parquet``
+(temporary name, then rename) the moment it arrives. A sweep that is started again — after
+Ctrl-C, a crash or SIGKILL — reads the parts present and runs only the missing cases. At the
+end all parts are consolidated into ``results.parquet``, rows in case order, columns and
+types fixed by the sweep: two runs of the same sweep give tables equal bit for bit in every
+column except ``wall_time_s`` (:data:`NONDETERMINISTIC_COLUMNS`).
+
+The modules, one concept each:
+
+* planning — :mod:`~pounding.studies.sweep.plan` (the sweep file, :class:`Sweep`),
+  :mod:`~pounding.studies.sweep.cases` (the case tables, case ids),
+  :mod:`~pounding.studies.sweep.overrides` (a case applied to the base model),
+  :mod:`~pounding.studies.sweep.checks` (what is checked before anything runs);
+* execution — :mod:`~pounding.studies.sweep.execute` (one case, a batch, the warm-up:
+  the worker side), :mod:`~pounding.studies.sweep.measures` (the row of a case),
+  :mod:`~pounding.studies.sweep.cluster` (the Dask client),
+  :mod:`~pounding.studies.sweep.runner` (:func:`run_sweep`);
+* storage — :mod:`~pounding.studies.sweep.store` (the output folder: manifest, parts,
+  histories), :mod:`~pounding.studies.sweep.table` (``results.parquet``,
+  :func:`load_results`).
+"""
+
+from pounding.studies.sweep.cases import MAX_CASES, Case, case_id
+from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
+from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
+from pounding.studies.sweep.overrides import apply_overrides
+from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep, parse_sweep  # noqa: F401
+from pounding.studies.sweep.runner import SweepInterrupted, SweepOutcome, SweepStopped, run_sweep
+from pounding.studies.sweep.store import (  # noqa: F401  (names of the output folder)
+    HISTORIES_DIR,
+    MANIFEST_FILE,
+    PARTS_DIR,
+    RESULTS_FILE,
+)
+from pounding.studies.sweep.table import NONDETERMINISTIC_COLUMNS, load_results
+
+__all__ = [
+    "FLOOR_MEASURES",
+    "MAX_CASES",
+    "MEASURES",
+    "NONDETERMINISTIC_COLUMNS",
+    "Case",
+    "Sweep",
+    "SweepInterrupted",
+    "SweepOutcome",
+    "SweepStopped",
+    "apply_overrides",
+    "case_id",
+    "load_results",
+    "load_sweep",
+    "parse_sweep",
+    "run_case",
+    "run_sweep",
+]

@@ -1,0 +1,182 @@
+"""The Dask client a sweep runs on: a local cluster (default), an existing scheduler, or
+none (in this process); the batch size; and a quiet stop.
+
+A sweep stopped by Ctrl-C, or by a lost scheduler, ends in one line from the caller, not
+in Dask's log records and the tracebacks of its worker processes: the workers of the local
+cluster never receive Ctrl-C (their process group does, from the terminal, but they start
+with SIGINT held back), and logging is silenced from the first Ctrl-C (or failure) until
+the cluster is closed.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import math
+import os
+import signal
+import threading
+from collections.abc import Iterator
+from typing import Any
+
+__all__ = ["SCHEDULER_TIMEOUT"]
+
+SCHEDULER_TIMEOUT = 10.0
+"""Seconds to wait for a Dask scheduler given by address to answer (Dask's default is 30):
+also how long a client tries to reconnect to a scheduler it lost."""
+
+
+def _auto_batch(n_pending: int, n_workers: int) -> int:
+    """About 8 batches per worker, 10 … 200 cases each (a case takes a few ms)."""
+    return max(10, min(200, math.ceil(n_pending / max(1, 8 * n_workers))))
+
+
+def _silence_dask() -> None:
+    """Silence logging (Dask's loggers, and its event loop's) until :func:`_client` ends."""
+    logging.disable(logging.CRITICAL)
+
+
+def _in_main_thread() -> bool:
+    """Signal handlers and masks can be set only here."""
+    return threading.current_thread() is threading.main_thread()
+
+
+@contextlib.contextmanager
+def _sigint_held() -> Iterator[None]:
+    """Hold SIGINT back from this thread while the block runs. The threads it starts, and
+    the processes they start, inherit the held signal: Ctrl-C in the terminal never
+    reaches the worker processes of a local cluster. A Ctrl-C pressed meanwhile arrives
+    when the block ends."""
+    if not (hasattr(signal, "pthread_sigmask") and _in_main_thread()):
+        yield
+        return
+    # multiprocessing starts its resource tracker on first use, and unblocks SIGINT in the
+    # thread that starts it: start it now, before the signal is held
+    from multiprocessing import resource_tracker
+
+    resource_tracker.ensure_running()
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+@contextlib.contextmanager
+def _quiet_interrupt() -> Iterator[None]:
+    """Ctrl-C silences logging before it raises KeyboardInterrupt (a Dask call interrupted
+    half-way logs its own cancellation as an error)."""
+    if not _in_main_thread() or signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        yield
+        return
+
+    def handler(signum: int, frame: Any) -> None:
+        _silence_dask()
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGINT, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+@contextlib.contextmanager
+def _sigint_ignored() -> Iterator[None]:
+    """Ignore Ctrl-C while the block runs (closing a cluster is not to be interrupted)."""
+    if not _in_main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+def _connect(scheduler: str) -> Any:
+    """A client of the Dask scheduler at ``scheduler``, or one line saying why not."""
+    from distributed import Client
+
+    try:
+        return Client(scheduler, timeout=SCHEDULER_TIMEOUT)
+    except ValueError as exc:  # not an address
+        raise ValueError(f"scheduler: {scheduler}: {exc}") from None
+    except OSError:
+        raise ValueError(f"scheduler: no Dask scheduler answers at {scheduler} (waited "
+                         f"{SCHEDULER_TIMEOUT:g} s); check the address, start one "
+                         "(`dask scheduler`), or leave out --scheduler for a local cluster"
+                         ) from None
+
+
+def _local_config() -> Any:
+    """The Dask configuration of the local cluster's workers (a context manager)."""
+    import dask
+
+    # Dask's nanny sets MALLOC_TRIM_THRESHOLD_=65536 in every worker, which turns off
+    # glibc's adaptive mmap threshold: each output array of a case (hundreds of kB) is then
+    # a fresh mmap whose pages fault in on first touch, and a case runs ~2x slower than in
+    # this process. A large threshold keeps them on the reusable heap. (Dask already gives
+    # each worker one BLAS/OpenMP thread.) The statistical profiler, which samples every
+    # thread each 10 ms, is measurable on ms-long cases: off.
+    environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}))
+    environ["MALLOC_TRIM_THRESHOLD_"] = 1 << 30
+    environ["MALLOC_MMAP_THRESHOLD_"] = 1 << 27
+    return dask.config.set({"distributed.worker.profile.enabled": False,
+                            "distributed.nanny.pre-spawn-environ": environ})
+
+
+@contextlib.contextmanager
+def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
+    """A Dask client: local cluster (default), an existing scheduler, or none (in-process).
+
+    Parameters
+    ----------
+    scheduler : str or None
+        None: a local cluster; ``"synchronous"`` (or ``"sync"``, ``"none"``): no client,
+        the cases run in this process; else the address of a running Dask scheduler.
+    n_workers : int or None
+        Worker processes of the local cluster (default: the CPU count).
+
+    Raises
+    ------
+    ValueError
+        No scheduler answers at ``scheduler`` within :data:`SCHEDULER_TIMEOUT`, or it is
+        not an address.
+    """
+    if scheduler in ("synchronous", "none", "sync"):
+        yield None
+        return
+    from distributed import Client, LocalCluster
+
+    disabled = logging.root.manager.disable
+    cluster = client = None
+    try:
+        with contextlib.nullcontext() if scheduler else _local_config():
+            try:
+                if scheduler:
+                    client = _connect(scheduler)
+                else:
+                    # the workers log nothing below CRITICAL: a sweep reports its own
+                    # failures, and a worker stopped with its cluster may log an error.
+                    # The scheduler's HTTP server (None would still mean 0.0.0.0:8787, and
+                    # a warning on a second sweep) on a free port of this machine only.
+                    with _sigint_held():
+                        cluster = LocalCluster(
+                            n_workers=n_workers or (os.cpu_count() or 1), threads_per_worker=1,
+                            processes=True, dashboard_address="127.0.0.1:0",
+                            silence_logs=logging.CRITICAL)
+                        client = Client(cluster)
+                with _quiet_interrupt():
+                    yield client
+            except BaseException:
+                _silence_dask()
+                raise
+            finally:
+                with _sigint_ignored():  # nothing interrupts the closing
+                    if client is not None:
+                        client.close()
+                    if cluster is not None:
+                        cluster.close()
+    finally:
+        logging.disable(disabled)

@@ -1,0 +1,106 @@
+"""Running cases: one case to one row, a batch of cases (one Dask task), and the warm-up
+of a worker. This is what runs on the workers; it never writes a file."""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pounding.studies.sweep.measures import result_row
+from pounding.studies.sweep.overrides import apply_overrides
+
+__all__ = ["run_case", "warm_up"]
+
+
+def _error_text(exc: BaseException) -> str:
+    """A failed case's message on one line (a validation error names the key)."""
+    from pydantic import ValidationError
+
+    from pounding.config import format_validation_error
+
+    if isinstance(exc, ValidationError):
+        return format_validation_error(exc).replace("\n", "; ")
+    if isinstance(exc, ValueError):
+        return str(exc).replace("\n", "; ")
+    return f"{type(exc).__name__}: {exc}".replace("\n", "; ")
+
+
+def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Sequence[str],
+             values: Sequence[Any], history: bool = False) -> tuple[dict[str, Any], Any]:
+    """Run one case: ``(row, dataset or None)``; a failure is reported in the row.
+
+    The row holds ``status`` (``"ok"`` / ``"error"``), ``error`` (the message or None),
+    the measures and ``wall_time_s``.
+
+    Parameters
+    ----------
+    base : dict
+        The base model configuration as plain data.
+    base_dir : path-like
+        Where relative paths of the base model start.
+    params : sequence of str
+        The swept parameters (dotted paths).
+    values : sequence
+        The case's value of each parameter.
+    history : bool
+        Also return the time histories (:meth:`pounding.result.Result.to_dataset`).
+
+    Returns
+    -------
+    row : dict
+        The case's row of the results table (without its id).
+    dataset : xarray.Dataset or None
+        The time histories, if asked for and the case ran.
+    """
+    from pounding.config import RunConfig
+    from pounding.integrate import simulate
+
+    start = time.perf_counter()
+    dataset = None
+    try:
+        data = apply_overrides(base, params, values)
+        cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
+        model, motion, solver = cfg.build()
+        result = simulate(model, motion, **solver)
+        row: dict[str, Any] = {"status": "ok", "error": None, **result_row(result)}
+        if history:
+            dataset = result.to_dataset()
+    except Exception as exc:  # noqa: BLE001  (recorded in the table, the sweep goes on)
+        row = {"status": "error", "error": _error_text(exc)}
+    row["wall_time_s"] = time.perf_counter() - start
+    return row, dataset
+
+
+def _run_batch(payload: dict[str, Any], batch: list[tuple[int, str, tuple]]
+               ) -> list[tuple[str, dict[str, Any], Any]]:
+    """Run a batch of cases (one Dask task): ``[(case_id, row, dataset), ...]``."""
+    out = []
+    for _, cid, values in batch:
+        row, ds = run_case(payload["base"], payload["base_dir"], payload["params"], values,
+                           history=payload["histories"] is not None)
+        out.append((cid, row, ds))
+    return out
+
+
+def warm_up() -> float:
+    """Load the compiled kernel (numba's disk cache) in this process; seconds taken."""
+    from pounding.ground_motion import GroundMotion
+    from pounding.integrate import simulate
+    from pounding.model import PoundingModel
+    from pounding.structure import ShearBuilding
+
+    start = time.perf_counter()
+    b1 = ShearBuilding(masses=[1.0e5], stiffnesses=[4.0e7], heights=[3.0], name="a")
+    b2 = ShearBuilding(masses=[1.0e5], stiffnesses=[1.0e7], heights=[3.0], name="b")
+    from pounding.model import ContactSpec
+    model = PoundingModel([b1, b2], [0.001], ContactSpec("nonlinear-viscoelastic", k_h=2.75e9,
+                                                         e=0.65))
+    t = np.arange(101) * 0.01
+    gm = GroundMotion(dt=0.01, accel=3.0 * np.sin(2 * np.pi * t), name="warm-up")
+    simulate(model, gm)
+    return time.perf_counter() - start

@@ -1,0 +1,82 @@
+"""A case's values applied to the base model: dotted paths set, alternatives removed."""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Iterator, Sequence
+from typing import Any
+
+__all__ = ["apply_overrides"]
+
+_EXCLUSIVE: dict[tuple[str, str], tuple[str, ...]] = {
+    ("contact", "gap"): ("gaps",),
+    ("contact", "gaps"): ("gap",),
+    ("record", "scale"): ("pga_g",),
+    ("record", "pga_g"): ("scale",),
+    ("record", "file"): ("bundled",),
+    ("record", "bundled"): ("file", "dt", "units"),
+    ("building", "period"): ("stiffness",),
+    ("building", "stiffness"): ("period",),
+}
+"""Setting the key on the left removes the keys on the right from the base (they are
+alternatives in a model file: setting ``record.scale`` replaces a base ``pga_g``)."""
+
+
+def apply_overrides(base: dict[str, Any], params: Sequence[str],
+                    values: Sequence[Any]) -> dict[str, Any]:
+    """A copy of the base configuration with each dotted path set to its value.
+
+    Alternatives of a key are removed (:data:`_EXCLUSIVE`); a new ``contact.law`` drops the
+    base's contact keys that law does not read (those set by the case are kept, so a
+    mismatch is reported).
+
+    Parameters
+    ----------
+    base : dict
+        The base model configuration as plain data (left unchanged).
+    params : sequence of str
+        Dotted paths (``"contact.gap"``, ``"building.*.period"``, …).
+    values : sequence
+        One value per path.
+
+    Returns
+    -------
+    dict
+        The case's configuration, ready for validation.
+    """
+    from pounding.config import LAW_FIELDS
+
+    data = copy.deepcopy(base)
+    set_contact: set[str] = set()
+    for path, value in zip(params, values):
+        parts = path.split(".")
+        for node in _parents(data, parts[:-1]):
+            key = parts[-1]
+            section = parts[0]
+            for other in _EXCLUSIVE.get((section, key), ()):
+                node.pop(other, None)
+            node[key] = copy.deepcopy(value)
+        if parts[0] == "contact" and len(parts) == 2:
+            set_contact.add(parts[1])
+    contact = data.get("contact")
+    if "law" in set_contact and isinstance(contact, dict) and isinstance(contact.get("law"), str):
+        used = LAW_FIELDS.get(contact["law"].strip().lower())
+        if used is not None:
+            for key in list(contact):
+                if key not in used | {"law", "gap", "gaps"} | set_contact:
+                    del contact[key]
+    return data
+
+
+def _parents(data: Any, parts: list[str]) -> Iterator[dict[str, Any]]:
+    """The tables that hold the last key of a dotted path (several with ``*``)."""
+    if not parts:
+        yield data
+        return
+    head, rest = parts[0], parts[1:]
+    if isinstance(data, list):
+        items = data if head == "*" else [data[int(head)]]
+        for item in items:
+            yield from _parents(item, rest)
+    else:
+        yield from _parents(data.setdefault(head, {}), rest)
