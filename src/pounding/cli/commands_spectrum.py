@@ -18,8 +18,8 @@ def _pct(zeta: float) -> str:
 
 @app.command("spectrum")
 def spectrum_cmd(
-    files: Annotated[list[Path], typer.Argument(
-        metavar="RECORD...", help="Record files (PEER .AT2 or text, read as by `pounding "
+    records: Annotated[list[Path], typer.Argument(
+        help="Record files (PEER .AT2 or text, read as by `pounding "
         "record`).", show_default=False)],
     damping: Annotated[str, typer.Option(
         "--damping", metavar="LIST", help="Damping ratios, fractions of critical, each in "
@@ -50,9 +50,9 @@ def spectrum_cmd(
 ) -> None:
     """Elastic response spectra of records: Sd, PSV, PSA and absolute acceleration.
 
-    Exact for a record linear between samples (Nigam & Jennings 1969), peaks located inside
-    the steps; the oscillator starts at rest and is followed over the record. See
-    docs/spectra.md.
+    Exact for a record linear between samples (Nigam & Jennings 1969), peaks inside steps.
+
+    The oscillator starts at rest and is followed over the record; see docs/spectra.md.
 
     Examples:
 
@@ -66,13 +66,13 @@ def spectrum_cmd(
 
     zetas = parse_damping(damping, "--damping")
     t = parse_periods(periods, "--periods")
-    if rotd and len(files) % 2:
+    if rotd and len(records) % 2:
         raise ValueError(f"--rotd: give the records two at a time, the two horizontal "
-                         f"components of each motion (got {len(files)} records)")
+                         f"components of each motion (got {len(records)} records)")
     from pounding.spectra import DesignSpectrum
 
     designs = [DesignSpectrum.from_file(f) for f in design or []]
-    motions = _read(files, dt, units)
+    motions = _read(records, dt, units)
     if rotd:
         curves, text = _rotd(motions, t, zetas)
     else:
