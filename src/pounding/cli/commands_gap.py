@@ -88,8 +88,10 @@ def gap_cmd(
                            "duration of the model file, else each record's duration).")] = None,
     spectrum: Annotated[Path | None, typer.Option(
         "--spectrum", metavar="FILE", help="Design spectrum (TOML: kind, units, periods, "
-        "values; or asce7 = {sds, sd1, tl}); adds the rules from fundamental-mode spectral "
-        "displacements. See docs/gap.md.")] = None,
+        "values; or asce7 = {sds, sd1, tl}; or eurocode8 = {agr, ground_type, type, "
+        "importance, damping}; or CSV: period_s and sa_g, sa_m_s2 or sd_m); adds the rules "
+        "from fundamental-mode spectral displacements. See docs/gap.md, docs/spectra.md.")
+    ] = None,
     plot: Annotated[Path | None, typer.Option(
         "--plot", metavar="FILE", help="Draw gap against elevation to FILE (.png, .svg, .pdf).")
     ] = None,

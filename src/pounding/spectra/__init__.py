@@ -2,15 +2,27 @@
 its period.
 
 * :mod:`pounding.spectra.design` -- code design spectra: :class:`DesignSpectrum`, a table of
-  Sa or Sd against the period, and the ASCE 7-16 §11.4.6 spectrum
-  (:meth:`DesignSpectrum.asce7`);
+  Sa or Sd against the period (from TOML or CSV), the ASCE 7-16 §11.4.6 spectrum
+  (:meth:`DesignSpectrum.asce7`) and the Eurocode 8 spectrum, EN 1998-1 §3.2.2.2
+  (:meth:`DesignSpectrum.eurocode8`);
 * :mod:`pounding.spectra.modal` -- a building's peak floor displacements from a spectrum,
-  fundamental mode only (:func:`spectral_displacements`, :func:`fundamental_mode`).
+  fundamental mode only (:func:`spectral_displacements`, :func:`fundamental_mode`);
+* :mod:`pounding.spectra.response` -- elastic response spectra of records (Sd, PSV, PSA,
+  absolute acceleration), exact for records linear between samples
+  (:func:`response_spectrum`, :class:`ResponseSpectrum`); its compiled kernel is
+  :mod:`pounding.spectra._kernel`, tested against :mod:`pounding.spectra.reference`;
+* :mod:`pounding.spectra.rotd` -- RotD50, RotD100 (Boore 2010) and the geometric mean of two
+  horizontal components (:func:`rotd_spectrum`, :class:`RotDSpectrum`).
+
+Nothing here imports numba until a spectrum is computed. See ``docs/spectra.md``.
 
 Used by the gap study (:mod:`pounding.studies.gap`, ``docs/gap.md``).
 """
 
 from pounding.spectra.design import DesignSpectrum
 from pounding.spectra.modal import fundamental_mode, spectral_displacements
+from pounding.spectra.response import ResponseSpectrum, response_spectrum
+from pounding.spectra.rotd import RotDSpectrum, rotd_spectrum
 
-__all__ = ["DesignSpectrum", "fundamental_mode", "spectral_displacements"]
+__all__ = ["DesignSpectrum", "ResponseSpectrum", "RotDSpectrum", "fundamental_mode",
+           "response_spectrum", "rotd_spectrum", "spectral_displacements"]

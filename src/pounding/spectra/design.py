@@ -1,7 +1,9 @@
 """Design spectra: :class:`DesignSpectrum`, a code's elastic design response spectrum as a
-table of periods and values, with the ASCE 7-16 §11.4.6 spectrum built from ``S_DS``,
-``S_D1`` and ``T_L`` (:meth:`DesignSpectrum.asce7`) and spectrum files in TOML
-(:meth:`DesignSpectrum.from_file`). See ``docs/gap.md``.
+table of periods and values, linearly interpolated: the ASCE 7-16 §11.4.6 spectrum built
+from ``S_DS``, ``S_D1`` and ``T_L`` (:meth:`DesignSpectrum.asce7`), the Eurocode 8
+elastic spectrum of EN 1998-1:2004 §3.2.2.2 (:meth:`DesignSpectrum.eurocode8`), and a
+user's table; spectrum files in TOML or CSV (:meth:`DesignSpectrum.from_file`). See
+``docs/spectra.md`` and ``docs/gap.md``.
 
 Units: periods in s, Sa in any acceleration unit of :mod:`pounding.units` (m/s² internally),
 Sd in m.
@@ -9,20 +11,32 @@ Sd in m.
 
 from __future__ import annotations
 
+import functools
 import os
 import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.units import acceleration_factor
-from pounding.validation import positive
+from pounding.units import G, acceleration_factor
+from pounding.validation import in_range, positive
 
-__all__ = ["DesignSpectrum"]
+__all__ = ["EC8_GROUND_TYPES", "DesignSpectrum"]
 
 FloatArray = NDArray[np.float64]
+
+EC8_GROUND_TYPES: dict[int, dict[str, tuple[float, float, float, float]]] = {
+    1: {"A": (1.0, 0.15, 0.4, 2.0), "B": (1.2, 0.15, 0.5, 2.0), "C": (1.15, 0.20, 0.6, 2.0),
+        "D": (1.35, 0.20, 0.8, 2.0), "E": (1.4, 0.15, 0.5, 2.0)},
+    2: {"A": (1.0, 0.05, 0.25, 1.2), "B": (1.35, 0.05, 0.25, 1.2), "C": (1.5, 0.10, 0.25, 1.2),
+        "D": (1.8, 0.10, 0.30, 1.2), "E": (1.6, 0.05, 0.25, 1.2)},
+}
+"""EN 1998-1:2004 Table 3.2 (Type 1) and Table 3.3 (Type 2), the recommended values: for
+each ground type A–E, ``(S, T_B [s], T_C [s], T_D [s])``. A National Annex may choose
+others (give them as a table)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -43,6 +57,10 @@ class DesignSpectrum:
         for ``Sd``: ``"m"``.
     name : str
         Label.
+    formula : callable, optional
+        ``Sa(T)`` in ``units`` for an array of periods, where the spectrum is a code's
+        closed form (:meth:`asce7`, :meth:`eurocode8`): then :meth:`sd` evaluates it
+        exactly instead of interpolating the table (which is kept for plots and files).
 
     Notes
     -----
@@ -56,6 +74,7 @@ class DesignSpectrum:
     kind: str = "Sa"
     units: str = "g"
     name: str = "design spectrum"
+    formula: Callable[[FloatArray], FloatArray] | None = field(default=None, repr=False)
     _sd: FloatArray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -92,19 +111,40 @@ class DesignSpectrum:
         """Spectral displacement [m] at ``period`` [s].
 
         Sd is interpolated linearly in T when given; for an Sa table, Sa is interpolated
-        and converted (``Sd = Sa (T/2π)²``).
+        (or, for a code's spectrum, evaluated by its formula) and converted
+        (``Sd = Sa (T/2π)²``).
         """
+        t = self._inside(period)
+        if self.kind == "Sd":
+            out = np.interp(t, self.periods, self.values)
+        else:
+            out = self._sa_si(t) * (t / (2.0 * np.pi)) ** 2
+        return float(out) if out.ndim == 0 else out
+
+    def sa_g(self, period: ArrayLike) -> FloatArray | float:
+        """Pseudo-acceleration [g] at ``period`` [s]: Sa in g, or ``Sd (2π/T)²/g`` for an
+        Sd table (T > 0)."""
+        t = self._inside(period)
+        if self.kind == "Sd":
+            with np.errstate(divide="ignore", invalid="ignore"):
+                out = np.interp(t, self.periods, self.values) * (2.0 * np.pi / t) ** 2 / G
+        else:
+            out = self._sa_si(t) / G
+        return float(out) if out.ndim == 0 else out
+
+    def _inside(self, period: ArrayLike) -> FloatArray:
         t = np.asarray(period, dtype=float)
         lo, hi = self.periods[0], self.periods[-1]
         if np.any(t < lo - 1e-12) or np.any(t > hi + 1e-12):
             raise ValueError(f"spectrum {self.name!r}: period {t.tolist()} s outside the "
                              f"table [{lo:g}, {hi:g}] s (no extrapolation)")
-        if self.kind == "Sd":
-            out = np.interp(t, self.periods, self.values)
-        else:
-            sa = np.interp(t, self.periods, self.values) * acceleration_factor(self.units)
-            out = sa * (t / (2.0 * np.pi)) ** 2
-        return float(out) if out.ndim == 0 else out
+        return t
+
+    def _sa_si(self, t: FloatArray) -> FloatArray:
+        """Sa [m/s²] of an Sa spectrum: its formula, else the table interpolated."""
+        sa = self.formula(t) if self.formula is not None else np.interp(t, self.periods,
+                                                                          self.values)
+        return np.asarray(sa, dtype=float) * acceleration_factor(self.units)
 
     @classmethod
     def asce7(cls, sds: float, sd1: float, tl: float = 8.0, t_max: float | None = None,
@@ -123,16 +163,74 @@ class DesignSpectrum:
         top = max(2.0 * tl, 10.0) if t_max is None else positive("t_max", t_max)
         t = np.unique(np.concatenate([np.linspace(0.0, top, n), [t0, ts, tl]]))
         t = t[t <= top]
-        tt = np.where(t > 0.0, t, 1.0)  # the branches below T_S never use it at T = 0
-        sa = np.where(t < t0, sds * (0.4 + 0.6 * t / t0),
-                      np.where(t <= ts, sds,
-                               np.where(t <= tl, sd1 / tt, sd1 * tl / tt ** 2)))
-        return cls(t, sa, kind="Sa", units="g",
+        formula = functools.partial(_asce7_sa, sds=sds, sd1=sd1, tl=tl)
+        return cls(t, formula(t), kind="Sa", units="g", formula=formula,
                    name=name or f"ASCE 7-16 (SDS={sds:g} g, SD1={sd1:g} g, TL={tl:g} s)")
 
     @classmethod
+    def eurocode8(cls, agr: float, ground_type: str = "B", spectrum_type: int = 1,
+                  importance: float = 1.0, damping: float = 0.05, t_max: float = 4.0,
+                  n: int = 400, name: str | None = None) -> DesignSpectrum:
+        """The Eurocode 8 horizontal elastic response spectrum, EN 1998-1:2004 §3.2.2.2
+        (Sa in g).
+
+        With ``a_g = γ_I a_gR`` (§3.2.1(3)) and ``S, T_B, T_C, T_D`` from Table 3.2
+        (Type 1) or Table 3.3 (Type 2) for the ground type (:data:`EC8_GROUND_TYPES`):
+
+        * eq. 3.2, ``0 ≤ T ≤ T_B``: ``Se = a_g S (1 + T/T_B (2.5 η − 1))``;
+        * eq. 3.3, ``T_B ≤ T ≤ T_C``: ``Se = 2.5 a_g S η``;
+        * eq. 3.4, ``T_C ≤ T ≤ T_D``: ``Se = 2.5 a_g S η T_C/T``;
+        * eq. 3.5, ``T_D ≤ T ≤ 4 s``: ``Se = 2.5 a_g S η T_C T_D/T²``;
+
+        with the damping correction ``η = sqrt(10/(5 + ξ)) ≥ 0.55``, ξ in % (eq. 3.6).
+        Tabulated on ``n`` periods from 0 to ``t_max`` (≤ 4 s, where eq. 3.5 ends), plus the
+        corner periods.
+
+        Parameters
+        ----------
+        agr : float
+            Reference peak ground acceleration on type A ground a_gR [g], > 0.
+        ground_type : {"A", "B", "C", "D", "E"}
+            Ground type of Table 3.1 (S1 and S2 need special studies: not covered).
+        spectrum_type : {1, 2}
+            Type 1 (surface-wave magnitude above 5.5) or Type 2 (§3.2.2.2(2)).
+        importance : float
+            Importance factor γ_I [-] (§4.2.5: 0.8, 1.0, 1.2, 1.4 recommended), > 0.
+        damping : float
+            Viscous damping ratio ζ [-] (0.05 = 5 %, η = 1), in [0, 1).
+        """
+        agr = positive("agr", agr)
+        gi = positive("importance", importance)
+        zeta = in_range("damping", damping, 0.0, 1.0, high_open=True)
+        kind = {1: 1, 2: 2, "1": 1, "2": 2}.get(spectrum_type)  # type: ignore[call-overload]
+        if kind is None:
+            raise ValueError(f"spectrum_type: must be 1 or 2 (EN 1998-1 §3.2.2.2(2)) "
+                             f"(got {spectrum_type!r})")
+        ground = str(ground_type).strip().upper()
+        if ground not in EC8_GROUND_TYPES[kind]:
+            raise ValueError(f"ground_type: must be one of A, B, C, D, E (EN 1998-1 Table "
+                             f"3.1) (got {ground_type!r})")
+        top = positive("t_max", t_max)
+        if top > 4.0:
+            raise ValueError(f"t_max: EN 1998-1 eq. 3.5 ends at 4 s (longer periods: its "
+                             f"Annex A, not covered) (got {top:g})")
+        soil, tb, tc, td = EC8_GROUND_TYPES[kind][ground]
+        eta = max(float(np.sqrt(10.0 / (5.0 + 100.0 * zeta))), 0.55)
+        t = np.unique(np.concatenate([np.linspace(0.0, top, n), [tb, tc, td]]))
+        t = t[t <= top]
+        formula = functools.partial(_ec8_sa, ag=gi * agr, soil=soil, tb=tb, tc=tc, td=td,
+                                    eta=eta)
+        return cls(t, formula(t), kind="Sa", units="g", formula=formula,
+                   name=name or f"EN 1998-1 Type {kind}, ground {ground} (agR={agr:g} g, "
+                                f"γI={gi:g}, ζ={100 * zeta:g} %)")
+
+    @classmethod
     def from_file(cls, path: str | os.PathLike[str]) -> DesignSpectrum:
-        """Read a spectrum file (TOML). Either a table::
+        """Read a spectrum file: CSV (suffix ``.csv``) or TOML (any other suffix).
+
+        A CSV file is a user's table: ``#`` lines are comments, the first other line names
+        the columns ``period_s`` and one of ``sa_g``, ``sa_m_s2`` or ``sd_m``; the name is
+        the file's stem. A TOML file is either a table::
 
             name = "site spectrum"
             kind = "Sa"            # or "Sd"
@@ -140,29 +238,48 @@ class DesignSpectrum:
             periods = [0.0, 0.2, 1.0, 4.0]
             values  = [0.4, 1.0, 0.6, 0.15]
 
-        or the ASCE 7-16 parameters: ``asce7 = { sds = 1.0, sd1 = 0.6, tl = 8.0 }``.
+        or a code's parameters: ``asce7 = { sds = 1.0, sd1 = 0.6, tl = 8.0 }`` (ASCE 7-16
+        §11.4.6, :meth:`asce7`) or ``eurocode8 = { agr = 0.25, ground_type = "C",
+        type = 1, importance = 1.0, damping = 0.05 }`` (EN 1998-1 §3.2.2.2,
+        :meth:`eurocode8`).
         """
         p = Path(path)
         if not p.is_file():
             raise ValueError(f"{p}: is a directory, not a spectrum file" if p.is_dir() else
                              f"{p}: no such spectrum file")
+        if p.suffix.lower() == ".csv":
+            return cls._from_csv(p)
         try:
             data = tomllib.loads(p.read_text(encoding="utf-8"))
         except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
             raise ValueError(f"{p}: not a valid TOML spectrum file: {exc}") from None
         name = str(data.get("name", p.stem))
         try:
-            if "asce7" in data:
-                extra = sorted(set(data) - {"asce7", "name"})
+            codes = [k for k in ("asce7", "eurocode8") if k in data]
+            if len(codes) > 1:
+                raise ValueError("give one of asce7 and eurocode8, not both")
+            if codes:
+                code = codes[0]
+                extra = sorted(set(data) - {code, "name"})
                 if extra:
-                    raise ValueError(f"unknown key(s) beside asce7: {', '.join(extra)}")
-                par = dict(data["asce7"])
-                unknown = sorted(set(par) - {"sds", "sd1", "tl"})
-                if unknown or "sds" not in par or "sd1" not in par:
-                    raise ValueError("asce7 needs sds and sd1 [g] and optionally tl [s] "
-                                     f"(got {sorted(par)})")
-                return cls.asce7(float(par["sds"]), float(par["sd1"]),
-                                 float(par.get("tl", 8.0)), name=name)
+                    raise ValueError(f"unknown key(s) beside {code}: {', '.join(extra)}")
+                par = dict(data[code])
+                if code == "asce7":
+                    unknown = sorted(set(par) - {"sds", "sd1", "tl"})
+                    if unknown or "sds" not in par or "sd1" not in par:
+                        raise ValueError("asce7 needs sds and sd1 [g] and optionally tl [s] "
+                                         f"(got {sorted(par)})")
+                    return cls.asce7(float(par["sds"]), float(par["sd1"]),
+                                     float(par.get("tl", 8.0)), name=name)
+                keys = {"agr", "ground_type", "type", "importance", "damping"}
+                if set(par) - keys or "agr" not in par:
+                    raise ValueError("eurocode8 needs agr [g] and optionally ground_type "
+                                     "(A-E), type (1 or 2), importance, damping (got "
+                                     f"{sorted(par)})")
+                return cls.eurocode8(float(par["agr"]), str(par.get("ground_type", "B")),
+                                     par.get("type", 1), float(par.get("importance", 1.0)),
+                                     float(par.get("damping", 0.05)),
+                                     name=str(data["name"]) if "name" in data else None)
             extra = sorted(set(data) - {"name", "kind", "units", "periods", "values"})
             if extra:
                 raise ValueError(f"unknown key(s): {', '.join(extra)}")
@@ -177,3 +294,61 @@ class DesignSpectrum:
                        name=name)
         except (ValueError, TypeError) as exc:
             raise ValueError(f"{p}: {exc}") from None
+
+    @classmethod
+    def _from_csv(cls, p: Path) -> DesignSpectrum:
+        """A user's table in CSV: columns ``period_s`` and ``sa_g``, ``sa_m_s2`` or
+        ``sd_m`` (see :meth:`from_file`)."""
+        import csv
+
+        columns = {"sa_g": ("Sa", "g"), "sa_m_s2": ("Sa", "m/s2"), "sd_m": ("Sd", "m")}
+        try:
+            lines = [ln for ln in p.read_text(encoding="utf-8").splitlines()
+                     if ln.strip() and not ln.lstrip().startswith("#")]
+        except UnicodeDecodeError as exc:
+            raise ValueError(f"{p}: not a UTF-8 text file ({exc.reason})") from None
+        rows = list(csv.reader(lines))
+        if not rows:
+            raise ValueError(f"{p}: no header line (columns period_s and one of "
+                             f"{', '.join(columns)})")
+        head = [h.strip().lower() for h in rows[0]]
+        found = [c for c in columns if c in head]
+        if "period_s" not in head or len(found) != 1:
+            raise ValueError(f"{p}: the header must name period_s and one of "
+                             f"{', '.join(columns)} (got {', '.join(rows[0])})")
+        it, iv = head.index("period_s"), head.index(found[0])
+        t, v = [], []
+        for k, row in enumerate(rows[1:], start=2):
+            try:
+                t.append(float(row[it]))
+                v.append(float(row[iv]))
+            except (ValueError, IndexError):
+                raise ValueError(f"{p}: data line {k - 1}: period_s and {found[0]} must be "
+                                 f"numbers (got {','.join(row)!r})") from None
+        kind, units = columns[found[0]]
+        try:
+            return cls(np.asarray(t), np.asarray(v), kind=kind, units=units, name=p.stem)
+        except ValueError as exc:
+            raise ValueError(f"{p}: {exc}") from None
+
+
+def _asce7_sa(t: FloatArray, *, sds: float, sd1: float, tl: float) -> FloatArray:
+    """ASCE 7-16 §11.4.6 Sa [g] at periods ``t`` [s] (eqs. 11.4-5 to 11.4-8)."""
+    t = np.asarray(t, dtype=float)
+    t0, ts = 0.2 * sd1 / sds, sd1 / sds
+    tt = np.where(t > 0.0, t, 1.0)  # the branches beyond T_S never use it at T = 0
+    return np.where(t < t0, sds * (0.4 + 0.6 * t / t0),
+                    np.where(t <= ts, sds,
+                             np.where(t <= tl, sd1 / tt, sd1 * tl / tt ** 2)))
+
+
+def _ec8_sa(t: FloatArray, *, ag: float, soil: float, tb: float, tc: float, td: float,
+            eta: float) -> FloatArray:
+    """EN 1998-1 §3.2.2.2 Se [g] at periods ``t`` [s] (eqs. 3.2 to 3.5)."""
+    t = np.asarray(t, dtype=float)
+    tt = np.where(t > 0.0, t, 1.0)  # the branches beyond T_C never use it at T = 0
+    plateau = 2.5 * ag * soil * eta
+    return np.where(t <= tb, ag * soil * (1.0 + t / tb * (2.5 * eta - 1.0)),
+                    np.where(t <= tc, plateau,
+                             np.where(t <= td, plateau * tc / tt,
+                                      plateau * tc * td / tt ** 2)))
