@@ -88,11 +88,13 @@ def _loop_deriv(calls, y, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
 
 
 @njit(**_LOOP)
-def _loop_find_event(calls, y0, ks, y1, n, cdof, cw, cgap, committed, s_lo, s_hi, grazed):
+def _loop_find_event(calls, y0, ks, y1, n, cdof, cw, cgap, ccode, cparams, committed, s_lo,
+                     s_hi, grazed):
     total = 0.0
     for i in range(calls):
         te, _, _ = events.find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, cdof, cw,
-                                     cgap, committed, s_lo, s_hi, -1, 0, 2e-10, grazed)
+                                     cgap, ccode, cparams, committed, s_lo, s_hi, -1, 0, 2e-10,
+                                     grazed)
         total += te
     return total
 
@@ -151,7 +153,8 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
                      ks, ps)
     rows.append(("one right-hand side, no contact element", f"{ns:.1f} ns"))
     ns = per_call_ns(_loop_find_event, calls * 5, y, ks, y + 1e-6, n, a["cdof"], a["cw"],
-                     a["cgap"], closed, a["s_lo"], a["s_hi"], np.zeros(a["cgap"].shape[0]))
+                     a["cgap"], a["ccode"], a["cparams"], closed, a["s_lo"], a["s_hi"],
+                     np.zeros(a["cgap"].shape[0]))
     rows.append(("one event search (contact closed)", f"{ns:.1f} ns"))
     return rows
 

@@ -15,8 +15,10 @@ from pounding.model import PoundingModel
 from pounding.structure import ModalDamping, RayleighDamping
 
 ROOT = Path(__file__).resolve().parents[1]
-# model files (sweep files, sweep_*.toml, are tested in tests/studies/test_sweep.py)
-EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml") if not p.name.startswith("sweep_"))
+# model files (sweep files, sweep_*.toml, are tested in tests/studies/test_sweep.py, spectrum
+# files, spectrum_*.toml, in tests/spectra/)
+EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml")
+                  if not p.name.startswith(("sweep_", "spectrum_")))
 DEMO = ROOT / "src" / "pounding" / "examples" / "two_10_storey.toml"
 
 
@@ -101,13 +103,14 @@ def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> No
     assert (ROOT / "examples").resolve() == example_path(DEMO_NAME).parent.resolve()
     assert example_path(DEMO_NAME).resolve() == DEMO.resolve()
     listed = {e.name: e.kind for e in examples()}
-    assert listed == {p.name: ("sweep" if p.name.startswith("sweep_") else "model")
+    assert listed == {p.name: next((k for k in ("sweep", "spectrum")
+                                    if p.name.startswith(f"{k}_")), "model")
                       for p in (ROOT / "examples").glob("*.toml")}
     assert all(e.description for e in examples())
     copied = copy_examples(tmp_path / "mine")
     assert {p.name for p in copied} == set(listed) | {"README.md"}
     for p in copied:
-        if p.suffix == ".toml" and not p.name.startswith("sweep_"):
+        if p.suffix == ".toml" and listed.get(p.name) == "model":
             load_config(p)  # every copied model file runs from its new folder
     with pytest.raises(ValueError, match="already has"):
         copy_examples(tmp_path / "mine")
@@ -273,7 +276,8 @@ def test_structural_problems() -> None:
     assert "no floor at the same elevation" in error_of(data)
     data = base()
     data["record"] = {"bundled": "el_centro", "scale": 2.0, "pga_g": 0.5}
-    assert "record.pga_g: give scale or pga_g, not both" in error_of(data)
+    assert "record.pga_g: give one of scale, pga_g and sa_g (got scale=2, pga_g=0.5)" in \
+        error_of(data)
     data = base()
     data["building"] = []
     assert "building: must hold at least 1 value(s)" in error_of(data)

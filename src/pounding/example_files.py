@@ -1,4 +1,5 @@
-"""The example model and sweep files that ship inside the package (``pounding/examples``).
+"""The example model, sweep and spectrum files that ship inside the package
+(``pounding/examples``).
 
 They are the same files as ``examples/`` of a clone of the repository (which links to
 them), so an installed ``pounding`` can show and copy them: ``pounding examples`` lists
@@ -21,7 +22,8 @@ DEMO = "two_10_storey.toml"
 
 
 class Example(NamedTuple):
-    """One bundled example: file name, kind (``model`` or ``sweep``), what it shows."""
+    """One bundled example: file name, kind (``model``, ``sweep`` or ``spectrum``: by the
+    prefix ``sweep_`` / ``spectrum_`` of its name), what it shows."""
 
     name: str
     kind: str
@@ -54,7 +56,8 @@ def examples() -> list[Example]:
             lines.append(line.lstrip("# ").strip())
         text = " ".join(lines)
         first = text.split(". ")[0].rstrip(".")
-        kind = "sweep" if path.name.startswith("sweep_") else "model"
+        kind = next((k for k in ("sweep", "spectrum") if path.name.startswith(f"{k}_")),
+                    "model")
         out.append(Example(path.name, kind, first))
     return out
 

@@ -30,6 +30,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_report,
     commands_run,
     commands_spectrum,
+    commands_suite,
     commands_sweep,
 )
 from pounding.cli.app import app, err_console

@@ -19,8 +19,8 @@ def _pct(zeta: float) -> str:
 @app.command("spectrum")
 def spectrum_cmd(
     records: Annotated[list[Path], typer.Argument(
-        help="Record files (PEER .AT2 or text, read as by `pounding "
-        "record`).", show_default=False)],
+        help="Record files (any format `pounding record` reads: PEER .AT2, K-NET, "
+        "COSMOS, text).", show_default=False)],
     damping: Annotated[str, typer.Option(
         "--damping", metavar="LIST", help="Damping ratios, fractions of critical, each in "
         "\\[0, 1): 0.05,0.02.")] = "0.05",

@@ -5,12 +5,16 @@ from __future__ import annotations
 import functools
 from pathlib import Path
 
-from pydantic import PrivateAttr, ValidationInfo, field_validator, model_validator
+from typing import Annotated
+
+from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
 from pounding.config.base import Pos, Section, field_error, fmt
 from pounding.ground_motion import GroundMotion, bundled_records, el_centro, load_bundled, read_record
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
+SA_DAMPING = 0.05
+"""Damping ratio of ``sa_g`` unless ``sa_damping`` says otherwise (5 %, the codes')."""
 """Names that select :func:`pounding.ground_motion.el_centro` in ``record.bundled``."""
 
 
@@ -27,8 +31,11 @@ class RecordConfig(Section):
 
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
-    them. Then, in this order: ``duration`` [s] keeps the record up to that time,
-    ``scale`` [-] multiplies it, or ``pga_g`` [g] scales it to that peak.
+    them. Then, in this order: ``duration`` [s] keeps the record up to that time, and at
+    most one of ``scale`` [-] (multiplies it), ``pga_g`` [g] (scales it to that peak) and
+    ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
+    period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
+    incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`).
     """
 
     bundled: str | None = None
@@ -38,6 +45,9 @@ class RecordConfig(Section):
     duration: Pos | None = None
     scale: float | None = None
     pga_g: Pos | None = None
+    sa_g: Pos | None = None
+    sa_period: Pos | None = None
+    sa_damping: Annotated[float, Field(ge=0.0, lt=1.0)] | None = None
 
     _path: Path | None = PrivateAttr(default=None)
 
@@ -57,9 +67,16 @@ class RecordConfig(Section):
         if (self.bundled is None) == (self.file is None):
             raise ValueError("give exactly one of bundled (e.g. bundled = \"el_centro\") and "
                              f"file (got bundled={self.bundled!r}, file={self.file!r})")
-        if self.scale is not None and self.pga_g is not None:
-            raise field_error("pga_g", f"give scale or pga_g, not both (got scale="
-                                        f"{self.scale:g}, pga_g={self.pga_g:g})")
+        given = [k for k in ("scale", "pga_g", "sa_g") if getattr(self, k) is not None]
+        if len(given) > 1:
+            raise field_error(given[-1], "give one of scale, pga_g and sa_g (got "
+                              + ", ".join(f"{k}={getattr(self, k):g}" for k in given) + ")")
+        if self.sa_g is not None and self.sa_period is None:
+            raise field_error("sa_period", f"sa_g = {self.sa_g:g} g needs the period [s] of "
+                                           "that pseudo-acceleration (e.g. sa_period = 1.0)")
+        if self.sa_g is None and (self.sa_period is not None or self.sa_damping is not None):
+            key = "sa_period" if self.sa_period is not None else "sa_damping"
+            raise field_error(key, f"only with sa_g (got {fmt(getattr(self, key))})")
         if self.bundled is not None:
             for key in ("dt", "units"):
                 if getattr(self, key) is not None:
@@ -99,4 +116,9 @@ class RecordConfig(Section):
             gm = gm.scaled(self.scale)
         if self.pga_g is not None:
             gm = gm.scaled_to_pga(self.pga_g)
+        if self.sa_g is not None:
+            from pounding.spectra.scaling import scale_to_sa
+
+            gm = scale_to_sa(gm, self.sa_g, self.sa_period,  # type: ignore[arg-type]
+                             SA_DAMPING if self.sa_damping is None else self.sa_damping)
         return gm

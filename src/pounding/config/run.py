@@ -148,6 +148,7 @@ class RunConfig(Section):
         output step (the one used: the largest divisor of the record step not above the
         one asked for), duration and largest adaptive step. The file it makes runs the same
         model to the last bit, and says what was assumed."""
+        from pounding.config.record import SA_DAMPING
         from pounding.contact.factory import default_formula
         from pounding.integrate import DEFAULT_OUTPUT_STEP, grid_step
 
@@ -167,6 +168,8 @@ class RunConfig(Section):
             default = default_formula(law, self.contact.tension)
             if "formula" in LAW_FIELDS[law] and default and "e" in c and "formula" not in c:
                 c["formula"] = default
+        if self.record.sa_g is not None:
+            data["record"].setdefault("sa_damping", SA_DAMPING)
         motion = self.record.load()
         step = grid_step(motion.dt, self.solver.dt or DEFAULT_OUTPUT_STEP)
         sol = data.setdefault("solver", {})

@@ -16,7 +16,7 @@ if TYPE_CHECKING:  # `pounding spectrum` imports this module when drawing only
 
     from pounding.spectra import DesignSpectrum
 
-__all__ = ["plot_spectra"]
+__all__ = ["plot_spectra", "plot_suite_scaling"]
 
 
 def plot_spectra(periods: NDArray[np.float64],
@@ -64,4 +64,59 @@ def plot_spectra(periods: NDArray[np.float64],
     ax.grid(True, which="both", lw=0.3, alpha=0.6)
     ax.legend(fontsize=8)
     ax.set_title(title)
+    return fig
+
+
+def plot_suite_scaling(periods: NDArray[np.float64], scaled: NDArray[np.float64],
+                       names: Sequence[str], target: DesignSpectrum,
+                       period: float, period_range: tuple[float, float],
+                       code_ratio: float | None = None,
+                       title: str = "Suite scaled to the target") -> Figure:
+    """Each record's scaled spectrum (thin), the suite's mean (thick), the target (black,
+    dashed), ``code_ratio`` × the target (dotted, where a code's rule applies), the period
+    range checked (shaded) and T1.
+
+    Parameters
+    ----------
+    periods : array
+        Periods [s] of the spectra.
+    scaled : (m, n) array
+        PSA [g] of each scaled record on ``periods``.
+    names : sequence of str
+        Record names (the legend lists at most ten).
+    target : DesignSpectrum
+        The target spectrum (Sa [g]).
+    period : float
+        The structure's period T1 [s].
+    period_range : (float, float)
+        The range the scaling was checked over [s].
+    code_ratio : float, optional
+        Draw this fraction of the target (0.9 for ASCE 7-22 and EN 1998-1).
+    """
+    fig = new_figure(10.5, 5.0, layout="constrained", laid_out=False)
+    ax = fig.subplots()
+    ax.axvspan(*period_range, color="0.92", zorder=0, label=f"range {period_range[0]:.3g}–"
+               f"{period_range[1]:.3g} s")
+    for k, (name, psa) in enumerate(zip(names, scaled, strict=True)):
+        ax.plot(periods, psa, lw=0.8, alpha=0.7, label=name if k < 10 else None)
+    ax.plot(periods, scaled.mean(axis=0), color="C3", lw=2.5, label="mean of the suite")
+    inside = periods[(periods >= target.periods[0]) & (periods <= target.periods[-1])]
+    sa = np.asarray(target.sa_g(inside))
+    ax.plot(inside, sa, color="black", ls="--", lw=1.5, label=target.name)
+    if code_ratio is not None:
+        ax.plot(inside, code_ratio * sa, color="black", ls=":", lw=1.2,
+                label=f"{code_ratio:g} × target")
+    ax.axvline(period, color="0.3", lw=0.8)
+    ax.annotate(f"T1 = {period:g} s", (period, 0.98), xycoords=("data", "axes fraction"),
+                ha="left", va="top", fontsize=8, xytext=(3, 0), textcoords="offset points")
+    from matplotlib.ticker import FuncFormatter
+
+    ax.set_xscale("log")
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda x, _: f"{x:g}"))
+    ax.set_xlabel("period T [s]")
+    ax.set_ylabel("pseudo-acceleration PSA [g]")
+    ax.set_ylim(bottom=0.0)
+    ax.grid(True, which="both", lw=0.3, alpha=0.6)
+    fig.legend(loc="outside right upper", fontsize=7)  # beside the axes: nothing hidden
+    ax.set_title(title, fontsize=10)
     return fig

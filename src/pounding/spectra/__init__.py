@@ -12,7 +12,11 @@ its period.
   (:func:`response_spectrum`, :class:`ResponseSpectrum`); its compiled kernel is
   :mod:`pounding.spectra._kernel`, tested against :mod:`pounding.spectra.reference`;
 * :mod:`pounding.spectra.rotd` -- RotD50, RotD100 (Boore 2010) and the geometric mean of two
-  horizontal components (:func:`rotd_spectrum`, :class:`RotDSpectrum`).
+  horizontal components (:func:`rotd_spectrum`, :class:`RotDSpectrum`);
+* :mod:`pounding.spectra.scaling` -- a suite of records scaled to a target spectrum: to
+  Sa(T1) or PGA record by record, one factor for the suite by ASCE 7-22 §16.2.3 or EN 1998-1
+  §3.2.3.1.2, or a least-squares fit of each log-spectrum (:func:`scale_suite`,
+  :class:`SuiteScaling`); a record scaled to an Sa(T1) (:func:`scale_to_sa`).
 
 Nothing here imports numba until a spectrum is computed. See ``docs/spectra.md``.
 
@@ -23,6 +27,8 @@ from pounding.spectra.design import DesignSpectrum
 from pounding.spectra.modal import fundamental_mode, spectral_displacements
 from pounding.spectra.response import ResponseSpectrum, response_spectrum
 from pounding.spectra.rotd import RotDSpectrum, rotd_spectrum
+from pounding.spectra.scaling import SuiteScaling, scale_suite, scale_to_sa
 
-__all__ = ["DesignSpectrum", "ResponseSpectrum", "RotDSpectrum", "fundamental_mode",
-           "response_spectrum", "rotd_spectrum", "spectral_displacements"]
+__all__ = ["DesignSpectrum", "ResponseSpectrum", "RotDSpectrum", "SuiteScaling",
+           "fundamental_mode", "response_spectrum", "rotd_spectrum", "scale_suite",
+           "scale_to_sa", "spectral_displacements"]

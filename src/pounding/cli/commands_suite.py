@@ -1,0 +1,160 @@
+"""`pounding suite`: scale a suite of records to a target spectrum."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+from rich.table import Table
+from rich.text import Text
+
+from pounding.cli.app import app, console
+
+CSV_COLUMNS = ("record", "factor", "flagged", "pga_g", "scaled_pga_g", "sa_t1_g",
+               "scaled_sa_t1_g")
+"""Columns of ``pounding suite --csv``: one row per record."""
+
+
+@app.command("suite")
+def suite_cmd(
+    records: Annotated[list[Path] | None, typer.Argument(
+        help="Record files or a folder of them (any format `pounding record` reads). "
+        "Default: the suite bundled with pounding.", show_default=False)] = None,
+    target: Annotated[Path, typer.Option(
+        "--target", metavar="FILE", help="Target spectrum (TOML: asce7, eurocode8 or a "
+        "table; or CSV period_s,sa_g), as for `pounding gap --spectrum`.",
+        show_default=False)] = ...,  # type: ignore[assignment]
+    period: Annotated[float, typer.Option(
+        "--period", help="Fundamental period T1 of the structure \\[s].",
+        show_default=False)] = ...,  # type: ignore[assignment]
+    method: Annotated[str, typer.Option(
+        "--method", help="code: one factor for the suite, its mean >= 90 % of the target "
+        "over the range (ASCE 7-22 §16.2.3 / EN 1998-1 §3.2.3.1.2); sa: each record to "
+        "Sa(T1); pga: each to the target's PGA; lsq: each by least squares on its "
+        "log-spectrum over the range.")] = "code",
+    code: Annotated[str, typer.Option(
+        "--code", help="The code of --method code: asce7 or ec8 (which also keeps the mean "
+        "PGA at the target's).")] = "asce7",
+    period_range: Annotated[str | None, typer.Option(
+        "--range", metavar="LO,HI", help="Periods checked \\[s] (default 0.2 T1 to 2 T1; "
+        "ASCE 7-22 wants a lower bound low enough for 90 % of the modal mass).")] = None,
+    limits: Annotated[str, typer.Option(
+        "--limits", metavar="LO,HI", help="Flag factors outside this range.")] = "0.25,4",
+    damping: Annotated[float, typer.Option(
+        "--damping", help="Damping ratio of the records' spectra (the target's).")] = 0.05,
+    csv: Annotated[Path | None, typer.Option(
+        "--csv", metavar="FILE", help="Write the factors to FILE: " + ", ".join(CSV_COLUMNS)
+        + ".")] = None,
+    plot: Annotated[Path | None, typer.Option(
+        "--plot", metavar="FILE", help="Draw each scaled spectrum, the mean, the target and "
+        "the range to FILE (.png, .svg, .pdf).")] = None,
+    dt: Annotated[float | None, typer.Option(
+        "--dt", help="Time step \\[s] for text records that do not give one.")] = None,
+    units: Annotated[str | None, typer.Option(
+        "--units", help="Acceleration unit for records that do not state one.")] = None,
+) -> None:
+    """Scale a suite of records to a target spectrum: the factors, the mean and dispersion.
+
+    See docs/spectra.md (record scaling) for the methods and their sources.
+
+    Examples:
+
+      pounding suite --target examples/spectrum_asce7_site.toml --period 1.0
+
+      pounding suite records/ --target ec8.toml --period 0.8 --code ec8 --plot suite.png
+
+      pounding suite A.AT2 B.AT2 C.AT2 --target site.csv --period 1.2 --method lsq --csv f.csv
+    """
+    import numpy as np
+
+    from pounding.ground_motion.suite import BUNDLED, read_suite
+    from pounding.spectra import DesignSpectrum
+    from pounding.spectra.scaling import CODE_RATIO, scale_suite
+
+    lo_hi = _pair(period_range, "--range") if period_range is not None else None
+    lims = _pair(limits, "--limits")
+    spectrum = DesignSpectrum.from_file(target)
+    source: Any = BUNDLED if not records else (records[0] if len(records) == 1 else records)
+    suite = read_suite(source, dt=dt, units=units)
+    result = scale_suite(list(suite), spectrum, period, method=method, code=code,
+                         damping=damping, period_range=lo_hi, limits=lims)
+    _print(result, suite)
+    if csv is not None:
+        from pounding.io import write_text
+        from pounding.spectra.response import csv_text
+
+        write_text(csv, csv_text("factor [-]; pga_g, sa_t1_g [g = 9.80665 m/s2], Sa at T1 "
+                                 f"= {result.period:g} s and {100 * result.damping:g} % "
+                                 "damping", CSV_COLUMNS, _rows(result)))
+        console.print(f"table: {csv}", highlight=False)
+    if plot is not None:
+        from pounding.plot import save_figure
+        from pounding.plot.spectrum import plot_suite_scaling
+        from pounding.spectra.response import response_spectrum
+
+        lo, hi = result.period_range
+        shown = np.geomspace(min(0.02, lo), max(5.0, 1.5 * hi), 200)
+        shown = shown[shown <= spectrum.periods[-1]] if spectrum.periods[-1] > lo else shown
+        spectra = np.array([f * response_spectrum(m, shown, result.damping).psa_g[0]
+                            for f, m in zip(result.factors, suite, strict=True)])
+        fig = plot_suite_scaling(shown, spectra, result.records, spectrum, result.period,
+                                 result.period_range,
+                                 CODE_RATIO if result.method == "code" else None,
+                                 title=f"{suite.name}: {_method_text(result)}")
+        console.print(f"figure: {save_figure(fig, plot)}", highlight=False)
+
+
+def _pair(text: str, name: str) -> tuple[float, float]:
+    parts = [p.strip() for p in text.split(",")]
+    try:
+        if len(parts) != 2:
+            raise ValueError
+        lo, hi = float(parts[0]), float(parts[1])
+    except ValueError:
+        raise ValueError(f"{name}: two numbers LO,HI (got {text!r})") from None
+    return lo, hi
+
+
+def _method_text(r: Any) -> str:
+    if r.method == "code":
+        rule = "ASCE 7-22 §16.2.3" if r.code == "asce7" else "EN 1998-1 §3.2.3.1.2"
+        return f"one factor, mean ≥ 90 % of the target ({rule})"
+    return {"sa": "each record to Sa(T1)", "pga": "each record to the target's PGA",
+            "lsq": "each record by least squares on its log-spectrum"}[r.method]
+
+
+def _rows(r: Any) -> list[tuple[Any, ...]]:
+    j = r.at_period
+    return [(name, float(f), bool(flag), float(pga), float(f * pga), float(sa),
+             float(f * sa))
+            for name, f, flag, pga, sa in zip(r.records, r.factors, r.flagged, r.pga_g,
+                                              r.unscaled[:, j], strict=True)]
+
+
+def _print(r: Any, suite: Any) -> None:
+    import numpy as np
+
+    lo, hi = r.period_range
+    table = Table(title=Text(f"{suite.name}: {len(r.records)} records scaled to "
+                             f"{r.target.name}", style="italic"))
+    for head in ("record", "PGA [g]", "Sa(T1) [g]", "factor", "scaled PGA [g]",
+                 "scaled Sa(T1) [g]"):
+        table.add_column(Text(head), justify="left" if head == "record" else "right")
+    for name, f, flag, pga, _, sa, ssa in _rows(r):
+        mark = " [red](outside limits)[/]" if flag else ""
+        table.add_row(name, f"{pga:.4f}", f"{sa:.4f}", f"{f:.4f}{mark}", f"{f * pga:.4f}",
+                      f"{ssa:.4f}")
+    j = r.at_period
+    ratio = r.mean_over_target
+    inside = (r.periods >= lo) & (r.periods <= hi)
+    k = int(np.argmin(np.where(inside, ratio, np.inf)))
+    table.caption = Text(
+        f"{_method_text(r)}; T1 = {r.period:g} s, range {lo:.3g}–{hi:.3g} s, "
+        f"{100 * r.damping:g} % damping. Target Sa(T1) = {r.target_g[j]:.4f} g; mean "
+        f"scaled Sa(T1) = {r.mean[j]:.4f} g, dispersion (σ ln Sa) {r.dispersion[j]:.3f}; "
+        f"mean / target over the range: lowest {ratio[k]:.3f} at {r.periods[k]:.3g} s. "
+        f"Factors outside {r.limits[0]:g}–{r.limits[1]:g}: {int(r.flagged.sum())}.")
+    console.print(table)
+    for s in suite.skipped:
+        console.print(f"skipped: {s.reason}", highlight=False, markup=False)

@@ -1,0 +1,272 @@
+"""Scaling a suite of records to a target (design) spectrum, as the codes require before a
+response-history analysis.
+
+Four methods, each a factor per record (amplitude scaling: the record's shape is kept):
+
+* ``"sa"`` — each record to the target's Sa at the structure's period T1:
+  ``f_i = Sa_target(T1) / Sa_i(T1)``;
+* ``"pga"`` — each record to the target's peak ground acceleration (its Sa at T = 0):
+  ``f_i = Sa_target(0) / PGA_i``;
+* ``"code"`` — **one** factor for the whole suite, the smallest with which the suite's mean
+  spectrum is nowhere below 90 % of the target over the code's period range:
+  ``F = max_T 0.9 Sa_target(T) / mean_i Sa_i(T)``. ASCE 7-22 §16.2.3.2 (amplitude scaling:
+  "the average of the maximum-direction spectra … does not fall below 90 % of the target
+  spectrum for any period within the period range" of §16.2.3.1: from at most 0.2 T1 — lower
+  where 90 % modal mass needs it — to at least 2 T1), and EN 1998-1:2004 §3.2.3.1.2(4):
+  no value of the mean 5 %-damped spectrum below 90 % of the elastic spectrum between
+  0.2 T1 and 2 T1, and the mean of the records' PGA not below ``a_g S`` (the target at
+  T = 0), which with ``code="ec8"`` raises F where it binds;
+* ``"lsq"`` — each record by least squares on the logarithm of its spectrum over the range:
+  ``ln f_i = mean_T (ln Sa_target(T) − ln Sa_i(T))`` on log-spaced periods (the factor that
+  minimises ``Σ_T (ln f_i Sa_i(T) − ln Sa_target(T))²``).
+
+The period range is checked on a log-spaced grid (``n_periods``, the ends and T1 included).
+The result reports each record's factor, the suite's mean scaled spectrum and its dispersion
+(the standard deviation of ``ln Sa`` across records, ``ddof = 1``), and flags factors
+outside the user's limits (default 0.25–4: scaling a record far from its own intensity
+distorts its other features). A single horizontal component stands for the
+"maximum-direction spectrum" of ASCE 7-22 here (a planar model shakes in one direction);
+RotD100 of two components is :func:`pounding.spectra.rotd.rotd_spectrum`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from pounding.ground_motion.motion import GroundMotion
+from pounding.spectra.design import DesignSpectrum
+from pounding.units import G
+
+FloatArray = NDArray[np.float64]
+
+METHODS: tuple[str, ...] = ("code", "sa", "pga", "lsq")
+"""Scaling methods (see the module's docstring)."""
+
+CODES: tuple[str, ...] = ("asce7", "ec8")
+"""Codes whose suite rule ``"code"`` applies: ASCE 7-22 §16.2.3, EN 1998-1 §3.2.3.1.2."""
+
+CODE_RATIO = 0.9
+"""The suite's mean spectrum may not fall below this fraction of the target (both codes)."""
+
+DEFAULT_LIMITS: tuple[float, float] = (0.25, 4.0)
+"""Scale factors outside this range are flagged."""
+
+
+def code_period_range(t1: float, code: str = "asce7") -> tuple[float, float]:
+    """The period range [s] a code checks a scaled suite over, for fundamental period T1:
+    0.2 T1 to 2 T1 (EN 1998-1 §3.2.3.1.2(4); ASCE 7-22 §16.2.3.1's widest lower bound —
+    give a lower one where more modes are needed for 90 % of the mass)."""
+    _check_code(code)
+    t1 = _positive("period", t1)
+    return 0.2 * t1, 2.0 * t1
+
+
+@dataclass(frozen=True, eq=False)
+class SuiteScaling:
+    """Scale factors of a suite's records and what they make of the suite.
+
+    Attributes
+    ----------
+    method, code : str
+        The method (:data:`METHODS`) and, for ``"code"``, the code (:data:`CODES`).
+    target : DesignSpectrum
+        The target spectrum.
+    period : float
+        The structure's fundamental period T1 [s].
+    damping : float
+        Damping ratio of the records' spectra [-].
+    period_range : (float, float)
+        Lower and upper period of the range checked [s].
+    periods : (n,) array
+        Periods of the check [s] (log-spaced over the range, with T1).
+    records : tuple of str
+        Names of the records, in suite order.
+    pga_g : (m,) array
+        Each record's PGA, unscaled [g].
+    unscaled : (m, n) array
+        Each record's PSA on ``periods``, unscaled [g].
+    target_g : (n,) array
+        The target's Sa on ``periods`` [g].
+    factors : (m,) array
+        Scale factor of each record [-].
+    limits : (float, float)
+        Factors outside are flagged.
+    """
+
+    method: str
+    code: str
+    target: DesignSpectrum
+    period: float
+    damping: float
+    period_range: tuple[float, float]
+    periods: FloatArray
+    records: tuple[str, ...]
+    pga_g: FloatArray
+    unscaled: FloatArray
+    target_g: FloatArray
+    factors: FloatArray
+    limits: tuple[float, float] = DEFAULT_LIMITS
+
+    @property
+    def scaled(self) -> FloatArray:
+        """Each record's PSA on ``periods`` after scaling [g], shape (m, n)."""
+        return self.factors[:, None] * self.unscaled
+
+    @property
+    def mean(self) -> FloatArray:
+        """The suite's mean scaled spectrum [g] (arithmetic mean, as both codes take)."""
+        return self.scaled.mean(axis=0)
+
+    @property
+    def dispersion(self) -> FloatArray:
+        """Standard deviation of ln PSA across the scaled records at each period (ddof = 1;
+        0 for a single record)."""
+        if len(self.records) < 2:
+            return np.zeros(self.periods.size)
+        return np.log(self.scaled).std(axis=0, ddof=1)
+
+    @property
+    def mean_over_target(self) -> FloatArray:
+        """The mean scaled spectrum over the target at each period [-]."""
+        return self.mean / self.target_g
+
+    @property
+    def flagged(self) -> NDArray[np.bool_]:
+        """True for a record scaled by a factor outside :attr:`limits`."""
+        lo, hi = self.limits
+        return (self.factors < lo) | (self.factors > hi)
+
+    @property
+    def at_period(self) -> int:
+        """Index of T1 in :attr:`periods`."""
+        return int(np.argmin(np.abs(self.periods - self.period)))
+
+
+def scale_suite(motions: Sequence[GroundMotion], target: DesignSpectrum, period: float, *,
+                method: str = "code", code: str = "asce7", damping: float = 0.05,
+                period_range: tuple[float, float] | None = None,
+                limits: tuple[float, float] = DEFAULT_LIMITS,
+                n_periods: int = 100) -> SuiteScaling:
+    """Scale factors that bring a suite of records to a target spectrum.
+
+    Parameters
+    ----------
+    motions : sequence of GroundMotion
+        The records (a :class:`pounding.ground_motion.RecordSuite` is one), at least one.
+    target : DesignSpectrum
+        The target (design) spectrum; it must cover the period range (and T = 0 for
+        ``"pga"`` and for ``"code"`` with ``code="ec8"``).
+    period : float
+        The structure's fundamental period T1 [s].
+    method : {"code", "sa", "pga", "lsq"}
+        See the module's docstring.
+    code : {"asce7", "ec8"}
+        The code whose suite rule ``"code"`` applies.
+    damping : float
+        Damping ratio of the records' spectra (the target's, usually 0.05).
+    period_range : (float, float), optional
+        Periods checked [s] (default :func:`code_period_range`).
+    limits : (float, float)
+        Scale factors outside are flagged (default 0.25–4).
+    n_periods : int
+        Log-spaced periods over the range (T1 and the ends included).
+
+    Returns
+    -------
+    SuiteScaling
+
+    Raises
+    ------
+    ValueError
+        One line naming the argument: an unknown method or code, a period or limit that is
+        not positive, an empty suite, a target that does not cover the periods needed.
+    """
+    from pounding.spectra.response import check_damping, response_spectrum
+
+    if method not in METHODS:
+        raise ValueError(f"method: one of {', '.join(METHODS)} (got {method!r})")
+    _check_code(code)
+    t1 = _positive("period", period)
+    zeta = float(check_damping(damping, "damping")[0])
+    lo_lim, hi_lim = (_positive("limits", x) for x in limits)
+    if lo_lim >= hi_lim:
+        raise ValueError(f"limits: the lower limit must be below the upper (got {lo_lim:g}, "
+                         f"{hi_lim:g})")
+    lo, hi = code_period_range(t1, code) if period_range is None else (
+        _positive("period_range", period_range[0]), _positive("period_range", period_range[1]))
+    if lo >= hi:
+        raise ValueError(f"period_range: the lower period must be below the upper (got "
+                         f"{lo:g}, {hi:g} s)")
+    if not motions:
+        raise ValueError("records: the suite has no record")
+    periods = np.unique(np.concatenate([np.geomspace(lo, hi, max(int(n_periods), 2)), [t1]]))
+    needs_zero = method == "pga" or (method == "code" and code == "ec8")
+    target_g = _target_on(target, periods)
+    target_pga = _target_on(target, np.array([0.0]))[0] if needs_zero else math.nan
+    unscaled = np.array([response_spectrum(m, periods, zeta).psa_g[0] for m in motions])
+    pga_g = np.array([m.pga / G for m in motions])
+    inside = (periods >= lo) & (periods <= hi)
+    j1 = int(np.argmin(np.abs(periods - t1)))
+    if method == "sa":
+        factors = target_g[j1] / unscaled[:, j1]
+    elif method == "pga":
+        factors = target_pga / pga_g
+    elif method == "lsq":
+        factors = np.exp(np.mean(np.log(target_g[inside]) - np.log(unscaled[:, inside]),
+                                 axis=1))
+    else:
+        f = float(np.max(CODE_RATIO * target_g[inside] / unscaled[:, inside].mean(axis=0)))
+        if code == "ec8":
+            f = max(f, float(target_pga / pga_g.mean()))
+        factors = np.full(len(motions), f)
+    return SuiteScaling(method=method, code=code, target=target, period=t1, damping=zeta,
+                        period_range=(lo, hi), periods=periods,
+                        records=tuple(m.name for m in motions), pga_g=pga_g,
+                        unscaled=unscaled, target_g=target_g, factors=np.asarray(factors),
+                        limits=(lo_lim, hi_lim))
+
+
+def scale_to_sa(motion: GroundMotion, sa_g: float, period: float,
+                damping: float = 0.05) -> GroundMotion:
+    """The record scaled so that its pseudo-acceleration at ``period`` [s] and ``damping``
+    is ``sa_g`` [g]: the intensity measure Sa(T1) of incremental dynamic analysis
+    (Vamvatsikos & Cornell 2002) and of the ``"sa"`` method."""
+    from pounding.spectra.response import response_spectrum
+
+    t = _positive("sa_period", period)
+    target = _positive("sa_g", sa_g)
+    own = float(response_spectrum(motion, np.array([t]), damping).psa_g[0, 0])
+    if not own > 0.0:
+        raise ValueError(f"sa_g: record {motion.name!r} has no response at T = {t:g} s to "
+                         "scale")
+    return motion.scaled(target / own)
+
+
+def _target_on(target: DesignSpectrum, periods: FloatArray) -> FloatArray:
+    """The target's Sa [g] at ``periods``, or one line saying which periods it lacks."""
+    lo, hi = float(target.periods[0]), float(target.periods[-1])
+    if periods.min() < lo - 1e-12 or periods.max() > hi + 1e-12:
+        raise ValueError(f"target: spectrum {target.name!r} covers {lo:g}–{hi:g} s, not the "
+                         f"periods {periods.min():g}–{periods.max():g} s the scaling needs")
+    sa = np.atleast_1d(np.asarray(target.sa_g(periods), dtype=float))
+    if np.any(~(sa > 0.0)):
+        raise ValueError(f"target: spectrum {target.name!r} is not positive at every period "
+                         f"in {periods.min():g}–{periods.max():g} s")
+    return sa
+
+
+def _positive(name: str, value: float) -> float:
+    x = float(value)
+    if not (math.isfinite(x) and x > 0.0):
+        raise ValueError(f"{name}: must be a positive number (got {value!r})")
+    return x
+
+
+def _check_code(code: str) -> None:
+    if code not in CODES:
+        raise ValueError(f"code: one of {', '.join(CODES)} (got {code!r})")
