@@ -111,3 +111,17 @@ def test_record_directory_is_named_a_directory(tmp_path: Path,
     assert main(["record", str(folder)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"error: {folder}: is a directory, not a record file"]
+
+
+def test_record_components_of_one_station_plot_side_by_side(tmp_path: Path,
+                                                             capsys: pytest.CaptureFixture[str]
+                                                             ) -> None:
+    # K-NET names the components of one record X.NS, X.EW, X.UD: one stem, so the figures
+    # take the whole file names
+    knet = Path(__file__).parent / "formats" / "TST0010101010000.NS"
+    for comp in ("NS", "EW"):
+        (tmp_path / f"TST0010101010000.{comp}").write_bytes(knet.read_bytes())
+    files = [str(tmp_path / f"TST0010101010000.{c}") for c in ("NS", "EW")]
+    assert main(["record", *files, "--plot", str(tmp_path / "figs")]) == 0
+    assert sorted(p.name for p in (tmp_path / "figs").iterdir()) == [
+        "TST0010101010000.EW.png", "TST0010101010000.NS.png"]

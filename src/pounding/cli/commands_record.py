@@ -82,12 +82,16 @@ def record(
     else:
         if plot.exists() and not plot.is_dir():
             raise ValueError(f"--plot: {plot} is a file; with several records give a folder")
+        # a figure per file, named by its stem, or by its whole name where components of
+        # one record share the stem (K-NET's X.NS, X.EW, X.UD)
         stems = [f.stem for f in files]
-        dup = sorted({s for s in stems if stems.count(s) > 1})
+        names = [f.name if stems.count(f.stem) > 1 else f.stem for f in files]
+        dup = sorted({n for n in names if names.count(n) > 1})
         if dup:
-            raise ValueError(f"--plot: several files are named {dup[0]!r}; their figures "
-                             "would overwrite each other; plot them one at a time")
-        targets = [plot / f"{s}.png" for s in stems]
+            raise ValueError(f"--plot: several files are named {dup[0]!r} (in different "
+                             "folders); their figures would overwrite each other; plot them "
+                             "one at a time")
+        targets = [plot / f"{n}.png" for n in names]
     for gm, target in zip(motions, targets, strict=True):
         from pounding.plot import save_figure
         from pounding.plot.record import plot_record

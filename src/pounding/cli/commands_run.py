@@ -64,7 +64,8 @@ class _CompilingNote(ProgressColumn):
 def _progress_bar(label: str) -> Iterator[Callable[[float], None]]:
     bar = _DelayedProgress(TextColumn("[bold]{task.description}"), BarColumn(),
                            TaskProgressColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-                           _CompilingNote(), console=console, transient=True)
+                           _CompilingNote(), console=console, transient=True,
+                           disable=not console.is_terminal)  # (a log gets no bar)
     task = bar.add_task(label, total=1.0)
 
     def update(fraction: float) -> None:

@@ -67,7 +67,8 @@ def sweep_cmd(
     hist: Any = None if histories is None else (False if histories == "none" else histories)
     bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(),
                    TaskProgressColumn(), _RateColumn(), TimeElapsedColumn(),
-                   TimeRemainingColumn(), console=console, transient=True)
+                   TimeRemainingColumn(), console=console, transient=True,
+                   disable=not console.is_terminal)  # (a log gets no bar)
     task = bar.add_task(f"sweep {sweep.name}", total=len(sweep.cases), start=False)
     state = {"first": None}
 
