@@ -100,6 +100,37 @@ def check_writable(out_dir: str | os.PathLike[str], inside: bool = False) -> Non
                          "permission); choose another --out")
 
 
+FIGURE_SUFFIXES: tuple[str, ...] = (".png", ".svg", ".svgz", ".pdf", ".eps", ".ps", ".jpg",
+                                    ".jpeg", ".tif", ".tiff", ".webp", ".pgf")
+"""File suffixes a figure can be written to (matplotlib's formats)."""
+
+
+def check_output_file(path: str | os.PathLike[str] | None, option: str,
+                      figure: bool = False) -> None:
+    """Refuse, before any work, an output file option that cannot be written: a folder
+    where the file should be, a parent that is a file or read-only, or (``figure``) a
+    suffix no figure format has. ``None`` (option not given) passes.
+
+    Raises
+    ------
+    ValueError
+        One line naming the option and the value.
+    """
+    if path is None:
+        return
+    target = Path(path)
+    if figure and target.suffix.lower() not in FIGURE_SUFFIXES:
+        raise ValueError(f"{option}: {target} has no figure suffix; use one of "
+                         f"{', '.join(FIGURE_SUFFIXES[:4])}, ... (got {target.suffix or 'none'!r})")
+    if target.is_dir():
+        raise ValueError(f"{option}: {target} is a folder; give a file name")
+    try:
+        check_writable(target)
+    except ValueError as exc:
+        raise ValueError(f"{option}: {str(exc).removeprefix('out: ').replace('--out', option)}"
+                         ) from None
+
+
 def make_folders(folder: str | os.PathLike[str]) -> list[Path]:
     """Create ``folder`` and its missing ancestors; return those created, deepest last."""
     missing = []

@@ -66,7 +66,10 @@ def zeta_cmd(
       pounding zeta --e 0.3,0.5,0.7 --plot fig4.png
     """
     from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
+    from pounding.io import check_output_file
     from pounding.validation import restitution
+
+    check_output_file(plot, "--plot", figure=True)
 
     values = restitution(_parse_floats(e, "--e", TABLE1_E), "--e")
     table = Table(title="Impact damping from the coefficient of restitution e (all dimensionless)",
@@ -117,7 +120,11 @@ def audit_cmd(
     """
     from pounding.contact.audit import PAIRINGS, AuditCase, restitution_audit
     from pounding.contact.restitution import TABLE1_E
+    from pounding.io import check_output_file
     from pounding.validation import restitution
+
+    check_output_file(plot, "--plot", figure=True)
+    check_output_file(csv, "--csv")
 
     targets = restitution(_parse_floats(e, "--e", TABLE1_E), "--e")
     case = AuditCase(m1=m1, m2=m2, v0=v0, k_h=k_h, k=k)

@@ -34,6 +34,9 @@ def ellipse(
 
       pounding ellipse --zeta 0.1 --period 0.5 --plot fig2.png
     """
+    from pounding.io import check_output_file
+
+    check_output_file(plot, "--plot", figure=True)
     from pounding.link_element import (
         damping_coefficient_viscous,
         dissipated_energy,

@@ -107,7 +107,11 @@ def gap_cmd(
       pounding gap model.toml A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
     """
     from pounding.config import load_config
+    from pounding.io import check_output_file
     from pounding.spectra import DesignSpectrum
+
+    check_output_file(csv, "--csv")
+    check_output_file(plot, "--plot", figure=True)
     from pounding.studies.gap import critical_gaps
 
     if more_records and not records:

@@ -27,8 +27,10 @@ def report_cmd(
 
       pounding report sweep_gap_e-results --out study.html
     """
+    from pounding.io import check_output_file
     from pounding.report import write_report
 
+    check_output_file(out, "--out")
     path = write_report(results_dir, out)
     size = path.stat().st_size
     console.print(f"report written: [bold]{path}[/] ({size / 1024:.0f} kB, self-contained)",

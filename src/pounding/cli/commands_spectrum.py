@@ -62,8 +62,11 @@ def spectrum_cmd(
 
       pounding spectrum H1.AT2 H2.AT2 --rotd --design ec8.toml --plot rotd.png
     """
+    from pounding.io import check_output_file
     from pounding.spectra.response import parse_damping, parse_periods
 
+    check_output_file(csv, "--csv")
+    check_output_file(plot, "--plot", figure=True)
     zetas = parse_damping(damping, "--damping")
     t = parse_periods(periods, "--periods")
     if rotd and len(records) % 2:

@@ -69,9 +69,12 @@ def suite_cmd(
     import numpy as np
 
     from pounding.ground_motion.suite import BUNDLED, read_suite
+    from pounding.io import check_output_file
     from pounding.spectra import DesignSpectrum
     from pounding.spectra.scaling import CODE_RATIO, scale_suite
 
+    check_output_file(csv, "--csv")
+    check_output_file(plot, "--plot", figure=True)
     lo_hi = _pair(period_range, "--range") if period_range is not None else None
     lims = _pair(limits, "--limits")
     spectrum = DesignSpectrum.from_file(target)

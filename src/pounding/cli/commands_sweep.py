@@ -155,10 +155,12 @@ def plot_cmd(
 
       pounding plot sweep_gap_e-results --x contact.gap --measure peak_contact_force_N --out force.png
     """
+    from pounding.io import check_output_file
     from pounding.plot import save_figure
     from pounding.plot.sweep import default_figure_name, plot_sweep
     from pounding.studies.sweep import load_results
 
+    check_output_file(out, "--out", figure=True)
     df = load_results(results)
     fig, xs, ys = plot_sweep(df, x=x, y=y, measure=measure, kind=kind, reduce=reduce)
     folder = results if results.is_dir() else results.parent

@@ -104,11 +104,15 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     batch = data.get("batch_size")
     if batch is not None and (not isinstance(batch, int) or isinstance(batch, bool) or batch < 1):
         raise ValueError(f"{where}: batch_size: an integer >= 1 (got {batch!r})")
-    out = data.get("out", f"{data.get('name', 'sweep')}-results")
-    if not isinstance(out, str) or not out:
+    # an ``out`` the file names is relative to the file; by default, as for ``pounding run``,
+    # NAME-results in the current folder (never inside a folder of examples one ran)
+    out = data.get("out")
+    if out is not None and (not isinstance(out, str) or not out):
         raise ValueError(f"{where}: out: a folder name (got {out!r})")
+    out_dir = (here / out if out is not None
+               else Path.cwd() / f"{data.get('name', 'sweep')}-results")
     sweep = Sweep(name=str(data.get("name", "sweep")), base=base_data, base_dir=model_dir,
-                  params=params, cases=cases, out=here / out, histories=hist,
+                  params=params, cases=cases, out=out_dir, histories=hist,
                   batch_size=batch, duplicates=len(rows) - len(cases))
     check_cases(sweep, samples, where, kind)
     return sweep
