@@ -276,8 +276,8 @@ def test_structural_problems() -> None:
     assert "no floor at the same elevation" in error_of(data)
     data = base()
     data["record"] = {"bundled": "el_centro", "scale": 2.0, "pga_g": 0.5}
-    assert "record.pga_g: give one of scale, pga_g and sa_g (got scale=2, pga_g=0.5)" in \
-        error_of(data)
+    assert ("record.pga_g: give one of scale, pga_g, sa_g and saavg_g (got scale=2, "
+            "pga_g=0.5)") in error_of(data)
     data = base()
     data["building"] = []
     assert "building: must hold at least 1 value(s)" in error_of(data)
