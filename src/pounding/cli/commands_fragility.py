@@ -18,8 +18,9 @@ def fragility_cmd(
         "--out", "-o", help="Output folder (default: out of the study file).",
         show_default=False)] = None,
     workers: Annotated[int | None, typer.Option(
-        "--workers", "-j", min=1, help="Workers of the local Dask cluster (default: [run] "
-                                       "workers, else the CPU count).",
+        "--workers", "-j", min=1, help="Workers of the local Dask cluster (default: "
+                                       "run.workers of the study file, else the CPU "
+                                       "count).",
         show_default=False)] = None,
     scheduler: Annotated[str | None, typer.Option(
         "--scheduler", help="Address of a running Dask scheduler (tcp://host:8786), or "
