@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from pounding.config import RunConfig, dump_toml, load_config, parse_config
+from pounding.example_files import KINDS
 from pounding.model import PoundingModel
 from pounding.structure import ModalDamping, RayleighDamping
 
@@ -18,7 +19,7 @@ ROOT = Path(__file__).resolve().parents[1]
 # model files (sweep files, sweep_*.toml, are tested in tests/studies/test_sweep.py, spectrum
 # files, spectrum_*.toml, in tests/spectra/)
 EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml")
-                  if not p.name.startswith(("sweep_", "spectrum_")))
+                  if not p.name.startswith(tuple(f"{k}_" for k in KINDS)))
 DEMO = ROOT / "src" / "pounding" / "examples" / "two_10_storey.toml"
 
 
@@ -97,16 +98,17 @@ def test_row_of_three_has_two_gaps() -> None:
 
 def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> None:
     from pounding.example_files import DEMO as DEMO_NAME
-    from pounding.example_files import copy_examples, example_path, examples
+    from pounding.example_files import KINDS, copy_examples, example_path, examples
 
     # the repository's examples/ is the package's folder (a link), so a wheel has them all
     assert (ROOT / "examples").resolve() == example_path(DEMO_NAME).parent.resolve()
     assert example_path(DEMO_NAME).resolve() == DEMO.resolve()
     listed = {e.name: e.kind for e in examples()}
-    assert listed == {p.name: next((k for k in ("sweep", "spectrum")
-                                    if p.name.startswith(f"{k}_")), "model")
+    assert KINDS == ("sweep", "spectrum", "fragility")
+    assert listed == {p.name: next((k for k in KINDS if p.name.startswith(f"{k}_")), "model")
                       for p in (ROOT / "examples").glob("*.toml")}
     assert all(e.description for e in examples())
+    assert listed["fragility_two_10_storey.toml"] == "fragility"
     copied = copy_examples(tmp_path / "mine")
     assert {p.name for p in copied} == set(listed) | {"README.md"}
     for p in copied:
@@ -276,8 +278,8 @@ def test_structural_problems() -> None:
     assert "no floor at the same elevation" in error_of(data)
     data = base()
     data["record"] = {"bundled": "el_centro", "scale": 2.0, "pga_g": 0.5}
-    assert "record.pga_g: give one of scale, pga_g and sa_g (got scale=2, pga_g=0.5)" in \
-        error_of(data)
+    assert ("record.pga_g: give one of scale, pga_g, sa_g and saavg_g (got scale=2, "
+            "pga_g=0.5)") in error_of(data)
     data = base()
     data["building"] = []
     assert "building: must hold at least 1 value(s)" in error_of(data)

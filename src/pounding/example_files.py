@@ -1,4 +1,4 @@
-"""The example model, sweep and spectrum files that ship inside the package
+"""The example model, sweep, spectrum and fragility-study files that ship inside the package
 (``pounding/examples``).
 
 They are the same files as ``examples/`` of a clone of the repository (which links to
@@ -15,15 +15,19 @@ from importlib import resources
 from pathlib import Path
 from typing import NamedTuple
 
-__all__ = ["DEMO", "Example", "copy_examples", "example_path", "examples"]
+__all__ = ["DEMO", "KINDS", "Example", "copy_examples", "example_path", "examples"]
 
 DEMO = "two_10_storey.toml"
 """The example ``pounding demo`` runs."""
 
+KINDS: tuple[str, ...] = ("sweep", "spectrum", "fragility")
+"""Kinds of example other than a model file, told by the prefix ``<kind>_`` of the name."""
+
 
 class Example(NamedTuple):
-    """One bundled example: file name, kind (``model``, ``sweep`` or ``spectrum``: by the
-    prefix ``sweep_`` / ``spectrum_`` of its name), what it shows."""
+    """One bundled example: file name, kind (``model``, ``sweep``, ``spectrum`` or
+    ``fragility``: by the prefix ``sweep_`` / ``spectrum_`` / ``fragility_`` of its name),
+    what it shows."""
 
     name: str
     kind: str
@@ -56,8 +60,7 @@ def examples() -> list[Example]:
             lines.append(line.lstrip("# ").strip())
         text = " ".join(lines)
         first = text.split(". ")[0].rstrip(".")
-        kind = next((k for k in ("sweep", "spectrum") if path.name.startswith(f"{k}_")),
-                    "model")
+        kind = next((k for k in KINDS if path.name.startswith(f"{k}_")), "model")
         out.append(Example(path.name, kind, first))
     return out
 

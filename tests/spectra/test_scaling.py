@@ -117,7 +117,8 @@ def test_a_record_scaled_to_sa_in_a_model_file(tmp_path):
 
 @pytest.mark.parametrize("change, message", [
     ("sa_g = 0.8", "record.sa_period: sa_g = 0.8 g needs the period"),
-    ("sa_g = 0.8\nsa_period = 0.5\npga_g = 0.3", "give one of scale, pga_g and sa_g"),
+    ("sa_g = 0.8\nsa_period = 0.5\npga_g = 0.3",
+     "give one of scale, pga_g, sa_g and saavg_g"),
     ("sa_period = 0.5", "record.sa_period: only with sa_g"),
     ("sa_g = 0.8\nsa_period = 0.5\nsa_damping = 1.0", "record.sa_damping: must be < 1"),
 ])

@@ -25,6 +25,7 @@ from rich.markup import escape
 from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
     commands_contact,
     commands_ellipse,
+    commands_fragility,
     commands_gap,
     commands_record,
     commands_report,

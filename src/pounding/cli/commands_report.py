@@ -13,19 +13,23 @@ from pounding.cli.app import app, console  # noqa: F401
 @app.command("report")
 def report_cmd(
     results_dir: Annotated[Path, typer.Argument(
-        help="Output folder of `pounding run` (summary.json, timehistories.nc) or of "
-             "`pounding sweep` (results.parquet).", show_default=False)],
+        help="Output folder of `pounding run` (summary.json, timehistories.nc), of "
+             "`pounding sweep` (results.parquet) or of `pounding fragility` "
+             "(fragility.json).", show_default=False)],
     out: Annotated[Path | None, typer.Option(
         "--out", "-o", help="HTML file to write (default: RESULTS_DIR/report.html). Written "
                             "complete or not at all.", show_default=False)] = None,
 ) -> None:
-    """Write one self-contained HTML page (figures embedded) for a run or a sweep.
+    """Write one self-contained HTML page (figures embedded) for a run, a sweep or a
+    fragility study.
 
     Examples:
 
       pounding report pounding-demo
 
       pounding report sweep_gap_e-results --out study.html
+
+      pounding report fragility_two_10_storey-results
     """
     from pounding.io import check_output_file
     from pounding.report import write_report

@@ -303,7 +303,7 @@ def examples_cmd(
     overwrite: Annotated[bool, typer.Option(
         "--overwrite", help="With --copy: replace files of the same names.")] = False,
 ) -> None:
-    """List the example model and sweep files that come with pounding, or copy them.
+    """List the example model, sweep, spectrum and fragility files of pounding, or copy them.
 
     Examples:
 
@@ -325,5 +325,6 @@ def examples_cmd(
     for e in examples():
         table.add_row(e.name, e.kind, e.description)
     console.print(table)
-    console.print("Run one with `pounding run FILE` (a sweep: `pounding sweep FILE`); copy them "
-                  "with `pounding examples --copy DIR`.", highlight=False)
+    console.print("Run one with `pounding run FILE` (a sweep: `pounding sweep FILE`, a fragility "
+                  "study: `pounding fragility FILE`); copy them with `pounding examples --copy "
+                  "DIR`.", highlight=False)

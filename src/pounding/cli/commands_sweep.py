@@ -3,7 +3,7 @@
 from pounding.cli.app import app, console  # noqa: F401
 
 from pathlib import Path  # noqa: E402
-from typing import Annotated, Any  # noqa: E402
+from typing import Annotated, Any, NoReturn  # noqa: E402
 
 import typer  # noqa: E402
 from rich.progress import (  # noqa: E402
@@ -59,43 +59,20 @@ def sweep_cmd(
 
       pounding sweep study.toml --scheduler tcp://10.0.0.5:8786
     """
-    from pounding.cli import EXIT_FAILED, EXIT_INTERRUPTED, error_line
     from pounding.cli.commands_run import _sigterm_as_interrupt
     from pounding.studies.sweep import SweepInterrupted, SweepStopped, load_sweep, run_sweep
 
     sweep = load_sweep(sweep_file)
     hist: Any = None if histories is None else (False if histories == "none" else histories)
-    bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(),
-                   TaskProgressColumn(), _RateColumn(), TimeElapsedColumn(),
-                   TimeRemainingColumn(), console=console, transient=True,
-                   disable=not console.is_terminal)  # (a log gets no bar)
-    task = bar.add_task(f"sweep {sweep.name}", total=len(sweep.cases), start=False)
-    state = {"first": None}
-
-    def progress(done: int, total: int) -> None:
-        if state["first"] is None:  # cases finished before this run: no rate for them
-            state["first"] = done
-            bar.update(task, completed=done)
-            bar.start_task(task)
-            return
-        bar.update(task, completed=done)
-
+    bar, progress = _progress(f"sweep {sweep.name}", len(sweep.cases))
     try:
         with _sigterm_as_interrupt(), bar:
             res = run_sweep(sweep, out, scheduler=scheduler, n_workers=workers,
                             batch_size=batch_size, overwrite=overwrite, histories=hist,
                             progress=progress)
     except (SweepInterrupted, SweepStopped) as exc:
-        again = _again(sweep_file, out=out, scheduler=scheduler, workers=workers,
-                       batch_size=batch_size, histories=histories)
-        if exc.n_saved:
-            error_line(f"{exc.reason}: {exc.n_saved:,} of {exc.n_cases:,} cases are saved in "
-                       f"{exc.out_dir}; resume with: {again}")
-        else:
-            error_line(f"{exc.reason} before any case was saved, leaving {exc.out_dir} as it "
-                       f"was; start again with: {again}")
-        raise typer.Exit(EXIT_INTERRUPTED if isinstance(exc, SweepInterrupted)
-                         else EXIT_FAILED) from None
+        _stopped(exc, _again(sweep_file, out=out, scheduler=scheduler, workers=workers,
+                             batch_size=batch_size, histories=histories), "cases")
     t = Table(title=f"{sweep.name}: sweep", show_header=False)
     t.add_column("quantity")
     t.add_column("value", justify="right")
@@ -113,11 +90,51 @@ def sweep_cmd(
     console.print(f"table in [bold]{res.results}[/]", highlight=False)
 
 
-def _again(sweep_file: Path, **options: Any) -> str:
-    """The command that resumes a sweep: the same options, never ``--overwrite``."""
+def _progress(description: str, total: int) -> tuple[Progress, Any]:
+    """A progress bar of cases (done / total, percent, cases per second, elapsed, left) and
+    the ``progress(done, total)`` callback of :func:`~pounding.studies.sweep.run_sweep` that
+    moves it; cases finished by an earlier run count as done from the start, without a
+    rate."""
+    bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(),
+                   TaskProgressColumn(), _RateColumn(), TimeElapsedColumn(),
+                   TimeRemainingColumn(), console=console, transient=True,
+                   disable=not console.is_terminal)  # (a log gets no bar)
+    task = bar.add_task(description, total=total, start=False)
+    state: dict[str, int | None] = {"first": None}
+
+    def progress(done: int, total: int) -> None:
+        if state["first"] is None:  # cases finished before this run: no rate for them
+            state["first"] = done
+            bar.update(task, completed=done)
+            bar.start_task(task)
+            return
+        bar.update(task, completed=done)
+
+    return bar, progress
+
+
+def _stopped(exc: Any, again: str, what: str) -> NoReturn:
+    """Say what a stopped sweep kept and how to resume it (``what``: ``cases``, ``runs``),
+    and exit with 130 (interrupted) or 1 (stopped by the cluster)."""
+    from pounding.cli import EXIT_FAILED, EXIT_INTERRUPTED, error_line
+    from pounding.studies.sweep import SweepInterrupted
+
+    if exc.n_saved:
+        error_line(f"{exc.reason}: {exc.n_saved:,} of {exc.n_cases:,} {what} are saved in "
+                   f"{exc.out_dir}; resume with: {again}")
+    else:
+        error_line(f"{exc.reason} before any {what[:-1]} was saved, leaving {exc.out_dir} as "
+                   f"it was; start again with: {again}")
+    raise typer.Exit(EXIT_INTERRUPTED if isinstance(exc, SweepInterrupted)
+                     else EXIT_FAILED) from None
+
+
+def _again(sweep_file: Path, command: str = "sweep", **options: Any) -> str:
+    """The command that resumes a sweep (or another ``command`` run as one, such as
+    ``fragility``): the same options, never ``--overwrite``."""
     import shlex
 
-    argv = ["pounding", "sweep", str(sweep_file)]
+    argv = ["pounding", command, str(sweep_file)]
     for name, value in options.items():
         if value is not None:
             argv += [f"--{name.replace('_', '-')}", str(value)]

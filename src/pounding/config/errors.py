@@ -37,11 +37,13 @@ def _loc_text(loc: tuple[Any, ...]) -> str:
     return out
 
 
-def _section_model(loc: tuple[Any, ...]) -> type[BaseModel] | None:
-    """The pydantic model class at ``loc`` inside :class:`RunConfig` (for key suggestions)."""
+def _section_model(loc: tuple[Any, ...], root: type[BaseModel] | None = None
+                   ) -> type[BaseModel] | None:
+    """The pydantic model class at ``loc`` inside ``root`` (default :class:`RunConfig`),
+    for key suggestions."""
     from pounding.config.run import RunConfig
 
-    model: Any = RunConfig
+    model: Any = RunConfig if root is None else root
     for part in loc:
         if isinstance(part, int):
             continue
@@ -68,7 +70,7 @@ def _inner_model(tp: Any) -> Any:
     return None
 
 
-def _one_error(err: dict[str, Any]) -> str:
+def _one_error(err: dict[str, Any], root: type[BaseModel] | None = None) -> str:
     loc = tuple(err.get("loc", ()))
     typ = err.get("type", "")
     ctx = err.get("ctx") or {}
@@ -83,7 +85,7 @@ def _one_error(err: dict[str, Any]) -> str:
         return f"{where}: {msg}"
     if typ == "extra_forbidden":
         key = str(loc[-1]) if loc else "?"
-        model = _section_model(loc[:-1])
+        model = _section_model(loc[:-1], root)
         allowed = sorted(model.model_fields) if model is not None else []
         close = difflib.get_close_matches(key, allowed, n=1)
         hint = f"; did you mean {close[0]!r}?" if close else ""
@@ -106,11 +108,14 @@ def _one_error(err: dict[str, Any]) -> str:
     return f"{where}: {words} (got {fmt(inp)})"
 
 
-def format_validation_error(exc: ValidationError, prefix: str = "") -> str:
-    """One line per problem: ``<prefix><key path>: <problem> (got <value>)``."""
+def format_validation_error(exc: ValidationError, prefix: str = "",
+                            root: type[BaseModel] | None = None) -> str:
+    """One line per problem: ``<prefix><key path>: <problem> (got <value>)``; ``root`` is
+    the file's model (default :class:`~pounding.config.RunConfig`), for the keys an unknown
+    key is compared with."""
     lines = []
     for err in exc.errors(include_url=False):
-        line = prefix + _one_error(dict(err))
+        line = prefix + _one_error(dict(err), root)
         if line not in lines:
             lines.append(line)
     return "\n".join(lines)

@@ -35,7 +35,11 @@ class RecordConfig(Section):
     most one of ``scale`` [-] (multiplies it), ``pga_g`` [g] (scales it to that peak) and
     ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
     period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
-    incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`).
+    incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`), or ``saavg_g`` [g]
+    with ``saavg_periods = [T_low, T_high]`` [s] (and ``saavg_n`` periods, default 10):
+    scales it so that the geometric mean of its pseudo-acceleration at ``saavg_n`` periods
+    equally spaced over that range (``sa_damping``) is ``saavg_g``
+    (:func:`pounding.spectra.scale_to_saavg`).
     """
 
     bundled: str | None = None
@@ -48,6 +52,9 @@ class RecordConfig(Section):
     sa_g: Pos | None = None
     sa_period: Pos | None = None
     sa_damping: Annotated[float, Field(ge=0.0, lt=1.0)] | None = None
+    saavg_g: Pos | None = None
+    saavg_periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
+    saavg_n: Annotated[int, Field(ge=2, le=1000)] | None = None
 
     _path: Path | None = PrivateAttr(default=None)
 
@@ -67,16 +74,29 @@ class RecordConfig(Section):
         if (self.bundled is None) == (self.file is None):
             raise ValueError("give exactly one of bundled (e.g. bundled = \"el_centro\") and "
                              f"file (got bundled={self.bundled!r}, file={self.file!r})")
-        given = [k for k in ("scale", "pga_g", "sa_g") if getattr(self, k) is not None]
+        given = [k for k in ("scale", "pga_g", "sa_g", "saavg_g") if getattr(self, k) is not None]
         if len(given) > 1:
-            raise field_error(given[-1], "give one of scale, pga_g and sa_g (got "
+            raise field_error(given[-1], "give one of scale, pga_g, sa_g and saavg_g (got "
                               + ", ".join(f"{k}={getattr(self, k):g}" for k in given) + ")")
         if self.sa_g is not None and self.sa_period is None:
             raise field_error("sa_period", f"sa_g = {self.sa_g:g} g needs the period [s] of "
                                            "that pseudo-acceleration (e.g. sa_period = 1.0)")
-        if self.sa_g is None and (self.sa_period is not None or self.sa_damping is not None):
-            key = "sa_period" if self.sa_period is not None else "sa_damping"
-            raise field_error(key, f"only with sa_g (got {fmt(getattr(self, key))})")
+        if self.sa_g is None and self.sa_period is not None:
+            raise field_error("sa_period", f"only with sa_g (got {fmt(self.sa_period)})")
+        if self.sa_g is None and self.saavg_g is None and self.sa_damping is not None:
+            raise field_error("sa_damping", f"only with sa_g or saavg_g (got "
+                                            f"{fmt(self.sa_damping)})")
+        if self.saavg_g is not None and self.saavg_periods is None:
+            raise field_error("saavg_periods", f"saavg_g = {self.saavg_g:g} g needs the period "
+                                               "range [s] of the average (e.g. saavg_periods "
+                                               "= [0.2, 3.0])")
+        if self.saavg_periods is not None and not self.saavg_periods[0] < self.saavg_periods[1]:
+            raise field_error("saavg_periods", "the lower period must be below the upper (got "
+                                               f"{self.saavg_periods})")
+        if self.saavg_g is None:
+            for key in ("saavg_periods", "saavg_n"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"only with saavg_g (got {fmt(getattr(self, key))})")
         if self.bundled is not None:
             for key in ("dt", "units"):
                 if getattr(self, key) is not None:
@@ -101,7 +121,8 @@ class RecordConfig(Section):
         return self._path
 
     def load(self) -> GroundMotion:
-        """Read the record and apply ``duration``, ``scale`` / ``pga_g``."""
+        """Read the record and apply ``duration``, then ``scale`` / ``pga_g`` / ``sa_g`` /
+        ``saavg_g``."""
         if self.bundled is not None:
             gm = (el_centro() if self.bundled.lower() in EL_CENTRO_ALIASES
                   else load_bundled(self.bundled))
@@ -121,4 +142,10 @@ class RecordConfig(Section):
 
             gm = scale_to_sa(gm, self.sa_g, self.sa_period,  # type: ignore[arg-type]
                              SA_DAMPING if self.sa_damping is None else self.sa_damping)
+        if self.saavg_g is not None:
+            from pounding.spectra.scaling import SAAVG_N, scale_to_saavg
+
+            gm = scale_to_saavg(gm, self.saavg_g, self.saavg_periods,  # type: ignore[arg-type]
+                                SA_DAMPING if self.sa_damping is None else self.sa_damping,
+                                SAAVG_N if self.saavg_n is None else self.saavg_n)
         return gm

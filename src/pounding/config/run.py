@@ -168,8 +168,12 @@ class RunConfig(Section):
             default = default_formula(law, self.contact.tension)
             if "formula" in LAW_FIELDS[law] and default and "e" in c and "formula" not in c:
                 c["formula"] = default
-        if self.record.sa_g is not None:
+        if self.record.sa_g is not None or self.record.saavg_g is not None:
             data["record"].setdefault("sa_damping", SA_DAMPING)
+        if self.record.saavg_g is not None:
+            from pounding.spectra.scaling import SAAVG_N
+
+            data["record"].setdefault("saavg_n", SAAVG_N)
         motion = self.record.load()
         step = grid_step(motion.dt, self.solver.dt or DEFAULT_OUTPUT_STEP)
         sol = data.setdefault("solver", {})

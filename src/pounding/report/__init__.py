@@ -9,6 +9,10 @@ Every text taken from the files is HTML-escaped; every quantity carries its unit
   ``impacts.csv``, ``model.toml`` and the PNG figures). The page shows the model, the record,
   the headline numbers, the figures (the PNGs of the folder, or regenerated from the NetCDF
   when the model file can be rebuilt), the impact table, the energy balance and a gap check.
+* A **fragility** folder (``pounding fragility``) holds ``fragility.json`` beside its
+  sweep's table: the page shows the study, the fragility of every limit state with its
+  intervals, the probability of pounding against the gap beside the code gaps, the counts
+  at every stripe and the study's figures (:mod:`~pounding.report.fragility`).
 * A **sweep** folder holds ``results.parquet`` (one row per case: parameters and measures).
   The page shows the parameter grid, the first rows of the results with summary statistics,
   and the main measure plotted against each swept parameter.
@@ -32,6 +36,7 @@ import os
 from pathlib import Path
 
 from pounding.io import write_text
+from pounding.report.fragility import FRAGILITY_FILE, render_fragility
 from pounding.report.run import MAX_IMPACT_ROWS, render_run
 from pounding.report.run_folder import RUN_FILES
 from pounding.report.sweep import MAX_SWEEP_ROWS, render_sweep
@@ -45,7 +50,7 @@ DEFAULT_NAME = "report.html"
 
 
 def detect_kind(results_dir: str | os.PathLike[str]) -> str:
-    """``"run"`` or ``"sweep"``: what ``results_dir`` holds.
+    """``"run"``, ``"sweep"`` or ``"fragility"``: what ``results_dir`` holds.
 
     Parameters
     ----------
@@ -55,7 +60,9 @@ def detect_kind(results_dir: str | os.PathLike[str]) -> str:
     Returns
     -------
     str
-        ``"run"`` for a run output, ``"sweep"`` for a sweep output.
+        ``"run"`` for a run output, ``"fragility"`` for the output of ``pounding
+        fragility`` (``fragility.json``, beside its sweep's ``results.parquet``),
+        ``"sweep"`` for a sweep output.
 
     Raises
     ------
@@ -72,6 +79,8 @@ def detect_kind(results_dir: str | os.PathLike[str]) -> str:
     run_missing = [f for f in RUN_FILES if not (folder / f).is_file()]
     if not run_missing:
         return "run"
+    if (folder / FRAGILITY_FILE).is_file():
+        return "fragility"
     if (folder / SWEEP_FILE).is_file():
         return "sweep"
     raise ValueError(
@@ -130,4 +139,6 @@ def render_report(results_dir: str | os.PathLike[str]) -> str:
     """
     folder = Path(results_dir)
     kind = detect_kind(folder)
+    if kind == "fragility":
+        return render_fragility(folder)
     return render_run(folder) if kind == "run" else render_sweep(folder)

@@ -16,7 +16,8 @@ its period.
 * :mod:`pounding.spectra.scaling` -- a suite of records scaled to a target spectrum: to
   Sa(T1) or PGA record by record, one factor for the suite by ASCE 7-22 §16.2.3 or EN 1998-1
   §3.2.3.1.2, or a least-squares fit of each log-spectrum (:func:`scale_suite`,
-  :class:`SuiteScaling`); a record scaled to an Sa(T1) (:func:`scale_to_sa`).
+  :class:`SuiteScaling`); a record scaled to an Sa(T1) (:func:`scale_to_sa`) or to an
+  average spectral acceleration over a period range (:func:`sa_avg`, :func:`scale_to_saavg`).
 
 Nothing here imports numba until a spectrum is computed. See ``docs/spectra.md``.
 
@@ -27,8 +28,8 @@ from pounding.spectra.design import DesignSpectrum
 from pounding.spectra.modal import fundamental_mode, spectral_displacements
 from pounding.spectra.response import ResponseSpectrum, response_spectrum
 from pounding.spectra.rotd import RotDSpectrum, rotd_spectrum
-from pounding.spectra.scaling import SuiteScaling, scale_suite, scale_to_sa
+from pounding.spectra.scaling import SuiteScaling, sa_avg, scale_suite, scale_to_sa, scale_to_saavg
 
 __all__ = ["DesignSpectrum", "ResponseSpectrum", "RotDSpectrum", "SuiteScaling",
-           "fundamental_mode", "response_spectrum", "rotd_spectrum", "scale_suite",
-           "scale_to_sa", "spectral_displacements"]
+           "fundamental_mode", "response_spectrum", "rotd_spectrum", "sa_avg", "scale_suite",
+           "scale_to_sa", "scale_to_saavg", "spectral_displacements"]

@@ -247,6 +247,56 @@ def scale_to_sa(motion: GroundMotion, sa_g: float, period: float,
     return motion.scaled(target / own)
 
 
+SAAVG_N = 10
+"""Periods of the geometric mean of :func:`sa_avg` unless told otherwise (Eads et al. 2015
+used ten, equally spaced, from 0.2 T1 to 3 T1)."""
+
+
+def saavg_periods(period_range: Sequence[float], n: int = SAAVG_N) -> FloatArray:
+    """``n`` periods equally spaced from the lower to the upper period of ``period_range``
+    [s], both included: where :func:`sa_avg` takes the spectrum."""
+    if len(period_range) != 2:
+        raise ValueError(f"saavg_periods: two periods, the ends of the range [s] (got "
+                         f"{list(period_range)!r})")
+    lo, hi = (_positive("saavg_periods", x) for x in period_range)
+    if not lo < hi:
+        raise ValueError(f"saavg_periods: the lower period must be below the upper (got "
+                         f"{lo:g}, {hi:g} s)")
+    if isinstance(n, bool) or int(n) != n or n < 2:
+        raise ValueError(f"saavg_n: an integer >= 2 (got {n!r})")
+    return np.linspace(lo, hi, int(n))
+
+
+def sa_avg(motion: GroundMotion, period_range: Sequence[float], damping: float = 0.05,
+           n: int = SAAVG_N) -> float:
+    """Average spectral acceleration [g]: the geometric mean of the record's
+    pseudo-acceleration at ``n`` periods equally spaced over ``period_range`` [s],
+
+        Sa_avg = (Π_i PSA(T_i, ζ))^(1/n)   (Bianchini, Diotallevi & Baker 2009; Eads,
+        Miranda & Lignos 2015, *Earthq. Eng. Struct. Dyn.* 44(12), 2057–2073, who take
+        0.2 T1 to 3 T1),
+
+    an intensity measure that follows the spectral shape over the periods that matter to a
+    structure whose period lengthens, or, for pounding, to two buildings of different
+    periods. Exact spectra (:func:`pounding.spectra.response_spectrum`)."""
+    from pounding.spectra.response import response_spectrum
+
+    periods = saavg_periods(period_range, n)
+    psa = response_spectrum(motion, periods, damping).psa_g[0]
+    if not np.all(psa > 0.0):
+        raise ValueError(f"saavg_g: record {motion.name!r} has no response at some period "
+                         f"of {periods[0]:g}-{periods[-1]:g} s")
+    return float(np.exp(np.mean(np.log(psa))))
+
+
+def scale_to_saavg(motion: GroundMotion, saavg_g: float, period_range: Sequence[float],
+                   damping: float = 0.05, n: int = SAAVG_N) -> GroundMotion:
+    """The record scaled so that its :func:`sa_avg` over ``period_range`` is ``saavg_g`` [g]
+    (a geometric mean of spectra scales with the record: one factor)."""
+    target = _positive("saavg_g", saavg_g)
+    return motion.scaled(target / sa_avg(motion, period_range, damping, n))
+
+
 def _target_on(target: DesignSpectrum, periods: FloatArray) -> FloatArray:
     """The target's Sa [g] at ``periods``, or one line saying which periods it lacks."""
     lo, hi = float(target.periods[0]), float(target.periods[-1])

@@ -1,0 +1,212 @@
+"""The output folder of a study, beside the sweep's own files (``sweep.json``, ``parts/``,
+``results.parquet`` — every run):
+
+* ``fragility.json`` — the study in one file: intensity, levels, records, limit states with
+  both fits and their intervals, the gap analysis, the runs that failed;
+* ``fragility.csv`` — one row per limit state, gap and method: median [g], β, intervals;
+* ``counts.csv`` — runs and exceedances per limit state, gap and level;
+* ``ida.csv`` — every run in readable units (record, level, gap, demands);
+* ``gap.csv`` — the gaps for the target probability and the code gaps at the gap level,
+  each with its probability of pounding;
+* ``needed_gaps.csv`` — the gap each record needs at each level [m];
+* figures (:mod:`pounding.plot.fragility`): ``ida.png``, ``fragility.png``,
+  ``pounding_vs_gap.png``, ``pounding_surface.png``.
+
+Every file is written atomically and depends only on the runs and the study: a re-run
+writes the same bytes (figures aside: their metadata are fixed, their pixels too on one
+machine).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pounding.studies.fragility.analysis import FragilityAnalysis
+from pounding.studies.fragility.bootstrap import FragilityEstimate
+from pounding.studies.fragility.fitting import (
+    FIT_ALL,
+    FIT_FAILED,
+    FIT_NONE,
+    FIT_OK,
+    FIT_SEPARATED,
+)
+from pounding.studies.fragility.gap_probability import (
+    pounding_probability,
+    pounding_probability_fit,
+)
+from pounding.studies.fragility.plan import StudyPlan
+from pounding.studies.fragility.study import DEMANDS
+
+__all__ = ["FIGURES", "STUDY_FILE", "TABLES", "write_outputs"]
+
+STUDY_FILE = "fragility.json"
+"""The file that makes a folder a fragility study's output."""
+
+TABLES = ("fragility.csv", "counts.csv", "ida.csv", "gap.csv", "needed_gaps.csv")
+FIGURES = ("ida.png", "fragility.png", "pounding_vs_gap.png", "pounding_surface.png")
+
+STATUS_TEXT = {FIT_OK: "fitted",
+               FIT_NONE: "never exceeded: the median is above the highest level",
+               FIT_ALL: "exceeded in every run: the median is below the lowest level",
+               FIT_SEPARATED: "separated data: beta -> 0, the median lies between two levels",
+               FIT_FAILED: "not fitted (too few exceedances)"}
+
+
+def _num(x: Any) -> Any:
+    """A number for JSON: NaN → null, ±inf → "inf"/"-inf", NumPy scalars as Python."""
+    if isinstance(x, (np.integer,)):
+        return int(x)
+    if isinstance(x, (float, np.floating)):
+        f = float(x)
+        if math.isnan(f):
+            return None
+        if math.isinf(f):
+            return "inf" if f > 0 else "-inf"
+        return f
+    return x
+
+
+def _estimate(e: FragilityEstimate) -> dict[str, Any]:
+    return {"median_g": _num(e.median), "beta": _num(e.beta),
+            "median_ci_g": [_num(v) for v in e.median_ci],
+            "beta_ci": [_num(v) for v in e.beta_ci], "status": STATUS_TEXT[e.status],
+            "n_records": e.n_records, "bootstrap_failed": e.n_failed_boot}
+
+
+def _csv(rows: list[list[Any]], header: list[str]) -> str:
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(header)
+    for r in rows:
+        w.writerow(["" if v is None else (f"{v:.6g}" if isinstance(v, float) else v)
+                    for v in r])
+    return buf.getvalue()
+
+
+def summary(plan: StudyPlan, a: FragilityAnalysis) -> dict[str, Any]:
+    """The content of ``fragility.json``."""
+    cfg = plan.config
+    ga = a.gap
+    ls = []
+    for r in a.limit_states:
+        d = DEMANDS[r.spec.demand]
+        ls.append({"name": r.spec.label, "demand": r.spec.demand, "limit": r.spec.limit,
+                   "unit": d.unit, "gap_m": r.gap, "n_runs": r.n_runs.tolist(),
+                   "n_exceed": r.n_exceed.tolist(),
+                   "capacity_g": [_num(v) for v in r.capacity],
+                   "censored": r.censored.tolist(),
+                   "msa_mle": _estimate(r.msa), "ida": _estimate(r.ida)})
+    return {
+        "kind": "fragility", "name": cfg.name, "description": cfg.description,
+        "source": str(plan.source) if plan.source else None, "base": cfg.base,
+        "intensity": {"measure": cfg.intensity.measure, "label": plan.im_label,
+                      "period_s": cfg.intensity.period, "damping": cfg.intensity.damping,
+                      "saavg_periods_s": list(plan.saavg_range) if plan.saavg_range else None,
+                      "scaling": (cfg.suite.scaling.model_dump() if cfg.suite.scaling
+                                  else "each record to the level"),
+                      "target_g": plan.im_target},
+        "levels_g": list(plan.levels), "records": plan.records,
+        "gaps_m": [g for g in plan.gaps], "building_periods_s": plan.periods,
+        "limit_states": ls,
+        "gap": {"at_g": ga.needed.at, "target_probability": ga.target,
+                "needed_m": dict(zip(plan.records, [_num(v) for v in ga.needed.needed_at])),
+                "lognormal_median_m": _num(ga.median), "lognormal_beta": _num(ga.beta),
+                "gap_for_target_lognormal_m": _num(ga.gap_fit),
+                "gap_for_target_lognormal_ci_m": [_num(v) for v in ga.gap_fit_ci],
+                "gap_for_target_records_m": _num(ga.gap_empirical),
+                "code_gaps_m": {k: _num(v) for k, v in ga.needed.code.items()},
+                "scaled_from_gap_level": ga.needed.scaled, "check": ga.check},
+        "bootstrap": cfg.bootstrap.model_dump(),
+        "runs": {"n": a.n_runs, "failed": a.n_failed, "failures": a.failures[:100]},
+    }
+
+
+def _fragility_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
+    rows = []
+    for r in a.limit_states:
+        d = DEMANDS[r.spec.demand]
+        for method, e in (("msa_mle", r.msa), ("ida", r.ida)):
+            rows.append([r.spec.label, r.spec.demand, r.spec.limit, d.unit, r.gap, method,
+                         plan.im_label, e.median, e.median_ci[0], e.median_ci[1], e.beta,
+                         e.beta_ci[0], e.beta_ci[1], e.n_records,
+                         int(np.sum(~r.censored)), STATUS_TEXT[e.status]])
+    return rows
+
+
+def _gap_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
+    ga = a.gap
+    at = ga.needed.needed_at
+    rows: list[tuple[str, float, float, float]] = [
+        (f"P = {ga.target:g}: lognormal fit", ga.gap_fit, *ga.gap_fit_ci),
+        (f"P = {ga.target:g}: records", ga.gap_empirical, math.nan, math.nan)]
+    rows += [(f"{k} (mean simulated peaks)", v, math.nan, math.nan)
+             for k, v in ga.needed.code.items()]
+    rows += [(f"simulated with contact: {g:g} m", float(g), math.nan, math.nan)
+             for g in plan.gaps if g is not None]
+    out = []
+    for name, g, lo, hi in rows:
+        pe = float(pounding_probability(at, [g])[0]) if math.isfinite(g) else math.nan
+        pf = float(pounding_probability_fit(ga.median, ga.beta, [g])[0]) \
+            if math.isfinite(g) else math.nan
+        out.append([name, ga.needed.at, g, lo, hi, pe, pf])
+    return out
+
+
+def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -> list[Path]:
+    """Write the tables, ``fragility.json`` and (with ``figures``) the figures into
+    ``plan.out``; returns the files written."""
+    from pounding.io import write_text
+
+    out = plan.out
+    files = []
+    fr = _fragility_rows(plan, a)
+    files.append(write_text(out / "fragility.csv", _csv(fr, [
+        "limit_state", "demand", "limit", "unit", "gap_m", "method", "intensity_measure",
+        "median_g", "median_lo_g", "median_hi_g", "beta", "beta_lo", "beta_hi", "n_records",
+        "n_records_exceeding", "status"])))
+    counts = [[r.spec.label, r.gap, x, int(n), int(z), z / n if n else math.nan]
+              for r in a.limit_states for x, n, z in zip(plan.levels, r.n_runs, r.n_exceed)]
+    files.append(write_text(out / "counts.csv", _csv(counts, [
+        "limit_state", "gap_m", "level_g", "n_runs", "n_exceed", "fraction"])))
+    keys = list(a.demands)
+    runs = []
+    for gi, g in enumerate(plan.gaps):
+        for ri, name in enumerate(plan.records):
+            for li, x in enumerate(plan.levels):
+                runs.append([name, x, g] + [a.demands[k][gi, ri, li] * DEMANDS[k].factor
+                                            for k in keys])
+    files.append(write_text(out / "ida.csv", _csv(runs, ["record", "level_g", "gap_m"] + [
+        f"{k}_{DEMANDS[k].unit}".replace("_-", "").replace("%", "pct") for k in keys])))
+    files.append(write_text(out / "gap.csv", _csv(_gap_rows(plan, a), [
+        "gap", "at_g", "gap_m", "gap_lo_m", "gap_hi_m", "p_pounding_records",
+        "p_pounding_lognormal"])))
+    ng = a.gap.needed
+    files.append(write_text(out / "needed_gaps.csv", _csv(
+        [[name] + list(row) for name, row in zip(plan.records, ng.needed)],
+        ["record"] + [f"{x:g}" for x in plan.levels])))
+    files.append(write_text(out / STUDY_FILE, json.dumps(summary(plan, a), indent=2,
+                                                         allow_nan=False) + "\n"))
+    if figures:
+        from pounding.plot import save_figure
+        from pounding.plot.fragility import (
+            plot_fragility,
+            plot_gap_probability,
+            plot_gap_surface,
+            plot_ida,
+        )
+
+        for name, fig in (("ida.png", plot_ida(a)), ("fragility.png", plot_fragility(a)),
+                          ("pounding_vs_gap.png", plot_gap_probability(a)),
+                          ("pounding_surface.png", plot_gap_surface(a))):
+            files.append(save_figure(fig, out / name, dpi=130))
+    else:
+        for name in FIGURES:  # no stale figure of an earlier run
+            (out / name).unlink(missing_ok=True)
+    return files

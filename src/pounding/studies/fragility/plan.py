@@ -1,0 +1,279 @@
+"""A study planned as a sweep: every record of the suite at every intensity level (and at
+every gap of ``[gap] values``), each a case of :mod:`pounding.studies.sweep` — so the runs
+go on Dask, are saved batch by batch, resume after any interruption and give a table equal
+bit for bit from one run to the next.
+
+Each case sets the record (``record.bundled`` or ``record.file``) and its scaling:
+
+* without ``[suite.scaling]`` every record is scaled so that its own intensity equals the
+  level (incremental dynamic analysis: the stripe at level ``x`` has IM = ``x`` exactly):
+  ``record.pga_g``, ``record.sa_g`` (with ``sa_period``, ``sa_damping``) or
+  ``record.saavg_g`` (with ``saavg_periods``, ``saavg_n``, ``sa_damping``) = ``x``;
+* with it, the suite is first scaled to the target spectrum (one factor ``f_i`` per record,
+  :func:`pounding.spectra.scale_suite`) and a stripe at level ``x`` multiplies that suite by
+  ``x / IM_target`` (``record.scale = f_i x / IM_target``): the stripe's intensity is the
+  target's, the records keep their spread about it (multiple-stripe analysis of a
+  code-scaled suite).
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pounding.studies.fragility.study import StudyConfig, load_study
+
+__all__ = ["StudyPlan", "plan_study"]
+
+
+@dataclass
+class StudyPlan:
+    """A study file turned into its runs.
+
+    Attributes
+    ----------
+    config : StudyConfig
+    source : Path or None
+        The study file.
+    out : Path
+        The output folder.
+    records : list of str
+        Record names (file stems), in suite order.
+    source_key : str
+        ``"record.bundled"`` or ``"record.file"``.
+    sources : list of str
+        Each record's value of ``source_key``.
+    levels : list of float
+        Intensity levels [g].
+    gaps : list of float or None
+        ``[None]`` (the base model's gaps) or ``[gap] values`` [m].
+    im_label : str
+        The intensity measure for axes and tables, with its unit.
+    saavg_range : (float, float) or None
+        Periods of Sa_avg [s].
+    factors : ndarray or None
+        Suite scale factors to the target spectrum (``[suite.scaling]``), and
+    im_target : float or None
+        the target's intensity [g].
+    periods : list of float
+        Fundamental period of each building of the base model [s].
+    sweep : Sweep
+        The runs.
+    rows : list of (int, int, int)
+        Per case (in case order): record, level and gap index.
+    """
+
+    config: StudyConfig
+    source: Path | None
+    out: Path
+    records: list[str]
+    source_key: str
+    sources: list[str]
+    levels: list[float]
+    gaps: list[float | None]
+    im_label: str
+    saavg_range: tuple[float, float] | None
+    factors: Any
+    im_target: float | None
+    periods: list[float]
+    sweep: Any
+    rows: list[tuple[int, int, int]] = field(repr=False, default_factory=list)
+
+    def case_values(self, record: int, level: float, gap: float | None = None
+                    ) -> tuple[list[str], list[Any]]:
+        """The sweep parameters and their values for ``record`` at ``level`` (any level,
+        not only those of the study) and ``gap``."""
+        params = [self.source_key]
+        values: list[Any] = [self.sources[record]]
+        if self.factors is not None:
+            params.append("record.scale")
+            values.append(float(self.factors[record]) * level / float(self.im_target))
+        else:
+            params.append({"pga": "record.pga_g", "sa": "record.sa_g",
+                           "saavg": "record.saavg_g"}[self.config.intensity.measure])
+            values.append(float(level))
+        if gap is not None:
+            params.append("contact.gap")
+            values.append(float(gap))
+        return params, values
+
+    def build(self, record: int, level: float) -> Any:
+        """The model, motion and solver options of ``record`` at ``level``, exactly as
+        the sweep's case builds them (:meth:`pounding.config.RunConfig.build`)."""
+        from pounding.config import RunConfig
+        from pounding.studies.sweep import apply_overrides
+
+        params, values = self.case_values(record, level)
+        data = apply_overrides(self.sweep.base, params, values)
+        return RunConfig.model_validate(data, context={"base_dir": self.sweep.base_dir}).build()
+
+
+def _suite(cfg: StudyConfig, here: Path) -> tuple[list[str], str, list[str]]:
+    """Names, the key that selects a record in a model file, and its value per record."""
+    from pounding.ground_motion import RecordSuite, bundled_records
+
+    s = cfg.suite
+    if s.bundled:
+        files = bundled_records()
+        return [Path(f).stem for f in files], "record.bundled", [Path(f).stem for f in files]
+    if s.folder is not None:
+        suite = RecordSuite.from_folder(here / s.folder, dt=s.dt, units=s.units)
+    else:
+        suite = RecordSuite.from_paths([here / f for f in s.files or []], dt=s.dt,
+                                       units=s.units)
+    paths = [str(Path(p).resolve()) for p in suite.paths]
+    if len(set(paths)) != len(paths):
+        raise ValueError("suite.files: a record is given twice")
+    return [Path(p).stem for p in paths], "record.file", paths
+
+
+def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.PathLike[str]
+               | None = None, out: str | os.PathLike[str] | None = None) -> StudyPlan:
+    """Plan a study: validate it, read its suite and build the sweep of its runs.
+
+    Parameters
+    ----------
+    study : path or StudyConfig
+        The study file, or a validated one (then ``folder`` is where its relative paths
+        start).
+    out : path, optional
+        The output folder (default ``out`` of the file, else ``<name>-results``, relative
+        to the study file).
+
+    Raises
+    ------
+    ValueError
+        One line naming the key: a bad study file, base model or record.
+    """
+    from pounding.config import load_config
+    from pounding.spectra import fundamental_mode
+    from pounding.studies.sweep import parse_sweep
+
+    source: Path | None = None
+    if isinstance(study, StudyConfig):
+        cfg, here = study, Path(folder or ".").resolve()
+    else:
+        source = Path(study).resolve()
+        cfg, here = load_study(study)
+    where = str(source) if source else "study"
+    model_file = here / cfg.base
+    base_cfg = load_config(model_file)
+    model, _, _ = base_cfg.build()
+    if len(model.buildings) < 2:
+        raise ValueError(f"{where}: base: {model_file} has one building; a study of pounding "
+                         "needs two or more")
+    for i, ls in enumerate(cfg.limit_state):
+        if ls.demand == "ductility" and not model.is_inelastic:
+            raise ValueError(f"{where}: limit_state[{i}].demand: \"ductility\" needs yielding "
+                             f"storeys, and the buildings of {cfg.base} are linear (got "
+                             "'ductility')")
+    periods = [float(fundamental_mode(b)[0]) for b in model.buildings]
+    try:
+        names, key, sources = _suite(cfg, here)
+    except ValueError as exc:
+        raise ValueError(f"{where}: suite: {exc}") from None
+    if len(names) < 2:
+        raise ValueError(f"{where}: suite: a study needs at least two records (got "
+                         f"{len(names)})")
+    levels = cfg.intensity.level_values()
+    it = cfg.intensity
+    base = base_cfg.to_dict(resolve_paths=True)
+    rec: dict[str, Any] = {key.split(".")[1]: sources[0]}
+    if cfg.suite.duration is not None:
+        rec["duration"] = cfg.suite.duration
+    if key == "record.file":
+        for k in ("dt", "units"):
+            if getattr(cfg.suite, k) is not None:
+                rec[k] = getattr(cfg.suite, k)
+    saavg: tuple[float, float] | None = None
+    if it.measure == "saavg":
+        lo, hi = it.periods if it.periods else (0.2 * min(periods), 3.0 * max(periods))
+        saavg = (float(lo), float(hi))
+    factors, im_target = None, None
+    if cfg.suite.scaling is None:
+        if it.measure == "sa":
+            rec.update(sa_period=it.period, sa_damping=it.damping)
+        elif it.measure == "saavg":
+            rec.update(saavg_periods=list(saavg), saavg_n=it.n_periods, sa_damping=it.damping)
+    base["record"] = rec
+    plan = StudyPlan(config=cfg, source=source, out=Path(out) if out is not None else
+                     here / (cfg.out or f"{cfg.name}-results"), records=names, source_key=key,
+                     sources=sources, levels=levels,
+                     gaps=list(cfg.gap.values) if cfg.gap.values else [None],
+                     im_label=_im_label(cfg, saavg), saavg_range=saavg, factors=None,
+                     im_target=None, periods=periods, sweep=None)
+    if cfg.suite.scaling is not None:
+        factors, im_target = _suite_factors(plan, base, here, model_file.parent, where)
+        plan.factors, plan.im_target = factors, im_target
+    first_params, first_values = plan.case_values(0, levels[0])
+    for p, v in zip(first_params, first_values):
+        rec[p.split(".")[1]] = v
+    rows, cols = [], {p: [] for p in plan.case_values(0, levels[0], plan.gaps[0])[0]}
+    for gi, g in enumerate(plan.gaps):
+        for ri in range(len(names)):
+            for li, x in enumerate(levels):
+                params, values = plan.case_values(ri, x, g)
+                for p, v in zip(params, values):
+                    cols[p].append(v)
+                rows.append((ri, li, gi))
+    data = {"name": cfg.name, "base": base, "list": cols,
+            "histories": cfg.run.histories or False}
+    if cfg.run.batch_size is not None:
+        data["batch_size"] = cfg.run.batch_size
+    plan.sweep = parse_sweep(data, base_dir=model_file.parent, where=where)
+    plan.sweep.source = source
+    plan.rows = rows
+    return plan
+
+
+def _im_label(cfg: StudyConfig, saavg: tuple[float, float] | None) -> str:
+    it = cfg.intensity
+    z = f"{100 * it.damping:g} %"
+    if it.measure == "pga":
+        return "PGA [g]"
+    if it.measure == "sa":
+        return f"Sa({it.period:g} s, {z}) [g]"
+    assert saavg is not None
+    return f"Sa_avg({saavg[0]:.3g}–{saavg[1]:.3g} s, {z}) [g]"
+
+
+def _suite_factors(plan: StudyPlan, base: dict[str, Any], here: Path, base_dir: Path,
+                   where: str) -> tuple[Any, float]:
+    """Scale factors of the suite to the target spectrum and the target's intensity [g]."""
+    from pounding.config import RunConfig
+    from pounding.spectra import DesignSpectrum, scale_suite
+    from pounding.studies.sweep import apply_overrides
+
+    sc = plan.config.suite.scaling
+    it = plan.config.intensity
+    assert sc is not None
+    try:
+        target = DesignSpectrum.from_file(here / sc.target)
+    except ValueError as exc:
+        raise ValueError(f"{where}: suite.scaling.target: {exc}") from None
+    motions = []
+    for ri in range(len(plan.records)):
+        data = apply_overrides(base, [plan.source_key, "record.scale"],
+                               [plan.sources[ri], 1.0])
+        with_ctx = RunConfig.model_validate(data, context={"base_dir": base_dir})
+        motions.append(with_ctx.record.load())
+    try:
+        s = scale_suite(motions, target, sc.period, method=sc.method, code=sc.code,
+                        damping=it.damping)
+        if it.measure == "pga":
+            t = np.array([0.0])
+        elif it.measure == "sa":
+            t = np.array([it.period])
+        else:
+            from pounding.spectra.scaling import saavg_periods
+
+            assert plan.saavg_range is not None
+            t = saavg_periods(plan.saavg_range, it.n_periods)
+        sa = np.asarray(target.sa_g(t), dtype=float)
+    except ValueError as exc:
+        raise ValueError(f"{where}: suite.scaling: {exc}") from None
+    return s.factors, float(np.exp(np.mean(np.log(sa))))

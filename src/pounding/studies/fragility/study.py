@@ -1,0 +1,278 @@
+"""The study file of ``pounding fragility``: a base model, a record suite and its scaling,
+the intensity measure and its levels, the limit states, the gap analysis, the bootstrap and
+how to run — validated like a model file (every bad key named with its value, one line
+each). See ``docs/fragility.md``.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, ValidationError, model_validator
+
+from pounding.config.base import NonNeg, Pos, Section, field_error
+
+__all__ = ["DEMANDS", "Demand", "IntensitySpec", "LimitStateSpec", "StudyConfig",
+           "load_study", "parse_study"]
+
+
+@dataclass(frozen=True)
+class Demand:
+    """An engineering demand recorded per run: the column of the sweep's table it comes
+    from, how it is shown (label, unit, factor from SI to that unit) and whether it is
+    binary (exceeded or not: its IDA capacity is the first level exceeded)."""
+
+    key: str
+    label: str
+    unit: str
+    factor: float
+    binary: bool = False
+
+
+DEMANDS: dict[str, Demand] = {
+    "pounding": Demand("pounding", "pounding (any impact)", "-", 1.0, binary=True),
+    "impacts": Demand("impacts", "number of impacts", "-", 1.0),
+    "impact_force": Demand("impact_force", "peak impact force", "MN", 1e-6),
+    "drift": Demand("drift", "peak storey drift ratio", "%", 100.0),
+    "acceleration": Demand("acceleration", "peak floor acceleration", "g", 1.0 / 9.80665),
+    "ductility": Demand("ductility", "peak storey ductility", "-", 1.0),
+}
+"""The demands a limit state can be put on. ``limit`` is given in the unit shown: impact
+force in MN, drift ratio in %, floor acceleration in g."""
+
+MEASURES = ("pga", "sa", "saavg")
+"""Intensity measures: peak ground acceleration, Sa(T1, ζ), average spectral acceleration."""
+
+
+class LevelRange(Section):
+    """``levels = { start, stop, n }``: ``n`` levels from ``start`` to ``stop`` [g],
+    equally spaced (``spacing = "linear"``, the default) or in geometric progression
+    (``"log"``)."""
+
+    start: Pos
+    stop: Pos
+    n: Annotated[int, Field(ge=2, le=1000)]
+    spacing: Literal["linear", "log"] = "linear"
+
+    @model_validator(mode="after")
+    def _order(self) -> LevelRange:
+        if not self.start < self.stop:
+            raise field_error("stop", f"must be above start = {self.start:g} (got "
+                                      f"{self.stop:g})")
+        return self
+
+    def values(self) -> list[float]:
+        import numpy as np
+
+        f = np.geomspace if self.spacing == "log" else np.linspace
+        return [float(v) for v in f(self.start, self.stop, self.n)]
+
+
+class IntensitySpec(Section):
+    """``[intensity]``: ``measure`` = ``"pga"``, ``"sa"`` (with ``period`` [s]) or ``"saavg"``
+    (with ``periods = [low, high]`` [s], ``n_periods``), ``damping`` of the spectra, and the
+    ``levels`` [g] each record is scaled to: a list, or ``{ start, stop, n }``."""
+
+    measure: Literal["pga", "sa", "saavg"]
+    period: Pos | None = None
+    periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
+    n_periods: Annotated[int, Field(ge=2, le=1000)] = 10
+    damping: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.05
+    levels: Annotated[list[Pos], Field(min_length=2, max_length=1000)] | LevelRange
+
+    @model_validator(mode="after")
+    def _keys(self) -> IntensitySpec:
+        if self.measure == "sa" and self.period is None:
+            raise field_error("period", "measure \"sa\" needs the period [s] of Sa "
+                                        "(e.g. period = 1.15, the first mode of a building)")
+        if self.measure != "sa" and self.period is not None:
+            raise field_error("period", f"only with measure \"sa\" (got {self.period:g})")
+        if self.measure != "saavg" and self.periods is not None:
+            raise field_error("periods", f"only with measure \"saavg\" (got {self.periods})")
+        if self.periods is not None and not self.periods[0] < self.periods[1]:
+            raise field_error("periods", f"the lower period must be below the upper (got "
+                                         f"{self.periods})")
+        vals = self.level_values()
+        if any(b <= a for a, b in zip(vals, vals[1:])):
+            raise field_error("levels", f"must increase strictly (got {vals})")
+        return self
+
+    def level_values(self) -> list[float]:
+        """The levels [g], increasing."""
+        return list(self.levels) if isinstance(self.levels, list) else self.levels.values()
+
+
+class LimitStateSpec(Section):
+    """``[[limit_state]]``: ``demand`` (a key of :data:`DEMANDS`), ``limit`` in the demand's
+    unit (not for ``"pounding"``), and an optional ``name``."""
+
+    demand: Literal["pounding", "impacts", "impact_force", "drift", "acceleration",
+                    "ductility"]
+    limit: NonNeg | None = None
+    name: str | None = None
+
+    @model_validator(mode="after")
+    def _limit(self) -> LimitStateSpec:
+        d = DEMANDS[self.demand]
+        if self.demand == "pounding" and self.limit is not None:
+            raise field_error("limit", f"demand \"pounding\" is any impact; it takes no limit "
+                                       f"(got {self.limit:g}); for a number of impacts use "
+                                       "demand = \"impacts\"")
+        if self.demand != "pounding" and self.limit is None:
+            raise field_error("limit", f"required for demand \"{self.demand}\": the "
+                                       f"{d.label} beyond which the limit state is exceeded "
+                                       f"[{d.unit}]")
+        return self
+
+    @property
+    def label(self) -> str:
+        """The name, or one made from the demand and limit."""
+        if self.name:
+            return self.name
+        d = DEMANDS[self.demand]
+        if self.limit is None:
+            return "pounding"
+        return f"{d.label} > {self.limit:g} {d.unit}".replace(" -", "")
+
+    @property
+    def limit_si(self) -> float:
+        """The limit in SI units (the sweep table's), 0.5 for the binary demand."""
+        if self.limit is None:
+            return 0.5
+        return self.limit / DEMANDS[self.demand].factor
+
+
+class SpectrumScaling(Section):
+    """``[suite.scaling]``: the suite scaled to a target spectrum first
+    (:func:`pounding.spectra.scale_suite`): ``target`` (a spectrum file, relative to the
+    study file), ``period`` T1 [s], ``method`` (code, sa, pga, lsq), ``code`` (asce7, ec8)."""
+
+    target: str
+    period: Pos
+    method: Literal["code", "sa", "pga", "lsq"] = "code"
+    code: Literal["asce7", "ec8"] = "asce7"
+
+
+class SuiteSpec(Section):
+    """``[suite]``: exactly one of ``bundled = true`` (the ten records shipped with
+    pounding), ``folder`` and ``files`` (relative to the study file; ``dt``, ``units`` for
+    files that do not state them); ``duration`` [s] keeps each record up to that time;
+    ``scaling`` scales the suite to a target spectrum before the levels are applied."""
+
+    bundled: bool | None = None
+    folder: str | None = None
+    files: Annotated[list[str], Field(min_length=1)] | None = None
+    dt: Pos | None = None
+    units: str | None = None
+    duration: Pos | None = None
+    scaling: SpectrumScaling | None = None
+
+    @model_validator(mode="after")
+    def _one_source(self) -> SuiteSpec:
+        given = [k for k in ("bundled", "folder", "files")
+                 if getattr(self, k) not in (None, False)]
+        if len(given) != 1:
+            raise field_error("bundled", "give exactly one of bundled = true, folder = "
+                                         "\"records/\" and files = [...] (got "
+                                         f"{', '.join(given) or 'none'})")
+        if self.bundled and (self.dt is not None or self.units is not None):
+            raise field_error("dt" if self.dt is not None else "units",
+                              "only for record files; the bundled records state their own")
+        return self
+
+
+class GapSpec(Section):
+    """``[gap]``: the probability of pounding against the gap at the intensity ``at`` [g]
+    (default: the middle level), the gap for the ``target`` probability (default 0.10),
+    and gaps ``values`` [m] at which every run is also simulated with contact."""
+
+    at: Pos | None = None
+    target: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.10
+    values: list[NonNeg] = []
+
+
+class BootstrapSpec(Section):
+    """``[bootstrap]``: ``n`` resamples of the records (0: no intervals), ``seed``, and the
+    two-sided ``confidence`` of the intervals and bands."""
+
+    n: Annotated[int, Field(ge=0, le=100_000)] = 1000
+    seed: int = 2015
+    confidence: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.90
+
+
+class RunSpec(Section):
+    """``[run]``: ``workers`` of the local Dask cluster, or ``scheduler`` (an address, or
+    ``"synchronous"``), ``batch_size``, and ``histories`` (false, ``"netcdf"``, ``"zarr"``)."""
+
+    workers: Annotated[int, Field(ge=1)] | None = None
+    scheduler: str | None = None
+    batch_size: Annotated[int, Field(ge=1)] | None = None
+    histories: Literal[False, "netcdf", "zarr"] = False
+
+
+class StudyConfig(Section):
+    """A whole study file (``docs/fragility.md``)."""
+
+    name: str = "fragility"
+    description: str | None = None
+    base: str
+    out: str | None = None
+    suite: SuiteSpec
+    intensity: IntensitySpec
+    limit_state: Annotated[list[LimitStateSpec], Field(min_length=1)] = [
+        LimitStateSpec(demand="pounding")]
+    gap: GapSpec = GapSpec()
+    bootstrap: BootstrapSpec = BootstrapSpec()
+    run: RunSpec = RunSpec()
+
+    @model_validator(mode="after")
+    def _unique_names(self) -> StudyConfig:
+        names = [ls.label for ls in self.limit_state]
+        for i, n in enumerate(names):
+            if n in names[:i]:
+                raise field_error(("limit_state", i, "name"), f"two limit states are called "
+                                                              f"{n!r}; name them apart")
+        return self
+
+    def gap_at(self) -> float:
+        """The intensity of the gap analysis [g]: ``[gap] at``, else the middle level."""
+        if self.gap.at is not None:
+            return self.gap.at
+        vals = self.intensity.level_values()
+        return vals[(len(vals) - 1) // 2]
+
+
+def parse_study(data: dict[str, Any], where: str = "study") -> StudyConfig:
+    """Validate a parsed study file.
+
+    Raises
+    ------
+    ValueError
+        One line per problem, ``<where>: <key path>: <problem> (got <value>)``.
+    """
+    from pounding.config.errors import format_validation_error
+
+    try:
+        return StudyConfig.model_validate(data)
+    except ValidationError as exc:
+        raise ValueError(format_validation_error(exc, prefix=f"{where}: ",
+                                                 root=StudyConfig)) from None
+
+
+def load_study(path: str | os.PathLike[str]) -> tuple[StudyConfig, Path]:
+    """Read and validate a study file: ``(config, the file's folder)``.
+
+    Raises
+    ------
+    ValueError
+        A missing or malformed file, or a bad key (one line each, naming it).
+    """
+    from pounding.io import read_toml
+
+    p = Path(path)
+    data = read_toml(p, "study file")
+    return parse_study(data, where=str(p)), p.resolve().parent
+

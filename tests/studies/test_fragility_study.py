@@ -1,0 +1,200 @@
+"""`pounding fragility` end to end on a small study: the runs (a sweep), their intensity,
+the needed gaps against the runs with contact, resuming, the CLI's conventions, the
+report, and the intensity measures Sa_avg and the scaled suite."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pounding.cli import main
+from pounding.ground_motion import bundled_records, load_bundled
+from pounding.spectra import DesignSpectrum, response_spectrum, sa_avg, scale_suite
+from pounding.spectra.scaling import saavg_periods, scale_to_saavg
+from pounding.studies.fragility import plan_study, run_study
+from pounding.studies.gap import critical_gaps
+from pounding.studies.sweep import load_results
+
+ROOT = Path(__file__).resolve().parents[2]
+SEED = ROOT / "examples" / "seed_sdof_pair.toml"
+TARGET = ROOT / "examples" / "spectrum_asce7_site.toml"
+
+STUDY = f'''name = "small <study>"
+base = "{SEED}"
+out = "small-results"
+[suite]
+bundled = true
+duration = 4.0
+[intensity]
+measure = "sa"
+period = 1.0
+levels = [0.1, 0.3, 0.6, 1.0]
+[[limit_state]]
+demand = "pounding"
+[[limit_state]]
+demand = "drift"
+limit = 1.0
+[gap]
+at = 0.5
+target = 0.2
+values = [0.01, 0.05]
+[bootstrap]
+n = 200
+[run]
+scheduler = "synchronous"
+'''
+
+
+@pytest.fixture(scope="module")
+def small(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("study")
+    study = folder / "study.toml"
+    study.write_text(STUDY)
+    return study, run_study(study)
+
+
+def test_the_runs_are_a_sweep_of_records_by_levels_by_gaps(small):
+    study, res = small
+    plan = res.plan
+    assert res.sweep.n_cases == 10 * 4 * 2 and res.sweep.n_errors == 0
+    table = load_results(res.sweep.results)
+    assert list(table.columns[2:5]) == ["record.bundled", "record.sa_g", "contact.gap"]
+    for (r, li, g), (_, row) in zip(plan.rows, table.iterrows()):
+        assert row["record.sa_g"] == plan.levels[li] and row["contact.gap"] == plan.gaps[g]
+        assert row["record.bundled"] == plan.records[r]
+    # a record as the runs scale it has Sa(1.0 s, 5 %) equal to the level
+    _, motion, _ = plan.build(3, 0.6)
+    assert response_spectrum(motion, [1.0], 0.05).psa_g[0, 0] == pytest.approx(0.6, rel=1e-9)
+    names = {p.name for p in plan.out.iterdir()}
+    assert {"results.parquet", "sweep.json", "fragility.json", "fragility.csv", "gap.csv",
+            "counts.csv", "ida.csv", "needed_gaps.csv", "ida.png", "fragility.png",
+            "pounding_vs_gap.png", "pounding_surface.png"} <= names
+
+
+def test_needed_gaps_agree_with_every_run_with_contact(small):
+    _, res = small
+    check = res.analysis.gap.check
+    assert set(check) == {"0.01", "0.05"}
+    for c in check.values():
+        assert c["runs"] == 40 and c["agree"] == 40
+    assert 0 < check["0.01"]["pounded"] and check["0.05"]["pounded"] < 40
+
+
+def test_needed_gaps_scale_with_the_level_for_linear_buildings(small):
+    _, res = small
+    plan, ng = res.plan, res.analysis.gap.needed
+    assert ng.scaled
+    built = [plan.build(r, 0.3) for r in range(len(plan.records))]
+    direct = critical_gaps(built[0].model, [b.motion for b in built],
+                           dt=built[0].solver["dt"]).critical.max(axis=1)
+    assert ng.needed[:, 1] == pytest.approx(direct, rel=1e-9)
+
+
+def test_the_gap_for_the_target_probability_by_hand(small):
+    _, res = small
+    ga = res.analysis.gap
+    g = np.sort(ga.needed.needed_at)
+    assert ga.gap_empirical == g[7]     # 20 % of 10 records: at most 2 above
+    lg = np.log(g)
+    from scipy.stats import norm
+
+    assert ga.gap_fit == pytest.approx(math.exp(lg.mean() + lg.std(ddof=1) * norm.ppf(0.8)))
+    data = json.loads((res.plan.out / "fragility.json").read_text())
+    assert data["gap"]["gap_for_target_records_m"] == pytest.approx(g[7])
+    assert set(data["gap"]["code_gaps_m"]) == {"ABS", "SRSS", "DDC"}
+
+
+def test_a_second_run_does_no_run_and_writes_the_same_files(small):
+    study, res = small
+    before = {n: (res.plan.out / n).read_bytes() for n in ("fragility.json", "fragility.csv",
+                                                          "gap.csv", "ida.csv")}
+    again = run_study(study, figures=False)
+    assert again.sweep.n_run == 0
+    for n, b in before.items():
+        assert (res.plan.out / n).read_bytes() == b, n
+    assert not (res.plan.out / "ida.png").exists()
+
+
+def test_cli_runs_resumes_and_reports(small, tmp_path, capsys):
+    study, res = small
+    out = tmp_path / "cli"
+    assert main(["fragility", str(study), "--out", str(out), "--no-figures"]) == 0
+    text = capsys.readouterr().out
+    assert "stripes, MLE" in text and "DDC" in text
+    assert main(["fragility", str(study), "--out", str(out), "--no-figures"]) == 0
+    assert "0 run now" in capsys.readouterr().out
+    assert main(["report", str(res.plan.out)]) == 0
+    html = (res.plan.out / "report.html").read_text()
+    assert "small &lt;study&gt;: pounding fragility report" in html
+    assert "<study>" not in html and "Probability of pounding" in html
+
+
+@pytest.mark.parametrize("change, message", [
+    ("[suite]\nbundled = true\nbundle = 1", "suite.bundle: unknown key (got 1); did you mean "
+                                              "'bundled'?"),
+    ('[[limit_state]]\ndemand = "ductility"\nlimit = 2.0', "needs yielding storeys"),
+    ("[intensity]\nmeasure = \"sa\"\nlevels = [0.1, 0.2]", "intensity.period: measure"),
+])
+def test_bad_study_is_one_line_and_writes_nothing(tmp_path, capsys, change, message):
+    text = STUDY
+    head = change.split("\n", 1)[0]
+    if head in ("[suite]", "[intensity]"):
+        start = text.index(head)
+        end = text.index("\n[", start + 1)
+        text = text[:start] + change + text[end:]
+    else:
+        text += change + "\n"
+    study = tmp_path / "bad.toml"
+    study.write_text(text)
+    assert main(["fragility", str(study)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and message in err[0], err
+    assert not (tmp_path / "small-results").exists()
+
+
+# ----------------------------------------------------------------------- Sa_avg, scaled suite
+def test_sa_avg_is_the_geometric_mean_of_the_spectrum():
+    gm = load_bundled(bundled_records()[0]).trimmed(10.0)
+    periods = saavg_periods((0.2, 3.0), 10)
+    assert list(periods) == pytest.approx(list(np.linspace(0.2, 3.0, 10)))
+    psa = response_spectrum(gm, periods, 0.05).psa_g[0]
+    assert sa_avg(gm, (0.2, 3.0)) == pytest.approx(float(np.prod(psa) ** 0.1), rel=1e-12)
+    assert sa_avg(scale_to_saavg(gm, 0.5, (0.2, 3.0)), (0.2, 3.0)) == pytest.approx(0.5,
+                                                                                    rel=1e-12)
+
+
+def test_saavg_and_pga_studies_scale_each_record_to_the_level(tmp_path):
+    for measure, extra, key in (("saavg", "", "record.saavg_g"), ("pga", "", "record.pga_g")):
+        text = STUDY.replace('measure = "sa"\nperiod = 1.0', f'measure = "{measure}"{extra}')
+        study = tmp_path / f"{measure}.toml"
+        study.write_text(text)
+        plan = plan_study(study)
+        assert plan.sweep.params[1] == key
+        _, motion, _ = plan.build(2, 0.3)
+        if measure == "pga":
+            assert motion.pga_g == pytest.approx(0.3, rel=1e-12)
+        else:
+            # default range: 0.2 T1 of the stiffer to 3 T1 of the more flexible building
+            assert plan.saavg_range == pytest.approx((0.1, 3.0), rel=1e-6)
+            assert sa_avg(motion, plan.saavg_range) == pytest.approx(0.3, rel=1e-9)
+
+
+def test_a_code_scaled_suite_keeps_its_spread_about_the_target(tmp_path):
+    text = STUDY.replace("duration = 4.0", "duration = 4.0\nscaling = { target = "
+                         f'"{TARGET}", period = 1.0, method = "code" }}')
+    study = tmp_path / "scaled.toml"
+    study.write_text(text)
+    plan = plan_study(study)
+    motions = [load_bundled(f).trimmed(4.0) for f in bundled_records()]
+    target = DesignSpectrum.from_file(TARGET)
+    factors = scale_suite(motions, target, 1.0, method="code").factors
+    assert list(plan.factors) == pytest.approx(list(factors), rel=1e-12)
+    assert plan.im_target == pytest.approx(float(target.sa_g(1.0)), rel=1e-12)
+    assert plan.sweep.params[:2] == ("record.bundled", "record.scale")
+    _, motion, _ = plan.build(4, 0.6)
+    expected = motions[4].scaled(factors[4] * 0.6 / plan.im_target)
+    assert np.array_equal(motion.accel, expected.accel)
