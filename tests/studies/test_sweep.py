@@ -210,3 +210,16 @@ def test_sweep_over_yield_strength_reports_ductility(tmp_path: Path) -> None:
     assert mu[0] > mu[1] > 1.0                        # building 1 weaker: more demand
     assert df["hysteretic_energy_J"].iloc[0] > df["hysteretic_energy_J"].iloc[2] > 0.0
     assert df["max_column_shear_ratio"].isna().all()  # floors line up: no column contact
+
+
+def test_a_case_scaling_the_record_replaces_the_bases_other_way_of_scaling_it():
+    # a base scaled to Sa(T1) swept over record.scale (or back): the case's key wins and
+    # the base's alternative goes, with the keys that belong to it
+    base = {"record": {"bundled": "el_centro", "sa_g": 0.5, "sa_period": 1.0,
+                       "sa_damping": 0.02}}
+    assert apply_overrides(base, ("record.scale",), (2.0,)) == {
+        "record": {"bundled": "el_centro", "scale": 2.0}}
+    assert apply_overrides({"record": {"bundled": "el_centro", "pga_g": 0.3}},
+                           ("record.sa_g", "record.sa_period"), (0.5, 1.0)) == {
+        "record": {"bundled": "el_centro", "sa_g": 0.5, "sa_period": 1.0}}
+    assert base["record"]["sa_g"] == 0.5  # the base is left as it was

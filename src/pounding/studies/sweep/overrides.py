@@ -8,18 +8,28 @@ from typing import Any
 
 __all__ = ["apply_overrides"]
 
+_INTENSITY: dict[str, tuple[str, ...]] = {
+    "scale": ("scale",),
+    "pga_g": ("pga_g",),
+    "sa_g": ("sa_g", "sa_period", "sa_damping"),
+    "saavg_g": ("saavg_g", "saavg_periods", "saavg_n"),
+}
+"""The ways a model file scales its record, each with the keys that go with it."""
+_INTENSITY_KEYS = tuple(k for keys in _INTENSITY.values() for k in keys)
+
 _EXCLUSIVE: dict[tuple[str, str], tuple[str, ...]] = {
     ("contact", "gap"): ("gaps",),
     ("contact", "gaps"): ("gap",),
-    ("record", "scale"): ("pga_g",),
-    ("record", "pga_g"): ("scale",),
+    **{("record", key): tuple(k for k in _INTENSITY_KEYS if k not in _INTENSITY[key])
+       for key in _INTENSITY},
     ("record", "file"): ("bundled",),
     ("record", "bundled"): ("file", "dt", "units"),
     ("building", "period"): ("stiffness",),
     ("building", "stiffness"): ("period",),
 }
 """Setting the key on the left removes the keys on the right from the base (they are
-alternatives in a model file: setting ``record.scale`` replaces a base ``pga_g``)."""
+alternatives in a model file: setting ``record.scale`` replaces a base ``pga_g``, or a base
+``sa_g`` with its ``sa_period`` and ``sa_damping``)."""
 
 
 def apply_overrides(base: dict[str, Any], params: Sequence[str],
