@@ -24,12 +24,13 @@ from pounding.integrate import simulate
 from pounding.plot import new_figure, save_figure
 from pounding.plot.decimate import envelope_indices, union_indices
 from pounding.plot.envelope import plot_envelopes
-from pounding.plot.layout import axes_grid, history, scale_for
+from pounding.plot.layout import axes_grid, fit_text, history, scale_for, text_width
 from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
 from pounding.plot.registry import RUN_FIGURES, figures_for
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
 from pounding.result import Result
-from pounding.units import G
+from pounding.units import G, column_name, format_value
+from pounding.units import unit_of as column_unit
 
 ROOT = Path(__file__).resolve().parents[1]
 UNIT_FACTOR = {"N": 1.0, "kN": 1e-3, "MN": 1e-6, "GN": 1e-9, "J": 1.0, "kJ": 1e-3,
@@ -149,6 +150,29 @@ def test_scale_for_reads_between_1_and_1000(peak: float, unit: str, factor: floa
     assert s.unit == name and s.factor == pytest.approx(factor, rel=1e-15)
     if np.isfinite(peak) and peak != 0.0:
         assert 1.0 <= abs(peak) * s.factor < 1000.0
+
+
+@pytest.mark.parametrize(("column", "name", "unit"), [
+    ("contact.gap", "gap", "m"), ("contact.e", "coefficient of restitution e", "-"),
+    ("contact.k_h", "Hertz stiffness k_h", "N/m^n"), ("record.scale", "record scale factor", "-"),
+    ("record.duration", "record duration", "s"), ("solver.duration", "duration simulated", "s"),
+    ("building.1.period", "B2 period T1", "s"), ("building.*.mass", "floor mass (every "
+                                                                    "building)", "kg"),
+    ("peak_contact_force_N", "peak contact force", "N"), ("n_impacts", "impacts", "-"),
+    ("contact_dissipated_J", "energy dissipated in contacts", "J"),
+    ("peak_drift_m_B2F1", "peak drift B2F1", "m"), ("record_pga_g", "record PGA", "g"),
+    ("peak_abs_accel_m_s2_B1F3", "peak absolute acceleration B1F3", "m/s²"),
+    ("wall_time_s", "wall time", "s"), ("some_new_measure", "some new measure", None)])
+def test_column_names_and_units(column: str, name: str, unit: str | None) -> None:
+    assert column_name(column) == name and column_unit(column) == unit
+
+
+@pytest.mark.parametrize(("value", "unit", "text"), [
+    (2.75e9, "N/m^1.5", "2.75e9 N/m^1.5"), (0.3728356652600535, "-", "0.373"),
+    (239999.99999999997, "kg", "2.40e5 kg"), (0.05, "", "0.05"), (1500.0, "s", "1500 s"),
+    (0.0, "m", "0 m"), (-4.2e-7, "m", "-4.20e-7 m")])
+def test_format_value(value: float, unit: str, text: str) -> None:
+    assert format_value(value, unit) == text
 
 
 # ------------------------------------------------------------------------ what is drawn
@@ -333,6 +357,19 @@ def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
                 overlap = min(b1.x1, b2.x1) - max(b1.x0, b2.x0), min(b1.y1, b2.y1) - max(
                     b1.y0, b2.y0)
                 assert min(overlap) <= 0.5, f"{name}: {t1!r} overlaps {t2!r}"
+
+
+def test_fit_text_wraps_at_spaces_and_cuts_what_does_not_fit() -> None:
+    text = "one two three four five six seven eight nine ten eleven twelve"
+    assert fit_text(text, 20.0, 10) == text  # fits: unchanged
+    lines = fit_text(text, 1.2, 10).split("\n")
+    assert len(lines) == 3 and all(text_width(ln, 10) <= 1.2 for ln in lines)
+    assert lines[-1].endswith("…")  # more than three lines' worth: the last one cut
+    assert " ".join(lines[:2]).split() == text.split()[:len(" ".join(lines[:2]).split())]
+    two = fit_text("abc def", text_width("abc", 10) + 0.01, 10)
+    assert two == "abc\ndef"
+    word = fit_text("x" * 200, 2.0, 10, max_lines=1)  # one word wider than the room
+    assert word.endswith("…") and text_width(word, 10) <= 2.0 and "\n" not in word
 
 
 def test_saved_page_is_the_figure_as_laid_out(demo: Result, tmp_path: Path) -> None:
