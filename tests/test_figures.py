@@ -1,7 +1,7 @@
 """The figures of a run: they draw the result's numbers (every peak exact through the
 display decimation), in readable units without offset notation, with no text overlapping
-or off the page; the storey hysteresis figure only where storeys yield; the figure registry
-light enough to import without matplotlib."""
+or off the page, titles wrapped to fit any model name; the storey hysteresis figure only
+where storeys yield; the figure registry light enough to import without matplotlib."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ import re
 import struct
 import subprocess
 import sys
+import tomllib
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -55,6 +56,25 @@ def demo() -> Result:
 def yielding() -> Result:
     """The yielding 5-storey pair (bilinear | Bouc–Wen), the first 6 s."""
     return simulate_file(ROOT / "examples" / "inelastic_5_storey.toml", 6.0)
+
+
+LONG_NAME = ("a pair of single-storey buildings whose model name goes on and on, much longer "
+             "than any page is wide, so that every title has to wrap and the longest be cut")
+
+
+@pytest.fixture(scope="module")
+def narrow() -> Result:
+    """The seed SDOF pair, the narrowest figures (one contact, one storey a building), with
+    yielding storeys (all six figures), a long model name and long building names, the
+    first 4 s."""
+    data = tomllib.loads((ROOT / "examples" / "seed_sdof_pair.toml").read_text(encoding="utf-8"))
+    data["name"] = LONG_NAME
+    data["record"]["duration"] = 4.0
+    for b in data["building"]:
+        b["name"] += " building, named at such length that no legend column is wide enough"
+        b["storey_law"] = {"type": "bilinear", "yield_force": 8e5, "hardening": 0.05}
+    model, motion, solver = parse_config(data).build()
+    return simulate(model, motion, **solver)
 
 
 def unit_of(label: str) -> str:
@@ -306,9 +326,8 @@ def test_hysteresis_loops_in_mm_and_force_units(demo: Result) -> None:
 
 
 # ------------------------------------------------------------------------ the page
-def all_run_figures(demo: Result, yielding: Result) -> list[tuple[str, Figure]]:
-    return [(f"{key} ({name})", fig.make(r)) for name, r in (("demo", demo),
-                                                             ("yielding", yielding))
+def all_run_figures(*runs: tuple[str, Result]) -> list[tuple[str, Figure]]:
+    return [(f"{key} ({name})", fig.make(r)) for name, r in runs
             for key, fig in figures_for(r).items()]
 
 
@@ -330,23 +349,34 @@ def visible_texts(fig: Figure) -> list[Text]:
     return [t for t in shown if t.get_visible() and t.get_text().strip()]
 
 
-def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
-                                                               yielding: Result) -> None:
+def assert_plain_axes(name: str, fig: Figure) -> None:
+    """Every linear axis of the drawn ``fig`` reads without offset or scientific notation,
+    its tick labels plain numbers; every axis label (colour bars too) ends with its unit."""
     number = re.compile(r"^[−-]?\d+(\.\d+)?$")
-    for name, fig in all_run_figures(demo, yielding):
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            assert axis.get_offset_text().get_text() == "", (name, axis)
+            if axis.get_scale() != "linear" or axis.get_ticklocs().size == 0:
+                continue
+            for tick in axis.get_ticklabels():
+                if tick.get_visible() and tick.get_text() and axis.get_major_locator() \
+                        .__class__.__name__ != "FixedLocator":  # (a heat map's categories)
+                    assert number.match(tick.get_text()), (name, tick.get_text())
+        for label in (ax.get_xlabel(), ax.get_ylabel()):
+            if label:
+                unit_of(label)  # every axis label ends with its unit
+
+
+def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
+                                                               yielding: Result,
+                                                               narrow: Result) -> None:
+    for name, fig in all_run_figures(("demo", demo), ("yielding", yielding),
+                                     ("narrow", narrow)):
         fig.set_dpi(100)
         fig.canvas.draw()
         renderer = fig.canvas.get_renderer()
         page = fig.bbox
-        for ax in fig.axes:
-            for axis in (ax.xaxis, ax.yaxis):
-                assert axis.get_offset_text().get_text() == "", (name, axis)
-                for tick in axis.get_ticklabels():
-                    if tick.get_visible() and tick.get_text():
-                        assert number.match(tick.get_text()), (name, tick.get_text())
-            for label in (ax.get_xlabel(), ax.get_ylabel()):
-                if label:
-                    unit_of(label)  # every axis label ends with its unit
+        assert_plain_axes(name, fig)
         boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in visible_texts(fig)]
         for text, box in boxes:
             assert (box.x0 >= page.x0 - 0.5 and box.y0 >= page.y0 - 0.5
@@ -357,6 +387,33 @@ def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
                 overlap = min(b1.x1, b2.x1) - max(b1.x0, b2.x0), min(b1.y1, b2.y1) - max(
                     b1.y0, b2.y0)
                 assert min(overlap) <= 0.5, f"{name}: {t1!r} overlaps {t2!r}"
+
+
+def test_titles_fit_the_page_for_any_model_name(narrow: Result) -> None:
+    """The page title of every run figure of the narrow model fits its page, wrapped at word
+    boundaries into at most three lines: the model's name, cut short ("…") where it would
+    need more, then what the figure shows, whole; the long building names of the panel
+    titles and the legend are cut to fit, ending in "…" (the page test above checks that
+    nothing is off the page or overlaps)."""
+    words = LONG_NAME.split()
+    for name, fig in all_run_figures(("narrow", narrow)):
+        fig.canvas.draw()
+        title = fig.get_suptitle()
+        assert title, name
+        lines = title.split("\n")
+        assert 1 <= len(lines) <= 3
+        flat = " ".join(title.split())
+        assert flat.split()[:5] == words[:5], (name, title)
+        assert flat.startswith(LONG_NAME + ": ") or "…: " in flat, (name, title)
+        assert not flat.endswith("…"), (name, title)  # the subject is whole
+        width = fig.get_figwidth()
+        for line_ in lines:
+            assert text_width(line_, fig._suptitle.get_fontsize()) <= width - 0.2 + 1e-9
+        box = fig._suptitle.get_window_extent()
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1
+    env = plot_envelopes(narrow)
+    names = [t.get_text() for t in env.legends[0].get_texts()][:2]
+    assert all(n.startswith(f"B{i + 1} ") and n.endswith("…") for i, n in enumerate(names))
 
 
 def test_fit_text_wraps_at_spaces_and_cuts_what_does_not_fit() -> None:

@@ -317,8 +317,9 @@ def ground_panel(ax: Axes, time: NDArray[np.float64], ground: NDArray[np.float64
     if ag.size:
         k = int(np.abs(ag).argmax())
         ax.plot([time[k]], [ag[k]], "o", ms=3, color="tab:red")
-        ax.set_title(f"ground acceleration: {name}; peak {abs(ag[k]):.3g} g at "
-                     f"{time[k]:.2f} s", fontsize=TITLE_SIZE, loc="left")
+        ax.set_title(fit_text(f"ground acceleration: {name}; peak {abs(ag[k]):.3g} g at "
+                              f"{time[k]:.2f} s", axes_width(ax), TITLE_SIZE, max_lines=1),
+                     fontsize=TITLE_SIZE, loc="left")
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_ylabel("ground acc. [g]")
     ax.grid(True, alpha=0.3)
