@@ -1,7 +1,9 @@
-"""The figures of a run: they draw the result's numbers (every peak exact through the
+"""The figures: those of a run draw the result's numbers (every peak exact through the
 display decimation), in readable units without offset notation, with no text overlapping
 or off the page, titles wrapped to fit any model name; the storey hysteresis figure only
-where storeys yield; the figure registry light enough to import without matplotlib."""
+where storeys yield; the figure registry light enough to import without matplotlib. The
+sweep figures name each quantity with its unit in a readable multiple, their legends
+covering no drawn line."""
 
 from __future__ import annotations
 
@@ -15,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pandas as pd
 import pytest
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
@@ -29,6 +32,7 @@ from pounding.plot.layout import axes_grid, fit_text, history, scale_for, text_w
 from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
 from pounding.plot.registry import RUN_FIGURES, figures_for
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
+from pounding.plot.sweep import plot_sweep
 from pounding.result import Result
 from pounding.units import G, column_name, format_value
 from pounding.units import unit_of as column_unit
@@ -427,6 +431,100 @@ def test_fit_text_wraps_at_spaces_and_cuts_what_does_not_fit() -> None:
     assert two == "abc\ndef"
     word = fit_text("x" * 200, 2.0, 10, max_lines=1)  # one word wider than the room
     assert word.endswith("…") and text_width(word, 10) <= 2.0 and "\n" not in word
+
+
+# ------------------------------------------------------------------------ sweep figures
+@pytest.fixture(scope="module")
+def sweep_table(tmp_path_factory: pytest.TempPathFactory) -> pd.DataFrame:
+    """A real sweep of the seed SDOF pair, in this process: gap × e × record scale, 4 s."""
+    from pounding.studies.sweep import load_results, load_sweep, run_sweep
+
+    folder = tmp_path_factory.mktemp("sweep")
+    path = folder / "sweep.toml"
+    path.write_text(f'base = "{(ROOT / "examples" / "seed_sdof_pair.toml").as_posix()}"\n'
+                    'name = "gap_e"\nout = "out"\n[grid]\n'
+                    '"contact.gap" = [0.0, 0.01, 0.04]\n"contact.e" = [0.4, 0.8]\n'
+                    '"record.scale" = [1.0, 1.5]\n"record.duration" = [4.0]\n',
+                    encoding="utf-8")
+    sweep = load_sweep(path)
+    run_sweep(sweep, scheduler="synchronous")
+    return load_results(sweep.out / "results.parquet")
+
+
+def test_sweep_figures_name_quantities_in_readable_units(sweep_table: pd.DataFrame) -> None:
+    df = sweep_table
+    ok = df[df["status"] == "ok"]
+    assert len(ok) == 12 and ok["peak_contact_force_N"].max() > 1e6  # forces of MN
+    # the heat map of the peak force: gap [mm] × e [-], the colour bar in MN
+    fig, _, _ = plot_sweep(df, "contact.gap", "contact.e")
+    fig.canvas.draw()
+    ax, bar = fig.axes
+    assert ax.get_xlabel() == "gap [mm]"
+    assert ax.get_ylabel() == "coefficient of restitution e [-]"
+    assert bar.get_ylabel() == "peak contact force [MN]"
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["0", "10", "40"]
+    assert [t.get_text() for t in ax.get_yticklabels()] == ["0.4", "0.8"]
+    mean = ok.pivot_table(index="contact.e", columns="contact.gap",
+                          values="peak_contact_force_N", aggfunc="mean")
+    np.testing.assert_allclose(ax.get_images()[0].get_array(), mean.to_numpy() * 1e-6,
+                               rtol=1e-12)
+    assert "record scale factor" in ax.get_title()
+    assert_plain_axes("heat map", fig)
+    # one line per e: the impacts [-] against the gap [mm]
+    fig, _, _ = plot_sweep(df, "contact.gap", "contact.e", measure="n_impacts", kind="lines")
+    fig.canvas.draw()
+    ax = fig.axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("gap [mm]", "impacts [-]")
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "coefficient of restitution e = 0.4", "coefficient of restitution e = 0.8"]
+    for ln in ax.get_lines():
+        np.testing.assert_allclose(ln.get_xdata(), [0.0, 10.0, 40.0])
+    assert_plain_axes("lines", fig)
+    assert_legends_clear("lines", fig)
+    # a line of the mean over the other parameters, per e in its legend with no unit and
+    # per gap in mm
+    fig, _, _ = plot_sweep(df, "contact.gap")
+    fig.canvas.draw()
+    ax = fig.axes[0]
+    assert ax.get_ylabel() == "peak contact force [MN]"
+    np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), ok.groupby("contact.gap")[
+        "peak_contact_force_N"].mean().to_numpy() * 1e-6, rtol=1e-12)
+    assert_plain_axes("line", fig)
+    fig, _, _ = plot_sweep(df, "contact.e", "contact.gap", kind="lines")
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
+        "gap = 0 mm", "gap = 10 mm", "gap = 40 mm"]
+
+
+# ------------------------------------------------------------------------ legends
+def drawn_points(ax: Axes) -> np.ndarray:
+    """Display coordinates of every line of ``ax`` inside the axes: its markers, and for a
+    drawn line its stroke, 16 points a segment."""
+    out = [np.empty((0, 2))]
+    for ln in ax.get_lines():
+        if not ln.get_visible() or not len(ln.get_xydata()):
+            continue
+        xy = ln.get_transform().transform(np.asarray(ln.get_xydata(), dtype=float))
+        xy = xy[np.isfinite(xy).all(axis=1)]
+        if ln.get_linestyle() not in ("None", "", " ", "none") and len(xy) > 1:
+            f = np.linspace(0.0, 1.0, 16)[:, None, None]
+            xy = (xy[:-1] + f * (xy[1:] - xy[:-1])).reshape(-1, 2)
+        box = ax.bbox
+        out.append(xy[(xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) & (xy[:, 1] >= box.y0)
+                      & (xy[:, 1] <= box.y1)])
+    return np.concatenate(out)
+
+
+def assert_legends_clear(name: str, fig: Figure) -> None:
+    """No point of a drawn line or marker of ``fig`` lies under one of its legends."""
+    fig.canvas.draw()
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + list(fig.legends)
+    assert legends, name
+    points = np.concatenate([drawn_points(ax) for ax in fig.axes])
+    for legend in legends:
+        box = legend.get_window_extent().padded(-1.0)
+        under = ((points[:, 0] > box.x0) & (points[:, 0] < box.x1) & (points[:, 1] > box.y0)
+                 & (points[:, 1] < box.y1))
+        assert not under.any(), f"{name}: the legend covers {under.sum()} drawn points"
 
 
 def test_saved_page_is_the_figure_as_laid_out(demo: Result, tmp_path: Path) -> None:
