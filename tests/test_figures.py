@@ -2,8 +2,8 @@
 display decimation), in readable units without offset notation, with no text overlapping
 or off the page, titles wrapped to fit any model name; the storey hysteresis figure only
 where storeys yield; the figure registry light enough to import without matplotlib. The
-sweep figures name each quantity with its unit in a readable multiple, their legends
-covering no drawn line."""
+sweep figures name each quantity with its unit in a readable multiple; the legends of the
+contact-core, ellipse, spectrum and sweep figures cover no drawn line."""
 
 from __future__ import annotations
 
@@ -26,12 +26,15 @@ from matplotlib.text import Text
 from pounding.config import load_config, parse_config
 from pounding.integrate import simulate
 from pounding.plot import new_figure, save_figure
+from pounding.plot.contact import plot_audit, plot_damping_formulas
 from pounding.plot.decimate import envelope_indices, union_indices
+from pounding.plot.ellipse import plot_hysteresis_ellipse
 from pounding.plot.envelope import plot_envelopes
 from pounding.plot.layout import axes_grid, fit_text, history, scale_for, text_width
 from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
 from pounding.plot.registry import RUN_FIGURES, figures_for
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
+from pounding.plot.spectrum import plot_spectra
 from pounding.plot.sweep import plot_sweep
 from pounding.result import Result
 from pounding.units import G, column_name, format_value
@@ -525,6 +528,64 @@ def assert_legends_clear(name: str, fig: Figure) -> None:
         under = ((points[:, 0] > box.x0) & (points[:, 0] < box.x1) & (points[:, 1] > box.y0)
                  & (points[:, 1] < box.y1))
         assert not under.any(), f"{name}: the legend covers {under.sum()} drawn points"
+
+
+AUDIT = {  # achieved e of `pounding audit` (docs/audit.md) at e = 0.1 … 0.9, to 3 decimals
+    ("anagnostopoulos", "kelvin-voigt (tension)", True): np.arange(1, 10) / 10,
+    ("anagnostopoulos", "kelvin-voigt (no tension)", False): [
+        0.253, 0.325, 0.397, 0.472, 0.55, 0.632, 0.718, 0.808, 0.902],
+    ("schwager-poschel", "kelvin-voigt (no tension)", True): np.arange(1, 10) / 10,
+    ("anagnostopoulos", "modified-kelvin-voigt", False): [
+        0.503, 0.57, 0.63, 0.687, 0.742, 0.795, 0.847, 0.899, 0.95],
+    ("mahmoud", "modified-kelvin-voigt", True): [
+        0.102, 0.205, 0.307, 0.407, 0.506, 0.605, 0.703, 0.801, 0.9],
+    ("mahmoud", "nonlinear-viscoelastic", False): [
+        0.114, 0.225, 0.333, 0.436, 0.535, 0.632, 0.726, 0.819, 0.91],
+    ("jankowski", "nonlinear-viscoelastic", True): [
+        0.093, 0.191, 0.292, 0.393, 0.495, 0.596, 0.698, 0.799, 0.9],
+    ("naderpour", "nonlinear-viscoelastic", True): [
+        0.002, 0.007, 0.017, 0.034, 0.063, 0.115, 0.217, 0.421, 0.769],
+    ("naderpour", "kelvin-voigt (tension)", False): [0.0] * 7 + [0.001, 0.511],
+    ("hunt-crossley", "hunt-crossley", True): [
+        0.516, 0.547, 0.581, 0.62, 0.663, 0.712, 0.768, 0.833, 0.909],
+    ("lankarani-nikravesh", "hunt-crossley", True): [
+        0.665, 0.672, 0.684, 0.702, 0.725, 0.756, 0.796, 0.847, 0.913],
+    ("flores", "hunt-crossley", True): [
+        0.069, 0.156, 0.256, 0.363, 0.47, 0.577, 0.683, 0.789, 0.894],
+    ("gonthier", "hunt-crossley", True): [
+        0.101, 0.205, 0.304, 0.398, 0.488, 0.577, 0.67, 0.768, 0.876],
+    ("muthukumar (energy-equivalent)", "bilinear-impact", True): [
+        0.609, 0.619, 0.636, 0.66, 0.692, 0.734, 0.784, 0.845, 0.917],
+}
+
+
+def audit_table() -> pd.DataFrame:
+    target = np.arange(1, 10) / 10
+    return pd.DataFrame([{"formula": f, "law": law, "intended": intended, "target_e": t,
+                          "achieved_e": a, "error": a - t}
+                         for (f, law, intended), achieved in AUDIT.items()
+                         for t, a in zip(target, achieved)])
+
+
+def test_legends_cover_no_data() -> None:
+    """The seed's Fig 4 (its eq-39 curve and Table 1 points reach the upper left), the
+    restitution audit (its naderpour curves run through the lower left of the error
+    panel), the link-element loop, thin and fat, spectra that fill their axes, and a sweep's
+    lines: every legend is where no line or marker is, inside the axes or beside them."""
+    periods = np.geomspace(0.02, 5.0, 160)
+    names = [f"record_{k}_of_a_suite_RSN{1000 + k}.AT2, ζ=5%" for k in range(9)]
+    peaks = np.geomspace(0.03, 4.0, 9)
+    curves = [(n, 0.3 + 3.0 * np.exp(-np.log(periods / p) ** 2 / 0.4))
+              for n, p in zip(names, peaks)]
+    figures = [("Fig 4", plot_damping_formulas()), ("audit", plot_audit(audit_table())),
+               ("ellipse", plot_hysteresis_ellipse(1e8, 1e6, 10.0, 0.01)),
+               ("fat ellipse", plot_hysteresis_ellipse(1e8, 4e7, 10.0, 0.01)),
+               ("spectra", plot_spectra(periods, curves))]
+    for name, fig in figures:
+        assert_legends_clear(name, fig)
+    # Fig 4 keeps all of its curves and Table 1 in view, with the legend beside them
+    ax_z = plot_damping_formulas().axes[0]
+    assert len(ax_z.get_lines()) == 6
 
 
 def test_saved_page_is_the_figure_as_laid_out(demo: Result, tmp_path: Path) -> None:
