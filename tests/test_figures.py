@@ -1,7 +1,9 @@
-"""The figures of a run: they draw the result's numbers (every peak exact through the
+"""The figures: those of a run draw the result's numbers (every peak exact through the
 display decimation), in readable units without offset notation, with no text overlapping
-or off the page; the storey hysteresis figure only where storeys yield; the figure registry
-light enough to import without matplotlib."""
+or off the page, titles wrapped to fit any model name; the storey hysteresis figure only
+where storeys yield; the figure registry light enough to import without matplotlib. The
+sweep figures name each quantity with its unit in a readable multiple; the legends of the
+contact-core, ellipse, spectrum and sweep figures cover no drawn line."""
 
 from __future__ import annotations
 
@@ -9,11 +11,13 @@ import re
 import struct
 import subprocess
 import sys
+import tomllib
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pandas as pd
 import pytest
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
@@ -22,14 +26,19 @@ from matplotlib.text import Text
 from pounding.config import load_config, parse_config
 from pounding.integrate import simulate
 from pounding.plot import new_figure, save_figure
+from pounding.plot.contact import plot_audit, plot_damping_formulas
 from pounding.plot.decimate import envelope_indices, union_indices
+from pounding.plot.ellipse import plot_hysteresis_ellipse
 from pounding.plot.envelope import plot_envelopes
-from pounding.plot.layout import axes_grid, history, scale_for
+from pounding.plot.layout import axes_grid, fit_text, history, scale_for, text_width
 from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
 from pounding.plot.registry import RUN_FIGURES, figures_for
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
+from pounding.plot.spectrum import plot_spectra
+from pounding.plot.sweep import plot_sweep
 from pounding.result import Result
-from pounding.units import G
+from pounding.units import G, column_name, format_value
+from pounding.units import unit_of as column_unit
 
 ROOT = Path(__file__).resolve().parents[1]
 UNIT_FACTOR = {"N": 1.0, "kN": 1e-3, "MN": 1e-6, "GN": 1e-9, "J": 1.0, "kJ": 1e-3,
@@ -54,6 +63,25 @@ def demo() -> Result:
 def yielding() -> Result:
     """The yielding 5-storey pair (bilinear | Bouc–Wen), the first 6 s."""
     return simulate_file(ROOT / "examples" / "inelastic_5_storey.toml", 6.0)
+
+
+LONG_NAME = ("a pair of single-storey buildings whose model name goes on and on, much longer "
+             "than any page is wide, so that every title has to wrap and the longest be cut")
+
+
+@pytest.fixture(scope="module")
+def narrow() -> Result:
+    """The seed SDOF pair, the narrowest figures (one contact, one storey a building), with
+    yielding storeys (all six figures), a long model name and long building names, the
+    first 4 s."""
+    data = tomllib.loads((ROOT / "examples" / "seed_sdof_pair.toml").read_text(encoding="utf-8"))
+    data["name"] = LONG_NAME
+    data["record"]["duration"] = 4.0
+    for b in data["building"]:
+        b["name"] += " building, named at such length that no legend column is wide enough"
+        b["storey_law"] = {"type": "bilinear", "yield_force": 8e5, "hardening": 0.05}
+    model, motion, solver = parse_config(data).build()
+    return simulate(model, motion, **solver)
 
 
 def unit_of(label: str) -> str:
@@ -149,6 +177,29 @@ def test_scale_for_reads_between_1_and_1000(peak: float, unit: str, factor: floa
     assert s.unit == name and s.factor == pytest.approx(factor, rel=1e-15)
     if np.isfinite(peak) and peak != 0.0:
         assert 1.0 <= abs(peak) * s.factor < 1000.0
+
+
+@pytest.mark.parametrize(("column", "name", "unit"), [
+    ("contact.gap", "gap", "m"), ("contact.e", "coefficient of restitution e", "-"),
+    ("contact.k_h", "Hertz stiffness k_h", "N/m^n"), ("record.scale", "record scale factor", "-"),
+    ("record.duration", "record duration", "s"), ("solver.duration", "duration simulated", "s"),
+    ("building.1.period", "B2 period T1", "s"), ("building.*.mass", "floor mass (every "
+                                                                    "building)", "kg"),
+    ("peak_contact_force_N", "peak contact force", "N"), ("n_impacts", "impacts", "-"),
+    ("contact_dissipated_J", "energy dissipated in contacts", "J"),
+    ("peak_drift_m_B2F1", "peak drift B2F1", "m"), ("record_pga_g", "record PGA", "g"),
+    ("peak_abs_accel_m_s2_B1F3", "peak absolute acceleration B1F3", "m/s²"),
+    ("wall_time_s", "wall time", "s"), ("some_new_measure", "some new measure", None)])
+def test_column_names_and_units(column: str, name: str, unit: str | None) -> None:
+    assert column_name(column) == name and column_unit(column) == unit
+
+
+@pytest.mark.parametrize(("value", "unit", "text"), [
+    (2.75e9, "N/m^1.5", "2.75e9 N/m^1.5"), (0.3728356652600535, "-", "0.373"),
+    (239999.99999999997, "kg", "2.40e5 kg"), (0.05, "", "0.05"), (1500.0, "s", "1500 s"),
+    (0.0, "m", "0 m"), (-4.2e-7, "m", "-4.20e-7 m")])
+def test_format_value(value: float, unit: str, text: str) -> None:
+    assert format_value(value, unit) == text
 
 
 # ------------------------------------------------------------------------ what is drawn
@@ -282,9 +333,8 @@ def test_hysteresis_loops_in_mm_and_force_units(demo: Result) -> None:
 
 
 # ------------------------------------------------------------------------ the page
-def all_run_figures(demo: Result, yielding: Result) -> list[tuple[str, Figure]]:
-    return [(f"{key} ({name})", fig.make(r)) for name, r in (("demo", demo),
-                                                             ("yielding", yielding))
+def all_run_figures(*runs: tuple[str, Result]) -> list[tuple[str, Figure]]:
+    return [(f"{key} ({name})", fig.make(r)) for name, r in runs
             for key, fig in figures_for(r).items()]
 
 
@@ -306,23 +356,34 @@ def visible_texts(fig: Figure) -> list[Text]:
     return [t for t in shown if t.get_visible() and t.get_text().strip()]
 
 
-def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
-                                                               yielding: Result) -> None:
+def assert_plain_axes(name: str, fig: Figure) -> None:
+    """Every linear axis of the drawn ``fig`` reads without offset or scientific notation,
+    its tick labels plain numbers; every axis label (colour bars too) ends with its unit."""
     number = re.compile(r"^[−-]?\d+(\.\d+)?$")
-    for name, fig in all_run_figures(demo, yielding):
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            assert axis.get_offset_text().get_text() == "", (name, axis)
+            if axis.get_scale() != "linear" or axis.get_ticklocs().size == 0:
+                continue
+            for tick in axis.get_ticklabels():
+                if tick.get_visible() and tick.get_text() and axis.get_major_locator() \
+                        .__class__.__name__ != "FixedLocator":  # (a heat map's categories)
+                    assert number.match(tick.get_text()), (name, tick.get_text())
+        for label in (ax.get_xlabel(), ax.get_ylabel()):
+            if label:
+                unit_of(label)  # every axis label ends with its unit
+
+
+def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
+                                                               yielding: Result,
+                                                               narrow: Result) -> None:
+    for name, fig in all_run_figures(("demo", demo), ("yielding", yielding),
+                                     ("narrow", narrow)):
         fig.set_dpi(100)
         fig.canvas.draw()
         renderer = fig.canvas.get_renderer()
         page = fig.bbox
-        for ax in fig.axes:
-            for axis in (ax.xaxis, ax.yaxis):
-                assert axis.get_offset_text().get_text() == "", (name, axis)
-                for tick in axis.get_ticklabels():
-                    if tick.get_visible() and tick.get_text():
-                        assert number.match(tick.get_text()), (name, tick.get_text())
-            for label in (ax.get_xlabel(), ax.get_ylabel()):
-                if label:
-                    unit_of(label)  # every axis label ends with its unit
+        assert_plain_axes(name, fig)
         boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in visible_texts(fig)]
         for text, box in boxes:
             assert (box.x0 >= page.x0 - 0.5 and box.y0 >= page.y0 - 0.5
@@ -333,6 +394,198 @@ def test_no_offset_or_scientific_notation_and_no_text_overlaps(demo: Result,
                 overlap = min(b1.x1, b2.x1) - max(b1.x0, b2.x0), min(b1.y1, b2.y1) - max(
                     b1.y0, b2.y0)
                 assert min(overlap) <= 0.5, f"{name}: {t1!r} overlaps {t2!r}"
+
+
+def test_titles_fit_the_page_for_any_model_name(narrow: Result) -> None:
+    """The page title of every run figure of the narrow model fits its page, wrapped at word
+    boundaries into at most three lines: the model's name, cut short ("…") where it would
+    need more, then what the figure shows, whole; the long building names of the panel
+    titles and the legend are cut to fit, ending in "…" (the page test above checks that
+    nothing is off the page or overlaps)."""
+    words = LONG_NAME.split()
+    for name, fig in all_run_figures(("narrow", narrow)):
+        fig.canvas.draw()
+        title = fig.get_suptitle()
+        assert title, name
+        lines = title.split("\n")
+        assert 1 <= len(lines) <= 3
+        flat = " ".join(title.split())
+        assert flat.split()[:5] == words[:5], (name, title)
+        assert flat.startswith(LONG_NAME + ": ") or "…: " in flat, (name, title)
+        assert not flat.endswith("…"), (name, title)  # the subject is whole
+        width = fig.get_figwidth()
+        for line_ in lines:
+            assert text_width(line_, fig._suptitle.get_fontsize()) <= width - 0.2 + 1e-9
+        box = fig._suptitle.get_window_extent()
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1
+    env = plot_envelopes(narrow)
+    names = [t.get_text() for t in env.legends[0].get_texts()][:2]
+    assert all(n.startswith(f"B{i + 1} ") and n.endswith("…") for i, n in enumerate(names))
+
+
+def test_fit_text_wraps_at_spaces_and_cuts_what_does_not_fit() -> None:
+    text = "one two three four five six seven eight nine ten eleven twelve"
+    assert fit_text(text, 20.0, 10) == text  # fits: unchanged
+    lines = fit_text(text, 1.2, 10).split("\n")
+    assert len(lines) == 3 and all(text_width(ln, 10) <= 1.2 for ln in lines)
+    assert lines[-1].endswith("…")  # more than three lines' worth: the last one cut
+    assert " ".join(lines[:2]).split() == text.split()[:len(" ".join(lines[:2]).split())]
+    two = fit_text("abc def", text_width("abc", 10) + 0.01, 10)
+    assert two == "abc\ndef"
+    word = fit_text("x" * 200, 2.0, 10, max_lines=1)  # one word wider than the room
+    assert word.endswith("…") and text_width(word, 10) <= 2.0 and "\n" not in word
+
+
+# ------------------------------------------------------------------------ sweep figures
+@pytest.fixture(scope="module")
+def sweep_table(tmp_path_factory: pytest.TempPathFactory) -> pd.DataFrame:
+    """A real sweep of the seed SDOF pair, in this process: gap × e × record scale, 4 s."""
+    from pounding.studies.sweep import load_results, load_sweep, run_sweep
+
+    folder = tmp_path_factory.mktemp("sweep")
+    path = folder / "sweep.toml"
+    path.write_text(f'base = "{(ROOT / "examples" / "seed_sdof_pair.toml").as_posix()}"\n'
+                    'name = "gap_e"\nout = "out"\n[grid]\n'
+                    '"contact.gap" = [0.0, 0.01, 0.04]\n"contact.e" = [0.4, 0.8]\n'
+                    '"record.scale" = [1.0, 1.5]\n"record.duration" = [4.0]\n',
+                    encoding="utf-8")
+    sweep = load_sweep(path)
+    run_sweep(sweep, scheduler="synchronous")
+    return load_results(sweep.out / "results.parquet")
+
+
+def test_sweep_figures_name_quantities_in_readable_units(sweep_table: pd.DataFrame) -> None:
+    df = sweep_table
+    ok = df[df["status"] == "ok"]
+    assert len(ok) == 12 and ok["peak_contact_force_N"].max() > 1e6  # forces of MN
+    # the heat map of the peak force: gap [mm] × e [-], the colour bar in MN
+    fig, _, _ = plot_sweep(df, "contact.gap", "contact.e")
+    fig.canvas.draw()
+    ax, bar = fig.axes
+    assert ax.get_xlabel() == "gap [mm]"
+    assert ax.get_ylabel() == "coefficient of restitution e [-]"
+    assert bar.get_ylabel() == "peak contact force [MN]"
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["0", "10", "40"]
+    assert [t.get_text() for t in ax.get_yticklabels()] == ["0.4", "0.8"]
+    mean = ok.pivot_table(index="contact.e", columns="contact.gap",
+                          values="peak_contact_force_N", aggfunc="mean")
+    np.testing.assert_allclose(ax.get_images()[0].get_array(), mean.to_numpy() * 1e-6,
+                               rtol=1e-12)
+    assert "record scale factor" in ax.get_title()
+    assert_plain_axes("heat map", fig)
+    # one line per e: the impacts [-] against the gap [mm]
+    fig, _, _ = plot_sweep(df, "contact.gap", "contact.e", measure="n_impacts", kind="lines")
+    fig.canvas.draw()
+    ax = fig.axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("gap [mm]", "impacts [-]")
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "coefficient of restitution e = 0.4", "coefficient of restitution e = 0.8"]
+    for ln in ax.get_lines():
+        np.testing.assert_allclose(ln.get_xdata(), [0.0, 10.0, 40.0])
+    assert_plain_axes("lines", fig)
+    assert_legends_clear("lines", fig)
+    # a line of the mean over the other parameters, per e in its legend with no unit and
+    # per gap in mm
+    fig, _, _ = plot_sweep(df, "contact.gap")
+    fig.canvas.draw()
+    ax = fig.axes[0]
+    assert ax.get_ylabel() == "peak contact force [MN]"
+    np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), ok.groupby("contact.gap")[
+        "peak_contact_force_N"].mean().to_numpy() * 1e-6, rtol=1e-12)
+    assert_plain_axes("line", fig)
+    fig, _, _ = plot_sweep(df, "contact.e", "contact.gap", kind="lines")
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
+        "gap = 0 mm", "gap = 10 mm", "gap = 40 mm"]
+
+
+# ------------------------------------------------------------------------ legends
+def drawn_points(ax: Axes) -> np.ndarray:
+    """Display coordinates of every line of ``ax`` inside the axes: its markers, and for a
+    drawn line its stroke, 16 points a segment."""
+    out = [np.empty((0, 2))]
+    for ln in ax.get_lines():
+        if not ln.get_visible() or not len(ln.get_xydata()):
+            continue
+        xy = ln.get_transform().transform(np.asarray(ln.get_xydata(), dtype=float))
+        xy = xy[np.isfinite(xy).all(axis=1)]
+        if ln.get_linestyle() not in ("None", "", " ", "none") and len(xy) > 1:
+            f = np.linspace(0.0, 1.0, 16)[:, None, None]
+            xy = (xy[:-1] + f * (xy[1:] - xy[:-1])).reshape(-1, 2)
+        box = ax.bbox
+        out.append(xy[(xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) & (xy[:, 1] >= box.y0)
+                      & (xy[:, 1] <= box.y1)])
+    return np.concatenate(out)
+
+
+def assert_legends_clear(name: str, fig: Figure) -> None:
+    """No point of a drawn line or marker of ``fig`` lies under one of its legends."""
+    fig.canvas.draw()
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + list(fig.legends)
+    assert legends, name
+    points = np.concatenate([drawn_points(ax) for ax in fig.axes])
+    for legend in legends:
+        box = legend.get_window_extent().padded(-1.0)
+        under = ((points[:, 0] > box.x0) & (points[:, 0] < box.x1) & (points[:, 1] > box.y0)
+                 & (points[:, 1] < box.y1))
+        assert not under.any(), f"{name}: the legend covers {under.sum()} drawn points"
+
+
+AUDIT = {  # achieved e of `pounding audit` (docs/audit.md) at e = 0.1 … 0.9, to 3 decimals
+    ("anagnostopoulos", "kelvin-voigt (tension)", True): np.arange(1, 10) / 10,
+    ("anagnostopoulos", "kelvin-voigt (no tension)", False): [
+        0.253, 0.325, 0.397, 0.472, 0.55, 0.632, 0.718, 0.808, 0.902],
+    ("schwager-poschel", "kelvin-voigt (no tension)", True): np.arange(1, 10) / 10,
+    ("anagnostopoulos", "modified-kelvin-voigt", False): [
+        0.503, 0.57, 0.63, 0.687, 0.742, 0.795, 0.847, 0.899, 0.95],
+    ("mahmoud", "modified-kelvin-voigt", True): [
+        0.102, 0.205, 0.307, 0.407, 0.506, 0.605, 0.703, 0.801, 0.9],
+    ("mahmoud", "nonlinear-viscoelastic", False): [
+        0.114, 0.225, 0.333, 0.436, 0.535, 0.632, 0.726, 0.819, 0.91],
+    ("jankowski", "nonlinear-viscoelastic", True): [
+        0.093, 0.191, 0.292, 0.393, 0.495, 0.596, 0.698, 0.799, 0.9],
+    ("naderpour", "nonlinear-viscoelastic", True): [
+        0.002, 0.007, 0.017, 0.034, 0.063, 0.115, 0.217, 0.421, 0.769],
+    ("naderpour", "kelvin-voigt (tension)", False): [0.0] * 7 + [0.001, 0.511],
+    ("hunt-crossley", "hunt-crossley", True): [
+        0.516, 0.547, 0.581, 0.62, 0.663, 0.712, 0.768, 0.833, 0.909],
+    ("lankarani-nikravesh", "hunt-crossley", True): [
+        0.665, 0.672, 0.684, 0.702, 0.725, 0.756, 0.796, 0.847, 0.913],
+    ("flores", "hunt-crossley", True): [
+        0.069, 0.156, 0.256, 0.363, 0.47, 0.577, 0.683, 0.789, 0.894],
+    ("gonthier", "hunt-crossley", True): [
+        0.101, 0.205, 0.304, 0.398, 0.488, 0.577, 0.67, 0.768, 0.876],
+    ("muthukumar (energy-equivalent)", "bilinear-impact", True): [
+        0.609, 0.619, 0.636, 0.66, 0.692, 0.734, 0.784, 0.845, 0.917],
+}
+
+
+def audit_table() -> pd.DataFrame:
+    target = np.arange(1, 10) / 10
+    return pd.DataFrame([{"formula": f, "law": law, "intended": intended, "target_e": t,
+                          "achieved_e": a, "error": a - t}
+                         for (f, law, intended), achieved in AUDIT.items()
+                         for t, a in zip(target, achieved)])
+
+
+def test_legends_cover_no_data() -> None:
+    """The seed's Fig 4 (its eq-39 curve and Table 1 points reach the upper left), the
+    restitution audit (its naderpour curves run through the lower left of the error
+    panel), the link-element loop, thin and fat, spectra that fill their axes, and a sweep's
+    lines: every legend is where no line or marker is, inside the axes or beside them."""
+    periods = np.geomspace(0.02, 5.0, 160)
+    names = [f"record_{k}_of_a_suite_RSN{1000 + k}.AT2, ζ=5%" for k in range(9)]
+    peaks = np.geomspace(0.03, 4.0, 9)
+    curves = [(n, 0.3 + 3.0 * np.exp(-np.log(periods / p) ** 2 / 0.4))
+              for n, p in zip(names, peaks)]
+    figures = [("Fig 4", plot_damping_formulas()), ("audit", plot_audit(audit_table())),
+               ("ellipse", plot_hysteresis_ellipse(1e8, 1e6, 10.0, 0.01)),
+               ("fat ellipse", plot_hysteresis_ellipse(1e8, 4e7, 10.0, 0.01)),
+               ("spectra", plot_spectra(periods, curves))]
+    for name, fig in figures:
+        assert_legends_clear(name, fig)
+    # Fig 4 keeps all of its curves and Table 1 in view, with the legend beside them
+    ax_z = plot_damping_formulas().axes[0]
+    assert len(ax_z.get_lines()) == 6
 
 
 def test_saved_page_is_the_figure_as_laid_out(demo: Result, tmp_path: Path) -> None:

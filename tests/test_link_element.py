@@ -226,5 +226,12 @@ def test_plot_hysteresis_ellipse_has_three_curves():
     ax = fig.axes[0]
     colors = [ln.get_color() for ln in ax.get_lines()]
     assert {"tab:blue", "tab:green", "tab:red"} <= set(colors)
-    assert ax.get_xlabel() == "penetration δ [m]" and ax.get_ylabel() == "force [N]"
+    # δ in mm, the force in the multiple of N that reads 1-1000 (here ±1 MN), no offsets
+    assert ax.get_xlabel() == "penetration δ [mm]" and ax.get_ylabel() == "force [MN]"
+    red = next(ln for ln in ax.get_lines() if ln.get_color() == "tab:red")
+    assert np.abs(red.get_xdata()).max() == pytest.approx(DELTA0 * 1e3, rel=1e-12)
+    peak = np.hypot(K * DELTA0, 1.0e6 * OMEGA_N * DELTA0)  # |k δ + c δ̇| at its largest
+    assert np.abs(red.get_ydata()).max() == pytest.approx(peak * 1e-6, rel=1e-4)
+    fig.canvas.draw()
+    assert ax.xaxis.get_offset_text().get_text() == ax.yaxis.get_offset_text().get_text() == ""
     assert any("J" in t.get_text() for t in ax.get_legend().get_texts())

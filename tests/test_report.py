@@ -279,3 +279,14 @@ def test_neither_run_nor_sweep_is_an_error(tmp_path: Path,
     assert main(["report", str(tmp_path / "nope")]) == 2
     assert "does not exist" in capsys.readouterr().err
     assert not (tmp_path / DEFAULT_NAME).exists()
+
+
+def test_run_report_shows_laws_and_damping_in_words(report: Path) -> None:
+    """The model section gives each contact element's law and each building's damping in
+    words with units and a few digits, not as Python reprs."""
+    text = report.read_text(encoding="utf-8")
+    assert ("nonlinear viscoelastic (Jankowski): k_h = 2.75e9 N/m^1.5, ζ = 0.373, "
+            "m_eff = 1.20e5 kg") in text
+    assert "modal, ζ = 0.05 in every mode" in text
+    for raw in ("NonlinearViscoelastic(", "ModalDamping(", "0.3728356652600535"):
+        assert raw not in text, raw

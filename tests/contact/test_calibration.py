@@ -276,3 +276,31 @@ def test_fit_bad_inputs(kwargs, match):
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
         fit_impact(**args)
+
+
+def test_cli_prints_laws_and_fits_with_units(tmp_path, capsys):
+    """`pounding collide` and `calibrate` head their output with the law in words and units;
+    `pounding fit` gives every quantity its unit."""
+    import re
+
+    from pounding.cli import main
+
+    assert main(["collide", "nonlinear-viscoelastic", "--e", "0.65"]) == 0
+    out = " ".join(capsys.readouterr().out.split())  # (rich wraps the title)
+    assert "nonlinear viscoelastic (Jankowski): k_h = 2.75e9 N/m^1.5, ζ = 0.373" in out
+    assert "NonlinearViscoelastic(" not in out and "k_h=" not in out
+    assert main(["calibrate", "kelvin-voigt", "--e", "0.6"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("Kelvin-Voigt (Anagnostopoulos): k = 9.30e8 N/m, c = ")
+    assert re.search(r"\nc = [0-9.]+ N·s/m \(closed form\)", out)
+    kh, chi = KH, 0.5
+    _, t_end = hc_history(kh, chi, np.array([0.0]))
+    t = np.linspace(0.0, 1.3 * t_end, 200)
+    f, _ = hc_history(kh, chi, t)
+    path = tmp_path / "force.csv"
+    np.savetxt(path, np.column_stack([t, f]), delimiter=",")
+    assert main(["fit", str(path), "--m1", str(M1), "--m2", str(M2), "--v0", str(V0)]) == 0
+    rows = [ln.split("│")[1].strip() for ln in capsys.readouterr().out.splitlines()
+            if ln.count("│") == 3]
+    assert rows[:2] == ["stiffness k_h [N/m^1.5]", "damping χ [-]"]
+    assert len(rows) == 5 and all(re.search(r"\[[^\]]+\]$", r) for r in rows), rows

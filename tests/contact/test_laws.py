@@ -8,6 +8,7 @@ shoelace formula); the work ∫F dδ along closed load-unload paths by the trape
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -365,3 +366,27 @@ def test_damping_accessors():
         law.with_damping(-1.0)
     with pytest.raises(ValueError, match="no damping"):
         Hertz(KH).damping
+
+
+def test_readable_names_every_field_with_its_unit():
+    """``readable()``: the law, its source, every field with its unit in three significant
+    digits (the report's "Contact elements" and the headers of `pounding collide` and
+    `pounding calibrate`); ``describe()`` keeps the exact values."""
+    law = NonlinearViscoelastic(2.75e9, 0.3728356652600535, 239999.99999999997)
+    assert law.readable() == ("nonlinear viscoelastic (Jankowski): k_h = 2.75e9 N/m^1.5, "
+                              "ζ = 0.373, m_eff = 2.40e5 kg")
+    assert "0.3728356652600535" in law.describe()
+    assert KelvinVoigt(9.3e8, 4967715.508553788).readable() == (
+        "Kelvin-Voigt (Anagnostopoulos): k = 9.30e8 N/m, c = 4.97e6 N·s/m, no tension")
+    assert HuntCrossley(KH, 0.433125, n=1.6).readable() == (
+        "Hunt-Crossley: k_h = 2.75e9 N/m^1.6, χ = 0.433, n = 1.6")
+    for name, law in make_laws().items():
+        text = law.readable()
+        assert text.startswith(law.label) and "=" in text and "e+" not in text, name
+        for field in (f.name for f in dataclasses.fields(law)):
+            value = getattr(law, field)
+            if isinstance(value, bool):
+                continue
+            unit = law.field_unit(field)
+            assert unit, (name, field)  # every field has its unit ("-": none)
+            assert (unit == "-") or f" {unit}" in text, (name, field, text)

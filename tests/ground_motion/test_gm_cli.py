@@ -78,7 +78,7 @@ def test_plot_record_labels() -> None:
     fig = plot_record(harmonic(1.0, 2.0, duration=1.0, dt=0.01))
     axes = fig.get_axes()
     assert [ax.get_ylabel() for ax in axes] == ["acceleration [g]", "velocity [m/s]",
-                                              "displacement [m]"]
+                                              "displacement [mm]"]
     assert axes[-1].get_xlabel() == "time [s]"
     assert "harmonic 2 Hz" in fig.texts[0].get_text()
 

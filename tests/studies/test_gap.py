@@ -218,7 +218,7 @@ def test_study_quantities_and_rules(seed: PoundingModel, ten: PoundingModel, elc
     df = study.to_frame()
     assert len(df) == 10 and "DDC_peaks_m" in df and "ABS_peaks/max" in df
     fig = plot_gap_study(study, DesignSpectrum.asce7(1.0, 0.6))
-    assert isinstance(fig, Figure) and fig.axes[0].get_xlabel() == "separation gap [m]"
+    assert isinstance(fig, Figure) and fig.axes[0].get_xlabel() == "separation gap [mm]"
     assert "[m]" in fig.axes[0].get_ylabel()
     # the seed pair: one level
     one = critical_gaps(seed, elc)

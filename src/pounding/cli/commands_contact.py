@@ -188,7 +188,7 @@ def collide_cmd(
     obj = make_law(law, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
                    tension=tension, delta_m=delta_m)
     r = simulate_collision(obj, m1, m2, v0)
-    table = Table(title=obj.describe())
+    table = Table(title=obj.readable())
     _col(table, "quantity")
     _col(table, "value", justify="right")
     rows = [("target e", f"{e:.6g}" if e is not None else "-"),
@@ -234,8 +234,11 @@ def calibrate_cmd(
         start = make_law(name, k=k, k_h=k_h, e=e, m1=m1, m2=m2, tension=tension) \
             if name not in ("linear-spring", "hertz") else make_law(name, k=k, k_h=k_h)
         cal = calibrate(start, e, m1, m2, v0)
-    console.print(f"{cal.law.describe()}\n{cal.parameter} = {cal.value:.10g} ({cal.method}); "
-                  f"achieved e = {cal.achieved_e:.8f} for target {cal.target_e:g}", highlight=False)
+    unit = cal.law.field_unit(cal.parameter)
+    console.print(f"{cal.law.readable()}\n{cal.parameter} = {cal.value:.10g}"
+                  + (f" {unit}" if unit not in ("", "-") else "") + f" ({cal.method}); "
+                  f"achieved e = {cal.achieved_e:.8f} for target {cal.target_e:g}",
+                  highlight=False)
 
 
 @app.command("fit")
@@ -252,6 +255,9 @@ def fit_cmd(
 
       pounding fit force.csv --m1 2e5 --m2 3e5 --v0 0.5 --law hunt-crossley
     """
+    from dataclasses import fields
+
+    from pounding.contact.base import SYMBOLS
     from pounding.contact.calibration import fit_impact
 
     try:
@@ -264,9 +270,13 @@ def fit_cmd(
     table = Table(title=f"Fit of {fit.law.label} to {force_file.name}")
     _col(table, "parameter")
     _col(table, "value", justify="right")
+    stiffness = fields(fit.law)[0].name  # k, k_h: the first field of every fitted law
     for name, value in fit.parameters.items():
-        table.add_row(name, f"{value:.6g}")
+        field = stiffness if name == "stiffness" else name
+        label = (f"stiffness {field}" if name == "stiffness"
+                 else f"damping {SYMBOLS.get(name, name)}")
+        table.add_row(f"{label} [{fit.law.field_unit(field)}]", f"{value:.6g}")
     table.add_row("RMS residual [N]", f"{fit.residual_rms:.4g}")
-    table.add_row("RMS residual / peak force", f"{fit.relative_residual:.3%}")
-    table.add_row("achieved e", f"{fit.achieved_e:.4f}")
+    table.add_row("RMS residual / peak force [%]", f"{100 * fit.relative_residual:.3f}")
+    table.add_row("achieved e [-]", f"{fit.achieved_e:.4f}")
     console.print(table)

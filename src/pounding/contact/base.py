@@ -50,10 +50,15 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.units import format_value
+
 V0: int = 0
 SLIP: int = 1
 DMAX: int = 2
 STATE_SIZE: int = 3
+
+SYMBOLS: dict[str, str] = {"zeta": "ζ", "chi": "χ", "delta_y": "δy"}
+"""How :meth:`ContactLaw.readable` writes a field (its name where not listed)."""
 
 V0_MIN: float = 1e-6
 """Floor on the recorded impact velocity [m/s], so grazing contacts keep ``δ̇/v0`` finite."""
@@ -115,8 +120,13 @@ class ContactLaw(ABC):
     code: ClassVar[int]
     label: ClassVar[str]
     """Short human name used in tables and plots."""
+    source: ClassVar[str] = ""
+    """Who the law is named after or comes from, for :meth:`readable` (may be empty)."""
     damping_field: ClassVar[str | None] = None
     """Name of the field that sets energy dissipation (None for elastic laws)."""
+    units: ClassVar[dict[str, str]] = {}
+    """Unit of each field (``-`` if dimensionless); ``N/m^n`` reads the law's exponent
+    ``n`` (:meth:`field_unit`)."""
 
     @abstractmethod
     def params(self) -> NDArray[np.float64]:
@@ -190,9 +200,31 @@ class ContactLaw(ABC):
         return replace(self, **{self.damping_field: value})
 
     def describe(self) -> str:
-        """One line: the label and the fields with their values."""
+        """One line: the label and the fields with their values (exact, as ``repr``)."""
         body = ", ".join(f"{f.name}={getattr(self, f.name)!r}" for f in fields(self))
         return f"{self.label}({body})"
+
+    def field_unit(self, name: str) -> str:
+        """The unit of field ``name`` (``-`` if dimensionless, ``""`` if not known), with the
+        law's exponent in a Hertz stiffness: ``N/m^1.5``."""
+        unit = self.units.get(name, "")
+        return unit.replace("^n", f"^{getattr(self, 'n'):g}") if "^n" in unit else unit
+
+    def readable(self) -> str:
+        """One line for people: the law, its source, each field with its unit in three
+        significant digits, e.g. ``nonlinear viscoelastic (Jankowski): k_h = 2.75e9
+        N/m^1.5, ζ = 0.373, m_eff = 2.40e5 kg``; a yes/no field by its name or ``no``
+        and its name (``no tension``)."""
+        parts = []
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if isinstance(value, bool):
+                parts.append(f.name if value else f"no {f.name}")
+            else:
+                parts.append(f"{SYMBOLS.get(f.name, f.name)} = "
+                             f"{format_value(value, self.field_unit(f.name))}")
+        head = f"{self.label} ({self.source})" if self.source else self.label
+        return f"{head}: {', '.join(parts)}"
 
 
 def m_effective(m1: float, m2: float) -> float:

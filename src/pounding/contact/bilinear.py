@@ -62,6 +62,8 @@ class BilinearImpact(ContactLaw):
     delta_y: float
     code: ClassVar[int] = BILINEAR_IMPACT
     label: ClassVar[str] = "bilinear impact"
+    source: ClassVar[str] = "Muthukumar"
+    units: ClassVar[dict[str, str]] = {"K1": "N/m", "K2": "N/m", "delta_y": "m"}
 
     def __post_init__(self) -> None:
         k1 = positive("K1", self.K1)

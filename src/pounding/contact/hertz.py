@@ -92,6 +92,8 @@ class Hertz(ContactLaw):
     n: float = 1.5
     code: ClassVar[int] = HERTZ
     label: ClassVar[str] = "Hertz"
+    source: ClassVar[str] = "Davis"
+    units: ClassVar[dict[str, str]] = {"k_h": "N/m^n", "n": "-"}
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k_h", positive("k_h", self.k_h))
@@ -133,6 +135,7 @@ class HuntCrossley(ContactLaw):
     code: ClassVar[int] = HUNT_CROSSLEY
     label: ClassVar[str] = "Hunt-Crossley"
     damping_field: ClassVar[str | None] = "chi"
+    units: ClassVar[dict[str, str]] = {"k_h": "N/m^n", "chi": "-", "n": "-"}
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k_h", positive("k_h", self.k_h))
@@ -192,7 +195,9 @@ class NonlinearViscoelastic(ContactLaw):
     m_eff: float
     code: ClassVar[int] = NONLINEAR_VISCOELASTIC
     label: ClassVar[str] = "nonlinear viscoelastic"
+    source: ClassVar[str] = "Jankowski"
     damping_field: ClassVar[str | None] = "zeta"
+    units: ClassVar[dict[str, str]] = {"k_h": "N/m^1.5", "zeta": "-", "m_eff": "kg"}
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k_h", positive("k_h", self.k_h))

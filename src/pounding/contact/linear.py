@@ -81,6 +81,7 @@ class LinearSpring(ContactLaw):
     k: float
     code: ClassVar[int] = LINEAR_SPRING
     label: ClassVar[str] = "linear spring"
+    units: ClassVar[dict[str, str]] = {"k": "N/m"}
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", positive("k", self.k))
@@ -117,7 +118,9 @@ class KelvinVoigt(ContactLaw):
     tension: bool = False
     code: ClassVar[int] = KELVIN_VOIGT
     label: ClassVar[str] = "Kelvin-Voigt"
+    source: ClassVar[str] = "Anagnostopoulos"
     damping_field: ClassVar[str | None] = "c"
+    units: ClassVar[dict[str, str]] = {"k": "N/m", "c": "N·s/m"}
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", positive("k", self.k))
@@ -183,7 +186,9 @@ class ModifiedKelvinVoigt(ContactLaw):
     c: float
     code: ClassVar[int] = MODIFIED_KELVIN_VOIGT
     label: ClassVar[str] = "modified Kelvin-Voigt"
+    source: ClassVar[str] = "Mahmoud & Jankowski"
     damping_field: ClassVar[str | None] = "c"
+    units: ClassVar[dict[str, str]] = {"k": "N/m", "c": "N·s/m"}
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", positive("k", self.k))

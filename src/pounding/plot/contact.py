@@ -6,6 +6,7 @@ import matplotlib
 import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 
 from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
 from pounding.plot import new_figure
@@ -20,7 +21,7 @@ def plot_damping_formulas(e: np.ndarray | None = None) -> Figure:
         Coefficients of restitution to draw (default 0.05 … 1).
     """
     e = np.linspace(0.05, 1.0, 400) if e is None else np.asarray(e, dtype=float)
-    fig = new_figure(11, 4.5, laid_out=False)
+    fig = new_figure(11, 6.2, laid_out=False, layout="constrained")
     ax_z, ax_c = fig.subplots(1, 2)
     for f in FORMULAS.values():
         ax = ax_z if f.kind == "zeta" else ax_c
@@ -37,8 +38,11 @@ def plot_damping_formulas(e: np.ndarray | None = None) -> Figure:
     ax_c.set_title("χ(e): Hunt–Crossley family")
     for ax in (ax_z, ax_c):
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.tight_layout()
+    # one legend below the panels: the ζ laws in the left column, the χ laws in the right
+    (hz, lz), (hc, lc) = (ax.get_legend_handles_labels() for ax in (ax_z, ax_c))
+    blank = [Line2D([], [], ls="none")] * (len(lz) - len(lc))
+    fig.legend(hz + hc + blank, lz + lc + [""] * len(blank), loc="outside lower center",
+               ncol=2, fontsize=7, frameon=False)
     return fig
 
 
@@ -50,7 +54,7 @@ def plot_audit(table: pd.DataFrame) -> Figure:
     table : pandas.DataFrame
         Output of :func:`pounding.contact.audit.restitution_audit`.
     """
-    fig = new_figure(11, 5, laid_out=False)
+    fig = new_figure(11, 6.2, laid_out=False, layout="constrained")
     ax_a, ax_b = fig.subplots(1, 2, sharex=True)
     colors = matplotlib.colormaps["tab20"].colors
     for i, ((formula, law), g) in enumerate(table.groupby(["formula", "law"], sort=False)):
@@ -62,7 +66,6 @@ def plot_audit(table: pd.DataFrame) -> Figure:
     ax_a.plot([0, 1], [0, 1], "k:", lw=1, label="achieved = target")
     ax_a.set_xlabel("target e [-]")
     ax_a.set_ylabel("achieved e [-]")
-    ax_a.set_title("Restitution audit (solid: formula with the law it was derived for)")
     ax_b.axhline(0.0, color="k", lw=1)
     ax_b.set_xlabel("target e [-]")
     ax_b.set_ylabel("achieved − target [-]")
@@ -70,6 +73,8 @@ def plot_audit(table: pd.DataFrame) -> Figure:
     ax_a.set_ylim(0, 1)
     for ax in (ax_a, ax_b):
         ax.grid(True, alpha=0.3)
-    ax_b.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
+    fig.suptitle("Restitution audit (solid: formula with the law it was derived for)")
+    # one legend below both panels (formula / law pairs, then the diagonal): it hides nothing
+    fig.legend(*ax_a.get_legend_handles_labels(), loc="outside lower center", ncol=3,
+               fontsize=7, frameon=False)
     return fig

@@ -7,6 +7,7 @@ from matplotlib.ticker import MaxNLocator
 
 from pounding.link_element import ellipse_area, harmonic_loop
 from pounding.plot import new_figure
+from pounding.plot.layout import MM, display_scale, place_legend, plain_ticks
 
 
 def plot_hysteresis_ellipse(k: float, c: float, omega: float, delta0: float,
@@ -38,23 +39,30 @@ def plot_hysteresis_ellipse(k: float, c: float, omega: float, delta0: float,
     """
     loop = harmonic_loop(k, c, omega, delta0, n=n)
     e_d = ellipse_area(c, omega, delta0)
+    force = display_scale("N", float(abs(loop.f_total).max()))
+    joules, stiff, dash = (display_scale(u, v) for u, v in (("J", e_d), ("N/m", k),
+                                                             ("N·s/m", c)))
     fig = new_figure(6.4, 4.8, laid_out=False)
     ax = fig.add_subplot(1, 1, 1)
-    ax.plot(loop.delta, loop.f_spring, color="tab:blue", lw=1.6, label=r"spring $f_S = k\delta$")
-    ax.plot(loop.delta, loop.f_dashpot, color="tab:green", lw=1.6,
+    d = loop.delta * MM.factor
+    ax.plot(d, loop.f_spring * force.factor, color="tab:blue", lw=1.6,
+            label=r"spring $f_S = k\delta$")
+    ax.plot(d, loop.f_dashpot * force.factor, color="tab:green", lw=1.6,
             label=r"dashpot $f_D = c\dot\delta$ (eq 9)")
-    ax.plot(loop.delta, loop.f_total, color="tab:red", lw=1.8,
+    ax.plot(d, loop.f_total * force.factor, color="tab:red", lw=1.8,
             label=r"link $f = k\delta + c\dot\delta$ (eq 5)")
-    ax.plot([], [], " ", label=rf"$E_D = \pi c \omega \delta_0^2$ = {e_d:.4g} J (eq 10)")
+    ax.plot([], [], " ", label=rf"$E_D = \pi c \omega \delta_0^2$ = "
+            f"{e_d * joules.factor:.4g} {joules.unit} (eq 10)")
     ax.axhline(0.0, color="0.6", lw=0.6)
     ax.axvline(0.0, color="0.6", lw=0.6)
-    ax.set_xlabel("penetration δ [m]")
-    ax.set_ylabel("force [N]")
+    ax.set_xlabel(f"penetration δ [{MM.unit}]")
+    ax.set_ylabel(f"force [{force.unit}]")
     ax.set_title(f"Hysteresis loop of the link element (seed Fig 2)\n"
-                 f"k = {k:.3g} N/m, c = {c:.3g} N·s/m, ω = {omega:.3g} rad/s, δ0 = {delta0:.3g} m",
+                 f"k = {k * stiff.factor:.3g} {stiff.unit}, c = {c * dash.factor:.3g} "
+                 f"{dash.unit}, ω = {omega:.3g} rad/s, δ0 = {delta0 * MM.factor:.3g} {MM.unit}",
                  fontsize=10, pad=14)
-    ax.ticklabel_format(axis="both", style="sci", scilimits=(-3, 4))
     ax.xaxis.set_major_locator(MaxNLocator(6))
     ax.grid(True, lw=0.4, alpha=0.5)
-    ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    plain_ticks(fig)
+    place_legend(ax, fontsize=8, framealpha=0.9)
     return fig

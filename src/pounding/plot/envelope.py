@@ -18,15 +18,15 @@ from matplotlib.lines import Line2D
 from matplotlib.transforms import blended_transform_factory
 from numpy.typing import NDArray
 
-from pounding.plot import new_figure
 from pounding.plot.layout import (
     LEGEND_SIZE,
     MM,
-    TITLE_SIZE,
     Scale,
     axes_grid,
+    fit_text,
     plain_ticks,
     scale_for,
+    titled_figure,
 )
 from pounding.result import Result
 
@@ -34,6 +34,8 @@ __all__ = ["Envelopes", "envelopes", "plot_envelopes"]
 
 DRIFT_RATIO = Scale(100.0, "%")
 """Drift ratios are drawn in per cent."""
+LEGEND_COLUMN = 1.85
+"""Widest building name in the legend [in]: four columns fit the page; longer names are cut."""
 
 
 class Envelopes(NamedTuple):
@@ -98,16 +100,18 @@ def plot_envelopes(result: Result) -> Figure:
     model = result.model
     env = envelopes(result)
     force = scale_for(float(env.shear.max()) if env.shear.size else 0.0, "N")
-    fig = new_figure(10.0, 4.4)
-    ax_u, ax_d, ax_v = axes_grid(fig, 1, 3, left=0.7, right=0.3, top=0.45, bottom=0.95,
-                                 wspace=0.5, sharey=True)[0]
+    fig, extra = titled_figure(model.name, "peak response against height "
+                               f"({result.motion.name})", 10.0, 4.4)
+    ax_u, ax_d, ax_v = axes_grid(fig, 1, 3, left=0.7, right=0.3, top=0.45 + extra,
+                                 bottom=0.95, wspace=0.5, sharey=True)[0]
     colours = matplotlib.colormaps["tab10"]
     panels = ((ax_u, env.displacement, MM, _floor_profile, "peak |displacement|"),
               (ax_d, env.drift_ratio, DRIFT_RATIO, _storey_profile, "peak |storey drift ratio|"),
               (ax_v, env.shear, force, _storey_profile, "peak |storey shear|"))
     for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
         sl = slice(off, off + bl.n)
-        label = f"B{b + 1}" + (f" {bl.name}" if bl.name and bl.name != f"B{b + 1}" else "")
+        label = fit_text(f"B{b + 1}" + (f" {bl.name}" if bl.name and bl.name != f"B{b + 1}"
+                                        else ""), LEGEND_COLUMN, LEGEND_SIZE + 1, max_lines=1)
         for ax, values, unit, profile, _ in panels:
             x, z = profile(bl.floor_levels, values[sl] * unit.factor)
             ax.plot(x, z, color=colours(b % 10), lw=1.6, marker="o" if profile is
@@ -132,6 +136,4 @@ def plot_envelopes(result: Result) -> Figure:
     fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 4),
                fontsize=LEGEND_SIZE + 1, frameon=False,
                bbox_to_anchor=(0.5, 0.02 / fig.get_figheight()))
-    fig.suptitle(f"{model.name}: peak response against height ({result.motion.name})",
-                 fontsize=TITLE_SIZE + 1, y=1.0 - 0.12 / fig.get_figheight(), va="top")
     return plain_ticks(fig)

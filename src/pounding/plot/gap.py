@@ -5,6 +5,7 @@ from __future__ import annotations
 from matplotlib.figure import Figure
 
 from pounding.plot import new_figure
+from pounding.plot.layout import MM
 from pounding.spectra import DesignSpectrum
 from pounding.studies.gap import GapStudy
 
@@ -13,7 +14,7 @@ RULE_STYLE = {"ABS": "tab:red", "SRSS": "tab:green", "DDC": "tab:purple"}
 
 
 def plot_gap_study(study: GapStudy, spectrum: DesignSpectrum | None = None) -> Figure:
-    """Gap [m] against elevation [m], one panel per pair of neighbours.
+    """Gap [mm] against elevation [m], one panel per pair of neighbours.
 
     * thin grey lines: the critical gap by simulation for each record;
     * thick black line: its maximum over the records;
@@ -45,22 +46,22 @@ def plot_gap_study(study: GapStudy, spectrum: DesignSpectrum | None = None) -> F
         z = study.elevation[sel]
         mk = "o" if sel.sum() == 1 else "."
         for i, name in enumerate(study.records):
-            ax.plot(study.critical[i, sel], z, color="0.55", lw=0.8, marker=mk, ms=3,
+            ax.plot(study.critical[i, sel] * MM.factor, z, color="0.55", lw=0.8, marker=mk, ms=3,
                     label="simulated, each record" if i == 0 else None)
-        ax.plot(study.max_critical[sel], z, color="k", lw=2.4, marker=mk, ms=5,
+        ax.plot(study.max_critical[sel] * MM.factor, z, color="k", lw=2.4, marker=mk, ms=5,
                 label="simulated, max over records")
         for rule, values in from_peaks.items():
-            ax.plot(values[sel], z, ls="--", lw=1.4, color=RULE_STYLE[rule], marker=mk, ms=4,
-                    label=f"{rule} (mean simulated peaks)")
+            ax.plot(values[sel] * MM.factor, z, ls="--", lw=1.4, color=RULE_STYLE[rule],
+                    marker=mk, ms=4, label=f"{rule} (mean simulated peaks)")
         if from_spec is not None:
             for rule, values in from_spec.items():
-                ax.plot(values[sel], z, ls=":", lw=1.6, color=RULE_STYLE[rule], marker="x",
-                        ms=5, label=f"{rule} (design spectrum)")
+                ax.plot(values[sel] * MM.factor, z, ls=":", lw=1.6, color=RULE_STYLE[rule],
+                        marker="x", ms=5, label=f"{rule} (design spectrum)")
         b1, b2 = study.model.buildings[p], study.model.buildings[p + 1]
         ax.set_title(f"B{p + 1} {b1.name} – B{p + 2} {b2.name}\n"
                      f"T1 = {study.period[p]:.3g} s / {study.period[p + 1]:.3g} s, "
                      f"ρ = {study.rho[p]:.3f}", fontsize=9)
-        ax.set_xlabel("separation gap [m]")
+        ax.set_xlabel(f"separation gap [{MM.unit}]")
         ax.set_xlim(left=0.0)
         ax.set_ylim(0.0, max(float(z.max()) * 1.08, 0.1))
         ax.grid(True, lw=0.4, alpha=0.5)

@@ -1,11 +1,13 @@
-"""Shared look of the run figures: fixed margins, readable units, plain tick labels,
-histories drawn decimated, the ground-motion panel.
+"""Shared look of the figures: fixed margins, readable units, plain tick labels, titles
+that fit the page, legends that hide no data, histories drawn decimated, the ground-motion
+panel.
 
 Fixed margins (in inches) instead of ``tight_layout`` / ``bbox_inches="tight"``: those
 measure every text on the page by drawing it, which costs more than drawing the figure
 itself. The margins here are sized for tick labels of at most five characters, which the
 unit choice of :func:`scale_for` guarantees (values between 1 and 1000 in the chosen
-unit).
+unit). A title is measured alone (:func:`fit_text`, about a millisecond) and wrapped, or
+cut, to the width it has; :func:`titled_figure` gives the page the room its lines need.
 """
 
 from __future__ import annotations
@@ -16,13 +18,20 @@ from typing import Any, NamedTuple
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
+from matplotlib.legend import Legend
+from matplotlib.lines import Line2D
+from matplotlib.textpath import TextToPath
 from matplotlib.ticker import ScalarFormatter
+from matplotlib.transforms import Bbox
 from numpy.typing import NDArray
 
+from pounding.plot import new_figure
 from pounding.plot.decimate import buckets_for_width, envelope_indices
 from pounding.units import G
 
-__all__ = ["Scale", "scale_for", "axes_grid", "plain_ticks", "history", "ground_panel",
+__all__ = ["Scale", "scale_for", "display_scale", "axes_grid", "plain_ticks", "history",
+           "ground_panel", "fit_text", "titled_figure", "place_legend",
            "TITLE_SIZE", "LEGEND_SIZE"]
 
 TITLE_SIZE = 9
@@ -56,6 +65,32 @@ def scale_for(peak: float, unit: str) -> Scale:
 
 MM = Scale(1e3, "mm")
 """Displacements and drifts are drawn in millimetres."""
+
+
+def display_scale(unit: str | None, peak: float) -> Scale:
+    """The unit a figure draws a quantity of SI ``unit`` in, for values up to ``peak``.
+
+    Parameters
+    ----------
+    unit : str or None
+        The SI unit (``pounding.units.unit_of``): ``m``, ``N``, ``J``, ``N/m``, ``kg``, … .
+    peak : float
+        The largest magnitude drawn (SI).
+
+    Returns
+    -------
+    Scale
+        :data:`MM` for lengths; for forces, energies and stiffnesses (units of N or J) the
+        multiple that reads between 1 and 1000 (:func:`scale_for`); tonnes for masses of
+        10 t and more; else ``unit`` itself (``""`` for None).
+    """
+    if unit == "m":
+        return MM
+    if unit and (unit == "J" or unit.startswith("N")):
+        return scale_for(peak, unit)
+    if unit == "kg" and abs(peak) >= 1e4:
+        return Scale(1e-3, "t")
+    return Scale(1.0, unit or "")
 
 
 def axes_grid(fig: Figure, nrows: int, ncols: int, *, left: float = 0.85,
@@ -101,6 +136,166 @@ def plain_ticks(fig: Figure) -> Figure:
     return fig
 
 
+_TEXT_PATH = TextToPath()
+
+LINE_SPACING = 1.2
+"""Line spacing of a wrapped title [font sizes] (matplotlib's default)."""
+
+
+def text_width(text: str, size: float) -> float:
+    """Width of one line of ``text`` at ``size`` points in the default font [in] (measured
+    from the glyphs, without drawing)."""
+    w, _, _ = _TEXT_PATH.get_text_width_height_descent(text, FontProperties(size=size),
+                                                      ismath=False)
+    return float(w) / 72.0
+
+
+def fit_text(text: str, width: float, size: float, max_lines: int = 3) -> str:
+    """``text`` broken into lines at most ``width`` inches wide at ``size`` points.
+
+    Parameters
+    ----------
+    text : str
+        One line (a title).
+    width : float
+        The room it has [in].
+    size : float
+        Font size [pt].
+    max_lines : int
+        At most this many lines; what does not fit in them is cut and the last line ends
+        in "…" (so does a single word wider than ``width``).
+
+    Returns
+    -------
+    str
+        The lines joined by newlines; ``text`` itself when it fits on one line.
+    """
+    if text_width(text, size) <= width:
+        return text
+    space = text_width("a a", size) - text_width("aa", size)
+    lines: list[str] = []
+    line, used = "", 0.0
+    for word in text.split():
+        w = text_width(word, size)
+        if line and used + space + w <= width:
+            line, used = f"{line} {word}", used + space + w
+            continue
+        if line:
+            lines.append(line)
+        line, used = word, w
+    lines.append(line)
+    cut = len(lines) > max_lines
+    lines = lines[:max_lines]
+    for i, ln in enumerate(lines):
+        last = cut and i == len(lines) - 1
+        if last or text_width(ln, size) > width:
+            while ln and text_width(ln + "…", size) > width:
+                ln = ln[:-1]
+            lines[i] = ln.rstrip() + "…"
+    return "\n".join(lines)
+
+
+def titled_figure(name: str, subject: str, width: float, height: float,
+                  size: float = TITLE_SIZE + 1) -> tuple[Figure, float]:
+    """A figure (:func:`pounding.plot.new_figure`) titled ``"name: subject"``, the title
+    fitted to the page.
+
+    Parameters
+    ----------
+    name : str
+        What is drawn (a model's name, any length).
+    subject : str
+        What the figure shows.
+    width, height : float
+        Size of the page with a one-line title [in].
+    size : float
+        Font size of the title [pt].
+
+    Returns
+    -------
+    tuple of (Figure, float)
+        The figure, its title 0.1 in below the top, broken into at most three lines that
+        fit 0.1 in clear of each edge (:func:`fit_text`; a name too long for that is cut,
+        ending in "…", the subject kept whole); and the height the lines after the first
+        add to the page [in]: add it to the top margin of the axes.
+    """
+    head, whole = name, " ".join(subject.split())
+    while True:
+        lines = fit_text(f"{head}: {subject}", width - 0.2, size)
+        if " ".join(lines.split()).endswith(whole) or len(head) <= 1:
+            break
+        head = name[:int(len(head) * 0.9)].rstrip() + "…"  # shorter by a tenth, until it fits
+    extra = lines.count("\n") * LINE_SPACING * size / 72.0
+    fig = new_figure(width, height + extra)
+    fig.suptitle(lines, fontsize=size, y=1.0 - 0.1 / fig.get_figheight(), va="top")
+    return fig, extra
+
+
+_LEGEND_PLACES = ("upper right", "upper left", "lower left", "lower right", "center right",
+                  "center left", "lower center", "upper center", "center")
+
+
+def place_legend(ax: Axes, *args: Any, **kw: Any) -> Legend:
+    """A legend of ``ax`` that covers no drawn line or marker.
+
+    The first of the nine places inside the axes (upper right, upper left, …) where no
+    line and no marker of ``ax`` is under the legend; else beside the axes, on the right,
+    top-aligned.
+
+    Parameters
+    ----------
+    ax : Axes
+        The axes, with its lines drawn and its limits set.
+    *args
+        Handles and labels, as for :meth:`matplotlib.axes.Axes.legend`.
+    **kw
+        More options of :meth:`~matplotlib.axes.Axes.legend` (``fontsize``, ``ncol``, …).
+
+    Returns
+    -------
+    matplotlib.legend.Legend
+
+    Notes
+    -----
+    Draws the figure once to know the size of the legend and where the axes are; a figure
+    whose layout engine then moves the axes keeps the legend's place relative to them.
+    """
+    fig = ax.figure
+    legend = ax.legend(*args, **kw)
+    fig.draw_without_rendering()
+    size = legend.get_window_extent()
+    pad = legend.borderaxespad * legend.prop.get_size_in_points() * fig.dpi / 72.0
+    inner = ax.bbox.padded(-pad)
+    lines = [ln for ln in ax.get_lines() if ln.get_visible() and len(ln.get_xydata())]
+    for place in _LEGEND_PLACES:
+        vert, horiz = place.split() if " " in place else (place, place)
+        x0 = {"left": inner.x0, "right": inner.x1 - size.width,
+              "center": inner.x0 + (inner.width - size.width) / 2}[horiz]
+        y0 = {"lower": inner.y0, "upper": inner.y1 - size.height,
+              "center": inner.y0 + (inner.height - size.height) / 2}[vert]
+        box = Bbox.from_bounds(x0, y0, size.width, size.height)
+        if not any(_line_under(ln, box) for ln in lines):
+            legend.set_loc(place)
+            return legend
+    return ax.legend(*args, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+                     **kw)
+
+
+def _line_under(line: Line2D, box: Bbox) -> bool:
+    """True if ``line`` (its markers, or its stroke) is drawn inside ``box`` (display)."""
+    mark = float(line.get_markersize()) if line.get_marker() not in (None, "", "None", " ",
+                                                                     "none") else 0.0
+    dpi = line.figure.dpi
+    path = line.get_transform().transform_path(line.get_path())
+    if line.get_linestyle() not in ("None", "", " ", "none"):
+        if path.intersects_bbox(box.padded(line.get_linewidth() * dpi / 144.0), filled=False):
+            return True
+    if mark:
+        near = box.padded(mark * dpi / 144.0)
+        return bool(near.count_contains(path.vertices[np.isfinite(path.vertices).all(1)]))
+    return False
+
+
 def axes_width(ax: Axes) -> float:
     """Width of ``ax`` on the page [in]."""
     return float(ax.get_position().width * ax.figure.get_figwidth())
@@ -122,8 +317,9 @@ def ground_panel(ax: Axes, time: NDArray[np.float64], ground: NDArray[np.float64
     if ag.size:
         k = int(np.abs(ag).argmax())
         ax.plot([time[k]], [ag[k]], "o", ms=3, color="tab:red")
-        ax.set_title(f"ground acceleration: {name}; peak {abs(ag[k]):.3g} g at "
-                     f"{time[k]:.2f} s", fontsize=TITLE_SIZE, loc="left")
+        ax.set_title(fit_text(f"ground acceleration: {name}; peak {abs(ag[k]):.3g} g at "
+                              f"{time[k]:.2f} s", axes_width(ax), TITLE_SIZE, max_lines=1),
+                     fontsize=TITLE_SIZE, loc="left")
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_ylabel("ground acc. [g]")
     ax.grid(True, alpha=0.3)

@@ -17,8 +17,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from numpy.typing import NDArray
 
-from pounding.plot import new_figure
-from pounding.plot.layout import MM, TITLE_SIZE, axes_grid, plain_ticks, scale_for
+from pounding.plot.layout import MM, TITLE_SIZE, axes_grid, plain_ticks, scale_for, titled_figure
 from pounding.result import Result, peak_abs
 
 __all__ = ["MAX_HYSTERESIS_PANELS", "MAX_STOREY_PANELS", "plot_hysteresis",
@@ -64,9 +63,13 @@ def plot_hysteresis(result: Result) -> Figure:
     nrow = math.ceil(n / ncol)
     force = scale_for(float(peak.max()) if peak.size else 0.0, "N")
     width, height = PANEL_SIZE
-    fig = new_figure(0.8 + ncol * width + (ncol - 1) * 0.25 + 0.25,
-                     0.6 + nrow * height + (nrow - 1) * 0.45 + 0.55)
-    axes = axes_grid(fig, nrow, ncol, left=0.8, right=0.25, top=0.6, bottom=0.55,
+    more = len(hit) - len(chosen)
+    fig, extra = titled_figure(
+        model.name, "contact hysteresis while closed (dark: early impacts, light: late)"
+        + (f"; {more} more contact(s) not shown" if more > 0 else ""),
+        0.8 + ncol * width + (ncol - 1) * 0.25 + 0.25,
+        0.6 + nrow * height + (nrow - 1) * 0.45 + 0.55)
+    axes = axes_grid(fig, nrow, ncol, left=0.8, right=0.25, top=0.6 + extra, bottom=0.55,
                      wspace=0.25, hspace=0.45, sharex=True, sharey=True).ravel()
     cmap = matplotlib.colormaps["plasma"]
     t = result.time
@@ -109,10 +112,6 @@ def plot_hysteresis(result: Result) -> Figure:
         if i + ncol >= n_drawn:  # the lowest panel of its column (the last row may be short)
             ax.set_xlabel(f"penetration δ [{MM.unit}]")
             ax.xaxis.set_tick_params(labelbottom=True)
-    more = len(hit) - len(chosen)
-    fig.suptitle(f"{model.name}: contact hysteresis while closed (dark: early impacts, light: "
-                 "late)" + (f"; {more} more contact(s) not shown" if more > 0 else ""),
-                 fontsize=TITLE_SIZE + 1, y=1.0 - 0.1 / fig.get_figheight(), va="top")
     return plain_ticks(fig)
 
 
@@ -134,10 +133,12 @@ def plot_storey_hysteresis(result: Result) -> Figure:
     cols = [model.system.offsets[b] + j for b in rows for j in range(model.buildings[b].n)]
     force = scale_for(float(peak_abs(shear[:, cols]).max()) if cols else 0.0, "N")
     width, height = PANEL_SIZE
-    fig = new_figure(0.8 + ncol * width + (ncol - 1) * 0.25 + 0.25,
-                     0.9 + nrow * height + (nrow - 1) * 1.0 + 0.55)
+    fig, extra = titled_figure(model.name, "storey shear against drift of the yielding "
+                               "storeys (dashed: yield shear)",
+                               0.8 + ncol * width + (ncol - 1) * 0.25 + 0.25,
+                               0.9 + nrow * height + (nrow - 1) * 1.0 + 0.55)
     # one row per building, its storeys on the same shear scale
-    axes = axes_grid(fig, nrow, ncol, left=0.8, right=0.25, top=0.9, bottom=0.55,
+    axes = axes_grid(fig, nrow, ncol, left=0.8, right=0.25, top=0.9 + extra, bottom=0.55,
                      wspace=0.25, hspace=1.0, sharey="row")
     for ax_row, b in zip(axes, rows):
         bl, off = model.buildings[b], model.system.offsets[b]
@@ -167,7 +168,4 @@ def plot_storey_hysteresis(result: Result) -> Figure:
                 va="center", color="0.4")
         ax.set_xlabel(f"storey drift [{MM.unit}]")
         ax.set_ylabel(f"storey shear [{force.unit}]")
-    fig.suptitle(f"{model.name}: storey shear against drift of the yielding storeys "
-                 "(dashed: yield shear)", fontsize=TITLE_SIZE + 1,
-                 y=1.0 - 0.1 / fig.get_figheight(), va="top")
     return plain_ticks(fig)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from pounding.plot import new_figure
+from pounding.plot.layout import MM
 from pounding.units import G
 
 if TYPE_CHECKING:  # `pounding record` imports this module at start-up: no matplotlib here
@@ -16,7 +17,7 @@ __all__ = ["plot_record"]
 
 
 def plot_record(gm: GroundMotion) -> Figure:
-    """Draw a record's acceleration [g], velocity [m/s] and displacement [m] against time [s].
+    """Draw a record's acceleration [g], velocity [m/s] and displacement [mm] against time [s].
 
     Velocity and displacement are :meth:`GroundMotion.velocity` and
     :meth:`GroundMotion.displacement` (trapezoidal, no baseline correction); each panel marks
@@ -37,7 +38,8 @@ def plot_record(gm: GroundMotion) -> Figure:
     series = [
         (gm.accel / G, "acceleration [g]", "PGA", "g", "tab:red"),
         (gm.velocity(), "velocity [m/s]", "PGV", "m/s", "tab:blue"),
-        (gm.displacement(), "displacement [m]", "PGD", "m", "tab:green"),
+        (gm.displacement() * MM.factor, f"displacement [{MM.unit}]", "PGD", MM.unit,
+         "tab:green"),
     ]
     fig = new_figure(8.0, 7.0, layout="constrained", laid_out=False)
     axes = fig.subplots(3, 1, sharex=True)

@@ -20,7 +20,6 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from pounding.plot import new_figure
 from pounding.plot.decimate import buckets_for_width, union_indices
 from pounding.plot.layout import (
     LEGEND_SIZE,
@@ -28,10 +27,12 @@ from pounding.plot.layout import (
     TITLE_SIZE,
     axes_grid,
     axes_width,
+    fit_text,
     ground_panel,
     history,
     plain_ticks,
     scale_for,
+    titled_figure,
 )
 from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
 from pounding.plot.registry import RUN_FIGURES, RunFigure, figures_for
@@ -79,23 +80,20 @@ def _legend_columns(labels: list[str], rows: int) -> tuple[int, float]:
     return ncol, ncol * (0.35 + _CHAR_WIDTH * longest)
 
 
-def _history_figure(result: Result, n_panels: int, legend_width: float
+def _history_figure(result: Result, n_panels: int, legend_width: float, subject: str
                     ) -> tuple[Figure, list[Axes], Axes]:
-    """A figure of ``n_panels`` response panels and the ground panel below, time shared."""
-    height = 0.55 + n_panels * (PANEL_HEIGHT + 0.4) + GROUND_HEIGHT + 0.55
-    fig = new_figure(10.0 + legend_width, height)
-    axes = axes_grid(fig, n_panels + 1, 1, left=0.8, right=0.25 + legend_width, top=0.55,
-                     bottom=0.55, hspace=0.4,
+    """A figure titled with the model's name and ``subject``, of ``n_panels`` response panels
+    and the ground panel below, time shared."""
+    fig, extra = titled_figure(result.model.name, subject, 10.0 + legend_width,
+                               0.55 + n_panels * (PANEL_HEIGHT + 0.4) + GROUND_HEIGHT + 0.55)
+    axes = axes_grid(fig, n_panels + 1, 1, left=0.8, right=0.25 + legend_width,
+                     top=0.55 + extra, bottom=0.55, hspace=0.4,
                      height_ratios=[PANEL_HEIGHT] * n_panels + [GROUND_HEIGHT],
                      sharex="col")[:, 0]
     ground_panel(axes[-1], result.time, result.ground, result.motion.name)
     axes[-1].set_xlabel("time [s]")
     axes[-1].set_xlim(0.0, float(result.time[-1]) if result.time.size > 1 else 1.0)
     return fig, list(axes[:-1]), axes[-1]
-
-
-def _suptitle(fig: Figure, text: str) -> None:
-    fig.suptitle(text, fontsize=TITLE_SIZE + 1, y=1.0 - 0.1 / fig.get_figheight(), va="top")
 
 
 def plot_displacements(result: Result) -> Figure:
@@ -113,7 +111,8 @@ def plot_displacements(result: Result) -> Figure:
               for bl, show in zip(model.buildings, shown)]
     rows = int(PANEL_HEIGHT / 0.15)
     ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
-    fig, axes, _ = _history_figure(result, len(model.buildings), max(width))
+    fig, axes, _ = _history_figure(result, len(model.buildings), max(width),
+                                   "floor displacements relative to the ground")
     cmap = matplotlib.colormaps["viridis"]
     for b, (ax, bl, off) in enumerate(zip(axes, model.buildings, model.system.offsets)):
         for j, label in zip(shown[b], labels[b]):
@@ -123,12 +122,12 @@ def plot_displacements(result: Result) -> Figure:
                     lw=1.3 if roof else 0.7, label=label, zorder=3 if roof else 2)
         ax.axhline(0.0, color="0.6", lw=0.5)
         ax.set_ylabel(f"displacement [{MM.unit}]")
-        ax.set_title(f"{_building_label(result, b)}: {bl.n} storey(s); roof and floors "
-                     "with a contact", fontsize=TITLE_SIZE, loc="left")
+        ax.set_title(fit_text(f"{_building_label(result, b)}: {bl.n} storey(s); roof and "
+                              "floors with a contact", axes_width(ax), TITLE_SIZE, max_lines=1),
+                     fontsize=TITLE_SIZE, loc="left")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=LEGEND_SIZE, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                   borderaxespad=0.0, ncol=ncols[b], frameon=False)
-    _suptitle(fig, f"{model.name}: floor displacements relative to the ground")
     return plain_ticks(fig)
 
 
@@ -147,7 +146,8 @@ def plot_contact_forces(result: Result) -> Figure:
     labels = [[f"{c.label} ({c.elevation:g} m)" for c in hit] for hit in hit_by_pair]
     rows = int(PANEL_HEIGHT / 0.15)
     ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
-    fig, axes, _ = _history_figure(result, n_pairs, max(width) if any(labels) else 0.0)
+    fig, axes, _ = _history_figure(result, n_pairs, max(width) if any(labels) else 0.0,
+                                   "contact forces")
     cmap = matplotlib.colormaps["tab10"]
     for p, ax in enumerate(axes):
         cs = [c for c in model.contacts if c.pair == p]
@@ -171,7 +171,6 @@ def plot_contact_forces(result: Result) -> Figure:
                         "impact" if cs else ""), fontsize=TITLE_SIZE, loc="left")
         ax.set_ylabel(f"contact force [{force.unit}]")
         ax.grid(True, alpha=0.3)
-    _suptitle(fig, f"{model.name}: contact forces")
     return plain_ticks(fig)
 
 
@@ -201,8 +200,9 @@ def plot_energy(result: Result) -> Figure:
     err = scale_for(float(np.abs(closure).max()) if t.size else 0.0, "J")
     names = [name for name, _ in terms] + ["input"]
     ncol, legend_width = _legend_columns(names, 20)
-    fig = new_figure(10.0 + legend_width, 6.0)
-    ax, ax_r = axes_grid(fig, 2, 1, left=0.8, right=0.25 + legend_width, top=0.4,
+    fig, extra = titled_figure(result.model.name, f"energy balance ({result.motion.name})",
+                               10.0 + legend_width, 6.0)
+    ax, ax_r = axes_grid(fig, 2, 1, left=0.8, right=0.25 + legend_width, top=0.4 + extra,
                          bottom=0.55, hspace=0.45, height_ratios=[3.0, 1.0], sharex="col")[:, 0]
     n = buckets_for_width(axes_width(ax))
     idx = union_indices(np.column_stack([edges, col["input"]]), n)
@@ -214,8 +214,6 @@ def plot_energy(result: Result) -> Figure:
     ax.legend(handles[-1:] + handles[:-1], labels[-1:] + labels[:-1], fontsize=LEGEND_SIZE,
               loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False)
     ax.grid(True, alpha=0.3)
-    ax.set_title(f"{result.model.name}: energy balance ({result.motion.name})",
-                 fontsize=TITLE_SIZE + 1)
     history(ax_r, t, closure * err.factor, color="r", lw=0.8)
     ax_r.set_ylabel(f"input − sum [{err.unit}]")
     ax_r.set_xlabel("time [s]")

@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.plot import new_figure
+from pounding.plot.layout import place_legend
 
 if TYPE_CHECKING:  # `pounding spectrum` imports this module when drawing only
     from matplotlib.figure import Figure
@@ -62,8 +63,8 @@ def plot_spectra(periods: NDArray[np.float64],
     ax.set_ylabel("pseudo-acceleration PSA [g]")
     ax.set_ylim(bottom=0.0)
     ax.grid(True, which="both", lw=0.3, alpha=0.6)
-    ax.legend(fontsize=8)
     ax.set_title(title)
+    place_legend(ax, fontsize=8)  # where it hides no curve, else beside the axes
     return fig
 
 

@@ -10,12 +10,13 @@ from __future__ import annotations
 import base64
 import io
 import math
-import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
+
+from pounding.units import unit_of  # re-exported: the unit of a results column
 
 __all__ = ["Block", "Cards", "Figure", "Note", "Pre", "Section", "Table", "kv_table", "num",
            "png_bytes", "unit_of", "with_unit"]
@@ -62,39 +63,6 @@ def num(v: Any, digits: int = 4) -> str:
 def with_unit(label: str, unit: str | None) -> str:
     """``label [unit]``, or ``label`` alone when ``unit`` is None or empty."""
     return f"{label} [{unit}]" if unit else label
-
-
-# column-name suffix → unit, longest first (sweep results and summaries name their unit)
-_SUFFIX_UNITS: tuple[tuple[str, str], ...] = (
-    ("_m_s2", "m/s²"), ("_m_s", "m/s"), ("_N_m", "N/m"), ("_kg", "kg"), ("_Hz", "Hz"),
-    ("_pct", "%"), ("_N", "N"), ("_J", "J"), ("_m", "m"), ("_s", "s"), ("_g", "g"),
-)
-_NAME_UNITS: dict[str, str] = {
-    "gap": "m", "gaps": "m", "k": "N/m", "k_h": "N/m^n", "e": "-", "zeta": "-", "chi": "-",
-    "n": "-", "delta_m": "m", "mass": "kg", "period": "s", "stiffness": "N/m", "height": "m",
-    "pga_g": "g", "scale": "-", "duration": "s", "dt": "s", "rtol": "-", "n_impacts": "-",
-    "impacts": "-", "energy_balance_error": "-", "restitution": "-", "drift_ratio": "-",
-    "case": "-", "touched": "-", "pounding": "-", "peak_drift_ratio": "-",
-    "impact_overflow": "-", "case_index": "-",
-}
-
-
-def unit_of(column: str, units: dict[str, str] | None = None) -> str | None:
-    """The unit of a results column: stated in the metadata, else from its name
-    (``peak_contact_force_N`` → N, ``gap`` → m); None if not known."""
-    if units and column in units:
-        return units[column]
-    base = column.split(".")[-1]
-    base = re.sub(r"_B\d+F\d+$", "", base)  # per-floor columns: <measure>_B1F2
-    if base in _NAME_UNITS:
-        return _NAME_UNITS[base]
-    m = re.search(r"\[([^\]]+)\]\s*$", column)
-    if m:
-        return None  # the name already carries its unit
-    for suffix, unit in _SUFFIX_UNITS:
-        if base.endswith(suffix):
-            return unit
-    return None
 
 
 # =============================================================================== blocks

@@ -21,14 +21,6 @@ CONTACT_UNITS: dict[str, str] = {
 """Units of the keys of ``[contact]`` (``docs/running.md``)."""
 
 
-def _damping_text(d: Any) -> str:
-    name = type(d).__name__
-    fields = getattr(d, "__dataclass_fields__", {})
-    values = {k: getattr(d, k) for k in fields}
-    args = ", ".join(f"{k}={num(v) if isinstance(v, float) else v}" for k, v in values.items())
-    return f"{name}({args})"
-
-
 def _range_text(values: Sequence[float], unit: str) -> str:
     v = np.asarray(values, dtype=float)
     if v.size == 0:
@@ -58,7 +50,7 @@ def model_section(r: RunFolder) -> list[Block]:
             t.add(f"B{b + 1}", bl.name or "–", bl.n, float(bl.total_height),
                   float(bl.total_mass), _range_text(bl.masses, "kg"),
                   _range_text(bl.stiffnesses, "N/m"), float(bl.fundamental_period), periods,
-                  _damping_text(bl.damping))
+                  bl.damping.readable())
         parts.append(t)
     else:
         builds = r.toml.get("building", [])
@@ -78,7 +70,7 @@ def model_section(r: RunFolder) -> list[Block]:
     if r.built is not None and r.built.model.contacts:
         t = Table(("contact", "elevation [m]", "gap [m]", "law"), caption="Contact elements")
         for c in r.built.model.contacts:
-            t.add(c.label, c.elevation, c.gap, repr(c.law))
+            t.add(c.label, c.elevation, c.gap, c.law.readable())
         parts.append(t)
     solver = r.toml.get("solver")
     if isinstance(solver, dict) and solver:

@@ -21,12 +21,13 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, is_dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.structure.modal import eigenmodes, square_pair
+from pounding.units import format_value
 from pounding.validation import in_range, positive
 
 __all__ = ["DampingModel", "ModalDamping", "RayleighDamping", "rayleigh_coefficients"]
@@ -118,6 +119,14 @@ class DampingModel(ABC):
         """
         return None
 
+    def readable(self) -> str:
+        """One line for people: the model and its parameters (the default: the class name
+        and every field in three significant digits)."""
+        values = ([(f.name, getattr(self, f.name)) for f in fields(self)]  # type: ignore[arg-type]
+                  if is_dataclass(self) else [])
+        return f"{type(self).__name__}: " + ", ".join(
+            f"{k} = {format_value(v) if isinstance(v, float) else v}" for k, v in values)
+
 
 @dataclass(frozen=True)
 class RayleighDamping(DampingModel):
@@ -197,6 +206,19 @@ class RayleighDamping(DampingModel):
         """True if anchored at two periods rather than two natural modes."""
         return self.period_i is not None
 
+    def readable(self) -> str:
+        """``Rayleigh, ζ = 0.05 at modes 1 and 2``, ``Rayleigh, ζ = 0.05 at 0.8 s and 0.02
+        at 0.2 s``."""
+        zi, zj = format_value(self.zeta_i), format_value(self.zeta_j)  # type: ignore[arg-type]
+        if self.by_periods:
+            at_i, at_j = (format_value(t, "s") for t in (self.period_i, self.period_j))
+            where = (f"at {at_i} and {at_j}" if zi == zj
+                     else f"at {at_i} and {zj} at {at_j}")
+        else:
+            where = (f"at modes {self.mode_i} and {self.mode_j}" if zi == zj
+                     else f"at mode {self.mode_i} and {zj} at mode {self.mode_j}")
+        return f"Rayleigh, ζ = {zi} {where}"
+
     def check(self, n_dof: int) -> None:
         """Raise if an anchor mode does not exist in a structure with ``n_dof`` DOFs."""
         if self.by_periods:
@@ -266,6 +288,10 @@ class ModalDamping(DampingModel):
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "zeta", _ratio("zeta", self.zeta))
+
+    def readable(self) -> str:
+        """``modal, ζ = 0.05 in every mode``."""
+        return f"modal, ζ = {format_value(self.zeta)} in every mode"
 
     def matrix(self, M: ArrayLike, K: ArrayLike) -> NDArray[np.float64]:
         """``C = M Φ diag(2ζωₙ/Mₙ) Φᵀ M`` [N·s/m], shape (n, n)."""
