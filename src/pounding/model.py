@@ -88,7 +88,7 @@ class ContactSpec:
         ``e`` goes through, and for Kelvin–Voigt whether the dashpot may pull."""
         from pounding.contact.factory import default_formula
 
-        units = {"k": " N/m", "k_h": " N/m^n", "c": " N·s/m", "delta_m": " m"}
+        units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m"}
         formula = self.formula or default_formula(self.law, self.tension)
         parts = []
         for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m"):

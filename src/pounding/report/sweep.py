@@ -143,19 +143,28 @@ def _plots_section(sw: SweepFolder) -> list[Block]:
 
 def _sweep_plot(sw: SweepFolder, measure: str, param: str) -> bytes:
     """``measure`` against ``param``: each case, and the mean with its min … max band over
-    the other parameters."""
+    the other parameters; axes named with their units in readable multiples
+    (:func:`pounding.plot.sweep.axis_label`), no offset notation, the legend where it hides
+    no data."""
     from matplotlib.figure import Figure as MplFigure
 
+    from pounding.plot.layout import place_legend, plain_ticks
+    from pounding.plot.sweep import axis_label
+    from pounding.units import column_name
+
     df = sw.df
-    y = df[measure].astype(float)
+    y_label, y_scale = axis_label(measure, df[measure])
+    y = df[measure].astype(float) * y_scale.factor
     x_raw = df[param]
     numeric_x = pd.api.types.is_numeric_dtype(x_raw) and not pd.api.types.is_bool_dtype(x_raw)
     fig = MplFigure(figsize=(7.5, 3.6))
     ax = fig.subplots()
     if numeric_x:
-        x = x_raw.astype(float)
+        x_label, x_scale = axis_label(param, x_raw)
+        x = x_raw.astype(float) * x_scale.factor
         ticks = None
     else:
+        x_label = column_name(param)
         cats = sorted(x_raw.astype(str).unique())
         x = x_raw.astype(str).map({c: i for i, c in enumerate(cats)}).astype(float)
         ticks = cats
@@ -169,10 +178,12 @@ def _sweep_plot(sw: SweepFolder, measure: str, param: str) -> bytes:
     if ticks is not None:
         ax.set_xticks(range(len(ticks)))
         ax.set_xticklabels(ticks, rotation=30 if len(ticks) > 4 else 0, fontsize=8)
-    ax.set_xlabel(sw.label(param))
-    ax.set_ylabel(sw.label(measure))
+    ax.set_xlabel(x_label)
+    ax.set_ylabel(y_label)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7, loc="best")
-    ax.set_title(f"{measure} against {param}", fontsize=9, loc="left")
+    ax.set_title(f"{column_name(measure)} against {column_name(param)}", fontsize=9,
+                 loc="left")
     fig.tight_layout()
+    place_legend(ax, fontsize=7)
+    plain_ticks(fig)
     return png_bytes(fig)
