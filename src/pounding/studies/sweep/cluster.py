@@ -19,11 +19,17 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
-__all__ = ["SCHEDULER_TIMEOUT"]
+__all__ = ["SCHEDULER_TIMEOUT", "WORKER_MALLOC_ENV"]
 
 SCHEDULER_TIMEOUT = 10.0
 """Seconds to wait for a Dask scheduler given by address to answer (Dask's default is 30):
 also how long a client tries to reconnect to a scheduler it lost."""
+
+
+WORKER_MALLOC_ENV: dict[str, int] = {"MALLOC_TRIM_THRESHOLD_": 1 << 30,
+                                     "MALLOC_MMAP_THRESHOLD_": 1 << 27}
+"""glibc's settings in the local cluster's workers (see :func:`_local_config`): freed
+memory is kept for reuse, so a case's output arrays do not fault in afresh."""
 
 
 def _auto_batch(n_pending: int, n_workers: int) -> int:
@@ -120,8 +126,7 @@ def _local_config() -> Any:
     # each worker one BLAS/OpenMP thread.) The statistical profiler, which samples every
     # thread each 10 ms, is measurable on ms-long cases: off.
     environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}))
-    environ["MALLOC_TRIM_THRESHOLD_"] = 1 << 30
-    environ["MALLOC_MMAP_THRESHOLD_"] = 1 << 27
+    environ.update(WORKER_MALLOC_ENV)
     return dask.config.set({"distributed.worker.profile.enabled": False,
                             "distributed.nanny.pre-spawn-environ": environ})
 
