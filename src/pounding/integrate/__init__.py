@@ -228,7 +228,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     pen_out = np.empty((nt, nc))
     f_out = np.zeros((nt, nc))
     vs_out = np.empty((nt, ns))
-    e_out = np.empty((nt, ENERGY_COLUMNS))
+    e_out = np.empty((nt, ENERGY_COLUMNS), order="F")  # (each energy's history contiguous)
     imp = np.full((cap, IMP_COLUMNS), np.nan)
     cpeak = np.zeros(nc)
     cpeak_t = np.zeros(nc)
