@@ -109,6 +109,9 @@ def default_step_budget(n_grid: int) -> int:
     """
     return 100 * n_grid + 100_000
 
+_kernel_loaded: list[bool] = []
+"""Non-empty once this process has called the compiled kernel (loaded it)."""
+
 DEFAULT_RTOL: float = 1e-8
 """Default relative tolerance of the RK steps taken through contacts."""
 
@@ -244,10 +247,12 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
             committed, sstate, wc, w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out,
             pen_out, f_out, vs_out, e_out, imp, cpeak, cpeak_t, ccount, pk,
             *kernel_scratch(km, x.size))
-    # An empty chunk first: the process's first call loads the compiled kernel from numba's
-    # cache (~0.3 s), which is not integrating and is kept out of stats.wall_time (a few µs
-    # once loaded).
-    integrate_chunk(0, 0, *args)
+    # An empty chunk first, in a process that has not loaded the compiled kernel yet: that
+    # call loads it from numba's cache (~0.3 s), which is not integrating and is kept out of
+    # stats.wall_time.
+    if not _kernel_loaded:
+        integrate_chunk(0, 0, *args)
+        _kernel_loaded.append(True)
     start = time.perf_counter()
     for k0 in range(0, nt - 1, chunk):
         k1 = min(nt - 1, k0 + chunk)

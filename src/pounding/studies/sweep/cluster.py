@@ -32,9 +32,27 @@ WORKER_MALLOC_ENV: dict[str, int] = {"MALLOC_TRIM_THRESHOLD_": 1 << 30,
 memory is kept for reuse, so a case's output arrays do not fault in afresh."""
 
 
+MIN_BATCH = 10
+"""Fewest cases of an automatic batch (a case takes a few ms; a batch costs the client a
+Parquet part)."""
+
+
 def _auto_batch(n_pending: int, n_workers: int) -> int:
     """About 8 batches per worker, 10 … 200 cases each (a case takes a few ms)."""
-    return max(10, min(200, math.ceil(n_pending / max(1, 8 * n_workers))))
+    return max(MIN_BATCH, min(200, math.ceil(n_pending / max(1, 8 * n_workers))))
+
+
+def _batch_sizes(n_pending: int, n_workers: int, size: int, taper: bool) -> list[int]:
+    """Cases of each batch, in order: ``size`` each; with ``taper`` the last ones shrink
+    (each at most the cases left over twice the workers, at least :data:`MIN_BATCH`), so
+    the workers finish together instead of one waiting on the other's last large batch."""
+    sizes = []
+    left = n_pending
+    while left > 0:
+        s = min(size, max(MIN_BATCH, math.ceil(left / (2 * n_workers)))) if taper else size
+        sizes.append(min(s, left))
+        left -= sizes[-1]
+    return sizes
 
 
 def _silence_dask() -> None:
