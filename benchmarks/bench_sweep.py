@@ -188,6 +188,11 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
     run = [sw["rate_run"] / k2["kernel_rate"] for _, k2, sw in runs]
     print(f"{'end to end / kernel (2 processes)':<40} {spread([100 * x for x in e2e]):>11}%")
     print(f"{'running / kernel (2 processes)':<40} {spread([100 * x for x in run]):>11}%")
+    # other jobs on a shared machine slow one measurement and not the next: the best of
+    # each over the repeats is the nearest to an idle machine
+    best_k2 = max(k2["kernel_rate"] for _, k2, _ in runs)
+    best_sw = max(sw["rate_wall"] for _, _, sw in runs)
+    print(f"{'best end to end / best kernel (2 proc.)':<40} {100 * best_sw / best_k2:>11.0f}%")
     print(f"sweep wall time [s]: {spread([sw['wall'] for _, _, sw in runs], '.2f')}")
 
 
