@@ -17,18 +17,21 @@ Three measurements, printed as a table:
      each built and simulated as a sweep case is, in 1 and in 2 processes at once (with
      the workers' memory settings); cases per second of compiled kernel alone
      (``Result.stats.wall_time``, summed per process, rates added over the processes),
-     and of the whole case in that process (build, simulate, row);
+     and of the whole case in that process (build, simulate, row). On 2 processes it is
+     measured just before and just after the sweep, and the mean taken;
    * the sweep end to end on ``--workers`` (2) workers: cases / wall time (cluster start,
      warm-up, all cases, consolidation), and over the running phase;
    * the ratio end-to-end rate / kernel rate on 2 processes, and the spread of each
-     number over the repeats.
+     number over the repeats; and, since CPU time is what other jobs on a shared machine
+     cannot inflate, the kernel's share of all the CPU time the sweep used (its client,
+     scheduler and workers; the kernel's CPU per case from the runs on 2 processes).
 
 Run from the repository root::
 
     python benchmarks/bench_sweep.py                 # everything
     python benchmarks/bench_sweep.py --only big      # just the 10,000 cases
     python benchmarks/bench_sweep.py --cases 2000    # a smaller "big" sweep
-    python benchmarks/bench_sweep.py --only ratio --repeat 3   # sweep vs kernel
+    python benchmarks/bench_sweep.py --only ratio --repeat 3 --kernel-every 3
 
 The machine is shared and timings are noisy: repeat (``--repeat``) and take the best, or
 (``ratio``) read the spread.
@@ -39,6 +42,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -87,6 +91,7 @@ def run_once(n_cases: int, workers: int | None, scheduler: str | None, tmp: Path
     from pounding.studies.sweep import run_sweep
 
     t0 = time.perf_counter()
+    cpu0 = cpu_seconds()
     out = tmp / f"bench-{n_cases}-{workers}-{scheduler}"
     shutil.rmtree(out, ignore_errors=True)
     sweep = bench_sweep(n_cases, out, trim)
@@ -95,7 +100,14 @@ def run_once(n_cases: int, workers: int | None, scheduler: str | None, tmp: Path
     assert res.n_errors == 0, res
     return {"cases": res.n_cases, "workers": res.n_workers, "batch": res.batch_size,
             "wall": wall, "run": res.run_time, "rate_run": res.rate,
-            "rate_wall": res.n_cases / wall}
+            "rate_wall": res.n_cases / wall, "cpu": cpu_seconds() - cpu0}
+
+
+def cpu_seconds() -> float:
+    """CPU seconds (user + system) of this process and of its children that have ended
+    (a local cluster's workers, once it is closed)."""
+    return sum(getattr(resource.getrusage(who), f) for who in
+               (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN) for f in ("ru_utime", "ru_stime"))
 
 
 def plain_case(trim: float = 20.0) -> float:
@@ -114,6 +126,7 @@ def kernel_part(n_cases: int, part: int, parts: int, every: int, trim: float = 2
     """In this process, cases ``part``, ``part + parts``, … of every ``every``-th case of
     the sweep, each built, simulated and reduced to its row as a sweep case is: the cases
     run, seconds in the compiled kernel (``Result.stats.wall_time``) and in all."""
+    import pounding.integrate as integrate
     from pounding.studies.sweep import warm_up
     from pounding.studies.sweep.execute import case_result
     from pounding.studies.sweep.measures import result_row
@@ -121,6 +134,15 @@ def kernel_part(n_cases: int, part: int, parts: int, every: int, trim: float = 2
     warm_up()
     sweep = bench_sweep(n_cases, Path(tempfile.gettempdir()) / "bench-sweep-kernel", trim)
     cases = sweep.cases[::every][part::parts]
+    compiled = integrate.integrate_chunk
+    kernel_cpu = [0.0]
+
+    def timed(*args: object) -> None:  # the kernel's CPU time (not stolen by other jobs)
+        c0 = time.thread_time()
+        compiled(*args)
+        kernel_cpu[0] += time.thread_time() - c0
+
+    integrate.integrate_chunk = timed
     kernel = total = 0.0
     for c in cases:
         t0 = time.perf_counter()
@@ -128,7 +150,7 @@ def kernel_part(n_cases: int, part: int, parts: int, every: int, trim: float = 2
         result_row(result)
         total += time.perf_counter() - t0
         kernel += result.stats.wall_time
-    return {"n": len(cases), "kernel": kernel, "total": total}
+    return {"n": len(cases), "kernel": kernel, "total": total, "kernel_cpu": kernel_cpu[0]}
 
 
 def kernel_rate(n_cases: int, processes: int, every: int) -> dict:
@@ -150,7 +172,8 @@ def kernel_rate(n_cases: int, processes: int, every: int) -> dict:
         parts.append(json.loads(out.splitlines()[-1]))
     return {"n": sum(x["n"] for x in parts),
             "kernel_rate": sum(x["n"] / x["kernel"] for x in parts),
-            "case_rate": sum(x["n"] / x["total"] for x in parts)}
+            "case_rate": sum(x["n"] / x["total"] for x in parts),
+            "kernel_cpu": sum(x["kernel_cpu"] for x in parts) / sum(x["n"] for x in parts)}
 
 
 def spread(values: list[float], fmt: str = ".0f") -> str:
@@ -164,11 +187,18 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
     runs = []
     for i in range(repeat):
         k1 = kernel_rate(n_cases, 1, every)
-        k2 = kernel_rate(n_cases, 2, every)
+        before = kernel_rate(n_cases, 2, every)
         sw = run_once(n_cases, workers, None, tmp)
+        after = kernel_rate(n_cases, 2, every)
+        # the kernel on 2 processes just before and just after the sweep: other jobs on a
+        # shared machine come and go, and the mean of the two brackets the sweep in time
+        k2 = {key: (before[key] + after[key]) / 2
+              for key in ("kernel_rate", "case_rate", "kernel_cpu")}
+        k2["n"] = before["n"]
         runs.append((k1, k2, sw))
         print(f"repeat {i + 1}: kernel {k1['kernel_rate']:.0f} / {k2['kernel_rate']:.0f} cases/s "
-              f"(1 / 2 processes, {k2['n']} cases), whole cases in-process "
+              f"(1 / 2 processes; 2: {before['kernel_rate']:.0f} before the sweep, "
+              f"{after['kernel_rate']:.0f} after; {k2['n']} cases), whole cases in-process "
               f"{k1['case_rate']:.0f} / {k2['case_rate']:.0f}; sweep of {sw['cases']} on "
               f"{sw['workers']} workers {sw['wall']:.2f} s: {sw['rate_wall']:.0f} cases/s "
               f"end to end, {sw['rate_run']:.0f} running; end to end / kernel (2 processes) "
@@ -194,6 +224,14 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
     best_sw = max(sw["rate_wall"] for _, _, sw in runs)
     print(f"{'best end to end / best kernel (2 proc.)':<40} {100 * best_sw / best_k2:>11.0f}%")
     print(f"sweep wall time [s]: {spread([sw['wall'] for _, _, sw in runs], '.2f')}")
+    # CPU time is what other jobs cannot inflate: the kernel's share of all the CPU the
+    # sweep used (client, scheduler and workers), the kernel's CPU per case taken from the
+    # runs on 2 processes
+    share = [k2["kernel_cpu"] * sw["cases"] / sw["cpu"] for _, k2, sw in runs]
+    print(f"sweep CPU per case (all processes) [ms]: "
+          f"{spread([1e3 * sw['cpu'] / sw['cases'] for _, _, sw in runs], '.2f')}; kernel CPU "
+          f"per case [ms]: {spread([1e3 * k2['kernel_cpu'] for _, k2, _ in runs], '.2f')}; "
+          f"kernel share of the sweep's CPU: {spread([100 * x for x in share])}%")
 
 
 def main() -> None:
