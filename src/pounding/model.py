@@ -30,6 +30,7 @@ from pounding.contact.base import ContactLaw
 from pounding.contact.dispatch import PARAMS_SIZE
 from pounding.contact.factory import make_law
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
+from pounding.memo import Memo
 from pounding.structure import ShearBuilding
 from pounding.structure.assembly import AssembledSystem, assemble, shared_levels
 from pounding.validation import non_negative, positive
@@ -102,10 +103,22 @@ class ContactSpec:
         return f"{self.law}: {', '.join(parts)}" if parts else self.law
 
     def build(self, m1: float, m2: float) -> ContactLaw:
-        """The contact law between two floors of masses ``m1`` and ``m2`` [kg]."""
-        return make_law(self.law, k=self.k, k_h=self.k_h, e=self.e, formula=self.formula,
-                        c=self.c, zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n,
-                        tension=self.tension, delta_m=self.delta_m, a=self.a)
+        """The contact law between two floors of masses ``m1`` and ``m2`` [kg].
+
+        Remembered (:data:`CONTACT_LAWS`, keyed by the spec's and the masses' exact
+        values): the cases of a sweep that share a law build it once. (A law is immutable.)
+        """
+        return CONTACT_LAWS.get((repr(self), repr(m1), repr(m2)), lambda: make_law(
+            self.law, k=self.k, k_h=self.k_h, e=self.e, formula=self.formula, c=self.c,
+            zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n, tension=self.tension,
+            delta_m=self.delta_m, a=self.a))
+
+
+CONTACT_LAWS = Memo(max_items=256)
+"""Contact laws made by :meth:`ContactSpec.build`."""
+
+SYSTEMS = Memo(max_items=64, max_bytes=256 << 20)
+"""Assembled systems (:attr:`PoundingModel.system`), by the identity of the buildings."""
 
 
 @dataclass(frozen=True)
@@ -267,6 +280,13 @@ def contact_points(a: ShearBuilding, b: ShearBuilding, floor_to_column: bool = T
     return rows
 
 
+def _read_only(system: AssembledSystem) -> AssembledSystem:
+    """The system with its arrays made read-only (it is shared)."""
+    for a in system:
+        a.setflags(write=False)
+    return system
+
+
 @dataclass(frozen=True)
 class PoundingModel:
     """Buildings in a row, the gaps between them, and the contact law.
@@ -323,8 +343,14 @@ class PoundingModel:
 
     @cached_property
     def system(self) -> AssembledSystem:
-        """Block-diagonal M, C, K, influence vector and DOF offsets of all buildings."""
-        return assemble(self.buildings)
+        """Block-diagonal M, C, K, influence vector and DOF offsets of all buildings
+        (read-only).
+
+        Assembled once for the same building objects (:data:`SYSTEMS`) and shared by every
+        model of them: the cases of a sweep that change only gaps, contact law or record.
+        """
+        return SYSTEMS.get(tuple(map(id, self.buildings)), lambda: _read_only(assemble(
+            self.buildings)), size=lambda s: 8 * 3 * s.n_dof ** 2, keep=self.buildings)
 
     @cached_property
     def contacts(self) -> tuple[Contact, ...]:

@@ -248,13 +248,15 @@ class Result:
         (n_c,): how much the impacts raise the shear the column must carry (1: not at all;
         NaN: floor to floor)."""
         out = np.full(len(self.model.contacts), np.nan)
+        struck = [c for c in self.model.contacts if c.struck is not None]
+        if not struck:
+            return out  # floor to floor only: no storey-shear history needed
         peak_v = peak_abs(self.storey_shear)
         offsets = self.model.system.offsets
-        for c in self.model.contacts:
+        for c in struck:
             pt = c.struck
-            if pt is not None:
-                v = peak_v[offsets[pt.building] + pt.upper]
-                out[c.index] = self.peak_column_shear[c.index] / v if v > 0 else np.inf
+            v = peak_v[offsets[pt.building] + pt.upper]
+            out[c.index] = self.peak_column_shear[c.index] / v if v > 0 else np.inf
         return out
 
     # ----------------------------------------------------------------- impacts and peaks

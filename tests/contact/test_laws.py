@@ -390,3 +390,13 @@ def test_readable_names_every_field_with_its_unit():
             unit = law.field_unit(field)
             assert unit, (name, field)  # every field has its unit ("-": none)
             assert (unit == "-") or f" {unit}" in text, (name, field, text)
+
+
+@pytest.mark.parametrize("name", LAW_IDS)
+@pytest.mark.parametrize("delta", [2e-4, 1e-3])
+def test_secant_stiffness_is_the_compiled_backbone_over_delta(name, delta):
+    # The Python secant stiffness (which sets the contact period checked before a run)
+    # against the compiled law's force at zero rate, loading from a fresh onset: F / δ.
+    law = LAWS_UNDER_TEST[name]
+    force = law.trial(delta, 0.0).force
+    assert law.secant_stiffness(delta) == pytest.approx(force / delta, rel=1e-12)

@@ -307,7 +307,8 @@ def test_every_output_row_is_written(case, el_centro_8s, monkeypatch):
     from pounding.hysteresis import Bilinear
 
     monkeypatch.setattr(integrate.np, "empty",
-                        lambda shape, dtype=float: np.full(shape, np.nan, dtype=dtype))
+                        lambda shape, dtype=float, order="C": np.full(shape, np.nan, dtype=dtype,
+                                                                      order=order))
     model = sdof_pair(KV)
     mode = "rk" if case == "rk" else "auto"
     if case == "yielding":

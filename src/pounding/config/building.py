@@ -8,6 +8,7 @@ from typing import Annotated, Any
 from pydantic import Field, field_validator, model_validator
 
 from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
+from pounding.memo import Memo
 from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding
 from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
 from pounding.structure.damping import DampingModel
@@ -120,6 +121,16 @@ class StoreyLawConfig(Section):
         return STOREY_LAWS[self.type](**kw)
 
 
+BUILDINGS = Memo(max_items=64, max_bytes=256 << 20)
+"""Buildings made by :meth:`BuildingConfig.build`, by configuration (as JSON, every field)
+and default name."""
+
+
+def _building_bytes(b: ShearBuilding) -> int:
+    """Bytes a building holds: its mass, stiffness and damping matrices."""
+    return 3 * 8 * b.n * b.n
+
+
 _SDOF_KEYS = ("mass", "stiffness", "period", "height")
 _UNIFORM_KEYS = ("n_storeys", "mass", "stiffness", "period", "height")
 _STOREY_KEYS = ("masses", "stiffnesses", "heights", "height", "period")
@@ -213,7 +224,16 @@ class BuildingConfig(Section):
                 "storeys": len(self.masses or ())}[self.kind]
 
     def build(self, default_name: str) -> ShearBuilding:
-        """The :class:`ShearBuilding` (domain errors propagate unprefixed)."""
+        """The :class:`ShearBuilding` (domain errors propagate unprefixed).
+
+        Remembered per configuration and default name (:data:`BUILDINGS`): the cases of a
+        sweep that do not change a building share it, and its matrices and modal analysis
+        are made once. (A building is immutable.)
+        """
+        return BUILDINGS.get((self.model_dump_json(), default_name),
+                             lambda: self._build(default_name), size=_building_bytes)
+
+    def _build(self, default_name: str) -> ShearBuilding:
         name = self.name or default_name
         damping = self.damping.build() if self.damping is not None else None
         h = self.height if self.height is not None else 3.0

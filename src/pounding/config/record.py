@@ -11,6 +11,7 @@ from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_
 
 from pounding.config.base import Pos, Section, field_error, fmt
 from pounding.ground_motion import GroundMotion, bundled_records, el_centro, load_bundled, read_record
+from pounding.memo import Memo
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
 SA_DAMPING = 0.05
@@ -24,6 +25,17 @@ def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float |
     """:func:`read_record`, remembered per file version (modification time and size), so a
     sweep reading one record for thousands of cases parses it once per process."""
     return read_record(path, dt=dt, units=units)
+
+
+@functools.lru_cache(maxsize=1)
+def _bundled_names() -> frozenset[str]:
+    """Every name of a bundled record: file names and their stems (read once: the records
+    ship with the package)."""
+    return frozenset([*bundled_records(), *(Path(n).stem for n in bundled_records())])
+
+
+RECORDS = Memo(max_items=64, max_bytes=128 << 20)
+"""Motions made by :meth:`RecordConfig.load`."""
 
 
 class RecordConfig(Section):
@@ -63,8 +75,8 @@ class RecordConfig(Section):
     def _known_bundled(cls, v: str | None) -> str | None:
         if v is None:
             return v
-        stems = [Path(n).stem for n in bundled_records()]
-        if v.lower() not in EL_CENTRO_ALIASES and v not in stems and v not in bundled_records():
+        if v.lower() not in EL_CENTRO_ALIASES and v not in _bundled_names():
+            stems = [Path(n).stem for n in bundled_records()]
             raise ValueError(f"unknown bundled record {v!r}; choose one of "
                              f"{', '.join(('el_centro', *stems))}")
         return v
@@ -122,15 +134,27 @@ class RecordConfig(Section):
 
     def load(self) -> GroundMotion:
         """Read the record and apply ``duration``, then ``scale`` / ``pga_g`` / ``sa_g`` /
-        ``saavg_g``."""
+        ``saavg_g``.
+
+        Remembered (:data:`RECORDS`, keyed by every field, the file resolved and its
+        version): the cases of a sweep that share a record share one (immutable) motion,
+        and with it its samples on the output grid
+        (:func:`pounding.integrate.grid.ground_on_grid_memo`).
+        """
+        path = self.path
+        version = None
+        if path is not None and path.exists():
+            stat = path.stat()
+            version = (stat.st_mtime_ns, stat.st_size)
+        return RECORDS.get((self.model_dump_json(), str(path), version),
+                           lambda: self._load(path, version), size=lambda gm: gm.accel.nbytes)
+
+    def _load(self, path: Path | None, version: tuple[int, int] | None) -> GroundMotion:
         if self.bundled is not None:
             gm = (el_centro() if self.bundled.lower() in EL_CENTRO_ALIASES
                   else load_bundled(self.bundled))
         else:
-            path = self.path
-            stat = path.stat() if path is not None and path.exists() else None
-            gm = _read_record_cached(path, None if stat is None else (stat.st_mtime_ns, stat.st_size),
-                                     self.dt, self.units)
+            gm = _read_record_cached(path, version, self.dt, self.units)
         if self.duration is not None:
             gm = gm.trimmed(self.duration)
         if self.scale is not None:

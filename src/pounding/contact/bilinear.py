@@ -72,6 +72,13 @@ class BilinearImpact(ContactLaw):
         object.__setattr__(self, "K2", k2)
         object.__setattr__(self, "delta_y", positive("delta_y", self.delta_y))
 
+    def secant_stiffness(self, delta: float) -> float:
+        """Secant stiffness F/δ of the first loading at penetration ``delta`` [N/m]: ``K1``
+        up to ``delta_y``, then ``(K1 δy + K2 (δ − δy)) / δ``."""
+        if delta <= self.delta_y:
+            return self.K1
+        return (self.K1 * self.delta_y + self.K2 * (delta - self.delta_y)) / delta
+
     def params(self) -> np.ndarray:
         return np.array([self.K1, self.K2, self.delta_y])
 

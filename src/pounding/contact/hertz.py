@@ -99,6 +99,10 @@ class Hertz(ContactLaw):
         object.__setattr__(self, "k_h", positive("k_h", self.k_h))
         object.__setattr__(self, "n", in_range("n", self.n, 1.0, 3.0))
 
+    def secant_stiffness(self, delta: float) -> float:
+        """Elastic secant stiffness F/δ at penetration ``delta`` [N/m]: ``k_h δ^(n−1)``."""
+        return self.k_h * delta ** (self.n - 1.0)
+
     def params(self) -> np.ndarray:
         return np.array([self.k_h, self.n])
 
@@ -141,6 +145,10 @@ class HuntCrossley(ContactLaw):
         object.__setattr__(self, "k_h", positive("k_h", self.k_h))
         object.__setattr__(self, "chi", non_negative("chi", self.chi))
         object.__setattr__(self, "n", in_range("n", self.n, 1.0, 3.0))
+
+    def secant_stiffness(self, delta: float) -> float:
+        """Elastic secant stiffness F/δ at penetration ``delta`` [N/m]: ``k_h δ^(n−1)``."""
+        return self.k_h * delta ** (self.n - 1.0)
 
     def params(self) -> np.ndarray:
         return np.array([self.k_h, self.n, self.chi])
@@ -203,6 +211,10 @@ class NonlinearViscoelastic(ContactLaw):
         object.__setattr__(self, "k_h", positive("k_h", self.k_h))
         object.__setattr__(self, "zeta", non_negative("zeta", self.zeta))
         object.__setattr__(self, "m_eff", positive("m_eff", self.m_eff))
+
+    def secant_stiffness(self, delta: float) -> float:
+        """Elastic secant stiffness F/δ at penetration ``delta`` [N/m]: ``k_h δ^0.5``."""
+        return self.k_h * delta ** 0.5
 
     def params(self) -> np.ndarray:
         return np.array([self.k_h, self.zeta, self.m_eff])

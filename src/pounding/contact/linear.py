@@ -86,6 +86,10 @@ class LinearSpring(ContactLaw):
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", positive("k", self.k))
 
+    def secant_stiffness(self, delta: float) -> float:
+        """Elastic secant stiffness F/δ at penetration ``delta`` [N/m]: ``k``."""
+        return self.k
+
     def params(self) -> np.ndarray:
         return np.array([self.k])
 
@@ -126,6 +130,10 @@ class KelvinVoigt(ContactLaw):
         object.__setattr__(self, "k", positive("k", self.k))
         object.__setattr__(self, "c", non_negative("c", self.c))
         object.__setattr__(self, "tension", bool(self.tension))
+
+    def secant_stiffness(self, delta: float) -> float:
+        """Elastic secant stiffness F/δ at penetration ``delta`` [N/m]: ``k``."""
+        return self.k
 
     def params(self) -> np.ndarray:
         return np.array([self.k, self.c, 1.0 if self.tension else 0.0])
@@ -193,6 +201,10 @@ class ModifiedKelvinVoigt(ContactLaw):
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", positive("k", self.k))
         object.__setattr__(self, "c", non_negative("c", self.c))
+
+    def secant_stiffness(self, delta: float) -> float:
+        """Elastic secant stiffness F/δ at penetration ``delta`` [N/m]: ``k``."""
+        return self.k
 
     def params(self) -> np.ndarray:
         return np.array([self.k, self.c])

@@ -100,9 +100,10 @@ class GroundMotion:
         return (self.npts - 1) * self.dt
 
     # ------------------------------------------------------------------ peaks
-    @property
+    @functools.cached_property
     def pga(self) -> float:
-        """Peak ground acceleration, ``max |a|`` [m/s²]."""
+        """Peak ground acceleration, ``max |a|`` [m/s²] (computed once: the record is
+        read-only)."""
         return float(np.max(np.abs(self.accel)))
 
     @property

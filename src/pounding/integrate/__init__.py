@@ -27,6 +27,7 @@ from pounding.ground_motion import GroundMotion
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
     HISTORY_MEMORY_FRACTION,
+    check_contact_periods,
     check_history_size,
     grid_step,
     ground_on_grid,
@@ -81,9 +82,9 @@ from pounding.validation import positive
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
-    "IntegrationError", "KernelModel", "band_storage", "check_history_size",
-    "choose_free_stepping", "default_step_budget", "floor_below", "grid_step",
-    "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
+    "IntegrationError", "KernelModel", "band_storage", "check_contact_periods",
+    "check_history_size", "choose_free_stepping", "default_step_budget", "floor_below",
+    "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
     "kernel_model", "kernel_scratch", "peak_margin", "physical_memory", "simulate",
 ]
 
@@ -108,6 +109,9 @@ def default_step_budget(n_grid: int) -> int:
     take hours, so it is stopped and reported instead.
     """
     return 100 * n_grid + 100_000
+
+_kernel_loaded: list[bool] = []
+"""Non-empty once this process has called the compiled kernel (loaded it)."""
 
 DEFAULT_RTOL: float = 1e-8
 """Default relative tolerance of the RK steps taken through contacts."""
@@ -168,6 +172,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
     check_history_size(model, t_end, step)
+    check_contact_periods(model, step)
     rtol = positive("rtol", rtol)
     h_max = step if h_max is None else positive("h_max", h_max)
     ag = ground_on_grid_memo(motion, step, t_end)
@@ -221,15 +226,17 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
     # The kernel writes every row after the first of these, so they are not zeroed first
     # (zeroing ~5 MB costs as much as a tenth of an SDOF pair's run when the memory is
-    # reused); f_out is: exact steps leave its zero rows untouched.
+    # reused); f_out is: exact steps leave its zero rows untouched. Nor is the impact
+    # table: the kernel writes every column of a row when the impact starts, and only the
+    # rows written are kept.
     u_out = np.empty((nt, n))
     v_out = np.empty((nt, n))
     acc_out = np.empty((nt, n))
     pen_out = np.empty((nt, nc))
     f_out = np.zeros((nt, nc))
     vs_out = np.empty((nt, ns))
-    e_out = np.empty((nt, ENERGY_COLUMNS))
-    imp = np.full((cap, IMP_COLUMNS), np.nan)
+    e_out = np.empty((nt, ENERGY_COLUMNS), order="F")  # (each energy's history contiguous)
+    imp = np.empty((cap, IMP_COLUMNS))
     cpeak = np.zeros(nc)
     cpeak_t = np.zeros(nc)
     ccount = np.zeros(nc, dtype=np.int64)
@@ -244,10 +251,12 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
             committed, sstate, wc, w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out,
             pen_out, f_out, vs_out, e_out, imp, cpeak, cpeak_t, ccount, pk,
             *kernel_scratch(km, x.size))
-    # An empty chunk first: the process's first call loads the compiled kernel from numba's
-    # cache (~0.3 s), which is not integrating and is kept out of stats.wall_time (a few µs
-    # once loaded).
-    integrate_chunk(0, 0, *args)
+    # An empty chunk first, in a process that has not loaded the compiled kernel yet: that
+    # call loads it from numba's cache (~0.3 s), which is not integrating and is kept out of
+    # stats.wall_time.
+    if not _kernel_loaded:
+        integrate_chunk(0, 0, *args)
+        _kernel_loaded.append(True)
     start = time.perf_counter()
     for k0 in range(0, nt - 1, chunk):
         k1 = min(nt - 1, k0 + chunk)

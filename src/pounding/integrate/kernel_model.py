@@ -10,6 +10,7 @@ from typing import NamedTuple
 import numpy as np
 
 from pounding.integrate.propagator import FreeStep
+from pounding.memo import Memo
 from pounding.model import PoundingModel
 
 EXACT_FREE_MAX_DOF: int = 400
@@ -61,7 +62,9 @@ class KernelModel(NamedTuple):
     :func:`pounding.integrate.kernel.integrate_chunk` for their meaning).
 
     Assembled once per model by :func:`kernel_model` and reused by every later run of it, so
-    a repeated run (a record sweep, a benchmark) pays only for its own outputs. The kernel
+    a repeated run (a record sweep, a benchmark) pays only for its own outputs; the part
+    that depends on the buildings alone is assembled once for the same building objects
+    (:data:`STRUCTURES`), so the cases of a sweep over gaps, contacts or records share it. The kernel
     only reads these arrays; they are left writeable because numba compiles a separate
     signature for read-only ones. Do not modify them.
     """
@@ -86,7 +89,9 @@ class KernelModel(NamedTuple):
     s_par: np.ndarray  #: storey-law constants
     s_zi: np.ndarray  #: index of each storey's z (−1 none)
     below: np.ndarray  #: DOF of the floor below each floor (−1: the ground)
-    free_steps: dict[float, FreeStep]  #: exact grid steps already built, by step [s]
+    #: exact grid steps already built, by step [s] (shared by the models of the same
+    #: buildings, :data:`STRUCTURES`)
+    free_steps: dict[float, FreeStep]
 
 
 _KERNEL_MODELS: dict[int, KernelModel] = {}
@@ -122,7 +127,23 @@ def kernel_model(model: PoundingModel) -> KernelModel:
     return km
 
 
+STRUCTURES = Memo(max_items=64, max_bytes=256 << 20)
+"""The buildings' part of a :class:`KernelModel` (everything but the contacts), by the
+identity of the buildings: the cases of a sweep that change only gaps, contact law or
+record share it, with its exact steps."""
+
+
 def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
+    structure = STRUCTURES.get(tuple(map(id, model.buildings)),
+                               lambda: _assemble_structure(model),
+                               size=lambda st: 8 * 8 * st["n"] ** 2, keep=model.buildings)
+    cdof, cw, cgap, ccode, cparams = model.contact_arrays()
+    return KernelModel(**structure, cdof=cdof, cw=cw, cgap=cgap, ccode=ccode,
+                       cparams=np.ascontiguousarray(cparams))
+
+
+def _assemble_structure(model: PoundingModel) -> dict:
+    """The fields of a :class:`KernelModel` that depend on the buildings alone."""
     sys_ = model.system
     M, C, r = sys_.M, sys_.C, sys_.r
     K = model.linear_stiffness()
@@ -131,14 +152,11 @@ def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
     bw = half_bandwidth(K, C)
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
-    cdof, cw, cgap, ccode, cparams = model.contact_arrays()
-    return KernelModel(n=r.size, nz=int(np.sum(s_zi >= 0)), bw=bw, K=K,
-                       k_band=band_storage(K, bw), c_band=band_storage(C, bw), m_diag=m_diag,
-                       mr=np.ascontiguousarray(M @ r), r=np.ascontiguousarray(r, dtype=float),
-                       cdof=cdof, cw=cw, cgap=cgap, ccode=ccode,
-                       cparams=np.ascontiguousarray(cparams), s_lo=s_lo, s_hi=s_hi,
-                       s_code=s_code, s_par=np.ascontiguousarray(s_par), s_zi=s_zi,
-                       below=floor_below(model), free_steps={})
+    return dict(n=r.size, nz=int(np.sum(s_zi >= 0)), bw=bw, K=K, k_band=band_storage(K, bw),
+                c_band=band_storage(C, bw), m_diag=m_diag, mr=np.ascontiguousarray(M @ r),
+                r=np.array(r, dtype=float), s_lo=s_lo, s_hi=s_hi, s_code=s_code,
+                s_par=np.ascontiguousarray(s_par), s_zi=s_zi, below=floor_below(model),
+                free_steps={})
 
 
 def floor_below(model: PoundingModel) -> np.ndarray:

@@ -29,9 +29,9 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.ground_motion import GroundMotion
@@ -39,6 +39,9 @@ from pounding.model import ContactSpec, PoundingModel
 from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
 from pounding.structure import ShearBuilding
 from pounding.validation import non_negative, positive
+
+if TYPE_CHECKING:
+    import pandas as pd  # imported by the method that returns a DataFrame (0.2 s)
 
 __all__ = [
     "RULES",
@@ -346,6 +349,8 @@ class GapStudy:
         the rules from the mean simulated peaks and (with ``spectrum``) from the spectrum,
         each with its ratio to the simulated max and to the simulated mean (NaN where the
         simulated gap is 0)."""
+        import pandas as pd
+
         df = pd.DataFrame({"pair": [f"B{p + 1}-B{p + 2}" for p in self.pair],
                            "contact": list(self.labels), "elevation_m": self.elevation})
         for name, row in zip(_unique(self.records), self.critical):

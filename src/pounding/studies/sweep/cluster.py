@@ -19,16 +19,40 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
-__all__ = ["SCHEDULER_TIMEOUT"]
+__all__ = ["SCHEDULER_TIMEOUT", "WORKER_MALLOC_ENV"]
 
 SCHEDULER_TIMEOUT = 10.0
 """Seconds to wait for a Dask scheduler given by address to answer (Dask's default is 30):
 also how long a client tries to reconnect to a scheduler it lost."""
 
 
+WORKER_MALLOC_ENV: dict[str, int] = {"MALLOC_TRIM_THRESHOLD_": 1 << 30,
+                                     "MALLOC_MMAP_THRESHOLD_": 1 << 27}
+"""glibc's settings in the local cluster's workers (see :func:`_local_config`): freed
+memory is kept for reuse, so a case's output arrays do not fault in afresh."""
+
+
+MIN_BATCH = 10
+"""Fewest cases of an automatic batch (a case takes a few ms; a batch costs the client a
+Parquet part)."""
+
+
 def _auto_batch(n_pending: int, n_workers: int) -> int:
     """About 8 batches per worker, 10 … 200 cases each (a case takes a few ms)."""
-    return max(10, min(200, math.ceil(n_pending / max(1, 8 * n_workers))))
+    return max(MIN_BATCH, min(200, math.ceil(n_pending / max(1, 8 * n_workers))))
+
+
+def _batch_sizes(n_pending: int, n_workers: int, size: int, taper: bool) -> list[int]:
+    """Cases of each batch, in order: ``size`` each; with ``taper`` the last ones shrink
+    (each at most the cases left over twice the workers, at least :data:`MIN_BATCH`), so
+    the workers finish together instead of one waiting on the other's last large batch."""
+    sizes = []
+    left = n_pending
+    while left > 0:
+        s = min(size, max(MIN_BATCH, math.ceil(left / (2 * n_workers)))) if taper else size
+        sizes.append(min(s, left))
+        left -= sizes[-1]
+    return sizes
 
 
 def _silence_dask() -> None:
@@ -120,8 +144,7 @@ def _local_config() -> Any:
     # each worker one BLAS/OpenMP thread.) The statistical profiler, which samples every
     # thread each 10 ms, is measurable on ms-long cases: off.
     environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}))
-    environ["MALLOC_TRIM_THRESHOLD_"] = 1 << 30
-    environ["MALLOC_MMAP_THRESHOLD_"] = 1 << 27
+    environ.update(WORKER_MALLOC_ENV)
     return dask.config.set({"distributed.worker.profile.enabled": False,
                             "distributed.nanny.pre-spawn-environ": environ})
 
@@ -150,6 +173,12 @@ def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
     from distributed import Client, LocalCluster
 
     disabled = logging.root.manager.disable
+    # Dask's client-side loggers in this process (a batched comm closing, a reconnect
+    # attempt) print tracebacks at INFO/WARNING when a scheduler goes away, before the
+    # sweep can say so in one line: the sweep reports its own failures.
+    dask_logger = logging.getLogger("distributed")
+    dask_level = dask_logger.level
+    dask_logger.setLevel(logging.CRITICAL)
     cluster = client = None
     try:
         with contextlib.nullcontext() if scheduler else _local_config():
@@ -180,3 +209,4 @@ def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
                         cluster.close()
     finally:
         logging.disable(disabled)
+        dask_logger.setLevel(dask_level)

@@ -14,7 +14,7 @@ import numpy as np
 from pounding.studies.sweep.measures import result_row
 from pounding.studies.sweep.overrides import apply_overrides
 
-__all__ = ["run_case", "warm_up"]
+__all__ = ["case_result", "run_case", "warm_up"]
 
 
 def _error_text(exc: BaseException) -> str:
@@ -28,6 +28,33 @@ def _error_text(exc: BaseException) -> str:
     if isinstance(exc, ValueError):
         return str(exc).replace("\n", "; ")
     return f"{type(exc).__name__}: {exc}".replace("\n", "; ")
+
+
+def case_result(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Sequence[str],
+                values: Sequence[Any]) -> Any:
+    """Simulate one case: the base model with the case's values, validated, built and run.
+
+    Parameters
+    ----------
+    base, base_dir, params, values
+        As :func:`run_case`.
+
+    Returns
+    -------
+    pounding.result.Result
+
+    Raises
+    ------
+    pydantic.ValidationError, ValueError
+        A value the model does not accept, or a run that cannot be integrated.
+    """
+    from pounding.config import RunConfig
+    from pounding.integrate import simulate
+
+    data = apply_overrides(base, params, values)
+    cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
+    model, motion, solver = cfg.build()
+    return simulate(model, motion, **solver)
 
 
 def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Sequence[str],
@@ -57,16 +84,10 @@ def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Seq
     dataset : xarray.Dataset or None
         The time histories, if asked for and the case ran.
     """
-    from pounding.config import RunConfig
-    from pounding.integrate import simulate
-
     start = time.perf_counter()
     dataset = None
     try:
-        data = apply_overrides(base, params, values)
-        cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
-        model, motion, solver = cfg.build()
-        result = simulate(model, motion, **solver)
+        result = case_result(base, base_dir, params, values)
         row: dict[str, Any] = {"status": "ok", "error": None, **result_row(result)}
         if history:
             dataset = result.to_dataset()

@@ -56,7 +56,7 @@ def apply_overrides(base: dict[str, Any], params: Sequence[str],
     """
     from pounding.config import LAW_FIELDS
 
-    data = copy.deepcopy(base)
+    data = _copy(base)
     set_contact: set[str] = set()
     for path, value in zip(params, values):
         parts = path.split(".")
@@ -65,7 +65,7 @@ def apply_overrides(base: dict[str, Any], params: Sequence[str],
             section = parts[0]
             for other in _EXCLUSIVE.get((section, key), ()):
                 node.pop(other, None)
-            node[key] = copy.deepcopy(value)
+            node[key] = _copy(value)
         if parts[0] == "contact" and len(parts) == 2:
             set_contact.add(parts[1])
     contact = data.get("contact")
@@ -76,6 +76,18 @@ def apply_overrides(base: dict[str, Any], params: Sequence[str],
                 if key not in used | {"law", "gap", "gaps"} | set_contact:
                     del contact[key]
     return data
+
+
+def _copy(data: Any) -> Any:
+    """A deep copy of plain data (tables, arrays, values): what ``copy.deepcopy`` gives,
+    without its bookkeeping (TOML data has no shared or cyclic parts)."""
+    if isinstance(data, dict):
+        return {k: _copy(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_copy(v) for v in data]
+    if isinstance(data, (str, int, float, bool, type(None))):
+        return data
+    return copy.deepcopy(data)
 
 
 def _parents(data: Any, parts: list[str]) -> Iterator[dict[str, Any]]:

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from pounding.studies.sweep.cluster import _auto_batch, _client
+from pounding.studies.sweep.cluster import _auto_batch, _batch_sizes, _client
 from pounding.studies.sweep.execute import _run_batch, warm_up
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
@@ -200,9 +200,13 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
             if pending:
                 workers = max(1, len(client.scheduler_info(n_workers=-1)["workers"])) \
                     if client is not None else 1
-                bsize = batch_size or sweep.batch_size or _auto_batch(len(pending), workers)
-                batches = [[(c.index, c.id, c.values) for c in pending[i:i + bsize]]
-                           for i in range(0, len(pending), bsize)]
+                given = batch_size or sweep.batch_size
+                bsize = given or _auto_batch(len(pending), workers)
+                batches, first = [], 0
+                for size in _batch_sizes(len(pending), workers, bsize, taper=not given):
+                    batches.append([(c.index, c.id, c.values)
+                                    for c in pending[first:first + size]])
+                    first += size
                 if client is not None:
                     client.run(warm_up)
                 t0 = time.perf_counter()
