@@ -143,8 +143,8 @@ batch_size = 3
 [grid]
 "contact.gap" = [0.0, 0.005, 0.01, 0.02, 0.03, 0.04]
 "contact.e" = [0.5, 0.65, 0.8]
-"record.scale" = [0.8, 1.0, 1.2]
-"record.duration" = [4.0]
+"record.scale" = [0.8, 0.9, 1.0, 1.1, 1.2]
+"record.duration" = [20.0]
 """
 
 
@@ -178,7 +178,7 @@ def test_sigkill_resume_is_lossless_and_identical(tmp_path: Path) -> None:
     a, b = _deterministic(clean.out / "results.parquet"), _deterministic(res.results)
     assert a.equals(b)
     assert load_results(res.results)["case_id"].is_unique
-    assert len(load_results(res.results)) == 54
+    assert len(load_results(res.results)) == 90
 
 
 def test_two_dask_runs_bit_identical(tmp_path: Path) -> None:
