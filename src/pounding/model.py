@@ -19,7 +19,7 @@ their shear comes from their storey law, and the stiffness matrix handed to the 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 from pounding.contact.base import ContactLaw
 from pounding.contact.dispatch import PARAMS_SIZE
 from pounding.contact.factory import make_law
+from pounding.devices import Bumper, Link
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
 from pounding.structure import ShearBuilding
@@ -212,6 +213,9 @@ class Contact:
         Separation gap at rest [m].
     law : ContactLaw
         The contact law, built with the apparent masses of the two contact points.
+    tag : str
+        ``""`` for the contact of the buildings; ``"bumper"`` for the pad of a bumper in its
+        gap (:class:`pounding.devices.Bumper`), whose label ends in ``/bumper``.
     """
 
     index: int
@@ -221,6 +225,7 @@ class Contact:
     elevation: float
     gap: float
     law: ContactLaw
+    tag: str = ""
 
     @property
     def is_floor_to_floor(self) -> bool:
@@ -246,8 +251,10 @@ class Contact:
 
     @property
     def label(self) -> str:
-        """Readable name, e.g. ``'B1F3-B2F3'`` or ``'B1F2-B2S3@0.40'``."""
-        return f"{self.left.label()}-{self.right.label()}"
+        """Readable name, e.g. ``'B1F3-B2F3'``, ``'B1F2-B2S3@0.40'`` or, for a bumper's
+        pad, ``'B1F3-B2F3/bumper'``."""
+        base = f"{self.left.label()}-{self.right.label()}"
+        return f"{base}/{self.tag}" if self.tag else base
 
 
 def contact_points(a: ShearBuilding, b: ShearBuilding, floor_to_column: bool = True,
@@ -280,6 +287,12 @@ def contact_points(a: ShearBuilding, b: ShearBuilding, floor_to_column: bool = T
     return rows
 
 
+def _floor_counts(buildings: Sequence[ShearBuilding]) -> str:
+    """``"B1: 10 floors, B2: 8 floors"``."""
+    return ", ".join(f"B{i + 1}: {b.n} floor{'s' if b.n != 1 else ''}"
+                     for i, b in enumerate(buildings))
+
+
 def _read_only(system: AssembledSystem) -> AssembledSystem:
     """The system with its arrays made read-only (it is shared)."""
     for a in system:
@@ -307,6 +320,10 @@ class PoundingModel:
     level_tolerance : float
         Floors whose elevations differ by at most this much [m] line up and meet slab to
         slab (default 0.1 m, about half a slab's thickness: closer slabs overlap).
+    devices : sequence of Link or Bumper
+        Dampers and springs linking floors of different buildings
+        (:class:`pounding.devices.Link`) and bumpers in the gaps of contacts
+        (:class:`pounding.devices.Bumper`); none by default.
 
     Examples
     --------
@@ -325,6 +342,7 @@ class PoundingModel:
     name: str = "model"
     floor_to_column: bool = True
     level_tolerance: float = 0.1
+    devices: Sequence[Link | Bumper] = ()
 
     def __post_init__(self) -> None:
         if len(self.buildings) < 1:
@@ -340,6 +358,32 @@ class PoundingModel:
         object.__setattr__(self, "buildings", tuple(self.buildings))
         object.__setattr__(self, "gaps", tuple(non_negative(f"gaps[{i}]", g)
                                                for i, g in enumerate(self.gaps)))
+        object.__setattr__(self, "devices", tuple(self.devices))
+        self._check_devices()
+
+    def _check_devices(self) -> None:
+        """Every device is a Link or a Bumper on floors that exist; a bumper sits in a
+        floor-to-floor contact, at most one in each."""
+        seen: set[str] = set()
+        for i, dev in enumerate(self.devices):
+            if isinstance(dev, Link):
+                for label, (b, f) in zip(dev.floors, dev.ends):
+                    if b >= len(self.buildings) or f >= self.buildings[b].n:
+                        raise ValueError(f"devices[{i}].floors: no floor {label} in this "
+                                         f"model ({_floor_counts(self.buildings)})")
+            elif isinstance(dev, Bumper):
+                if dev.label in seen:
+                    raise ValueError(f"devices[{i}]: a second bumper in {dev.label}")
+                seen.add(dev.label)
+                bare = {c.label: c for c in self._bare_contacts}
+                if dev.label not in bare:
+                    raise ValueError(f"devices[{i}].floors: {dev.label} is not a floor-to-floor "
+                                     f"contact of this model (contacts: "
+                                     f"{', '.join(bare) or 'none'})")
+                dev.gaps(bare[dev.label].gap)
+            else:
+                raise ValueError(f"devices[{i}]: expected a Link or a Bumper (got "
+                                 f"{type(dev).__name__})")
 
     @cached_property
     def system(self) -> AssembledSystem:
@@ -353,8 +397,8 @@ class PoundingModel:
             self.buildings)), size=lambda s: 8 * 3 * s.n_dof ** 2, keep=self.buildings)
 
     @cached_property
-    def contacts(self) -> tuple[Contact, ...]:
-        """Every contact, pair by pair, bottom to top (see :func:`contact_points`)."""
+    def _bare_contacts(self) -> tuple[Contact, ...]:
+        """The contacts of the buildings, without bumpers."""
         out: list[Contact] = []
         for p, (a, b) in enumerate(zip(self.buildings[:-1], self.buildings[1:])):
             for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column,
@@ -364,6 +408,33 @@ class PoundingModel:
                                          right.effective_mass(b.masses))
                 out.append(Contact(len(out), p, left, right, z, float(self.gaps[p]), law))
         return tuple(out)
+
+    @cached_property
+    def contacts(self) -> tuple[Contact, ...]:
+        """Every contact, pair by pair, bottom to top (see :func:`contact_points`); where a
+        bumper sits, its pad (``…/bumper``) and then the building contact moved to where the
+        pad bottoms out (:func:`pounding.devices.bumper.split_contact`)."""
+        bumpers = {d.label: d for d in self.devices if isinstance(d, Bumper)}
+        if not bumpers:
+            return self._bare_contacts
+        from pounding.devices.bumper import split_contact
+
+        out: list[Contact] = []
+        for c in self._bare_contacts:
+            bumper = bumpers.get(c.label)
+            if bumper is None:
+                out.append(replace(c, index=len(out)))
+                continue
+            a, b = self.buildings[c.left.building], self.buildings[c.right.building]
+            rubber = bumper.rubber.build(c.left.effective_mass(a.masses),
+                                         c.right.effective_mass(b.masses))
+            out.extend(split_contact(c, bumper, rubber, len(out)))
+        return tuple(out)
+
+    @property
+    def links(self) -> tuple[Link, ...]:
+        """The links between buildings, in the order given."""
+        return tuple(d for d in self.devices if isinstance(d, Link))
 
     @property
     def n_dof(self) -> int:
@@ -431,7 +502,8 @@ class PoundingModel:
 
     def storey_arrays(self) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64],
                                      NDArray[np.float64], NDArray[np.int64]]:
-        """The yielding storeys as plain arrays for the compiled kernel.
+        """The yielding storeys, and then the links between buildings, as plain arrays for
+        the compiled kernel (element rows of one kind).
 
         Returns
         -------
@@ -446,7 +518,7 @@ class PoundingModel:
         """
         offsets = self.system.offsets
         lower, upper, code, zi = [], [], [], []
-        rows = []
+        rows: list[NDArray[np.float64]] = []
         nz = 0
         for p, b in enumerate(self.buildings):
             if not b.is_inelastic:
@@ -461,7 +533,17 @@ class PoundingModel:
                 rows.append(prm[j])
                 zi.append(nz if law.has_internal_variable else -1)
                 nz += 1 if law.has_internal_variable else 0
+        # the links: rows of the same kind after the storeys, from the left end (lower) to
+        # the right end (upper), so the "drift" is u_right − u_left
         width = rows[0].size if rows else STOREY_PARAMS_SIZE
+        for link in self.links:
+            (ba, fa), (bb, fb) = link.ends
+            lower.append(int(offsets[ba] + fa))
+            upper.append(int(offsets[bb] + fb))
+            code.append(link.code)
+            rows.append(link.params(width))
+            zi.append(nz if link.has_internal_variable else -1)
+            nz += 1 if link.has_internal_variable else 0
         return (np.array(lower, dtype=np.int64), np.array(upper, dtype=np.int64),
                 np.array(code, dtype=np.int64),
                 np.array(rows, dtype=float).reshape(len(rows), width),

@@ -30,7 +30,7 @@ if TYPE_CHECKING:
     from pounding.model import PoundingModel
 
 ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "contact_work",
-                                 "contact_stored", "hysteretic")
+                                 "contact_stored", "hysteretic", "links")
 """Columns of :attr:`Result.energy` [J]: input energy ``−∫u̇ᵀMr a_g dt``, kinetic
 ``½u̇ᵀMu̇`` (relative), elastic strain (``½uᵀKu`` of the linear storeys plus the recoverable
 energy of the yielding ones), viscous damping ``∫u̇ᵀCu̇ dt``, total work of the contact forces
@@ -93,8 +93,9 @@ class Result:
         Absolute floor acceleration [m/s²].
     penetration, contact_force : ndarray (nt, n_c)
         ``δ`` [m] (negative: open gap) and contact force [N] of every contact.
-    energy : ndarray (nt, 6)
-        Cumulative energies [J], columns :data:`ENERGY_NAMES`.
+    energy : ndarray (nt, 8)
+        Cumulative energies [J], columns :data:`ENERGY_NAMES` (``links``: dissipated by the
+        links between buildings, their springs' energy being in ``strain``).
     impact_array : ndarray (n_impacts, 8)
         Rows of the impact table, columns :data:`IMPACT_COLUMNS`.
     stats : SolverStats
@@ -105,7 +106,11 @@ class Result:
         Shear [N] of every yielding storey (:attr:`PoundingModel.yielding_storeys` order),
         from its storey law.
     final_z : ndarray (n_z,), optional
-        Bouc–Wen internal variables at the end (for the residual drift).
+        Internal variables at the end: Bouc–Wen storeys' ``z`` (for the residual drift),
+        then Maxwell links' spring deformations [m].
+    link_force : ndarray (nt, n_l), optional
+        Force [N] of every link between buildings (:attr:`PoundingModel.links` order),
+        positive when it resists the right floor moving away from the left one.
     contact_peak_time : ndarray (n_c,), optional
         Time of each contact's peak force [s].
     located_peaks : ndarray (N, 6), optional
@@ -133,6 +138,7 @@ class Result:
     final_z: NDArray[np.float64] | None = field(default=None, repr=False)
     contact_peak_time: NDArray[np.float64] | None = field(default=None, repr=False)
     located_peaks: NDArray[np.float64] | None = field(default=None, repr=False)
+    link_force: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property
@@ -413,18 +419,71 @@ class Result:
         return out
 
     @property
+    def link_displacement(self) -> NDArray[np.float64]:
+        """Relative displacement of every link, right floor less left floor [m] (nt, n_l)."""
+        return self._link_kinematics(self.displacement)
+
+    @property
+    def link_velocity(self) -> NDArray[np.float64]:
+        """Rate of :attr:`link_displacement` [m/s] (nt, n_l)."""
+        return self._link_kinematics(self.velocity)
+
+    def _link_kinematics(self, floors: NDArray[np.float64]) -> NDArray[np.float64]:
+        offsets = self.model.system.offsets
+        cols = [(int(offsets[a[0]] + a[1]), int(offsets[b[0]] + b[1]))
+                for a, b in (link.ends for link in self.model.links)]
+        out = np.zeros((floors.shape[0], len(cols)))
+        for i, (lo, hi) in enumerate(cols):
+            out[:, i] = floors[:, hi] - floors[:, lo]
+        return out
+
+    @property
+    def link_peak_force(self) -> NDArray[np.float64]:
+        """Largest |force| of every link at the output steps [N] (n_l,)."""
+        f = self.link_force
+        if f is None or f.shape[1] == 0:
+            return np.zeros(len(self.model.links))
+        return np.abs(f).max(axis=0)
+
+    @property
+    def link_dissipated(self) -> NDArray[np.float64]:
+        """Energy each link has dissipated by the end [J] (n_l,): its work ``∫ F ḋ dt`` (the
+        trapezoidal rule on the output steps, O(dt²)) less its springs' energy at the end.
+        Their sum is the exact ``links`` energy of the solver to that order; use that
+        (``energy[-1, 7]``) for the total."""
+        links = self.model.links
+        if not links or self.link_force is None:
+            return np.zeros(len(links))
+        power = self.link_force * self.link_velocity
+        work = np.trapezoid(power, dx=self.dt, axis=0)
+        d_end = self.link_displacement[-1]
+        z = self.final_z if self.final_z is not None else np.zeros(0)
+        z_links = z[z.size - sum(lk.has_internal_variable for lk in links):]
+        stored = np.zeros(len(links))
+        iz = 0
+        for i, link in enumerate(links):
+            if link.kind == "kelvin":
+                stored[i] = 0.5 * float(link.k) * d_end[i] ** 2  # type: ignore[arg-type]
+            elif link.kind == "maxwell":
+                stored[i] = 0.5 * float(link.k) * z_links[iz] ** 2  # type: ignore[arg-type]
+                iz += 1
+        return work - stored
+
+    @property
     def contact_dissipated(self) -> NDArray[np.float64]:
         """Energy dissipated in contacts so far [J] (nt,)."""
         return self.energy[:, 4] - self.energy[:, 5]
 
     @cached_property
     def energy_balance_error(self) -> float:
-        """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + E_hyst + W_contact)|`` over the
+        """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + E_hyst + W_contact +
+        E_links)|`` over the
         run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
         largest input energy and ``E_0`` (dimensionless; 0 for a run with no energy)."""
         e = self.energy
         e0 = e[0, 1] + e[0, 2]
-        closure = e0 + e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4] + e[:, 6])
+        closure = e0 + e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4] + e[:, 6]
+                                  + (e[:, 7] if e.shape[1] > 7 else 0.0))
         scale = max(np.abs(e[:, 0]).max(), e0)
         if scale <= 0.0:
             return 0.0

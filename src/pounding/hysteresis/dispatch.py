@@ -16,14 +16,18 @@ from numpy.typing import ArrayLike, NDArray
 from pounding.hysteresis.base import BILINEAR, BOUC_WEN, P_FY, P_K, STATE_SIZE, StoreyLaw
 from pounding.hysteresis.bilinear import bilinear_trial
 from pounding.hysteresis.bouc_wen import bouc_wen_trial
+from pounding.devices.laws import DEVICE_MIN, device_stored, device_trial
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def storey_trial(code, sp, s, d, rate, z, d_c, v_c):
     """Trial of storey ``s`` (constants ``sp[s]``, law ``code``): ``(V, ∂V/∂d, ż)``.
 
-    Code 0 (elastic) returns ``(k d, k, 0)``.
+    Code 0 (elastic) returns ``(k d, k, 0)``. Codes from ``DEVICE_MIN`` up are the links
+    between buildings (:mod:`pounding.devices.laws`), which use the same element rows.
     """
+    if code >= DEVICE_MIN:
+        return device_trial(code, sp[s, 0], sp[s, 1], sp[s, 2], d, rate, z)
     if code == BILINEAR:
         return bilinear_trial(sp[s, 0], sp[s, 1], sp[s, 2], sp[s, 3], sp[s, 4], sp[s, 5],
                               d, rate, z, d_c, v_c)
@@ -36,6 +40,8 @@ def storey_trial(code, sp, s, d, rate, z, d_c, v_c):
 @njit(cache=True, inline="always", error_model="numpy")
 def storey_recoverable(code, sp, s, d, z, v):
     """Elastic energy [J] storey ``s`` gives back when unloaded to zero shear (contract 5)."""
+    if code >= DEVICE_MIN:
+        return device_stored(code, sp[s, 0], sp[s, 1], sp[s, 2], d, z)
     k = sp[s, 0]
     if code == BILINEAR:
         return 0.5 * v * v / k

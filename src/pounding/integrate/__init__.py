@@ -38,6 +38,7 @@ from pounding.integrate.grid import (
 from pounding.integrate.kernel import integrate_chunk
 from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
 from pounding.integrate.layout import (
+    E_DEVICE,
     ENERGY_COLUMNS,
     FAIL_BUDGET,
     I_FAIL_STEP,
@@ -151,8 +152,8 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         How steps without contact are taken: ``"exact"`` propagator (O(N²) a step, exact),
         adaptive ``"rk"`` (O(N·bandwidth) a step), or ``"auto"``: exact up to
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
-        beyond. A model with yielding storeys is not linear between impacts, so it is always
-        stepped by RK (``"exact"`` is refused).
+        beyond. A model with yielding storeys or links between buildings is always stepped
+        by RK (``"exact"`` is refused).
     max_rk_steps : int, optional
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step); a run that needs more stops with an :class:`IntegrationError`.
@@ -181,8 +182,9 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     n, nz, bw = km.n, km.nz, km.bw
     ns = km.s_lo.size
     if ns and free_stepping == "exact":
-        raise ValueError("free_stepping: 'exact' needs linear storeys; this model has "
-                         "yielding storeys (use 'auto' or 'rk')")
+        raise ValueError("free_stepping: 'exact' needs linear storeys and no links; this "
+                         "model has yielding storeys or links between buildings (use 'auto' "
+                         "or 'rk')")
     exact = choose_free_stepping(free_stepping, n, bw) and ns == 0
     if exact:
         fs = km.free_steps.get(step)
@@ -207,7 +209,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         sstate = np.zeros((ns, 2))
     else:
         x0 = initial_state(model, initial_displacement, initial_velocity)
-        sstate, z0 = initial_storeys(model, x0[:n])
+        sstate, z0 = initial_storeys(model, x0[:n], x0[n:])
         x = np.concatenate([x0, z0])
     committed = np.zeros((max(nc, 1), STATE_SIZE))[:nc]
     wc = np.zeros(nc)
@@ -236,6 +238,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     f_out = np.zeros((nt, nc))
     vs_out = np.empty((nt, ns))
     e_out = np.empty((nt, ENERGY_COLUMNS), order="F")  # (each energy's history contiguous)
+    e_out[:, E_DEVICE] = 0.0  # (exact steps leave it: a model with links steps adaptively)
     imp = np.empty((cap, IMP_COLUMNS))
     cpeak = np.zeros(nc)
     cpeak_t = np.zeros(nc)
@@ -275,10 +278,12 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     stats = SolverStats(solver="kernel", rtol=rtol, rk_steps=int(ws_i[I_NSTEPS]),
                         rejected=int(ws_i[I_NREJECT]), events=int(ws_i[I_NEVENTS]),
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
+    n_storey_rows = len(model.yielding_storeys)
     return Result(model=model, motion=motion, dt=step, ground=ag,
                   displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
                   penetration=pen_out, contact_force=f_out, energy=e_out,
-                  yielding_shear=vs_out, final_z=x[2 * n:].copy(),
+                  yielding_shear=vs_out[:, :n_storey_rows],
+                  link_force=vs_out[:, n_storey_rows:], final_z=x[2 * n:].copy(),
                   impact_array=imp[: min(n_imp, cap)].copy(), stats=stats,
                   contact_peak=cpeak, contact_peak_time=cpeak_t, contact_impacts=ccount,
                   located_peaks=pk)

@@ -16,6 +16,7 @@ import numpy as np
 from numba import njit
 
 from pounding.contact.base import V0
+from pounding.devices.laws import DEVICE_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.commit import commit_contacts, commit_storeys
 from pounding.integrate.dormand_prince import rk_step, weighted_sum
@@ -30,6 +31,7 @@ from pounding.integrate.layout import (
     E_CONTACT_STORED,
     E_CONTACT_WORK,
     E_DAMPING,
+    E_DEVICE,
     E_HYSTERETIC,
     E_INPUT,
     E_KINETIC,
@@ -51,9 +53,11 @@ from pounding.integrate.layout import (
     P_CONTACT,
     PK_A,
     P_DAMP,
+    P_DEVICE,
     P_INPUT,
     P_STOREY,
     W_E_DAMP,
+    W_E_DEVICE,
     W_E_INPUT,
     W_E_STOREY,
     W_ERR_OLD,
@@ -227,6 +231,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             ws_f[W_E_DAMP] += weighted_sum(ps, P_DAMP, h_acc)
             if ns > 0:
                 ws_f[W_E_STOREY] += weighted_sum(ps, P_STOREY, h_acc)
+                ws_f[W_E_DEVICE] += weighted_sum(ps, P_DEVICE, h_acc)
             for c in range(nc):
                 wc[c] += weighted_sum(ps, P_CONTACT + c, h_acc)
             s_new = dt if last else s + h_acc
@@ -328,11 +333,16 @@ def grid_outputs(o, a_o, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, c
         ek += 0.5 * m_diag[i] * x[n + i] * x[n + i]
         es += 0.5 * x[i] * lin[0, i]
     recov = 0.0
+    recov_dev = 0.0
     for q in range(s_lo.shape[0]):
         vs_out[o, q] = sstate[q, V_C]
         zi = s_zi[q]
-        recov += recoverable_call(s_code[q], s_par, q, sstate[q, D_C],
-                                  x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])
+        e_q = recoverable_call(s_code[q], s_par, q, sstate[q, D_C],
+                               x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])
+        if s_code[q] >= DEVICE_MIN:
+            recov_dev += e_q
+        else:
+            recov += e_q
     wsum = 0.0
     stored = 0.0
     for c in range(cgap.shape[0]):
@@ -349,11 +359,12 @@ def grid_outputs(o, a_o, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, c
         wsum += wc[c]
     e_out[o, E_INPUT] = ws_f[W_E_INPUT]
     e_out[o, E_KINETIC] = ek
-    e_out[o, E_STRAIN] = es + recov
+    e_out[o, E_STRAIN] = es + recov + recov_dev
     e_out[o, E_DAMPING] = ws_f[W_E_DAMP]
     e_out[o, E_CONTACT_WORK] = wsum
     e_out[o, E_CONTACT_STORED] = stored
     e_out[o, E_HYSTERETIC] = ws_f[W_E_STOREY] - recov
+    e_out[o, E_DEVICE] = ws_f[W_E_DEVICE] - recov_dev
 
 
 @njit(**NRT_FREE)

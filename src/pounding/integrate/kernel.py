@@ -125,7 +125,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
     ks, ps, ks_b, ps_b, kx, px, ytmp, y1, yb, x1, acc, lin, work, gd, gr, gd1, gr1, arel0,
     arel1, jk, jk1, aabs0, aabs1, m_inv
         Scratch (:func:`pounding.integrate.kernel_scratch`): RK stages and powers of the
-        main and the bracketing steps (7, 2N + n_z) and (7, 3 + n_c); f and the powers at
+        main and the bracketing steps (7, 2N + n_z) and (7, 4 + n_c); f and the powers at
         the current state (1, …); trial states (2N + n_z,) ×4; the exact step's sweep
         (4N + 4); K u and C u̇ (2, N); (2N,); every contact's δ and δ̇ now and at the end of
         a trial exact step (n_c,) ×4; every floor's relative acceleration ×2, jerk ×2 and

@@ -9,6 +9,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from pounding.integrate.layout import P_CONTACT
 from pounding.integrate.propagator import FreeStep
 from pounding.memo import Memo
 from pounding.model import PoundingModel
@@ -129,13 +130,13 @@ def kernel_model(model: PoundingModel) -> KernelModel:
 
 STRUCTURES = Memo(max_items=64, max_bytes=256 << 20)
 """The buildings' part of a :class:`KernelModel` (everything but the contacts), by the
-identity of the buildings: the cases of a sweep that change only gaps, contact law or
+identity of the buildings and the links between them: the cases of a sweep that change only gaps, contact law or
 record share it, with its exact steps."""
 
 
 def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
-    structure = STRUCTURES.get(tuple(map(id, model.buildings)),
-                               lambda: _assemble_structure(model),
+    key = (tuple(map(id, model.buildings)), tuple(link.describe() for link in model.links))
+    structure = STRUCTURES.get(key, lambda: _assemble_structure(model),
                                size=lambda st: 8 * 8 * st["n"] ** 2, keep=model.buildings)
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
     return KernelModel(**structure, cdof=cdof, cw=cw, cgap=cgap, ccode=ccode,
@@ -143,7 +144,8 @@ def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
 
 
 def _assemble_structure(model: PoundingModel) -> dict:
-    """The fields of a :class:`KernelModel` that depend on the buildings alone."""
+    """The fields of a :class:`KernelModel` that depend on the buildings (and the links
+    between them) alone."""
     sys_ = model.system
     M, C, r = sys_.M, sys_.C, sys_.r
     K = model.linear_stiffness()
@@ -183,7 +185,7 @@ def kernel_scratch(km: KernelModel, m: int) -> tuple[np.ndarray, ...]:
     """The kernel's scratch arrays for a model (see
     :func:`pounding.integrate.kernel.integrate_chunk`), ``m`` the length of the state."""
     n, nc = km.n, km.cgap.size
-    npw = 3 + nc
+    npw = P_CONTACT + nc  # the power rows (layout.P_INPUT … P_CONTACT + c)
     stages = np.zeros((2, 7, m))
     powers = np.zeros((2, 7, npw))
     states = np.zeros((4, m))

@@ -15,13 +15,16 @@ IMP_COLUMNS = 9
 
 # ---------------------------------------------------------------- energy history columns
 (E_INPUT, E_KINETIC, E_STRAIN, E_DAMPING, E_CONTACT_WORK, E_CONTACT_STORED,
- E_HYSTERETIC) = range(7)
-ENERGY_COLUMNS = 7
+ E_HYSTERETIC, E_DEVICE) = range(8)
+ENERGY_COLUMNS = 8
+"""Cumulative energies [J]: input by the ground, kinetic, strain (storeys, and the springs
+of yielding storeys and links), viscous damping, contact work, energy stored in the
+contacts, hysteretic (yielding storeys) and dissipated by the links between buildings."""
 
 # ---------------------------------------------------------------- power rows of a step's stages
-# input, viscous, yielding storeys, then one per contact
-P_INPUT, P_DAMP, P_STOREY = range(3)
-P_CONTACT = 3
+# input, viscous, yielding storeys, links, then one per contact
+P_INPUT, P_DAMP, P_STOREY, P_DEVICE = range(4)
+P_CONTACT = 4
 
 # ---------------------------------------------------------------- event kinds
 EV_ONSET, EV_SEPARATION, EV_MAX_COMPRESSION, EV_RELOADING = 1, 2, 3, 4
@@ -36,11 +39,12 @@ negative (the bodies released with the spring still compressed) or positive agai
 δ = 0 (engaged again)."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
-W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN = range(6)
-WS_F_SIZE = 6
+W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE = range(7)
+WS_F_SIZE = 7
 """Workspace scalars: proposed RK step [s], cumulative input, viscous and storey work [J],
 last error norm, and the margin by which an acceleration peak between two exact-step
-samples can exceed the larger sample (relative; :func:`pounding.integrate.peak_margin`)."""
+samples can exceed the larger sample (relative; :func:`pounding.integrate.peak_margin`),
+and the links' cumulative work [J]."""
 (I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED, I_FAIL_STEP,
  I_STEP_BUDGET, I_ONSET_C) = range(10)
 WS_I_SIZE = 10

@@ -75,12 +75,22 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     u_scale = max(min(gap) if nc else 0.0, 1e-3)
     v_scale = max(motion.pgv, 1e-3)
     e_scale = max(float(np.sum(M)) * v_scale**2, 1.0)
+    # links between buildings: force from Link.force (NumPy, not the kernel's compiled law);
+    # a Maxwell link's spring deformation is a state
+    links = model.links
+    offs = model.system.offsets
+    l_lo = [int(offs[a[0]] + a[1]) for a, _ in (lk.ends for lk in links)]
+    l_hi = [int(offs[b[0]] + b[1]) for _, b in (lk.ends for lk in links)]
+    l_zi = list(np.cumsum([lk.has_internal_variable for lk in links]) - 1)
+    nzl = sum(lk.has_internal_variable for lk in links)
     i_h = 2 * n                 # hysteretic states
-    i_e = 2 * n + ns            # E_in, E_visc, W_storey, W_c...
+    i_z = 2 * n + ns            # Maxwell links' spring deformations
+    i_e = 2 * n + ns + nzl      # E_in, E_visc, W_storey, W_links, W_c...
     h_scale = [st.fy if st.kind == "bilinear" else 1.0 for st in storeys]
     atol = np.concatenate([np.full(n, 1e-3 * rtol * u_scale), np.full(n, 1e-3 * rtol * v_scale),
                            1e-3 * rtol * np.array(h_scale, dtype=float),
-                           np.full(3 + nc, 1e-3 * rtol * e_scale)])
+                           np.full(nzl, 1e-3 * rtol * u_scale),
+                           np.full(4 + nc, 1e-3 * rtol * e_scale)])
 
     def kin(y: NDArray[np.float64], c: int) -> tuple[float, float]:
         return (float(cw[c] @ y[cdof[c]] - gap[c]), float(cw[c] @ y[n + cdof[c]]))
@@ -118,6 +128,24 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                            - st.gamma * dd * abs(h) ** st.n) / (st.fy / st.k)
         return v, hdot
 
+    def link_forces(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64],
+                                                      NDArray[np.float64]]:
+        """Force, relative velocity and ż (Maxwell) of every link."""
+        f, rate, zdot = np.zeros(len(links)), np.zeros(len(links)), np.zeros(nzl)
+        for q, lk in enumerate(links):
+            d = y[l_hi[q]] - y[l_lo[q]]
+            rate[q] = y[n + l_hi[q]] - y[n + l_lo[q]]
+            z = y[i_z + l_zi[q]] if lk.has_internal_variable else 0.0
+            f[q] = float(lk.force(d, rate[q], z))
+            if lk.has_internal_variable:
+                zdot[l_zi[q]] = lk.spring_rate(rate[q], z)
+        return f, rate, zdot
+
+    def add_link_loads(p: NDArray[np.float64], f: NDArray[np.float64]) -> None:
+        for q in range(len(links)):
+            p[l_hi[q]] -= f[q]
+            p[l_lo[q]] += f[q]
+
     def rhs_factory(t0: float, a0: float, slope: float):
         def rhs(t: float, y: NDArray[np.float64]) -> NDArray[np.float64]:
             u, v = y[:n], y[n:2 * n]
@@ -133,10 +161,12 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 if st.lower >= 0:
                     p[st.lower] += vs[s]
                 p_storey += vs[s] * drift(y, s)[1]
+            fl, rl, zdot = link_forces(y)
+            add_link_loads(p, fl)
             acc = -minv_k @ u - minv_c @ v + minv @ p - r * a_g
             rate = np.array([kin(y, c)[1] for c in range(nc)])
-            return np.concatenate([v, acc, hdot, [-(v @ mr) * a_g, v @ (C @ v), p_storey],
-                                   f * rate])
+            return np.concatenate([v, acc, hdot, zdot, [-(v @ mr) * a_g, v @ (C @ v), p_storey,
+                                                        fl @ rl], f * rate])
         return rhs
 
     def make_events() -> list:
@@ -183,9 +213,27 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 evs.append(evu)
             # (Bouc–Wen: ż is continuous where ḋ changes sign, only its slope jumps; the
             # tight-tolerance steps go through it without an event)
+        for q, lk in enumerate(links):
+            if lk.kind == "viscous" and lk.alpha != 1.0:
+                # a fluid damper's force has an unbounded slope where its rate changes sign:
+                # an event where it next does (the way it is going now, or, at a rate of
+                # ~0 — at rest, or just after such an event — the way it is accelerating)
+                going = np.sign(y[n + l_hi[q]] - y[n + l_lo[q]])
+                if abs(y[n + l_hi[q]] - y[n + l_lo[q]]) < 1e-9 * v_scale:
+                    dy = rhs(t, y)
+                    going = np.sign(dy[n + l_hi[q]] - dy[n + l_lo[q]])
+                if going == 0:
+                    continue
+
+                def evl(t, y, q=q):
+                    return y[n + l_hi[q]] - y[n + l_lo[q]]
+                evl.direction = -going
+                evl.terminal = True
+                evl.tag = ("link", q)
+                evs.append(evl)
         return evs
 
-    y = np.zeros(i_e + 3 + nc)
+    y = np.zeros(i_e + 4 + nc)
     y[: 2 * n] = initial_state(model, initial_displacement, initial_velocity)
     if ns and np.any(y[:n] != 0.0):
         raise ValueError("initial_displacement: the reference starts yielding storeys at rest "
@@ -209,6 +257,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 p[st.upper, k] -= vs[s]
                 if st.lower >= 0:
                     p[st.lower, k] += vs[s]
+            add_link_loads(p[:, k], link_forces(yt[:, k])[0])
         a_abs = -minv_k @ u - minv_c @ v + minv @ p
         return np.abs(np.stack([u, u - lower, a_abs]))
 
@@ -216,6 +265,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     peaks[:, 0::2] = floor_values(y[:, None])[:, :, 0].T
     f_out = np.zeros((nt, nc))
     vs_out = np.zeros((nt, ns))
+    lf_out = np.zeros((nt, len(links)))
     stored = np.zeros(nt)
     impacts: list[list[float]] = []
     open_row = [-1] * nc
@@ -245,6 +295,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 out[k] = yk
                 f_out[k] = forces(yk)
                 vs_out[k] = storey_shears(yk)[0]
+                lf_out[k] = link_forces(yk)[0]
                 stored[k] = sum(contact_stored_energy(codes[c], params[c], kin(yk, c)[0],
                                                       committed[c])
                                 for c in range(nc) if committed[c, V0] > 0.0)
@@ -278,7 +329,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
             y = sol.y_events[kev][0].copy()
             events += 1
             tag = evs[kev].tag
-            if tag[0] == "yield":
+            if tag[0] == "link":
+                pass  # (a fluid damper's rate changed sign: the step restarts there)
+            elif tag[0] == "yield":
                 yld[tag[1]] = tag[2]
             elif tag[0] == "unload":
                 yld[tag[1]] = 0
@@ -300,7 +353,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                                    scratch)[0]
                 impacts.append([c, t, np.nan, committed[c, V0], f0, t, 0.0, np.nan, np.nan])
                 open_row[c] = len(impacts) - 1
-                w_start[c] = y[i_e + 3 + c]
+                w_start[c] = y[i_e + 4 + c]
             elif tag[0] == "gap":
                 c = tag[1]
                 d, rate = kin(y, c)
@@ -308,7 +361,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 if np.isnan(row[2]):  # (not already ended by a release)
                     row[2] = t
                     row[7] = max(-rate, 0.0) / committed[c, V0]
-                row[8] = y[i_e + 3 + c] - w_start[c]
+                row[8] = y[i_e + 4 + c] - w_start[c]
                 open_row[c] = -1
                 committed[c] = 0.0
                 phase[c] = 0
@@ -341,6 +394,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
             p[st.upper] -= vs_out[k, s]
             if st.lower >= 0:
                 p[st.lower] += vs_out[k, s]
+        add_link_loads(p, lf_out[k])
         acc[k] = -minv_k @ u_out[k] - minv_c @ v_out[k] + minv @ p
     recov = np.zeros(nt)
     for s, st in enumerate(storeys):
@@ -350,14 +404,21 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
         else:
             z = out[:, i_h + s]
             recov += 0.5 * st.alpha * st.k * d**2 + 0.5 * (1 - st.alpha) * st.fy**2 / st.k * z**2
+    recov_links = np.zeros(nt)
+    for q, lk in enumerate(links):
+        if lk.kind == "kelvin":
+            recov_links += 0.5 * lk.k * (u_out[:, l_hi[q]] - u_out[:, l_lo[q]]) ** 2
+        elif lk.kind == "maxwell":
+            recov_links += 0.5 * lk.k * out[:, i_z + l_zi[q]] ** 2
     energy = np.zeros((nt, ENERGY_COLUMNS))
     energy[:, 0] = out[:, i_e]
     energy[:, 1] = 0.5 * np.einsum("ki,ij,kj->k", v_out, M, v_out)
-    energy[:, 2] = 0.5 * np.einsum("ki,ij,kj->k", u_out, K, u_out) + recov
+    energy[:, 2] = 0.5 * np.einsum("ki,ij,kj->k", u_out, K, u_out) + recov + recov_links
     energy[:, 3] = out[:, i_e + 1]
-    energy[:, 4] = out[:, i_e + 3:].sum(axis=1)
+    energy[:, 4] = out[:, i_e + 4:].sum(axis=1)
     energy[:, 5] = stored
     energy[:, 6] = out[:, i_e + 2] - recov
+    energy[:, 7] = out[:, i_e + 3] - recov_links
     pen = model.contact_penetration(u_out)
     imp = np.array(impacts, dtype=float).reshape(-1, IMP_COLUMNS)
     stats = SolverStats(solver="scipy-reference", rtol=rtol, events=events, wall_time=wall)
@@ -365,7 +426,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                   velocity=v_out, abs_acceleration=acc, penetration=pen, contact_force=f_out,
                   energy=energy, impact_array=imp, stats=stats, yielding_shear=vs_out,
                   final_z=np.array([out[-1, i_h + s] for s, st in enumerate(storeys)
-                                    if st.kind != "bilinear"]),
+                                    if st.kind != "bilinear"] + list(out[-1, i_z:i_e])),
+                  link_force=lf_out,
                   located_peaks=peaks)
 
 

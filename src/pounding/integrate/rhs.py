@@ -26,7 +26,16 @@ from pounding.contact.dispatch import (
 )
 from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
-from pounding.integrate.layout import DELTA_EPS, P_CONTACT, P_DAMP, P_INPUT, P_STOREY, RATE_SIDE
+from pounding.devices.laws import DEVICE_MIN, device_rate_terms
+from pounding.integrate.layout import (
+    DELTA_EPS,
+    P_CONTACT,
+    P_DAMP,
+    P_DEVICE,
+    P_INPUT,
+    P_STOREY,
+    RATE_SIDE,
+)
 
 NRT_FREE = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
                 _nrt=False)
@@ -151,8 +160,10 @@ def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
             p_d += y[n + i] * lin[1, i]
     power[row, P_INPUT] = p_in
     power[row, P_DAMP] = p_d
-    # yielding storeys: shear V from the storey law, −V on the floor above, +V below
+    # yielding storeys: shear V from the storey law, −V on the floor above, +V below; the
+    # links between buildings (codes ≥ DEVICE_MIN) are rows of the same kind
     p_s = 0.0
+    p_dev = 0.0
     for s in range(s_lo.shape[0]):
         d, dr = drift_of(s_lo[s], s_hi[s], y, n)
         zi = s_zi[s]
@@ -165,8 +176,12 @@ def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
             dy[row, n + lo] += v * m_inv[lo]
         if zi >= 0:
             dy[row, 2 * n + zi] = zd
-        p_s += v * dr
+        if s_code[s] >= DEVICE_MIN:
+            p_dev += v * dr
+        else:
+            p_s += v * dr
     power[row, P_STOREY] = p_s
+    power[row, P_DEVICE] = p_dev
     for c in range(nc):
         dsum, rate = gap_row(c, y, n, cdof, cw)
         delta = dsum - cgap[c]
@@ -232,7 +247,7 @@ def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, co
 
         d/dt (ü + r a_g) = −M⁻¹ (K u̇ + C ü + V̇ + Ḟ)
 
-    with the storey shears' rates ``V̇ = (∂V/∂d) ḋ`` and every closed contact's force rate
+    with the storey shears' rates ``V̇ = (∂V/∂d) ḋ`` (a link's plus ``(∂F/∂ḋ) d̈ + (∂F/∂z) ż``) and every closed contact's force rate
     ``Ḟ = (∂F/∂δ) δ̇ + (∂F/∂δ̇) δ̈`` from its law's tangents at the committed state.
     ``work``: scratch of length 2N; ``out``: (N,) written.
     """
@@ -248,6 +263,12 @@ def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, co
         z = x[2 * n + zi] if zi >= 0 else 0.0
         kt = storey_call(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])[1]
         vdot = kt * dr
+        if s_code[s] >= DEVICE_MIN:
+            # a link's force also moves with its rate (dashpots) and its internal variable
+            kr, kz = device_rate_terms(s_code[s], s_par[s, 0], s_par[s, 1], s_par[s, 2], dr)
+            vdot += kr * drift_of(s_lo[s], s_hi[s], dx, n)[1]
+            if zi >= 0:
+                vdot += kz * dx[2 * n + zi]
         out[s_hi[s]] += vdot
         if s_lo[s] >= 0:
             out[s_lo[s]] -= vdot

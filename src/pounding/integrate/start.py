@@ -32,19 +32,29 @@ def initial_state(model: PoundingModel, u0: np.ndarray | None,
     return x
 
 
-def initial_storeys(model: PoundingModel, u0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Committed ``(drift, shear)`` of every yielding storey at t = 0, and their ``z``.
+def initial_storeys(model: PoundingModel, u0: np.ndarray,
+                    v0: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Committed ``(drift, shear)`` of every yielding storey and link at t = 0, and their
+    ``z``.
 
     A storey given an initial drift is taken as loaded monotonically to it from rest (its
-    law followed from zero), so a drift beyond yield starts on the yield branch.
+    law followed from zero), so a drift beyond yield starts on the yield branch. A link
+    starts with its force at the initial displacement and velocity, a Maxwell link with its
+    spring unstretched (``z = 0``).
     """
-    from pounding.hysteresis.dispatch import drive_path
+    from pounding.devices.laws import DEVICE_MIN
+    from pounding.hysteresis.dispatch import drive_path, storey_trial
 
     lo, hi, code, par, zi = model.storey_arrays()
     state = np.zeros((lo.size, 2))
     z = np.zeros(int(np.sum(zi >= 0)))
+    v = np.zeros_like(u0) if v0 is None else v0
     for s in range(lo.size):
         d = u0[hi[s]] - (u0[lo[s]] if lo[s] >= 0 else 0.0)
+        if code[s] >= DEVICE_MIN:
+            rate = v[hi[s]] - v[lo[s]]
+            state[s] = (d, storey_trial(int(code[s]), par, s, d, rate, 0.0, d, 0.0)[0])
+            continue
         if d != 0.0:
             v, zz = drive_path(int(code[s]), par[s: s + 1], np.array([0.0, d]), 200)
             state[s] = (d, v[-1])

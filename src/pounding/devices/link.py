@@ -1,0 +1,173 @@
+"""Links between floors of neighbouring buildings: dampers and springs that act at all times.
+
+A :class:`Link` joins floor ``floors[0]`` of one building to floor ``floors[1]`` of another
+(labels ``"B1F3"``: building 1, floor 3, counted from 1 as in every output). Its law is one of
+:mod:`pounding.devices.laws`; the kernel integrates it as an element row beside the yielding
+storeys, so a model with links is stepped adaptively throughout.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from pounding.devices.laws import KELVIN, MAXWELL, VISCOUS
+from pounding.units import format_value
+
+__all__ = ["LINK_KINDS", "Link", "parse_floor"]
+
+LINK_KINDS: dict[str, int] = {"viscous": VISCOUS, "kelvin": KELVIN, "maxwell": MAXWELL}
+"""Link laws by name: ``viscous`` (linear or fluid viscous dashpot, ``F = c |ḋ|^α sgn ḋ``),
+``kelvin`` (spring ∥ dashpot) and ``maxwell`` (spring in series with a dashpot)."""
+
+_FLOOR = re.compile(r"^B(\d+)F(\d+)$")
+
+
+def parse_floor(label: str, field_name: str = "floors") -> tuple[int, int]:
+    """``"B2F3"`` → ``(1, 2)``: 0-based building and floor indices.
+
+    Raises
+    ------
+    ValueError
+        Not of the form ``B<building>F<floor>`` with both numbers from 1.
+    """
+    m = _FLOOR.match(str(label).strip().upper())
+    if m is None or int(m.group(1)) < 1 or int(m.group(2)) < 1:
+        raise ValueError(f"{field_name}: {label!r} is not a floor label like 'B1F3' "
+                         "(building and floor numbers from 1)")
+    return int(m.group(1)) - 1, int(m.group(2)) - 1
+
+
+@dataclass(frozen=True)
+class Link:
+    """A damper or spring between two floors of different buildings.
+
+    Parameters
+    ----------
+    floors : (str, str)
+        The two floors it joins, e.g. ``("B1F3", "B2F3")``.
+    kind : {"viscous", "kelvin", "maxwell"}
+        ``viscous``: ``F = c |ḋ|^α sgn ḋ`` (a linear dashpot with α = 1, a fluid viscous
+        damper with α < 1); ``kelvin``: ``F = k d + c ḋ``; ``maxwell``: spring ``k`` in series
+        with the dashpot ``c, α`` (the damper's brace or its own flexibility and the fluid).
+        ``d`` is the relative displacement of the right building's floor to the left one's.
+    c : float
+        Dashpot coefficient [N·(s/m)^α] (N·s/m for α = 1).
+    alpha : float
+        Velocity exponent α of the dashpot, 0 < α ≤ 2 (1: linear; fluid viscous dampers are
+        built with 0.2–1). Kelvin links are linear (α = 1).
+    k : float, optional
+        Spring stiffness [N/m] of ``kelvin`` and ``maxwell`` links (not of ``viscous``).
+    name : str
+        A label for outputs (default ``"B1F3-B2F3"``).
+
+    Examples
+    --------
+    >>> Link(("B1F1", "B2F1"), "viscous", c=2e5).readable()
+    'viscous link B1F1-B2F1: c = 2.00e5 N·s/m'
+    """
+
+    floors: tuple[str, str]
+    kind: str
+    c: float
+    alpha: float = 1.0
+    k: float | None = None
+    name: str = field(default="")
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.floors, (tuple, list)) or len(self.floors) != 2:
+            raise ValueError(f"floors: give two floor labels, e.g. ['B1F3', 'B2F3'] "
+                             f"(got {self.floors!r})")
+        a, b = (parse_floor(f) for f in self.floors)
+        if a[0] == b[0]:
+            raise ValueError(f"floors: {self.floors[0]} and {self.floors[1]} are in one "
+                             "building; a link joins two buildings")
+        kind = str(self.kind).strip().lower()
+        if kind not in LINK_KINDS:
+            raise ValueError(f"kind: {self.kind!r} is not a link law (one of "
+                             f"{', '.join(LINK_KINDS)})")
+        object.__setattr__(self, "kind", kind)
+        object.__setattr__(self, "floors", tuple(str(f).strip().upper() for f in self.floors))
+        if not (math.isfinite(self.c) and self.c > 0):
+            raise ValueError(f"c: must be finite and > 0 [N·(s/m)^α] (got {self.c!r})")
+        if not (math.isfinite(self.alpha) and 0.0 < self.alpha <= 2.0):
+            raise ValueError(f"alpha: must be in (0, 2] (got {self.alpha!r})")
+        if kind == "kelvin" and self.alpha != 1.0:
+            raise ValueError(f"alpha: a kelvin link is linear (α = 1; got {self.alpha!r}); "
+                             "use a maxwell link for a nonlinear dashpot with a spring")
+        if kind == "viscous":
+            if self.k is not None:
+                raise ValueError("k: a viscous link has no spring (use kind = 'kelvin' or "
+                                 "'maxwell')")
+        elif self.k is None or not (math.isfinite(self.k) and self.k > 0):
+            raise ValueError(f"k: a {kind} link needs a spring stiffness, finite and > 0 "
+                             f"[N/m] (got {self.k!r})")
+        # left floor first: d = u_right − u_left
+        if a[0] > b[0]:
+            object.__setattr__(self, "floors", (self.floors[1], self.floors[0]))
+        if not self.name:
+            object.__setattr__(self, "name", f"{self.floors[0]}-{self.floors[1]}")
+
+    @property
+    def code(self) -> int:
+        """Law code for the compiled kernel (:mod:`pounding.devices.laws`)."""
+        return LINK_KINDS[self.kind]
+
+    @property
+    def has_internal_variable(self) -> bool:
+        """True for a Maxwell link (its spring's deformation is integrated with the motion)."""
+        return self.kind == "maxwell"
+
+    @property
+    def ends(self) -> tuple[tuple[int, int], tuple[int, int]]:
+        """0-based (building, floor) of the left and the right end."""
+        return parse_floor(self.floors[0]), parse_floor(self.floors[1])
+
+    def params(self, width: int) -> NDArray[np.float64]:
+        """The constants ``[p0, p1, p2]`` of the compiled law, zero-padded to ``width``."""
+        p = np.zeros(width)
+        if self.kind == "viscous":
+            p[:2] = (self.c, self.alpha)
+        elif self.kind == "kelvin":
+            p[:2] = (self.k, self.c)
+        else:
+            p[:3] = (self.k, self.c, self.alpha)
+        return p
+
+    def force(self, d: NDArray[np.float64] | float, rate: NDArray[np.float64] | float,
+              z: NDArray[np.float64] | float = 0.0) -> NDArray[np.float64]:
+        """Force [N] at relative displacement ``d`` [m] and rate ``ḋ`` [m/s] (Maxwell: at
+        spring deformation ``z`` [m]), written out in NumPy (independent of the kernel's
+        compiled law: the reference solver uses it)."""
+        d, rate, z = (np.asarray(x, dtype=float) for x in (d, rate, z))
+        if self.kind == "viscous":
+            return self.c * np.sign(rate) * np.abs(rate) ** self.alpha
+        if self.kind == "kelvin":
+            return self.k * d + self.c * rate  # type: ignore[operator]
+        return self.k * z  # type: ignore[operator]
+
+    def spring_rate(self, rate: float, z: float) -> float:
+        """``ż`` of a Maxwell link [m/s]: ``ḋ`` less the dashpot's rate
+        ``sgn F (|F| / c)^(1/α)`` with ``F = k z``."""
+        f = float(self.k) * z  # type: ignore[arg-type]
+        return rate - math.copysign((abs(f) / self.c) ** (1.0 / self.alpha), f)
+
+    def describe(self) -> str:
+        """One line with the exact values (for keys and logs)."""
+        return (f"Link(floors={self.floors!r}, kind={self.kind!r}, c={self.c!r}, "
+                f"alpha={self.alpha!r}, k={self.k!r})")
+
+    def readable(self) -> str:
+        """One line for people, three significant digits and units."""
+        unit = "N·s/m" if self.alpha == 1.0 else f"N·(s/m)^{self.alpha:g}"
+        parts = []
+        if self.k is not None:
+            parts.append(f"k = {format_value(self.k, 'N/m')}")
+        parts.append(f"c = {format_value(self.c, unit)}")
+        if self.alpha != 1.0:
+            parts.append(f"α = {self.alpha:g}")
+        return f"{self.kind} link {self.name}: {', '.join(parts)}"
