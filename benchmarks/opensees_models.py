@@ -11,12 +11,15 @@ Models (1-D, ``-ndm 1 -ndf 1``; every node at x = 0, the elements are ``zeroLeng
   ``zeroLength`` with ``uniaxialMaterial Elastic k eta`` where ``eta = c = 2 ζ m ω``: the
   material's stress is ``k ε + η ε̇`` and its damping tangent is ``η``, so the equation of
   motion is exactly ``m ü + c u̇ + k u = −m a_g + contact``.
-* Shear pair (:func:`run_opensees_shear_pair`): two uniform n-storey chains. Storey
-  springs are ``Elastic k_i, a1 k_i`` (the stiffness-proportional Rayleigh part, ``a1 K``,
-  element by element) and the mass-proportional part ``a0 M`` comes from
-  ``rayleigh(a0, 0, 0, 0)`` (it acts on the nodal masses only; the zeroLength elements do
-  not take Rayleigh damping unless ``-doRayleigh`` is given). A ``betaK`` Rayleigh term is
-  deliberately *not* used: it would also multiply the contact elements' tangent.
+* Shear pair (:func:`run_opensees_shear_pair`): two uniform n-storey chains, built by
+  :func:`run_opensees_building_pair`, which takes any floor masses, storey stiffnesses,
+  Rayleigh coefficients and floor-to-floor contacts. Storey springs are
+  ``Elastic k_i, a1 k_i`` (the stiffness-proportional Rayleigh part, ``a1 K``, element by
+  element) and the mass-proportional part ``a0 M`` comes from
+  ``region(…, '-node', floors…, '-rayleigh', a0, 0, 0, 0)`` per building (it acts on the
+  nodal masses only; the zeroLength elements do not take Rayleigh damping unless
+  ``-doRayleigh`` is given). A ``betaK`` Rayleigh term is deliberately *not* used: it would
+  also multiply the contact elements' tangent.
 
 Contact: a ``zeroLength`` element from the left floor (node i) to the right floor (node j)
 in direction 1. Its deformation is ``ε = u_j − u_i = u_right − u_left``, so pounding
@@ -193,6 +196,15 @@ def _run(ops: Any, n_steps: int, dt_out: float, left: list[int], right: list[int
     return ul, ur, f, wall, failed, retried
 
 
+def _run_unread(ops: Any, n_steps: int, dt_out: float) -> tuple[float, int]:
+    """The analysis alone, nothing read: one ``analyze(n_steps, dt)`` call (a lower bound
+    of OpenSees' cost: no history, so no peaks or impacts). Returns the wall time and 1 if
+    the call failed (OpenSees stops at the step that did not converge), else 0."""
+    t0 = time.perf_counter()
+    failed = int(ops.analyze(n_steps, dt_out) != 0)
+    return time.perf_counter() - t0, failed
+
+
 def _retry(ops: Any, dt: float) -> bool:
     """The usual OpenSees recovery for a step whose Newton iteration did not converge:
     other algorithms first, then ten sub-steps, then back to Newton. True if one worked."""
@@ -318,11 +330,7 @@ def run_opensees_shear_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: flo
         ``peak_u_left``, ``peak_u_right`` (n,), ``wall_analyze``, ``wall_total``,
         ``n_steps``, ``retried``, ``failed``, ``params``.
     """
-    ops = _ops()
     n = int(n_storeys)
-    accel = np.asarray(accel_ms2, dtype=float)
-    t_end = (accel.size - 1) * dt_record if duration is None else float(duration)
-    n_steps = int(round(t_end / dt_out))
     bl = uniform_building(n, mass, T1)
     br = uniform_building(n, mass, T2)
     ray = []
@@ -331,18 +339,71 @@ def run_opensees_shear_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: flo
         ray.append(rayleigh_coefficients(w[0], w[1] if n > 1 else w[0], zeta))
     if n == 1:  # one mode: C = 2 ζ m ω as pure stiffness-proportional damping
         ray = [(0.0, 2.0 * zeta / natural_frequencies(*b)[0]) for b in (bl, br)]
-    m_eff = m_effective(mass, mass)
-    c_kv = kv_dashpot(k, e, mass, mass)
+    return run_opensees_building_pair(
+        accel_ms2, dt_record, dt_out, left=bl, right=br, rayleigh=ray,
+        contacts=[(i, i) for i in range(n)], gap=gap, e=e, k=k, k_h=k_h, law=law,
+        n_exp=n_exp, duration=duration, tol=tol, max_iter=max_iter, system=system,
+        numberer=numberer)
+
+
+def run_opensees_building_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: float = 1e-3,
+                               *, left: tuple[np.ndarray, np.ndarray],
+                               right: tuple[np.ndarray, np.ndarray],
+                               rayleigh: list[tuple[float, float]],
+                               contacts: list[tuple[int, int]], gap: float = 0.02,
+                               e: float = 0.65, k: float = K_KV_DEFAULT,
+                               k_h: float = K_H_DEFAULT, law: str = "kelvin-voigt",
+                               n_exp: float = 1.5, duration: float | None = None,
+                               tol: float = 1e-10, max_iter: int = 50,
+                               system: str = "BandSPD", numberer: str = "RCM",
+                               reads: bool = True) -> dict[str, Any]:
+    """Two shear buildings of any floor masses and storey stiffnesses, in OpenSees, with
+    contacts between the floors named in ``contacts``.
+
+    Parameters
+    ----------
+    left, right : (masses, stiffnesses)
+        Floor masses [kg] and storey stiffnesses [N/m] of each building, ground upwards.
+    rayleigh : [(a0, a1), (a0, a1)]
+        ``C = a0 M + a1 K`` of each building (``a1 K`` in the storey materials, ``a0 M`` by
+        ``region -rayleigh`` on its floor nodes).
+    contacts : list of (i, j)
+        A contact element from floor ``i`` of the left building to floor ``j`` of the
+        right one (0 = first floor); its law uses those two floor masses (``mEff``, and
+        the Kelvin–Voigt dashpot).
+    reads : bool
+        False: the analysis alone, one ``analyze(n_steps, dt_out)`` call reading nothing
+        (:func:`_run_unread`); the result then has only the wall times, ``n_steps``,
+        ``failed`` and ``params`` (histories, peaks and impacts are None).
+
+    Returns
+    -------
+    dict
+        As :func:`run_opensees_shear_pair` (``force`` and ``peak_force`` one column per
+        contact).
+    """
+    ops = _ops()
+    bl = tuple(np.asarray(a, dtype=float) for a in left)
+    br = tuple(np.asarray(a, dtype=float) for a in right)
+    nl, nr = len(bl[0]), len(br[0])
+    accel = np.asarray(accel_ms2, dtype=float)
+    t_end = (accel.size - 1) * dt_record if duration is None else float(duration)
+    n_steps = int(round(t_end / dt_out))
+    ray = [tuple(map(float, r)) for r in rayleigh]
+    pairs = [(int(i), int(j)) for i, j in contacts]
+    laws = [(m_effective(bl[0][i], br[0][j]), kv_dashpot(k, e, bl[0][i], br[0][j]))
+            for i, j in pairs]
     xi = zeta_jankowski(e)
 
     t_build = time.perf_counter()
     ops.wipe()
     ops.logFile(_LOG, "-noEcho")
     ops.model("basic", "-ndm", 1, "-ndf", 1)
-    left = [1000 + i for i in range(1, n + 1)]
-    right = [2000 + i for i in range(1, n + 1)]
+    left_nodes = [1000 + i for i in range(1, nl + 1)]
+    right_nodes = [2000 + i for i in range(1, nr + 1)]
     mat = ele = 0
     for base, (m_, k_), (a0, a1) in ((1000, bl, ray[0]), (2000, br, ray[1])):
+        n = len(m_)
         ops.node(base, 0.0)
         ops.fix(base, 1)
         for i in range(1, n + 1):
@@ -355,16 +416,29 @@ def run_opensees_shear_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: flo
         if a0 > 0.0:
             ops.region(base // 1000, "-node", *range(base + 1, base + n + 1),
                        "-rayleigh", a0, 0.0, 0.0, 0.0)
-    contacts = []
-    for i in range(n):
+    contact_eles = []
+    for (i, j), (m_eff, c_kv) in zip(pairs, laws):
         mat += 1
         ele += 1
         _contact_material(ops, mat, law, gap, k=k, c=c_kv, k_h=k_h, xi=xi, m_eff=m_eff,
                           n_exp=n_exp)
-        ops.element("zeroLength", ele, left[i], right[i], "-mat", mat, "-dir", 1)
-        contacts.append(ele)
+        ops.element("zeroLength", ele, left_nodes[i], right_nodes[j], "-mat", mat, "-dir", 1)
+        contact_eles.append(ele)
     _analysis(ops, dt_record, accel, tol, max_iter, system, numberer)
-    ul, ur, f, wall, failed, retried = _run(ops, n_steps, dt_out, left, right, contacts)
+    params = {"law": law, "left": bl, "right": br, "rayleigh": ray, "k": k,
+              "c_kv": laws[0][1] if laws else None, "k_h": k_h, "xi": xi,
+              "m_eff": laws[0][0] if laws else None, "gap": gap, "e": e,
+              "contacts": pairs, "contact_laws": laws}
+    if not reads:
+        wall, failed = _run_unread(ops, n_steps, dt_out)
+        wall_total = time.perf_counter() - t_build
+        ops.wipe()
+        return {"time": None, "u_left": None, "u_right": None, "force": None,
+                "peak_force": None, "n_impacts": None, "peak_u_left": None,
+                "peak_u_right": None, "wall_analyze": wall, "wall_total": wall_total,
+                "n_steps": n_steps, "failed": failed, "retried": 0, "params": params}
+    ul, ur, f, wall, failed, retried = _run(ops, n_steps, dt_out, left_nodes, right_nodes,
+                                            contact_eles)
     wall_total = time.perf_counter() - t_build
     ops.wipe()
     return {
@@ -373,7 +447,5 @@ def run_opensees_shear_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: flo
         "peak_force": f.max(axis=0), "n_impacts": count_impacts(f),
         "peak_u_left": np.abs(ul).max(axis=0), "peak_u_right": np.abs(ur).max(axis=0),
         "wall_analyze": wall, "wall_total": wall_total, "n_steps": n_steps, "failed": failed,
-        "retried": retried,
-        "params": {"law": law, "left": bl, "right": br, "rayleigh": ray, "k": k, "c_kv": c_kv,
-                   "k_h": k_h, "xi": xi, "m_eff": m_eff, "gap": gap, "e": e},
+        "retried": retried, "params": params,
     }
