@@ -380,7 +380,10 @@ class PoundingModel:
                     raise ValueError(f"devices[{i}].floors: {dev.label} is not a floor-to-floor "
                                      f"contact of this model (contacts: "
                                      f"{', '.join(bare) or 'none'})")
-                dev.gaps(bare[dev.label].gap)
+                try:
+                    dev.gaps(bare[dev.label].gap)
+                except ValueError as exc:
+                    raise ValueError(f"devices[{i}].{exc}") from exc
             else:
                 raise ValueError(f"devices[{i}]: expected a Link or a Bumper (got "
                                  f"{type(dev).__name__})")

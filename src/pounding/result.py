@@ -477,8 +477,7 @@ class Result:
     @cached_property
     def energy_balance_error(self) -> float:
         """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + E_hyst + W_contact +
-        E_links)|`` over the
-        run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
+        E_links)|`` over the run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
         largest input energy and ``E_0`` (dimensionless; 0 for a run with no energy)."""
         e = self.energy
         e0 = e[0, 1] + e[0, 2]
@@ -527,6 +526,13 @@ class Result:
             data["column_shear"] = var(self.column_shear, ("time", "contact"), "N",
                                        "shear demand on the struck column of a "
                                        "floor-to-column contact (NaN: floor to floor)")
+        if model.links and self.link_force is not None:
+            data["link_force"] = var(self.link_force, ("time", "link"), "N",
+                                     "force of each link between buildings (resisting the "
+                                     "right floor moving away from the left one)")
+            data["link_displacement"] = var(self.link_displacement, ("time", "link"), "m",
+                                            "relative displacement across each link "
+                                            "(right floor minus left floor)")
         buildings = [f"B{b + 1}" for b, bl in enumerate(model.buildings) for _ in range(bl.n)]
         coords = {
             "time": var(self.time, ("time",), "s", "time"),
@@ -541,6 +547,9 @@ class Result:
             "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
                                      "elevation of the contact"),
         }
+        if model.links:
+            coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
+                                                          dtype=object), {})
         attrs = {"model": model.name, "record": self.motion.name,
                  "solver": self.stats.solver, "rtol": self.stats.rtol,
                  "energy_balance_error": self.energy_balance_error,

@@ -63,6 +63,7 @@ def summarize(r: Result) -> dict[str, Any]:
         "contact_dissipated_J": float(r.contact_dissipated[-1]),
         "energy_balance_error": r.energy_balance_error,
         **inelastic_summary(r),
+        **device_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
                    "rejected": r.stats.rejected, "events": r.stats.events,
                    "impact_table_overflow": r.stats.impact_overflow,
@@ -113,3 +114,23 @@ def inelastic_summary(r: Result) -> dict[str, Any]:
         out["column_shear_over_storey_shear"] = {c.label: float(ratio[c.index])
                                                  for c in struck}
     return out
+
+
+def device_summary(r: Result) -> dict[str, Any]:
+    """The devices: each link's law, peak force and energy dissipated; each bumper."""
+    out: dict[str, Any] = {}
+    links = r.model.links
+    if links:
+        peak = r.link_peak_force
+        diss = r.link_dissipated
+        out["links"] = [{"name": lk.name, "floors": list(lk.floors), "law": lk.readable(),
+                         "peak_force_N": float(f), "dissipated_J": float(e)}
+                        for lk, f, e in zip(links, peak, diss)]
+        out["links_dissipated_J"] = float(r.energy[-1, 7])
+    from pounding.devices import Bumper
+
+    bumpers = [d for d in r.model.devices if isinstance(d, Bumper)]
+    if bumpers:
+        out["bumpers"] = [{"contact": b.label, "pad": b.readable()} for b in bumpers]
+    return out
+

@@ -118,6 +118,8 @@ def _print_summary(out: Any) -> None:
                  + (f" at {t_peak:.3f} s" if t_peak is not None else ""))
     head.add_row(_h("energy input [J]"), f"{s['energy_final_J']['input']:.4g}")
     head.add_row(_h("dissipated in contacts [J]"), f"{s['contact_dissipated_J']:.4g}")
+    if model.links:
+        head.add_row(_h("dissipated by links [J]"), f"{s['links_dissipated_J']:.4g}")
     head.add_row("energy-balance error", f"{r.energy_balance_error:.2e} of peak input")
     if r.stats.impact_overflow:
         head.add_row("[red]impact table[/]", "[red]overflowed: some impacts not listed[/]")
@@ -185,6 +187,15 @@ def _print_summary(out: Any) -> None:
                           f"{r.column_shear_ratio[c.index]:.2f}" if hit else "-"]
             ct.add_row(*cells)
         console.print(ct)
+
+    if model.links:
+        lt = Table(title="Links between buildings")
+        for col in ("link", "law", "peak force [kN]", "dissipated [J]"):
+            lt.add_column(_h(col), justify="left" if col in ("link", "law") else "right")
+        for link, f, e in zip(model.links, r.link_peak_force, r.link_dissipated):
+            lt.add_row(link.name, link.readable().split(": ", 1)[1], f"{f / 1e3:.4g}",
+                       f"{e:.4g}")
+        console.print(lt)
 
     console.print(f"outputs in [bold]{out.out_dir}[/]: "
                   + ", ".join(sorted(p.name for p in out.files.values())), highlight=False)

@@ -29,18 +29,14 @@ CONTACT_COMMON = frozenset({"law", "gap", "gaps", "floor_to_column", "level_tole
 """``[contact]`` keys of every law."""
 
 
-class ContactConfig(Section):
-    """``[contact]``: the contact law used at every shared floor level, and the gaps.
+class LawConfig(Section):
+    """A contact law in a model file: ``law`` and the keys it reads.
 
     ``law`` is a name of :data:`pounding.contact.factory.LAW_NAMES`; the other keys are
     those of :class:`pounding.model.ContactSpec` (``k`` [N/m], ``k_h`` [N/m^n], ``e`` [-],
     ``formula``, ``c`` [N·s/m], ``zeta`` [-], ``chi`` [-], ``n`` [-], ``tension``,
     ``delta_m`` [m], ``a`` [-]); only the keys the law reads are accepted (:data:`LAW_FIELDS`).
-    ``gap`` [m] is the gap between every pair of neighbours, or ``gaps`` one per pair.
-    ``floor_to_column`` (default true): a floor that does not line up with a floor of its
-    neighbour strikes the neighbour's column (:class:`pounding.model.ContactPoint`); false
-    keeps floor-to-floor contacts only. ``level_tolerance`` [m] (default 0.1): floors closer
-    in elevation than this meet slab to slab.
+    The ``rubber`` of a bumper (``[[device]]``) is one.
     """
 
     law: str
@@ -55,10 +51,6 @@ class ContactConfig(Section):
     tension: bool = False
     delta_m: Pos | None = None
     a: Annotated[float, Field(gt=0, lt=1)] = 0.1
-    gap: NonNeg | None = None
-    gaps: list[NonNeg] | None = None
-    floor_to_column: bool = True
-    level_tolerance: Pos = 0.1
 
     @field_validator("law")
     @classmethod
@@ -71,12 +63,38 @@ class ContactConfig(Section):
         return key
 
     @model_validator(mode="after")
-    def _law_keys(self) -> ContactConfig:
+    def _law_keys(self) -> LawConfig:
         used = LAW_FIELDS[self.law]
         for key in sorted(self.model_fields_set - used - CONTACT_COMMON):
             raise field_error(key, f"not used by the {self.law} law (got "
                                     f"{fmt(getattr(self, key))}); it reads "
                                     f"{', '.join(sorted(used))}")
+        return self
+
+    def spec(self) -> ContactSpec:
+        """The :class:`ContactSpec` (domain errors propagate unprefixed)."""
+        kw = self.model_dump(exclude=set(CONTACT_COMMON - {"law"}), exclude_none=True)
+        return ContactSpec(**kw)
+
+
+class ContactConfig(LawConfig):
+    """``[contact]``: the contact law used at every shared floor level, and the gaps.
+
+    The law's keys as :class:`LawConfig`. ``gap`` [m] is the gap between every pair of
+    neighbours, or ``gaps`` one per pair. ``floor_to_column`` (default true): a floor that
+    does not line up with a floor of its neighbour strikes the neighbour's column
+    (:class:`pounding.model.ContactPoint`); false keeps floor-to-floor contacts only.
+    ``level_tolerance`` [m] (default 0.1): floors closer in elevation than this meet slab to
+    slab.
+    """
+
+    gap: NonNeg | None = None
+    gaps: list[NonNeg] | None = None
+    floor_to_column: bool = True
+    level_tolerance: Pos = 0.1
+
+    @model_validator(mode="after")
+    def _gap_keys(self) -> ContactConfig:
         if self.gap is not None and self.gaps is not None:
             raise field_error("gaps", "give gap (all pairs) or gaps (one per pair), not both")
         if self.gap is None and self.gaps is None:
@@ -87,8 +105,3 @@ class ContactConfig(Section):
     def gap_list(self, n_pairs: int) -> list[float]:
         """The gap of each pair of neighbours [m]."""
         return list(self.gaps) if self.gaps is not None else [self.gap] * n_pairs  # type: ignore[list-item]
-
-    def spec(self) -> ContactSpec:
-        """The :class:`ContactSpec` (domain errors propagate unprefixed)."""
-        kw = self.model_dump(exclude=set(CONTACT_COMMON - {"law"}), exclude_none=True)
-        return ContactSpec(**kw)

@@ -11,6 +11,7 @@ from pydantic import Field, PrivateAttr, ValidationError, model_validator
 from pounding.config.base import Pos, Section, field_error, prefixed
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
+from pounding.config.device import DeviceConfig
 from pounding.config.errors import format_validation_error
 from pounding.config.record import RecordConfig
 from pounding.config.toml import dump_toml
@@ -60,6 +61,7 @@ class RunConfig(Section):
     record: RecordConfig
     building: Annotated[list[BuildingConfig], Field(min_length=1)]
     contact: ContactConfig | None = None
+    device: list[DeviceConfig] = []
     solver: SolverConfig = SolverConfig()
     output: OutputConfig = OutputConfig()
 
@@ -104,9 +106,19 @@ class RunConfig(Section):
         if self.contact is not None:
             geometry = {"floor_to_column": self.contact.floor_to_column,
                         "level_tolerance": self.contact.level_tolerance}
-        with prefixed("contact"):
-            model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry)
+        devices = []
+        for i, d in enumerate(self.device):
+            with prefixed(f"device[{i}]"):
+                devices.append(d.build())
+        try:
+            model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry,
+                                  devices=devices)
             model.contacts  # noqa: B018  (builds every contact law with its floor masses)
+        except ValueError as exc:
+            text = str(exc)
+            if text.startswith("devices["):  # the model's devices[i] is the file's device[i]
+                raise ValueError("device[" + text[len("devices["):]) from exc
+            raise ValueError(f"contact: {text}") from exc
         for p in range(len(buildings) - 1):
             if not any(c.pair == p for c in model.contacts):
                 a, b = buildings[p], buildings[p + 1]
@@ -131,6 +143,12 @@ class RunConfig(Section):
         if self.contact is not None:
             keep = LAW_FIELDS[self.contact.law] | CONTACT_COMMON
             data["contact"] = {k: v for k, v in data["contact"].items() if k in keep}
+        for dev, raw in zip(self.device, data.get("device", [])):
+            if dev.rubber is not None:
+                keep = LAW_FIELDS[dev.rubber.law] | {"law"}
+                raw["rubber"] = {k: v for k, v in raw["rubber"].items() if k in keep}
+        if not data.get("device"):
+            data.pop("device", None)
         if resolve_paths and self.record.file is not None and self.record.path is not None:
             data["record"]["file"] = str(self.record.path)
         return data

@@ -49,7 +49,8 @@ GROUND_HEIGHT = 1.1
 """Height of the ground-acceleration panel [in]."""
 ENERGY_COLOURS = {"kinetic": "tab:blue", "elastic strain": "tab:orange",
                   "structural damping": "tab:green", "hysteretic (storeys yielding)": "tab:brown",
-                  "dissipated in contacts": "tab:red", "stored in closed contacts": "tab:purple"}
+                  "dissipated by links": "tab:cyan", "dissipated in contacts": "tab:red",
+                  "stored in closed contacts": "tab:purple"}
 """One colour per energy term, the same in every run."""
 _CHAR_WIDTH = 0.052
 """Mean width of a legend character at :data:`LEGEND_SIZE` [in] (for the legend column)."""
@@ -176,7 +177,7 @@ def plot_contact_forces(result: Result) -> Figure:
 
 def plot_energy(result: Result) -> Figure:
     """Energy balance [kJ or MJ]: stacked kinetic, strain, structural damping, hysteretic
-    (yielding storeys), contact-dissipated and contact-stored energy against the input
+    (yielding storeys), dissipated by links between buildings, contact-dissipated and contact-stored energy against the input
     energy; below, the closure error input − sum (in its own multiple of J)."""
     from pounding.result import ENERGY_NAMES
 
@@ -192,6 +193,8 @@ def plot_energy(result: Result) -> Figure:
     ]
     if result.model.is_inelastic:
         terms.insert(3, ("hysteretic (storeys yielding)", col["hysteretic"]))
+    if result.model.links and "links" in col:
+        terms.insert(3, ("dissipated by links", col["links"]))
     stack = np.column_stack([v for _, v in terms])
     edges = np.cumsum(stack, axis=1)
     closure = col["input"] - edges[:, -1]

@@ -22,6 +22,8 @@ MEASURES: dict[str, str] = {
     "max_ductility": "float64",
     "max_residual_drift_m": "float64",
     "max_column_shear_ratio": "float64",
+    "links_dissipated_J": "float64",
+    "peak_link_force_N": "float64",
 }
 """Measures of every case (column → type): impacts (all contacts), largest contact force,
 energy dissipated in the contacts and put in by the ground at the end, relative
@@ -30,7 +32,8 @@ absolute floor acceleration over all floors (of the per-floor columns), PGA of t
 record as applied, whether the impact table overflowed; with yielding storeys the
 hysteretic energy at the end, the largest storey ductility demand and the largest
 |residual drift| (null, null and 0 for linear storeys); with floor-to-column contacts the
-largest struck-column shear over its storey's peak shear (null without)."""
+largest struck-column shear over its storey's peak shear (null without); with links between
+buildings the energy they dissipated and the largest |force| of any (null without)."""
 
 FLOOR_MEASURES: tuple[str, ...] = ("peak_displacement_m", "peak_drift_m", "peak_abs_accel_m_s2")
 """Per-floor measures, one column per floor: ``<measure>_B1F1``, ``<measure>_B1F2``, …
@@ -89,6 +92,9 @@ def result_row(result: Any) -> dict[str, Any]:
         "max_residual_drift_m": float(np.max(np.abs(result.residual_drift))),
         "max_column_shear_ratio": (float(np.nanmax(result.column_shear_ratio))
                                    if np.isfinite(result.column_shear_ratio).any() else None),
+        "links_dissipated_J": float(e[-1, 7]) if result.model.links else None,
+        "peak_link_force_N": (float(result.link_peak_force.max()) if result.model.links
+                              else None),
     }
     floor = {
         "peak_displacement_m": result.peak_displacement,

@@ -1,0 +1,59 @@
+"""``[[device]]``: links between buildings and bumpers in the gaps, in a model file."""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import Field, model_validator
+
+from pounding.config.base import Pos, Section, field_error
+from pounding.config.contact import LawConfig
+from pounding.devices import Bumper, Link
+
+_LINK_KEYS = {"viscous": {"c", "alpha"}, "kelvin": {"c", "k"}, "maxwell": {"c", "k", "alpha"}}
+_BUMPER_KEYS = {"thickness", "compression_limit", "rubber"}
+
+
+class DeviceConfig(Section):
+    """``[[device]]``: one device.
+
+    ``type`` is ``viscous`` (``c`` [N·(s/m)^α], ``alpha`` [-], default 1), ``kelvin`` (``k``
+    [N/m], ``c`` [N·s/m]), ``maxwell`` (``k``, ``c``, ``alpha``) — links between two floors of
+    different buildings (:class:`pounding.devices.Link`) — or ``bumper``: a pad of
+    ``thickness`` [m] in the gap of a contact that bottoms out at ``compression_limit`` (a
+    fraction of the thickness), with its own contact law ``rubber`` (a table like
+    ``[contact]`` without gaps; :class:`pounding.devices.Bumper`). ``floors`` names the two
+    floors, e.g. ``["B1F3", "B2F3"]`` (building and floor numbers from 1, as in every
+    output).
+    """
+
+    type: Literal["viscous", "kelvin", "maxwell", "bumper"]
+    floors: Annotated[list[str], Field(min_length=2, max_length=2)]
+    c: Pos | None = None
+    alpha: Annotated[float, Field(gt=0, le=2)] | None = None
+    k: Pos | None = None
+    thickness: Pos | None = None
+    compression_limit: Annotated[float, Field(gt=0, lt=1)] | None = None
+    rubber: LawConfig | None = None
+
+    @model_validator(mode="after")
+    def _keys(self) -> DeviceConfig:
+        used = _BUMPER_KEYS if self.type == "bumper" else _LINK_KEYS[self.type]
+        for key in sorted(self.model_fields_set - used - {"type", "floors"}):
+            raise field_error(key, f"not used by a {self.type} device; it reads "
+                                    f"{', '.join(sorted(used))}")
+        required = (_BUMPER_KEYS if self.type == "bumper"
+                    else _LINK_KEYS[self.type] - {"alpha"})
+        for key in sorted(required - self.model_fields_set):
+            raise field_error(key, f"required by a {self.type} device")
+        return self
+
+    def build(self) -> Link | Bumper:
+        """The device (domain errors propagate unprefixed)."""
+        if self.type == "bumper":
+            assert self.rubber is not None
+            return Bumper(tuple(self.floors), float(self.thickness),  # type: ignore[arg-type]
+                          float(self.compression_limit),  # type: ignore[arg-type]
+                          self.rubber.spec())
+        return Link(tuple(self.floors), self.type, c=float(self.c),  # type: ignore[arg-type]
+                    alpha=1.0 if self.alpha is None else self.alpha, k=self.k)
