@@ -104,7 +104,7 @@ def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> No
     assert (ROOT / "examples").resolve() == example_path(DEMO_NAME).parent.resolve()
     assert example_path(DEMO_NAME).resolve() == DEMO.resolve()
     listed = {e.name: e.kind for e in examples()}
-    assert KINDS == ("sweep", "spectrum", "fragility")
+    assert KINDS == ("sweep", "spectrum", "fragility", "mitigation")
     assert listed == {p.name: next((k for k in KINDS if p.name.startswith(f"{k}_")), "model")
                       for p in (ROOT / "examples").glob("*.toml")}
     assert all(e.description for e in examples())

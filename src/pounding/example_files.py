@@ -20,13 +20,14 @@ __all__ = ["DEMO", "KINDS", "Example", "copy_examples", "example_path", "example
 DEMO = "two_10_storey.toml"
 """The example ``pounding demo`` runs."""
 
-KINDS: tuple[str, ...] = ("sweep", "spectrum", "fragility")
+KINDS: tuple[str, ...] = ("sweep", "spectrum", "fragility", "mitigation")
 """Kinds of example other than a model file, told by the prefix ``<kind>_`` of the name."""
 
 
 class Example(NamedTuple):
-    """One bundled example: file name, kind (``model``, ``sweep``, ``spectrum`` or
-    ``fragility``: by the prefix ``sweep_`` / ``spectrum_`` / ``fragility_`` of its name),
+    """One bundled example: file name, kind (``model``, ``sweep``, ``spectrum``,
+    ``fragility`` or ``mitigation``: by the prefix ``sweep_`` / ``spectrum_`` /
+    ``fragility_`` / ``mitigation_`` of its name),
     what it shows."""
 
     name: str

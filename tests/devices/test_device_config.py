@@ -98,3 +98,16 @@ def test_a_sweep_over_a_damper_coefficient(tmp_path: Path):
     assert df["links_dissipated_J"].notna().all()
     # a stiffer damper pulls the floors together: the link force grows with c
     assert df.sort_values("device.0.c")["peak_link_force_N"].is_monotonic_increasing
+
+
+def test_floors_all_puts_a_device_at_every_shared_floor_level():
+    import tomllib
+
+    text = MODEL.split("[[device]]")[0].replace(
+        "[[building]]\nmass = 2e5\nperiod = 0.5",
+        "[[building]]\nn_storeys = 3\nmass = 2e5\nperiod = 0.5").replace(
+        "[[building]]\nmass = 3e5\nperiod = 1.0",
+        "[[building]]\nn_storeys = 2\nmass = 3e5\nperiod = 1.0")
+    text += '[[device]]\ntype = "kelvin"\nfloors = "all"\nc = 1e5\nk = 1e6\n'
+    model = parse_config(tomllib.loads(text)).build().model
+    assert [lk.floors for lk in model.links] == [("B1F1", "B2F1"), ("B1F2", "B2F2")]

@@ -138,3 +138,14 @@ def test_a_strongly_nonlinear_fluid_damper_closes_the_energy_balance():
     assert res.energy_balance_error < 1e-6
     f = link.force(res.link_displacement, res.link_velocity)
     assert np.abs(res.link_force - f).max() <= 1e-9 * np.abs(f).max()
+
+
+def test_located_acceleration_peaks_with_a_fluid_damper_match_a_fine_sampling():
+    # the damper's slope is unbounded where its rate reverses: the acceleration has a cusp
+    # there, which must not throw the peak located inside a step off (it did: 850 g)
+    link = Link(("B1F1", "B2F1"), "viscous", c=4e5, alpha=0.5)
+    model = PoundingModel(list(_pair()), [10.0], KV, devices=[link])
+    gm = el_centro().trimmed(6.0)
+    located = simulate(model, gm).peak_abs_acceleration
+    fine = np.abs(simulate(model, gm, dt=2e-5).abs_acceleration).max(axis=0)
+    assert located == pytest.approx(fine, rel=1e-5)

@@ -27,6 +27,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_ellipse,
     commands_fragility,
     commands_gap,
+    commands_mitigate,
     commands_record,
     commands_report,
     commands_run,

@@ -24,11 +24,12 @@ class DeviceConfig(Section):
     fraction of the thickness), with its own contact law ``rubber`` (a table like
     ``[contact]`` without gaps; :class:`pounding.devices.Bumper`). ``floors`` names the two
     floors, e.g. ``["B1F3", "B2F3"]`` (building and floor numbers from 1, as in every
-    output).
+    output), or is ``"all"``: one device at every floor-to-floor contact of the model (every
+    shared floor level of every pair of neighbours).
     """
 
     type: Literal["viscous", "kelvin", "maxwell", "bumper"]
-    floors: Annotated[list[str], Field(min_length=2, max_length=2)]
+    floors: Annotated[list[str], Field(min_length=2, max_length=2)] | Literal["all"]
     c: Pos | None = None
     alpha: Annotated[float, Field(gt=0, le=2)] | None = None
     k: Pos | None = None
@@ -48,12 +49,18 @@ class DeviceConfig(Section):
             raise field_error(key, f"required by a {self.type} device")
         return self
 
-    def build(self) -> Link | Bumper:
-        """The device (domain errors propagate unprefixed)."""
-        if self.type == "bumper":
-            assert self.rubber is not None
-            return Bumper(tuple(self.floors), float(self.thickness),  # type: ignore[arg-type]
-                          float(self.compression_limit),  # type: ignore[arg-type]
-                          self.rubber.spec())
-        return Link(tuple(self.floors), self.type, c=float(self.c),  # type: ignore[arg-type]
-                    alpha=1.0 if self.alpha is None else self.alpha, k=self.k)
+    def build(self, contact_floors: list[tuple[str, str]]) -> list[Link | Bumper]:
+        """The device, or one at each pair of ``contact_floors`` for ``floors = "all"``
+        (domain errors propagate unprefixed)."""
+        pairs = contact_floors if self.floors == "all" else [tuple(self.floors)]
+        out: list[Link | Bumper] = []
+        for pair in pairs:
+            if self.type == "bumper":
+                assert self.rubber is not None
+                out.append(Bumper(pair, float(self.thickness),  # type: ignore[arg-type]
+                                  float(self.compression_limit),  # type: ignore[arg-type]
+                                  self.rubber.spec()))
+            else:
+                out.append(Link(pair, self.type, c=float(self.c),  # type: ignore[arg-type]
+                                alpha=1.0 if self.alpha is None else self.alpha, k=self.k))
+        return out

@@ -106,10 +106,15 @@ class RunConfig(Section):
         if self.contact is not None:
             geometry = {"floor_to_column": self.contact.floor_to_column,
                         "level_tolerance": self.contact.level_tolerance}
-        devices = []
+        devices: list[Any] = []
+        if self.device:
+            with prefixed("contact"):
+                bare = PoundingModel(buildings, gaps, spec, **geometry)
+            floors = [(c.left.label(), c.right.label()) for c in bare.contacts
+                      if c.is_floor_to_floor]
         for i, d in enumerate(self.device):
             with prefixed(f"device[{i}]"):
-                devices.append(d.build())
+                devices.extend(d.build(floors))
         try:
             model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry,
                                   devices=devices)

@@ -59,16 +59,24 @@ def device_trial(code, p0, p1, p2, d, rate, z):
     return f, 0.0, rate - v_dash
 
 
+SLOPE_RATE_FLOOR: float = 1e-3
+"""Relative velocity [m/s] below which a fluid damper's slope ``α c |ḋ|^(α−1)`` (unbounded at
+``ḋ = 0`` for α < 1) is taken at this velocity in the force's rate (:func:`device_rate_terms`),
+which the kernel uses only to locate acceleration peaks inside steps."""
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def device_rate_terms(code, p0, p1, p2, rate):
     """``(∂F/∂ḋ, ∂F/∂z)``: with :func:`device_trial`'s ``∂F/∂d`` they give the force's rate
-    ``Ḟ = (∂F/∂d) ḋ + (∂F/∂ḋ) d̈ + (∂F/∂z) ż`` (a fluid damper's ``∂F/∂ḋ`` is unbounded at
-    ``ḋ = 0``: taken as 0 there, where the kernel ends a step anyway)."""
+    ``Ḟ = (∂F/∂d) ḋ + (∂F/∂ḋ) d̈ + (∂F/∂z) ż``. A fluid damper's ``∂F/∂ḋ`` is unbounded where
+    ``ḋ`` changes sign (the kernel ends a step there): it is taken at
+    ``|ḋ| ≥`` :data:`SLOPE_RATE_FLOOR`, so the cubic through the acceleration and this rate
+    at a step's ends (pounding.integrate.peaks) does not overshoot the cusp."""
     if code == VISCOUS:
         if p1 == 1.0:
             return p0, 0.0
-        a = abs(rate)
-        return (p1 * p0 * a ** (p1 - 1.0) if a > 0.0 else 0.0), 0.0
+        a = max(abs(rate), SLOPE_RATE_FLOOR)
+        return p1 * p0 * a ** (p1 - 1.0), 0.0
     if code == KELVIN:
         return p1, 0.0
     return 0.0, p0

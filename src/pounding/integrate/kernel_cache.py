@@ -27,7 +27,7 @@ KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.rhs", "pounding.contact.base", "pounding.contact.dispatch",
     "pounding.contact.linear", "pounding.contact.hertz", "pounding.contact.bilinear",
     "pounding.hysteresis.base", "pounding.hysteresis.dispatch",
-    "pounding.hysteresis.bilinear", "pounding.hysteresis.bouc_wen",
+    "pounding.hysteresis.bilinear", "pounding.hysteresis.bouc_wen", "pounding.devices.laws",
 )
 """Every module whose compiled code ends up in the kernel."""
 

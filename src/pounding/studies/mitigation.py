@@ -1,0 +1,216 @@
+"""Comparing retrofit options for one building pair: bare gap, bumpers, links.
+
+``pounding mitigate STUDY.toml`` (docs/mitigation.md). A study file names a base model, the
+records, and the options — each a list of ``[[option.device]]`` tables added to the base
+model's own devices (none: the bare gap)::
+
+    base = "two_10_storey.toml"
+    records = ["el_centro", "kobe_1995_KJMA_000_RSN1106"]   # default: the base's record
+    [[option]]
+    name = "bare gap"
+    [[option]]
+    name = "bumpers 20 mm"
+    [[option.device]]
+    type = "bumper"
+    floors = "all"
+    thickness = 0.02
+    compression_limit = 0.7
+    rubber = { law = "hertzdamp", k_h = 1e8, e = 0.5 }
+
+Each option runs under each record (:func:`pounding.simulate`, one process: a few dozen runs
+of a few ms to a few tens of ms). The answers are the engineer's trade-off: what each option
+does to the impacts (number, peak force of the buildings' own contacts, and of the pads),
+to the storeys (peak drift ratio, storey shear) and to the floors (peak absolute
+acceleration: soft pads lower the impact forces but can raise accelerations), and the
+energy each kind of device dissipates.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import numpy as np
+from pydantic import Field, ValidationError
+
+from pounding.config.base import Section
+from pounding.config.device import DeviceConfig
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+    from pounding.result import Result
+
+__all__ = ["MEASURES", "MitigationStudy", "OptionConfig", "StudyOutcome", "load_mitigation",
+           "measure_row", "run_mitigation", "summarise"]
+
+MEASURES: dict[str, str] = {
+    "n_impacts": "impacts of the buildings' own contacts",
+    "peak_impact_force_N": "largest force of the buildings' own contacts [N]",
+    "n_pad_impacts": "impacts on bumper pads",
+    "peak_pad_force_N": "largest force on a bumper pad [N]",
+    "peak_drift_ratio": "largest storey drift / storey height",
+    "peak_storey_shear_N": "largest storey shear [N]",
+    "peak_abs_accel_m_s2": "largest absolute floor acceleration [m/s²]",
+    "contact_dissipated_J": "energy dissipated in the buildings' contacts [J]",
+    "pads_dissipated_J": "energy dissipated by bumper pads [J]",
+    "links_dissipated_J": "energy dissipated by links [J]",
+    "peak_link_force_N": "largest |force| of any link [N]",
+}
+"""Columns of the comparison table, each for one option under one record."""
+
+
+class OptionConfig(Section):
+    """``[[option]]``: a retrofit option, its ``name`` and its ``device`` tables."""
+
+    name: Annotated[str, Field(min_length=1)]
+    device: list[DeviceConfig] = []
+
+
+class MitigationStudy(Section):
+    """A study file (module docstring)."""
+
+    name: str = "mitigation"
+    base: str
+    out: str | None = None
+    records: list[str] | None = None
+    option: Annotated[list[OptionConfig], Field(min_length=1)]
+
+
+@dataclass
+class StudyOutcome:
+    """The table of every run, its summary per option, and where they were written."""
+
+    table: "pd.DataFrame"
+    summary: "pd.DataFrame"
+    out_dir: Path | None = None
+    files: dict[str, Path] = field(default_factory=dict)
+
+
+def load_mitigation(path: str | os.PathLike[str]) -> tuple[MitigationStudy, Path]:
+    """Read and check a study file; the folder its paths are relative to."""
+    from pounding.config.errors import format_validation_error
+    from pounding.io import read_toml
+
+    p = Path(path)
+    data = read_toml(p, "mitigation study file")
+    try:
+        return MitigationStudy.model_validate(data), p.resolve().parent
+    except ValidationError as exc:
+        raise ValueError(format_validation_error(exc, str(p))) from None
+
+
+def _configs(study: MitigationStudy, here: Path) -> list[tuple[str, str, Any]]:
+    """``(option, record, RunConfig)`` of every run, each checked by building it."""
+    from pounding.config import load_config, parse_config
+
+    base_file = (here / study.base).resolve()
+    base = load_config(base_file)
+    data = base.to_dict(resolve_paths=True)
+    records: list[dict[str, Any]] = [data["record"]]
+    if study.records:
+        records = []
+        for r in study.records:
+            path = (here / r)
+            records.append({"file": str(path.resolve())} if path.suffix and path.exists()
+                           else {"bundled": r})
+        keep = {k: v for k, v in data["record"].items()
+                if k not in ("file", "bundled", "dt", "units")}
+        records = [rec | keep for rec in records]
+    names = [o.name for o in study.option]
+    if len(set(names)) != len(names):
+        raise ValueError(f"option.name: two options are called "
+                         f"{next(n for n in names if names.count(n) > 1)!r}")
+    runs = []
+    for i, opt in enumerate(study.option):
+        devices = data.get("device", []) + [d.model_dump(exclude_unset=True)
+                                            for d in opt.device]
+        for rec in records:
+            case = dict(data, record=rec, device=devices)
+            cfg = parse_config(case, base_file.parent, where=f"option[{i}] ({opt.name})")
+            label = rec.get("bundled") or Path(rec["file"]).stem
+            runs.append((opt.name, str(label), cfg))
+    return runs
+
+
+def measure_row(result: "Result") -> dict[str, float]:
+    """The :data:`MEASURES` of one run."""
+    contacts = result.model.contacts
+    pads = np.array([c.tag == "bumper" for c in contacts], dtype=bool)
+    pcf = result.peak_contact_force
+    counts = result.impacts_per_contact
+    diss = result.dissipated_per_contact
+    links = result.model.links
+    return {
+        "n_impacts": int(counts[~pads].sum()),
+        "peak_impact_force_N": float(pcf[~pads].max()) if (~pads).any() else 0.0,
+        "n_pad_impacts": int(counts[pads].sum()),
+        "peak_pad_force_N": float(pcf[pads].max()) if pads.any() else 0.0,
+        "peak_drift_ratio": float(np.max(result.peak_drift_ratio)),
+        "peak_storey_shear_N": float(np.max(result.peak_storey_shear)),
+        "peak_abs_accel_m_s2": float(np.max(result.peak_abs_acceleration)),
+        "contact_dissipated_J": float(np.nansum(diss[~pads])),
+        "pads_dissipated_J": float(np.nansum(diss[pads])),
+        "links_dissipated_J": float(result.energy[-1, 7]) if links else 0.0,
+        "peak_link_force_N": float(result.link_peak_force.max()) if links else 0.0,
+    }
+
+
+def summarise(table: "pd.DataFrame") -> "pd.DataFrame":
+    """Per option (in the study's order), the mean of every measure over the records."""
+    order = list(dict.fromkeys(table["option"]))
+    out = table.groupby("option", sort=False)[list(MEASURES)].mean()
+    out.insert(0, "records", table.groupby("option", sort=False)["record"].count())
+    return out.loc[order]
+
+
+def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
+                   overwrite: bool = False, figures: bool = True,
+                   progress: Any = None) -> StudyOutcome:
+    """Run a study file and write its folder: ``runs.csv`` (every option under every
+    record), ``summary.csv`` (mean per option), ``study.toml`` (the file as read) and
+    ``mitigation.png`` (the trade-off figure).
+
+    Raises
+    ------
+    ValueError
+        One line naming the key: a bad study file, base model, record or device.
+    """
+    import pandas as pd
+
+    from pounding.integrate import simulate
+    from pounding.io import atomic_path, check_writable, write_text
+    from pounding.plot import save_figure
+
+    study, here = load_mitigation(path)
+    runs = _configs(study, here)
+    out_dir = Path(out) if out is not None else here / (study.out or f"{study.name}-results")
+    check_writable(out_dir, inside=True)
+    if out_dir.exists() and any(out_dir.iterdir()) and not overwrite:
+        raise ValueError(f"out: {out_dir} exists and is not empty; give --overwrite")
+    rows = []
+    for k, (option, record, cfg) in enumerate(runs):
+        model, motion, solver = cfg.build()
+        res = simulate(model, motion, **solver)
+        rows.append({"option": option, "record": record, **measure_row(res)})
+        if progress is not None:
+            progress((k + 1) / len(runs))
+    table = pd.DataFrame(rows)
+    summary = summarise(table)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    files = {}
+    with atomic_path(out_dir / "runs.csv") as tmp:
+        table.to_csv(tmp, index=False)
+    files["runs"] = out_dir / "runs.csv"
+    with atomic_path(out_dir / "summary.csv") as tmp:
+        summary.to_csv(tmp)
+    files["summary"] = out_dir / "summary.csv"
+    files["study"] = write_text(out_dir / "study.toml", Path(path).read_text(encoding="utf-8"))
+    if figures:
+        from pounding.plot.mitigation import plot_mitigation
+
+        files["figure"] = save_figure(plot_mitigation(summary, title=study.name),
+                                      out_dir / "mitigation.png")
+    return StudyOutcome(table=table, summary=summary, out_dir=out_dir, files=files)
