@@ -11,6 +11,10 @@ floors meet floor to floor; a floor of one building that lies between two floors
 other strikes the other's column there (floor to column, :class:`ContactPoint`), unless
 ``floor_to_column=False``. Nothing collides above the lower roof (case 2B).
 
+The contact law of a model file is a :class:`ContactSpec` (:mod:`pounding.contact.spec`); the
+contact points and elements are in :mod:`pounding.contact.geometry`; both are importable from
+here too.
+
 For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
 their shear comes from their storey law, and the stiffness matrix handed to the kernel
 (:meth:`PoundingModel.linear_stiffness`) holds only the linear storeys.
@@ -26,265 +30,22 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
-from pounding.contact.base import ContactLaw
 from pounding.contact.dispatch import PARAMS_SIZE
-from pounding.contact.factory import make_law
+from pounding.contact.geometry import Contact, ContactPoint, contact_points
+from pounding.contact.spec import CONTACT_LAWS, ContactSpec
 from pounding.devices import Bumper, Link
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
 from pounding.structure import ShearBuilding
-from pounding.structure.assembly import AssembledSystem, assemble, shared_levels
+from pounding.structure.assembly import AssembledSystem, assemble
 from pounding.validation import non_negative, positive
 
+__all__ = ["CONTACT_LAWS", "SYSTEMS", "Contact", "ContactPoint", "ContactSpec", "PoundingModel",
+           "contact_points"]
 
-@dataclass(frozen=True)
-class ContactSpec:
-    """How to build the contact law of every floor-to-floor contact.
-
-    Fields are those of :func:`pounding.contact.factory.make_law`; the masses ``m1, m2``
-    of each contact are the two floor masses that meet, so laws whose damping scales with
-    the colliding masses (Kelvin–Voigt from ``e``, Jankowski's eq 18) are built per contact.
-
-    Parameters
-    ----------
-    law : str
-        A name of :data:`pounding.contact.factory.LAW_NAMES`.
-    k, k_h : float, optional
-        Linear stiffness [N/m] or Hertz stiffness [N/m^n].
-    e : float, optional
-        Coefficient of restitution (turned into damping by ``formula``).
-    formula : str, optional
-        Damping formula (default: the law's own).
-    c, zeta, chi : float, optional
-        Damping given directly.
-    n : float
-        Hertz exponent.
-    tension : bool
-        Kelvin–Voigt only: may the dashpot pull before separation (default no: the force is
-        clipped at zero, the physical choice; ``True`` as OpenSees' ``ViscoelasticGap``).
-    delta_m : float, optional
-        Bilinear element: assumed maximum penetration [m].
-    a : float
-        Bilinear element: yield ratio δy/δm (Muthukumar's 0.1).
-    """
-
-    law: str
-    k: float | None = None
-    k_h: float | None = None
-    e: float | None = None
-    formula: str | None = None
-    c: float | None = None
-    zeta: float | None = None
-    chi: float | None = None
-    n: float = 1.5
-    tension: bool = False
-    delta_m: float | None = None
-    a: float = 0.1
-
-    def __post_init__(self) -> None:
-        # build once with unit masses so a bad spec fails here, naming its field
-        self.build(1.0, 1.0)
-
-    def describe(self) -> str:
-        """One line for outputs: the law, the fields given (with units), the damping formula
-        ``e`` goes through, and for Kelvin–Voigt whether the dashpot may pull."""
-        from pounding.contact.factory import default_formula
-
-        units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m"}
-        formula = self.formula or default_formula(self.law, self.tension)
-        parts = []
-        for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m"):
-            value = getattr(self, name)
-            if value is not None:
-                via = f" via {formula}" if name == "e" and formula else ""
-                parts.append(f"{name} = {value:g}{units.get(name, '')}{via}")
-        if self.law == "kelvin-voigt":
-            parts.append("tension (pulls until δ = 0)" if self.tension
-                         else "no tension (clipped at zero)")
-        return f"{self.law}: {', '.join(parts)}" if parts else self.law
-
-    def build(self, m1: float, m2: float) -> ContactLaw:
-        """The contact law between two floors of masses ``m1`` and ``m2`` [kg].
-
-        Remembered (:data:`CONTACT_LAWS`, keyed by the spec's and the masses' exact
-        values): the cases of a sweep that share a law build it once. (A law is immutable.)
-        """
-        return CONTACT_LAWS.get((repr(self), repr(m1), repr(m2)), lambda: make_law(
-            self.law, k=self.k, k_h=self.k_h, e=self.e, formula=self.formula, c=self.c,
-            zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n, tension=self.tension,
-            delta_m=self.delta_m, a=self.a))
-
-
-CONTACT_LAWS = Memo(max_items=256)
-"""Contact laws made by :meth:`ContactSpec.build`."""
 
 SYSTEMS = Memo(max_items=64, max_bytes=256 << 20)
 """Assembled systems (:attr:`PoundingModel.system`), by the identity of the buildings."""
-
-
-@dataclass(frozen=True)
-class ContactPoint:
-    """Where a contact element meets one building: a floor slab, or a column between floors.
-
-    The contact point moves with ``(1 − ξ) u_lower + ξ u_upper`` (linear interpolation
-    between the two floors of the struck storey, ``u = 0`` for the ground), and the contact
-    force ``F`` is shared back to those floors as ``(1 − ξ) F`` and ``ξ F``: the same
-    weights, so the work the force does on the building equals ``F`` times the point's
-    displacement (energy-consistent, virtual work) and the shares sum to ``F`` (equal and
-    opposite to the force on the other building). A floor contact is ``ξ = 1`` at its floor.
-
-    Attributes
-    ----------
-    building : int
-        0-based building index.
-    upper : int
-        0-based index of the floor struck (a floor contact) or of the floor above the struck
-        storey (a column contact).
-    xi : float
-        Position of the point in storey ``upper + 1``: 0 at the floor below, 1 at floor
-        ``upper``. Exactly 1 for a floor contact.
-    """
-
-    building: int
-    upper: int
-    xi: float = 1.0
-
-    @property
-    def is_floor(self) -> bool:
-        """True for a slab (floor) contact point, False for a point on a column."""
-        return self.xi == 1.0
-
-    @property
-    def lower(self) -> int:
-        """0-based index of the floor below the struck storey (−1: the ground)."""
-        return self.upper - 1
-
-    @property
-    def storey(self) -> int:
-        """1-based number of the storey the point lies in (or below, for a floor)."""
-        return self.upper + 1
-
-    def floor_weights(self) -> list[tuple[int, float]]:
-        """``(floor index, weight)`` pairs that make the point's displacement (ground
-        omitted); weights of a column point are ``1 − ξ`` and ``ξ``."""
-        if self.is_floor:
-            return [(self.upper, 1.0)]
-        out = [(self.upper, self.xi)]
-        if self.lower >= 0:
-            out.insert(0, (self.lower, 1.0 - self.xi))
-        return out
-
-    def of(self, floors: NDArray[np.float64]) -> NDArray[np.float64]:
-        """The point's value from per-floor values of its building, ``floors[..., floor]``."""
-        return sum(w * floors[..., i] for i, w in self.floor_weights())
-
-    def effective_mass(self, masses: NDArray[np.float64]) -> float:
-        """Apparent mass at the point [kg]: ``1 / Σ w_i² / m_i`` (the mass a short impulse
-        at the point meets, the floors being the only masses); the floor mass for a slab."""
-        return 1.0 / sum(w * w / float(masses[i]) for i, w in self.floor_weights())
-
-    def label(self) -> str:
-        """``'B2F3'`` for a floor, ``'B2S3@0.40'`` for storey 3's column at 40 % of its
-        height (1-based building, floor and storey numbers)."""
-        if self.is_floor:
-            return f"B{self.building + 1}F{self.upper + 1}"
-        return f"B{self.building + 1}S{self.storey}@{self.xi:.2f}"
-
-
-@dataclass(frozen=True)
-class Contact:
-    """One contact element between two neighbouring buildings.
-
-    Floor to floor where both have a floor at the same elevation (seed case 2A); floor to
-    column where a slab of one lies between two floors of the other (case 2B with floors
-    that do not line up): the slab strikes the other building's column.
-
-    Attributes
-    ----------
-    index : int
-        Position in :attr:`PoundingModel.contacts`.
-    pair : int
-        Which gap: between building ``pair`` and ``pair + 1``.
-    left, right : ContactPoint
-        Where the element meets the left and the right building.
-    elevation : float
-        Height of the contact above ground [m].
-    gap : float
-        Separation gap at rest [m].
-    law : ContactLaw
-        The contact law, built with the apparent masses of the two contact points.
-    tag : str
-        ``""`` for the contact of the buildings; ``"bumper"`` for the pad of a bumper in its
-        gap (:class:`pounding.devices.Bumper`), whose label ends in ``/bumper``.
-    """
-
-    index: int
-    pair: int
-    left: ContactPoint
-    right: ContactPoint
-    elevation: float
-    gap: float
-    law: ContactLaw
-    tag: str = ""
-
-    @property
-    def is_floor_to_floor(self) -> bool:
-        """True if both points are floor slabs."""
-        return self.left.is_floor and self.right.is_floor
-
-    @property
-    def struck(self) -> ContactPoint | None:
-        """The column point of a floor-to-column contact (None for floor to floor)."""
-        if self.is_floor_to_floor:
-            return None
-        return self.right if self.left.is_floor else self.left
-
-    @property
-    def left_floor(self) -> int:
-        """0-based floor index of the left point (the floor above, for a column point)."""
-        return self.left.upper
-
-    @property
-    def right_floor(self) -> int:
-        """0-based floor index of the right point (the floor above, for a column point)."""
-        return self.right.upper
-
-    @property
-    def label(self) -> str:
-        """Readable name, e.g. ``'B1F3-B2F3'``, ``'B1F2-B2S3@0.40'`` or, for a bumper's
-        pad, ``'B1F3-B2F3/bumper'``."""
-        base = f"{self.left.label()}-{self.right.label()}"
-        return f"{base}/{self.tag}" if self.tag else base
-
-
-def contact_points(a: ShearBuilding, b: ShearBuilding, floor_to_column: bool = True,
-                   tol: float = 1e-6) -> list[tuple[float, int, float, int, float]]:
-    """Where two neighbouring buildings can touch: ``(elevation, i, ξ_i, j, ξ_j)`` rows.
-
-    Floors at the same elevation (within ``tol`` [m]) meet floor to floor (``ξ = 1`` both).
-    With ``floor_to_column``, every other floor of one building below the roof of the other
-    meets the other's column at the same elevation, in storey ``j + 1`` at position ``ξ_j``
-    (0 at floor ``j − 1`` or the ground, 1 at floor ``j``). Rows are sorted by elevation.
-    """
-    za, zb = a.floor_levels, b.floor_levels
-    rows: list[tuple[float, int, float, int, float]] = []
-    paired_a: set[int] = set()
-    paired_b: set[int] = set()
-    for i, j in shared_levels(a, b, tol):
-        rows.append((float(za[i]), i, 1.0, j, 1.0))
-        paired_a.add(i)
-        paired_b.add(j)
-    if floor_to_column:
-        for levels, other, paired, left in ((za, zb, paired_a, True), (zb, za, paired_b, False)):
-            for i, z in enumerate(levels):
-                if i in paired or z >= other[-1] - tol:
-                    continue  # paired already, or level with / above the other's roof
-                j = int(np.searchsorted(other, z))  # storey j + 1: other[j-1] < z < other[j]
-                below = float(other[j - 1]) if j > 0 else 0.0
-                xi = (float(z) - below) / (float(other[j]) - below)
-                rows.append((float(z), i, 1.0, j, xi) if left else (float(z), j, xi, i, 1.0))
-    rows.sort(key=lambda r: (r[0], r[1], r[3]))
-    return rows
 
 
 def _floor_counts(buildings: Sequence[ShearBuilding]) -> str:

@@ -66,6 +66,14 @@ which the kernel uses only to locate acceleration peaks inside steps."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def has_rate_cusp(code, p1):
+    """True for a fluid damper (α ≠ 1): its force has an unbounded slope where its rate
+    reverses, and the kernel ends a step there (an event, as at a yielding storey's drift
+    reversal). Linear, Kelvin and Maxwell links are smooth there: no event."""
+    return code == VISCOUS and p1 != 1.0
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def device_rate_terms(code, p0, p1, p2, rate):
     """``(∂F/∂ḋ, ∂F/∂z)``: with :func:`device_trial`'s ``∂F/∂d`` they give the force's rate
     ``Ḟ = (∂F/∂d) ḋ + (∂F/∂ḋ) d̈ + (∂F/∂z) ż``. A fluid damper's ``∂F/∂ḋ`` is unbounded where

@@ -144,7 +144,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 if last_f[c, LF_GRAZED] != 0.0 and gap_row(c, x, n, cdof, cw)[1] < 0.0:
                     last_f[c, LF_GRAZED] = 0.0
             te, ce, kind = find_event(x, kx, y1, ks, h, n, cdof, cw, cgap, ccode, cparams,
-                                      committed, s_lo, s_hi, -1, 0, graze_tol,
+                                      committed, s_lo, s_hi, s_code, s_par, -1, 0, graze_tol,
                                       last_f[:, LF_GRAZED])
             ev_c = -1
             ev_kind = 0
@@ -214,7 +214,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 h_before = h_acc
                 # any other event earlier in this shorter step?
                 te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, ccode,
-                                          cparams, committed, s_lo, s_hi, ev_c, ev_kind,
+                                          cparams, committed, s_lo, s_hi, s_code, s_par, ev_c,
+                                          ev_kind,
                                           graze_tol, last_f[:, LF_GRAZED])
             if ev_kind == EV_GRAZE:
                 ev_c = -1  # nothing happened at the peak of a gap that stayed open

@@ -18,6 +18,7 @@ from numba import njit
 
 from pounding.contact.base import V0
 from pounding.contact.dispatch import law_releases, release_value
+from pounding.devices.laws import DEVICE_MIN, has_rate_cusp
 from pounding.integrate.dormand_prince import rk_step
 from pounding.integrate.layout import (
     EV_DRIFT_MAX,
@@ -213,13 +214,14 @@ def touch_possible(d0, r0, q0, d1, r1, q1, h, tol):
 
 @njit(**NRT_FREE)
 def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi,
-               skip_c, skip_kind, graze_tol, grazed):
+               s_code, s_par, skip_c, skip_kind, graze_tol, grazed):
     """Earliest event in a step, from Hermite interpolants of every contact's δ and δ̇ and
     every yielding storey's drift rate (``k0``: row 0 is f(y0); ``k1``: row 6 is f(y1)).
 
     Returns (time estimate, contact or storey, kind): kind 1 onset, 2 separation, 3 maximum
     compression (δ̇: + → −), 4 reloading (δ̇: − → +), 5 / 6 a yielding storey's drift rate
-    turning negative / positive (the drift reverses), 7 an open gap peaking within
+    turning negative / positive (the drift reverses; for links, only a fluid damper's:
+    :func:`pounding.devices.laws.has_rate_cusp`), 7 an open gap peaking within
     ``graze_tol`` [m] of closing (its peak is then located on real steps, :func:`locate`;
     skipped for a contact whose ``grazed`` flag is set: one already found not to touch),
     8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
@@ -275,6 +277,8 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
                     if t >= 0.0:
                         best_t, best_c, best_k = t, c, kind
     for s in range(s_lo.shape[0]):
+        if s_code[s] >= DEVICE_MIN and not has_rate_cusp(s_code[s], s_par[s, 1]):
+            continue  # a link whose force is smooth where its rate reverses: no event
         r0 = drift_of(s_lo[s], s_hi[s], y0, n)[1]
         r1 = drift_of(s_lo[s], s_hi[s], y1, n)[1]
         kind = EV_DRIFT_MAX if r0 > 0.0 else EV_DRIFT_MIN

@@ -1,0 +1,94 @@
+"""What a model file's ``[contact]`` says: a contact law by name and constants, built for
+the two floors of each contact (:meth:`ContactSpec.build`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from pounding.contact.base import ContactLaw
+from pounding.contact.factory import make_law
+from pounding.memo import Memo
+
+__all__ = ["CONTACT_LAWS", "ContactSpec"]
+
+
+@dataclass(frozen=True)
+class ContactSpec:
+    """How to build the contact law of every floor-to-floor contact.
+
+    Fields are those of :func:`pounding.contact.factory.make_law`; the masses ``m1, m2``
+    of each contact are the two floor masses that meet, so laws whose damping scales with
+    the colliding masses (Kelvin–Voigt from ``e``, Jankowski's eq 18) are built per contact.
+
+    Parameters
+    ----------
+    law : str
+        A name of :data:`pounding.contact.factory.LAW_NAMES`.
+    k, k_h : float, optional
+        Linear stiffness [N/m] or Hertz stiffness [N/m^n].
+    e : float, optional
+        Coefficient of restitution (turned into damping by ``formula``).
+    formula : str, optional
+        Damping formula (default: the law's own).
+    c, zeta, chi : float, optional
+        Damping given directly.
+    n : float
+        Hertz exponent.
+    tension : bool
+        Kelvin–Voigt only: may the dashpot pull before separation (default no: the force is
+        clipped at zero, the physical choice; ``True`` as OpenSees' ``ViscoelasticGap``).
+    delta_m : float, optional
+        Bilinear element: assumed maximum penetration [m].
+    a : float
+        Bilinear element: yield ratio δy/δm (Muthukumar's 0.1).
+    """
+
+    law: str
+    k: float | None = None
+    k_h: float | None = None
+    e: float | None = None
+    formula: str | None = None
+    c: float | None = None
+    zeta: float | None = None
+    chi: float | None = None
+    n: float = 1.5
+    tension: bool = False
+    delta_m: float | None = None
+    a: float = 0.1
+
+    def __post_init__(self) -> None:
+        # build once with unit masses so a bad spec fails here, naming its field
+        self.build(1.0, 1.0)
+
+    def describe(self) -> str:
+        """One line for outputs: the law, the fields given (with units), the damping formula
+        ``e`` goes through, and for Kelvin–Voigt whether the dashpot may pull."""
+        from pounding.contact.factory import default_formula
+
+        units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m"}
+        formula = self.formula or default_formula(self.law, self.tension)
+        parts = []
+        for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m"):
+            value = getattr(self, name)
+            if value is not None:
+                via = f" via {formula}" if name == "e" and formula else ""
+                parts.append(f"{name} = {value:g}{units.get(name, '')}{via}")
+        if self.law == "kelvin-voigt":
+            parts.append("tension (pulls until δ = 0)" if self.tension
+                         else "no tension (clipped at zero)")
+        return f"{self.law}: {', '.join(parts)}" if parts else self.law
+
+    def build(self, m1: float, m2: float) -> ContactLaw:
+        """The contact law between two floors of masses ``m1`` and ``m2`` [kg].
+
+        Remembered (:data:`CONTACT_LAWS`, keyed by the spec's and the masses' exact
+        values): the cases of a sweep that share a law build it once. (A law is immutable.)
+        """
+        return CONTACT_LAWS.get((repr(self), repr(m1), repr(m2)), lambda: make_law(
+            self.law, k=self.k, k_h=self.k_h, e=self.e, formula=self.formula, c=self.c,
+            zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n, tension=self.tension,
+            delta_m=self.delta_m, a=self.a))
+
+
+CONTACT_LAWS = Memo(max_items=256)
+"""Contact laws made by :meth:`ContactSpec.build`."""
