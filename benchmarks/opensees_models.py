@@ -39,6 +39,16 @@ materials (read in OpenSees ``SRC/material/uniaxial/ViscoelasticGap.cpp`` and
 The returned contact force is ``−stress`` (positive in compression), one column per contact.
 Both materials print a line per impact, so the log is sent to a file with ``-noEcho``.
 
+Links between the buildings (``run_opensees_building_pair(..., links=[(i, j, material)])``,
+``bench_devices.py``): a ``zeroLength`` element from the left floor to the right one in
+direction 1 with any uniaxial material, e.g. ``Viscous C alpha`` (stress ``C |ε̇|^alpha sgn ε̇``;
+tangent 0, damping tangent ``alpha C max(|ε̇|, minVel)^(alpha−1)``) or
+``ViscousDamper K Cd alpha`` (a spring in series with that dashpot, ``Ḟ = K (ε̇ − sgn F
+(|F|/Cd)^(1/alpha))`` integrated inside each step by Dormand–Prince 5(4) at RelTol 1e-6
+with ``ε̇`` linear over the step; tangent and damping tangent 0, so Newton iterates on the
+rest of the model's tangent), read in OpenSees ``ViscousMaterial.cpp`` and
+``ViscousDamper.cpp``. The link force returned is the material's stress.
+
 Note on ``JankowskiImpact``: in the source read, its ``getTangent`` returns
 ``−(n Kh δ^(n−1) + …)``, i.e. the *negative* of ``d stress / d ε``. Newton still converges at
 the steps used here because the Newmark effective stiffness is dominated by ``4 M / Δt²``
@@ -61,7 +71,7 @@ import math
 import os
 import tempfile
 import time
-from typing import Any
+from typing import Any, Sequence
 
 import numpy as np
 
@@ -356,7 +366,9 @@ def run_opensees_building_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: 
                                n_exp: float = 1.5, duration: float | None = None,
                                tol: float = 1e-10, max_iter: int = 50,
                                system: str = "BandSPD", numberer: str = "RCM",
-                               reads: bool = True) -> dict[str, Any]:
+                               reads: bool = True,
+                               links: Sequence[tuple[int, int, Sequence[Any]]] = ()
+                               ) -> dict[str, Any]:
     """Two shear buildings of any floor masses and storey stiffnesses, in OpenSees, with
     contacts between the floors named in ``contacts``.
 
@@ -375,12 +387,22 @@ def run_opensees_building_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: 
         False: the analysis alone, one ``analyze(n_steps, dt_out)`` call reading nothing
         (:func:`_run_unread`); the result then has only the wall times, ``n_steps``,
         ``failed`` and ``params`` (histories, peaks and impacts are None).
+    links : list of (i, j, material)
+        Links between the buildings (dampers acting at all times): a ``zeroLength``
+        element from floor ``i`` of the left building to floor ``j`` of the right one,
+        direction 1, with ``uniaxialMaterial(*material)`` less its tag, e.g.
+        ``("Viscous", C, alpha)``, ``("ViscousDamper", K, Cd, alpha)`` or
+        ``("Maxwell", K, C, alpha, 1.0)``. Its deformation is ``u_right − u_left`` (as
+        pounding's :class:`pounding.devices.Link`) and the elements take no Rayleigh
+        damping (no ``-doRayleigh``). ``contacts`` may then be empty (no contact element).
 
     Returns
     -------
     dict
         As :func:`run_opensees_shear_pair` (``force`` and ``peak_force`` one column per
-        contact).
+        contact), and with links ``link_force`` (nt, n_links): each link's material stress,
+        the force ``F`` resisting ``d = u_right − u_left`` (floor j receives ``−F``), read
+        every step with the contact forces; ``peak_link_force`` its largest ``|F|``.
     """
     ops = _ops()
     bl = tuple(np.asarray(a, dtype=float) for a in left)
@@ -424,11 +446,20 @@ def run_opensees_building_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: 
                           n_exp=n_exp)
         ops.element("zeroLength", ele, left_nodes[i], right_nodes[j], "-mat", mat, "-dir", 1)
         contact_eles.append(ele)
+    link_eles = []
+    for i, j, material in links:
+        mat += 1
+        ele += 1
+        ops.uniaxialMaterial(str(material[0]), mat, *map(float, material[1:]))
+        ops.element("zeroLength", ele, left_nodes[int(i)], right_nodes[int(j)], "-mat", mat,
+                    "-dir", 1)
+        link_eles.append(ele)
     _analysis(ops, dt_record, accel, tol, max_iter, system, numberer)
     params = {"law": law, "left": bl, "right": br, "rayleigh": ray, "k": k,
               "c_kv": laws[0][1] if laws else None, "k_h": k_h, "xi": xi,
               "m_eff": laws[0][0] if laws else None, "gap": gap, "e": e,
-              "contacts": pairs, "contact_laws": laws}
+              "contacts": pairs, "contact_laws": laws,
+              "links": [(int(i), int(j), tuple(m)) for i, j, m in links]}
     if not reads:
         wall, failed = _run_unread(ops, n_steps, dt_out)
         wall_total = time.perf_counter() - t_build
@@ -437,15 +468,22 @@ def run_opensees_building_pair(accel_ms2: np.ndarray, dt_record: float, dt_out: 
                 "peak_force": None, "n_impacts": None, "peak_u_left": None,
                 "peak_u_right": None, "wall_analyze": wall, "wall_total": wall_total,
                 "n_steps": n_steps, "failed": failed, "retried": 0, "params": params}
+    # the links' forces are read in the same loop as the contacts' (as −stress: negated
+    # back below)
     ul, ur, f, wall, failed, retried = _run(ops, n_steps, dt_out, left_nodes, right_nodes,
-                                            contact_eles)
+                                            contact_eles + link_eles)
     wall_total = time.perf_counter() - t_build
     ops.wipe()
-    return {
+    nc = len(contact_eles)
+    f, f_link = f[:, :nc], -f[:, nc:]
+    out = {
         "time": np.arange(n_steps + 1) * dt_out,
         "u_left": ul, "u_right": ur, "force": f,
-        "peak_force": f.max(axis=0), "n_impacts": count_impacts(f),
+        "peak_force": f.max(axis=0) if nc else np.zeros(0), "n_impacts": count_impacts(f),
         "peak_u_left": np.abs(ul).max(axis=0), "peak_u_right": np.abs(ur).max(axis=0),
         "wall_analyze": wall, "wall_total": wall_total, "n_steps": n_steps, "failed": failed,
         "retried": retried, "params": params,
     }
+    if link_eles:
+        out.update(link_force=f_link, peak_link_force=np.abs(f_link).max(axis=0))
+    return out
