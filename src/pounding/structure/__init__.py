@@ -8,6 +8,10 @@
   (:mod:`pounding.structure.modal`).
 * :func:`assemble`, :func:`shared_levels` — several buildings as one block-diagonal system
   and the floor pairs that can collide (:mod:`pounding.structure.assembly`).
+* :class:`MatrixBuilding`, :func:`read_matrix_building`, :func:`read_matrix`,
+  :func:`lumped_masses` — buildings given as mass and stiffness matrices read from files
+  (:mod:`pounding.structure.matrices`; not yet taken by models). Matrices out of an
+  OpenSeesPy model: :func:`pounding.structure.opensees_matrices.matrices_from_opensees`.
 """
 
 from pounding.structure.assembly import AssembledSystem, assemble, shared_levels
@@ -17,21 +21,31 @@ from pounding.structure.damping import (
     RayleighDamping,
     rayleigh_coefficients,
 )
+from pounding.structure.matrices import (
+    MatrixBuilding,
+    lumped_masses,
+    read_matrix,
+    read_matrix_building,
+)
 from pounding.structure.modal import ModalResult, eigenmodes, modal_result, modes
 from pounding.structure.shear_building import ShearBuilding, shear_stiffness_matrix
 
 __all__ = [
     "AssembledSystem",
     "DampingModel",
+    "MatrixBuilding",
     "ModalDamping",
     "ModalResult",
     "RayleighDamping",
     "ShearBuilding",
     "assemble",
     "eigenmodes",
+    "lumped_masses",
     "modal_result",
     "modes",
     "rayleigh_coefficients",
+    "read_matrix",
+    "read_matrix_building",
     "shared_levels",
     "shear_stiffness_matrix",
 ]

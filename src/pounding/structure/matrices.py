@@ -1,0 +1,774 @@
+"""Buildings given as matrices: mass ``M``, stiffness ``K`` and damping ``C`` read from files.
+
+A linear lateral model of a building modelled elsewhere (ETABS, SAP2000, OpenSees — see
+:mod:`pounding.structure.opensees_matrices`) is, for the equation of motion relative to the
+ground (Chopra, *Dynamics of Structures*, 4th ed., §9.4),
+
+    M ü + C u̇ + K u = −M r a_g(t),
+
+a symmetric positive-definite mass matrix ``M``, a symmetric positive-definite stiffness matrix
+``K`` (the building is restrained against the ground), a symmetric positive semi-definite
+damping matrix ``C`` or a damping model that builds it (:mod:`pounding.structure.damping`), and
+the influence vector ``r`` of the ground motion (Chopra §9.4.1; all ones when every degree of
+freedom (DOF) is a translation along the shaking). Every DOF also carries a label and an
+elevation [m].
+
+Formats read (one matrix a file, except ``.npz``):
+
+* plain text (``.csv``, ``.txt``, ``.dat``): numbers only, one row a line, separated by commas
+  or by whitespace; ``#`` starts a comment; no header;
+* NumPy ``.npy`` (one 2-D array) and ``.npz`` (arrays named ``M``, ``K`` and optionally ``C``);
+* Matrix Market ``.mtx`` (read with :func:`scipy.io.mmread`; real or integer, general or
+  symmetric, array or coordinate).
+
+Everything is checked on reading and on construction, and a fault raises :class:`ValueError`
+in one line that names the file (or the building) and the problem: a matrix that is not
+square, not finite or not symmetric (to :data:`SYMMETRY_RTOL` of its largest entry; the worst
+entry is named), sizes that disagree with each other or with the labels, elevations and ``r``,
+a stiffness or mass matrix that is not positive definite (Cholesky factorisation; the
+smallest eigenvalue is named) and a damping matrix with a negative eigenvalue. Matrix indices
+in messages are 0-based, as in NumPy.
+
+The project's time stepper takes lumped (diagonal) masses: :func:`lumped_masses` returns them
+or says which off-diagonal entry is in the way. :meth:`MatrixBuilding.to_shear_building` turns
+a matrix building that is a shear building (Chopra §9.2) back into a
+:class:`~pounding.structure.ShearBuilding`.
+
+These are readers only: :class:`MatrixBuilding` is not yet accepted by
+:class:`pounding.model.PoundingModel` or the time stepper.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from pounding.hysteresis.base import StoreyLaw
+from pounding.structure.damping import DampingModel, RayleighDamping
+from pounding.structure.modal import ModalResult, modal_result
+from pounding.structure.shear_building import MAX_FLOORS, ShearBuilding
+
+__all__ = [
+    "DIAGONAL_RTOL",
+    "MATRIX_FORMATS",
+    "SYMMETRY_RTOL",
+    "MatrixBuilding",
+    "check_matrix",
+    "lumped_masses",
+    "read_matrix",
+    "read_matrix_building",
+]
+
+StrPath = str | os.PathLike[str]
+
+SYMMETRY_RTOL: float = 1e-10
+"""A matrix ``A`` is taken as symmetric when ``max |A[i,j] − A[j,i]| <= SYMMETRY_RTOL ·
+max |A|``; it is then stored as ``(A + Aᵀ)/2``. The same relative tolerance decides the
+zero entries and zero row sums of the shear-building pattern
+(:meth:`MatrixBuilding.is_shear_building`) and how negative an eigenvalue of ``C`` may be."""
+
+DIAGONAL_RTOL: float = 1e-12
+"""``M`` is diagonal (lumped) when every off-diagonal ``|M[i,j]| <= DIAGONAL_RTOL ·
+max M[k,k]``."""
+
+MATRIX_FORMATS: dict[str, str] = {
+    ".csv": "text", ".txt": "text", ".dat": "text",
+    ".npy": "npy", ".npz": "npz", ".mtx": "mtx",
+}
+"""File suffix (lower case) → format read by :func:`read_matrix`."""
+
+
+def _prefix(where: str) -> str:
+    return f"{where}: " if where else ""
+
+
+def _shape(A: NDArray[Any]) -> str:
+    return "×".join(str(s) for s in A.shape) if A.ndim else "a scalar"
+
+
+# --------------------------------------------------------------------------- readers
+def _read_text(path: Path) -> NDArray[np.float64]:
+    """Plain numbers, one matrix row a line, comma- or whitespace-separated; ``#`` comments."""
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}: not a text file (expected plain numbers, comma or "
+                         "whitespace separated)") from None
+    rows: list[list[float]] = []
+    first_line = 0
+    for lineno, line in enumerate(text.splitlines(), start=1):
+        body = line.split("#", 1)[0].strip()
+        if not body:
+            continue
+        fields = [f.strip() for f in body.split(",")] if "," in body else body.split()
+        row = []
+        for f in fields:
+            if not f:
+                raise ValueError(f"{path}: line {lineno} has an empty field between commas")
+            try:
+                row.append(float(f))
+            except ValueError:
+                raise ValueError(f"{path}: line {lineno}: {f!r} is not a number (the file "
+                                 "must hold plain numbers, comma or whitespace separated, "
+                                 "no header)") from None
+        if rows and len(row) != len(rows[0]):
+            raise ValueError(f"{path}: line {lineno} has {len(row)} numbers but line "
+                             f"{first_line} has {len(rows[0])}: every row of a matrix needs "
+                             "as many")
+        if not rows:
+            first_line = lineno
+        rows.append(row)
+    if not rows:
+        raise ValueError(f"{path}: holds no numbers")
+    return np.array(rows, dtype=np.float64)
+
+
+def _numeric(arr: Any, path: Path, what: str) -> NDArray[np.float64]:
+    a = np.asarray(arr)
+    if a.dtype == np.bool_ or not (np.issubdtype(a.dtype, np.integer)
+                                    or np.issubdtype(a.dtype, np.floating)):
+        raise ValueError(f"{path}: {what} holds {a.dtype} values; expected real numbers")
+    return np.array(a, dtype=np.float64)
+
+
+def _read_npy(path: Path) -> NDArray[np.float64]:
+    try:
+        arr = np.load(path, allow_pickle=False)
+    except (OSError, ValueError, EOFError) as exc:
+        raise ValueError(f"{path}: not a NumPy .npy file ({exc})") from None
+    if isinstance(arr, np.lib.npyio.NpzFile):
+        arr.close()
+        raise ValueError(f"{path}: is an .npz archive, not an .npy array; name it .npz")
+    return _numeric(arr, path, "the array")
+
+
+def _read_npz(path: Path, name: str) -> NDArray[np.float64]:
+    try:
+        archive = np.load(path, allow_pickle=False)
+    except (OSError, ValueError, EOFError) as exc:
+        raise ValueError(f"{path}: not a NumPy .npz archive ({exc})") from None
+    if not isinstance(archive, np.lib.npyio.NpzFile):
+        raise ValueError(f"{path}: is a single .npy array, not an .npz archive; name it .npy")
+    with archive:
+        if name not in archive.files:
+            held = ", ".join(archive.files) or "nothing"
+            raise ValueError(f"{path}: has no array {name!r} (it holds {held}); a building's "
+                             ".npz holds M, K and optionally C")
+        try:
+            arr = archive[name]
+        except (OSError, ValueError) as exc:
+            raise ValueError(f"{path}: array {name!r} cannot be read ({exc})") from None
+        return _numeric(arr, path, f"array {name!r}")
+
+
+def _read_mtx(path: Path) -> NDArray[np.float64]:
+    import scipy.io  # only when a Matrix Market file is read
+
+    try:
+        info = scipy.io.mminfo(path)
+    except (OSError, ValueError, IndexError) as exc:
+        raise ValueError(f"{path}: not a Matrix Market file ({exc})") from None
+    fld = str(info[4]).lower()
+    if fld not in ("real", "integer", "double"):
+        raise ValueError(f"{path}: Matrix Market field is {fld!r}; expected real or integer")
+    try:
+        arr = scipy.io.mmread(path)
+    except (OSError, ValueError, IndexError) as exc:
+        raise ValueError(f"{path}: cannot be read as Matrix Market ({exc})") from None
+    if hasattr(arr, "toarray"):
+        arr = arr.toarray()
+    return _numeric(arr, path, "the matrix")
+
+
+def read_matrix(path: StrPath, name: str = "M") -> NDArray[np.float64]:
+    """Read one matrix from a file and check it with :func:`check_matrix`.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A ``.csv``/``.txt``/``.dat`` file of plain numbers (comma or whitespace separated, one
+        row a line, ``#`` comments, no header), a NumPy ``.npy`` or ``.npz`` file, or a Matrix
+        Market ``.mtx`` file (:func:`scipy.io.mmread`; real or integer entries, general or
+        symmetric storage, dense or sparse).
+    name : str
+        The matrix's name in messages (``"M"``, ``"K"``, ``"C"``); in an ``.npz`` file, the
+        name of the array read.
+
+    Returns
+    -------
+    ndarray, shape (n, n)
+        Float64, C-contiguous, symmetrised as ``(A + Aᵀ)/2``.
+
+    Raises
+    ------
+    ValueError
+        One line naming the file and the problem: missing file, unknown suffix, a line that is
+        not numbers, ragged rows, not 2-D, not square, not finite, not symmetric.
+    """
+    p = Path(path)
+    fmt = MATRIX_FORMATS.get(p.suffix.lower())
+    if fmt is None:
+        known = ", ".join(MATRIX_FORMATS)
+        raise ValueError(f"{p}: unknown matrix file type {p.suffix!r}; read are {known}")
+    if not p.is_file():
+        raise ValueError(f"{p}: no such file")
+    if fmt == "text":
+        A = _read_text(p)
+    elif fmt == "npy":
+        A = _read_npy(p)
+    elif fmt == "npz":
+        A = _read_npz(p, name)
+    else:
+        A = _read_mtx(p)
+    return check_matrix(A, name, str(p))
+
+
+# --------------------------------------------------------------------------- checks
+def check_matrix(A: ArrayLike, name: str, where: str = "") -> NDArray[np.float64]:
+    """Check that ``A`` is a non-empty, finite, square, symmetric real matrix.
+
+    Symmetry is judged against the largest entry: ``max |A[i,j] − A[j,i]| <=``
+    :data:`SYMMETRY_RTOL` ``· max |A|``.
+
+    Parameters
+    ----------
+    A : array_like
+        The matrix.
+    name : str
+        Its name in messages (``"M"``, ``"K"``, ``"C"``).
+    where : str
+        What to name at the head of a message: a file, or a building.
+
+    Returns
+    -------
+    ndarray, shape (n, n)
+        A float64 C-contiguous copy, ``(A + Aᵀ)/2``.
+
+    Raises
+    ------
+    ValueError
+        ``"<where>: K must be symmetric: K[0,2] = 1 but K[2,0] = 1.5 (…)"`` and the like.
+    """
+    pre = _prefix(where)
+    try:
+        a = np.array(A, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{pre}{name} must be a matrix of real numbers (got {A!r})") from None
+    if a.ndim != 2:
+        raise ValueError(f"{pre}{name} must be a 2-D matrix (got {_shape(a)})")
+    if a.size == 0:
+        raise ValueError(f"{pre}{name} is empty ({_shape(a)})")
+    if a.shape[0] != a.shape[1]:
+        raise ValueError(f"{pre}{name} must be square (got {_shape(a)})")
+    if a.shape[0] > MAX_FLOORS:
+        raise ValueError(f"{pre}{name} has {a.shape[0]} degrees of freedom; at most "
+                         f"{MAX_FLOORS} are taken")
+    bad = ~np.isfinite(a)
+    if np.any(bad):
+        i, j = (int(x) for x in np.argwhere(bad)[0])
+        raise ValueError(f"{pre}{name}[{i},{j}] = {a[i, j]} is not finite")
+    scale = float(np.max(np.abs(a)))
+    diff = np.abs(a - a.T)
+    i, j = (int(x) for x in np.unravel_index(int(np.argmax(diff)), diff.shape))
+    if diff[i, j] > SYMMETRY_RTOL * scale:
+        if i > j:
+            i, j = j, i
+        raise ValueError(f"{pre}{name} must be symmetric: {name}[{i},{j}] = {a[i, j]:.10g} but "
+                         f"{name}[{j},{i}] = {a[j, i]:.10g} (difference {diff[i, j]:.3g} > "
+                         f"{SYMMETRY_RTOL:g} × largest entry {scale:.6g})")
+    return np.ascontiguousarray(0.5 * (a + a.T))
+
+
+def _smallest_eigenvalue(A: NDArray[np.float64]) -> float:
+    return float(np.linalg.eigvalsh(A)[0])
+
+
+def _check_positive_definite(A: NDArray[np.float64], name: str, where: str, hint: str) -> None:
+    """Cholesky factorisation of the symmetric ``A``; on failure name its smallest eigenvalue."""
+    try:
+        np.linalg.cholesky(A)
+    except np.linalg.LinAlgError:
+        lam = _smallest_eigenvalue(A)
+        raise ValueError(f"{_prefix(where)}{name} must be positive definite ({hint}); its "
+                         f"smallest eigenvalue is {lam:.6g}") from None
+
+
+def _is_diagonal(M: NDArray[np.float64]) -> tuple[bool, int, int]:
+    """(diagonal?, i, j of the largest off-diagonal entry)."""
+    n = M.shape[0]
+    if n == 1:
+        return True, 0, 0
+    off = np.abs(M - np.diag(np.diag(M)))
+    i, j = (int(x) for x in np.unravel_index(int(np.argmax(off)), off.shape))
+    scale = float(np.max(np.abs(np.diag(M))))
+    return bool(off[i, j] <= DIAGONAL_RTOL * scale), min(i, j), max(i, j)
+
+
+def lumped_masses(M: ArrayLike, where: str = "") -> NDArray[np.float64]:
+    """The diagonal of a lumped (diagonal) mass matrix, or a clear refusal.
+
+    The project's time stepper takes one mass per degree of freedom. ``M`` counts as diagonal
+    when every off-diagonal entry is at most :data:`DIAGONAL_RTOL` times its largest diagonal
+    entry.
+
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass matrix [kg].
+    where : str
+        What to name at the head of a message (a file, or a building).
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        ``M[i,i]`` [kg], each > 0.
+
+    Raises
+    ------
+    ValueError
+        ``"M must be diagonal (lumped floor masses); got off-diagonal entry M[i,j] = …"``
+        (naming the largest), or naming a diagonal entry that is not > 0.
+    """
+    Mf = check_matrix(M, "M", where)
+    ok, i, j = _is_diagonal(Mf)
+    if not ok:
+        raise ValueError(f"{_prefix(where)}M must be diagonal (lumped floor masses); got "
+                         f"off-diagonal entry M[{i},{j}] = {Mf[i, j]:.10g}")
+    m = np.ascontiguousarray(np.diag(Mf))
+    for k, x in enumerate(m):
+        if not x > 0.0:
+            raise ValueError(f"{_prefix(where)}M[{k},{k}] = {x:g} must be > 0: every degree of "
+                             "freedom needs a positive mass")
+    return m
+
+
+def _vector(name: str, value: ArrayLike, n: int, where: str) -> NDArray[np.float64]:
+    pre = _prefix(where)
+    try:
+        v = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{pre}{name} must be numbers, one per degree of freedom "
+                         f"(got {value!r})") from None
+    v = np.atleast_1d(v)
+    if v.ndim != 1:
+        raise ValueError(f"{pre}{name} must be one-dimensional, one value per degree of freedom "
+                         f"(got shape {v.shape})")
+    if v.size != n:
+        raise ValueError(f"{pre}{name} has {v.size} values but the matrices have {n} degrees "
+                         "of freedom")
+    bad = ~np.isfinite(v)
+    if np.any(bad):
+        k = int(np.argmax(bad))
+        raise ValueError(f"{pre}{name}[{k}] = {v[k]} is not finite")
+    v = np.ascontiguousarray(v)
+    v.flags.writeable = False
+    return v
+
+
+def _labels(value: Any, n: int, where: str) -> tuple[str, ...]:
+    pre = _prefix(where)
+    if isinstance(value, str) or not isinstance(value, Sequence | np.ndarray):
+        raise ValueError(f"{pre}labels must be a sequence of strings, one per degree of freedom "
+                         f"(got {value!r})")
+    labels = tuple(value)
+    if len(labels) != n:
+        raise ValueError(f"{pre}labels has {len(labels)} entries but the matrices have {n} "
+                         "degrees of freedom")
+    seen: dict[str, int] = {}
+    for k, lab in enumerate(labels):
+        if not isinstance(lab, str) or not lab.strip():
+            raise ValueError(f"{pre}labels[{k}] must be a non-empty string (got {lab!r})")
+        if lab in seen:
+            raise ValueError(f"{pre}labels[{k}] = {lab!r} repeats labels[{seen[lab]}]; each "
+                             "degree of freedom needs its own label")
+        seen[lab] = k
+    return labels
+
+
+def _readonly(a: NDArray[np.float64]) -> NDArray[np.float64]:
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    a.flags.writeable = False
+    return a
+
+
+# --------------------------------------------------------------------------- the building
+@dataclass(frozen=True, eq=False)
+class MatrixBuilding:
+    """A building's linear lateral model given by its matrices.
+
+    Equation of motion relative to the ground (Chopra §9.4):
+    ``M ü + C u̇ + K u = −M r a_g(t)`` (+ contact forces, once wired into a model).
+
+    Parameters
+    ----------
+    M : array_like, shape (n, n)
+        Mass matrix [kg] (rotational DOFs: [kg·m²]); symmetric positive definite. It need not
+        be diagonal here, but the time stepper will need it to be (:meth:`lumped_masses`).
+    K : array_like, shape (n, n)
+        Stiffness matrix [N/m]; symmetric positive definite (restrained against the ground).
+    labels : sequence of str, length n
+        One unique, non-empty label per DOF (for example ``"F1"`` … ``"F5"``).
+    elevations : array_like, shape (n,)
+        Elevation of each DOF above the ground [m], finite.
+    r : array_like, shape (n,), optional
+        Influence vector of the ground motion [-] (Chopra §9.4.1); default all ones. Not all
+        zero.
+    C : array_like, shape (n, n), optional
+        Damping matrix [N·s/m], symmetric positive semi-definite. Give ``C`` or ``damping``,
+        not both.
+    damping : DampingModel, optional
+        How ``C`` is built from ``M`` and ``K`` (:class:`RayleighDamping`,
+        :class:`ModalDamping`, :mod:`pounding.structure.damping`). With neither ``C`` nor
+        ``damping``, 5 % Rayleigh damping at modes 1 and 2 (as :class:`ShearBuilding`).
+    name : str
+        A label for tables, plots and messages.
+    sources : mapping of str to str
+        Where each matrix came from (``{"M": "m.csv", "K": "k.csv"}``), named in messages;
+        :func:`read_matrix_building` fills it in.
+
+    Raises
+    ------
+    ValueError
+        One line naming the file or building and the fault (see the module docstring).
+
+    Notes
+    -----
+    Immutable; the stored arrays are read-only float64, symmetric matrices stored as
+    ``(A + Aᵀ)/2``; the matrix methods return fresh writable copies.
+
+    Examples
+    --------
+    >>> b = MatrixBuilding(M=[[2.0e5, 0.0], [0.0, 1.0e5]],
+    ...                    K=[[6.0e7, -2.0e7], [-2.0e7, 2.0e7]],
+    ...                    labels=["F1", "F2"], elevations=[3.5, 6.5], name="A")
+    >>> b.n, b.is_shear_building()
+    (2, True)
+    >>> [float(k) for k in b.to_shear_building().stiffnesses]
+    [40000000.0, 20000000.0]
+    """
+
+    M: NDArray[np.float64]
+    K: NDArray[np.float64]
+    labels: tuple[str, ...]
+    elevations: NDArray[np.float64]
+    r: NDArray[np.float64] | None = None
+    C: NDArray[np.float64] | None = None
+    damping: DampingModel | None = None
+    name: str = ""
+    sources: Mapping[str, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str):
+            raise ValueError(f"name must be a string (got {self.name!r})")
+        if not isinstance(self.sources, Mapping):
+            raise ValueError(f"sources must map matrix names to where they came from "
+                             f"(got {self.sources!r})")
+        sources = MappingProxyType({str(k): str(v) for k, v in self.sources.items()})
+        who = f"building {self.name!r}" if self.name else "matrix building"
+
+        def where(key: str) -> str:
+            return sources.get(key, who)
+
+        def _from(key: str) -> str:
+            return f" (from {sources[key]})" if key in sources else ""
+
+        M = check_matrix(self.M, "M", where("M"))
+        K = check_matrix(self.K, "K", where("K"))
+        if K.shape != M.shape:
+            raise ValueError(f"{where('K')}: K is {_shape(K)} but M{_from('M')} is "
+                             f"{_shape(M)}; they must be the same size")
+        n = M.shape[0]
+        labels = _labels(self.labels, n, who)
+        elevations = _vector("elevations", self.elevations, n, who)
+        r = _vector("r", np.ones(n) if self.r is None else self.r, n, who)
+        if not np.any(r != 0.0):
+            raise ValueError(f"{who}: r is all zero: the ground motion would not move the "
+                             "building")
+        diagonal, _, _ = _is_diagonal(M)
+        if diagonal:
+            for k in range(n):
+                if not M[k, k] > 0.0:
+                    raise ValueError(f"{where('M')}: M[{k},{k}] = {M[k, k]:g} must be > 0: every "
+                                     "degree of freedom needs a positive mass (condense "
+                                     "massless ones out first)")
+        _check_positive_definite(M, "M", where("M"),
+                                 "every degree of freedom needs mass; condense massless ones "
+                                 "out first")
+        _check_positive_definite(K, "K", where("K"),
+                                 "the building must be restrained against the ground, with no "
+                                 "mechanism")
+        if self.C is not None and self.damping is not None:
+            raise ValueError(f"{who}: give a damping matrix C or a damping model, not both")
+        damping: DampingModel | None = self.damping
+        if self.C is not None:
+            C = check_matrix(self.C, "C", where("C"))
+            if C.shape != M.shape:
+                raise ValueError(f"{where('C')}: C is {_shape(C)} but M{_from('M')} is "
+                                 f"{_shape(M)}; they must be the same size")
+            scale = float(np.max(np.abs(C)))
+            lam = _smallest_eigenvalue(C)
+            if lam < -SYMMETRY_RTOL * scale:
+                raise ValueError(f"{where('C')}: C must be positive semi-definite (damping "
+                                 f"cannot add energy); its smallest eigenvalue is {lam:.6g}")
+        else:
+            if damping is None:
+                damping = RayleighDamping()
+            if not isinstance(damping, DampingModel):
+                raise ValueError(f"{who}: damping must be a DampingModel such as "
+                                 f"RayleighDamping or ModalDamping (got {damping!r})")
+            damping.check(n)
+            C = np.ascontiguousarray(damping.matrix(M, K), dtype=np.float64)
+        object.__setattr__(self, "M", _readonly(M))
+        object.__setattr__(self, "K", _readonly(K))
+        object.__setattr__(self, "labels", labels)
+        object.__setattr__(self, "elevations", elevations)
+        object.__setattr__(self, "r", r)
+        object.__setattr__(self, "C", None if self.C is None else _readonly(C))
+        object.__setattr__(self, "damping", damping)
+        object.__setattr__(self, "sources", sources)
+        object.__setattr__(self, "_C", _readonly(C))
+
+    # ----------------------------------------------------------------- constructors
+    @classmethod
+    def from_shear_building(cls, building: ShearBuilding) -> MatrixBuilding:
+        """The matrix building of a linear :class:`ShearBuilding`: its ``M``, ``K``, damping
+        model and floor levels, ``r = 1``, DOFs labelled ``F1`` … ``Fn``.
+
+        Raises
+        ------
+        ValueError
+            If the building has a storey law: a matrix building is linear.
+        """
+        if building.storey_law is not None:
+            raise ValueError(f"building {building.name!r} has a storey law; a matrix building "
+                             "is linear (use to_shear_building(storey_law=...) on the way back)")
+        return cls(M=building.mass_matrix(), K=building.stiffness_matrix(),
+                   labels=tuple(f"F{j + 1}" for j in range(building.n)),
+                   elevations=building.floor_levels, damping=building.damping,
+                   name=building.name)
+
+    # ----------------------------------------------------------------- matrices
+    @property
+    def n(self) -> int:
+        """Number of degrees of freedom."""
+        return int(self.M.shape[0])
+
+    def mass_matrix(self) -> NDArray[np.float64]:
+        """``M`` [kg], shape (n, n), a fresh copy."""
+        return np.array(self.M)
+
+    def stiffness_matrix(self) -> NDArray[np.float64]:
+        """``K`` [N/m], shape (n, n), a fresh copy."""
+        return np.array(self.K)
+
+    def damping_matrix(self) -> NDArray[np.float64]:
+        """``C`` [N·s/m], shape (n, n): the given matrix, or the damping model's."""
+        return np.array(self._C)  # type: ignore[attr-defined]
+
+    def influence_vector(self) -> NDArray[np.float64]:
+        """``r`` [-], shape (n,), a fresh copy."""
+        return np.array(self.r)
+
+    @property
+    def is_lumped(self) -> bool:
+        """True if ``M`` is diagonal (to :data:`DIAGONAL_RTOL`)."""
+        return _is_diagonal(self.M)[0]
+
+    def lumped_masses(self) -> NDArray[np.float64]:
+        """The diagonal masses [kg], shape (n,); raises unless ``M`` is diagonal
+        (:func:`lumped_masses`)."""
+        return lumped_masses(self.M, self.sources.get("M", self._who))
+
+    @property
+    def _who(self) -> str:
+        return f"building {self.name!r}" if self.name else "matrix building"
+
+    # ----------------------------------------------------------------- dynamics
+    def modes(self) -> ModalResult:
+        """Natural modes: ``K φ = ω² M φ`` solved by :func:`scipy.linalg.eigh` (Chopra §10.2),
+        longest period first, mass-normalised shapes, with this building's ``C`` and ``r``
+        (:func:`pounding.structure.modal.modal_result`)."""
+        return modal_result(self.M, self.K, self._C, self.r)  # type: ignore[attr-defined]
+
+    @property
+    def fundamental_period(self) -> float:
+        """Period of mode 1 [s]."""
+        return float(self.modes().periods[0])
+
+    # ----------------------------------------------------------------- shear building
+    def shear_building_mismatch(self) -> str | None:
+        """Why this is not a shear building (Chopra §9.2), or None if it is one.
+
+        It is one when, DOFs ordered from floor 1 up to the roof:
+
+        * ``M`` is diagonal (:data:`DIAGONAL_RTOL`) and ``r`` is all ones;
+        * the elevations rise strictly from above the ground;
+        * ``K`` is tridiagonal with negative off-diagonal entries, and ``K · 1 = k₁ e₁``
+          (every row sums to zero but the first, whose sum is the ground storey's stiffness
+          ``k₁ = 1ᵀ K 1``, positive as ``K`` is positive definite) — the pattern
+          ``K[j,j] = k_j + k_{j+1}``, ``K[j,j+1] = −k_{j+1}`` of
+          :func:`pounding.structure.shear_stiffness_matrix`.
+
+        Zero is judged to :data:`SYMMETRY_RTOL` of the largest entry of ``K``.
+        """
+        K, n = self.K, self.n
+        if not self.is_lumped:
+            return "M is not diagonal (lumped floor masses)"
+        if not np.all(self.r == 1.0):
+            return "r is not all ones"
+        if not self.elevations[0] > 0.0 or np.any(np.diff(self.elevations) <= 0.0):
+            return "elevations do not rise strictly from above the ground, floor 1 first"
+        tol = SYMMETRY_RTOL * float(np.max(np.abs(K)))
+        band = np.abs(np.subtract.outer(np.arange(n), np.arange(n))) > 1
+        if np.any(np.abs(K[band]) > tol):
+            i, j = (int(x) for x in np.argwhere(band & (np.abs(K) > tol))[0])
+            return f"K is not tridiagonal: K[{i},{j}] = {K[i, j]:.6g}"
+        for j in range(n - 1):
+            if not -K[j, j + 1] > tol:
+                return f"K[{j},{j + 1}] = {K[j, j + 1]:.6g} is not negative"
+        sums = K.sum(axis=1)
+        for j in range(1, n):
+            if abs(sums[j]) > tol:
+                return (f"row {j} of K sums to {sums[j]:.6g}, not 0: not the shear-building "
+                        "pattern")
+        # Row 0's sum, k₁ = 1ᵀ K 1, is > 0 because K is positive definite.
+        return None
+
+    def is_shear_building(self) -> bool:
+        """True if :meth:`shear_building_mismatch` finds nothing."""
+        return self.shear_building_mismatch() is None
+
+    def storey_stiffnesses(self) -> NDArray[np.float64]:
+        """Storey stiffnesses [N/m] of a shear building: ``k₁ = K[0,0] + K[0,1]`` (row 0's
+        sum), ``k_{j+1} = −K[j,j+1]``; raises if it is not one."""
+        why = self.shear_building_mismatch()
+        if why is not None:
+            raise ValueError(f"{self._who} is not a shear building: {why}")
+        K = self.K
+        k = np.empty(self.n)
+        k[0] = K[0, 0] + (K[0, 1] if self.n > 1 else 0.0)
+        k[1:] = -np.diag(K, 1)
+        return k
+
+    def to_shear_building(self, damping: DampingModel | None = None,
+                          storey_law: StoreyLaw | None = None) -> ShearBuilding:
+        """The equivalent :class:`ShearBuilding`.
+
+        Masses from the diagonal of ``M``, storey stiffnesses from ``K``
+        (:meth:`storey_stiffnesses`), storey heights from the elevations
+        (``h_j = z_j − z_{j−1}``, ``z_0 = 0``).
+
+        Parameters
+        ----------
+        damping : DampingModel, optional
+            Default: this building's damping model. Needed when the building was given a
+            damping matrix ``C`` (a shear building takes a model).
+        storey_law : StoreyLaw, optional
+            Storey yielding for the shear building (``None``: linear).
+
+        Raises
+        ------
+        ValueError
+            If it is not a shear building (saying why), or it has a ``C`` matrix and no
+            ``damping`` is given.
+        """
+        k = self.storey_stiffnesses()
+        model = self.damping if damping is None else damping
+        if model is None:
+            raise ValueError(f"{self._who} was given a damping matrix C; a ShearBuilding takes a "
+                             "damping model: pass damping=...")
+        z = np.concatenate(([0.0], self.elevations))
+        return ShearBuilding(masses=np.diag(self.M).copy(), stiffnesses=k, heights=np.diff(z),
+                             damping=model, name=self.name, storey_law=storey_law)
+
+    # ----------------------------------------------------------------- value semantics
+    def __eq__(self, other: Any) -> bool:
+        if not isinstance(other, MatrixBuilding):
+            return NotImplemented
+        same_c = ((self.C is None and other.C is None)
+                  or (self.C is not None and other.C is not None
+                      and np.array_equal(self.C, other.C)))
+        return (np.array_equal(self.M, other.M) and np.array_equal(self.K, other.K)
+                and self.labels == other.labels
+                and np.array_equal(self.elevations, other.elevations)
+                and np.array_equal(self.r, other.r)  # type: ignore[arg-type]
+                and same_c and self.damping == other.damping and self.name == other.name)
+
+    __hash__ = None  # type: ignore[assignment]
+
+
+# --------------------------------------------------------------------------- from files
+def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None = None, *,
+                         labels: Sequence[str], elevations: ArrayLike,
+                         r: ArrayLike | None = None, damping: DampingModel | None = None,
+                         name: str = "") -> MatrixBuilding:
+    """Read a :class:`MatrixBuilding` from matrix files.
+
+    Parameters
+    ----------
+    M : str or path-like
+        The mass-matrix file (any format of :func:`read_matrix`), or an ``.npz`` archive
+        holding arrays ``M``, ``K`` and optionally ``C``.
+    K : str or path-like, optional
+        The stiffness-matrix file; may be omitted when ``M`` is an ``.npz`` archive (``K`` is
+        then read from it).
+    C : str or path-like, optional
+        A damping-matrix file. When it is not given and ``M`` is an ``.npz`` archive that
+        holds a ``C``, that ``C`` is read (and giving ``damping`` too is an error).
+    labels : sequence of str
+        One label per degree of freedom.
+    elevations : array_like
+        One elevation [m] per degree of freedom.
+    r : array_like, optional
+        Influence vector (default all ones).
+    damping : DampingModel, optional
+        Damping model, if no ``C`` is read (default 5 % Rayleigh at modes 1 and 2).
+    name : str
+        The building's name.
+
+    Returns
+    -------
+    MatrixBuilding
+        With :attr:`MatrixBuilding.sources` naming the file of each matrix.
+
+    Raises
+    ------
+    ValueError
+        One line naming the file and the problem.
+    """
+    m_path = Path(M)
+    sources: dict[str, str] = {"M": str(m_path)}
+    Mx = read_matrix(m_path, "M")
+    npz = m_path.suffix.lower() == ".npz"
+    if K is None:
+        if not npz:
+            raise ValueError(f"{m_path}: give K's file too (only an .npz archive holds both)")
+        k_path = m_path
+    else:
+        k_path = Path(K)
+    Kx = read_matrix(k_path, "K")
+    sources["K"] = str(k_path)
+    Cx = None
+    if C is not None:
+        c_path = Path(C)
+        Cx = read_matrix(c_path, "C")
+        sources["C"] = str(c_path)
+    elif npz:
+        with np.load(m_path, allow_pickle=False) as archive:
+            has_c = "C" in archive.files
+        if has_c:
+            if damping is not None:
+                raise ValueError(f"{m_path}: holds a damping matrix C and a damping model was "
+                                 "given too; give one")
+            Cx = read_matrix(m_path, "C")
+            sources["C"] = str(m_path)
+    return MatrixBuilding(M=Mx, K=Kx, labels=tuple(labels),
+                          elevations=elevations, r=r,  # type: ignore[arg-type]
+                          C=Cx, damping=damping, name=name, sources=sources)
