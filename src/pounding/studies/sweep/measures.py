@@ -50,6 +50,8 @@ class _Layout(NamedTuple):
     """The floor below each floor (−1: the ground), as :func:`pounding.integrate.floor_below`."""
     inelastic: bool
     """Whether any storey yields."""
+    struck: bool
+    """Whether any contact strikes a column (else no column shear applies)."""
 
 
 _LAYOUTS: dict[int, _Layout] = {}
@@ -69,7 +71,8 @@ def _layout(model: Any) -> _Layout:
         layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
                                for name in FLOOR_MEASURES),
                          np.concatenate([b.heights for b in model.buildings]), below,
-                         bool(model.is_inelastic))
+                         bool(model.is_inelastic),
+                         any(c.struck is not None for c in model.contacts))
         try:
             # the entry must go when the model does (before its id can be reused)
             weakref.finalize(model, _LAYOUTS.pop, key, None)
@@ -103,7 +106,7 @@ def result_row(result: Any) -> dict[str, Any]:
     drift = abs_max_drift(result.displacement, layout.below)
     accel = abs_max_columns(result.abs_acceleration)
     inelastic = layout.inelastic
-    shear_ratio = result.column_shear_ratio
+    shear_ratio = result.column_shear_ratio if layout.struck else None
     row: dict[str, Any] = {
         "n_impacts": int(result.n_impacts),
         "peak_contact_force_N": float(pcf.max()) if pcf.size else 0.0,
@@ -120,7 +123,8 @@ def result_row(result: Any) -> dict[str, Any]:
         "max_residual_drift_m": (float(np.max(np.abs(result.residual_drift))) if inelastic
                                  else 0.0),
         "max_column_shear_ratio": (float(np.nanmax(shear_ratio))
-                                   if np.isfinite(shear_ratio).any() else None),
+                                   if shear_ratio is not None and np.isfinite(shear_ratio).any()
+                                   else None),
     }
     for names, values in zip(layout.floor_columns,
                              (result.peak_displacement, drift, accel)):
