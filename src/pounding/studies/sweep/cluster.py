@@ -19,7 +19,7 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
-__all__ = ["SCHEDULER_TIMEOUT", "WORKER_MALLOC_ENV"]
+__all__ = ["QUIET_INTERVALS", "SCHEDULER_TIMEOUT", "WORKER_MALLOC_ENV"]
 
 SCHEDULER_TIMEOUT = 10.0
 """Seconds to wait for a Dask scheduler given by address to answer (Dask's default is 30):
@@ -30,6 +30,17 @@ WORKER_MALLOC_ENV: dict[str, int] = {"MALLOC_TRIM_THRESHOLD_": 1 << 30,
                                      "MALLOC_MMAP_THRESHOLD_": 1 << 27}
 """glibc's settings in the local cluster's workers (see :func:`_local_config`): freed
 memory is kept for reuse, so a case's output arrays do not fault in afresh."""
+
+
+QUIET_INTERVALS: dict[str, str] = {
+    "distributed.admin.tick.interval": "1s",
+    "distributed.worker.memory.monitor-interval": "1s",
+    "distributed.admin.system-monitor.interval": "2s",
+}
+"""Dask's periodic housekeeping in the local cluster, less often than its defaults (20 ms,
+100 ms, 500 ms): an event-loop health check in every process, the nanny's look at each
+worker's memory, the dashboard's system monitor. Measured on an idle 2-worker cluster
+(2026-11-25): 21 → 9 ms of CPU a second in this process, 14 → 3.5 in each worker."""
 
 
 MIN_BATCH = 10
@@ -142,11 +153,13 @@ def _local_config() -> Any:
     # a fresh mmap whose pages fault in on first touch, and a case runs ~2x slower than in
     # this process. A large threshold keeps them on the reusable heap. (Dask already gives
     # each worker one BLAS/OpenMP thread.) The statistical profiler, which samples every
-    # thread each 10 ms, is measurable on ms-long cases: off.
+    # thread each 10 ms, is measurable on ms-long cases: off. So is the housekeeping of an
+    # idle cluster, about 5 % of a core (QUIET_INTERVALS).
     environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}))
     environ.update(WORKER_MALLOC_ENV)
     return dask.config.set({"distributed.worker.profile.enabled": False,
-                            "distributed.nanny.pre-spawn-environ": environ})
+                            "distributed.nanny.pre-spawn-environ": environ,
+                            **QUIET_INTERVALS})
 
 
 @contextlib.contextmanager
