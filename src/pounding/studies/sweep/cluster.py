@@ -47,10 +47,16 @@ MIN_BATCH = 10
 """Fewest cases of an automatic batch (a case takes a few ms; a batch costs the client a
 Parquet part)."""
 
+MAX_BATCH = 500
+"""Most cases of an automatic batch: a second or so of cases of a few ms. A batch costs
+about 10 ms of CPU (Dask's task in the client and the worker, the Parquet part), 1–2 % of
+such a batch; it is also what Ctrl-C can lose, and the step of the progress bar."""
+
 
 def _auto_batch(n_pending: int, n_workers: int) -> int:
-    """About 8 batches per worker, 10 … 200 cases each (a case takes a few ms)."""
-    return max(MIN_BATCH, min(200, math.ceil(n_pending / max(1, 8 * n_workers))))
+    """About 4 batches per worker, :data:`MIN_BATCH` … :data:`MAX_BATCH` cases each (a
+    case takes a few ms), before the last ones shrink (:func:`_batch_sizes`)."""
+    return max(MIN_BATCH, min(MAX_BATCH, math.ceil(n_pending / max(1, 4 * n_workers))))
 
 
 def _batch_sizes(n_pending: int, n_workers: int, size: int, taper: bool) -> list[int]:
