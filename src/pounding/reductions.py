@@ -46,22 +46,28 @@ def _abs_max(x: np.ndarray) -> float:
 
 
 @njit(cache=True)
+def _abs_max_column(bits: np.ndarray, j: int) -> float:
+    """``np.abs(a[:, j]).max()`` of the 2-D float64 array whose bits are ``bits``."""
+    best = np.int64(0)
+    for k in range(bits.shape[0]):
+        b = bits[k, j] & _MAGNITUDE
+        best = b if b > best else best
+    return _from_bits(best)
+
+
+@njit(cache=True)
 def _abs_max_columns(a: np.ndarray) -> np.ndarray:
-    nt, m = a.shape
     bits = a.view(np.int64)
-    out = np.zeros(m)
-    for j in range(m):
-        best = np.int64(0)
-        for k in range(nt):
-            b = bits[k, j] & _MAGNITUDE
-            best = b if b > best else best
-        out[j] = _from_bits(best)
+    out = np.zeros(a.shape[1])
+    for j in range(a.shape[1]):
+        out[j] = _abs_max_column(bits, j)
     return out
 
 
 @njit(cache=True)
 def _abs_max_drift(u: np.ndarray, below: np.ndarray) -> np.ndarray:
     nt, m = u.shape
+    bits = u.view(np.int64)
     out = np.zeros(m)
     col = np.empty(nt)
     for j in range(m):
@@ -69,24 +75,20 @@ def _abs_max_drift(u: np.ndarray, below: np.ndarray) -> np.ndarray:
         if b >= 0:
             for k in range(nt):
                 col[k] = u[k, j] - u[k, b]
+            out[j] = _abs_max(col)
         else:
-            for k in range(nt):
-                col[k] = u[k, j]
-        out[j] = _abs_max(col)
+            out[j] = _abs_max_column(bits, j)
     return out
 
 
 @njit(cache=True)
-def _energy_residual_max(e: np.ndarray) -> tuple[float, float]:
+def _energy_residual_max(e: np.ndarray, e_input: np.ndarray) -> tuple[float, float]:
     nt = e.shape[0]
     e0 = e[0, 1] + e[0, 2]
     col = np.empty(nt)
     for k in range(nt):
         col[k] = (e0 + e[k, 0]) - ((((e[k, 1] + e[k, 2]) + e[k, 3]) + e[k, 4]) + e[k, 6])
-    worst = _abs_max(col)
-    for k in range(nt):
-        col[k] = e[k, 0]
-    return worst, _abs_max(col)
+    return _abs_max(col), _abs_max(e_input)
 
 
 def abs_max_columns(a: np.ndarray) -> np.ndarray:
@@ -110,7 +112,8 @@ def abs_max_drift(u: np.ndarray, below: np.ndarray) -> np.ndarray:
     >>> abs_max_drift(np.array([[1.0, 3.0], [-2.0, -1.0]]), np.array([-1, 0]))
     array([2., 2.])
     """
-    return _abs_max_drift(np.asarray(u, dtype=np.float64), np.asarray(below, dtype=np.int64))
+    return _abs_max_drift(np.ascontiguousarray(u, dtype=np.float64),
+                          np.asarray(below, dtype=np.int64))
 
 
 def energy_residual_max(e: np.ndarray) -> tuple[float, float]:
@@ -119,4 +122,6 @@ def energy_residual_max(e: np.ndarray) -> tuple[float, float]:
     (columns :data:`pounding.result.ENERGY_NAMES`, at least one row), where
     ``closure = e0 + e[:, 0] − (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4] + e[:, 6])`` and
     ``e0 = e[0, 1] + e[0, 2]``."""
-    return _energy_residual_max(np.asarray(e, dtype=np.float64))  # type: ignore[no-any-return]
+    e = np.asarray(e, dtype=np.float64)
+    # (a column of the kernel's Fortran-ordered energies is contiguous already)
+    return _energy_residual_max(e, np.ascontiguousarray(e[:, 0]))  # type: ignore[no-any-return]

@@ -48,6 +48,11 @@ bytes for N floors (:func:`_model_bytes`): hundreds of small models, a few of hu
 floors."""
 
 
+MAX_RECORDS = 64
+"""Most records (and their motions) a :class:`CaseBuilder` remembers, as
+:data:`pounding.config.record.RECORDS`."""
+
+
 def _model_bytes(model: Any) -> int:
     """Bytes a model holds with its kernel arrays, counted as
     :data:`pounding.integrate.kernel_model.STRUCTURES` counts them."""
@@ -77,9 +82,9 @@ class CaseBuilder:
         group = [_GROUPS.get(p.split(".")[0], "solver") for p in self.params]
         self._columns = {g: tuple(i for i, x in enumerate(group) if x == g)
                          for g in ("model", "record", "solver")}
-        self._parts = {g: Memo(max_items=max_parts,
-                               max_bytes=MAX_MODEL_BYTES if g == "model" else 1 << 62)
-                       for g in self._columns}
+        self._parts = {"model": Memo(max_items=max_parts, max_bytes=MAX_MODEL_BYTES),
+                       "record": Memo(max_items=min(max_parts, MAX_RECORDS)),
+                       "solver": Memo(max_items=max_parts)}
 
     def _keys(self, values: Sequence[Any]) -> dict[str, str]:
         """Each group's key: the ``repr`` of the case's values of its parameters."""
@@ -114,11 +119,16 @@ class CaseBuilder:
             built = cfg.build()
             model = self._parts["model"].get(keys["model"], lambda: built.model,
                                              size=_model_bytes)
-            self._parts["record"].get(keys["record"], lambda: cfg.record)
+            # a record file may change: its motion is asked of the record each time
+            # (RecordConfig.load, remembered by the file's version); a bundled one may not
+            self._parts["record"].get(keys["record"], lambda: (
+                cfg.record, built.motion if cfg.record.path is None else None))
             self._parts["solver"].get(keys["solver"], lambda: built.solver)
             return Built(model, built.motion, built.solver)
-        with prefixed("record"):  # remembered by its fields and the file's version
-            motion = record.load()
+        record_cfg, motion = record
+        if motion is None:
+            with prefixed("record"):
+                motion = record_cfg.load()
         return Built(model, motion, dict(solver))
 
 
