@@ -8,8 +8,8 @@ options on ``solver`` (``output`` and ``description`` change no run). A
 :class:`CaseBuilder` remembers, for each group, what the cases it built made of it, keyed
 by the case's values of that group's parameters: a case whose every group was seen in a
 case that validated and built is put together from those parts, without validating or
-building anything again (in a grid whose last parameter is the record's scale, 19 cases in
-20 share the model of the case before). Any other case is validated and built whole,
+building anything again (in a grid whose last parameter is the record's scale, each model
+is built once, for the first of its scales). Any other case is validated and built whole,
 exactly as ``pounding run`` does, so a case that fails reports the error it would alone.
 
 Why a case put together from parts is the case: a group's part depends only on the keys of
@@ -46,7 +46,6 @@ MAX_MODEL_BYTES = 64 << 20
 kernel arrays (:func:`pounding.integrate.kernel_model`) while it lives, about ``64 N²``
 bytes for N floors (:func:`_model_bytes`): hundreds of small models, a few of hundreds of
 floors."""
-
 
 MAX_RECORDS = 64
 """Most records (and their motions) a :class:`CaseBuilder` remembers, as
