@@ -45,6 +45,9 @@ def test_memo_keeps_the_most_recent_within_its_bounds():
     with pytest.raises(ZeroDivisionError):
         memo.get("bad", lambda: 1 / 0)
     assert memo.get("bad", lambda: 8) == 8
+    # find: the value if remembered (now the most recent), else None; nothing is made
+    assert memo.find("nothing") is None and "nothing" not in memo._entries
+    assert memo.find("bad") == 8 and list(memo._entries)[-1] == "bad"
     memo.clear()
     assert len(memo) == 0 and memo.nbytes == 0
 

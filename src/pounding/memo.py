@@ -89,6 +89,16 @@ class Memo:
                 self._bytes -= dropped
         return value
 
+    def find(self, key: Hashable) -> Any:
+        """The value of ``key`` if it is remembered (it becomes the most recently used),
+        else None. Nothing is made."""
+        with self._lock:
+            entry = self._entries.get(key)
+            if entry is None:
+                return None
+            self._entries.move_to_end(key)
+            return entry[0]
+
     def __len__(self) -> int:
         return len(self._entries)
 

@@ -479,14 +479,15 @@ class Result:
         """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + E_hyst + W_contact +
         E_links)|`` over the run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
         largest input energy and ``E_0`` (dimensionless; 0 for a run with no energy)."""
-        e = self.energy
+        from pounding.reductions import energy_residual_max  # (one pass over the history)
+
+        e = np.asarray(self.energy, dtype=float)
         e0 = e[0, 1] + e[0, 2]
-        closure = e0 + e[:, 0] - (e[:, 1] + e[:, 2] + e[:, 3] + e[:, 4] + e[:, 6]
-                                  + (e[:, 7] if e.shape[1] > 7 else 0.0))
-        scale = max(np.abs(e[:, 0]).max(), e0)
+        worst, largest = energy_residual_max(e)
+        scale = max(largest, e0)
         if scale <= 0.0:
             return 0.0
-        return float(np.abs(closure).max() / scale)
+        return float(worst / scale)
 
     # ----------------------------------------------------------------- exports
     def history_variables(self) -> HistoryVariables:

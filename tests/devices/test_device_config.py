@@ -91,13 +91,28 @@ def test_bad_devices_get_one_line_naming_the_field(tmp_path: Path, capsys, body,
 def test_a_sweep_over_a_damper_coefficient(tmp_path: Path):
     (tmp_path / "m.toml").write_text(MODEL.replace("duration = 4.0", "duration = 3.0"))
     (tmp_path / "s.toml").write_text('base = "m.toml"\nname = "c"\nout = "out"\n[grid]\n'
-                                     '"device.0.c" = [1e5, 1e6, 1e7]\n')
+                                     '"device.0.c" = [1e5, 1e6, 1e7]\n'
+                                     '"record.scale" = [0.5, 1.0]\n')
     res = run_sweep(load_sweep(tmp_path / "s.toml"), scheduler="synchronous")
     df = load_results(res.results)
-    assert list(df["status"]) == ["ok"] * 3
+    assert list(df["status"]) == ["ok"] * 6
     assert df["links_dissipated_J"].notna().all()
-    # a stiffer damper pulls the floors together: the link force grows with c
-    assert df.sort_values("device.0.c")["peak_link_force_N"].is_monotonic_increasing
+    # a stiffer damper pulls the floors together: the link force grows with c (at each
+    # scale: the cases that share a model share it, the others do not)
+    for _, at_scale in df.groupby("record.scale"):
+        assert at_scale.sort_values("device.0.c")["peak_link_force_N"].is_monotonic_increasing
+    # each case is the run of its own model file
+    from pounding import simulate
+    from pounding.config import load_config
+
+    cfg = load_config(tmp_path / "m.toml")
+    row = df[(df["device.0.c"] == 1e7) & (df["record.scale"] == 1.0)].iloc[0]
+    data = cfg.to_dict(resolve_paths=True)
+    data["device"][0]["c"] = 1e7
+    from pounding.config import parse_config
+
+    model, motion, kw = parse_config(data, tmp_path).build()
+    assert row["peak_link_force_N"] == simulate(model, motion, **kw).link_peak_force.max()
 
 
 def test_floors_all_puts_a_device_at_every_shared_floor_level():

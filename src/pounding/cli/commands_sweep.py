@@ -43,7 +43,7 @@ def sweep_cmd(
         "--workers", "-j", min=1, help="Workers of the local cluster (default: CPU count).",
         show_default=False)] = None,
     batch_size: Annotated[int | None, typer.Option(
-        "--batch-size", min=1, help="Cases per Dask task (default: automatic, 10-200).",
+        "--batch-size", min=1, help="Cases per Dask task (default: automatic, 10-500).",
         show_default=False)] = None,
     histories: Annotated[str | None, typer.Option(
         "--histories", help="Write time histories per case: netcdf, zarr or none "

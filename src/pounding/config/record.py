@@ -146,7 +146,8 @@ class RecordConfig(Section):
         if path is not None and path.exists():
             stat = path.stat()
             version = (stat.st_mtime_ns, stat.st_size)
-        return RECORDS.get((self.model_dump_json(), str(path), version),
+        # every field, as text (equal text: equal values of the same types)
+        return RECORDS.get((repr(self.__dict__), str(path), version),
                            lambda: self._load(path, version), size=lambda gm: gm.accel.nbytes)
 
     def _load(self, path: Path | None, version: tuple[int, int] | None) -> GroundMotion:

@@ -18,7 +18,9 @@ from __future__ import annotations
 import sys
 import time
 import warnings
+import weakref
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 
@@ -111,6 +113,37 @@ def default_step_budget(n_grid: int) -> int:
     """
     return 100 * n_grid + 100_000
 
+
+class _ModelNotes(NamedTuple):
+    """What :func:`simulate` found of a model, for its next runs."""
+
+    checked: set[tuple[float, float]]
+    """(output step, duration) pairs whose checks the model passed."""
+    margin: dict[float, float]
+    """The peak margin (:func:`peak_margin`) of each output step."""
+
+
+_NOTES: dict[int, _ModelNotes] = {}
+"""The notes of every model alive, by its identity (an entry goes with its model): the
+cases of a sweep that share a model (:mod:`pounding.studies.sweep.builder`) check it once."""
+
+
+def _model_notes(model: PoundingModel) -> _ModelNotes:
+    """The notes of a model (fresh ones, not kept, for a model that cannot be weakly
+    referenced)."""
+    key = id(model)
+    notes = _NOTES.get(key)
+    if notes is None:
+        notes = _ModelNotes(set(), {})
+        try:
+            # the entry must go when the model does (before its id can be reused)
+            weakref.finalize(model, _NOTES.pop, key, None)
+        except TypeError:
+            return notes
+        _NOTES[key] = notes
+    return notes
+
+
 _kernel_loaded: list[bool] = []
 """Non-empty once this process has called the compiled kernel (loaded it)."""
 
@@ -172,8 +205,11 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     """
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
-    check_history_size(model, t_end, step)
-    check_contact_periods(model, step)
+    notes = _model_notes(model)
+    if (step, t_end) not in notes.checked:
+        check_history_size(model, t_end, step)
+        check_contact_periods(model, step)
+        notes.checked.add((step, t_end))
     rtol = positive("rtol", rtol)
     h_max = step if h_max is None else positive("h_max", h_max)
     ag = ground_on_grid_memo(motion, step, t_end)
@@ -219,7 +255,10 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     ws_f = np.zeros(WS_F_SIZE)
     ws_f[W_ERR_OLD] = 1e-4
     ws_f[W_H] = step * 0.1
-    ws_f[W_PEAK_MARGIN] = peak_margin(km, step)
+    margin = notes.margin.get(step)
+    if margin is None:
+        margin = notes.margin[step] = peak_margin(km, step)
+    ws_f[W_PEAK_MARGIN] = margin
     ws_i = np.zeros(WS_I_SIZE, dtype=np.int64)
     ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
     ws_i[I_ONSET_C] = -1

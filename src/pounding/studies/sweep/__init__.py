@@ -27,7 +27,9 @@ The modules, one concept each:
   :mod:`~pounding.studies.sweep.overrides` (a case applied to the base model),
   :mod:`~pounding.studies.sweep.checks` (what is checked before anything runs);
 * execution — :mod:`~pounding.studies.sweep.execute` (one case, a batch, the warm-up:
-  the worker side), :mod:`~pounding.studies.sweep.measures` (the row of a case),
+  the worker side), :mod:`~pounding.studies.sweep.builder` (a case's model, motion and
+  solver options, sharing what the cases of a sweep have in common),
+  :mod:`~pounding.studies.sweep.measures` (the row of a case),
   :mod:`~pounding.studies.sweep.cluster` (the Dask client),
   :mod:`~pounding.studies.sweep.runner` (:func:`run_sweep`);
 * storage — :mod:`~pounding.studies.sweep.store` (the output folder: manifest, parts,

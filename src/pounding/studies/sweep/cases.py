@@ -35,10 +35,14 @@ class Case:
     values: tuple[Any, ...]
 
 
+_CANON = json.JSONEncoder(sort_keys=True, separators=(",", ":"), ensure_ascii=False,
+                          allow_nan=False)
+"""The encoder of :func:`_canon`, made once (``json.dumps`` makes one a call)."""
+
+
 def _canon(value: Any) -> str:
     """Canonical JSON (sorted keys, float repr): equal values give equal text."""
-    return json.dumps(value, sort_keys=True, separators=(",", ":"), ensure_ascii=False,
-                      allow_nan=False)
+    return _CANON.encode(value)
 
 
 def case_id(params: Sequence[str], values: Sequence[Any]) -> str:

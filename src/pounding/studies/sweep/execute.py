@@ -6,15 +6,15 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Sequence
-from pathlib import Path
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from pounding.studies.sweep.builder import CaseBuilder, case_builder
 from pounding.studies.sweep.measures import result_row
-from pounding.studies.sweep.overrides import apply_overrides
 
-__all__ = ["case_result", "run_case", "warm_up"]
+__all__ = ["Batch", "case_result", "run_case", "warm_up"]
 
 
 def _error_text(exc: BaseException) -> str:
@@ -34,6 +34,8 @@ def case_result(base: dict[str, Any], base_dir: str | os.PathLike[str], params: 
                 values: Sequence[Any]) -> Any:
     """Simulate one case: the base model with the case's values, validated, built and run.
 
+    The cases of one sweep share what they have in common (:func:`.builder.case_builder`).
+
     Parameters
     ----------
     base, base_dir, params, values
@@ -48,12 +50,14 @@ def case_result(base: dict[str, Any], base_dir: str | os.PathLike[str], params: 
     pydantic.ValidationError, ValueError
         A value the model does not accept, or a run that cannot be integrated.
     """
-    from pounding.config import RunConfig
+    return _simulate(case_builder(base, base_dir, params), values)
+
+
+def _simulate(builder: CaseBuilder, values: Sequence[Any]) -> Any:
+    """:func:`case_result` with the sweep's builder."""
     from pounding.integrate import simulate
 
-    data = apply_overrides(base, params, values)
-    cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
-    model, motion, solver = cfg.build()
+    model, motion, solver = builder.build(values)
     return simulate(model, motion, **solver)
 
 
@@ -84,10 +88,15 @@ def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Seq
     dataset : xarray.Dataset or None
         The time histories, if asked for and the case ran.
     """
+    return _run(case_builder(base, base_dir, params), values, history)
+
+
+def _run(builder: CaseBuilder, values: Sequence[Any], history: bool) -> tuple[dict[str, Any], Any]:
+    """:func:`run_case` with the sweep's builder."""
     start = time.perf_counter()
     dataset = None
     try:
-        result = case_result(base, base_dir, params, values)
+        result = _simulate(builder, values)
         row: dict[str, Any] = {"status": "ok", "error": None, **result_row(result)}
         if history:
             dataset = result.to_dataset()
@@ -97,13 +106,27 @@ def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Seq
     return row, dataset
 
 
-def _run_batch(payload: dict[str, Any], batch: list[tuple[int, str, tuple]]
-               ) -> list[tuple[str, dict[str, Any], Any]]:
+@dataclass(frozen=True)
+class Batch:
+    """The cases of one Dask task, each ``(index, id, values)``.
+
+    An object rather than a list: Dask walks every list and tuple in the arguments of a
+    task, looking for futures (a few ms for hundreds of cases, in the client).
+    """
+
+    cases: tuple[tuple[int, str, tuple], ...]
+
+    def __len__(self) -> int:
+        return len(self.cases)
+
+
+def _run_batch(payload: dict[str, Any], batch: Batch) -> list[tuple[str, dict[str, Any], Any]]:
     """Run a batch of cases (one Dask task): ``[(case_id, row, dataset), ...]``."""
+    builder = case_builder(payload["base"], payload["base_dir"], payload["params"])
+    history = payload["histories"] is not None
     out = []
-    for _, cid, values in batch:
-        row, ds = run_case(payload["base"], payload["base_dir"], payload["params"], values,
-                           history=payload["histories"] is not None)
+    for _, cid, values in batch.cases:
+        row, ds = _run(builder, values, history)
         out.append((cid, row, ds))
     return out
 

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from typing import Any
+import weakref
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -40,22 +41,55 @@ FLOOR_MEASURES: tuple[str, ...] = ("peak_displacement_m", "peak_drift_m", "peak_
 (floor displacement relative to the ground, storey drift, absolute floor acceleration)."""
 
 
-def _sampled_peak_drift(result: Any) -> np.ndarray:
-    """Largest |storey drift| of every storey at the output steps [m] (N,): what
-    ``peak_abs(result.drift)`` gives, column by column, without the drift history (a
-    first floor's drift is its displacement)."""
-    u = result.displacement
-    out = np.zeros(u.shape[1])
-    if u.shape[0]:
-        for off, b in zip(result.model.system.offsets, result.model.buildings):
-            out[off] = np.abs(u[:, off]).max()
-            for j in range(off + 1, off + b.n):
-                out[j] = np.abs(u[:, j] - u[:, j - 1]).max()
-    return out
+class _Layout(NamedTuple):
+    """What a row needs of a model, whatever the run: column names, storey heights, the
+    floor below each floor, and which measures apply."""
+
+    floor_columns: tuple[tuple[str, ...], ...]
+    """The per-floor column names, one tuple per :data:`FLOOR_MEASURES`."""
+    heights: np.ndarray
+    """Storey height of every floor [m] (N,)."""
+    below: np.ndarray
+    """The floor below each floor (−1: the ground), as :func:`pounding.integrate.floor_below`."""
+    inelastic: bool
+    """Whether any storey yields."""
+    struck: bool
+    """Whether any contact strikes a column (else no column shear applies)."""
+
+
+_LAYOUTS: dict[int, _Layout] = {}
+"""Layouts of the models alive, by the model's identity (an entry goes with its model; the
+cases of a sweep that share a model share it: :mod:`.builder`)."""
+
+
+def _layout(model: Any) -> _Layout:
+    """The :class:`_Layout` of a model (remembered while the model lives)."""
+    key = id(model)
+    layout = _LAYOUTS.get(key)
+    if layout is None:
+        labels = model.dof_labels()
+        below = np.arange(model.n_dof, dtype=np.int64) - 1
+        for off in model.system.offsets[: len(model.buildings)]:
+            below[int(off)] = -1
+        layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
+                               for name in FLOOR_MEASURES),
+                         np.concatenate([b.heights for b in model.buildings]), below,
+                         bool(model.is_inelastic),
+                         any(c.struck is not None for c in model.contacts))
+        try:
+            # the entry must go when the model does (before its id can be reused)
+            weakref.finalize(model, _LAYOUTS.pop, key, None)
+        except TypeError:
+            return layout  # a model that cannot be weakly referenced is not remembered
+        _LAYOUTS[key] = layout
+    return layout
 
 
 def result_row(result: Any) -> dict[str, Any]:
     """One row of :data:`MEASURES` and :data:`FLOOR_MEASURES` from a Result.
+
+    The sampled peaks (storey drift and absolute acceleration at the output steps) are
+    read in one pass over each history (:mod:`pounding.reductions`).
 
     Parameters
     ----------
@@ -67,41 +101,39 @@ def result_row(result: Any) -> dict[str, Any]:
     dict
         Column name → value (plain Python numbers; None where a measure does not apply).
     """
-    labels = result.model.dof_labels()
+    from pounding.reductions import abs_max_columns, abs_max_drift
+
+    layout = _layout(result.model)
     e = result.energy
     pcf = result.peak_contact_force
-    from pounding.result import peak_abs
-
-    drift = _sampled_peak_drift(result)
-    accel = peak_abs(result.abs_acceleration)
-    heights = np.concatenate([b.heights for b in result.model.buildings])
+    drift = abs_max_drift(result.displacement, layout.below)
+    accel = abs_max_columns(result.abs_acceleration)
+    inelastic = layout.inelastic
+    shear_ratio = result.column_shear_ratio if layout.struck else None
     row: dict[str, Any] = {
         "n_impacts": int(result.n_impacts),
         "peak_contact_force_N": float(pcf.max()) if pcf.size else 0.0,
         "contact_dissipated_J": float(e[-1, 4] - e[-1, 5]),
         "energy_input_J": float(e[-1, 0]),
         "energy_balance_error": float(result.energy_balance_error),
-        "peak_drift_ratio": float(np.max(drift / heights)),
+        "peak_drift_ratio": float(np.max(drift / layout.heights)),
         "peak_floor_accel_m_s2": float(np.max(accel)),
         "record_pga_g": float(result.motion.pga_g),
         "impact_overflow": bool(result.stats.impact_overflow),
         # not applicable → null (not NaN: a null compares equal, so tables stay comparable)
-        "hysteretic_energy_J": float(e[-1, 6]) if result.model.is_inelastic else None,
-        "max_ductility": (float(np.nanmax(result.ductility)) if result.model.is_inelastic
-                          else None),
-        "max_residual_drift_m": float(np.max(np.abs(result.residual_drift))),
-        "max_column_shear_ratio": (float(np.nanmax(result.column_shear_ratio))
-                                   if np.isfinite(result.column_shear_ratio).any() else None),
+        "hysteretic_energy_J": float(e[-1, 6]) if inelastic else None,
+        "max_ductility": float(np.nanmax(result.ductility)) if inelastic else None,
+        "max_residual_drift_m": (float(np.max(np.abs(result.residual_drift))) if inelastic
+                                 else 0.0),
+        "max_column_shear_ratio": (float(np.nanmax(shear_ratio))
+                                   if shear_ratio is not None and np.isfinite(shear_ratio).any()
+                                   else None),
         "links_dissipated_J": float(e[-1, 7]) if result.model.links else None,
         "peak_link_force_N": (float(result.link_peak_force.max()) if result.model.links
                               else None),
     }
-    floor = {
-        "peak_displacement_m": result.peak_displacement,
-        "peak_drift_m": drift,
-        "peak_abs_accel_m_s2": accel,
-    }
-    for name in FLOOR_MEASURES:
-        for lb, v in zip(labels, floor[name]):
-            row[f"{name}_{lb}"] = float(v)
+    for names, values in zip(layout.floor_columns,
+                             (result.peak_displacement, drift, accel)):
+        for name, v in zip(names, values.tolist()):
+            row[name] = v
     return row

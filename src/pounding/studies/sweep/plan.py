@@ -93,8 +93,10 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     for p in params:
         _check_path(p, base_data, where)
     # record files in the cases are relative to the sweep file: make them absolute
-    rows = [tuple(_resolve_value(p, v, here) for p, v in zip(params, r)) for r in rows]
-    samples = [[_resolve_value(p, v, here) for v in vals] for p, vals in zip(params, samples)]
+    if any(_is_record_file(p) for p in params):
+        rows = [tuple(_resolve_value(p, v, here) for p, v in zip(params, r)) for r in rows]
+        samples = [[_resolve_value(p, v, here) for v in vals]
+                   for p, vals in zip(params, samples)]
     cases = unique_cases(params, rows)
     hist = data.get("histories", False)
     if hist is False or hist is None or hist == "none":
@@ -127,8 +129,13 @@ def load_sweep(path: str | os.PathLike[str]) -> Sweep:
     return sweep
 
 
+def _is_record_file(path: str) -> bool:
+    """Whether a parameter path names a record file."""
+    return path.split(".")[-1] == "file" and path.startswith("record")
+
+
 def _resolve_value(path: str, value: Any, here: Path) -> Any:
     """A record file given in a case, made absolute (relative to the sweep file)."""
-    if path.split(".")[-1] == "file" and path.startswith("record") and isinstance(value, str):
+    if _is_record_file(path) and isinstance(value, str):
         return str((here / Path(value).expanduser()).resolve())
     return value

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from pounding.studies.sweep.cluster import _auto_batch, _batch_sizes, _client
-from pounding.studies.sweep.execute import _run_batch, warm_up
+from pounding.studies.sweep.execute import Batch, _run_batch, warm_up
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
     HISTORIES_DIR,
@@ -204,8 +204,8 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
                 bsize = given or _auto_batch(len(pending), workers)
                 batches, first = [], 0
                 for size in _batch_sizes(len(pending), workers, bsize, taper=not given):
-                    batches.append([(c.index, c.id, c.values)
-                                    for c in pending[first:first + size]])
+                    batches.append(Batch(tuple((c.index, c.id, c.values)
+                                               for c in pending[first:first + size])))
                     first += size
                 if client is not None:
                     client.run(warm_up)
@@ -233,7 +233,7 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
 
 
 def _run_on(client: Any, scheduler: str | None, payload: dict[str, Any],
-            batches: list[list[tuple[int, str, tuple]]],
+            batches: list[Batch],
             finish: Callable[[list[tuple[str, dict[str, Any], Any]]], None]) -> None:
     """Run the batches on a Dask client, ``finish`` each result as it arrives.
 
@@ -249,7 +249,7 @@ def _run_on(client: Any, scheduler: str | None, payload: dict[str, Any],
     try:
         [remote] = client.scatter([payload], broadcast=True, hash=False)
         futures = [client.submit(_run_batch, remote, b, pure=False,
-                                 key=f"sweep-{_part_name([x[1] for x in b])[5:21]}")
+                                 key=f"sweep-{_part_name([x[1] for x in b.cases])[5:21]}")
                    for b in batches]
         for fut, result in as_completed(futures, with_results=True, raise_errors=False):
             if fut.status != "finished":
