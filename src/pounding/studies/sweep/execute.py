@@ -117,9 +117,6 @@ class Batch:
 
     cases: tuple[tuple[int, str, tuple], ...]
 
-    def __len__(self) -> int:
-        return len(self.cases)
-
 
 def _run_batch(payload: dict[str, Any], batch: Batch) -> list[tuple[str, dict[str, Any], Any]]:
     """Run a batch of cases (one Dask task): ``[(case_id, row, dataset), ...]``."""
