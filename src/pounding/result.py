@@ -311,7 +311,7 @@ class Result:
     def n_impacts(self) -> int:
         """Number of impacts (all contacts)."""
         if self.contact_impacts is not None:
-            return int(np.sum(self.contact_impacts))
+            return int(np.asarray(self.contact_impacts).sum())
         return int(self.impact_array.shape[0])
 
     @cached_property

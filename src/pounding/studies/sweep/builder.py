@@ -122,7 +122,7 @@ class CaseBuilder:
             # (RecordConfig.load, remembered by the file's version); a bundled one may not
             self._parts["record"].get(keys["record"], lambda: (
                 cfg.record, built.motion if cfg.record.path is None else None))
-            self._parts["solver"].get(keys["solver"], lambda: built.solver)
+            self._parts["solver"].get(keys["solver"], lambda: dict(built.solver))
             return Built(model, built.motion, built.solver)
         record_cfg, motion = record
         if motion is None:

@@ -168,6 +168,11 @@ def _local_config() -> Any:
                             **QUIET_INTERVALS})
 
 
+_CLIENT_LOGGERS = ("distributed", "distributed.client", "tornado", "tornado.application")
+"""The loggers a sweep silences in this process while it has a client: Dask gives each of
+them a level and a handler of its own, so each is named."""
+
+
 @contextlib.contextmanager
 def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
     """A Dask client: local cluster (default), an existing scheduler, or none (in-process).
@@ -194,10 +199,13 @@ def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
     disabled = logging.root.manager.disable
     # Dask's client-side loggers in this process (a batched comm closing, a reconnect
     # attempt) print tracebacks at INFO/WARNING when a scheduler goes away, before the
-    # sweep can say so in one line: the sweep reports its own failures.
-    dask_logger = logging.getLogger("distributed")
-    dask_level = dask_logger.level
-    dask_logger.setLevel(logging.CRITICAL)
+    # sweep can say so in one line: the sweep reports its own failures. So does the event
+    # loop's (tornado.application): a gather of results cut by the lost scheduler ends in
+    # an exception that no one awaits, which it logs with a traceback.
+    quiet = [logging.getLogger(name) for name in _CLIENT_LOGGERS]
+    levels = [lg.level for lg in quiet]
+    for lg in quiet:
+        lg.setLevel(logging.CRITICAL)
     cluster = client = None
     try:
         with contextlib.nullcontext() if scheduler else _local_config():
@@ -228,4 +236,5 @@ def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
                         cluster.close()
     finally:
         logging.disable(disabled)
-        dask_logger.setLevel(dask_level)
+        for lg, level in zip(quiet, levels):
+            lg.setLevel(level)

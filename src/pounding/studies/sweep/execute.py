@@ -3,6 +3,7 @@ of a worker. This is what runs on the workers; it never writes a file."""
 
 from __future__ import annotations
 
+import gc
 import os
 import time
 from collections.abc import Sequence
@@ -116,9 +117,6 @@ class Batch:
 
     cases: tuple[tuple[int, str, tuple], ...]
 
-    def __len__(self) -> int:
-        return len(self.cases)
-
 
 def _run_batch(payload: dict[str, Any], batch: Batch) -> list[tuple[str, dict[str, Any], Any]]:
     """Run a batch of cases (one Dask task): ``[(case_id, row, dataset), ...]``."""
@@ -129,6 +127,18 @@ def _run_batch(payload: dict[str, Any], batch: Batch) -> list[tuple[str, dict[st
         row, ds = _run(builder, values, history)
         out.append((cid, row, ds))
     return out
+
+
+def _start_local_worker() -> float:
+    """Ready a worker of the sweep's own local cluster: :func:`warm_up`, then every object
+    alive (modules, the compiled kernel: what the worker keeps to its end) frozen out of
+    the cyclic garbage collector. Python's last collections at exit then skip them, and the
+    worker stops in 0.03 s instead of 0.24 (measured 2026-11-25). Such a worker lives for
+    one sweep: what it freezes lives as long, but for a few cycles the warm-up left, which
+    a collection first (0.04 s) would free. Seconds taken."""
+    seconds = warm_up()
+    gc.freeze()
+    return seconds
 
 
 def warm_up() -> float:

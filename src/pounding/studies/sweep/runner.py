@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from pounding.studies.sweep.cluster import _auto_batch, _batch_sizes, _client
-from pounding.studies.sweep.execute import Batch, _run_batch, warm_up
+from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
     HISTORIES_DIR,
@@ -208,7 +208,7 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
                                                for c in pending[first:first + size])))
                     first += size
                 if client is not None:
-                    client.run(warm_up)
+                    client.run(_start_local_worker if scheduler is None else warm_up)
                 t0 = time.perf_counter()
                 if client is None:
                     for b in batches:

@@ -63,8 +63,10 @@ def _consolidate(sweep: Sweep, rows: dict[str, dict[str, Any]]) -> Any:
     types = {"float64": pa.float64(), "int64": pa.int64(), "bool": pa.bool_()}
     for name, typ in MEASURES.items():
         cols[name] = pa.array([r.get(name) for r in recs], types[typ])
-    floor_cols = sorted({k for r in recs for k in r if k.startswith(FLOOR_MEASURES)},
-                        key=_floor_key)
+    names: set[str] = set()
+    for r in recs:
+        names.update(r)
+    floor_cols = sorted((k for k in names if k.startswith(FLOOR_MEASURES)), key=_floor_key)
     for name in floor_cols:
         cols[name] = pa.array([r.get(name) for r in recs], pa.float64())
     cols["wall_time_s"] = pa.array([r.get("wall_time_s") for r in recs], pa.float64())
