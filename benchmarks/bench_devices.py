@@ -91,6 +91,7 @@ sys.path.insert(0, str(HERE))
 
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
+from bench_opensees import header, pct, table  # noqa: E402
 
 import pounding  # noqa: E402
 from pounding import PoundingModel, ShearBuilding, load_config, simulate  # noqa: E402
@@ -110,24 +111,7 @@ MAX_REPEAT = 100
 
 
 # ===================================================================== printing
-def header(title: str) -> None:
-    print()
-    print(title)
-    print("=" * len(title))
-
-
-def table(rows: list[list[str]], head: list[str]) -> None:
-    w = [max(len(str(x)) for x in col) for col in zip(head, *rows)]
-    line = "  ".join(h.ljust(n) for h, n in zip(head, w))
-    print(line)
-    print("-" * len(line))
-    for r in rows:
-        print("  ".join(str(x).rjust(n) if i else str(x).ljust(n)
-                        for i, (x, n) in enumerate(zip(r, w))))
-
-
-def pct(x: float, ref: float) -> float:
-    return 100.0 * (x - ref) / ref if ref != 0 else (0.0 if x == 0 else math.inf)
+# (header, table and pct: bench_opensees.py's, imported above)
 
 
 def spread(values: list[float], scale: float = 1.0, fmt: str = ".3f") -> str:
