@@ -1,0 +1,103 @@
+"""A result's histories as named variables with dimensions, units and descriptions: what
+:meth:`pounding.result.Result.to_dataset` and the NetCDF file hold (one description, two
+writers)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+if TYPE_CHECKING:
+    from pounding.result import Result
+
+__all__ = ["HistoryVariables", "Variable", "history_variables"]
+
+
+class Variable(NamedTuple):
+    """One named array of a result: its dimensions, values and attributes (units, long
+    name), as NetCDF and xarray hold it."""
+
+    dims: tuple[str, ...]
+    values: NDArray[Any]
+    attrs: dict[str, Any]
+
+
+class HistoryVariables(NamedTuple):
+    """A result's data variables, coordinates and global attributes
+    (:meth:`Result.history_variables`)."""
+
+    data: dict[str, Variable]
+    coords: dict[str, Variable]
+    attrs: dict[str, Any]
+
+
+def history_variables(result: "Result") -> HistoryVariables:
+    """Every time history and per-floor result as named variables with dimensions, units
+    and descriptions: what :meth:`Result.to_dataset` and the NetCDF file hold (one description,
+    two writers)."""
+    from pounding.result import ENERGY_NAMES
+
+    model = result.model
+    contacts = model.contacts
+
+    def var(values: Any, dims: tuple[str, ...], units: str, desc: str) -> Variable:
+        return Variable(dims, np.asarray(values), {"units": units, "long_name": desc})
+
+    data = {
+        "ground_acceleration": var(result.ground, ("time",), "m/s^2", "ground acceleration"),
+        "displacement": var(result.displacement, ("time", "floor"), "m",
+                            "floor displacement relative to the ground"),
+        "velocity": var(result.velocity, ("time", "floor"), "m/s",
+                        "floor velocity relative to the ground"),
+        "absolute_acceleration": var(result.abs_acceleration, ("time", "floor"), "m/s^2",
+                                     "absolute floor acceleration"),
+        "drift": var(result.drift, ("time", "floor"), "m",
+                     "storey drift (floor minus floor below)"),
+        "storey_shear": var(result.storey_shear, ("time", "floor"), "N", "storey shear"),
+        "penetration": var(result.penetration, ("time", "contact"), "m",
+                           "penetration u_left - u_right - gap (negative: open)"),
+        "contact_force": var(result.contact_force, ("time", "contact"), "N",
+                             "contact force (compression positive)"),
+        "energy": var(result.energy, ("time", "energy_term"), "J", "cumulative energies"),
+    }
+    if model.is_inelastic:
+        data["ductility"] = var(result.ductility, ("floor",), "1",
+                                "storey ductility demand max|drift| / yield drift "
+                                "(NaN: linear storey)")
+        data["residual_drift"] = var(result.residual_drift, ("floor",), "m",
+                                     "residual storey drift after elastic unloading")
+    if any(c.struck is not None for c in contacts):
+        data["column_shear"] = var(result.column_shear, ("time", "contact"), "N",
+                                   "shear demand on the struck column of a "
+                                   "floor-to-column contact (NaN: floor to floor)")
+    if model.links and result.link_force is not None:
+        data["link_force"] = var(result.link_force, ("time", "link"), "N",
+                                 "force of each link between buildings (resisting the "
+                                 "right floor moving away from the left one)")
+        data["link_displacement"] = var(result.link_displacement, ("time", "link"), "m",
+                                        "relative displacement across each link "
+                                        "(right floor minus left floor)")
+    buildings = [f"B{b + 1}" for b, bl in enumerate(model.buildings) for _ in range(bl.n)]
+    coords = {
+        "time": var(result.time, ("time",), "s", "time"),
+        "floor": Variable(("floor",), np.array(model.dof_labels(), dtype=object), {}),
+        "contact": Variable(("contact",), np.array([c.label for c in contacts],
+                                                   dtype=object), {}),
+        "energy_term": Variable(("energy_term",), np.array(ENERGY_NAMES, dtype=object), {}),
+        "building": Variable(("floor",), np.array(buildings, dtype=object),
+                             {"long_name": "building of each floor (B1 leftmost)"}),
+        "floor_elevation": var(np.concatenate([b.floor_levels for b in model.buildings]),
+                               ("floor",), "m", "floor elevation above the ground"),
+        "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
+                                 "elevation of the contact"),
+    }
+    if model.links:
+        coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
+                                                      dtype=object), {})
+    attrs = {"model": model.name, "record": result.motion.name,
+             "solver": result.stats.solver, "rtol": result.stats.rtol,
+             "energy_balance_error": result.energy_balance_error,
+             "units": "SI (m, kg, s, N, J)"}
+    return HistoryVariables(data, coords, attrs)
