@@ -72,11 +72,7 @@ machine's load average is printed at the start and the end, and every timing wit
 from __future__ import annotations
 
 import argparse
-import datetime as _dt
 import math
-import os
-import platform
-import subprocess
 import sys
 import time
 from dataclasses import dataclass, field
@@ -91,9 +87,9 @@ sys.path.insert(0, str(HERE))
 
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
+from _environment import load, parse_list, print_environment  # noqa: E402
 from bench_opensees import header, pct, table  # noqa: E402
 
-import pounding  # noqa: E402
 from pounding import PoundingModel, ShearBuilding, load_config, simulate  # noqa: E402
 from pounding.devices import Link  # noqa: E402
 from pounding.integrate.reference import simulate_reference  # noqa: E402
@@ -117,13 +113,6 @@ MAX_REPEAT = 100
 def spread(values: list[float], scale: float = 1.0, fmt: str = ".3f") -> str:
     """``best (worst) xN`` of timing repeats."""
     return f"{min(values) * scale:{fmt}} ({max(values) * scale:{fmt}}) x{len(values)}"
-
-
-def load() -> str:
-    try:
-        return "load average " + " ".join(f"{x:.2f}" for x in os.getloadavg())
-    except OSError:
-        return "load average unknown"
 
 
 # ===================================================================== the models
@@ -649,32 +638,11 @@ def main(argv: list[str] | None = None) -> int:
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
     args = ap.parse_args(argv)
-    wanted = [s.strip() for s in args.sections.split(",") if s.strip()]
-    bad = [s for s in wanted if s not in SECTIONS]
-    if bad:
-        ap.error(f"unknown section(s) {bad}; choose from {list(SECTIONS)}")
-    kinds = [k.strip() for k in args.kinds.split(",") if k.strip()]
-    bad = [k for k in kinds if k not in KINDS]
-    if bad:
-        ap.error(f"unknown link kind(s) {bad}; choose from {list(KINDS)}")
+    wanted = parse_list(ap, args.sections, SECTIONS)
+    kinds = parse_list(ap, args.kinds, KINDS, "link kind")
 
     kept = False if args.fresh_memory else keep_freed_memory()
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        ops_version = version("openseespy")
-    except PackageNotFoundError:
-        ops_version = "not installed"
-    try:
-        commit = subprocess.run(["git", "-C", str(ROOT), "log", "-1", "--format=%h %cs"],
-                                capture_output=True, text=True).stdout.strip()
-    except OSError:
-        commit = "?"
-    print(f"{_dt.date.today()}, commit {commit or '?'}; pounding from {pounding.__file__}")
-    print(f"python {platform.python_version()}, openseespy {ops_version}, "
-          f"numpy {np.__version__}, {os.cpu_count()} CPUs "
-          f"({platform.processor() or platform.machine()}); {load()}")
-    print("malloc: freed memory kept for reuse (mallopt)" if kept else "malloc: as configured")
+    print_environment(kept)
 
     bases = {key: load_base(key) for key in MODELS}
     motion = bases["sdof"].motion

@@ -62,10 +62,8 @@ and read the spreads (the load average is printed at the start and at the end).
 from __future__ import annotations
 
 import argparse
-import datetime as _dt
 import math
 import os
-import platform
 import re
 import shutil
 import subprocess
@@ -84,6 +82,7 @@ sys.path.insert(0, str(HERE))
 
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
+from _environment import load, parse_list, print_environment  # noqa: E402
 from bench_opensees import header, pct, table  # noqa: E402
 
 import pounding  # noqa: E402
@@ -108,13 +107,6 @@ MAX_REPEAT = 50
 def spread(values: list[float], fmt: str = ".3f") -> str:
     """``best (worst)`` of timing repeats."""
     return f"{min(values):{fmt}} ({max(values):{fmt}})"
-
-
-def load() -> str:
-    try:
-        return "load average " + " ".join(f"{x:.2f}" for x in os.getloadavg())
-    except OSError:
-        return "load average unknown"
 
 
 # ===================================================================== the model
@@ -526,31 +518,12 @@ def main(argv: list[str] | None = None) -> int:
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
     args = ap.parse_args(argv)
-    wanted = [s.strip() for s in args.sections.split(",") if s.strip()]
-    bad = [s for s in wanted if s not in SECTIONS]
-    if bad:
-        ap.error(f"unknown section(s) {bad}; choose from {list(SECTIONS)}")
+    wanted = parse_list(ap, args.sections, SECTIONS)
     if args.no_reference and "reference" in wanted:
         wanted.remove("reference")
 
     kept = False if args.fresh_memory else keep_freed_memory()
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        ops_version = version("openseespy")
-    except PackageNotFoundError:
-        ops_version = "not installed"
-    try:
-        commit = subprocess.run(["git", "-C", str(ROOT), "log", "-1", "--format=%h %cs"],
-                                capture_output=True, text=True).stdout.strip()
-    except OSError:
-        commit = "?"
-    print(f"{_dt.date.today()}, commit {commit or '?'}; pounding from {pounding.__file__}")
-    print(f"python {platform.python_version()}, openseespy {ops_version}, "
-          f"numpy {np.__version__}, {os.cpu_count()} CPUs "
-          f"({platform.processor() or platform.machine()}); {load()}")
-    print("malloc: freed memory kept for reuse (mallopt)" if kept else
-          "malloc: as configured")
+    print_environment(kept)
 
     plan = plan_study(args.study, out=tempfile.gettempdir())
     model, motion, solver = plan.build(0, plan.levels[0])

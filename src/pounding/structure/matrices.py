@@ -55,7 +55,7 @@ from numpy.typing import ArrayLike, NDArray
 from pounding.hysteresis.base import StoreyLaw
 from pounding.structure.damping import DampingModel, RayleighDamping
 from pounding.structure.modal import ModalResult, modal_result
-from pounding.structure.shear_building import ShearBuilding
+from pounding.structure.shear_building import ShearBuilding, _readonly
 
 __all__ = [
     "DIAGONAL_RTOL",
@@ -125,12 +125,6 @@ def _labels(value: Any, n: int, where: str) -> tuple[str, ...]:
                              "degree of freedom needs its own label")
         seen[lab] = k
     return labels
-
-
-def _readonly(a: NDArray[np.float64]) -> NDArray[np.float64]:
-    a = np.ascontiguousarray(a, dtype=np.float64)
-    a.flags.writeable = False
-    return a
 
 
 # --------------------------------------------------------------------------- the building
