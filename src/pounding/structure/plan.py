@@ -1,0 +1,439 @@
+"""Buildings in plan: rigid floors that translate and twist (torsional pounding).
+
+A building whose floors are rigid in their own plane (rigid diaphragms) has three degrees of
+freedom (DOFs) a floor: the translations ``u_x``, ``u_y`` of the floor's centre of mass and
+its rotation ``θ`` about the vertical axis (counter-clockwise positive), relative to the
+ground (Chopra, *Dynamics of Structures*, 4th ed., §9.5 "Unsymmetric-plan buildings" for
+one storey and §9.6 for several). With the DOFs at the centres of mass the mass matrix is
+diagonal, ``diag(m_j, m_j, I_Oj)`` floor by floor, ``I_Oj`` the floor's polar moment of
+inertia about its centre of mass (``m (a² + b²)/12`` for a uniform ``a × b`` rectangle).
+
+The storeys resist through lateral load-resisting elements — frames or walls — each at a
+plan position ``(x_e, y_e)`` acting along a direction ``(c, s) = (cos β, sin β)`` with one
+lateral stiffness a storey. A point ``p`` of floor j moves by
+
+    u(p) = (u_xj − (p_y − y_cj) θ_j,  u_yj + (p_x − x_cj) θ_j),
+
+so the element's deformation in storey j is ``a_j · q_j − a_{j−1} · q_{j−1}`` with
+``q_j = (u_xj, u_yj, θ_j)`` and ``a_j = (c, s, −c (y_e − y_cj) + s (x_e − x_cj))``; its
+stiffness contributes ``k a aᵀ`` to the stiffness matrix (Chopra §9.5.1, the element
+stiffness transformed to the floor's DOFs; Kan & Chopra 1977, J. Struct. Div. 103(ST4)).
+The eccentricity of a storey — the distance between its centre of mass and its centre of
+stiffness — follows from where the elements are, and couples translation and twist.
+
+Two horizontal components of the ground act together through the influence matrix
+``R`` (3n × 2): a unit ground displacement along x moves every ``u_x`` by 1, along y every
+``u_y`` by 1, and no rotation (Chopra §9.5.2):
+
+    M ü + C u̇ + K u = −M R [a_gx(t), a_gy(t)]ᵀ + (contact forces).
+
+Where a floor meets its neighbour, a point of its façade strikes: the penetration at a point
+is a linear combination of the floor's DOFs (:meth:`PlanBuilding.point_weights`), so the same
+contact laws apply and a floor may strike at a corner and twist. A façade is a straight edge
+of a rigid floor, so along the stretch two façades face each other the gap between them is
+linear in the position, and the first touch is at an end of that stretch:
+:func:`facing_points` puts the contact points there.
+
+DOF numbering: floor j (1-based) has DOFs ``3(j − 1) + {0, 1, 2}`` = ``(u_x, u_y, θ)``.
+Units: m, kg, kg·m², N/m, rad.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from pounding.structure.damping import DampingModel, RayleighDamping
+from pounding.structure.modal import ModalResult, modal_result
+from pounding.structure.shear_building import _floor_vector, _readonly
+
+__all__ = ["LateralElement", "PlanBuilding", "direction_cosines", "facing_points",
+           "plan_stiffness_matrix"]
+
+#: DOFs of a floor in plan, in order.
+FLOOR_DOFS: tuple[str, str, str] = ("x", "y", "θ")
+
+
+def _default_damping() -> RayleighDamping:
+    """5 % Rayleigh damping anchored at modes 1 and 3: in a building in plan the first three
+    modes are usually the first of each family (x, y, torsion), and a symmetric building
+    has modes 1 and 2 at the same period, which cannot anchor Rayleigh damping."""
+    return RayleighDamping(0.05, mode_i=1, mode_j=3)
+
+
+def direction_cosines(direction: str | float) -> tuple[float, float]:
+    """``(cos β, sin β)`` of ``"x"``, ``"y"`` or an angle β [degrees] from the x axis,
+    exact (0 or ±1) at multiples of 90° so that elements along the axes couple nothing."""
+    if direction == "x":
+        return 1.0, 0.0
+    if direction == "y":
+        return 0.0, 1.0
+    if isinstance(direction, (int, float, np.floating, np.integer)) \
+            and not isinstance(direction, bool) and math.isfinite(direction):
+        quarter, rest = divmod(float(direction), 90.0)
+        if rest == 0.0:
+            return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(quarter) % 4]
+        beta = math.radians(float(direction))
+        return math.cos(beta), math.sin(beta)
+    raise ValueError(f"direction must be 'x', 'y' or an angle in degrees (got {direction!r})")
+
+
+@dataclass(frozen=True)
+class LateralElement:
+    """A lateral load-resisting element of a building in plan: a frame or a wall line.
+
+    Parameters
+    ----------
+    x, y : float
+        Plan position [m] of the element, in the building's plan coordinates (the same as
+        :attr:`PlanBuilding.width` and :attr:`PlanBuilding.depth`).
+    direction : {"x", "y"} or float
+        The direction it resists: along x, along y, or an angle [degrees] from the x axis,
+        counter-clockwise.
+    stiffnesses : array_like, shape (n,) or float
+        Its lateral stiffness in each storey [N/m], storey 1 first (a single value: the same
+        in every storey).
+    name : str
+        A label (for example ``"frame A"``).
+    """
+
+    x: float
+    y: float
+    direction: str | float
+    stiffnesses: Any
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        for label in ("x", "y"):
+            v = getattr(self, label)
+            if not isinstance(v, (int, float, np.floating, np.integer)) or not math.isfinite(v):
+                raise ValueError(f"{label} must be a finite number [m] (got {v!r})")
+            object.__setattr__(self, label, float(v))
+        self.angle  # validates direction
+
+    @property
+    def angle(self) -> float:
+        """The direction as an angle from the x axis [rad]."""
+        c, s = direction_cosines(self.direction)
+        return math.atan2(s, c)
+
+    @property
+    def cosines(self) -> tuple[float, float]:
+        """``(cos β, sin β)`` of the direction, exact for x and y (and multiples of 90°)."""
+        return direction_cosines(self.direction)
+
+    def storey_stiffnesses(self, n: int) -> NDArray[np.float64]:
+        """The stiffness in each of ``n`` storeys [N/m] (≥ 0; a zero means no element there)."""
+        k = np.broadcast_to(np.asarray(self.stiffnesses, dtype=float), (n,)) \
+            if np.ndim(self.stiffnesses) == 0 else np.asarray(self.stiffnesses, dtype=float)
+        if k.shape != (n,):
+            raise ValueError(f"stiffnesses of element {self.name or (self.x, self.y)!r} must "
+                             f"have one value per storey ({n}) (got {k.size})")
+        bad = np.flatnonzero(~np.isfinite(k) | (k < 0))
+        if bad.size:
+            raise ValueError(f"stiffnesses[{bad[0]}] of element {self.name or (self.x, self.y)!r}"
+                             f" must be finite and >= 0 [N/m] (got {k[bad[0]]!r})")
+        return np.array(k, dtype=float)
+
+
+@dataclass(frozen=True, eq=False)
+class PlanBuilding:
+    """A multi-storey building with rigid floors in plan: three DOFs a floor (u_x, u_y, θ).
+
+    The floor plan is the rectangle ``[0, width] × [0, depth]`` in the building's plan
+    coordinates [m]; the building stands with that rectangle's ``y = 0`` edge at site
+    ``y = site_y`` (neighbours in a row along x may be offset along y, so that they face each
+    other over part of their façades only).
+
+    Parameters
+    ----------
+    masses : array_like, shape (n,)
+        Floor masses [kg], floor 1 (the first suspended floor) first.
+    heights : array_like, shape (n,)
+        Storey heights [m].
+    width, depth : float
+        Plan dimensions along x and y [m].
+    elements : sequence of LateralElement
+        The lateral load-resisting elements; together they must restrain every floor in x,
+        y and rotation (at least two non-parallel directions and a lever arm).
+    mass_centres : array_like, shape (n, 2), optional
+        Centre of mass ``(x_c, y_c)`` of each floor [m]; default the centre of the plan.
+    inertias : array_like, shape (n,), optional
+        Polar moment of inertia of each floor about its centre of mass [kg·m²]; default
+        that of a uniform rectangle, ``m (width² + depth²) / 12``.
+    damping : DampingModel
+        Default 5 % Rayleigh damping at modes 1 and 3 (see :func:`_default_damping`).
+    name : str
+        A label.
+    site_y : float
+        Site y of the plan's ``y = 0`` edge [m].
+
+    Examples
+    --------
+    A one-storey building 20 m × 10 m, two frames along x at the long edges, two along y at
+    the short edges, the y frame at x = 20 m twice as stiff (stiffness eccentricity):
+
+    >>> b = PlanBuilding(masses=[4e5], heights=[3.5], width=20.0, depth=10.0, elements=[
+    ...     LateralElement(0.0, 0.0, "x", 5e7), LateralElement(0.0, 10.0, "x", 5e7),
+    ...     LateralElement(0.0, 5.0, "y", 5e7), LateralElement(20.0, 5.0, "y", 1e8)])
+    >>> b.n, b.n_floors, b.stiffness_eccentricity()[0].round(3).tolist()
+    (3, 1, [3.333, 0.0])
+    """
+
+    masses: NDArray[np.float64]
+    heights: NDArray[np.float64]
+    width: float
+    depth: float
+    elements: Sequence[LateralElement]
+    mass_centres: Any = None
+    inertias: Any = None
+    damping: DampingModel = field(default_factory=_default_damping)
+    name: str = ""
+    site_y: float = 0.0
+
+    def __post_init__(self) -> None:
+        m = _floor_vector("masses", self.masses)
+        h = _floor_vector("heights", self.heights)
+        n = m.size
+        if h.size != n:
+            raise ValueError(f"heights must have one value per floor, as many as masses ({n}) "
+                             f"(got {h.size})")
+        for label in ("width", "depth"):
+            v = getattr(self, label)
+            if not isinstance(v, (int, float, np.floating, np.integer)) or not v > 0 \
+                    or not math.isfinite(v):
+                raise ValueError(f"{label} must be a finite number > 0 [m] (got {v!r})")
+            object.__setattr__(self, label, float(v))
+        if not isinstance(self.site_y, (int, float, np.floating, np.integer)) \
+                or not math.isfinite(self.site_y):
+            raise ValueError(f"site_y must be a finite number [m] (got {self.site_y!r})")
+        object.__setattr__(self, "site_y", float(self.site_y))
+        if self.mass_centres is None:
+            centres = np.tile([0.5 * self.width, 0.5 * self.depth], (n, 1))
+        else:
+            centres = np.asarray(self.mass_centres, dtype=float)
+            if centres.shape == (2,):
+                centres = np.tile(centres, (n, 1))
+            if centres.shape != (n, 2) or not np.all(np.isfinite(centres)):
+                raise ValueError(f"mass_centres must be finite (x, y) pairs [m], one a floor "
+                                 f"({n}) (got shape {centres.shape})")
+        if self.inertias is None:
+            inertia = m * (self.width ** 2 + self.depth ** 2) / 12.0
+        else:
+            inertia = _floor_vector("inertias", self.inertias)
+            if inertia.size != n:
+                raise ValueError(f"inertias must have one value per floor ({n}) "
+                                 f"(got {inertia.size})")
+        elements = tuple(self.elements)
+        if not elements:
+            raise ValueError("elements: give the lateral load-resisting elements (none given)")
+        for i, e in enumerate(elements):
+            if not isinstance(e, LateralElement):
+                raise ValueError(f"elements[{i}] must be a LateralElement (got {e!r})")
+            e.storey_stiffnesses(n)
+        if not isinstance(self.damping, DampingModel):
+            raise ValueError(f"damping must be a DampingModel such as RayleighDamping or "
+                             f"ModalDamping (got {self.damping!r})")
+        if not isinstance(self.name, str):
+            raise ValueError(f"name must be a string (got {self.name!r})")
+        object.__setattr__(self, "masses", _readonly(m))
+        object.__setattr__(self, "heights", _readonly(h))
+        object.__setattr__(self, "mass_centres", _readonly(centres))
+        object.__setattr__(self, "inertias", _readonly(inertia))
+        object.__setattr__(self, "elements", elements)
+        M = _readonly(np.diag(np.column_stack([m, m, inertia]).ravel()))
+        K = _readonly(plan_stiffness_matrix(elements, centres))
+        self._check_restrained(K)
+        self.damping.check(3 * n)
+        C = _readonly(self.damping.matrix(M, K))
+        object.__setattr__(self, "_M", M)
+        object.__setattr__(self, "_K", K)
+        object.__setattr__(self, "_C", C)
+
+    def _check_restrained(self, K: NDArray[np.float64]) -> None:
+        """Raise unless K is positive definite: the elements restrain every floor."""
+        try:
+            np.linalg.cholesky(K)
+        except np.linalg.LinAlgError:
+            w, v = np.linalg.eigh(K)
+            mode = v[:, 0]
+            dof = int(np.argmax(np.abs(mode)))
+            raise ValueError(
+                f"elements: they do not restrain floor {dof // 3 + 1} in "
+                f"{FLOOR_DOFS[dof % 3]} (the stiffness matrix is singular: smallest eigenvalue "
+                f"{w[0]:.3g}); give elements in two directions and at least two lines in one "
+                f"of them, so that the floor cannot slide or twist freely") from None
+
+    # ----------------------------------------------------------------- geometry
+    @property
+    def n_floors(self) -> int:
+        """Number of floors (storeys)."""
+        return int(self.masses.size)
+
+    @property
+    def n(self) -> int:
+        """Number of DOFs, three a floor."""
+        return 3 * self.n_floors
+
+    @property
+    def floor_levels(self) -> NDArray[np.float64]:
+        """Elevation of each floor above ground [m]."""
+        return np.cumsum(self.heights)
+
+    @property
+    def total_height(self) -> float:
+        """Height of the roof [m]."""
+        return float(np.sum(self.heights))
+
+    @property
+    def total_mass(self) -> float:
+        """Sum of the floor masses [kg]."""
+        return float(np.sum(self.masses))
+
+    def dof(self, floor: int, component: str) -> int:
+        """The DOF of ``floor`` (0-based) and ``component`` ``"x"``, ``"y"`` or ``"θ"``
+        (also ``"theta"``)."""
+        c = {"x": 0, "y": 1, "θ": 2, "theta": 2}.get(component)
+        if c is None:
+            raise ValueError(f"component must be 'x', 'y' or 'θ' (got {component!r})")
+        if not 0 <= floor < self.n_floors:
+            raise ValueError(f"floor must be in [0, {self.n_floors - 1}] (got {floor!r})")
+        return 3 * floor + c
+
+    def dof_labels(self) -> list[str]:
+        """``'F1x', 'F1y', 'F1θ', 'F2x', …`` (1-based floors)."""
+        return [f"F{j + 1}{c}" for j in range(self.n_floors) for c in FLOOR_DOFS]
+
+    def point_weights(self, floor: int, x: float, y: float, direction: str | float = "x"
+                      ) -> list[tuple[int, float]]:
+        """``(DOF, weight)`` pairs that make the displacement [m] of the point ``(x, y)``
+        (plan coordinates) of ``floor`` (0-based) along ``direction`` (``"x"``, ``"y"`` or
+        an angle in degrees): ``c (u_x − (y − y_c) θ) + s (u_y + (x − x_c) θ)``."""
+        c, s = direction_cosines(direction)
+        xc, yc = self.mass_centres[floor]
+        base = 3 * floor
+        out = [(base, c), (base + 1, s), (base + 2, -c * (y - yc) + s * (x - xc))]
+        return [(d, w) for d, w in out if w != 0.0]
+
+    def point_displacement(self, u: ArrayLike, floor: int, x: float, y: float,
+                           direction: str | float = "x") -> NDArray[np.float64]:
+        """Displacement [m] of a point of a floor along a direction, from DOF histories
+        ``u[..., N]`` (see :meth:`point_weights`)."""
+        arr = np.asarray(u, dtype=float)
+        return sum(w * arr[..., d] for d, w in self.point_weights(floor, x, y, direction))
+
+    def stiffness_eccentricity(self) -> NDArray[np.float64]:
+        """Centre of stiffness minus centre of mass of each storey ``(e_x, e_y)`` [m].
+
+        The centre of stiffness of storey j (Chopra §9.5.1, for elements along x and y):
+        ``x_s = Σ k_yi x_i / Σ k_yi`` over the elements along y, ``y_s = Σ k_xi y_i / Σ k_xi``
+        over those along x; inclined elements count by their components ``k cos²β``,
+        ``k sin²β``. A storey with no element in a direction has NaN there.
+        """
+        n = self.n_floors
+        sx = np.zeros(n)
+        sxy = np.zeros(n)
+        sy = np.zeros(n)
+        syx = np.zeros(n)
+        for e in self.elements:
+            k = e.storey_stiffnesses(n)
+            c, s = e.cosines
+            c2, s2 = c * c, s * s
+            sx += k * c2
+            sxy += k * c2 * e.y
+            sy += k * s2
+            syx += k * s2 * e.x
+        with np.errstate(invalid="ignore", divide="ignore"):
+            xs = np.where(sy > 0, syx / np.where(sy > 0, sy, 1.0), np.nan)
+            ys = np.where(sx > 0, sxy / np.where(sx > 0, sx, 1.0), np.nan)
+        return np.column_stack([xs - self.mass_centres[:, 0], ys - self.mass_centres[:, 1]])
+
+    # ----------------------------------------------------------------- matrices
+    def mass_matrix(self) -> NDArray[np.float64]:
+        """``diag(m_1, m_1, I_1, m_2, …)`` [kg, kg·m²], (3n, 3n)."""
+        return np.array(self._M)  # type: ignore[attr-defined]
+
+    def stiffness_matrix(self) -> NDArray[np.float64]:
+        """Stiffness matrix [N/m, N, N·m] from the elements (:func:`plan_stiffness_matrix`)."""
+        return np.array(self._K)  # type: ignore[attr-defined]
+
+    def damping_matrix(self) -> NDArray[np.float64]:
+        """Damping matrix from the building's damping model."""
+        return np.array(self._C)  # type: ignore[attr-defined]
+
+    def influence_matrix(self) -> NDArray[np.float64]:
+        """``R`` (3n × 2): column 0 the ground's x component, column 1 its y component."""
+        r = np.zeros((self.n, 2))
+        r[0::3, 0] = 1.0
+        r[1::3, 1] = 1.0
+        return r
+
+    def modes(self) -> ModalResult:
+        """Natural modes of the building in plan (lateral–torsional)."""
+        return modal_result(self._M, self._K, self._C)  # type: ignore[attr-defined]
+
+    @property
+    def fundamental_period(self) -> float:
+        """Period of the first mode [s]."""
+        return float(self.modes().periods[0])
+
+    def __eq__(self, other: Any) -> bool:
+        if not isinstance(other, PlanBuilding):
+            return NotImplemented
+        return (np.array_equal(self.masses, other.masses)
+                and np.array_equal(self.heights, other.heights)
+                and np.array_equal(self.mass_centres, other.mass_centres)
+                and np.array_equal(self.inertias, other.inertias)
+                and (self.width, self.depth, self.site_y, self.name, self.damping,
+                     self.elements) == (other.width, other.depth, other.site_y, other.name,
+                                        other.damping, other.elements))
+
+    __hash__ = object.__hash__
+
+
+def plan_stiffness_matrix(elements: Sequence[LateralElement],
+                          mass_centres: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Stiffness matrix (3n × 3n) of floors in plan joined by lateral elements.
+
+    Element e in storey j deforms by ``a_j · q_j − a_{j−1} · q_{j−1}`` (the ground below
+    storey 1), with ``a_j = (c, s, −c (y_e − y_cj) + s (x_e − x_cj))`` its direction cosines
+    and lever arm about floor j's centre of mass; each storey adds ``k_ej b bᵀ`` with
+    ``b`` that row over the two floors (Chopra §9.5.1; Kan & Chopra 1977).
+    """
+    n = mass_centres.shape[0]
+    K = np.zeros((3 * n, 3 * n))
+    for e in elements:
+        k = e.storey_stiffnesses(n)
+        c, s = e.cosines
+        for j in range(n):
+            if k[j] == 0.0:
+                continue
+            b = np.zeros(3 * n)
+            for floor, sign in ((j, 1.0), (j - 1, -1.0)):
+                if floor < 0:
+                    continue
+                xc, yc = mass_centres[floor]
+                b[3 * floor: 3 * floor + 3] = sign * np.array(
+                    [c, s, -c * (e.y - yc) + s * (e.x - xc)])
+            K += k[j] * np.outer(b, b)
+    return 0.5 * (K + K.T)
+
+
+def facing_points(left: PlanBuilding, right: PlanBuilding) -> list[float]:
+    """Site y [m] of the contact points between the right façade (``x = width``) of
+    ``left`` and the left façade (``x = 0``) of ``right``: the two ends of the stretch over
+    which they face each other (one point if it is a single point; none if they do not face
+    each other). Between two straight edges of rigid floors the gap is linear along that
+    stretch, so the first touch is at one of its ends."""
+    lo = max(left.site_y, right.site_y)
+    hi = min(left.site_y + left.depth, right.site_y + right.depth)
+    if hi < lo:
+        return []
+    if hi == lo:
+        return [lo]
+    return [lo, hi]
