@@ -148,3 +148,21 @@ def test_bad_element_direction() -> None:
 def test_docstring_examples_run() -> None:
     failures, tried = doctest.testmod(plan_module, verbose=False)
     assert tried > 0 and failures == 0
+
+
+def test_a_given_stiffness_matrix_is_the_same_building() -> None:
+    b = one_storey()
+    same = PlanBuilding(masses=[4e5], heights=[3.5], width=20.0, depth=10.0,
+                        stiffness=b.stiffness_matrix())
+    assert np.array_equal(same.stiffness_matrix(), b.stiffness_matrix())
+    assert np.array_equal(same.modes().periods, b.modes().periods)
+    assert np.array_equal(same.damping_matrix(), b.damping_matrix())
+    K = b.stiffness_matrix()
+    K[0, 1] = 1e6
+    with pytest.raises(ValueError, match=r"stiffness must be symmetric: stiffness\[0, 1\]"):
+        PlanBuilding(masses=[4e5], heights=[3.5], width=20.0, depth=10.0, stiffness=K)
+    with pytest.raises(ValueError, match="not both"):
+        PlanBuilding(masses=[4e5], heights=[3.5], width=20.0, depth=10.0,
+                     stiffness=b.stiffness_matrix(), elements=b.elements)
+    with pytest.raises(ValueError, match="must be 3 × 3"):
+        PlanBuilding(masses=[4e5], heights=[3.5], width=20.0, depth=10.0, stiffness=np.eye(2))

@@ -160,7 +160,8 @@ class PlanBuilding:
         Plan dimensions along x and y [m].
     elements : sequence of LateralElement
         The lateral load-resisting elements; together they must restrain every floor in x,
-        y and rotation (at least two non-parallel directions and a lever arm).
+        y and rotation (at least two non-parallel directions and a lever arm). Give either
+        these or ``stiffness``.
     mass_centres : array_like, shape (n, 2), optional
         Centre of mass ``(x_c, y_c)`` of each floor [m]; default the centre of the plan.
     inertias : array_like, shape (n,), optional
@@ -172,6 +173,11 @@ class PlanBuilding:
         A label.
     site_y : float
         Site y of the plan's ``y = 0`` edge [m].
+    stiffness : array_like, shape (3n, 3n), optional
+        The stiffness matrix itself, in this class's DOFs (``u_x, u_y, θ`` at each floor's
+        centre of mass, floor by floor) [N/m, N, N·m] — for a building whose stiffness was
+        condensed elsewhere (see :mod:`pounding.structure.matrices`); instead of
+        ``elements``. Checked symmetric and positive definite.
 
     Examples
     --------
@@ -189,12 +195,13 @@ class PlanBuilding:
     heights: NDArray[np.float64]
     width: float
     depth: float
-    elements: Sequence[LateralElement]
+    elements: Sequence[LateralElement] = ()
     mass_centres: Any = None
     inertias: Any = None
     damping: DampingModel = field(default_factory=_default_damping)
     name: str = ""
     site_y: float = 0.0
+    stiffness: Any = None
 
     def __post_init__(self) -> None:
         m = _floor_vector("masses", self.masses)
@@ -230,8 +237,11 @@ class PlanBuilding:
                 raise ValueError(f"inertias must have one value per floor ({n}) "
                                  f"(got {inertia.size})")
         elements = tuple(self.elements)
-        if not elements:
-            raise ValueError("elements: give the lateral load-resisting elements (none given)")
+        if not elements and self.stiffness is None:
+            raise ValueError("elements: give the lateral load-resisting elements (none given), "
+                             "or the stiffness matrix")
+        if elements and self.stiffness is not None:
+            raise ValueError("stiffness: give the elements or the stiffness matrix, not both")
         for i, e in enumerate(elements):
             if not isinstance(e, LateralElement):
                 raise ValueError(f"elements[{i}] must be a LateralElement (got {e!r})")
@@ -247,7 +257,11 @@ class PlanBuilding:
         object.__setattr__(self, "inertias", _readonly(inertia))
         object.__setattr__(self, "elements", elements)
         M = _readonly(np.diag(np.column_stack([m, m, inertia]).ravel()))
-        K = _readonly(plan_stiffness_matrix(elements, centres))
+        if self.stiffness is None:
+            K = _readonly(plan_stiffness_matrix(elements, centres))
+        else:
+            K = _readonly(_given_stiffness(self.stiffness, 3 * n))
+        object.__setattr__(self, "stiffness", None if self.stiffness is None else K)
         self._check_restrained(K)
         self.damping.check(3 * n)
         C = _readonly(self.damping.matrix(M, K))
@@ -333,7 +347,8 @@ class PlanBuilding:
         The centre of stiffness of storey j (Chopra §9.5.1, for elements along x and y):
         ``x_s = Σ k_yi x_i / Σ k_yi`` over the elements along y, ``y_s = Σ k_xi y_i / Σ k_xi``
         over those along x; inclined elements count by their components ``k cos²β``,
-        ``k sin²β``. A storey with no element in a direction has NaN there.
+        ``k sin²β``. A storey with no element in a direction has NaN there (so does every
+        storey of a building given by its stiffness matrix).
         """
         n = self.n_floors
         sx = np.zeros(n)
@@ -391,9 +406,32 @@ class PlanBuilding:
                 and np.array_equal(self.inertias, other.inertias)
                 and (self.width, self.depth, self.site_y, self.name, self.damping,
                      self.elements) == (other.width, other.depth, other.site_y, other.name,
-                                        other.damping, other.elements))
+                                        other.damping, other.elements)
+                and np.array_equal(self._K, other._K))  # type: ignore[attr-defined]
 
     __hash__ = object.__hash__
+
+
+def _given_stiffness(value: ArrayLike, size: int) -> NDArray[np.float64]:
+    """A given stiffness matrix, checked: (size × size), finite, symmetric to 1e-10 of its
+    largest entry (then symmetrised)."""
+    try:
+        K = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"stiffness must be a {size} × {size} matrix of numbers "
+                         f"(got {type(value).__name__})") from None
+    if K.shape != (size, size):
+        raise ValueError(f"stiffness must be {size} × {size}, three DOFs a floor "
+                         f"(got shape {K.shape})")
+    if not np.all(np.isfinite(K)):
+        i, j = np.argwhere(~np.isfinite(K))[0]
+        raise ValueError(f"stiffness[{i}, {j}] must be finite (got {K[i, j]!r})")
+    asym = np.abs(K - K.T)
+    if asym.max() > 1e-10 * np.abs(K).max():
+        i, j = np.unravel_index(np.argmax(asym), K.shape)
+        raise ValueError(f"stiffness must be symmetric: stiffness[{i}, {j}] = {K[i, j]:.6g} "
+                         f"but stiffness[{j}, {i}] = {K[j, i]:.6g}")
+    return 0.5 * (K + K.T)
 
 
 def plan_stiffness_matrix(elements: Sequence[LateralElement],
