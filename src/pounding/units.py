@@ -11,6 +11,7 @@ readable name from the name of a results column or a model-file key (``peak_cont
 from __future__ import annotations
 
 import math
+import numbers
 import re
 
 G: float = 9.80665
@@ -203,3 +204,20 @@ def format_value(value: float, unit: str = "", digits: int = 3) -> str:
         mantissa, exponent = f"{v:.{max(digits - 1, 0)}e}".split("e")
         text = f"{mantissa}e{int(exponent)}"
     return f"{text} {unit}" if unit and unit != "-" else text
+
+
+def direction_cosines(direction: str | float) -> tuple[float, float]:
+    """``(cos β, sin β)`` of ``"x"``, ``"y"`` or an angle β [degrees] from the x axis,
+    exact (0 or ±1) at multiples of 90° so that elements along the axes couple nothing."""
+    if direction == "x":
+        return 1.0, 0.0
+    if direction == "y":
+        return 0.0, 1.0
+    if isinstance(direction, numbers.Real) and not isinstance(direction, bool) \
+            and math.isfinite(direction):
+        quarter, rest = divmod(float(direction), 90.0)
+        if rest == 0.0:
+            return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(quarter) % 4]
+        beta = math.radians(float(direction))
+        return math.cos(beta), math.sin(beta)
+    raise ValueError(f"direction must be 'x', 'y' or an angle in degrees (got {direction!r})")

@@ -51,6 +51,7 @@ from numpy.typing import ArrayLike, NDArray
 from pounding.structure.damping import DampingModel, RayleighDamping
 from pounding.structure.modal import ModalResult, modal_result
 from pounding.structure.shear_building import _floor_vector, _readonly
+from pounding.units import direction_cosines
 
 __all__ = ["LateralElement", "PlanBuilding", "direction_cosines", "facing_points",
            "plan_stiffness_matrix"]
@@ -64,23 +65,6 @@ def _default_damping() -> RayleighDamping:
     modes are usually the first of each family (x, y, torsion), and a symmetric building
     has modes 1 and 2 at the same period, which cannot anchor Rayleigh damping."""
     return RayleighDamping(0.05, mode_i=1, mode_j=3)
-
-
-def direction_cosines(direction: str | float) -> tuple[float, float]:
-    """``(cos β, sin β)`` of ``"x"``, ``"y"`` or an angle β [degrees] from the x axis,
-    exact (0 or ±1) at multiples of 90° so that elements along the axes couple nothing."""
-    if direction == "x":
-        return 1.0, 0.0
-    if direction == "y":
-        return 0.0, 1.0
-    if isinstance(direction, (int, float, np.floating, np.integer)) \
-            and not isinstance(direction, bool) and math.isfinite(direction):
-        quarter, rest = divmod(float(direction), 90.0)
-        if rest == 0.0:
-            return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(quarter) % 4]
-        beta = math.radians(float(direction))
-        return math.cos(beta), math.sin(beta)
-    raise ValueError(f"direction must be 'x', 'y' or an angle in degrees (got {direction!r})")
 
 
 @dataclass(frozen=True)
