@@ -222,6 +222,29 @@ def test_contact_force_is_the_penetration_of_the_facade_points() -> None:
     assert corner  # some impact away from the right building's centre of mass line
 
 
+def test_dashpot_from_e_is_pounding_contact_specs() -> None:
+    """Kelvin–Voigt given by ``e``: each contact's dashpot is the one pounding's ContactSpec
+    builds for the two floor masses that meet (Anagnostopoulos, the dashpot may pull), and
+    the Rayleigh coefficients are each building's own."""
+    from pounding.model import ContactSpec
+
+    left, right, gap = osp.torsional_pair()
+    heavier = PlanBuilding(masses=[4e5, 3e5, 2e5], heights=right.heights, width=right.width,
+                           depth=right.depth, elements=right.elements, site_y=right.site_y)
+    ax, _, rdt = record(0.1)
+    r = run([left, heavier], ax, None, rdt, 0.01, 0.05, gaps=[gap],
+            contact={"law": "kelvin-voigt", "k": 9.3e8, "e": 0.65})
+    spec = ContactSpec("kelvin-voigt", k=9.3e8, e=0.65, formula="anagnostopoulos",
+                       tension=True)
+    for (_, i, j, _), law in zip(r["contacts"], r["params"]["contact_laws"]):
+        ours = spec.build(float(left.masses[int(i)]), float(heavier.masses[int(j)]))
+        assert (law["k"], law["gap"]) == (9.3e8, gap)
+        assert law["c"] == pytest.approx(ours.c, rel=1e-12)
+    assert len({law["c"] for law in r["params"]["contact_laws"]}) == 3
+    for bld, a in zip((left, heavier), r["params"]["rayleigh"]):
+        assert a == bld.damping.coefficients(bld.mass_matrix(), bld.stiffness_matrix())
+
+
 # --------------------------------------------------------------------------- bad input
 @pytest.mark.parametrize("kwargs, match", [
     (dict(gaps=[]), "gaps must have one value per neighbouring pair"),
@@ -244,6 +267,18 @@ def test_bad_input_is_named(kwargs: dict, match: str) -> None:
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
         osp.run_opensees_plan(**args)
+
+
+def test_script_prints_the_example_and_refuses_a_bad_step(capsys: pytest.CaptureFixture[str]
+                                                         ) -> None:
+    assert osp.main(["--duration", "0.5", "--repeat", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "y component: none" in out and "500 steps" in out
+    assert sum(line.startswith("  floor ") for line in out.splitlines()) == 6
+    with pytest.raises(SystemExit) as exc:
+        osp.main(["--dt", "0"])
+    assert exc.value.code == 2
+    assert "--dt must be a finite number > 0 [s] (got 0.0)" in capsys.readouterr().err
 
 
 def test_modal_damping_is_refused() -> None:
