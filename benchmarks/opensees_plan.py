@@ -105,7 +105,7 @@ def _rayleigh(b: PlanBuilding, index: int) -> tuple[float, float]:
 
 
 def _contact_params(contact: Mapping[str, Any]) -> dict[str, Any]:
-    """Check the contact dict; returns it with defaults (see :func:`run_opensees_plan`)."""
+    """Check the contact dict (see :func:`run_opensees_plan`); returns a copy."""
     if not isinstance(contact, Mapping):
         raise ValueError(f"contact must be a dict with 'law' and its constants (got {contact!r})")
     p = dict(contact)
