@@ -1,5 +1,6 @@
 """The bundled real records (the one copy of them, in ``pounding/data/records``) against the
-values an independent parser wrote into the SOURCES.md beside them, and their manifest."""
+values an independent parser wrote into the SOURCES.md beside them, and their manifest: the
+ten of the bundled suite and the Düzce pair of orthogonal components kept out of it."""
 
 from __future__ import annotations
 
@@ -11,6 +12,8 @@ import numpy as np
 import pytest
 
 from pounding.ground_motion import (
+    bundled_companion,
+    bundled_files,
     bundled_records,
     bundled_suite,
     el_centro,
@@ -43,22 +46,85 @@ SOURCES = _sources_table(RECORDS / "SOURCES.md")
 MANIFEST = tomllib.loads((RECORDS / "records.toml").read_text(encoding="utf-8"))["record"]
 
 
+PAIR = ("kocaeli_1999_duzce_180_RSN1158.AT2", "kocaeli_1999_duzce_270_RSN1158.AT2")
+"""The two orthogonal horizontal components of Düzce, Kocaeli 1999 (180 = N–S, 270 = E–W)."""
+
+
 def _git_blob_id(data: bytes) -> str:
     return hashlib.sha1(b"blob %d\0" % len(data) + data).hexdigest()
+
+
+def _blob(name: str) -> str:
+    """The blob id of SOURCES.md's row (a note may follow the id in the cell)."""
+    return SOURCES[name]["git blob"].split()[0]
 
 
 def test_sources_table_lists_every_record_file() -> None:
     files = sorted(p.name for p in RECORDS.iterdir()
                    if p.is_file() and p.name not in {"SOURCES.md", "records.toml",
                                                      ".gitattributes"})
-    assert sorted(SOURCES) == files == sorted(bundled_records())
-    assert len(files) == 10
+    assert sorted(SOURCES) == files == sorted(bundled_files())
+    assert len(files) == 12
+
+
+def test_the_suite_is_the_ten_single_components() -> None:
+    """The Düzce pair ships but is marked out of the bundled suite, which keeps its ten
+    records in their order."""
+    assert bundled_records() == [e["file"] for e in MANIFEST if e.get("suite", True)]
+    assert len(bundled_records()) == 10
+    assert bundled_files() == [*bundled_records(), *PAIR]
+    assert [e.get("suite") for e in MANIFEST if e["file"] in PAIR] == [False, False]
+    assert [Path(p).name for p in bundled_suite().paths] == bundled_records()
+
+
+def test_pair_components_are_companions_on_one_time_base() -> None:
+    """Each component names the other; same station and event, components 180 and 270
+    (at right angles), the same NPTS, DT and start."""
+    ns, ew = PAIR
+    assert bundled_companion(ns) == ew and bundled_companion(Path(ew).stem) == ns
+    assert all(bundled_companion(f) is None for f in bundled_records())
+    with pytest.raises(ValueError, match=r"bundled record: unknown name 'nope'"):
+        bundled_companion("nope")
+    a, b = load_bundled(ns), load_bundled(ew)
+    assert (a.npts, a.dt, a.time[0]) == (b.npts, b.dt, b.time[0]) == (5437, 0.005, 0.0)
+    heads = [(RECORDS / f).read_bytes().split(b"\r\n")[1] for f in PAIR]
+    assert heads == [b"Kocaeli Turkey, 8/17/1999, Duzce, 180",
+                     b"Kocaeli Turkey, 8/17/1999, Duzce, 270"]
+    assert abs(int(heads[0][-3:]) - int(heads[1][-3:])) == 90
+
+
+def test_pair_rotd100_of_a_stiff_oscillator_is_the_vector_peak() -> None:
+    """A 0.01 s oscillator follows the ground: its PSA along azimuth θ is the PGA of
+    a₁ cos θ + a₂ sin θ, whose largest over θ is max_t |(a₁, a₂)| (Boore 2010), and each
+    component's PSA is that component's PGA."""
+    from pounding.spectra.rotd import rotd_spectrum
+
+    a, b = (load_bundled(f) for f in PAIR)
+    spec = rotd_spectrum(a, b, periods=[0.01])
+    vector_peak = np.hypot(a.accel, b.accel).max() / G
+    assert vector_peak == pytest.approx(0.4001, abs=1e-4)  # above both PGAs: 0.3119, 0.3642
+    assert spec.psa_g(spec.rotd100)[0, 0] == pytest.approx(vector_peak, rel=5e-3)
+    assert spec.psa_g(spec.sd_components)[:, 0, 0] == pytest.approx([a.pga_g, b.pga_g],
+                                                                     rel=5e-3)
+
+
+@pytest.mark.parametrize("name", PAIR)
+def test_pair_layout_is_the_nga_files(name: str) -> None:
+    """SOURCES.md: 83,972 bytes (the length of the source), CRLF after every one of 1092
+    lines, the 4-line header, 15-character fields, the last line padded to 75."""
+    raw = (RECORDS / name).read_bytes()
+    assert len(raw) == 83972 and raw.endswith(b"\r\n") and b"\n" not in raw.replace(b"\r\n", b"")
+    lines = raw.split(b"\r\n")[:-1]
+    assert len(lines) == 1092
+    assert lines[3].startswith(b"NPTS=   5437  DT=   .0050 SEC,")
+    assert {len(line) for line in lines[3:]} == {75}
+    assert lines[-1].rstrip() == lines[-1][:30]
 
 
 @pytest.mark.parametrize("name", sorted(SOURCES))
 def test_copy_is_byte_for_byte(name: str) -> None:
     """The bundled copies (line ends included) hash to the blob ids SOURCES.md gives."""
-    assert _git_blob_id((RECORDS / name).read_bytes()) == SOURCES[name]["git blob"]
+    assert _git_blob_id((RECORDS / name).read_bytes()) == _blob(name)
 
 
 @pytest.mark.parametrize("name", sorted(SOURCES))
@@ -115,10 +181,11 @@ def test_bundled_suite_reads_the_files_checked_above() -> None:
 
 def test_bundled_provenance_agrees_with_sources_md() -> None:
     """The manifest's provenance is SOURCES.md's, and reaches each record's metadata."""
-    assert [e["file"] for e in MANIFEST] == bundled_records()
-    for entry, gm in zip(MANIFEST, bundled_suite(), strict=True):
+    assert [e["file"] for e in MANIFEST] == bundled_files()
+    for entry in MANIFEST:
+        gm = load_bundled(entry["file"])
         row = SOURCES[entry["file"]]
-        assert entry["git_blob"] == row["git blob"]
+        assert entry["git_blob"] == _blob(entry["file"])
         assert entry["earthquake"] == row["earthquake"]
         assert entry["station"] == row["station, component"]
         _, path = (s.strip() for s in row["source (repo : path)"].split(":", 1))
@@ -130,7 +197,7 @@ def test_bundled_provenance_agrees_with_sources_md() -> None:
 def test_bundled_units_stated_or_assumed() -> None:
     """Every AT2 states g; the Sylmar file states nothing and is read as m/s² (inferred in
     SOURCES.md), which the bundled record reports as assumed."""
-    for gm in bundled_suite():
+    for gm in map(load_bundled, bundled_files()):
         assert gm.units_read == ("m/s2 (assumed)" if gm.name.endswith("_mps2") else "g")
 
 

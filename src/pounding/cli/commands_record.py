@@ -20,8 +20,9 @@ def record(
              "columns time, acceleration.",
         show_default=False)] = None,
     bundled: Annotated[bool, typer.Option(
-        "--bundled", help="Also the ten real records shipped with pounding (the bundled "
-                          "suite; provenance in pounding/data/records/SOURCES.md).")] = False,
+        "--bundled", help="Also the twelve real records shipped with pounding (the ten of "
+                          "the bundled suite, then the Düzce pair of orthogonal components; "
+                          "provenance in pounding/data/records/SOURCES.md).")] = False,
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for files that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
@@ -50,7 +51,8 @@ def record(
 
       pounding record --bundled
     """
-    from pounding.ground_motion import bundled_suite, read_record
+    from pounding.ground_motion import read_record
+    from pounding.ground_motion.bundled import bundled_files, bundled_folder, load_bundled
 
     files = list(files or [])
     if not files and not bundled:
@@ -58,9 +60,8 @@ def record(
                          "with pounding")
     motions = [read_record(f, dt=dt, units=units) for f in files]
     if bundled:
-        suite = bundled_suite()
-        files += [Path(p) for p in suite.paths]
-        motions += list(suite)
+        files += [Path(str(bundled_folder().joinpath(f))) for f in bundled_files()]
+        motions += [load_bundled(f) for f in bundled_files()]
 
     table = Table(title="Ground-motion records")
     table.add_column("file", overflow="fold")

@@ -10,7 +10,7 @@ from typing import Annotated
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
 from pounding.config.base import Pos, Section, field_error, fmt
-from pounding.ground_motion import GroundMotion, bundled_records, el_centro, load_bundled, read_record
+from pounding.ground_motion import GroundMotion, bundled_files, el_centro, load_bundled, read_record
 from pounding.memo import Memo
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
@@ -31,7 +31,7 @@ def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float |
 def _bundled_names() -> frozenset[str]:
     """Every name of a bundled record: file names and their stems (read once: the records
     ship with the package)."""
-    return frozenset([*bundled_records(), *(Path(n).stem for n in bundled_records())])
+    return frozenset([*bundled_files(), *(Path(n).stem for n in bundled_files())])
 
 
 RECORDS = Memo(max_items=64, max_bytes=128 << 20)
@@ -76,7 +76,7 @@ class RecordConfig(Section):
         if v is None:
             return v
         if v.lower() not in EL_CENTRO_ALIASES and v not in _bundled_names():
-            stems = [Path(n).stem for n in bundled_records()]
+            stems = [Path(n).stem for n in bundled_files()]
             raise ValueError(f"unknown bundled record {v!r}; choose one of "
                              f"{', '.join(('el_centro', *stems))}")
         return v

@@ -14,8 +14,10 @@ concept a module:
   time/acceleration text) and :func:`read_record` (any of the above, chosen by suffix and
   content; any other file is refused in one line naming the formats read);
 * :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
-  :func:`bundled_records`: the ten records shipped in ``pounding/data/records`` (see its
-  ``SOURCES.md`` for their provenance);
+  :func:`bundled_files`, :func:`bundled_records`, :func:`bundled_companion`: the twelve
+  records shipped in ``pounding/data/records``, ten of them the bundled suite and two a pair
+  of orthogonal horizontal components of one station (see its ``SOURCES.md`` for their
+  provenance);
 * :mod:`~pounding.ground_motion.suite` -- :class:`RecordSuite`, an ordered, named
   collection of records (from a folder, a list of files or :func:`bundled_suite`), and
   :func:`read_suite`;
@@ -26,7 +28,13 @@ Every reader raises :class:`ValueError` naming the file, the line and the bad va
 ``docs/ground_motion.md``.
 """
 
-from pounding.ground_motion.bundled import bundled_records, el_centro, load_bundled
+from pounding.ground_motion.bundled import (
+    bundled_companion,
+    bundled_files,
+    bundled_records,
+    el_centro,
+    load_bundled,
+)
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers import (  # noqa: F401
     ASSUMED,
@@ -42,6 +50,8 @@ from pounding.ground_motion.synthetic import harmonic, ricker, sine_pulse
 __all__ = [
     "GroundMotion",
     "RecordSuite",
+    "bundled_companion",
+    "bundled_files",
     "bundled_records",
     "bundled_suite",
     "el_centro",

@@ -1,11 +1,14 @@
 """The records shipped in ``pounding/data/records`` (provenance in its SOURCES.md):
-:func:`bundled_records` lists them in suite order, :func:`load_bundled` reads one by name
-and :func:`el_centro` is the Imperial Valley 1940 El Centro record used in the examples.
-The suite of all of them is :func:`pounding.ground_motion.suite.bundled_suite`.
+:func:`bundled_files` lists every one, :func:`bundled_records` those of the bundled suite in
+suite order, :func:`load_bundled` reads one by name, :func:`bundled_companion` names the
+other horizontal component of a record shipped with its orthogonal pair, and
+:func:`el_centro` is the Imperial Valley 1940 El Centro record used in the examples. The
+suite itself is :func:`pounding.ground_motion.suite.bundled_suite`.
 
-``records.toml`` beside the files is the manifest: one ``[[record]]`` a file, in suite
-order, with the unit of a file that does not state it, and the record's provenance
-(earthquake, station, source repository and path, git blob id).
+``records.toml`` beside the files is the manifest: one ``[[record]]`` a file, the suite's in
+suite order, with the unit of a file that does not state it, ``suite = false`` for a record
+kept out of the suite, ``companion`` for one of a pair of orthogonal horizontal components,
+and the record's provenance (earthquake, station, source repository and path, git blob id).
 """
 
 from __future__ import annotations
@@ -22,7 +25,8 @@ from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.dispatch import read_record
 from pounding.ground_motion.readers.units import ASSUMED
 
-__all__ = ["BUNDLED_FOLDER", "bundled_folder", "bundled_records", "el_centro", "load_bundled"]
+__all__ = ["BUNDLED_FOLDER", "bundled_companion", "bundled_files", "bundled_folder",
+           "bundled_records", "el_centro", "load_bundled"]
 
 BUNDLED_FOLDER = "data/records"
 """The folder of the bundled records inside the ``pounding`` package."""
@@ -44,19 +48,41 @@ def bundled_folder() -> Traversable:
 
 @functools.lru_cache(maxsize=1)
 def _manifest() -> tuple[dict[str, Any], ...]:
-    """The ``[[record]]`` entries of ``records.toml``, in suite order."""
+    """The ``[[record]]`` entries of ``records.toml``, in manifest order."""
     return tuple(tomllib.loads(bundled_folder().joinpath(_MANIFEST).read_text(encoding="utf-8"))
                  ["record"])
 
 
-def bundled_records() -> list[str]:
-    """File names of the bundled records, in suite order (provenance in
-    ``pounding/data/records/SOURCES.md``)."""
+def bundled_files() -> list[str]:
+    """File names of every bundled record, in manifest order: the bundled suite's
+    (:func:`bundled_records`), then those kept out of it (the Düzce pair of orthogonal
+    components). Provenance in ``pounding/data/records/SOURCES.md``."""
     return [entry["file"] for entry in _manifest()]
 
 
+def bundled_records() -> list[str]:
+    """File names of the records of the bundled suite, in suite order: every bundled
+    record that ``records.toml`` does not mark ``suite = false`` (provenance in
+    ``pounding/data/records/SOURCES.md``)."""
+    return [entry["file"] for entry in _manifest() if entry.get("suite", True)]
+
+
+def bundled_companion(name: str) -> str | None:
+    """File name of the other horizontal component of bundled record ``name`` (file name or
+    stem): recorded at the same station in the same earthquake, at right angles to it; None
+    for a record shipped without its companion.
+
+    Raises
+    ------
+    ValueError
+        If ``name`` is not a bundled record; the message lists them.
+    """
+    companion: str | None = _manifest()[_index(name)].get("companion")
+    return companion
+
+
 def load_bundled(name: str) -> GroundMotion:
-    """Read a bundled record by file name (see :func:`bundled_records`); the stem works too.
+    """Read a bundled record by file name (see :func:`bundled_files`); the stem works too.
 
     Cached: the data ship with the package and a GroundMotion is immutable.
 
@@ -74,12 +100,17 @@ def load_bundled(name: str) -> GroundMotion:
     ValueError
         If ``name`` is not a bundled record; the message lists them.
     """
+    return _load(_index(name))
+
+
+def _index(name: str) -> int:
+    """The manifest entry of bundled record ``name`` (file name or stem)."""
     index = next((i for i, e in enumerate(_manifest())
                   if name in (e["file"], Path(e["file"]).stem)), None)
     if index is None:
         raise ValueError(f"bundled record: unknown name {name!r}; choose one of "
-                         f"{', '.join(bundled_records())}")
-    return _load(index)
+                         f"{', '.join(bundled_files())}")
+    return index
 
 
 @functools.lru_cache(maxsize=16)

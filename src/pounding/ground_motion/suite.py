@@ -189,9 +189,10 @@ class RecordSuite:
 
 
 def bundled_suite() -> RecordSuite:
-    """The ten real records shipped with pounding, named ``"bundled"``, in the order of
-    ``pounding/data/records/records.toml`` (provenance in SOURCES.md beside it and in each
-    record's ``metadata["provenance"]``).
+    """The bundled suite: the ten real records of :func:`bundled_records` (every record
+    shipped with pounding but the Düzce pair of orthogonal components), named
+    ``"bundled"``, in the order of ``pounding/data/records/records.toml`` (provenance in
+    SOURCES.md beside it and in each record's ``metadata["provenance"]``).
 
     Runs on a fresh install: the files ship inside the package.
     """

@@ -157,10 +157,11 @@ class SpectrumScaling(Section):
 
 
 class SuiteSpec(Section):
-    """``[suite]``: exactly one of ``bundled = true`` (the ten records shipped with
-    pounding), ``folder`` and ``files`` (relative to the study file; ``dt``, ``units`` for
-    files that do not state them); ``duration`` [s] keeps each record up to that time;
-    ``scaling`` scales the suite to a target spectrum before the levels are applied."""
+    """``[suite]``: exactly one of ``bundled = true`` (the bundled suite: the ten records
+    of :func:`~pounding.ground_motion.bundled_records`), ``folder`` and ``files`` (relative
+    to the study file; ``dt``, ``units`` for files that do not state them); ``duration``
+    [s] keeps each record up to that time; ``scaling`` scales the suite to a target
+    spectrum before the levels are applied."""
 
     bundled: bool | None = None
     folder: str | None = None
