@@ -221,6 +221,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     nt = ground.shape[0]
     ag = ground.reshape(nt, -1)  # (nt, G), read-only like ground
     km = kernel_model(model)
+    if km.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g] unchecked)
+        raise ValueError(f"motion: {ag.shape[1]} ground components for {km.r.shape[1]}")
     n, nz, bw = km.n, km.nz, km.bw
     ns = km.s_lo.size
     if ns and free_stepping == "exact":

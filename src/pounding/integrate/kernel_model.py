@@ -131,12 +131,14 @@ def kernel_model(model: PoundingModel) -> KernelModel:
 
 STRUCTURES = Memo(max_items=64, max_bytes=256 << 20)
 """The buildings' part of a :class:`KernelModel` (everything but the contacts), by the
-identity of the buildings and the links between them: the cases of a sweep that change only gaps, contact law or
+identity of the buildings, the links between them and the influence matrix: the cases of a sweep that change only gaps, contact law or
 record share it, with its exact steps."""
 
 
 def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
-    key = (tuple(map(id, model.buildings)), tuple(link.describe() for link in model.links))
+    r = np.asarray(model.system.r)
+    key = (tuple(map(id, model.buildings)), tuple(link.describe() for link in model.links),
+           r.shape, r.tobytes())
     structure = STRUCTURES.get(key, lambda: _assemble_structure(model),
                                size=lambda st: 8 * 8 * st["n"] ** 2, keep=model.buildings)
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
