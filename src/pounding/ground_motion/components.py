@@ -67,7 +67,7 @@ class GroundMotionComponents:
 
     @classmethod
     def of(cls, *components: GroundMotion, name: str = "") -> GroundMotionComponents:
-        """``GroundMotionComponents((a, b, …))`` written ``GroundMotionComponents.of(a, b, …)``."""
+        """``GroundMotionComponents((a, b, …))``, written ``GroundMotionComponents.of(a, b)``."""
         return cls(tuple(components), name)
 
     @property

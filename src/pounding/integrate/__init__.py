@@ -1,7 +1,9 @@
 """Time-history simulation of buildings that pound: ``simulate(model, motion)``.
 
 Problem (:class:`pounding.model.PoundingModel`), excitation
-(:class:`pounding.ground_motion.GroundMotion`) and solver options are separate; the solver
+(:class:`pounding.ground_motion.GroundMotion`, or
+:class:`~pounding.ground_motion.GroundMotionComponents` for a model whose influence matrix R
+has several columns) and solver options are separate; the solver
 is the one compiled kernel of :mod:`pounding.integrate.kernel`; the answer is a
 :class:`pounding.result.Result`. The slow SciPy reference used to verify it is
 :func:`pounding.integrate.reference.simulate_reference`.
@@ -87,7 +89,8 @@ from pounding.validation import positive
 __all__ = [
     "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
     "IntegrationError", "KernelModel", "band_storage", "check_contact_periods",
-    "check_history_size", "choose_free_stepping", "default_step_budget", "floor_below",
+    "check_ground_components", "check_history_size", "choose_free_stepping",
+    "default_step_budget", "floor_below",
     "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
     "kernel_model", "kernel_scratch", "peak_margin", "physical_memory", "simulate",
 ]

@@ -94,9 +94,9 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                  arel0, jk, jk1, aabs0, aabs1, gd, gr, gnd):
     """Grid steps from k with adaptive RK steps and events, writing the outputs of each,
     while a contact is closed (or to ``k1`` if not ``exact_free``). At entry ``kx`` (row 0)
-    holds f(x) at ``ag[k]`` (``ag``: (nt, G), the ground components on the grid; ``gnd``: (4, G)
-    scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``, ``arel0``, ``gd`` and ``gr`` are those of
-    the grid point reached (``jk``, ``jk1``: scratch for jerks).
+    holds f(x) at ``ag[k]`` (``ag``: (nt, G), the ground components on the grid; ``gnd``:
+    (4, G) scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``, ``arel0``,
+    ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why). One call for a whole contact episode: a call passes some sixty arrays.

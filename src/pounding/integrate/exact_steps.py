@@ -3,10 +3,12 @@
 With every contact open and every storey linear, the structure is linear and the ground
 acceleration is linear over a grid step, so the step is taken with the exact propagator of
 :mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``, Γ0 and Γ1 of shape
-(2N, G) for the G ground components), block by block (the buildings are uncoupled while the gaps are open). The input energy over the step is an
-exact quadratic form in ``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same
-sweep over the operator's columns as Φ x; the viscous work of the step is the input work
-less the change of kinetic and strain energy, exactly.
+(2N, G) for the G ground components), block by block (the buildings are uncoupled while the
+gaps are open). The input energy over the step is an exact quadratic form in
+``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same sweep over the operator's
+columns as Φ x (the first ground component; the others after, :func:`ground_rest_step`);
+the viscous work of the step is the input work less the change of kinetic and strain
+energy, exactly.
 
 After each step every gap is checked for closing at the step end and inside it, from the
 quintic Hermite of its ``(δ, δ̇, δ̈)`` at both ends (:func:`pounding.integrate.events.

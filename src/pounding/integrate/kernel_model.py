@@ -131,8 +131,8 @@ def kernel_model(model: PoundingModel) -> KernelModel:
 
 STRUCTURES = Memo(max_items=64, max_bytes=256 << 20)
 """The buildings' part of a :class:`KernelModel` (everything but the contacts), by the
-identity of the buildings, the links between them and the influence matrix: the cases of a sweep that change only gaps, contact law or
-record share it, with its exact steps."""
+identity of the buildings, the links between them and the influence matrix: the cases of a
+sweep that change only gaps, contact law or record share it, with its exact steps."""
 
 
 def _assemble_kernel_model(model: PoundingModel) -> KernelModel:

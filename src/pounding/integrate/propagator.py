@@ -237,8 +237,9 @@ def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     ``ȧ_g = (a1 − a0) / h`` gives the forms in the grid values.
 
     With G ground components ``a0``, ``a1`` are G values each and ``W_in`` is
-    ``−u̇ᵀ M R a_g``. Returns ``(Q_in, Q_visc)``, each ``(2N+2G, 2N+2G)`` symmetric. (The kernel needs only
-    ``Q_in``; ``Q_visc`` checks that the viscous work it infers from the balance is exact.)
+    ``−u̇ᵀ M R a_g``. Returns ``(Q_in, Q_visc)``, each ``(2N+2G, 2N+2G)`` symmetric. (The
+    kernel needs only ``Q_in``; ``Q_visc`` checks that the viscous work it infers from the
+    balance is exact.)
     """
     n = M.shape[0]
     f, t = _augmented(M, C, K, r, h)
