@@ -28,12 +28,12 @@ if TYPE_CHECKING:
     import pandas as pd
     import xarray as xr
 
-    from pounding.ground_motion import GroundMotion
+    from pounding.ground_motion import GroundMotion, GroundMotionComponents
     from pounding.model import PoundingModel
 
 ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "contact_work",
                                  "contact_stored", "hysteretic", "links")
-"""Columns of :attr:`Result.energy` [J]: input energy ``−∫u̇ᵀMr a_g dt``, kinetic
+"""Columns of :attr:`Result.energy` [J]: input energy ``−∫u̇ᵀMR a_g dt``, kinetic
 ``½u̇ᵀMu̇`` (relative), elastic strain (``½uᵀKu`` of the linear storeys plus the recoverable
 energy of the yielding ones), viscous damping ``∫u̇ᵀCu̇ dt``, total work of the contact forces
 ``∫ΣF δ̇ dt``, the elastic energy still stored in closed contacts, and the hysteretic energy
@@ -84,11 +84,13 @@ class Result:
     Attributes
     ----------
     model : PoundingModel
-    motion : GroundMotion
+    motion : GroundMotion or GroundMotionComponents
     dt : float
         Output step [s]; ``time = k·dt``.
-    ground : ndarray (nt,)
-        Ground acceleration at output times [m/s²].
+    ground : ndarray (nt,) or (nt, G)
+        Ground acceleration at output times [m/s²]; (nt, G) under
+        :class:`~pounding.ground_motion.GroundMotionComponents` (a model whose influence
+        matrix R has G columns), the components in the order of R's columns.
     displacement, velocity : ndarray (nt, N)
         Floor displacement [m] and velocity [m/s] relative to the ground.
     abs_acceleration : ndarray (nt, N)
@@ -123,7 +125,7 @@ class Result:
     """
 
     model: PoundingModel
-    motion: GroundMotion
+    motion: GroundMotion | GroundMotionComponents
     dt: float
     ground: NDArray[np.float64] = field(repr=False)
     displacement: NDArray[np.float64] = field(repr=False)

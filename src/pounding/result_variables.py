@@ -45,8 +45,11 @@ def history_variables(result: "Result") -> HistoryVariables:
     def var(values: Any, dims: tuple[str, ...], units: str, desc: str) -> Variable:
         return Variable(dims, np.asarray(values), {"units": units, "long_name": desc})
 
+    # one record: (time,); G components (a model whose influence matrix R has G columns):
+    # (time, ground_component), the components in the order of R's columns
+    ground_dims = ("time",) if np.ndim(result.ground) == 1 else ("time", "ground_component")
     data = {
-        "ground_acceleration": var(result.ground, ("time",), "m/s^2", "ground acceleration"),
+        "ground_acceleration": var(result.ground, ground_dims, "m/s^2", "ground acceleration"),
         "displacement": var(result.displacement, ("time", "floor"), "m",
                             "floor displacement relative to the ground"),
         "velocity": var(result.velocity, ("time", "floor"), "m/s",
@@ -93,6 +96,12 @@ def history_variables(result: "Result") -> HistoryVariables:
         "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
                                  "elevation of the contact"),
     }
+    if len(ground_dims) == 2:
+        names = [c.name for c in getattr(result.motion, "components", ())]
+        coords["ground_component"] = Variable(("ground_component",),
+                                              np.array(names, dtype=object),
+                                              {"long_name": "ground motion component "
+                                                            "(column of the influence matrix)"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
                                                       dtype=object), {})

@@ -33,18 +33,21 @@ def test_blocks_follow_the_coupling():
 
 def _apply(fs, x0, a0, a1, M, K):
     """State, input energy and viscous work after one step, in plain numpy, the way the
-    kernel does it: viscous work = input work − change of kinetic and strain energy."""
+    kernel does it: viscous work = input work − change of kinetic and strain energy.
+    ``a0``, ``a1``: the G ground components at the step's ends (scalars for G = 1)."""
     n = x0.size // 2
+    a0, a1 = np.atleast_1d(a0), np.atleast_1d(a1)
+    ng = a0.size
     x1 = np.zeros_like(x0)
-    e_in = fs.aa @ [a0 * a0, a0 * a1, a1 * a1]
+    e_in = a0 @ fs.aa[0] @ a0 + a0 @ fs.aa[1] @ a1 + a1 @ fs.aa[2] @ a1
     for b in range(fs.blk.size - 1):
         p, q = fs.blk[b], fs.blk[b + 1]
         nb = q - p
         glob = np.r_[p:q, n + p : n + q]
         z = x0[glob]
-        acc = z @ fs.ops[glob, : 2 * nb + 2]
-        x1[glob] = acc[: 2 * nb] + fs.gamma0[glob] * a0 + fs.gamma1[glob] * a1
-        e_in += acc[2 * nb] * a0 + acc[2 * nb + 1] * a1
+        acc = z @ fs.ops[glob, : 2 * nb + 2 * ng]
+        x1[glob] = acc[: 2 * nb] + fs.gamma0[glob] @ a0 + fs.gamma1[glob] @ a1
+        e_in += acc[2 * nb :: 2] @ a0 + acc[2 * nb + 1 :: 2] @ a1
 
     def stored(x):
         return 0.5 * x[n:] @ M @ x[n:] + 0.5 * x[:n] @ K @ x[:n]
@@ -82,6 +85,46 @@ def test_free_step_matches_propagator_and_quadrature():
     y0 = np.r_[x0, a0, a1]
     assert abs(y0 @ step_energy_forms(M, C, K, r, h)[1] @ y0 - q_d) < 1e-12 * abs(q_d)
     assert np.allclose(state_matrix(M, C, K).shape, (2 * n, 2 * n))
+
+
+def test_free_step_with_two_ground_components():
+    """R with two columns (the second floor-dependent): the block step equals the full
+    propagator of the two-input system, its input energy the quadrature of
+    ``−u̇ᵀ M R a_g`` on the exact solution, and the viscous work from the balance the Van
+    Loan form; and a step under (a, 0) equals the one-column step under a."""
+    s = _pair().system
+    M, C, K, r = s.M, s.C, s.K, s.r
+    n = r.size
+    R = np.column_stack([r, np.linspace(0.2, 1.0, n)])
+    h = 2e-3
+    fs = compute_free_step(M, C, K, R, h)
+    assert fs.gamma0.shape == (2 * n, 2) and fs.aa.shape == (3, 2, 2)
+    rng = np.random.default_rng(5)
+    x0 = rng.normal(size=2 * n) * np.r_[np.full(n, 0.05), np.full(n, 0.4)]
+    a0, a1 = np.array([1.7, -0.6]), np.array([-0.9, 2.2])
+    x1, e_in, e_d = _apply(fs, x0, a0, a1, M, K)
+    full = compute_propagator(M, C, K, R, h)
+    ref = full.phi @ x0 + full.gamma0 @ a0 + full.gamma1 @ a1
+    assert np.max(np.abs(x1 - ref)) < 1e-13 * np.max(np.abs(ref))
+    mr = M @ R
+    xs, ws = np.polynomial.legendre.leggauss(24)
+    q_in = q_d = 0.0
+    for xi, wi in zip(xs, ws):
+        t = 0.5 * h * (xi + 1.0)
+        pr = compute_propagator(M, C, K, R, t)
+        at = a0 + (a1 - a0) * t / h
+        v = (pr.phi @ x0 + pr.gamma0 @ a0 + pr.gamma1 @ at)[n:]
+        q_in += 0.5 * h * wi * (-(v @ mr) @ at)
+        q_d += 0.5 * h * wi * (v @ C @ v)
+    assert abs(e_in - q_in) < 1e-12 * abs(q_in)
+    assert abs(e_d - q_d) < 1e-9 * abs(q_d)
+    y0 = np.r_[x0, a0, a1]
+    assert abs(y0 @ step_energy_forms(M, C, K, R, h)[1] @ y0 - q_d) < 1e-12 * abs(q_d)
+    # the second component zero: the one-column step
+    one = _apply(compute_free_step(M, C, K, r, h), x0, 1.7, -0.9, M, K)
+    two = _apply(fs, x0, np.array([1.7, 0.0]), np.array([-0.9, 0.0]), M, K)
+    assert np.max(np.abs(one[0] - two[0])) < 1e-14 * np.max(np.abs(one[0]))
+    assert abs(one[1] - two[1]) < 1e-13 * abs(one[1])
 
 
 def test_band_storage_reproduces_the_matrix():
@@ -132,7 +175,7 @@ def test_kernel_model_is_assembled_once_per_model_and_forgotten_with_it():
     assert np.array_equal(km.k_band, band_storage(sys_.K, km.bw))
     assert np.array_equal(km.c_band, band_storage(sys_.C, km.bw))
     assert np.array_equal(km.m_diag, np.diag(sys_.M))
-    assert np.array_equal(km.mr, sys_.M @ sys_.r)
+    assert np.array_equal(km.mr, (sys_.M @ sys_.r)[:, None])  # M R, R of one column
     assert np.array_equal(km.cgap, [c.gap for c in model.contacts])
     # writeable, so numba keeps one compiled signature (the kernel never writes them)
     assert all(a.flags.writeable for a in (km.k_band, km.c_band, km.m_diag, km.cparams))

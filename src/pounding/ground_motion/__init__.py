@@ -7,6 +7,9 @@ concept a module:
 
 * :mod:`~pounding.ground_motion.motion` -- :class:`GroundMotion`: peaks, velocity and
   displacement, scaled and trimmed copies;
+* :mod:`~pounding.ground_motion.components` -- :class:`GroundMotionComponents`: G records
+  of one step applied together along the columns of a model's influence matrix (two
+  horizontal components of a record, say);
 * :mod:`~pounding.ground_motion.readers` -- the file readers, one module a format:
   :func:`read_at2` (PEER strong-motion ``.AT2`` files, every header variant in common use),
   :func:`read_knet` (NIED's K-NET and KiK-net ASCII files), :func:`read_cosmos` (COSMOS
@@ -35,6 +38,7 @@ from pounding.ground_motion.bundled import (
     el_centro,
     load_bundled,
 )
+from pounding.ground_motion.components import GroundMotionComponents
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers import (  # noqa: F401
     ASSUMED,
@@ -49,6 +53,7 @@ from pounding.ground_motion.synthetic import harmonic, ricker, sine_pulse
 
 __all__ = [
     "GroundMotion",
+    "GroundMotionComponents",
     "RecordSuite",
     "bundled_companion",
     "bundled_files",

@@ -1,7 +1,9 @@
 """Time-history simulation of buildings that pound: ``simulate(model, motion)``.
 
 Problem (:class:`pounding.model.PoundingModel`), excitation
-(:class:`pounding.ground_motion.GroundMotion`) and solver options are separate; the solver
+(:class:`pounding.ground_motion.GroundMotion`, or
+:class:`~pounding.ground_motion.GroundMotionComponents` for a model whose influence matrix R
+has several columns) and solver options are separate; the solver
 is the one compiled kernel of :mod:`pounding.integrate.kernel`; the answer is a
 :class:`pounding.result.Result`. The slow SciPy reference used to verify it is
 :func:`pounding.integrate.reference.simulate_reference`.
@@ -25,13 +27,14 @@ from typing import NamedTuple
 import numpy as np
 
 from pounding.contact.base import STATE_SIZE
-from pounding.ground_motion import GroundMotion
+from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
     HISTORY_MEMORY_FRACTION,
     check_contact_periods,
     check_history_size,
     grid_step,
+    check_ground_components,
     ground_on_grid,
     ground_on_grid_memo,
     history_bytes,
@@ -86,7 +89,8 @@ from pounding.validation import positive
 __all__ = [
     "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
     "IntegrationError", "KernelModel", "band_storage", "check_contact_periods",
-    "check_history_size", "choose_free_stepping", "default_step_budget", "floor_below",
+    "check_ground_components", "check_history_size", "choose_free_stepping",
+    "default_step_budget", "floor_below",
     "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
     "kernel_model", "kernel_scratch", "peak_margin", "physical_memory", "simulate",
 ]
@@ -151,8 +155,8 @@ DEFAULT_RTOL: float = 1e-8
 """Default relative tolerance of the RK steps taken through contacts."""
 
 
-def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = None,
-             duration: float | None = None, rtol: float = DEFAULT_RTOL,
+def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents, *,
+             dt: float | None = None, duration: float | None = None, rtol: float = DEFAULT_RTOL,
              h_max: float | None = None, impact_capacity: int | None = None,
              initial_displacement: np.ndarray | None = None,
              initial_velocity: np.ndarray | None = None,
@@ -164,8 +168,11 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
     ----------
     model : PoundingModel
         Buildings, gaps, contact law.
-    motion : GroundMotion
-        Ground acceleration [m/s²], linear between its samples.
+    motion : GroundMotion or GroundMotionComponents
+        Ground acceleration [m/s²], linear between its samples: one record for a model
+        whose influence ``system.r`` is a vector (N,), or one record per column of an
+        influence matrix (N, G), in the order of the columns (the equations are
+        ``M ü + C u̇ + K u + … = −M R a_g(t)``).
     dt : float, optional
         Output (grid) step [s]; rounded down to a divisor of the record step
         (:func:`grid_step`). Default 1 ms. Accuracy does not depend on it: steps without
@@ -203,6 +210,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         The run cannot be integrated (step-size underflow, or the step budget used up); one
         line says when, at which contacts, and what to check.
     """
+    check_ground_components(model, motion)
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
     notes = _model_notes(model)
@@ -212,9 +220,12 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         notes.checked.add((step, t_end))
     rtol = positive("rtol", rtol)
     h_max = step if h_max is None else positive("h_max", h_max)
-    ag = ground_on_grid_memo(motion, step, t_end)
-    nt = ag.size
+    ground = ground_on_grid_memo(motion, step, t_end)  # (nt,) or (nt, G)
+    nt = ground.shape[0]
+    ag = ground.reshape(nt, -1)  # (nt, G), read-only like ground
     km = kernel_model(model)
+    if km.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g] unchecked)
+        raise ValueError(f"motion: {ag.shape[1]} ground components for {km.r.shape[1]}")
     n, nz, bw = km.n, km.nz, km.bw
     ns = km.s_lo.size
     if ns and free_stepping == "exact":
@@ -226,7 +237,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
         fs = km.free_steps.get(step)
         if fs is None:
             sys_ = model.system
-            fs = km.free_steps[step] = free_step(sys_.M, sys_.C, km.K, sys_.r, step)
+            fs = km.free_steps[step] = free_step(sys_.M, sys_.C, km.K, km.r, step)
     else:
         fs = NO_FREE_STEP
     nc = km.cgap.size
@@ -318,7 +329,7 @@ def simulate(model: PoundingModel, motion: GroundMotion, *, dt: float | None = N
                         rejected=int(ws_i[I_NREJECT]), events=int(ws_i[I_NEVENTS]),
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
     n_storey_rows = len(model.yielding_storeys)
-    return Result(model=model, motion=motion, dt=step, ground=ag,
+    return Result(model=model, motion=motion, dt=step, ground=ground,
                   displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
                   penetration=pen_out, contact_force=f_out, energy=e_out,
                   yielding_shear=vs_out[:, :n_storey_rows],

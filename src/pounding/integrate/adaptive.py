@@ -19,7 +19,7 @@ from pounding.contact.base import V0
 from pounding.devices.laws import DEVICE_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.commit import commit_contacts, commit_storeys
-from pounding.integrate.dormand_prince import rk_step, weighted_sum
+from pounding.integrate.dormand_prince import ground_at, rk_step, weighted_sum
 from pounding.integrate.events import (
     event_tolerance,
     event_value,
@@ -65,8 +65,13 @@ from pounding.integrate.layout import (
 )
 from pounding.integrate.peaks import track_point, track_step
 from pounding.integrate.rhs import (
+    G_A0,
+    G_A1,
+    G_NOW,
+    G_SLOPE,
     INLINE,
     NRT_FREE,
+    add_ground_rest,
     band_mv,
     deriv_call,
     gap_row,
@@ -86,11 +91,12 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                  h_max, graze_tol, x, committed, sstate, wc, w_start, imp_row, last_f, ws_f,
                  ws_i, u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, imp, cpeak,
                  cpeak_t, ccount, pk, kx, px, ks, ps, ks_b, ps_b, ytmp, y1, yb, lin, work,
-                 arel0, jk, jk1, aabs0, aabs1, gd, gr):
+                 arel0, jk, jk1, aabs0, aabs1, gd, gr, gnd):
     """Grid steps from k with adaptive RK steps and events, writing the outputs of each,
     while a contact is closed (or to ``k1`` if not ``exact_free``). At entry ``kx`` (row 0)
-    holds f(x) at ``ag[k]``; on return x, ``kx``, ``arel0``, ``gd`` and ``gr`` are those of
-    the grid point reached (``jk``, ``jk1``: scratch for jerks).
+    holds f(x) at ``ag[k]`` (``ag``: (nt, G), the ground components on the grid; ``gnd``:
+    (4, G) scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``, ``arel0``,
+    ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why). One call for a whole contact episode: a call passes some sixty arrays.
@@ -103,20 +109,22 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
     while k < k1:
         # ---------------- grid step k → k + 1: RK steps landing on t_k + dt
         t_k = k * dt
-        a0 = ag[k]
-        a1 = ag[k + 1]
-        dag = (a1 - a0) / dt
+        for g in range(gnd.shape[1]):
+            gnd[G_A0, g] = ag[k, g]
+            gnd[G_A1, g] = ag[k + 1, g]
+            gnd[G_SLOPE, g] = (gnd[G_A1, g] - gnd[G_A0, g]) / dt
+        a0 = ag[k, 0]
         s = 0.0
         h = min(ws_f[W_H], dt, h_max)
         for i in range(n):
-            aabs0[i] = kx[0, n + i] + r[i] * a0
+            aabs0[i] = kx[0, n + i] + r[i, 0] * a0
+        add_ground_rest(aabs0, 1.0, r, ag, k, n)
         while s < dt:
             last = False
             if s + h >= dt * (1.0 - 1e-12):
                 h = dt - s
                 last = True
-            a_end = a1 if last else a0 + dag * (s + h)
-            err = rk_step(x, kx, px, h, a0, dag, s, a_end, n, bw, k_band, c_band, m_inv, mr, r,
+            err = rk_step(x, kx, px, h, gnd, s, last, n, bw, k_band, c_band, m_inv, mr, r,
                           cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par,
                           s_zi, sstate, lin, ks, ps, ytmp, y1, atol, rtol)
             ws_i[I_NSTEPS] += 1
@@ -166,7 +174,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 found_hi = side_ok
                 if not side_ok:
                     # grazing: both ends on the 'before' side; test the estimate
-                    err = rk_step(x, kx, px, te, a0, dag, s, a0 + dag * (s + te), n, bw, k_band,
+                    err = rk_step(x, kx, px, te, gnd, s, False, n, bw, k_band,
                                   c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
                                   s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp,
                                   yb, atol, rtol)
@@ -180,8 +188,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                     break  # the interpolant's touch was not real
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
                 g_tol = event_tolerance(kind, ce, n, cdof, cparams, s_hi, atol)
-                h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0,
-                                    dag, s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+                h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd,
+                                    s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                                     ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
                                     sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i)
                 if kind == EV_GRAZE:
@@ -191,8 +199,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                         # yes: the gap closed before the peak; locate that onset in (0, h_acc]
                         g_lo = gap_row(ce, x, n, cdof, cw)[0] - cgap[ce]
                         h_acc, err = locate(EV_ONSET, ce, 0.0, h_acc, g_lo, d_peak,
-                                            0.5 * h_acc, atol[cdof[ce, 0]], dt, x, kx, px, a0,
-                                            dag, s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
+                                            0.5 * h_acc, atol[cdof[ce, 0]], dt, x, kx, px, gnd,
+                                            s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
                                             cgap, ccode, cparams, committed, s_lo, s_hi, s_code,
                                             s_par, s_zi, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1,
                                             yb, atol, rtol, ws_i)
@@ -237,10 +245,12 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 wc[c] += weighted_sum(ps, P_CONTACT + c, h_acc)
             s_new = dt if last else s + h_acc
             t_now = t_k + s_new
-            a_now = a1 if last else a0 + dag * s_new
+            ground_at(gnd, last, s_new)
+            a_now = gnd[G_NOW, 0]
             # peaks over the step, from both ends (the states of its start still committed)
             for i in range(n):
-                aabs1[i] = ks[6, n + i] + r[i] * a_now
+                aabs1[i] = ks[6, n + i] + r[i, 0] * a_now
+            add_ground_rest(aabs1, 1.0, r, gnd, G_NOW, n)
             # (the jerk at both ends only where an acceleration comes within half of its
             # peak so far: an error-controlled step is a small fraction of the fastest
             # period, so its interior cannot rise that far above its ends)
@@ -270,11 +280,12 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                                             ccode, cparams, committed, wc, w_start, imp_row,
                                             last_f, ws_i, imp, cpeak, cpeak_t, ccount)
             if state_changed:
-                deriv_call(x, x, a_now, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+                deriv_call(x, x, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                            cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx,
                            px, 0)
                 for i in range(n):
-                    aabs0[i] = kx[0, n + i] + r[i] * a_now
+                    aabs0[i] = kx[0, n + i] + r[i, 0] * a_now
+                add_ground_rest(aabs0, 1.0, r, gnd, G_NOW, n)
             else:
                 for i in range(m):
                     kx[0, i] = ks[6, i]
@@ -304,7 +315,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             s = s_new
         for i in range(n):
             arel0[i] = kx[0, n + i]
-        grid_outputs(k + 1, ag[k + 1], x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap,
+        grid_outputs(k + 1, ag, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap,
                      ccode, cparams, committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f,
                      u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, lin)
         k += 1
@@ -317,17 +328,19 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
 
 
 @njit(**INLINE)
-def grid_outputs(o, a_o, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, ccode, cparams,
+def grid_outputs(o, ag, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, ccode, cparams,
                  committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f, u_out, v_out, acc_out,
                  pen_out, f_out, vs_out, e_out, lin):
-    """Write the outputs of grid point ``o`` (ground acceleration ``a_o``) from the state
+    """Write the outputs of grid point ``o`` (ground components ``ag[o]``) from the state
     ``x`` and ``kx = f(x)`` after an adaptive grid step."""
     n = r.shape[0]
     band_mv(k_band, c_band, x, n, bw, lin)
+    a_o = ag[o, 0]
     for i in range(n):
         u_out[o, i] = x[i]
         v_out[o, i] = x[n + i]
-        acc_out[o, i] = kx[0, n + i] + r[i] * a_o
+        acc_out[o, i] = kx[0, n + i] + r[i, 0] * a_o
+    add_ground_rest(acc_out[o], 1.0, r, ag, o, n)
     ek = 0.0
     es = 0.0
     for i in range(n):

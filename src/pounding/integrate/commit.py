@@ -127,7 +127,7 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
                 # force rate at the step end, then the largest force inside the step from
                 # the cubic Hermite of (F, dF/dt) at its two ends
                 rel_acc = 0.0
-                for q in range(4):
+                for q in range(cdof.shape[1]):
                     rel_acc += cw[c, q] * dx[n + cdof[c, q]]
                 df1 = kd * rate + kr * rel_acc
                 h = t_now - last_f[c, 0]

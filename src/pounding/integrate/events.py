@@ -238,7 +238,7 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
         acc0 = 0.0
         acc1 = 0.0
-        for q in range(4):
+        for q in range(cdof.shape[1]):
             acc0 += cw[c, q] * k0[0, n + cdof[c, q]]
             acc1 += cw[c, q] * k1[6, n + cdof[c, q]]
         if committed[c, V0] == 0.0:
@@ -297,7 +297,7 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
 
 
 @njit(**NRT_FREE)
-def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0, dag, s, n, bw,
+def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n, bw,
            k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi,
            s_code, s_par, s_zi, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol,
            ws_i):
@@ -316,7 +316,7 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0, dag, s
     have_after = False
     err_after = 0.0
     for _ in range(60):
-        err = rk_step(x, kx, px, t_try, a0, dag, s, a0 + dag * (s + t_try), n, bw, k_band,
+        err = rk_step(x, kx, px, t_try, gnd, s, False, n, bw, k_band,
                       c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo,
                       s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp, yb, atol,
                       rtol)
@@ -355,7 +355,7 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, a0, dag, s
             t_try = 0.5 * (lo + hi)
     if not have_after:
         # the bracket's after end is the full step (or the grazing test)
-        err_after = rk_step(x, kx, px, hi, a0, dag, s, a0 + dag * (s + hi), n, bw, k_band,
+        err_after = rk_step(x, kx, px, hi, gnd, s, False, n, bw, k_band,
                             c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
                             s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1,
                             atol, rtol)

@@ -2,11 +2,13 @@
 
 With every contact open and every storey linear, the structure is linear and the ground
 acceleration is linear over a grid step, so the step is taken with the exact propagator of
-:mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``), block by block
-(the buildings are uncoupled while the gaps are open). The input energy over the step is an
-exact quadratic form in ``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same
-sweep over the operator's columns as Φ x; the viscous work of the step is the input work
-less the change of kinetic and strain energy, exactly.
+:mod:`pounding.integrate.propagator` (``x ← Φ x + Γ0 a_k + Γ1 a_{k+1}``, Γ0 and Γ1 of shape
+(2N, G) for the G ground components), block by block (the buildings are uncoupled while the
+gaps are open). The input energy over the step is an exact quadratic form in
+``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same sweep over the operator's
+columns as Φ x (the first ground component; the others after, :func:`ground_rest_step`);
+the viscous work of the step is the input work less the change of kinetic and strain
+energy, exactly.
 
 After each step every gap is checked for closing at the step end and inside it, from the
 quintic Hermite of its ``(δ, δ̇, δ̈)`` at both ends (:func:`pounding.integrate.events.
@@ -35,30 +37,62 @@ from pounding.integrate.layout import (
     W_PEAK_MARGIN,
 )
 from pounding.integrate.peaks import acc_peak_between, track_exact_step, track_uncoupled_step
-from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row
+from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row, ground_rest
 
 
 @njit(**NRT_FREE)
 def one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1):
     """The exact step of a one-floor block p (the block sweep of :func:`free_run`, written
-    out): writes ``x1[p]``, ``x1[n + p]``; returns the block's two input-energy terms."""
+    out) under the first ground component: writes ``x1[p]``, ``x1[n + p]``; returns the
+    block's two input-energy terms of that component."""
     u = x[p]
     v = x[n + p]
-    x1[p] = g0[p] * a0 + g1[p] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
-    x1[n + p] = g0[n + p] * a0 + g1[n + p] * a1 + fops[p, 1] * u + fops[n + p, 1] * v
+    x1[p] = g0[p, 0] * a0 + g1[p, 0] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
+    x1[n + p] = g0[n + p, 0] * a0 + g1[n + p, 0] * a1 + fops[p, 1] * u + fops[n + p, 1] * v
     return (fops[p, 2] * u + fops[n + p, 2] * v, fops[p, 3] * u + fops[n + p, 3] * v)
 
 
 @njit(**NRT_FREE)
-def floor_rel_acc(j, y, ag, n, bw, k_band, c_band, m_inv, r):
-    """Relative acceleration of floor j at state y with every gap open and every storey
-    linear: ``−(K u + C u̇)_j / m_j − r_j a_g`` (row j of the banded products)."""
+def floor_rel_acc(j, y, ag, kg, n, bw, k_band, c_band, m_inv, r):
+    """Relative acceleration of floor j at state y (grid point kg of the ground components
+    ``ag``) with every gap open and every storey linear: ``−(K u + C u̇)_j / m_j −
+    Σ_g R_jg a_g`` (row j of the banded products)."""
     s = 0.0
     for d in range(2 * bw + 1):
         col = j + d - bw
         if 0 <= col < n:
             s += k_band[d, j] * y[col] + c_band[d, j] * y[n + col]
-    return -s * m_inv[j] - r[j] * ag
+    return -s * m_inv[j] - r[j, 0] * ag[kg, 0] - ground_rest(r, j, ag, kg)
+
+
+@njit(**NRT_FREE)
+def ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1):
+    """The ground components after the first over the exact step from grid point k:
+    adds ``Γ0[:, g] a_k,g + Γ1[:, g] a_k+1,g`` to ``x1`` and returns their input energy
+    over the step (the linear terms ``w_in · z`` of each block, and every term of the
+    quadratic form in the grid values that involves one of them). Nothing for G = 1."""
+    ng = g0.shape[1]
+    e = 0.0
+    for g in range(1, ng):
+        b0 = ag[k, g]
+        b1 = ag[k + 1, g]
+        for i in range(2 * n):
+            x1[i] += g0[i, g] * b0 + g1[i, g] * b1
+        for b in range(blk.shape[0] - 1):
+            p = blk[b]
+            nb = blk[b + 1] - p
+            col = 2 * nb + 2 * g
+            for j in range(nb):
+                u = x[p + j]
+                v = x[n + p + j]
+                e += ((fops[p + j, col] * u + fops[n + p + j, col] * v) * b0
+                      + (fops[p + j, col + 1] * u + fops[n + p + j, col + 1] * v) * b1)
+    for g in range(ng):
+        for q in range(ng):
+            if g + q > 0:
+                e += (faa[0, g, q] * ag[k, g] * ag[k, q] + faa[1, g, q] * ag[k, g] * ag[k + 1, q]
+                      + faa[2, g, q] * ag[k + 1, g] * ag[k + 1, q])
+    return e
 
 
 @njit(**NRT_FREE)
@@ -88,9 +122,12 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
     wsum = 0.0  # contact work does not change while every gap is open
     for c in range(nc):
         wsum += wc[c]
+    ng = g0.shape[1]
     while k < k1:
-        a0 = ag[k]
-        a1 = ag[k + 1]
+        # the first ground component in the block sweep, the others after it
+        # (ground_rest_step)
+        a0 = ag[k, 0]
+        a1 = ag[k + 1, 0]
         # block by block (FreeStep): acc = [Φ_b z, w_in · z] in one sweep over the
         # columns of the block operator (each row accumulates in a fixed order)
         lin_i0 = 0.0
@@ -113,8 +150,8 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                 nb2 = 2 * nb
                 rows = nb2 + 2
                 for ir in range(nb):
-                    acc[ir] = g0[p + ir] * a0 + g1[p + ir] * a1
-                    acc[nb + ir] = g0[n + p + ir] * a0 + g1[n + p + ir] * a1
+                    acc[ir] = g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1
+                    acc[nb + ir] = g0[n + p + ir, 0] * a0 + g1[n + p + ir, 0] * a1
                 acc[nb2] = 0.0
                 acc[nb2 + 1] = 0.0
                 # columns of floor j's displacement and velocity together; the loop over rows
@@ -129,6 +166,9 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                     x1[n + p + ir] = acc[nb + ir]
                 lin_i0 += acc[nb2]
                 lin_i1 += acc[nb2 + 1]
+        e_rest = 0.0
+        if ng > 1:
+            e_rest = ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1)
         # could any gap close at the step end, or come within graze_tol of closing inside
         # it? Then the step is not taken. (A cheap bound on the cubic through δ, δ̇ first;
         # the quintic through δ, δ̇, δ̈ only where that cannot rule a touch out.)
@@ -140,10 +180,11 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
             if d1 > 0.0 or max(gd[c], d1) + 0.25 * dt * (abs(gr[c]) + abs(r1)) > -graze_tol:
                 q0 = 0.0
                 q1 = 0.0
-                for q in range(4):
+                for q in range(cdof.shape[1]):
                     j = cdof[c, q]
-                    q0 += cw[c, q] * floor_rel_acc(j, x, a0, n, bw, k_band, c_band, m_inv, r)
-                    q1 += cw[c, q] * floor_rel_acc(j, x1, a1, n, bw, k_band, c_band, m_inv, r)
+                    q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, bw, k_band, c_band, m_inv, r)
+                    q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, bw, k_band, c_band,
+                                                   m_inv, r)
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
                     ws_f[W_E_INPUT] = e_in
                     ws_f[W_E_DAMP] = e_d
@@ -156,7 +197,8 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                     return k
         # input energy over the step: an exact quadratic form
         e_step = (a0 * lin_i0 + a1 * lin_i1
-                  + (faa[0] * a0 * a0 + faa[1] * a0 * a1 + faa[2] * a1 * a1))
+                  + (faa[0, 0, 0] * a0 * a0 + faa[1, 0, 0] * a0 * a1 + faa[2, 0, 0] * a1 * a1))
+        e_step += e_rest
         e_in += e_step
         # outputs at grid point k + 1: no contact force, no yielding storey, so the absolute
         # acceleration is ü + r a_g = −M⁻¹(K u + C u̇); and the peaks over the step: a
@@ -194,8 +236,8 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                 # so far (nothing between two samples further below can beat it)
                 lim = keep * pk[i, PK_A]
                 if ((v0 > 0.0) != (v > 0.0)) | (abs(aa) >= lim) | (abs(acc_out[k, i]) >= lim):
-                    track_uncoupled_step(t0, dt, i, u0, v0, acc_out[k, i], u, v, aa, a0, a1,
-                                         r[i], kk, cc, mi, pk)
+                    track_uncoupled_step(t0, dt, i, u0, v0, acc_out[k, i], u, v, aa, ag, k,
+                                         r, kk, cc, mi, pk)
         else:
             band_mv(k_band, c_band, x1, n, bw, lin)
             for i in range(n):
@@ -231,7 +273,7 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
             if anyhit > 0.0:
                 for i in range(n):
                     if acc[i] != 0.0:
-                        track_exact_step(t0, dt, n, i, k, k_entry, below, x, x1, a0, a1, ag,
+                        track_exact_step(t0, dt, n, i, k, k_entry, below, x, x1, ag,
                                          r, v_out, acc_out, bw, k_band, c_band, m_inv, pk)
             for i in range(2 * n):
                 x[i] = x1[i]

@@ -9,7 +9,7 @@ import weakref
 
 import numpy as np
 
-from pounding.ground_motion import GroundMotion
+from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.layout import ENERGY_COLUMNS
 from pounding.model import PoundingModel
 from pounding.validation import positive
@@ -26,10 +26,13 @@ refused before anything is allocated."""
 def history_bytes(model: PoundingModel, nt: int) -> int:
     """Bytes of the histories a run of ``nt`` output times writes: displacement, velocity,
     acceleration of every floor, penetration and force of every contact, shear of every
-    yielding storey, seven energies and the ground acceleration, 8 bytes each."""
+    yielding storey, the energies and the ground acceleration (each of its G components), 8
+    bytes each."""
     n, nc = model.n_dof, len(model.contacts)
     ns = len(model.yielding_storeys)
-    return 8 * nt * (3 * n + 2 * nc + ns + ENERGY_COLUMNS + 1)
+    r = np.asarray(model.system.r)
+    g = 1 if r.ndim == 1 else r.shape[1]
+    return 8 * nt * (3 * n + 2 * nc + ns + ENERGY_COLUMNS + g)
 
 
 def physical_memory() -> int:
@@ -103,8 +106,11 @@ def grid_step(record_dt: float, dt: float | None = None) -> float:
     return record_dt / m
 
 
-def ground_on_grid(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
-    """Ground acceleration [m/s²] at ``k·dt`` for k = 0 … ⌈t_end/dt⌉.
+def ground_on_grid(motion: GroundMotion | GroundMotionComponents, dt: float,
+                   t_end: float) -> np.ndarray:
+    """Ground acceleration [m/s²] at ``k·dt`` for k = 0 … ⌈t_end/dt⌉: (nt,) for a
+    :class:`GroundMotion`, (nt, G) for :class:`GroundMotionComponents` (each component as
+    one record).
 
     The record is linear between its samples; after its last sample it returns linearly to
     zero over one record step and stays there — a rule that does not depend on ``dt``.
@@ -112,17 +118,39 @@ def ground_on_grid(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
     nt = int(math.ceil(t_end / dt - 1e-9)) + 1
     if nt < 2:
         raise ValueError(f"duration: {t_end:g} s is shorter than one output step ({dt:g} s)")
+    if isinstance(motion, GroundMotionComponents):
+        return np.ascontiguousarray(np.column_stack(
+            [ground_on_grid(c, dt, t_end) for c in motion.components]))
     t = np.arange(nt) * dt
     t_rec = np.append(motion.time, motion.time[-1] + motion.dt)
     a_rec = np.append(motion.accel, 0.0)
     return np.interp(t, t_rec, a_rec, right=0.0)
 
 
-_GRID_MEMO: "weakref.WeakKeyDictionary[GroundMotion, dict[tuple[float, float], np.ndarray]]" = (
+_GRID_MEMO: "weakref.WeakKeyDictionary[object, dict[tuple[float, float], np.ndarray]]" = (
     weakref.WeakKeyDictionary())
 
 
-def ground_on_grid_memo(motion: GroundMotion, dt: float, t_end: float) -> np.ndarray:
+def n_ground_components(motion: GroundMotion | GroundMotionComponents) -> int:
+    """G of a motion: 1 for a :class:`GroundMotion`."""
+    return motion.n_components if isinstance(motion, GroundMotionComponents) else 1
+
+
+def check_ground_components(model: PoundingModel,
+                            motion: GroundMotion | GroundMotionComponents) -> None:
+    """One line if the motion's components do not match the columns of the model's
+    influence matrix R (an (N,) influence vector is one column)."""
+    r = np.asarray(model.system.r)
+    n_r = 1 if r.ndim == 1 else r.shape[1]
+    n_m = n_ground_components(motion)
+    if n_m != n_r:
+        raise ValueError(f"motion: {n_m} ground component{'s' if n_m != 1 else ''} for a "
+                         f"model whose influence matrix R has {n_r} column"
+                         f"{'s' if n_r != 1 else ''} (one component per column)")
+
+
+def ground_on_grid_memo(motion: GroundMotion | GroundMotionComponents, dt: float,
+                        t_end: float) -> np.ndarray:
     """:func:`ground_on_grid`, remembered per record (records are read-only) for a few
     (step, duration) pairs: repeated runs and sweeps on one record interpolate it once.
     The array is read-only."""

@@ -50,9 +50,11 @@ from pounding.integrate.layout import (
     WS_I_SIZE,
 )
 from pounding.integrate.rhs import (
+    G_NOW,
     INLINE,
     deriv_call,
     gap_row,
+    set_ground,
 )
 
 __all__ = ["ENERGY_COLUMNS", "IMP_COLUMNS", "PK_COLUMNS", "WS_F_SIZE", "WS_I_SIZE",
@@ -66,27 +68,28 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
                     last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out,
                     imp, cpeak, cpeak_t, ccount, pk, ks, ps, ks_b, ps_b, kx, px, ytmp, y1, yb,
                     x1, acc, lin, work, gd, gr, gd1, gr1, arel0, arel1, jk, jk1, aabs0, aabs1,
-                    m_inv):
+                    m_inv, gnd):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``.
 
     Parameters (all arrays are updated in place)
     ----------
     dt : float
-        Grid step [s]. ``ag`` (nt,) ground acceleration at grid points [m/s²].
+        Grid step [s]. ``ag`` (nt, G): the G ground acceleration components at grid points
+        [m/s²] (along the columns of R).
     exact_free : bool
         Take steps without contact with the exact propagator (cost O(N²) a step, cheapest
         for small models); otherwise with the adaptive RK (O(N·bw) a stage).
     blk, fops, g0, g1, faa
         The exact step over dt (:class:`pounding.integrate.propagator.FreeStep`: blocks,
-        block operators, Γ0, Γ1, input-energy coefficients of a_g²; unused unless
-        ``exact_free``).
+        block operators, Γ0 and Γ1 (2N, G), input-energy coefficients of the products of
+        the ground components (3, G, G); unused unless ``exact_free``).
     bw, k_band, c_band, m_diag, mr, r
         Half-bandwidth of K and C; K of the linear storeys [N/m] and C [N·s/m] in band
         storage (``(2 bw + 1, N)``, :func:`pounding.integrate.band_storage`); lumped floor
-        masses [kg], M r, r.
+        masses [kg], M R [kg] and the influence matrix R, both (N, G).
     cdof, cw, cgap, ccode, cparams
-        Contacts: DOFs and signed weights of the two contact points (n_c, 4), gap [m], law
-        code, law constants.
+        Contacts: DOFs and signed weights of the two contact points (n_c, W: any width),
+        gap [m], law code, law constants.
     s_lo, s_hi, s_code, s_par, s_zi
         Yielding storeys: DOF below (−1 ground) and above, storey-law code and constants,
         index of the storey's ``z`` among the extra states (−1: none). Empty for linear
@@ -123,20 +126,22 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
     pk : (N, PK_COLUMNS)
         Located peaks of every floor with their times (:mod:`pounding.integrate.peaks`).
     ks, ps, ks_b, ps_b, kx, px, ytmp, y1, yb, x1, acc, lin, work, gd, gr, gd1, gr1, arel0,
-    arel1, jk, jk1, aabs0, aabs1, m_inv
+    arel1, jk, jk1, aabs0, aabs1, m_inv, gnd
         Scratch (:func:`pounding.integrate.kernel_scratch`): RK stages and powers of the
         main and the bracketing steps (7, 2N + n_z) and (7, 4 + n_c); f and the powers at
         the current state (1, …); trial states (2N + n_z,) ×4; the exact step's sweep
         (4N + 4); K u and C u̇ (2, N); (2N,); every contact's δ and δ̇ now and at the end of
         a trial exact step (n_c,) ×4; every floor's relative acceleration ×2, jerk ×2 and
-        absolute acceleration ×2 (N,); 1 / floor mass (N,). Allocated by the caller, once a
+        absolute acceleration ×2 (N,); 1 / floor mass (N,); the ground components at the
+        step's ends, their slope and now (4, G). Allocated by the caller, once a
         run, so that this function compiles quickly (each allocation inside it cost
         compile time).
     """
     n = r.shape[0]
     graze_tol = EVENT_TOL * atol[0]
     # the state at grid point k0: f, every gap's δ and δ̇, the accelerations
-    deriv_call(x, x, ag[k0], n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+    set_ground(gnd, G_NOW, ag, k0)
+    deriv_call(x, x, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx, px, 0)
     _gaps_now(x, n, cdof, cw, cgap, gd, gr)
     for i in range(n):
@@ -152,7 +157,8 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
             if k >= k1:
                 break
             ws_i[I_MODE] = 1
-            deriv_call(x, x, ag[k], n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
+            set_ground(gnd, G_NOW, ag, k)
+            deriv_call(x, x, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                        ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
                        lin, kx, px, 0)
         # (else kx holds f at grid point k: the last stage of the grid step before, or
@@ -163,7 +169,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
                          w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out, pen_out,
                          f_out, vs_out, e_out, imp, cpeak, cpeak_t, ccount, pk, kx, px, ks, ps,
                          ks_b, ps_b, ytmp, y1, yb, lin, work, arel0, jk, jk1, aabs0, aabs1, gd,
-                         gr)
+                         gr, gnd)
         if k < 0:
             return
         if exact_free and not any_closed(committed):

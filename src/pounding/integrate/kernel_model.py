@@ -77,10 +77,10 @@ class KernelModel(NamedTuple):
     k_band: np.ndarray  #: K in band storage
     c_band: np.ndarray  #: C [N·s/m] in band storage
     m_diag: np.ndarray  #: lumped floor masses [kg]
-    mr: np.ndarray  #: M r [kg]
-    r: np.ndarray  #: influence vector
-    cdof: np.ndarray  #: contact DOFs (n_c, 4)
-    cw: np.ndarray  #: contact weights (n_c, 4)
+    mr: np.ndarray  #: M R [kg], (N, G)
+    r: np.ndarray  #: influence matrix R of the G ground components, (N, G)
+    cdof: np.ndarray  #: contact DOFs (n_c, W)
+    cw: np.ndarray  #: contact weights (n_c, W)
     cgap: np.ndarray  #: gaps [m]
     ccode: np.ndarray  #: contact-law codes
     cparams: np.ndarray  #: contact-law constants
@@ -105,7 +105,8 @@ def _read_only_free_step(fs: FreeStep) -> FreeStep:
 
 
 NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), np.zeros((2, 4)),
-                                              np.zeros(2), np.zeros(2), np.zeros(3)))
+                                              np.zeros((2, 1)), np.zeros((2, 1)),
+                                              np.zeros((3, 1, 1))))
 """The exact-step arguments of an RK-stepped run, which the kernel never reads: read-only
 like a real :class:`FreeStep`'s arrays, so that numba compiles the kernel for one signature
 only (not a second one, 37–56 s on 2 cores, for yielding or very large models)."""
@@ -130,12 +131,14 @@ def kernel_model(model: PoundingModel) -> KernelModel:
 
 STRUCTURES = Memo(max_items=64, max_bytes=256 << 20)
 """The buildings' part of a :class:`KernelModel` (everything but the contacts), by the
-identity of the buildings and the links between them: the cases of a sweep that change only gaps, contact law or
-record share it, with its exact steps."""
+identity of the buildings, the links between them and the influence matrix: the cases of a
+sweep that change only gaps, contact law or record share it, with its exact steps."""
 
 
 def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
-    key = (tuple(map(id, model.buildings)), tuple(link.describe() for link in model.links))
+    r = np.asarray(model.system.r)
+    key = (tuple(map(id, model.buildings)), tuple(link.describe() for link in model.links),
+           r.shape, r.tobytes())
     structure = STRUCTURES.get(key, lambda: _assemble_structure(model),
                                size=lambda st: 8 * 8 * st["n"] ** 2, keep=model.buildings)
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
@@ -147,18 +150,26 @@ def _assemble_structure(model: PoundingModel) -> dict:
     """The fields of a :class:`KernelModel` that depend on the buildings (and the links
     between them) alone."""
     sys_ = model.system
-    M, C, r = sys_.M, sys_.C, sys_.r
+    M, C = sys_.M, sys_.C
+    r = influence_matrix(sys_.r)
     K = model.linear_stiffness()
     m_diag = np.diag(M).copy()
     if np.any(M != np.diag(m_diag)):
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
     bw = half_bandwidth(K, C)
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
-    return dict(n=r.size, nz=int(np.sum(s_zi >= 0)), bw=bw, K=K, k_band=band_storage(K, bw),
+    return dict(n=r.shape[0], nz=int(np.sum(s_zi >= 0)), bw=bw, K=K, k_band=band_storage(K, bw),
                 c_band=band_storage(C, bw), m_diag=m_diag, mr=np.ascontiguousarray(M @ r),
-                r=np.array(r, dtype=float), s_lo=s_lo, s_hi=s_hi, s_code=s_code,
+                r=np.ascontiguousarray(r), s_lo=s_lo, s_hi=s_hi, s_code=s_code,
                 s_par=np.ascontiguousarray(s_par), s_zi=s_zi, below=floor_below(model),
                 free_steps={})
+
+
+def influence_matrix(r: np.ndarray) -> np.ndarray:
+    """The influence matrix R (N, G) of a system's ``r``: an (N,) influence vector is the
+    one column of G = 1."""
+    r = np.asarray(r, dtype=float)
+    return np.array(r.reshape(r.shape[0], -1), dtype=float)
 
 
 def floor_below(model: PoundingModel) -> np.ndarray:
@@ -193,4 +204,4 @@ def kernel_scratch(km: KernelModel, m: int) -> tuple[np.ndarray, ...]:
     floors = np.zeros((6, n))
     return (stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)), np.zeros((1, npw)),
             *states, np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n), *gaps, *floors,
-            1.0 / km.m_diag)
+            1.0 / km.m_diag, np.zeros((4, km.r.shape[1])))

@@ -27,7 +27,7 @@ from numba import njit
 
 from pounding.integrate.events import hermite_max, quintic_max
 from pounding.integrate.layout import PK_A, PK_D, PK_U
-from pounding.integrate.rhs import INLINE, NRT_FREE
+from pounding.integrate.rhs import INLINE, NRT_FREE, ground_rest
 
 
 @njit(**NRT_FREE)
@@ -106,15 +106,18 @@ def track_step(t0, h, n, below, x0, arel0, aabs0, j0, x1, arel1, aabs1, j1, pk, 
 
 
 @njit(**NRT_FREE)
-def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, aabs1, pk):
+def track_floor(t0, h, n, i, below, x0, x1, ag, k, r, aabs0, aabs1, pk):
     """The displacement and drift peaks of floor i over an exact step ``[t0, t0 + h]``
     (called where its velocity or drift rate changes sign) from the states ``x0``, ``x1``
-    at its ends, the ground accelerations ``a0``, ``a1`` and the absolute accelerations."""
+    at its ends (grid points k and k + 1 of the ground components ``ag``) and the absolute
+    accelerations."""
     lo = below[i]
     v0 = x0[n + i]
     v1 = x1[n + i]
-    ar0 = aabs0[i] - r[i] * a0
-    ar1 = aabs1[i] - r[i] * a1
+    a0 = ag[k, 0]
+    a1 = ag[k + 1, 0]
+    ar0 = aabs0[i] - r[i, 0] * a0 - ground_rest(r, i, ag, k)
+    ar1 = aabs1[i] - r[i, 0] * a1 - ground_rest(r, i, ag, k + 1)
     if (v0 > 0.0) != (v1 > 0.0):
         update_quintic(pk, i, PK_U, t0, h, x0[i], v0, ar0, x1[i], v1, ar1)
     if lo >= 0:
@@ -122,21 +125,22 @@ def track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, aabs0, aabs1, pk):
         dr1 = v1 - x1[n + lo]
         if (dr0 > 0.0) != (dr1 > 0.0):
             update_quintic(pk, i, PK_D, t0, h, x0[i] - x0[lo], dr0,
-                           ar0 - (aabs0[lo] - r[lo] * a0), x1[i] - x1[lo], dr1,
-                           ar1 - (aabs1[lo] - r[lo] * a1))
+                           ar0 - (aabs0[lo] - r[lo, 0] * a0 - ground_rest(r, lo, ag, k)),
+                           x1[i] - x1[lo], dr1,
+                           ar1 - (aabs1[lo] - r[lo, 0] * a1 - ground_rest(r, lo, ag, k + 1)))
     elif (v0 > 0.0) != (v1 > 0.0):
         update_quintic(pk, i, PK_D, t0, h, x0[i], v0, ar0, x1[i], v1, ar1)
 
 
 @njit(**NRT_FREE)
-def track_uncoupled_step(t0, h, i, u0, v0, aa0, u1, v1, aa1, a0, a1, ri, k, c, m_inv, pk):
+def track_uncoupled_step(t0, h, i, u0, v0, aa0, u1, v1, aa1, ag, j, r, k, c, m_inv, pk):
     """The peaks of floor i, a one-storey building of stiffness k and damping c, over an
-    exact step from ``t0`` (called where a test of :func:`pounding.integrate.exact_steps.
-    free_run` found one may lie): its relative accelerations and jerks ``−(k u̇ + c ü)/m``
-    at both ends, then the quintic for displacement and drift (the same here) and the
-    cubic for the absolute acceleration."""
-    ar0 = aa0 - ri * a0
-    ar1 = aa1 - ri * a1
+    exact step from ``t0`` (grid point j of the ground components ``ag``; called where a
+    test of :func:`pounding.integrate.exact_steps.free_run` found one may lie): its
+    relative accelerations and jerks ``−(k u̇ + c ü)/m`` at both ends, then the quintic for
+    displacement and drift (the same here) and the cubic for the absolute acceleration."""
+    ar0 = aa0 - r[i, 0] * ag[j, 0] - ground_rest(r, i, ag, j)
+    ar1 = aa1 - r[i, 0] * ag[j + 1, 0] - ground_rest(r, i, ag, j + 1)
     if (v0 > 0.0) != (v1 > 0.0):
         update_quintic(pk, i, PK_U, t0, h, u0, v0, ar0, u1, v1, ar1)
         update_quintic(pk, i, PK_D, t0, h, u0, v0, ar0, u1, v1, ar1)
@@ -146,14 +150,14 @@ def track_uncoupled_step(t0, h, i, u0, v0, aa0, u1, v1, aa1, a0, a1, ri, k, c, m
 
 
 @njit(**NRT_FREE)
-def track_exact_step(t0, h, n, i, k, k_entry, below, x0, x1, a0, a1, ag, r, v_out, acc_out,
+def track_exact_step(t0, h, n, i, k, k_entry, below, x0, x1, ag, r, v_out, acc_out,
                      bw, k_band, c_band, m_inv, pk):
     """The peaks of floor i over the exact step from grid point k (time ``t0``) to k + 1,
     where a sign test of :func:`pounding.integrate.exact_steps.free_run` found one may lie:
     displacement and drift from the states, acceleration from the samples k − 1, k, k + 1
     of the outputs (the step before k only if it was exact too, ``k − 1 ≥ k_entry``)."""
     o = k + 1
-    track_floor(t0, h, n, i, below, x0, a0, x1, a1, r, acc_out[k], acc_out[o], pk)
+    track_floor(t0, h, n, i, below, x0, x1, ag, k, r, acc_out[k], acc_out[o], pk)
     if k >= 1:
         ak = abs(acc_out[k, i])
         if ak >= abs(acc_out[k - 1, i]) and ak >= abs(acc_out[o, i]) and ak > 0.0:
@@ -173,7 +177,8 @@ def row_jerk(i, j, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r):
         col = i + d - bw
         if 0 <= col < n:
             s += k_band[d, i] * v_out[j, col] + c_band[d, i] * (acc_out[j, col]
-                                                                 - r[col] * ag[j])
+                                                                 - r[col, 0] * ag[j, 0]
+                                                                 - ground_rest(r, col, ag, j))
     return -s * m_inv[i]
 
 

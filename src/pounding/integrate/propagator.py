@@ -1,14 +1,15 @@
 """Exact discrete-time propagation of the linear structure between impacts.
 
 While every gap is open the buildings are linear: ``ẋ = A x + B a_g(t)`` with
-``x = [u, u̇]``, ``A = [[0, I], [−M⁻¹K, −M⁻¹C]]`` and ``B = [0, −r]``. The ground
-acceleration of a record is linear between its samples, so over one step ``h`` on which
-``a_g`` is linear the solution is exactly
+``x = [u, u̇]``, ``A = [[0, I], [−M⁻¹K, −M⁻¹C]]`` and ``B = [0, −R]``, R the (N, G)
+influence matrix of the G ground components ``a_g`` (an (N,) influence vector is G = 1).
+The ground acceleration of a record is linear between its samples, so over one step ``h``
+on which ``a_g`` is linear the solution is exactly
 
     x(h) = Φ x(0) + Γ0 a_g(0) + Γ1 a_g(h)
 
-with ``Φ = e^{Ah}`` and Γ0, Γ1 from one matrix exponential of the augmented system
-``d/dt [x, a, ȧ] = [[A, B, 0], [0, 0, 1], [0, 0, 0]] [x, a, ȧ]`` (Van Loan 1978, IEEE TAC
+with ``Φ = e^{Ah}`` and Γ0, Γ1 (2N × G) from one matrix exponential of the augmented system
+``d/dt [x, a, ȧ] = [[A, B, 0], [0, 0, I], [0, 0, 0]] [x, a, ȧ]`` (Van Loan 1978, IEEE TAC
 23(3):395–404; the same idea as Nigam & Jennings' exact piecewise-linear method for SDOF,
 BSSA 59(2):909–922, 1969). The time-history kernel uses it for every step without
 contact; it is exact to round-off whatever the step.
@@ -24,7 +25,8 @@ from numpy.typing import NDArray
 
 
 class Propagator(NamedTuple):
-    """``x(h) = phi @ x(0) + gamma0 * a_g(0) + gamma1 * a_g(h)`` for one step ``h`` [s]."""
+    """``x(h) = phi @ x(0) + gamma0 @ a_g(0) + gamma1 @ a_g(h)`` for one step ``h`` [s]
+    (``gamma0``, ``gamma1``: (2N,) for an influence vector, (2N, G) for a matrix)."""
 
     phi: NDArray[np.float64]
     gamma0: NDArray[np.float64]
@@ -59,7 +61,8 @@ def _remembered(cache: dict, compute, M, C, K, r, h):  # noqa: ANN001 (private h
     """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes and ``h``;
     the result's arrays are made read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
     key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
-                                for a in (M, C, K, r)) + repr((M.shape, float(h))).encode()).digest()
+                                for a in (M, C, K, r))
+                       + repr((M.shape, np.shape(r), float(h))).encode()).digest()
     hit = cache.get(key)
     if hit is None:
         hit = compute(M, C, K, r, h)
@@ -79,24 +82,24 @@ def compute_propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArra
     ----------
     M, C, K : ndarray (N, N)
         Mass [kg], damping [N·s/m], stiffness [N/m].
-    r : ndarray (N,)
-        Influence vector.
+    r : ndarray (N,) or (N, G)
+        Influence vector, or influence matrix of G ground components.
     h : float
         Step [s].
     """
+    f, _ = _augmented(M, C, K, r, h)
     n = M.shape[0]
-    a = state_matrix(M, C, K)
-    z = np.zeros((2 * n + 2, 2 * n + 2))
-    z[: 2 * n, : 2 * n] = a
-    z[n : 2 * n, 2 * n] = -r
-    z[2 * n, 2 * n + 1] = 1.0
+    g = f.shape[0] // 2 - n
     from scipy.linalg import expm
 
-    e = expm(z * h)
+    e = expm(f * h)
     phi = np.ascontiguousarray(e[: 2 * n, : 2 * n])
-    e12 = e[: 2 * n, 2 * n]
-    e13 = e[: 2 * n, 2 * n + 1]
-    return Propagator(phi, np.ascontiguousarray(e12 - e13 / h), np.ascontiguousarray(e13 / h))
+    e12 = e[: 2 * n, 2 * n : 2 * n + g]
+    e13 = e[: 2 * n, 2 * n + g :]
+    g0, g1 = e12 - e13 / h, e13 / h
+    if np.ndim(r) == 1:
+        g0, g1 = g0[:, 0], g1[:, 0]
+    return Propagator(phi, np.ascontiguousarray(g0), np.ascontiguousarray(g1))
 
 
 # ----------------------------------------------------------------------------- exact steps
@@ -106,22 +109,26 @@ class FreeStep(NamedTuple):
     The structure splits into independent blocks of consecutive floors (no stiffness or
     damping couples two blocks: typically one block per building). Block ``b`` holds floors
     ``blk[b] … blk[b+1]−1``; its local state is ``z_b = [u_b, u̇_b]`` (length ``2 n_b``).
-    ``ops[glob_b, :2n_b+2]`` is that block's operator, stored column by column: column ``j``
-    (``2 n_b + 2`` numbers) multiplies ``z_b[j]`` and holds
+    ``ops[glob_b, :2n_b+2G]`` is that block's operator, stored column by column: column ``j``
+    (``2 n_b + 2 G`` numbers) multiplies ``z_b[j]`` and holds
 
     * rows ``0 … 2n_b−1``: column ``j`` of the block of Φ;
-    * rows ``2n_b, 2n_b+1``: the linear input-energy terms ``w_in,0, w_in,1``.
+    * rows ``2n_b + 2g, 2n_b + 2g + 1``: the linear input-energy terms ``w_in,0,g``,
+      ``w_in,1,g`` of ground component g.
 
-    Over the step, with ``z = z_b(0)`` and ground accelerations ``a0``, ``a1`` at its ends,
+    Over the step, with ``z = z_b(0)`` and the ground components ``a0``, ``a1`` (G,) at its
+    ends,
 
         z_b(h)   = Φ_b z + γ0_b a0 + γ1_b a1
-        E_input  = Σ_b (w_in,0 · z) a0 + (w_in,1 · z) a1 + aa · (a0², a0 a1, a1²)
+        E_input  = Σ_b Σ_g (w_in,0,g · z) a0_g + (w_in,1,g · z) a1_g
+                   + Σ_gq aa[0,g,q] a0_g a0_q + aa[1,g,q] a0_g a1_q + aa[2,g,q] a1_g a1_q
 
-    exactly (see :func:`step_energy_forms`). The viscous work of the step is then exactly
+    exactly (see :func:`step_energy_forms`); for G = 1 the last line is
+    ``aa · (a0², a0 a1, a1²)``. The viscous work of the step is then exactly
     the input work less the change of kinetic and strain energy (nothing else stores or
     dissipates energy while every gap is open), which the kernel uses instead of the
-    viscous quadratic form: half the work a step. ``gamma0``/``gamma1`` are in the global
-    state order ``[u, u̇]``.
+    viscous quadratic form: half the work a step. ``gamma0``/``gamma1`` (2N, G) are in the
+    global state order ``[u, u̇]``; ``aa`` is (3, G, G).
     """
 
     blk: NDArray[np.int64]
@@ -172,36 +179,47 @@ def _van_loan_integral(f: NDArray[np.float64], w: NDArray[np.float64],
     return 0.5 * (out + out.T)
 
 
+def _columns(r: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The influence matrix (N, G) of an influence vector (N,) or matrix."""
+    r = np.asarray(r, dtype=float)
+    return r.reshape(r.shape[0], -1)
+
+
 def _augmented(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
                r: NDArray[np.float64], h: float
                ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """``F`` of ``ẏ = F y`` for ``y = [x, a_g, ȧ_g]`` and ``T`` with ``y0 = T [x0, a0, a1]``."""
+    """``F`` of ``ẏ = F y`` for ``y = [x, a_g, ȧ_g]`` (a_g, ȧ_g: G components each) and ``T``
+    with ``y0 = T [x0, a0, a1]``."""
     n = M.shape[0]
-    k = 2 * n + 2
+    rm = _columns(r)
+    g = rm.shape[1]
+    k = 2 * n + 2 * g
     f = np.zeros((k, k))
     f[: 2 * n, : 2 * n] = state_matrix(M, C, K)
-    f[n : 2 * n, 2 * n] = -r
-    f[2 * n, 2 * n + 1] = 1.0
+    f[n : 2 * n, 2 * n : 2 * n + g] = -rm
     t = np.eye(k)
-    t[2 * n + 1, 2 * n] = -1.0 / h
-    t[2 * n + 1, 2 * n + 1] = 1.0 / h
+    for q in range(g):
+        f[2 * n + q, 2 * n + g + q] = 1.0
+        t[2 * n + g + q, 2 * n + q] = -1.0 / h
+        t[2 * n + g + q, 2 * n + g + q] = 1.0 / h
     return f, t
 
 
 def _input_weight(M: NDArray[np.float64], r: NDArray[np.float64]) -> NDArray[np.float64]:
-    """W of the input power ``−a_g (M r)ᵀ u̇ = yᵀ W y``."""
+    """W of the input power ``−u̇ᵀ M R a_g = yᵀ W y``."""
     n = M.shape[0]
-    w_in = np.zeros((2 * n + 2, 2 * n + 2))
-    mr = M @ r
-    w_in[n : 2 * n, 2 * n] = -0.5 * mr
-    w_in[2 * n, n : 2 * n] = -0.5 * mr
+    mr = M @ _columns(r)
+    g = mr.shape[1]
+    w_in = np.zeros((2 * n + 2 * g, 2 * n + 2 * g))
+    w_in[n : 2 * n, 2 * n : 2 * n + g] = -0.5 * mr
+    w_in[2 * n : 2 * n + g, n : 2 * n] = -0.5 * mr.T
     return w_in
 
 
 def step_input_form(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
                     r: NDArray[np.float64], h: float) -> NDArray[np.float64]:
     """Input energy over one exact step as a quadratic form in ``[x0, a0, a1]`` (the first
-    of :func:`step_energy_forms`)."""
+    of :func:`step_energy_forms`; a0, a1 of G components each)."""
     f, t = _augmented(M, C, K, r, h)
     return t.T @ _van_loan_integral(f, _input_weight(M, r), h) @ t
 
@@ -218,8 +236,10 @@ def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     any step and any frequency content. ``y0 = T [x0, a0, a1]`` with
     ``ȧ_g = (a1 − a0) / h`` gives the forms in the grid values.
 
-    Returns ``(Q_in, Q_visc)``, each ``(2N+2, 2N+2)`` symmetric. (The kernel needs only
-    ``Q_in``; ``Q_visc`` checks that the viscous work it infers from the balance is exact.)
+    With G ground components ``a0``, ``a1`` are G values each and ``W_in`` is
+    ``−u̇ᵀ M R a_g``. Returns ``(Q_in, Q_visc)``, each ``(2N+2G, 2N+2G)`` symmetric. (The
+    kernel needs only ``Q_in``; ``Q_visc`` checks that the viscous work it infers from the
+    balance is exact.)
     """
     n = M.shape[0]
     f, t = _augmented(M, C, K, r, h)
@@ -233,27 +253,31 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
                       r: NDArray[np.float64], h: float) -> FreeStep:
     """The :class:`FreeStep` operators of the structure for a grid step ``h`` [s]."""
     n = M.shape[0]
+    rm = _columns(r)
+    ng = rm.shape[1]
     blk = independent_blocks(M, C, K)
-    gamma0 = np.zeros(2 * n)
-    gamma1 = np.zeros(2 * n)
-    aa = np.zeros(3)
+    gamma0 = np.zeros((2 * n, ng))
+    gamma1 = np.zeros((2 * n, ng))
+    aa = np.zeros((3, ng, ng))
     parts = []
     for b in range(blk.size - 1):
         p, q = int(blk[b]), int(blk[b + 1])
         nb = q - p
         glob = np.r_[p:q, n + p : n + q]
         sl = slice(p, q)
-        mb, cb, kb, rb = M[sl, sl], C[sl, sl], K[sl, sl], r[sl]
+        mb, cb, kb, rb = M[sl, sl], C[sl, sl], K[sl, sl], rm[sl]
         prop = compute_propagator(mb, cb, kb, rb, h)
         gamma0[glob] = prop.gamma0
         gamma1[glob] = prop.gamma1
         q_in = step_input_form(mb, cb, kb, rb, h)
-        x_, a0_, a1_ = slice(0, 2 * nb), 2 * nb, 2 * nb + 1
-        op = np.zeros((2 * nb, 2 * nb + 2))
+        x_ = slice(0, 2 * nb)
+        a0_ = slice(2 * nb, 2 * nb + ng)
+        a1_ = slice(2 * nb + ng, 2 * nb + 2 * ng)
+        op = np.zeros((2 * nb, 2 * nb + 2 * ng))
         op[:, : 2 * nb] = prop.phi.T
         # the cross terms appear twice in yᵀQy: 2 Q[x, a] is the linear coefficient
-        op[:, 2 * nb + 0] = 2.0 * q_in[x_, a0_]
-        op[:, 2 * nb + 1] = 2.0 * q_in[x_, a1_]
+        op[:, 2 * nb + 0 :: 2] = 2.0 * q_in[x_, a0_]
+        op[:, 2 * nb + 1 :: 2] = 2.0 * q_in[x_, a1_]
         aa += (q_in[a0_, a0_], 2.0 * q_in[a0_, a1_], q_in[a1_, a1_])
         parts.append((glob, op))
     width = max((op.shape[1] for _, op in parts), default=0)

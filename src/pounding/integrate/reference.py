@@ -28,8 +28,10 @@ from scipy.optimize import minimize_scalar
 
 from pounding.contact.base import STATE_SIZE, V0, V0_MIN
 from pounding.contact.dispatch import contact_stored_energy, contact_trial
-from pounding.ground_motion import GroundMotion
+from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate import ground_on_grid, grid_step, initial_state
+from pounding.integrate.grid import check_ground_components
+from pounding.integrate.kernel_model import influence_matrix
 from pounding.integrate.layout import ENERGY_COLUMNS, IMP_COLUMNS, PK_COLUMNS
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
@@ -37,23 +39,27 @@ from pounding.result import Result, SolverStats
 REFERENCE_RTOL: float = 1e-10
 
 
-def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float | None = None,
-                       duration: float | None = None, rtol: float = REFERENCE_RTOL,
+def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotionComponents, *,
+                       dt: float | None = None, duration: float | None = None,
+                       rtol: float = REFERENCE_RTOL,
                        initial_displacement: np.ndarray | None = None,
                        initial_velocity: np.ndarray | None = None) -> Result:
     """Reference solution of :func:`pounding.integrate.simulate` (same arguments, same Result).
 
     Slow: minutes for a long record. Outputs at the same grid as :func:`simulate`.
     """
+    check_ground_components(model, motion)
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else float(duration)
-    ag = ground_on_grid(motion, step, t_end)
-    nt = ag.size
+    ground = ground_on_grid(motion, step, t_end)  # (nt,), or (nt, G) for G components
+    nt = ground.shape[0]
+    ag = ground.reshape(nt, -1)
     t_grid = np.arange(nt) * step
     sys_ = model.system
-    M, C, r = sys_.M, sys_.C, sys_.r
+    M, C = sys_.M, sys_.C
+    r = influence_matrix(sys_.r)  # R (N, G): M ü + … = −M R a_g
     K = model.linear_stiffness()
-    n = r.size
+    n = r.shape[0]
     minv = np.linalg.inv(M)
     minv_k, minv_c, mr = minv @ K, minv @ C, M @ r
     contacts = model.contacts
@@ -146,10 +152,10 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
             p[l_hi[q]] -= f[q]
             p[l_lo[q]] += f[q]
 
-    def rhs_factory(t0: float, a0: float, slope: float):
+    def rhs_factory(t0: float, a0: NDArray[np.float64], slope: NDArray[np.float64]):
         def rhs(t: float, y: NDArray[np.float64]) -> NDArray[np.float64]:
             u, v = y[:n], y[n:2 * n]
-            a_g = a0 + slope * (t - t0)
+            a_g = a0 + slope * (t - t0)  # the G components
             f = forces(y)
             p = np.zeros(n)
             for c in range(nc):
@@ -163,9 +169,13 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
                 p_storey += vs[s] * drift(y, s)[1]
             fl, rl, zdot = link_forces(y)
             add_link_loads(p, fl)
-            acc = -minv_k @ u - minv_c @ v + minv @ p - r * a_g
+            acc = -minv_k @ u - minv_c @ v + minv @ p - r[:, 0] * a_g[0]
+            p_in = -(v @ mr[:, 0]) * a_g[0]  # input power −u̇ᵀ M R a_g
+            for g in range(1, a_g.size):
+                acc -= r[:, g] * a_g[g]
+                p_in -= (v @ mr[:, g]) * a_g[g]
             rate = np.array([kin(y, c)[1] for c in range(nc)])
-            return np.concatenate([v, acc, hdot, zdot, [-(v @ mr) * a_g, v @ (C @ v), p_storey,
+            return np.concatenate([v, acc, hdot, zdot, [p_in, v @ (C @ v), p_storey,
                                                         fl @ rl], f * rate])
         return rhs
 
@@ -422,7 +432,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion, *, dt: float 
     pen = model.contact_penetration(u_out)
     imp = np.array(impacts, dtype=float).reshape(-1, IMP_COLUMNS)
     stats = SolverStats(solver="scipy-reference", rtol=rtol, events=events, wall_time=wall)
-    return Result(model=model, motion=motion, dt=step, ground=ag, displacement=u_out,
+    return Result(model=model, motion=motion, dt=step, ground=ground, displacement=u_out,
                   velocity=v_out, abs_acceleration=acc, penetration=pen, contact_force=f_out,
                   energy=energy, impact_array=imp, stats=stats, yielding_shear=vs_out,
                   final_z=np.array([out[-1, i_h + s] for s, st in enumerate(storeys)

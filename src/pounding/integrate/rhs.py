@@ -3,10 +3,18 @@ whose floors may strike each other, and the jerk (rate of the acceleration) the 
 to locate acceleration peaks inside steps.
 
 ``y = [u (N), u̇ (N), z (one per Bouc–Wen storey)]``, displacements and velocities relative to
-the ground; ``M ü + C u̇ + K u + V(storeys) − Σ contact forces = −M r a_g``, M lumped
-(diagonal), K and C banded. Contact forces act on *contact rows*: the penetration of contact
-c is ``δ = Σ_q w_cq u_(j_cq) − gap_c`` (four DOFs and weights, so floor-to-floor and
-floor-to-column contacts are the same kind of row).
+the ground; ``M ü + C u̇ + K u + V(storeys) − Σ contact forces = −M R a_g(t)``, M lumped
+(diagonal), K and C banded, R the (N, G) influence matrix of the G ground components
+``a_g`` (G = 1: a planar model under one record). Contact forces act on *contact rows*: the
+penetration of contact c is ``δ = Σ_q w_cq u_(j_cq) − gap_c`` over the W DOFs and weights of
+its row (``cdof``, ``cw`` of shape (n_c, W); W = 4 for floor-to-floor and floor-to-column
+contacts of planar buildings, wider where a façade point moves with several DOFs).
+
+The ground components ``a_g`` at the instant a function needs them are row ``G_NOW`` of the
+(4, G) array ``gnd`` (:data:`G_A0`, :data:`G_A1`: the grid values at the ends of the current
+grid step; :data:`G_SLOPE`: their slope). The first component is written out in the
+expressions where G = 1 has always had it, and the others added after it, so that a G = 1
+model computes bit for bit what it did before there were components.
 
 Every function here is compiled with numba's reference counting off (they allocate
 nothing); see :data:`NRT_FREE`.
@@ -37,6 +45,10 @@ from pounding.integrate.layout import (
     RATE_SIDE,
 )
 
+G_A0, G_A1, G_SLOPE, G_NOW = range(4)
+"""Rows of ``gnd`` (4, G): the ground components at the start and end of the grid step, their
+slope [m/s³], and their values at the instant being evaluated [m/s²]."""
+
 NRT_FREE = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
                 _nrt=False)
 """Options of the kernel's working functions. They allocate nothing (the scratch comes from
@@ -60,11 +72,38 @@ def gap_row(c, y, n, cdof, cw):
     (:meth:`pounding.model.PoundingModel.contact_kinematics`)."""
     d = 0.0
     v = 0.0
-    for q in range(4):
+    for q in range(cdof.shape[1]):
         j = cdof[c, q]
         d += cw[c, q] * y[j]
         v += cw[c, q] * y[n + j]
     return d, v
+
+
+@njit(**NRT_FREE)
+def ground_rest(r, i, a, j):
+    """``Σ_{g ≥ 1} R[i, g] a[j, g]``: floor i's share of the ground components after the
+    first, at row j of ``a`` (a grid row of the record, or a row of ``gnd``); 0 for G = 1."""
+    s = 0.0
+    for g in range(1, r.shape[1]):
+        s += r[i, g] * a[j, g]
+    return s
+
+
+@njit(**NRT_FREE)
+def add_ground_rest(out, sign, r, a, j, n):
+    """``out[i] += sign · Σ_{g ≥ 1} R[i, g] a[j, g]`` for every floor (nothing for G = 1):
+    the ground components after the first, added to accelerations that hold the first."""
+    for g in range(1, r.shape[1]):
+        ag = sign * a[j, g]
+        for i in range(n):
+            out[i] += r[i, g] * ag
+
+
+@njit(**NRT_FREE)
+def set_ground(gnd, row, a, j):
+    """``gnd[row] = a[j]``: every component of row j of ``a``."""
+    for g in range(gnd.shape[1]):
+        gnd[row, g] = a[j, g]
 
 
 @njit(**NRT_FREE)
@@ -124,10 +163,10 @@ def stored_call(code, p0, p1, p2, delta, slip):
 
 
 @njit(**INLINE)
-def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
+def deriv(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
           committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
-    per-contact F δ̇].
+    per-contact F δ̇]; the ground components at ``gnd[G_NOW]``.
 
     ``y_start``: the state at the start of the step (``y`` itself outside a step). Writes row
     ``row`` of ``dy`` and ``power`` (2-D arrays: no views in the hot loop); ``m_inv``: 1 /
@@ -138,8 +177,10 @@ def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
     :func:`deriv_call` elsewhere.
     """
     nc = cgap.shape[0]
-    # linear part: acc = −M⁻¹(K u + C v) − r a_g, K (linear storeys only) and C banded
-    # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work
+    # linear part: acc = −M⁻¹(K u + C v) − R a_g, K (linear storeys only) and C banded
+    # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work; the first ground
+    # component here, the others after; input power −u̇ᵀ M R a_g
+    ag = gnd[G_NOW, 0]
     p_in = 0.0
     p_d = 0.0
     if bw == 0:
@@ -148,16 +189,21 @@ def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
             v = y[n + i]
             cv = c_band[0, i] * v
             dy[row, i] = v
-            dy[row, n + i] = -(k_band[0, i] * y[i] + cv) * m_inv[i] - r[i] * ag
-            p_in -= v * mr[i] * ag
+            dy[row, n + i] = -(k_band[0, i] * y[i] + cv) * m_inv[i] - r[i, 0] * ag
+            p_in -= v * mr[i, 0] * ag
             p_d += v * cv
     else:
         band_mv(k_band, c_band, y, n, bw, lin)
         for i in range(n):
             dy[row, i] = y[n + i]
-            dy[row, n + i] = -(lin[0, i] + lin[1, i]) * m_inv[i] - r[i] * ag
-            p_in -= y[n + i] * mr[i] * ag
+            dy[row, n + i] = -(lin[0, i] + lin[1, i]) * m_inv[i] - r[i, 0] * ag
+            p_in -= y[n + i] * mr[i, 0] * ag
             p_d += y[n + i] * lin[1, i]
+    for g in range(1, r.shape[1]):
+        ag = gnd[G_NOW, g]
+        for i in range(n):
+            dy[row, n + i] -= r[i, g] * ag
+            p_in -= y[n + i] * mr[i, g] * ag
     power[row, P_INPUT] = p_in
     power[row, P_DAMP] = p_d
     # yielding storeys: shear V from the storey law, −V on the floor above, +V below; the
@@ -224,16 +270,16 @@ def deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, c
         if f != 0.0:
             # the force pushes the left point left and the right point right, shared to
             # the floors with the point's weights (−w F on each)
-            for q in range(4):
+            for q in range(cdof.shape[1]):
                 j = cdof[c, q]
                 dy[row, n + j] -= cw[c, q] * f * m_inv[j]
 
 
 @njit(**NRT_FREE)
-def deriv_call(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
+def deriv_call(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
                cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
     """:func:`deriv`, called: where the step loop needs f at a grid point or an event."""
-    deriv(y, y_start, ag, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
+    deriv(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
           committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row)
 
 
@@ -243,9 +289,9 @@ def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, co
     """Rate of the absolute floor accelerations [m/s³] at state ``x`` with ``dx = f(x)``.
 
     Differentiating the equations of motion along the motion (the ground term cancels:
-    ``ü + r a_g = −M⁻¹(K u + C u̇ + V + F)``)::
+    ``ü + R a_g = −M⁻¹(K u + C u̇ + V + F)``)::
 
-        d/dt (ü + r a_g) = −M⁻¹ (K u̇ + C ü + V̇ + Ḟ)
+        d/dt (ü + R a_g) = −M⁻¹ (K u̇ + C ü + V̇ + Ḟ)
 
     with the storey shears' rates ``V̇ = (∂V/∂d) ḋ`` (a link's plus ``(∂F/∂ḋ) d̈ + (∂F/∂z) ż``) and every closed contact's force rate
     ``Ḟ = (∂F/∂δ) δ̇ + (∂F/∂δ̇) δ̈`` from its law's tangents at the committed state.
@@ -280,7 +326,7 @@ def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, co
                                           cparams[c, 2], max(dsum - cgap[c], DELTA_EPS), rate,
                                           committed[c, V0], committed[c, 1], committed[c, 2])
             fdot = kd * rate + kr * acc
-            for q in range(4):
+            for q in range(cdof.shape[1]):
                 out[cdof[c, q]] += cw[c, q] * fdot
     for i in range(n):
         out[i] = -out[i] * m_inv[i]
