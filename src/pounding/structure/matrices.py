@@ -37,8 +37,12 @@ a matrix building that is a shear building (Chopra §9.2) back into a
 Reading and checking one matrix is :mod:`pounding.structure.matrix_files`; this module
 builds a building of them.
 
-These are readers only: :class:`MatrixBuilding` is not yet accepted by
-:class:`pounding.model.PoundingModel` or the time stepper.
+In a :class:`pounding.model.PoundingModel` a planar matrix building stands in a row beside
+shear buildings: every DOF named in :attr:`MatrixBuilding.floors` (all of them by default) is
+a floor's lateral translation along the row at its elevation, where contacts are found and
+storey drifts measured (between consecutive floors ordered by elevation); the other DOFs
+(rotations, say) take no contact and have no drift. A matrix building has no storey law:
+storey yielding is the shear building's.
 """
 
 from __future__ import annotations
@@ -127,13 +131,40 @@ def _labels(value: Any, n: int, where: str) -> tuple[str, ...]:
     return labels
 
 
+def _floors(value: Any, labels: tuple[str, ...], where: str) -> tuple[int, ...]:
+    """The floor DOFs, 0-based and ascending, from indices or labels (default: all)."""
+    n = len(labels)
+    if value is None:
+        return tuple(range(n))
+    pre = _prefix(where)
+    if isinstance(value, str) or not isinstance(value, Sequence | np.ndarray) or not len(value):
+        raise ValueError(f"{pre}floors must be a non-empty sequence of degree-of-freedom "
+                         f"indices or labels (got {value!r})")
+    out: list[int] = []
+    for k, f in enumerate(value):
+        if isinstance(f, str):
+            if f not in labels:
+                raise ValueError(f"{pre}floors[{k}] = {f!r} is not one of the labels")
+            i = labels.index(f)
+        elif isinstance(f, int | np.integer) and not isinstance(f, bool) and 0 <= f < n:
+            i = int(f)
+        else:
+            raise ValueError(f"{pre}floors[{k}] = {f!r} must be a label or an index in "
+                             f"[0, {n - 1}]")
+        if i in out:
+            raise ValueError(f"{pre}floors[{k}] = {f!r} is given twice")
+        out.append(i)
+    return tuple(sorted(out))
+
+
 # --------------------------------------------------------------------------- the building
 @dataclass(frozen=True, eq=False)
 class MatrixBuilding:
     """A building's linear lateral model given by its matrices.
 
     Equation of motion relative to the ground (Chopra §9.4):
-    ``M ü + C u̇ + K u = −M r a_g(t)`` (+ contact forces, once wired into a model).
+    ``M ü + C u̇ + K u = −M r a_g(t)`` (+ contact forces in a
+    :class:`~pounding.model.PoundingModel`).
 
     Parameters
     ----------
@@ -147,8 +178,8 @@ class MatrixBuilding:
     elevations : array_like, shape (n,)
         Elevation of each DOF above the ground [m], finite.
     r : array_like, shape (n,), optional
-        Influence vector of the ground motion [-] (Chopra §9.4.1); default all ones. Not all
-        zero.
+        Influence vector of the ground motion [-] (Chopra §9.4.1); default 1 on the
+        ``floors`` (all ones when every DOF is a floor), 0 elsewhere. Not all zero.
     C : array_like, shape (n, n), optional
         Damping matrix [N·s/m], symmetric positive semi-definite. Give ``C`` or ``damping``,
         not both.
@@ -161,6 +192,10 @@ class MatrixBuilding:
     sources : mapping of str to str
         Where each matrix came from (``{"M": "m.csv", "K": "k.csv"}``), named in messages;
         :func:`read_matrix_building` fills it in.
+    floors : sequence of int or str, optional
+        The DOFs that are floor translations along the row (0-based indices or labels);
+        default all. Only these meet a neighbour in contact and have a storey drift; the
+        default ``r`` is 1 on them and 0 on the others (rotations).
 
     Raises
     ------
@@ -192,6 +227,7 @@ class MatrixBuilding:
     damping: DampingModel | None = None
     name: str = ""
     sources: Mapping[str, str] = field(default_factory=dict)
+    floors: Sequence[int | str] | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str):
@@ -216,7 +252,10 @@ class MatrixBuilding:
         n = M.shape[0]
         labels = _labels(self.labels, n, who)
         elevations = _vector("elevations", self.elevations, n, who)
-        r = _vector("r", np.ones(n) if self.r is None else self.r, n, who)
+        floors = _floors(self.floors, labels, who)
+        r0 = np.zeros(n)
+        r0[list(floors)] = 1.0
+        r = _vector("r", r0 if self.r is None else self.r, n, who)
         if not np.any(r != 0.0):
             raise ValueError(f"{who}: r is all zero: the ground motion would not move the "
                              "building")
@@ -262,6 +301,7 @@ class MatrixBuilding:
         object.__setattr__(self, "C", None if self.C is None else _readonly(C))
         object.__setattr__(self, "damping", damping)
         object.__setattr__(self, "sources", sources)
+        object.__setattr__(self, "floors", floors)
         object.__setattr__(self, "_C", _readonly(C))
 
     # ----------------------------------------------------------------- constructors
@@ -304,6 +344,70 @@ class MatrixBuilding:
     def influence_vector(self) -> NDArray[np.float64]:
         """``r`` [-], shape (n,), a fresh copy."""
         return np.array(self.r)
+
+    # ----------------------------------------------------------------- in a row of buildings
+    @property
+    def floor_dofs(self) -> NDArray[np.int64]:
+        """The floor DOFs (:attr:`floors`), lowest first (equal elevations: by index)."""
+        f = np.array(self.floors, dtype=np.int64)
+        return f[np.argsort(self.elevations[f], kind="stable")]
+
+    def floor_below(self) -> NDArray[np.int64]:
+        """For every DOF, the floor DOF below it (−1: the ground; −2: not a floor), so that
+        the storey drift of floor DOF j is ``u[j] − u[below[j]]`` (``u = 0`` at the ground)."""
+        below = np.full(self.n, -2, dtype=np.int64)
+        f = self.floor_dofs
+        below[f] = np.concatenate(([-1], f[:-1]))
+        return below
+
+    @property
+    def masses(self) -> NDArray[np.float64]:
+        """Lumped mass of every DOF [kg] (rotations: [kg·m²]), shape (n,); raises unless
+        ``M`` is diagonal (:func:`lumped_masses`)."""
+        return self.lumped_masses()
+
+    @property
+    def floor_levels(self) -> NDArray[np.float64]:
+        """Elevation of every DOF [m], shape (n,) (the :attr:`elevations`; the name every
+        building of a row answers to)."""
+        return np.array(self.elevations)
+
+    @property
+    def heights(self) -> NDArray[np.float64]:
+        """Height of the storey below every floor DOF [m] (its elevation less the floor
+        below's, or the ground's), shape (n,); NaN for a DOF that is not a floor."""
+        below = self.floor_below()
+        z = self.elevations
+        out = np.full(self.n, np.nan)
+        f = below > -2
+        out[f] = z[f] - np.where(below[f] >= 0, z[np.maximum(below[f], 0)], 0.0)
+        return out
+
+    @property
+    def total_height(self) -> float:
+        """Elevation of the highest floor [m]."""
+        return float(np.max(self.elevations[list(self.floors)]))
+
+    @property
+    def total_mass(self) -> float:
+        """The mass the ground motion moves, ``rᵀ M r`` [kg] (the sum of the floor masses
+        for a building whose DOFs are all floors)."""
+        return float(self.r @ self.M @ self.r)  # type: ignore[operator]
+
+    @property
+    def storey_law(self) -> None:
+        """None: a matrix building is linear (storey yielding is the shear building's)."""
+        return None
+
+    @property
+    def is_inelastic(self) -> bool:
+        """False: a matrix building has no yielding storeys."""
+        return False
+
+    @property
+    def yield_forces(self) -> None:
+        """None: no storey yield shears (linear)."""
+        return None
 
     @property
     def is_lumped(self) -> bool:
@@ -428,7 +532,8 @@ class MatrixBuilding:
                 and self.labels == other.labels
                 and np.array_equal(self.elevations, other.elevations)
                 and np.array_equal(self.r, other.r)  # type: ignore[arg-type]
-                and same_c and self.damping == other.damping and self.name == other.name)
+                and same_c and self.damping == other.damping and self.name == other.name
+                and self.floors == other.floors)
 
     __hash__ = None  # type: ignore[assignment]
 
