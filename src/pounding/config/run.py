@@ -180,8 +180,11 @@ class RunConfig(Section):
             raw.setdefault("name", f"B{i + 1}")
             if b.kind in ("sdof", "uniform"):
                 raw.setdefault("height", 3.0)
-            elif b.heights is None:
+            elif b.kind == "storeys" and b.heights is None:
                 raw.setdefault("height", 3.0)
+            if b.kind == "matrices" and (b.matrices is not None and b.matrices.C is not None
+                                         or _npz_has_c(b.npz)):
+                continue  # damped by its matrix C
             if b.damping is None:
                 raw["damping"] = ({"ratio": 0.05} if b.kind == "sdof" else
                                   {"rayleigh": [0.05, 0.05], "modes": [1, 2]})
@@ -204,6 +207,16 @@ class RunConfig(Section):
         sol.setdefault("duration", motion.duration)
         sol.setdefault("h_max", step)
         return data
+
+
+def _npz_has_c(path: str | None) -> bool:
+    """True if the ``.npz`` archive at ``path`` holds a damping matrix ``C``."""
+    if path is None:
+        return False
+    import numpy as np
+
+    with np.load(path, allow_pickle=False) as archive:
+        return "C" in archive.files
 
 
 def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",

@@ -542,7 +542,8 @@ class MatrixBuilding:
 def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None = None, *,
                          labels: Sequence[str], elevations: ArrayLike,
                          r: ArrayLike | None = None, damping: DampingModel | None = None,
-                         name: str = "") -> MatrixBuilding:
+                         name: str = "", floors: Sequence[int | str] | None = None
+                         ) -> MatrixBuilding:
     """Read a :class:`MatrixBuilding` from matrix files.
 
     Parameters
@@ -566,6 +567,8 @@ def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None
         Damping model, if no ``C`` is read (default 5 % Rayleigh at modes 1 and 2).
     name : str
         The building's name.
+    floors : sequence of int or str, optional
+        The DOFs that are floor translations (:class:`MatrixBuilding`); default all.
 
     Returns
     -------
@@ -605,4 +608,4 @@ def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None
             sources["C"] = str(m_path)
     return MatrixBuilding(M=Mx, K=Kx, labels=tuple(labels),
                           elevations=elevations, r=r,  # type: ignore[arg-type]
-                          C=Cx, damping=damping, name=name, sources=sources)
+                          C=Cx, damping=damping, name=name, sources=sources, floors=floors)
