@@ -339,9 +339,14 @@ class BuildingConfig(Section):
         labels = self.labels if self.labels is not None else [f"F{j + 1}" for j in range(n)]
         from pounding.structure import read_matrix_building
 
-        return read_matrix_building(m_file, k_file, c_file, labels=labels,
-                                    elevations=self.elevations,  # type: ignore[arg-type]
-                                    r=self.r, damping=damping, name=name, floors=self.floors)
+        b = read_matrix_building(m_file, k_file, c_file, labels=labels,
+                                 elevations=self.elevations,  # type: ignore[arg-type]
+                                 r=self.r, damping=damping, name=name, floors=self.floors)
+        try:
+            b.lumped_masses()  # names M's file and its largest off-diagonal entry
+        except ValueError as exc:
+            raise ValueError(f"{exc}; the time stepper takes lumped masses") from None
+        return b
 
     def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding:
         name = self.name or default_name

@@ -108,8 +108,13 @@ class RunConfig(Section):
                         "level_tolerance": self.contact.level_tolerance}
         devices: list[Any] = []
         if self.device:
-            with prefixed("contact"):
+            try:
                 bare = PoundingModel(buildings, gaps, spec, **geometry)
+            except ValueError as exc:
+                text = str(exc)
+                if text.startswith("buildings["):
+                    raise ValueError("building[" + text[len("buildings["):]) from exc
+                raise ValueError(f"contact: {text}") from exc
             floors = [(c.left.label(), c.right.label()) for c in bare.contacts
                       if c.is_floor_to_floor]
         for i, d in enumerate(self.device):
@@ -123,6 +128,8 @@ class RunConfig(Section):
             text = str(exc)
             if text.startswith("devices["):  # the model's devices[i] is the file's device[i]
                 raise ValueError("device[" + text[len("devices["):]) from exc
+            if text.startswith("buildings["):  # and its buildings[i] the file's building[i]
+                raise ValueError("building[" + text[len("buildings["):]) from exc
             raise ValueError(f"contact: {text}") from exc
         for p in range(len(buildings) - 1):
             if not any(c.pair == p for c in model.contacts):
