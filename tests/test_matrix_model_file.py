@@ -97,6 +97,17 @@ def test_pounding_run_on_a_building_given_as_npz(tmp_path, capsys):
     # the model.toml a run writes names the archive in full and runs from anywhere
     copy = load_config(out / "model.toml")
     assert Path(copy.building[0].npz).is_absolute()  # type: ignore[arg-type]
+    # the NetCDF file names the building's own labels; its storey shear is NaN
+    import xarray as xr
+
+    with xr.open_dataset(out / "timehistories.nc", engine="h5netcdf") as ds:
+        assert list(ds["dof_name"].values) == ["low", "roof", "F1"]
+        assert np.isnan(ds["storey_shear"].values[:, :2]).all()
+        assert np.isfinite(ds["storey_shear"].values[:, 2]).all()
+        np.testing.assert_allclose(ds["storey_height"].values, [3.0, 3.0, 3.0])
+    # and the report reads the folder
+    assert main(["report", str(out), "--out", str(tmp_path / "report.html")]) == 0
+    assert (tmp_path / "report.html").stat().st_size > 10_000
 
 
 # ------------------------------------------------------------------ bad fields

@@ -277,3 +277,42 @@ def test_dense_building_runs_with_rayleigh_damping_from_its_own_modes():
     res = simulate(model, el_centro().trimmed(5.0))
     assert res.energy_balance_error < 1e-6
     assert model.dof_names()[:2] == ["F1", "F2"]
+
+
+def test_frame_helper_against_opensees():
+    """The frame of the tests and of ``examples/matrix_building.toml``, built in OpenSeesPy
+    (elasticBeamColumn, columns and beams axially rigid by fixity and equalDOF) and condensed
+    by :func:`matrices_from_opensees`: the same lateral ``K`` (skipped without openseespy)."""
+    ops = pytest.importorskip("openseespy.opensees")
+    from pounding.structure.opensees_matrices import matrices_from_opensees
+
+    n, h, span, E = 4, 3.2, 6.0, 2.0e11
+    ei_col, ei_beam = 7.8e9, 3.9e9
+    ops.wipe()
+    try:
+        ops.model("basic", "-ndm", 2, "-ndf", 3)
+        ops.geomTransf("Linear", 1)
+        ops.node(1, 0.0, 0.0)
+        ops.node(2, span, 0.0)
+        ops.fix(1, 1, 1, 1)
+        ops.fix(2, 1, 1, 1)
+        tag = 1
+        for i in range(1, n + 1):
+            left, right = 2 * i + 1, 2 * i + 2
+            ops.node(left, 0.0, i * h)
+            ops.node(right, span, i * h)
+            ops.fix(left, 0, 1, 0)           # axially rigid columns
+            ops.fix(right, 0, 1, 0)
+            ops.equalDOF(left, right, 1)     # axially rigid beam: one lateral DOF a floor
+            ops.mass(left, 3e5, 0.0, 0.0)
+            for bottom, top in ((left - 2, left), (right - 2, right)):
+                ops.element("elasticBeamColumn", tag, bottom, top, 1.0, E, ei_col / E, 1)
+                tag += 1
+            ops.element("elasticBeamColumn", tag, left, right, 1.0, E, ei_beam / E, 1)
+            tag += 1
+        M, K, _ = matrices_from_opensees([2 * i + 1 for i in range(1, n + 1)])
+    finally:
+        ops.wipe()
+    kc, _ = frame_matrices(n, h, span, ei_col, ei_beam)
+    np.testing.assert_allclose(K, kc, rtol=0, atol=1e-9 * np.abs(kc).max())
+    np.testing.assert_allclose(np.diag(M), 3e5)
