@@ -110,7 +110,8 @@ def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> No
     assert all(e.description for e in examples())
     assert listed["fragility_two_10_storey.toml"] == "fragility"
     copied = copy_examples(tmp_path / "mine")
-    assert {p.name for p in copied} == set(listed) | {"README.md"}
+    data = {"matrix_building_M.csv", "matrix_building_K.csv"}  # the matrices an example reads
+    assert {p.name for p in copied} == set(listed) | {"README.md"} | data
     for p in copied:
         if p.suffix == ".toml" and listed.get(p.name) == "model":
             load_config(p)  # every copied model file runs from its new folder

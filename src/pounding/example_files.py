@@ -66,14 +66,20 @@ def examples() -> list[Example]:
     return out
 
 
+DATA_SUFFIXES: tuple[str, ...] = (".csv", ".npy", ".npz", ".mtx")
+"""Files an example reads (a building's matrices) that are copied out with it."""
+
+
 def copy_examples(dest: str | os.PathLike[str], overwrite: bool = False) -> list[Path]:
-    """Copy every bundled example (and their README) into the folder ``dest`` (made if
-    missing). An existing file is not replaced unless ``overwrite``. Returns the files
-    written."""
+    """Copy every bundled example (with the matrix files they read, and their README) into
+    the folder ``dest`` (made if missing). An existing file is not replaced unless
+    ``overwrite``. Returns the files written."""
     folder = Path(dest)
     if folder.exists() and not folder.is_dir():
         raise ValueError(f"copy: {folder} is a file, not a folder")
-    sources = sorted(_folder().glob("*.toml")) + [_folder() / "README.md"]
+    sources = (sorted(_folder().glob("*.toml"))
+               + sorted(p for p in _folder().iterdir() if p.suffix in DATA_SUFFIXES)
+               + [_folder() / "README.md"])
     clash = [p.name for p in sources if (folder / p.name).exists()]
     if clash and not overwrite:
         raise ValueError(f"copy: {folder} already has {', '.join(clash)}; give --overwrite "

@@ -15,6 +15,11 @@ The contact law of a model file is a :class:`ContactSpec` (:mod:`pounding.contac
 contact points and elements are in :mod:`pounding.contact.geometry`; both are importable from
 here too.
 
+A building is a :class:`ShearBuilding` or a planar :class:`~pounding.structure.MatrixBuilding`
+with lumped masses: each of its floor DOFs is a lateral translation along the row at its
+elevation, and contacts are found from those elevations exactly as for the floors of a
+shear building (:func:`pounding.structure.assembly.floor_dofs`).
+
 For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
 their shear comes from their storey law, and the stiffness matrix handed to the kernel
 (:meth:`PoundingModel.linear_stiffness`) holds only the linear storeys.
@@ -36,8 +41,15 @@ from pounding.contact.spec import CONTACT_LAWS, ContactSpec
 from pounding.devices import Bumper, Link
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
-from pounding.structure import ShearBuilding
-from pounding.structure.assembly import AssembledSystem, assemble
+from pounding.structure import MatrixBuilding, ShearBuilding
+from pounding.structure.assembly import (
+    BUILDING_TYPES,
+    AssembledSystem,
+    Building,
+    assemble,
+    floor_below,
+    floor_dofs,
+)
 from pounding.validation import non_negative, positive
 
 __all__ = ["CONTACT_LAWS", "SYSTEMS", "Contact", "ContactPoint", "ContactSpec", "PoundingModel",
@@ -48,10 +60,31 @@ SYSTEMS = Memo(max_items=64, max_bytes=256 << 20)
 """Assembled systems (:attr:`PoundingModel.system`), by the identity of the buildings."""
 
 
-def _floor_counts(buildings: Sequence[ShearBuilding]) -> str:
+def _floor_counts(buildings: Sequence[Building]) -> str:
     """``"B1: 10 floors, B2: 8 floors"``."""
     return ", ".join(f"B{i + 1}: {b.n} floor{'s' if b.n != 1 else ''}"
                      for i, b in enumerate(buildings))
+
+
+def _check_matrix_building(i: int, b: MatrixBuilding) -> None:
+    """A matrix building the kernel can take: lumped masses, floors at distinct elevations
+    above the ground (one line naming the building and the fault)."""
+    who = f"buildings[{i}] ({b.name!r})" if b.name else f"buildings[{i}]"
+    try:
+        b.lumped_masses()
+    except ValueError as exc:  # naming the largest off-diagonal entry of M
+        raise ValueError(f"{who}: {exc}; the time stepper takes lumped masses") from None
+    f = floor_dofs(b)
+    z = b.elevations[f]
+    if not z[0] > 0.0:
+        raise ValueError(f"{who}: floor {b.labels[f[0]]!r} is at elevation {z[0]:g} m; "
+                         "floors must stand above the ground (> 0)")
+    same = np.flatnonzero(np.diff(z) <= 0.0)
+    if same.size:
+        k = int(same[0])
+        raise ValueError(f"{who}: floors {b.labels[f[k]]!r} and {b.labels[f[k + 1]]!r} are both "
+                         f"at elevation {z[k]:g} m; give each floor its own elevation (or list "
+                         "only one of them in floors)")
 
 
 def _read_only(system: AssembledSystem) -> AssembledSystem:
@@ -67,8 +100,10 @@ class PoundingModel:
 
     Parameters
     ----------
-    buildings : sequence of ShearBuilding
-        From left to right (at least one; one building is a plain response analysis).
+    buildings : sequence of ShearBuilding or MatrixBuilding
+        From left to right (at least one; one building is a plain response analysis). A
+        matrix building needs a diagonal (lumped) ``M`` and floors at distinct elevations
+        above the ground.
     gaps : sequence of float
         Separation gap between each pair of neighbours [m], ``len(buildings) − 1`` values.
     contact : ContactSpec
@@ -97,7 +132,7 @@ class PoundingModel:
     ['B1F1-B2F1']
     """
 
-    buildings: Sequence[ShearBuilding]
+    buildings: Sequence[Building]
     gaps: Sequence[float]
     contact: ContactSpec
     name: str = "model"
@@ -109,8 +144,11 @@ class PoundingModel:
         if len(self.buildings) < 1:
             raise ValueError("buildings: give at least one building")
         for i, b in enumerate(self.buildings):
-            if not isinstance(b, ShearBuilding):
-                raise ValueError(f"buildings[{i}]: expected a ShearBuilding (got {type(b).__name__})")
+            if not isinstance(b, BUILDING_TYPES):
+                raise ValueError(f"buildings[{i}]: expected a ShearBuilding or a MatrixBuilding "
+                                 f"(got {type(b).__name__})")
+            if isinstance(b, MatrixBuilding):
+                _check_matrix_building(i, b)
         if len(self.gaps) != len(self.buildings) - 1:
             raise ValueError(f"gaps: need {len(self.buildings) - 1} value(s) for "
                              f"{len(self.buildings)} buildings (got {len(self.gaps)})")
@@ -132,6 +170,10 @@ class PoundingModel:
                     if b >= len(self.buildings) or f >= self.buildings[b].n:
                         raise ValueError(f"devices[{i}].floors: no floor {label} in this "
                                          f"model ({_floor_counts(self.buildings)})")
+                    if floor_below(self.buildings[b])[f] == -2:
+                        raise ValueError(f"devices[{i}].floors: {label} is not a floor of "
+                                         f"building B{b + 1} (DOF {f + 1} is not among its "
+                                         "floors)")
             elif isinstance(dev, Bumper):
                 if dev.label in seen:
                     raise ValueError(f"devices[{i}]: a second bumper in {dev.label}")
@@ -167,7 +209,8 @@ class PoundingModel:
         for p, (a, b) in enumerate(zip(self.buildings[:-1], self.buildings[1:])):
             for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column,
                                                       self.level_tolerance):
-                left, right = ContactPoint(p, i, xi_i), ContactPoint(p + 1, j, xi_j)
+                left = ContactPoint(p, i, xi_i, int(floor_below(a)[i]))
+                right = ContactPoint(p + 1, j, xi_j, int(floor_below(b)[j]))
                 law = self.contact.build(left.effective_mass(a.masses),
                                          right.effective_mass(b.masses))
                 out.append(Contact(len(out), p, left, right, z, float(self.gaps[p]), law))
@@ -327,5 +370,27 @@ class PoundingModel:
         return k
 
     def dof_labels(self) -> list[str]:
-        """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based)."""
+        """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based): ``F<j>`` is the
+        building's DOF ``j`` (a matrix building's own labels: :meth:`dof_names`)."""
         return [f"B{b + 1}F{j + 1}" for b, bl in enumerate(self.buildings) for j in range(bl.n)]
+
+    def dof_names(self) -> list[str]:
+        """Every DOF's name in its building: a matrix building's labels, ``'F1'``, ``'F2'``,
+        … for a shear building."""
+        return [bl.labels[j] if isinstance(bl, MatrixBuilding) else f"F{j + 1}"
+                for bl in self.buildings for j in range(bl.n)]
+
+    def floor_below(self) -> NDArray[np.int64]:
+        """The global DOF of the floor below every DOF (−1: the ground; −2: not a floor, no
+        storey drift), so that the drift of storey j is ``u[j] − u[below[j]]``: consecutive
+        floors ordered by elevation (:func:`pounding.structure.assembly.floor_below`)."""
+        out = []
+        for off, b in zip(self.system.offsets, self.buildings):
+            below = floor_below(b)
+            out.append(np.where(below >= 0, below + int(off), below))
+        return np.concatenate(out).astype(np.int64)
+
+    @cached_property
+    def is_floor(self) -> NDArray[np.bool_]:
+        """True for every DOF that is a floor (has a storey drift and may take contacts)."""
+        return self.floor_below() > -2

@@ -157,17 +157,28 @@ class Result:
 
     @cached_property
     def drift(self) -> NDArray[np.float64]:
-        """Storey drift ``u_j − u_{j−1}`` [m] (nt, N), storey j of each building."""
-        out = self.displacement.copy()
-        for off, b in zip(self.model.system.offsets, self.model.buildings):
-            out[:, off + 1 : off + b.n] -= self.displacement[:, off : off + b.n - 1]
+        """Storey drift ``u_j − u_{j−1}`` [m] (nt, N), storey j of each building: floor j
+        less the floor below it (:meth:`PoundingModel.floor_below`; consecutive floors by
+        elevation in a matrix building); NaN for a DOF that is not a floor."""
+        u = self.displacement
+        below = self.model.floor_below()
+        out = u.copy()
+        sub = np.flatnonzero(below >= 0)
+        out[:, sub] -= u[:, below[sub]]
+        out[:, below == -2] = np.nan
         return out
+
+    def _storey_stiffness(self) -> NDArray[np.float64]:
+        """Storey stiffness [N/m] under every DOF: a shear building's ``k_j``; NaN for a
+        matrix building (its ``K`` has no storey stiffness: its storey shear is not defined)."""
+        return np.concatenate([b.stiffnesses if hasattr(b, "stiffnesses") else np.full(b.n, np.nan)
+                               for b in self.model.buildings])
 
     @cached_property
     def storey_shear(self) -> NDArray[np.float64]:
         """Storey shear [N] (nt, N): ``k_j × drift_j`` for linear storeys, the storey law's
-        shear for yielding ones."""
-        k = np.concatenate([b.stiffnesses for b in self.model.buildings])
+        shear for yielding ones; NaN for a matrix building (no storey stiffness)."""
+        k = self._storey_stiffness()
         out = self.drift * k
         cols = self._yielding_columns()
         if cols.size:
@@ -377,13 +388,13 @@ class Result:
     @property
     def peak_drift(self) -> NDArray[np.float64]:
         """Largest |storey drift| of every storey [m] (N,: the storey below each floor),
-        located inside solver steps."""
-        return self._peak(2, self.drift)[0]
+        located inside solver steps; NaN for a DOF that is not a floor."""
+        return np.where(self.model.is_floor, self._peak(2, self.drift)[0], np.nan)
 
     @property
     def peak_drift_time(self) -> NDArray[np.float64]:
         """Time of every storey's :attr:`peak_drift` [s] (N,)."""
-        return self._peak(2, self.drift)[1]
+        return np.where(self.model.is_floor, self._peak(2, self.drift)[1], np.nan)
 
     @property
     def peak_drift_ratio(self) -> NDArray[np.float64]:
@@ -405,8 +416,8 @@ class Result:
     def peak_storey_shear(self) -> NDArray[np.float64]:
         """Largest |storey shear| of every storey [N] (N,): ``k × peak drift`` for a linear
         storey (so located inside steps with the drift), the largest of the storey law's
-        shear at the output steps for a yielding one."""
-        k = np.concatenate([b.stiffnesses for b in self.model.buildings])
+        shear at the output steps for a yielding one; NaN for a matrix building."""
+        k = self._storey_stiffness()
         out = k * self.peak_drift
         cols = self._yielding_columns()
         if cols.size:
@@ -415,8 +426,9 @@ class Result:
 
     @cached_property
     def peak_storey_shear_time(self) -> NDArray[np.float64]:
-        """Time of every storey's :attr:`peak_storey_shear` [s] (N,)."""
-        out = self.peak_drift_time.copy()
+        """Time of every storey's :attr:`peak_storey_shear` [s] (N,) (NaN where there is no
+        storey shear)."""
+        out = np.where(np.isnan(self._storey_stiffness()), np.nan, self.peak_drift_time)
         cols = self._yielding_columns()
         if cols.size:
             out[cols] = self.time[np.argmax(np.abs(self.storey_shear[:, cols]), axis=0)]

@@ -57,8 +57,9 @@ def history_variables(result: "Result") -> HistoryVariables:
         "absolute_acceleration": var(result.abs_acceleration, ("time", "floor"), "m/s^2",
                                      "absolute floor acceleration"),
         "drift": var(result.drift, ("time", "floor"), "m",
-                     "storey drift (floor minus floor below)"),
-        "storey_shear": var(result.storey_shear, ("time", "floor"), "N", "storey shear"),
+                     "storey drift (floor minus floor below; NaN: not a floor)"),
+        "storey_shear": var(result.storey_shear, ("time", "floor"), "N",
+                            "storey shear (NaN: a building given as matrices)"),
         "penetration": var(result.penetration, ("time", "contact"), "m",
                            "penetration u_left - u_right - gap (negative: open)"),
         "contact_force": var(result.contact_force, ("time", "contact"), "N",
@@ -93,6 +94,13 @@ def history_variables(result: "Result") -> HistoryVariables:
                              {"long_name": "building of each floor (B1 leftmost)"}),
         "floor_elevation": var(np.concatenate([b.floor_levels for b in model.buildings]),
                                ("floor",), "m", "floor elevation above the ground"),
+        "storey_height": var(np.concatenate([b.heights for b in model.buildings]),
+                             ("floor",), "m", "height of the storey below the floor (NaN: "
+                             "a degree of freedom that is not a floor)"),
+        "dof_name": Variable(("floor",), np.array(model.dof_names(), dtype=object),
+                             {"long_name": "the degree of freedom's name in its building (a "
+                                           "matrix building's labels; a DOF that is not a "
+                                           "floor translation, a rotation say, is in rad)"}),
         "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
                                  "elevation of the contact"),
     }

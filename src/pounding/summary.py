@@ -20,18 +20,21 @@ __all__ = ["building_summary", "inelastic_summary", "summarize"]
 def summarize(r: Result) -> dict[str, Any]:
     """Headline numbers (JSON-ready), each key naming its unit.
 
-    Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3; the drift and
-    shear of a floor are those of the storey below it) and located inside solver steps,
-    each with its time (``…_time_s``). ``buildings`` repeats them building by building,
-    storey by storey, with the building's natural periods — the table an engineer reads
-    first.
+    Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3 — of a matrix
+    building, its DOF 3; the drift and shear of a floor are those of the storey below it)
+    and located inside solver steps, each with its time (``…_time_s``); only floors are
+    listed (a matrix building's other DOFs, rotations say, are in the NetCDF file). The
+    storey shear of a matrix building is null: its ``K`` has no storey stiffness.
+    ``buildings`` repeats them building by building, storey by storey (floors by
+    elevation), with the building's natural periods — the table an engineer reads first.
     """
     pcf = r.peak_contact_force
     labels = r.model.dof_labels()
+    floor = r.model.is_floor
     contacts = r.model.contacts
 
     def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
-        return {lb: float(v) for lb, v in zip(labels, values)}
+        return {lb: float(v) for lb, v, f in zip(labels, values, floor) if f}
 
     return {
         "model": r.model.name,
@@ -73,7 +76,11 @@ def summarize(r: Result) -> dict[str, Any]:
     }
 
 def building_summary(r: Result) -> list[dict[str, Any]]:
-    """Per building: its natural periods and, storey by storey, the peaks and times."""
+    """Per building: its natural periods and, storey by storey (floors by elevation; a
+    matrix building's DOF label as ``label``), the peaks and times."""
+    from pounding.structure import MatrixBuilding
+    from pounding.structure.assembly import floor_dofs
+
     out = []
     quantities = (("peak_displacement_m", r.peak_displacement),
                   ("peak_displacement_time_s", r.peak_displacement_time),
@@ -86,13 +93,17 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
                   ("peak_abs_acceleration_time_s", r.peak_abs_acceleration_time))
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
         storeys = []
-        for j in range(bl.n):
-            row: dict[str, Any] = {"storey": j + 1,
+        matrices = isinstance(bl, MatrixBuilding)
+        for k, j in enumerate(floor_dofs(bl)):
+            row: dict[str, Any] = {"storey": k + 1,
+                                   **({"floor": f"F{j + 1}", "label": bl.labels[j]}
+                                      if matrices else {}),
                                    "floor_elevation_m": float(bl.floor_levels[j]),
                                    "height_m": float(bl.heights[j])}
             row.update({key: float(v[off + j]) for key, v in quantities})
             storeys.append(row)
-        out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": bl.n,
+        out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": len(storeys),
+                    **({"given_as": "matrices", "n_dof": bl.n} if matrices else {}),
                     "periods_s": [float(t) for t in bl.modes().periods],
                     "storeys": storeys})
     return out

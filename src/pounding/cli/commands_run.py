@@ -100,6 +100,8 @@ def _h(text: str) -> Text:
 
 def _print_summary(out: Any) -> None:
     """The tables printed after a run (``out`` is a :class:`pounding.run.RunOutput`)."""
+    from pounding.structure.assembly import floor_dofs
+
     r = out.result
     model = r.model
     s = r.summary()
@@ -140,16 +142,17 @@ def _print_summary(out: Any) -> None:
     drift = r.peak_drift
     shear = r.peak_storey_shear
     for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
-        d = drift[off: off + bl.n]
+        floors = floor_dofs(bl)  # storey k + 1 is the one below floors[k]
+        d = drift[off + floors]
         j = int(np.argmax(d))
-        v = shear[off: off + bl.n]
-        jv = int(np.argmax(v))
+        v = shear[off + floors]
+        jv = int(np.argmax(v)) if np.isfinite(v).all() else -1
         periods = ", ".join(f"{t:.3f}" for t in bl.modes().periods[:3])
-        roof = off + bl.n - 1
-        row = [f"B{b + 1} {bl.name}".strip(), str(bl.n), periods,
+        roof = off + int(floors[-1])
+        row = [f"B{b + 1} {bl.name}".strip(), str(floors.size), periods,
                f"{r.peak_displacement[roof]:.4f}", f"{r.peak_displacement_time[roof]:.3f}",
-               f"{d[j]:.4f}", str(j + 1), f"{d[j] / bl.heights[j]:.2%}",
-               f"{v[jv] / 1e3:.4g} (storey {jv + 1})"]
+               f"{d[j]:.4f}", str(j + 1), f"{d[j] / bl.heights[floors[j]]:.2%}",
+               f"{v[jv] / 1e3:.4g} (storey {jv + 1})" if jv >= 0 else "– (matrices)"]
         if inelastic:
             law = bl.storey_law
             if law is None:
@@ -208,26 +211,33 @@ STOREY_ROWS = 30
 def _print_storeys(r: Any) -> None:
     """Every storey's peaks with their times (the envelope figure, as numbers); a building
     of more than :data:`STOREY_ROWS` storeys shows the ten with the largest drift ratio."""
+    from pounding.structure.assembly import floor_dofs
+
     st = Table(title="Storeys: peaks and when (all of them in summary.json)")
     for col in ("building", "storey", "floor at [m]", "displacement [mm]", "t [s]",
                 "drift ratio [%]", "t [s]", "storey shear [kN]", "t [s]",
                 "abs. acceleration [m/s²]", "t [s]"):
         st.add_column(_h(col), justify="left" if col == "building" else "right")
     ratio = r.peak_drift_ratio
+    shear, shear_t = r.peak_storey_shear, r.peak_storey_shear_time
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
-        rows = range(bl.n)
-        if bl.n > STOREY_ROWS:
-            rows = sorted(np.argsort(-ratio[off: off + bl.n])[:10])
-        for j in rows:
-            i = off + int(j)
-            st.add_row(f"B{b + 1} {bl.name}".strip(), str(int(j) + 1),
+        floors = floor_dofs(bl)  # storeys by elevation (a matrix building's floor DOFs)
+        rows = range(floors.size)
+        if floors.size > STOREY_ROWS:
+            rows = sorted(np.argsort(-ratio[off + floors])[:10])
+        for k in rows:
+            j = int(floors[k])
+            i = off + j
+            has_shear = bool(np.isfinite(shear[i]))
+            st.add_row(f"B{b + 1} {bl.name}".strip(), str(int(k) + 1),
                        f"{bl.floor_levels[j]:g}",
                        f"{r.peak_displacement[i] * 1e3:.2f}", f"{r.peak_displacement_time[i]:.3f}",
                        f"{ratio[i] * 100:.3f}", f"{r.peak_drift_time[i]:.3f}",
-                       f"{r.peak_storey_shear[i] / 1e3:.5g}", f"{r.peak_storey_shear_time[i]:.3f}",
+                       f"{shear[i] / 1e3:.5g}" if has_shear else "–",
+                       f"{shear_t[i]:.3f}" if has_shear else "–",
                        f"{r.peak_abs_acceleration[i]:.4g}",
                        f"{r.peak_abs_acceleration_time[i]:.3f}")
-        if bl.n > STOREY_ROWS:
+        if floors.size > STOREY_ROWS:
             st.add_row(f"B{b + 1}", "…", "", "", "", "", "", "", "", "", "")
     console.print(st)
 

@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import math
+import os
+from pathlib import Path
 from typing import Annotated, Any
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
 from pounding.memo import Memo
-from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding
+from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
 from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
 from pounding.structure.damping import DampingModel
 
@@ -126,7 +128,7 @@ BUILDINGS = Memo(max_items=64, max_bytes=256 << 20)
 and default name."""
 
 
-def _building_bytes(b: ShearBuilding) -> int:
+def _building_bytes(b: ShearBuilding | MatrixBuilding) -> int:
     """Bytes a building holds: its mass, stiffness and damping matrices."""
     return 3 * 8 * b.n * b.n
 
@@ -134,6 +136,23 @@ def _building_bytes(b: ShearBuilding) -> int:
 _SDOF_KEYS = ("mass", "stiffness", "period", "height")
 _UNIFORM_KEYS = ("n_storeys", "mass", "stiffness", "period", "height")
 _STOREY_KEYS = ("masses", "stiffnesses", "heights", "height", "period")
+_MATRIX_KEYS = ("matrices", "npz", "elevations", "labels", "r", "floors")
+_SHEAR_KEYS = ("mass", "stiffness", "period", "height", "n_storeys", "masses", "stiffnesses",
+               "heights", "storey_law")
+
+
+class MatrixFilesConfig(Section):
+    """``matrices = { M = "m.csv", K = "k.csv", C = "c.csv" }``: one file a matrix (any
+    format of :func:`pounding.structure.read_matrix`), relative to the model file; ``C`` is
+    optional (without it, ``damping``)."""
+
+    M: str
+    K: str
+    C: str | None = None
+
+
+def _resolve(base: Path, value: str) -> str:
+    return str((base / Path(value).expanduser()).resolve())
 
 
 class BuildingConfig(Section):
@@ -147,6 +166,12 @@ class BuildingConfig(Section):
     * storeys: ``masses`` [kg], ``stiffnesses`` [N/m], ``heights`` [m] (or one ``height``
       for all; default 3), ground storey first; optional ``period`` [s] rescales all
       stiffnesses to that fundamental period.
+    * matrices (a :class:`~pounding.structure.MatrixBuilding`): ``matrices = { M = …,
+      K = …, C = … }`` (files; ``C`` optional) or ``npz = "b.npz"`` (arrays ``M``, ``K``,
+      optionally ``C``), paths relative to the model file (the copy a run writes names them
+      in full); ``elevations`` [m], one per degree of freedom; optional ``labels`` (default
+      ``F1`` … ``Fn``), ``r`` (influence vector) and ``floors`` (the DOFs that are floor
+      translations, labels or 0-based indices; default all). No storey law.
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF and 5 %
     Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
@@ -164,10 +189,34 @@ class BuildingConfig(Section):
     heights: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
     damping: DampingConfig | None = None
     storey_law: StoreyLawConfig | None = None
+    matrices: MatrixFilesConfig | None = None
+    npz: str | None = None
+    elevations: Annotated[list[float], Field(min_length=1)] | None = None
+    labels: Annotated[list[str], Field(min_length=1)] | None = None
+    r: Annotated[list[float], Field(min_length=1)] | None = None
+    floors: Annotated[list[str | int], Field(min_length=1)] | None = None
+
+    @model_validator(mode="before")
+    @classmethod
+    def _full_paths(cls, data: Any, info: ValidationInfo) -> Any:
+        """Matrix files relative to the model file's folder, resolved."""
+        if not isinstance(data, dict) or ("matrices" not in data and "npz" not in data):
+            return data
+        base = Path((info.context or {}).get("base_dir", "."))
+        data = dict(data)
+        if isinstance(data.get("npz"), str):
+            data["npz"] = _resolve(base, data["npz"])
+        mats = data.get("matrices")
+        if isinstance(mats, dict):
+            data["matrices"] = {k: _resolve(base, v) if isinstance(v, str) else v
+                                for k, v in mats.items()}
+        return data
 
     @property
     def kind(self) -> str:
-        """``'storeys'``, ``'uniform'`` or ``'sdof'``."""
+        """``'storeys'``, ``'uniform'``, ``'sdof'`` or ``'matrices'``."""
+        if self.matrices is not None or self.npz is not None:
+            return "matrices"
         if self.masses is not None:
             return "storeys"
         if self.n_storeys is not None:
@@ -184,6 +233,14 @@ class BuildingConfig(Section):
                     raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
                                              f"positive numbers are subnormal (got {x:g})")
         kind = self.kind
+        if kind == "matrices":
+            self._check_matrix_keys()
+            return self
+        for key in _MATRIX_KEYS:
+            if getattr(self, key) is not None:
+                raise field_error(key, f"only for a building given as matrices (matrices = "
+                                       f"{{ M = …, K = … }} or npz = …) (got "
+                                       f"{fmt(getattr(self, key))})")
         allowed = {"sdof": _SDOF_KEYS, "uniform": _UNIFORM_KEYS, "storeys": _STOREY_KEYS}[kind]
         shape = {"sdof": "an SDOF building (mass, period|stiffness)",
                  "uniform": "a uniform building (n_storeys, mass, stiffness|period)",
@@ -217,24 +274,84 @@ class BuildingConfig(Section):
                                               f"(got {len(self.heights)})")
         return self
 
+    def _check_matrix_keys(self) -> None:
+        for key in _SHEAR_KEYS:
+            if getattr(self, key) is not None:
+                why = (" (a matrix building is linear: storey yielding is the shear "
+                       "building's)" if key == "storey_law" else "")
+                raise field_error(key, f"not a key of a building given as matrices{why} "
+                                       f"(got {fmt(getattr(self, key))})")
+        if self.matrices is not None and self.npz is not None:
+            raise field_error("npz", f"give matrices or npz, not both (got npz = "
+                                     f"{self.npz!r})")
+        if self.elevations is None:
+            raise field_error("elevations", "required for a building given as matrices: one "
+                                            "elevation [m] per degree of freedom")
+        if self.matrices is not None and self.matrices.C is not None and self.damping is not None:
+            raise field_error("damping", "give a damping matrix (matrices.C) or damping, not "
+                                         f"both (got C = {self.matrices.C!r})")
+        files = ([("npz", self.npz)] if self.npz is not None else
+                 [(f"matrices.{k}", v) for k, v in self.matrices.model_dump().items()  # type: ignore[union-attr]
+                  if v is not None])
+        for key, path in files:
+            p = Path(path)
+            if not p.is_file():
+                what = "is a directory, not a matrix file" if p.is_dir() else "no such file"
+                raise field_error(tuple(key.split(".")), f"{what} {path!r} (relative paths "
+                                                         "start at the model file's folder)")
+
+    def _files(self) -> list[str]:
+        if self.npz is not None:
+            return [self.npz]
+        return [v for v in self.matrices.model_dump().values() if v is not None]  # type: ignore[union-attr]
+
     @property
     def n(self) -> int:
-        """Number of storeys."""
-        return {"sdof": 1, "uniform": self.n_storeys or 1,
-                "storeys": len(self.masses or ())}[self.kind]
+        """Number of storeys (of degrees of freedom, for a building given as matrices)."""
+        return {"sdof": 1, "uniform": self.n_storeys or 1, "storeys": len(self.masses or ()),
+                "matrices": len(self.elevations or ())}[self.kind]
 
-    def build(self, default_name: str) -> ShearBuilding:
-        """The :class:`ShearBuilding` (domain errors propagate unprefixed).
+    def build(self, default_name: str) -> ShearBuilding | MatrixBuilding:
+        """The :class:`ShearBuilding` or :class:`MatrixBuilding` (domain errors propagate
+        unprefixed).
 
-        Remembered per configuration and default name (:data:`BUILDINGS`): the cases of a
-        sweep that do not change a building share it, and its matrices and modal analysis
-        are made once. (A building is immutable.)
+        Remembered per configuration and default name (:data:`BUILDINGS`; matrix files by
+        their version too): the cases of a sweep that do not change a building share it,
+        and its matrices and modal analysis are made once. (A building is immutable.)
         """
-        return BUILDINGS.get((self.model_dump_json(), default_name),
+        versions: tuple[tuple[int, int], ...] = ()
+        if self.kind == "matrices":
+            versions = tuple((os.stat(f).st_mtime_ns, os.stat(f).st_size)
+                             for f in self._files())
+        return BUILDINGS.get((self.model_dump_json(), default_name, versions),
                              lambda: self._build(default_name), size=_building_bytes)
 
-    def _build(self, default_name: str) -> ShearBuilding:
+    def _build_matrices(self, name: str) -> MatrixBuilding:
+        from pounding.structure import read_matrix
+
+        damping = self.damping.build() if self.damping is not None else None
+        if self.npz is not None:
+            m_file, k_file, c_file = self.npz, None, None
+        else:
+            assert self.matrices is not None
+            m_file, k_file, c_file = self.matrices.M, self.matrices.K, self.matrices.C
+        n = read_matrix(m_file, "M").shape[0]
+        labels = self.labels if self.labels is not None else [f"F{j + 1}" for j in range(n)]
+        from pounding.structure import read_matrix_building
+
+        b = read_matrix_building(m_file, k_file, c_file, labels=labels,
+                                 elevations=self.elevations,  # type: ignore[arg-type]
+                                 r=self.r, damping=damping, name=name, floors=self.floors)
+        try:
+            b.lumped_masses()  # names M's file and its largest off-diagonal entry
+        except ValueError as exc:
+            raise ValueError(f"{exc}; the time stepper takes lumped masses") from None
+        return b
+
+    def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding:
         name = self.name or default_name
+        if self.kind == "matrices":
+            return self._build_matrices(name)
         damping = self.damping.build() if self.damping is not None else None
         h = self.height if self.height is not None else 3.0
         if self.kind == "sdof":

@@ -108,8 +108,13 @@ class RunConfig(Section):
                         "level_tolerance": self.contact.level_tolerance}
         devices: list[Any] = []
         if self.device:
-            with prefixed("contact"):
+            try:
                 bare = PoundingModel(buildings, gaps, spec, **geometry)
+            except ValueError as exc:
+                text = str(exc)
+                if text.startswith("buildings["):
+                    raise ValueError("building[" + text[len("buildings["):]) from exc
+                raise ValueError(f"contact: {text}") from exc
             floors = [(c.left.label(), c.right.label()) for c in bare.contacts
                       if c.is_floor_to_floor]
         for i, d in enumerate(self.device):
@@ -123,6 +128,8 @@ class RunConfig(Section):
             text = str(exc)
             if text.startswith("devices["):  # the model's devices[i] is the file's device[i]
                 raise ValueError("device[" + text[len("devices["):]) from exc
+            if text.startswith("buildings["):  # and its buildings[i] the file's building[i]
+                raise ValueError("building[" + text[len("buildings["):]) from exc
             raise ValueError(f"contact: {text}") from exc
         for p in range(len(buildings) - 1):
             if not any(c.pair == p for c in model.contacts):
@@ -180,8 +187,11 @@ class RunConfig(Section):
             raw.setdefault("name", f"B{i + 1}")
             if b.kind in ("sdof", "uniform"):
                 raw.setdefault("height", 3.0)
-            elif b.heights is None:
+            elif b.kind == "storeys" and b.heights is None:
                 raw.setdefault("height", 3.0)
+            if b.kind == "matrices" and (b.matrices is not None and b.matrices.C is not None
+                                         or _npz_has_c(b.npz)):
+                continue  # damped by its matrix C
             if b.damping is None:
                 raw["damping"] = ({"ratio": 0.05} if b.kind == "sdof" else
                                   {"rayleigh": [0.05, 0.05], "modes": [1, 2]})
@@ -204,6 +214,16 @@ class RunConfig(Section):
         sol.setdefault("duration", motion.duration)
         sol.setdefault("h_max", step)
         return data
+
+
+def _npz_has_c(path: str | None) -> bool:
+    """True if the ``.npz`` archive at ``path`` holds a damping matrix ``C``."""
+    if path is None:
+        return False
+    import numpy as np
+
+    with np.load(path, allow_pickle=False) as archive:
+        return "C" in archive.files
 
 
 def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",

@@ -9,8 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.contact.base import ContactLaw
-from pounding.structure import ShearBuilding
-from pounding.structure.assembly import shared_levels
+from pounding.structure.assembly import Building, floor_dofs, shared_levels
 
 __all__ = ["Contact", "ContactPoint", "contact_points"]
 
@@ -31,26 +30,30 @@ class ContactPoint:
     building : int
         0-based building index.
     upper : int
-        0-based index of the floor struck (a floor contact) or of the floor above the struck
+        0-based DOF of the floor struck (a floor contact) or of the floor above the struck
         storey (a column contact).
     xi : float
         Position of the point in storey ``upper + 1``: 0 at the floor below, 1 at floor
         ``upper``. Exactly 1 for a floor contact.
+    lower : int, optional
+        0-based DOF of the floor below the struck storey (−1: the ground); default
+        ``upper − 1``, as in a shear building (a matrix building's floor below may be
+        another DOF: :func:`pounding.structure.assembly.floor_below`).
     """
 
     building: int
     upper: int
     xi: float = 1.0
+    lower: int = None  # type: ignore[assignment]  # upper − 1 unless given
+
+    def __post_init__(self) -> None:
+        if self.lower is None:
+            object.__setattr__(self, "lower", self.upper - 1)
 
     @property
     def is_floor(self) -> bool:
         """True for a slab (floor) contact point, False for a point on a column."""
         return self.xi == 1.0
-
-    @property
-    def lower(self) -> int:
-        """0-based index of the floor below the struck storey (−1: the ground)."""
-        return self.upper - 1
 
     @property
     def storey(self) -> int:
@@ -150,31 +153,39 @@ class Contact:
         return f"{base}/{self.tag}" if self.tag else base
 
 
-def contact_points(a: ShearBuilding, b: ShearBuilding, floor_to_column: bool = True,
+def contact_points(a: Building, b: Building, floor_to_column: bool = True,
                    tol: float = 1e-6) -> list[tuple[float, int, float, int, float]]:
     """Where two neighbouring buildings can touch: ``(elevation, i, ξ_i, j, ξ_j)`` rows.
 
-    Floors at the same elevation (within ``tol`` [m]) meet floor to floor (``ξ = 1`` both).
-    With ``floor_to_column``, every other floor of one building below the roof of the other
-    meets the other's column at the same elevation, in storey ``j + 1`` at position ``ξ_j``
-    (0 at floor ``j − 1`` or the ground, 1 at floor ``j``). Rows are sorted by elevation.
+    Only floors take part: every DOF of a shear building, the
+    :attr:`~pounding.structure.MatrixBuilding.floors` of a matrix building, ordered by
+    elevation. Floors at the same elevation (within ``tol`` [m]) meet floor to floor
+    (``ξ = 1`` both). With ``floor_to_column``, every other floor of one building below the
+    roof of the other meets the other's column at the same elevation, in the storey below
+    the other's floor ``j`` at position ``ξ_j`` (0 at the floor below it or the ground, 1 at
+    floor ``j``). ``i`` and ``j`` are 0-based DOFs of ``a`` and ``b``; rows are sorted by
+    elevation.
     """
-    za, zb = a.floor_levels, b.floor_levels
+    fa, fb = floor_dofs(a), floor_dofs(b)
+    za, zb = a.floor_levels[fa], b.floor_levels[fb]
     rows: list[tuple[float, int, float, int, float]] = []
     paired_a: set[int] = set()
     paired_b: set[int] = set()
     for i, j in shared_levels(a, b, tol):
-        rows.append((float(za[i]), i, 1.0, j, 1.0))
+        rows.append((float(a.floor_levels[i]), i, 1.0, j, 1.0))
         paired_a.add(i)
         paired_b.add(j)
     if floor_to_column:
-        for levels, other, paired, left in ((za, zb, paired_a, True), (zb, za, paired_b, False)):
-            for i, z in enumerate(levels):
+        for levels, dofs, other, odofs, paired, left in ((za, fa, zb, fb, paired_a, True),
+                                                          (zb, fb, za, fa, paired_b, False)):
+            for k, z in enumerate(levels):
+                i = int(dofs[k])
                 if i in paired or z >= other[-1] - tol:
                     continue  # paired already, or level with / above the other's roof
                 j = int(np.searchsorted(other, z))  # storey j + 1: other[j-1] < z < other[j]
                 below = float(other[j - 1]) if j > 0 else 0.0
                 xi = (float(z) - below) / (float(other[j]) - below)
-                rows.append((float(z), i, 1.0, j, xi) if left else (float(z), j, xi, i, 1.0))
+                jd = int(odofs[j])
+                rows.append((float(z), i, 1.0, jd, xi) if left else (float(z), jd, xi, i, 1.0))
     rows.sort(key=lambda r: (r[0], r[1], r[3]))
     return rows

@@ -175,9 +175,9 @@ def influence_matrix(r: np.ndarray) -> np.ndarray:
 def floor_below(model: PoundingModel) -> np.ndarray:
     """The DOF of the floor below each floor (−1 for a first floor: the ground), so that
     the drift of storey j is ``u[j] − u[below[j]]``."""
-    below = np.arange(model.n_dof, dtype=np.int64) - 1
-    for off in model.system.offsets[: len(model.buildings)]:
-        below[int(off)] = -1
+    below = model.floor_below()  # consecutive floors by elevation; −2: not a floor
+    own = below == -2
+    below[own] = np.flatnonzero(own)  # a DOF that is not a floor: drift u − u = 0
     return below
 
 

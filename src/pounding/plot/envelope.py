@@ -97,9 +97,13 @@ def plot_envelopes(result: Result) -> Figure:
     edge of each panel mark the contact elevations: filled where the floors hit, hollow
     where the gap never closed.
     """
+    from pounding.structure.assembly import floor_dofs
+
     model = result.model
     env = envelopes(result)
-    force = scale_for(float(env.shear.max()) if env.shear.size else 0.0, "N")
+    # a matrix building has no storey shear (NaN): no line in that panel
+    force = scale_for(float(np.nanmax(env.shear)) if np.isfinite(env.shear).any() else 0.0,
+                      "N")
     fig, extra = titled_figure(model.name, "peak response against height "
                                f"({result.motion.name})", 10.0, 4.4)
     ax_u, ax_d, ax_v = axes_grid(fig, 1, 3, left=0.7, right=0.3, top=0.45 + extra,
@@ -108,22 +112,30 @@ def plot_envelopes(result: Result) -> Figure:
     panels = ((ax_u, env.displacement, MM, _floor_profile, "peak |displacement|"),
               (ax_d, env.drift_ratio, DRIFT_RATIO, _storey_profile, "peak |storey drift ratio|"),
               (ax_v, env.shear, force, _storey_profile, "peak |storey shear|"))
+    no_shear = []
     for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets)):
-        sl = slice(off, off + bl.n)
+        floors = floor_dofs(bl)  # by elevation; a matrix building's other DOFs left out
         label = fit_text(f"B{b + 1}" + (f" {bl.name}" if bl.name and bl.name != f"B{b + 1}"
                                         else ""), LEGEND_COLUMN, LEGEND_SIZE + 1, max_lines=1)
         for ax, values, unit, profile, _ in panels:
-            x, z = profile(bl.floor_levels, values[sl] * unit.factor)
+            if np.isnan(values[off + floors]).all():
+                no_shear.append(f"B{b + 1}")
+                continue
+            x, z = profile(bl.floor_levels[floors], values[off + floors] * unit.factor)
             ax.plot(x, z, color=colours(b % 10), lw=1.6, marker="o" if profile is
                     _floor_profile else None, ms=3, label=label)
     top = max(float(bl.total_height) for bl in model.buildings)
     for ax, values, unit, _, what in panels:
         ax.set_xlabel(f"{what} [{unit.unit}]")
-        largest = float(values.max()) * unit.factor if values.size else 0.0
+        largest = (float(np.nanmax(values)) * unit.factor if np.isfinite(values).any()
+                   else 0.0)
         ax.set_xlim(0.0, 1.1 * largest if largest > 0.0 else 1.0)
         ax.grid(True, alpha=0.3)
         if model.contacts:
             _mark_contacts(ax, result)
+    if no_shear:
+        ax_v.text(0.03, 0.98, f"no storey shear: {', '.join(no_shear)} given as matrices",
+                  transform=ax_v.transAxes, va="top", fontsize=LEGEND_SIZE)
     ax_u.set_ylim(0.0, top * 1.04)
     ax_u.set_ylabel("height above ground [m]")
     handles, labels = ax_u.get_legend_handles_labels()

@@ -103,13 +103,16 @@ def plot_displacements(result: Result) -> Figure:
 
     The roof is drawn thick; the legend gives each floor's elevation [m].
     """
+    from pounding.structure.assembly import floor_dofs
+
     model = result.model
     t = result.time
     floors = contact_floors(result)
-    shown = [sorted(floors.get(b, set()) | {bl.n - 1}) for b, bl in enumerate(model.buildings)]
-    labels = [[f"F{j + 1} (roof, {bl.floor_levels[j]:g} m)" if j == bl.n - 1
+    roofs = [int(floor_dofs(bl)[-1]) for bl in model.buildings]  # the highest floor
+    shown = [sorted(floors.get(b, set()) | {roofs[b]}) for b in range(len(model.buildings))]
+    labels = [[f"F{j + 1} (roof, {bl.floor_levels[j]:g} m)" if j == roof
                else f"F{j + 1} ({bl.floor_levels[j]:g} m)" for j in show]
-              for bl, show in zip(model.buildings, shown)]
+              for bl, show, roof in zip(model.buildings, shown, roofs)]
     rows = int(PANEL_HEIGHT / 0.15)
     ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
     fig, axes, _ = _history_figure(result, len(model.buildings), max(width),
@@ -117,13 +120,14 @@ def plot_displacements(result: Result) -> Figure:
     cmap = matplotlib.colormaps["viridis"]
     for b, (ax, bl, off) in enumerate(zip(axes, model.buildings, model.system.offsets)):
         for j, label in zip(shown[b], labels[b]):
-            roof = j == bl.n - 1
+            roof = j == roofs[b]
             colour = "k" if roof else cmap(0.1 + 0.75 * j / max(bl.n - 1, 1))
             history(ax, t, result.displacement[:, off + j] * MM.factor, color=colour,
                     lw=1.3 if roof else 0.7, label=label, zorder=3 if roof else 2)
         ax.axhline(0.0, color="0.6", lw=0.5)
         ax.set_ylabel(f"displacement [{MM.unit}]")
-        ax.set_title(fit_text(f"{_building_label(result, b)}: {bl.n} storey(s); roof and "
+        ax.set_title(fit_text(f"{_building_label(result, b)}: {floor_dofs(bl).size} "
+                              "storey(s); roof and "
                               "floors with a contact", axes_width(ax), TITLE_SIZE, max_lines=1),
                      fontsize=TITLE_SIZE, loc="left")
         ax.grid(True, alpha=0.3)

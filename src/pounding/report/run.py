@@ -124,11 +124,18 @@ def _response_table(r: RunFolder) -> Table:
     groups: dict[int, list[int]] = {}
     for i, lb in enumerate(labels):
         groups.setdefault(_building_of(lb), []).append(i)
+    heights = (np.asarray(ds["storey_height"].values, dtype=float)
+               if "storey_height" in ds.coords else None)
     for b, idx in sorted(groups.items()):
+        if heights is not None:  # floors only (NaN: a DOF that is not a floor)
+            idx = [i for i in idx if np.isfinite(heights[i])]
+            idx.sort(key=lambda i: elev[i])
         d = drift[idx]
         j = int(np.argmax(d))
-        below = elev[idx[j] - 1] if j > 0 else 0.0
-        h = elev[idx[j]] - below
+        if heights is not None:
+            h = heights[idx[j]]
+        else:
+            h = elev[idx[j]] - (elev[idx[j] - 1] if j > 0 else 0.0)
         ratio = 100.0 * d[j] / h if h > 0 else float("nan")
         name = ""
         if r.built is not None and b < len(r.built.model.buildings):

@@ -47,10 +47,20 @@ def model_section(r: RunFolder) -> list[Block]:
                 periods = ", ".join(num(p) for p in bl.modes().periods[:3])
             except Exception:  # noqa: BLE001  (a display nicety only)
                 periods = "–"
-            t.add(f"B{b + 1}", bl.name or "–", bl.n, float(bl.total_height),
-                  float(bl.total_mass), _range_text(bl.masses, "kg"),
-                  _range_text(bl.stiffnesses, "N/m"), float(bl.fundamental_period), periods,
-                  bl.damping.readable())
+            if hasattr(bl, "stiffnesses"):
+                storeys, masses = bl.n, _range_text(bl.masses, "kg")
+                stiffness = _range_text(bl.stiffnesses, "N/m")
+                damping = bl.damping.readable()
+            else:  # a MatrixBuilding: its K couples the floors, no storey stiffness
+                floors = [j for j in bl.floors]
+                storeys, masses = len(floors), _range_text(bl.masses[floors], "kg")
+                stiffness = (f"full K, {bl.n}×{bl.n}"
+                             + (f" ({bl.sources['K']})" if "K" in bl.sources else ""))
+                damping = (bl.damping.readable() if bl.damping is not None
+                           else f"matrix C ({bl.sources.get('C', 'given')})")
+            t.add(f"B{b + 1}", bl.name or "–", storeys, float(bl.total_height),
+                  float(bl.total_mass), masses, stiffness, float(bl.fundamental_period),
+                  periods, damping)
         parts.append(t)
     else:
         builds = r.toml.get("building", [])

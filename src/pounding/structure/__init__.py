@@ -10,7 +10,8 @@
   and the floor pairs that can collide (:mod:`pounding.structure.assembly`).
 * :class:`MatrixBuilding`, :func:`read_matrix_building`, :func:`read_matrix`,
   :func:`lumped_masses` — buildings given as mass and stiffness matrices read from files
-  (:mod:`pounding.structure.matrices`; not yet taken by models). Matrices out of an
+  (:mod:`pounding.structure.matrices`), planar, beside shear buildings in a
+  :class:`~pounding.model.PoundingModel`. Matrices out of an
   OpenSeesPy model: :func:`pounding.structure.opensees_matrices.matrices_from_opensees`.
 """
 

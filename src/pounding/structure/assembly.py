@@ -10,7 +10,9 @@ vectors (Chopra §9.4.1, applied to each building). Contact couples the blocks l
 the floors listed by :func:`shared_levels`.
 
 DOF numbering: building ``b``'s floor ``j`` (1-based, floor 1 = first suspended floor) is
-global degree of freedom ``offsets[b] + j − 1``.
+global degree of freedom ``offsets[b] + j − 1``; a :class:`~pounding.structure.MatrixBuilding`'s
+DOF ``j`` (0-based, in its own order) is ``offsets[b] + j``. Its floors are the DOFs of
+:attr:`~pounding.structure.MatrixBuilding.floors` (:func:`floor_dofs`, lowest first).
 """
 
 from __future__ import annotations
@@ -22,10 +24,34 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
+from pounding.structure.matrices import MatrixBuilding
 from pounding.structure.shear_building import ShearBuilding
 from pounding.validation import positive
 
-__all__ = ["AssembledSystem", "assemble", "shared_levels"]
+__all__ = ["BUILDING_TYPES", "AssembledSystem", "Building", "assemble", "floor_below",
+           "floor_dofs", "shared_levels"]
+
+Building = ShearBuilding | MatrixBuilding
+"""A building that stands in a row: a shear building or a (planar) matrix building."""
+
+BUILDING_TYPES = (ShearBuilding, MatrixBuilding)
+"""The classes of :data:`Building` (for ``isinstance``)."""
+
+
+def floor_dofs(building: Building) -> NDArray[np.int64]:
+    """The building's floor DOFs (0-based, its own numbering), lowest floor first: every DOF
+    of a shear building; a matrix building's :attr:`~MatrixBuilding.floors` by elevation."""
+    if isinstance(building, MatrixBuilding):
+        return building.floor_dofs
+    return np.arange(building.n, dtype=np.int64)
+
+
+def floor_below(building: Building) -> NDArray[np.int64]:
+    """For every DOF, the floor DOF below it: −1 for the lowest floor (the ground below),
+    −2 for a DOF that is not a floor (no storey drift)."""
+    if isinstance(building, MatrixBuilding):
+        return building.floor_below()
+    return np.arange(building.n, dtype=np.int64) - 1
 
 
 class AssembledSystem(NamedTuple):
@@ -43,7 +69,8 @@ class AssembledSystem(NamedTuple):
     K : ndarray, shape (N, N)
         Stiffness matrix [N/m].
     r : ndarray, shape (N,)
-        Influence vector [-] (all ones: every floor feels the ground acceleration).
+        Influence vector [-]: each building's own (all ones for a shear building: every
+        floor feels the ground acceleration).
     offsets : ndarray of int64, shape (B,)
         Global index of each building's first degree of freedom (its floor 1).
     """
@@ -78,7 +105,7 @@ def assemble(buildings: Sequence[ShearBuilding]) -> AssembledSystem:
 
     Parameters
     ----------
-    buildings : sequence of ShearBuilding
+    buildings : sequence of ShearBuilding or MatrixBuilding
         One or more buildings, in the order they stand (left to right).
 
     Returns
@@ -89,15 +116,19 @@ def assemble(buildings: Sequence[ShearBuilding]) -> AssembledSystem:
     Raises
     ------
     ValueError
-        If ``buildings`` is empty or an entry is not a :class:`ShearBuilding`.
+        If ``buildings`` is empty or an entry is not a :class:`ShearBuilding` or a
+        :class:`MatrixBuilding`.
     """
     items = list(buildings)
     if not items:
         raise ValueError("buildings must hold at least one ShearBuilding (got an empty sequence)")
     for i, b in enumerate(items):
-        if not isinstance(b, ShearBuilding):
-            raise ValueError(f"buildings[{i}] must be a ShearBuilding (got {b!r})")
-    M = scipy.linalg.block_diag(*(b.mass_matrix() for b in items))
+        if not isinstance(b, BUILDING_TYPES):
+            raise ValueError(f"buildings[{i}] must be a ShearBuilding or a MatrixBuilding "
+                             f"(got {b!r})")
+    # a matrix building's M is lumped: off-diagonal round-off (≤ DIAGONAL_RTOL) is dropped
+    M = scipy.linalg.block_diag(*(np.diag(b.masses) if isinstance(b, MatrixBuilding)
+                                  else b.mass_matrix() for b in items))
     C = scipy.linalg.block_diag(*(b.damping_matrix() for b in items))
     K = scipy.linalg.block_diag(*(b.stiffness_matrix() for b in items))
     r = np.concatenate([b.influence_vector() for b in items])
@@ -110,39 +141,40 @@ def assemble(buildings: Sequence[ShearBuilding]) -> AssembledSystem:
                            offsets)
 
 
-def shared_levels(a: ShearBuilding, b: ShearBuilding, tol: float = 1e-6) -> list[tuple[int, int]]:
+def shared_levels(a: Building, b: Building, tol: float = 1e-6) -> list[tuple[int, int]]:
     """Pairs of floors of ``a`` and ``b`` at the same elevation, where floor-to-floor impact
     can occur.
 
     Parameters
     ----------
-    a, b : ShearBuilding
-        The two adjacent buildings.
+    a, b : ShearBuilding or MatrixBuilding
+        The two adjacent buildings (of a matrix building, its floor DOFs only).
     tol : float
         Two floors are at the same elevation if their levels differ by at most ``tol`` [m].
 
     Returns
     -------
     list of (int, int)
-        ``(i, j)`` with ``a.floor_levels[i] ≈ b.floor_levels[j]``, 0-based floor indices
-        (0 = floor 1), ascending. Buildings of different heights pair only up to the lower
+        ``(i, j)`` with ``a.floor_levels[i] ≈ b.floor_levels[j]``, 0-based DOF indices
+        (0 = floor 1 of a shear building), by elevation. Buildings of different heights pair only up to the lower
         roof; floors at different elevations are not paired (floor-to-column impact is
         another matter).
 
     Raises
     ------
     ValueError
-        If ``a`` or ``b`` is not a ShearBuilding or ``tol`` is not positive.
+        If ``a`` or ``b`` is not a building or ``tol`` is not positive.
     """
     for label, x in (("a", a), ("b", b)):
-        if not isinstance(x, ShearBuilding):
-            raise ValueError(f"{label} must be a ShearBuilding (got {x!r})")
+        if not isinstance(x, BUILDING_TYPES):
+            raise ValueError(f"{label} must be a ShearBuilding or a MatrixBuilding (got {x!r})")
     t = positive("tol", tol)
-    za, zb = a.floor_levels, b.floor_levels
+    fa, fb = floor_dofs(a), floor_dofs(b)
+    za, zb = a.floor_levels[fa], b.floor_levels[fb]
     pairs: list[tuple[int, int]] = []
     for i, z in enumerate(za):
         j = int(np.argmin(np.abs(zb - z)))
         # mutual nearest neighbours within tol: never pairs one floor twice
         if abs(zb[j] - z) <= t and int(np.argmin(np.abs(za - zb[j]))) == i:
-            pairs.append((i, j))
+            pairs.append((int(fa[i]), int(fb[j])))
     return pairs

@@ -34,23 +34,27 @@ or says which off-diagonal entry is in the way. :meth:`MatrixBuilding.to_shear_b
 a matrix building that is a shear building (Chopra §9.2) back into a
 :class:`~pounding.structure.ShearBuilding`.
 
-Reading and checking one matrix is :mod:`pounding.structure.matrix_files`; this module
-builds a building of them.
+Reading and checking one matrix (and the labels, elevations, ``r`` and floors that go with
+them), and reading a building from files (:func:`read_matrix_building`), is
+:mod:`pounding.structure.matrix_files`; this module is the building.
 
-These are readers only: :class:`MatrixBuilding` is not yet accepted by
-:class:`pounding.model.PoundingModel` or the time stepper.
+In a :class:`pounding.model.PoundingModel` a planar matrix building stands in a row beside
+shear buildings: every DOF named in :attr:`MatrixBuilding.floors` (all of them by default) is
+a floor's lateral translation along the row at its elevation, where contacts are found and
+storey drifts measured (between consecutive floors ordered by elevation); the other DOFs
+(rotations, say) take no contact and have no drift. A matrix building has no storey law:
+storey yielding is the shear building's.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
 from pounding.hysteresis.base import StoreyLaw
 from pounding.structure.damping import DampingModel, RayleighDamping
@@ -72,59 +76,18 @@ from pounding.structure.matrix_files import (  # noqa: E402  (re-exported)
     DIAGONAL_RTOL,
     MATRIX_FORMATS,
     SYMMETRY_RTOL,
-    StrPath,
     _check_positive_definite,
+    _floors,
     _is_diagonal,
-    _prefix,
+    _labels,
     _shape,
     _smallest_eigenvalue,
+    _vector,
     check_matrix,
     lumped_masses,
     read_matrix,
+    read_matrix_building,
 )
-
-
-def _vector(name: str, value: ArrayLike, n: int, where: str) -> NDArray[np.float64]:
-    pre = _prefix(where)
-    try:
-        v = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{pre}{name} must be numbers, one per degree of freedom "
-                         f"(got {value!r})") from None
-    v = np.atleast_1d(v)
-    if v.ndim != 1:
-        raise ValueError(f"{pre}{name} must be one-dimensional, one value per degree of freedom "
-                         f"(got shape {v.shape})")
-    if v.size != n:
-        raise ValueError(f"{pre}{name} has {v.size} values but the matrices have {n} degrees "
-                         "of freedom")
-    bad = ~np.isfinite(v)
-    if np.any(bad):
-        k = int(np.argmax(bad))
-        raise ValueError(f"{pre}{name}[{k}] = {v[k]} is not finite")
-    v = np.ascontiguousarray(v)
-    v.flags.writeable = False
-    return v
-
-
-def _labels(value: Any, n: int, where: str) -> tuple[str, ...]:
-    pre = _prefix(where)
-    if isinstance(value, str) or not isinstance(value, Sequence | np.ndarray):
-        raise ValueError(f"{pre}labels must be a sequence of strings, one per degree of freedom "
-                         f"(got {value!r})")
-    labels = tuple(value)
-    if len(labels) != n:
-        raise ValueError(f"{pre}labels has {len(labels)} entries but the matrices have {n} "
-                         "degrees of freedom")
-    seen: dict[str, int] = {}
-    for k, lab in enumerate(labels):
-        if not isinstance(lab, str) or not lab.strip():
-            raise ValueError(f"{pre}labels[{k}] must be a non-empty string (got {lab!r})")
-        if lab in seen:
-            raise ValueError(f"{pre}labels[{k}] = {lab!r} repeats labels[{seen[lab]}]; each "
-                             "degree of freedom needs its own label")
-        seen[lab] = k
-    return labels
 
 
 # --------------------------------------------------------------------------- the building
@@ -133,7 +96,8 @@ class MatrixBuilding:
     """A building's linear lateral model given by its matrices.
 
     Equation of motion relative to the ground (Chopra §9.4):
-    ``M ü + C u̇ + K u = −M r a_g(t)`` (+ contact forces, once wired into a model).
+    ``M ü + C u̇ + K u = −M r a_g(t)`` (+ contact forces in a
+    :class:`~pounding.model.PoundingModel`).
 
     Parameters
     ----------
@@ -147,8 +111,8 @@ class MatrixBuilding:
     elevations : array_like, shape (n,)
         Elevation of each DOF above the ground [m], finite.
     r : array_like, shape (n,), optional
-        Influence vector of the ground motion [-] (Chopra §9.4.1); default all ones. Not all
-        zero.
+        Influence vector of the ground motion [-] (Chopra §9.4.1); default 1 on the
+        ``floors`` (all ones when every DOF is a floor), 0 elsewhere. Not all zero.
     C : array_like, shape (n, n), optional
         Damping matrix [N·s/m], symmetric positive semi-definite. Give ``C`` or ``damping``,
         not both.
@@ -161,6 +125,10 @@ class MatrixBuilding:
     sources : mapping of str to str
         Where each matrix came from (``{"M": "m.csv", "K": "k.csv"}``), named in messages;
         :func:`read_matrix_building` fills it in.
+    floors : sequence of int or str, optional
+        The DOFs that are floor translations along the row (0-based indices or labels);
+        default all. Only these meet a neighbour in contact and have a storey drift; the
+        default ``r`` is 1 on them and 0 on the others (rotations).
 
     Raises
     ------
@@ -192,6 +160,7 @@ class MatrixBuilding:
     damping: DampingModel | None = None
     name: str = ""
     sources: Mapping[str, str] = field(default_factory=dict)
+    floors: Sequence[int | str] | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str):
@@ -216,7 +185,10 @@ class MatrixBuilding:
         n = M.shape[0]
         labels = _labels(self.labels, n, who)
         elevations = _vector("elevations", self.elevations, n, who)
-        r = _vector("r", np.ones(n) if self.r is None else self.r, n, who)
+        floors = _floors(self.floors, labels, who)
+        r0 = np.zeros(n)
+        r0[list(floors)] = 1.0
+        r = _vector("r", r0 if self.r is None else self.r, n, who)
         if not np.any(r != 0.0):
             raise ValueError(f"{who}: r is all zero: the ground motion would not move the "
                              "building")
@@ -262,6 +234,7 @@ class MatrixBuilding:
         object.__setattr__(self, "C", None if self.C is None else _readonly(C))
         object.__setattr__(self, "damping", damping)
         object.__setattr__(self, "sources", sources)
+        object.__setattr__(self, "floors", floors)
         object.__setattr__(self, "_C", _readonly(C))
 
     # ----------------------------------------------------------------- constructors
@@ -304,6 +277,70 @@ class MatrixBuilding:
     def influence_vector(self) -> NDArray[np.float64]:
         """``r`` [-], shape (n,), a fresh copy."""
         return np.array(self.r)
+
+    # ----------------------------------------------------------------- in a row of buildings
+    @property
+    def floor_dofs(self) -> NDArray[np.int64]:
+        """The floor DOFs (:attr:`floors`), lowest first (equal elevations: by index)."""
+        f = np.array(self.floors, dtype=np.int64)
+        return f[np.argsort(self.elevations[f], kind="stable")]
+
+    def floor_below(self) -> NDArray[np.int64]:
+        """For every DOF, the floor DOF below it (−1: the ground; −2: not a floor), so that
+        the storey drift of floor DOF j is ``u[j] − u[below[j]]`` (``u = 0`` at the ground)."""
+        below = np.full(self.n, -2, dtype=np.int64)
+        f = self.floor_dofs
+        below[f] = np.concatenate(([-1], f[:-1]))
+        return below
+
+    @property
+    def masses(self) -> NDArray[np.float64]:
+        """Lumped mass of every DOF [kg] (rotations: [kg·m²]), shape (n,); raises unless
+        ``M`` is diagonal (:func:`lumped_masses`)."""
+        return self.lumped_masses()
+
+    @property
+    def floor_levels(self) -> NDArray[np.float64]:
+        """Elevation of every DOF [m], shape (n,) (the :attr:`elevations`; the name every
+        building of a row answers to)."""
+        return np.array(self.elevations)
+
+    @property
+    def heights(self) -> NDArray[np.float64]:
+        """Height of the storey below every floor DOF [m] (its elevation less the floor
+        below's, or the ground's), shape (n,); NaN for a DOF that is not a floor."""
+        below = self.floor_below()
+        z = self.elevations
+        out = np.full(self.n, np.nan)
+        f = below > -2
+        out[f] = z[f] - np.where(below[f] >= 0, z[np.maximum(below[f], 0)], 0.0)
+        return out
+
+    @property
+    def total_height(self) -> float:
+        """Elevation of the highest floor [m]."""
+        return float(np.max(self.elevations[list(self.floors)]))
+
+    @property
+    def total_mass(self) -> float:
+        """The mass the ground motion moves, ``rᵀ M r`` [kg] (the sum of the floor masses
+        for a building whose DOFs are all floors)."""
+        return float(self.r @ self.M @ self.r)  # type: ignore[operator]
+
+    @property
+    def storey_law(self) -> None:
+        """None: a matrix building is linear (storey yielding is the shear building's)."""
+        return None
+
+    @property
+    def is_inelastic(self) -> bool:
+        """False: a matrix building has no yielding storeys."""
+        return False
+
+    @property
+    def yield_forces(self) -> None:
+        """None: no storey yield shears (linear)."""
+        return None
 
     @property
     def is_lumped(self) -> bool:
@@ -428,76 +465,7 @@ class MatrixBuilding:
                 and self.labels == other.labels
                 and np.array_equal(self.elevations, other.elevations)
                 and np.array_equal(self.r, other.r)  # type: ignore[arg-type]
-                and same_c and self.damping == other.damping and self.name == other.name)
+                and same_c and self.damping == other.damping and self.name == other.name
+                and self.floors == other.floors)
 
     __hash__ = None  # type: ignore[assignment]
-
-
-# --------------------------------------------------------------------------- from files
-def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None = None, *,
-                         labels: Sequence[str], elevations: ArrayLike,
-                         r: ArrayLike | None = None, damping: DampingModel | None = None,
-                         name: str = "") -> MatrixBuilding:
-    """Read a :class:`MatrixBuilding` from matrix files.
-
-    Parameters
-    ----------
-    M : str or path-like
-        The mass-matrix file (any format of :func:`read_matrix`), or an ``.npz`` archive
-        holding arrays ``M``, ``K`` and optionally ``C``.
-    K : str or path-like, optional
-        The stiffness-matrix file; may be omitted when ``M`` is an ``.npz`` archive (``K`` is
-        then read from it).
-    C : str or path-like, optional
-        A damping-matrix file. When it is not given and ``M`` is an ``.npz`` archive that
-        holds a ``C``, that ``C`` is read (and giving ``damping`` too is an error).
-    labels : sequence of str
-        One label per degree of freedom.
-    elevations : array_like
-        One elevation [m] per degree of freedom.
-    r : array_like, optional
-        Influence vector (default all ones).
-    damping : DampingModel, optional
-        Damping model, if no ``C`` is read (default 5 % Rayleigh at modes 1 and 2).
-    name : str
-        The building's name.
-
-    Returns
-    -------
-    MatrixBuilding
-        With :attr:`MatrixBuilding.sources` naming the file of each matrix.
-
-    Raises
-    ------
-    ValueError
-        One line naming the file and the problem.
-    """
-    m_path = Path(M)
-    sources: dict[str, str] = {"M": str(m_path)}
-    Mx = read_matrix(m_path, "M")
-    npz = m_path.suffix.lower() == ".npz"
-    if K is None:
-        if not npz:
-            raise ValueError(f"{m_path}: give K's file too (only an .npz archive holds both)")
-        k_path = m_path
-    else:
-        k_path = Path(K)
-    Kx = read_matrix(k_path, "K")
-    sources["K"] = str(k_path)
-    Cx = None
-    if C is not None:
-        c_path = Path(C)
-        Cx = read_matrix(c_path, "C")
-        sources["C"] = str(c_path)
-    elif npz:
-        with np.load(m_path, allow_pickle=False) as archive:
-            has_c = "C" in archive.files
-        if has_c:
-            if damping is not None:
-                raise ValueError(f"{m_path}: holds a damping matrix C and a damping model was "
-                                 "given too; give one")
-            Cx = read_matrix(m_path, "C")
-            sources["C"] = str(m_path)
-    return MatrixBuilding(M=Mx, K=Kx, labels=tuple(labels),
-                          elevations=elevations, r=r,  # type: ignore[arg-type]
-                          C=Cx, damping=damping, name=name, sources=sources)

@@ -1,21 +1,29 @@
 """Matrices of a building read from files and checked: plain text, NumPy ``.npy`` / ``.npz``
 and Matrix Market ``.mtx`` (:func:`read_matrix`), symmetric and positive definite
-(:func:`check_matrix`), and the lumped masses the time stepper takes (:func:`lumped_masses`).
-See :mod:`pounding.structure.matrices` for the formats and the checks."""
+(:func:`check_matrix`), and the lumped masses the time stepper takes (:func:`lumped_masses`);
+the per-DOF labels, vectors and floors that go with them; a
+:class:`~pounding.structure.matrices.MatrixBuilding` read from its files
+(:func:`read_matrix_building`). See :mod:`pounding.structure.matrices` for the formats and
+the checks."""
 
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.structure.damping import DampingModel
 from pounding.structure.shear_building import MAX_FLOORS
 
+if TYPE_CHECKING:
+    from pounding.structure.matrices import MatrixBuilding
+
 __all__ = ["DIAGONAL_RTOL", "MATRIX_FORMATS", "SYMMETRY_RTOL", "StrPath", "check_matrix",
-           "lumped_masses", "read_matrix"]
+           "lumped_masses", "read_matrix", "read_matrix_building"]
 
 StrPath = str | os.PathLike[str]
 
@@ -298,3 +306,147 @@ def lumped_masses(M: ArrayLike, where: str = "") -> NDArray[np.float64]:
             raise ValueError(f"{_prefix(where)}M[{k},{k}] = {x:g} must be > 0: every degree of "
                              "freedom needs a positive mass")
     return m
+
+
+def _vector(name: str, value: ArrayLike, n: int, where: str) -> NDArray[np.float64]:
+    pre = _prefix(where)
+    try:
+        v = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{pre}{name} must be numbers, one per degree of freedom "
+                         f"(got {value!r})") from None
+    v = np.atleast_1d(v)
+    if v.ndim != 1:
+        raise ValueError(f"{pre}{name} must be one-dimensional, one value per degree of freedom "
+                         f"(got shape {v.shape})")
+    if v.size != n:
+        raise ValueError(f"{pre}{name} has {v.size} values but the matrices have {n} degrees "
+                         "of freedom")
+    bad = ~np.isfinite(v)
+    if np.any(bad):
+        k = int(np.argmax(bad))
+        raise ValueError(f"{pre}{name}[{k}] = {v[k]} is not finite")
+    v = np.ascontiguousarray(v)
+    v.flags.writeable = False
+    return v
+
+
+def _labels(value: Any, n: int, where: str) -> tuple[str, ...]:
+    pre = _prefix(where)
+    if isinstance(value, str) or not isinstance(value, Sequence | np.ndarray):
+        raise ValueError(f"{pre}labels must be a sequence of strings, one per degree of freedom "
+                         f"(got {value!r})")
+    labels = tuple(value)
+    if len(labels) != n:
+        raise ValueError(f"{pre}labels has {len(labels)} entries but the matrices have {n} "
+                         "degrees of freedom")
+    seen: dict[str, int] = {}
+    for k, lab in enumerate(labels):
+        if not isinstance(lab, str) or not lab.strip():
+            raise ValueError(f"{pre}labels[{k}] must be a non-empty string (got {lab!r})")
+        if lab in seen:
+            raise ValueError(f"{pre}labels[{k}] = {lab!r} repeats labels[{seen[lab]}]; each "
+                             "degree of freedom needs its own label")
+        seen[lab] = k
+    return labels
+
+
+def _floors(value: Any, labels: tuple[str, ...], where: str) -> tuple[int, ...]:
+    """The floor DOFs, 0-based and ascending, from indices or labels (default: all)."""
+    n = len(labels)
+    if value is None:
+        return tuple(range(n))
+    pre = _prefix(where)
+    if isinstance(value, str) or not isinstance(value, Sequence | np.ndarray) or not len(value):
+        raise ValueError(f"{pre}floors must be a non-empty sequence of degree-of-freedom "
+                         f"indices or labels (got {value!r})")
+    out: list[int] = []
+    for k, f in enumerate(value):
+        if isinstance(f, str):
+            if f not in labels:
+                raise ValueError(f"{pre}floors[{k}] = {f!r} is not one of the labels")
+            i = labels.index(f)
+        elif isinstance(f, int | np.integer) and not isinstance(f, bool) and 0 <= f < n:
+            i = int(f)
+        else:
+            raise ValueError(f"{pre}floors[{k}] = {f!r} must be a label or an index in "
+                             f"[0, {n - 1}]")
+        if i in out:
+            raise ValueError(f"{pre}floors[{k}] = {f!r} is given twice")
+        out.append(i)
+    return tuple(sorted(out))
+
+
+# --------------------------------------------------------------------------- from files
+def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None = None, *,
+                         labels: Sequence[str], elevations: ArrayLike,
+                         r: ArrayLike | None = None, damping: DampingModel | None = None,
+                         name: str = "", floors: Sequence[int | str] | None = None
+                         ) -> MatrixBuilding:
+    """Read a :class:`MatrixBuilding` from matrix files.
+
+    Parameters
+    ----------
+    M : str or path-like
+        The mass-matrix file (any format of :func:`read_matrix`), or an ``.npz`` archive
+        holding arrays ``M``, ``K`` and optionally ``C``.
+    K : str or path-like, optional
+        The stiffness-matrix file; may be omitted when ``M`` is an ``.npz`` archive (``K`` is
+        then read from it).
+    C : str or path-like, optional
+        A damping-matrix file. When it is not given and ``M`` is an ``.npz`` archive that
+        holds a ``C``, that ``C`` is read (and giving ``damping`` too is an error).
+    labels : sequence of str
+        One label per degree of freedom.
+    elevations : array_like
+        One elevation [m] per degree of freedom.
+    r : array_like, optional
+        Influence vector (default all ones).
+    damping : DampingModel, optional
+        Damping model, if no ``C`` is read (default 5 % Rayleigh at modes 1 and 2).
+    name : str
+        The building's name.
+    floors : sequence of int or str, optional
+        The DOFs that are floor translations (:class:`MatrixBuilding`); default all.
+
+    Returns
+    -------
+    MatrixBuilding
+        With :attr:`MatrixBuilding.sources` naming the file of each matrix.
+
+    Raises
+    ------
+    ValueError
+        One line naming the file and the problem.
+    """
+    m_path = Path(M)
+    sources: dict[str, str] = {"M": str(m_path)}
+    Mx = read_matrix(m_path, "M")
+    npz = m_path.suffix.lower() == ".npz"
+    if K is None:
+        if not npz:
+            raise ValueError(f"{m_path}: give K's file too (only an .npz archive holds both)")
+        k_path = m_path
+    else:
+        k_path = Path(K)
+    Kx = read_matrix(k_path, "K")
+    sources["K"] = str(k_path)
+    Cx = None
+    if C is not None:
+        c_path = Path(C)
+        Cx = read_matrix(c_path, "C")
+        sources["C"] = str(c_path)
+    elif npz:
+        with np.load(m_path, allow_pickle=False) as archive:
+            has_c = "C" in archive.files
+        if has_c:
+            if damping is not None:
+                raise ValueError(f"{m_path}: holds a damping matrix C and a damping model was "
+                                 "given too; give one")
+            Cx = read_matrix(m_path, "C")
+            sources["C"] = str(m_path)
+    from pounding.structure.matrices import MatrixBuilding
+
+    return MatrixBuilding(M=Mx, K=Kx, labels=tuple(labels),
+                          elevations=elevations, r=r,  # type: ignore[arg-type]
+                          C=Cx, damping=damping, name=name, sources=sources, floors=floors)

@@ -68,9 +68,9 @@ def _layout(model: Any) -> _Layout:
     layout = _LAYOUTS.get(key)
     if layout is None:
         labels = model.dof_labels()
-        below = np.arange(model.n_dof, dtype=np.int64) - 1
-        for off in model.system.offsets[: len(model.buildings)]:
-            below[int(off)] = -1
+        below = model.floor_below()  # −2: not a floor (a matrix building's rotation, say)
+        own = below == -2
+        below[own] = np.flatnonzero(own)  # drift u − u = 0, over a NaN height: left out
         layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
                                for name in FLOOR_MEASURES),
                          np.concatenate([b.heights for b in model.buildings]), below,
@@ -116,7 +116,7 @@ def result_row(result: Any) -> dict[str, Any]:
         "contact_dissipated_J": float(e[-1, 4] - e[-1, 5]),
         "energy_input_J": float(e[-1, 0]),
         "energy_balance_error": float(result.energy_balance_error),
-        "peak_drift_ratio": float((drift / layout.heights).max()),
+        "peak_drift_ratio": float(np.nanmax(drift / layout.heights)),
         "peak_floor_accel_m_s2": float(accel.max()),
         "record_pga_g": float(result.motion.pga_g),
         "impact_overflow": bool(result.stats.impact_overflow),
