@@ -42,6 +42,7 @@ from pounding.devices import Bumper, Link
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ShearBuilding
+from pounding.structure.plan import PlanBuilding, PlanMatrixBuilding, plan_contact_points
 from pounding.structure.assembly import (
     BUILDING_TYPES,
     AssembledSystem,
@@ -85,6 +86,23 @@ def _check_matrix_building(i: int, b: MatrixBuilding) -> None:
         raise ValueError(f"{who}: floors {b.labels[f[k]]!r} and {b.labels[f[k + 1]]!r} are both "
                          f"at elevation {z[k]:g} m; give each floor its own elevation (or list "
                          "only one of them in floors)")
+
+
+def _with_plan_influence(system: AssembledSystem,
+                         buildings: Sequence[Building]) -> AssembledSystem:
+    """The system with the influence matrix R (N × 2) of two ground components, x and y,
+    where a building is in plan (its own R; a planar building feels the x component
+    through its ``r``, nothing of y); unchanged (r of shape (N,)) otherwise."""
+    if not any(isinstance(b, PlanMatrixBuilding) for b in buildings):
+        return system
+    R = np.zeros((system.n_dof, 2))
+    for off, b in zip(system.offsets, buildings):
+        rows = slice(int(off), int(off) + b.n)
+        if isinstance(b, PlanMatrixBuilding):
+            R[rows] = b.influence_matrix()
+        else:
+            R[rows, 0] = b.influence_vector()
+    return system._replace(r=R)
 
 
 def _read_only(system: AssembledSystem) -> AssembledSystem:
@@ -143,6 +161,10 @@ class PoundingModel:
     def __post_init__(self) -> None:
         if len(self.buildings) < 1:
             raise ValueError("buildings: give at least one building")
+        # a building in plan stands in the row as its matrix building (which keeps the plan)
+        object.__setattr__(self, "buildings", tuple(
+            b.as_matrix_building() if isinstance(b, PlanBuilding) else b
+            for b in self.buildings))
         for i, b in enumerate(self.buildings):
             if not isinstance(b, BUILDING_TYPES):
                 raise ValueError(f"buildings[{i}]: expected a ShearBuilding or a MatrixBuilding "
@@ -199,14 +221,18 @@ class PoundingModel:
         Assembled once for the same building objects (:data:`SYSTEMS`) and shared by every
         model of them: the cases of a sweep that change only gaps, contact law or record.
         """
-        return SYSTEMS.get(tuple(map(id, self.buildings)), lambda: _read_only(assemble(
-            self.buildings)), size=lambda s: 8 * 3 * s.n_dof ** 2, keep=self.buildings)
+        return SYSTEMS.get(tuple(map(id, self.buildings)), lambda: _read_only(
+            _with_plan_influence(assemble(self.buildings), self.buildings)),
+            size=lambda s: 8 * 3 * s.n_dof ** 2, keep=self.buildings)
 
     @cached_property
     def _bare_contacts(self) -> tuple[Contact, ...]:
         """The contacts of the buildings, without bumpers."""
         out: list[Contact] = []
         for p, (a, b) in enumerate(zip(self.buildings[:-1], self.buildings[1:])):
+            if isinstance(a, PlanMatrixBuilding) or isinstance(b, PlanMatrixBuilding):
+                out.extend(self._plan_pair_contacts(p, a, b, len(out)))
+                continue
             for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column,
                                                       self.level_tolerance):
                 left = ContactPoint(p, i, xi_i, int(floor_below(a)[i]))
@@ -215,6 +241,28 @@ class PoundingModel:
                                          right.effective_mass(b.masses))
                 out.append(Contact(len(out), p, left, right, z, float(self.gaps[p]), law))
         return tuple(out)
+
+    def _plan_pair_contacts(self, p: int, a: Building, b: Building,
+                            start: int) -> list[Contact]:
+        """The contacts of pair ``p`` where a building is in plan: at the ends of the
+        stretch where the façades face each other, with the floors' rotations in the
+        kinematics (:func:`pounding.structure.plan.plan_contact_points`)."""
+        out: list[Contact] = []
+        for z, i, wi, j, wj, y in plan_contact_points(a, b, self.level_tolerance):
+            points = []
+            for k, (bl, dof, weights) in enumerate(((a, i, wi), (b, j, wj))):
+                twist = next(((d, w) for d, w in weights if d != dof), None)
+                floor = (dof // 3 if isinstance(bl, PlanMatrixBuilding)
+                         else int(np.flatnonzero(floor_dofs(bl) == dof)[0]))
+                name = (f"B{p + k + 1}F{floor + 1}@y={y:g}" if isinstance(bl, PlanMatrixBuilding)
+                        else "")
+                points.append(ContactPoint(p + k, dof, 1.0, int(floor_below(bl)[dof]),
+                                           twist=twist, name=name))
+            left, right = points
+            law = self.contact.build(left.effective_mass(a.masses),
+                                     right.effective_mass(b.masses))
+            out.append(Contact(start + len(out), p, left, right, z, float(self.gaps[p]), law))
+        return out
 
     @cached_property
     def contacts(self) -> tuple[Contact, ...]:

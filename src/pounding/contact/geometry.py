@@ -39,12 +39,22 @@ class ContactPoint:
         0-based DOF of the floor below the struck storey (−1: the ground); default
         ``upper − 1``, as in a shear building (a matrix building's floor below may be
         another DOF: :func:`pounding.structure.assembly.floor_below`).
+    twist : (int, float), optional
+        For a point of a floor in plan (:mod:`pounding.structure.plan`), away from the
+        floor's centre of mass: the floor's rotation DOF and the lever weight
+        ``−(y − y_c)`` with which the rotation moves the point along x (rigid-floor
+        kinematics), so that the point moves with ``u_upper − (y − y_c) θ``.
+    name : str, optional
+        The point's label, where :meth:`label` cannot make it from the DOF (a point of a
+        floor in plan: ``'B2F3@y=6'``).
     """
 
     building: int
     upper: int
     xi: float = 1.0
     lower: int = None  # type: ignore[assignment]  # upper − 1 unless given
+    twist: tuple[int, float] | None = None
+    name: str = ""
 
     def __post_init__(self) -> None:
         if self.lower is None:
@@ -62,9 +72,10 @@ class ContactPoint:
 
     def floor_weights(self) -> list[tuple[int, float]]:
         """``(floor index, weight)`` pairs that make the point's displacement (ground
-        omitted); weights of a column point are ``1 − ξ`` and ``ξ``."""
+        omitted); weights of a column point are ``1 − ξ`` and ``ξ``; a point of a floor in
+        plan adds its floor's rotation (:attr:`twist`)."""
         if self.is_floor:
-            return [(self.upper, 1.0)]
+            return [(self.upper, 1.0)] if self.twist is None else [(self.upper, 1.0), self.twist]
         out = [(self.upper, self.xi)]
         if self.lower >= 0:
             out.insert(0, (self.lower, 1.0 - self.xi))
@@ -81,7 +92,9 @@ class ContactPoint:
 
     def label(self) -> str:
         """``'B2F3'`` for a floor, ``'B2S3@0.40'`` for storey 3's column at 40 % of its
-        height (1-based building, floor and storey numbers)."""
+        height (1-based building, floor and storey numbers); :attr:`name` where given."""
+        if self.name:
+            return self.name
         if self.is_floor:
             return f"B{self.building + 1}F{self.upper + 1}"
         return f"B{self.building + 1}S{self.storey}@{self.xi:.2f}"

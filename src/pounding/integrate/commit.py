@@ -104,8 +104,13 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
             last_f[c, 2] = np.nan
             ws_i[I_NEVENTS] += 1
         elif committed[c, V0] > 0.0:
-            if c == ev_c and ev_kind == EV_SEPARATION:
-                # separation: close the impact's row, open the state
+            if (c == ev_c and ev_kind == EV_SEPARATION) or (c != ev_c and delta < 0.0
+                                                            and rate < 0.0):
+                # separation: close the impact's row, open the state. A contact other than
+                # the step's event contact found parted at the step's end parted at the same
+                # instant (within the event tolerance): were it earlier, it would have been
+                # the event. (Two contacts that part together: the two corners of a floor
+                # in plan, for one.)
                 row = imp_row[c]
                 if row >= 0:
                     if np.isnan(imp[row, IMP_END]):  # (not already ended by a release)
