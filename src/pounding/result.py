@@ -233,7 +233,8 @@ class Result:
 
     @cached_property
     def column_shear(self) -> NDArray[np.float64]:
-        """Shear demand on each struck column [N] (nt, n_c): NaN for floor-to-floor contacts.
+        """Shear demand on each struck column [N] (nt, n_c): NaN for floor-to-floor contacts
+        and for a column of a building given as matrices (no storey shear).
 
         A floor-to-column contact at position ξ of storey j of the struck building loads
         its column with a point force ``P`` (the contact force, signed in the direction it
@@ -267,7 +268,8 @@ class Result:
     def column_shear_ratio(self) -> NDArray[np.float64]:
         """:attr:`peak_column_shear` over the struck storey's own peak storey shear [-]
         (n_c,): how much the impacts raise the shear the column must carry (1: not at all;
-        NaN: floor to floor)."""
+        NaN: floor to floor, or a column of a building given as matrices, which has no
+        storey shear)."""
         out = np.full(len(self.model.contacts), np.nan)
         struck = [c for c in self.model.contacts if c.struck is not None]
         if not struck:
@@ -277,6 +279,8 @@ class Result:
         for c in struck:
             pt = c.struck
             v = peak_v[offsets[pt.building] + pt.upper]
+            if np.isnan(v):
+                continue  # a matrix building's column: no storey shear to compare with
             out[c.index] = self.peak_column_shear[c.index] / v if v > 0 else np.inf
         return out
 

@@ -185,7 +185,7 @@ def _print_summary(out: Any) -> None:
                      f"{r.peak_contact_force_time[c.index]:.3f}" if hit else "-",
                      f"{dissipated[c.index]:.4g}" if hit else "-"]
             if pcs is not None:
-                hit = hit and c.struck is not None
+                hit = hit and c.struck is not None and bool(np.isfinite(pcs[c.index]))
                 cells += [f"{pcs[c.index]:.4g}" if hit else "-",
                           f"{r.column_shear_ratio[c.index]:.2f}" if hit else "-"]
             ct.add_row(*cells)
