@@ -167,3 +167,23 @@ def test_a_plan_building_beside_a_planar_one_meets_it_at_both_ends_of_its_facade
     R = np.asarray(model.system.r)
     assert np.array_equal(R[:3], [[1, 0]] * 3)  # the planar building feels x only
     assert dataclasses.replace(left, site_y=3.0).as_matrix_building().plan.site_y == 3.0
+
+
+def test_the_history_of_a_named_point_is_its_floors_rigid_motion() -> None:
+    from pounding.structure.plan import point_history
+
+    left, right, gap = torsional_pair()
+    model = PoundingModel([left, right], gaps=[gap],
+                          contact=ContactSpec("kelvin-voigt", k=9.3e8, e=0.65))
+    h1 = load_bundled("kocaeli_1999_duzce_180_RSN1158")
+    h2 = load_bundled("kocaeli_1999_duzce_270_RSN1158")
+    result = simulate(model, GroundMotionComponents(
+        at_incidence(window(h1, 8.0, 9.0), window(h2, 8.0, 9.0), 60.0)))
+    u = np.asarray(result.displacement)
+    # the right building's roof corner at plan (0, 0): centre of mass (8, 6)
+    ux, uy, th = u[:, 15], u[:, 16], u[:, 17]
+    assert np.allclose(point_history(result, 1, 2, 0.0, 0.0, "x"), ux + 6.0 * th, atol=1e-15)
+    assert np.allclose(point_history(result, 1, 2, 0.0, 0.0, "y"), uy - 8.0 * th, atol=1e-15)
+    assert np.array_equal(point_history(result, 1, 2, 8.0, 6.0, "x"), ux)
+    with pytest.raises(ValueError, match="floor must be in"):
+        point_history(result, 1, 3, 0.0, 0.0)

@@ -55,7 +55,7 @@ from pounding.structure.shear_building import _floor_vector, _readonly
 from pounding.units import direction_cosines
 
 __all__ = ["LateralElement", "PlanBuilding", "PlanMatrixBuilding", "facing_points",
-           "plan_contact_points", "plan_stiffness_matrix"]
+           "plan_contact_points", "plan_stiffness_matrix", "point_history"]
 
 #: DOFs of a floor in plan, in order.
 FLOOR_DOFS: tuple[str, str, str] = ("x", "y", "θ")
@@ -563,3 +563,42 @@ def _floor_dofs(building: Any) -> NDArray[np.int64]:
     if isinstance(building, MatrixBuilding):
         return building.floor_dofs
     return np.arange(building.n, dtype=np.int64)
+
+
+def point_history(result: Any, building: int, floor: int, x: float, y: float,
+                  direction: str | float = "x") -> NDArray[np.float64]:
+    """Displacement history [m] of a named point of a floor in plan, relative to the ground.
+
+    Parameters
+    ----------
+    result : pounding.result.Result
+        A run of a model with buildings in plan.
+    building : int
+        0-based index of the building in the row (a :class:`PlanBuilding`).
+    floor : int
+        0-based floor (0 = floor 1).
+    x, y : float
+        The point in the building's plan coordinates [m] (a corner: ``(width, 0)``, …).
+    direction : {"x", "y"} or float
+        Along x, y or an angle [degrees] from x.
+
+    Returns
+    -------
+    ndarray (nt,)
+        ``c (u_x − (y − y_c) θ) + s (u_y + (x − x_c) θ)`` at every output time
+        (:meth:`PlanBuilding.point_weights`).
+    """
+    model = result.model
+    if not 0 <= building < len(model.buildings):
+        raise ValueError(f"building must be in [0, {len(model.buildings) - 1}] "
+                         f"(got {building!r})")
+    b = model.buildings[building]
+    if not isinstance(b, PlanMatrixBuilding):
+        raise ValueError(f"building {building} ({b.name!r}) is not in plan: its DOFs are "
+                         "translations along the row; read result.displacement")
+    if not 0 <= floor < b.plan.n_floors:  # type: ignore[union-attr]
+        raise ValueError(f"floor must be in [0, {b.plan.n_floors - 1}] "  # type: ignore[union-attr]
+                         f"(got {floor!r})")
+    off = int(model.system.offsets[building])
+    u = np.asarray(result.displacement)[:, off: off + b.n]
+    return b.point_displacement(u, floor, x, y, direction)
