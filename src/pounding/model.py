@@ -15,6 +15,10 @@ The contact law of a model file is a :class:`ContactSpec` (:mod:`pounding.contac
 contact points and elements are in :mod:`pounding.contact.geometry`; both are importable from
 here too.
 
+Rigid moat walls (:class:`pounding.structure.wall.MoatWall`) may stand at the ends of the row;
+the floors of the end building at or below a wall's top strike it, with the same contact law
+and the wall's gap (contacts ``'B1F1-W'``, ``'W-B1F1'``, after the buildings' contacts).
+
 For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
 their shear comes from their storey law, and the stiffness matrix handed to the kernel
 (:meth:`PoundingModel.linear_stiffness`) holds only the linear storeys.
