@@ -372,8 +372,13 @@ class ShearBuilding:
     def linear_stiffness_matrix(self) -> NDArray[np.float64]:
         """``K`` [N/m] of the storeys that stay linear (yielding storeys left out; their
         shear comes from their law), shape (n, n)."""
+        ys = self.yielding
+        if not ys:
+            return self.stiffness_matrix()
+        if len(ys) == self.n:
+            return np.zeros((self.n, self.n))
         k = np.array(self.stiffnesses)
-        k[list(self.yielding)] = 0.0
+        k[list(ys)] = 0.0
         return _chain_matrix(k)
 
     # ----------------------------------------------------------------- geometry
