@@ -133,3 +133,29 @@ def test_rigid_wall_is_the_limit_of_a_stiff_massive_flexible_wall(elc):
     scale = np.abs(r1.displacement).max()
     assert np.max(np.abs(r1.displacement - r2.displacement[:, : b.n])) < 1e-5 * scale
     assert [c.label for c in flex.contacts] == ["B1F1-B2F1"]
+
+
+def test_outputs_of_a_model_with_walls(elc, tmp_path):
+    """A wall on the left of an isolated building, a fixed-base neighbour on its right: the
+    histories, the output folder, the summary and every figure are made; the contact-force
+    figure has a panel for the gap and one for the wall; the wall has no floors."""
+    from pounding.outputs import save_result
+    from pounding.plot.registry import figures_for
+    from pounding.summary import summarize
+
+    model = PoundingModel([isolated(), ShearBuilding.uniform(4, 3e5, 4e8)], [0.05], KV,
+                          walls=[MoatWall(1.0, 0.06, side="left")], name="walls")
+    res = simulate(model, elc.scaled(1.5), duration=6.0)
+    assert res.impacts_per_contact[-1] >= 1                  # W-B1F1 was struck
+    files = save_result(res, tmp_path)
+    impacts = (tmp_path / "impacts.csv").read_text(encoding="utf-8")
+    assert "W-B1F1" in impacts and "timehistories" in files
+    summary = summarize(res)
+    assert "W-B1F1" in summary["impacts_by_contact"]
+    assert np.isnan(res.column_shear[:, -1]).all()           # the wall's contact: no column
+    for name, fig in figures_for(res).items():
+        figure = fig.make(res)
+        if name == "force_figure":
+            titles = [ax.get_title(loc="left") for ax in figure.axes]
+            assert any(t.startswith("gap 1: B1–B2") for t in titles)
+            assert any(t.startswith("wall W (left of B1, top 1 m)") for t in titles)
