@@ -18,7 +18,17 @@ here too.
 A building is a :class:`ShearBuilding` or a planar :class:`~pounding.structure.MatrixBuilding`
 with lumped masses: each of its floor DOFs is a lateral translation along the row at its
 elevation, and contacts are found from those elevations exactly as for the floors of a
-shear building (:func:`pounding.structure.assembly.floor_dofs`).
+shear building (:func:`pounding.structure.assembly.floor_dofs`). A building in plan
+(:class:`~pounding.structure.plan.PlanBuilding`: rigid floors with ``u_x``, ``u_y``, ``θ``)
+stands in the row as its :class:`~pounding.structure.plan.PlanMatrixBuilding`: its floors
+meet a neighbour's at the ends of the stretch where their façades face each other, the
+floors' rotations in the contacts' kinematics, and the model's influence matrix has two
+columns, the ground's x and y components (run it under a
+:class:`~pounding.ground_motion.GroundMotionComponents`).
+
+Rigid moat walls (:class:`pounding.structure.wall.MoatWall`) may stand at the ends of the row;
+the floors of the end building at or below a wall's top strike it, with the same contact law
+and the wall's gap (contacts ``'B1F1-W'``, ``'W-B1F1'``, after the buildings' contacts).
 
 For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
 their shear comes from their storey law, and the stiffness matrix handed to the kernel
@@ -51,6 +61,7 @@ from pounding.structure.assembly import (
     floor_below,
     floor_dofs,
 )
+from pounding.structure.wall import MoatWall, check_walls, wall_contacts
 from pounding.validation import non_negative, positive
 
 __all__ = ["CONTACT_LAWS", "SYSTEMS", "Contact", "ContactPoint", "ContactSpec", "PoundingModel",
@@ -118,7 +129,7 @@ class PoundingModel:
 
     Parameters
     ----------
-    buildings : sequence of ShearBuilding or MatrixBuilding
+    buildings : sequence of ShearBuilding, MatrixBuilding or PlanBuilding
         From left to right (at least one; one building is a plain response analysis). A
         matrix building needs a diagonal (lumped) ``M`` and floors at distinct elevations
         above the ground.
@@ -138,6 +149,10 @@ class PoundingModel:
         Dampers and springs linking floors of different buildings
         (:class:`pounding.devices.Link`) and bumpers in the gaps of contacts
         (:class:`pounding.devices.Bumper`); none by default.
+    walls : sequence of MoatWall
+        Rigid walls fixed to the ground at the ends of the row
+        (:class:`pounding.structure.wall.MoatWall`, at most one a side); their contacts
+        come after the buildings' (labels such as ``'B1F1-W'``). None by default.
 
     Examples
     --------
@@ -157,6 +172,7 @@ class PoundingModel:
     floor_to_column: bool = True
     level_tolerance: float = 0.1
     devices: Sequence[Link | Bumper] = ()
+    walls: Sequence[MoatWall] = ()
 
     def __post_init__(self) -> None:
         if len(self.buildings) < 1:
@@ -181,6 +197,9 @@ class PoundingModel:
                                                for i, g in enumerate(self.gaps)))
         object.__setattr__(self, "devices", tuple(self.devices))
         self._check_devices()
+        object.__setattr__(self, "walls", tuple(self.walls))
+        if self.walls:
+            check_walls(self)
 
     def _check_devices(self) -> None:
         """Every device is a Link or a Bumper on floors that exist; a bumper sits in a
@@ -268,10 +287,11 @@ class PoundingModel:
     def contacts(self) -> tuple[Contact, ...]:
         """Every contact, pair by pair, bottom to top (see :func:`contact_points`); where a
         bumper sits, its pad (``…/bumper``) and then the building contact moved to where the
-        pad bottoms out (:func:`pounding.devices.bumper.split_contact`)."""
+        pad bottoms out (:func:`pounding.devices.bumper.split_contact`); then the contacts
+        with the walls (:func:`pounding.structure.wall.wall_contacts`)."""
         bumpers = {d.label: d for d in self.devices if isinstance(d, Bumper)}
         if not bumpers:
-            return self._bare_contacts
+            return self._bare_contacts + wall_contacts(self, len(self._bare_contacts))
         from pounding.devices.bumper import split_contact
 
         out: list[Contact] = []
@@ -284,7 +304,7 @@ class PoundingModel:
             rubber = bumper.rubber.build(c.left.effective_mass(a.masses),
                                          c.right.effective_mass(b.masses))
             out.extend(split_contact(c, bumper, rubber, len(out)))
-        return tuple(out)
+        return tuple(out) + wall_contacts(self, len(out))
 
     @property
     def links(self) -> tuple[Link, ...]:
@@ -315,6 +335,8 @@ class PoundingModel:
         for c in cs:
             for side, point, sign in ((0, c.left, 1.0), (2, c.right, -1.0)):
                 fw = point.floor_weights()
+                if not fw:
+                    continue  # a rigid wall: no DOF (its slots keep weight 0 on DOF 0)
                 base = int(offsets[point.building])
                 for q in range(2):
                     i, wt = fw[q] if q < len(fw) else (fw[0][0], 0.0)
@@ -352,8 +374,7 @@ class PoundingModel:
     @cached_property
     def yielding_storeys(self) -> tuple[tuple[int, int], ...]:
         """``(building, storey index)`` of every storey with a storey law, in DOF order."""
-        return tuple((p, j) for p, b in enumerate(self.buildings) if b.is_inelastic
-                     for j in range(b.n))
+        return tuple((p, j) for p, b in enumerate(self.buildings) for j in b.yielding)
 
     def storey_arrays(self) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64],
                                      NDArray[np.float64], NDArray[np.int64]]:
@@ -381,11 +402,11 @@ class PoundingModel:
             law = b.storey_law
             assert law is not None
             prm = b.storey_law_params()
-            for j in range(b.n):
+            for r, j in enumerate(b.yielding):
                 upper.append(int(offsets[p] + j))
                 lower.append(int(offsets[p] + j - 1) if j > 0 else -1)
                 code.append(law.code)
-                rows.append(prm[j])
+                rows.append(prm[r])
                 zi.append(nz if law.has_internal_variable else -1)
                 nz += 1 if law.has_internal_variable else 0
         # the links: rows of the same kind after the storeys, from the left end (lower) to
@@ -411,8 +432,7 @@ class PoundingModel:
 
     @cached_property
     def _linear_stiffness(self) -> NDArray[np.float64]:
-        blocks = [b.stiffness_matrix() if not b.is_inelastic else np.zeros((b.n, b.n))
-                  for b in self.buildings]
+        blocks = [b.linear_stiffness_matrix() for b in self.buildings]
         k = np.ascontiguousarray(scipy.linalg.block_diag(*blocks))
         k.setflags(write=False)
         return k

@@ -222,13 +222,13 @@ class Result:
             if law is None:
                 continue
             prm = b.storey_law_params()
-            for j in range(b.n):
+            for r, j in enumerate(b.yielding):
                 col = off + j
                 z = 0.0
                 if law.has_internal_variable:
                     z = float(z_end[zk]) if zk < z_end.size else 0.0
                     zk += 1
-                out[col] = d_end[col] - v_end[col] / law.unloading_stiffness(prm[j], z)
+                out[col] = d_end[col] - v_end[col] / law.unloading_stiffness(prm[r], z)
         return out
 
     @cached_property

@@ -161,7 +161,7 @@ def _print_summary(out: Any) -> None:
                 mu = r.ductility[off: off + bl.n]
                 res = r.residual_drift[off: off + bl.n]
                 jr = int(np.argmax(np.abs(res)))
-                row += [law.label, f"{np.max(mu):.2f} (storey {int(np.argmax(mu)) + 1})",
+                row += [law.label, f"{np.nanmax(mu):.2f} (storey {int(np.nanargmax(mu)) + 1})",
                         f"{res[jr]:+.4f} (storey {jr + 1})"]
         bt.add_row(*row)
     console.print(bt)

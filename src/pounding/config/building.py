@@ -10,6 +10,7 @@ from typing import Annotated, Any
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
+from pounding.config.isolation import IsolatorConfig
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
 from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
@@ -138,7 +139,7 @@ _UNIFORM_KEYS = ("n_storeys", "mass", "stiffness", "period", "height")
 _STOREY_KEYS = ("masses", "stiffnesses", "heights", "height", "period")
 _MATRIX_KEYS = ("matrices", "npz", "elevations", "labels", "r", "floors")
 _SHEAR_KEYS = ("mass", "stiffness", "period", "height", "n_storeys", "masses", "stiffnesses",
-               "heights", "storey_law")
+               "heights", "storey_law", "isolator")
 
 
 class MatrixFilesConfig(Section):
@@ -175,7 +176,9 @@ class BuildingConfig(Section):
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF and 5 %
     Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
-    storeys yield; without it they stay linear.
+    storeys yield; without it they stay linear. ``isolator``
+    (:class:`pounding.config.isolation.IsolatorConfig`) puts the building, as its
+    superstructure, on a base slab and an isolation storey (base isolation).
     """
 
     name: str | None = None
@@ -189,6 +192,7 @@ class BuildingConfig(Section):
     heights: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
     damping: DampingConfig | None = None
     storey_law: StoreyLawConfig | None = None
+    isolator: IsolatorConfig | None = None
     matrices: MatrixFilesConfig | None = None
     npz: str | None = None
     elevations: Annotated[list[float], Field(min_length=1)] | None = None
@@ -232,6 +236,9 @@ class BuildingConfig(Section):
                     where = key if isinstance(value, float) else (key, i)
                     raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
                                              f"positive numbers are subnormal (got {x:g})")
+        if self.isolator is not None and self.storey_law is not None:
+            raise field_error("isolator", "a base-isolated building's superstructure stays "
+                                          "linear: give isolator or storey_law, not both")
         kind = self.kind
         if kind == "matrices":
             self._check_matrix_keys()
@@ -378,6 +385,12 @@ class BuildingConfig(Section):
         return self._with_law(b)
 
     def _with_law(self, b: ShearBuilding) -> ShearBuilding:
+        if self.isolator is not None:
+            iso = self.isolator
+            with prefixed("isolator"):
+                return ShearBuilding.base_isolated(b, iso.base_mass, iso.build(),
+                                                   base_height=iso.base_height,
+                                                   isolator_damping=iso.damping)
         if self.storey_law is None:
             return b
         with prefixed("storey_law"):

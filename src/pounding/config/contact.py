@@ -97,9 +97,6 @@ class ContactConfig(LawConfig):
     def _gap_keys(self) -> ContactConfig:
         if self.gap is not None and self.gaps is not None:
             raise field_error("gaps", "give gap (all pairs) or gaps (one per pair), not both")
-        if self.gap is None and self.gaps is None:
-            raise field_error("gap", "required: the separation [m] between neighbours "
-                                      "(gap = 0.02, or gaps = [...] one per pair)")
         return self
 
     def gap_list(self, n_pairs: int) -> list[float]:

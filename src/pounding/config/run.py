@@ -12,6 +12,7 @@ from pounding.config.base import Pos, Section, field_error, prefixed
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
 from pounding.config.device import DeviceConfig
+from pounding.config.isolation import WallConfig
 from pounding.config.errors import format_validation_error
 from pounding.config.record import RecordConfig
 from pounding.config.toml import dump_toml
@@ -62,6 +63,7 @@ class RunConfig(Section):
     building: Annotated[list[BuildingConfig], Field(min_length=1)]
     contact: ContactConfig | None = None
     device: list[DeviceConfig] = []
+    wall: list[WallConfig] = []
     solver: SolverConfig = SolverConfig()
     output: OutputConfig = OutputConfig()
 
@@ -71,10 +73,17 @@ class RunConfig(Section):
     def _pairs(self) -> RunConfig:
         nb = len(self.building)
         if self.contact is None:
+            if self.wall:
+                raise field_error("contact", "required with a [[wall]]: a [contact] table "
+                                              "with the law its impacts follow")
             if nb > 1:
                 raise field_error("contact", f"required with {nb} buildings: a [contact] "
                                               "table with law, its parameters and gap(s)")
             return self
+        if nb > 1 and self.contact.gap is None and self.contact.gaps is None:
+            raise field_error(("contact", "gap"), "required: the separation [m] between "
+                                                   "neighbours (gap = 0.02, or gaps = [...] "
+                                                   "one per pair)")
         if self.contact.gaps is not None and len(self.contact.gaps) != nb - 1:
             raise field_error(("contact", "gaps"),
                                f"need {nb - 1} value(s) for {nb} buildings (got "
@@ -121,8 +130,12 @@ class RunConfig(Section):
             with prefixed(f"device[{i}]"):
                 devices.extend(d.build(floors))
         try:
+            walls = []
+            for i, w in enumerate(self.wall):
+                with prefixed(f"walls[{i}]"):
+                    walls.append(w.build())
             model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry,
-                                  devices=devices)
+                                  devices=devices, walls=walls)
             model.contacts  # noqa: B018  (builds every contact law with its floor masses)
         except ValueError as exc:
             text = str(exc)
@@ -130,6 +143,8 @@ class RunConfig(Section):
                 raise ValueError("device[" + text[len("devices["):]) from exc
             if text.startswith("buildings["):  # and its buildings[i] the file's building[i]
                 raise ValueError("building[" + text[len("buildings["):]) from exc
+            if text.startswith("walls["):  # the model's walls[i] is the file's wall[i]
+                raise ValueError("wall[" + text[len("walls["):]) from exc
             raise ValueError(f"contact: {text}") from exc
         for p in range(len(buildings) - 1):
             if not any(c.pair == p for c in model.contacts):

@@ -142,6 +142,12 @@ class Contact:
         return self.left.is_floor and self.right.is_floor
 
     @property
+    def on_wall(self) -> bool:
+        """True for a contact with a moat wall (:mod:`pounding.structure.wall`): one side
+        belongs to no building."""
+        return self.left.building < 0 or self.right.building < 0
+
+    @property
     def struck(self) -> ContactPoint | None:
         """The column point of a floor-to-column contact (None for floor to floor)."""
         if self.is_floor_to_floor:

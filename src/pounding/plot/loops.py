@@ -126,11 +126,12 @@ def plot_storey_hysteresis(result: Result) -> Figure:
     """
     model = result.model
     rows = [b for b, bl in enumerate(model.buildings) if bl.is_inelastic]
-    ncol = max(1, min(MAX_STOREY_PANELS, max((model.buildings[b].n for b in rows), default=1)))
+    ncol = max(1, min(MAX_STOREY_PANELS, max((len(model.buildings[b].yielding) for b in rows),
+                                             default=1)))
     nrow = max(len(rows), 1)
     drift, shear = result.drift, result.storey_shear
     peak = peak_abs(drift)
-    cols = [model.system.offsets[b] + j for b in rows for j in range(model.buildings[b].n)]
+    cols = [model.system.offsets[b] + j for b in rows for j in model.buildings[b].yielding]
     force = scale_for(float(peak_abs(shear[:, cols]).max()) if cols else 0.0, "N")
     width, height = PANEL_SIZE
     fig, extra = titled_figure(model.name, "storey shear against drift of the yielding "
@@ -142,7 +143,7 @@ def plot_storey_hysteresis(result: Result) -> Figure:
                      wspace=0.25, hspace=1.0, sharey="row")
     for ax_row, b in zip(axes, rows):
         bl, off = model.buildings[b], model.system.offsets[b]
-        order = sorted(sorted(range(bl.n), key=lambda j: -peak[off + j])[:ncol])
+        order = sorted(sorted(bl.yielding, key=lambda j: -peak[off + j])[:ncol])
         fy = bl.yield_forces
         for ax, j in zip(ax_row, order):
             col = off + j

@@ -64,8 +64,9 @@ def contact_floors(result: Result) -> dict[int, set[int]]:
     """For each building (0-based), the 0-based floors that take part in a contact."""
     out: dict[int, set[int]] = defaultdict(set)
     for c in result.model.contacts:
-        out[c.pair].add(c.left_floor)
-        out[c.pair + 1].add(c.right_floor)
+        for point in (c.left, c.right):
+            if point.building >= 0:  # not a wall's side
+                out[point.building].add(point.upper)
     return out
 
 
@@ -137,25 +138,30 @@ def plot_displacements(result: Result) -> Figure:
 
 
 def plot_contact_forces(result: Result) -> Figure:
-    """Contact force histories [kN or MN], one panel per gap, the ground acceleration [g]
-    below; dots mark each impact's peak force at its time, from the impact table (located
-    between output samples)."""
+    """Contact force histories [kN or MN], one panel per gap and per moat wall, the ground
+    acceleration [g] below; dots mark each impact's peak force at its time, from the impact
+    table (located between output samples)."""
     model = result.model
     t = result.time
-    n_pairs = max(len(model.buildings) - 1, 1)
+    n_pairs = max(len(model.buildings) - 1, 1) if not model.walls or len(model.buildings) > 1 \
+        else 0
     imp = result.impact_array  # (numpy, not the DataFrame: drawing needs no pandas)
     peak = result.peak_contact_force
     force = scale_for(float(peak.max()) if peak.size else 0.0, "N")
-    hit_by_pair = [[c for c in model.contacts if c.pair == p and peak[c.index] > 0.0]
-                   for p in range(n_pairs)]
+    # one panel a gap between buildings, then one a wall (moat walls: pounding.structure.wall)
+    groups = [[c for c in model.contacts if c.pair == p and not c.on_wall]
+              for p in range(n_pairs)]
+    groups += [[c for c in model.contacts if c.on_wall and (c.pair < 0) == (wall.side == "left")]
+               for wall in model.walls]
+    hit_by_pair = [[c for c in cs if peak[c.index] > 0.0] for cs in groups]
     labels = [[f"{c.label} ({c.elevation:g} m)" for c in hit] for hit in hit_by_pair]
     rows = int(PANEL_HEIGHT / 0.15)
     ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
-    fig, axes, _ = _history_figure(result, n_pairs, max(width) if any(labels) else 0.0,
+    fig, axes, _ = _history_figure(result, len(groups), max(width) if any(labels) else 0.0,
                                    "contact forces")
     cmap = matplotlib.colormaps["tab10"]
     for p, ax in enumerate(axes):
-        cs = [c for c in model.contacts if c.pair == p]
+        cs = groups[p]
         hit = hit_by_pair[p]
         for i, (c, label) in enumerate(zip(hit, labels[p])):
             colour = cmap(i % 10)
@@ -170,8 +176,15 @@ def plot_contact_forces(result: Result) -> Figure:
         else:
             ax.legend(fontsize=LEGEND_SIZE, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                       borderaxespad=0.0, ncol=ncols[p], frameon=False)
-        gap = model.gaps[p] if p < len(model.gaps) else float("nan")
-        ax.set_title(f"gap {p + 1}: B{p + 1}–B{p + 2}, {gap * MM.factor:g} mm"
+        if p < n_pairs:
+            gap = model.gaps[p] if p < len(model.gaps) else float("nan")
+            where = f"gap {p + 1}: B{p + 1}–B{p + 2}, {gap * MM.factor:g} mm"
+        else:
+            wall = model.walls[p - n_pairs]
+            nb = 1 if wall.side == "left" else len(model.buildings)
+            where = (f"wall {wall.name} ({wall.side} of B{nb}, top {wall.height:g} m): gap "
+                     f"{wall.gap * MM.factor:g} mm")
+        ax.set_title(where
                      + (f"; {len(hit)} of {len(cs)} contacts closed; dots: peak of each "
                         "impact" if cs else ""), fontsize=TITLE_SIZE, loc="left")
         ax.set_ylabel(f"contact force [{force.unit}]")

@@ -85,7 +85,12 @@ def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
     stiffnesses : array_like, shape (n,)
         Storey lateral stiffnesses ``k_1 … k_n`` [N/m], ground storey first.
     """
-    k = _floor_vector("stiffnesses", stiffnesses)
+    return _chain_matrix(_floor_vector("stiffnesses", stiffnesses))
+
+
+def _chain_matrix(k: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The shear-building ``K`` of storey stiffnesses ``k`` (entries may be 0: a storey left
+    out)."""
     n = k.size
     K = np.zeros((n, n), dtype=np.float64)
     idx = np.arange(n)
@@ -94,6 +99,28 @@ def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
     K[idx[:-1], idx[1:]] = -k[1:]
     K[idx[1:], idx[:-1]] = -k[1:]
     return K
+
+
+def _storey_indices(value: Any, n: int, has_law: bool) -> tuple[int, ...]:
+    """``yielding_storeys`` as a sorted tuple of distinct 0-based storey indices < n."""
+    if not has_law:
+        raise ValueError(f"yielding_storeys: needs a storey_law (got yielding_storeys="
+                         f"{value!r} without one)")
+    try:
+        idx = [int(i) for i in value]
+        ok = all(float(i) == float(j) for i, j in zip(idx, value))
+    except (TypeError, ValueError):
+        ok = False
+    if not ok or not idx:
+        raise ValueError(f"yielding_storeys: need a non-empty sequence of storey indices "
+                         f"(0-based integers) (got {value!r})")
+    for i in idx:
+        if not 0 <= i < n:
+            raise ValueError(f"yielding_storeys: storey index {i} is not in 0 … {n - 1} "
+                             f"(the building has {n} storeys)")
+    if len(set(idx)) != len(idx):
+        raise ValueError(f"yielding_storeys: a storey given twice (got {value!r})")
+    return tuple(sorted(idx))
 
 
 def _readonly(a: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -124,6 +151,10 @@ class ShearBuilding:
         :class:`pounding.hysteresis.BoucWen`); ``None`` (default) keeps them linear. Its
         elastic stiffness is ``stiffnesses``, which also sets the periods and the damping
         matrix (initial-stiffness Rayleigh damping).
+    yielding_storeys : sequence of int, optional
+        0-based indices of the storeys that follow ``storey_law`` (the others stay linear);
+        ``None`` (default): every storey. A base-isolated building
+        (:meth:`base_isolated`) has ``(0,)``: its isolation storey.
 
     Raises
     ------
@@ -150,6 +181,7 @@ class ShearBuilding:
     damping: DampingModel = field(default_factory=RayleighDamping)
     name: str = ""
     storey_law: StoreyLaw | None = None
+    yielding_storeys: tuple[int, ...] | None = None
 
     def __post_init__(self) -> None:
         m = _floor_vector("masses", self.masses)
@@ -167,8 +199,13 @@ class ShearBuilding:
         if self.storey_law is not None and not isinstance(self.storey_law, StoreyLaw):
             raise ValueError(f"storey_law must be a StoreyLaw such as Bilinear or BoucWen, or "
                              f"None for linear storeys (got {self.storey_law!r})")
+        if self.yielding_storeys is not None:
+            object.__setattr__(self, "yielding_storeys",
+                               _storey_indices(self.yielding_storeys, m.size,
+                                               self.storey_law is not None))
         if self.storey_law is not None:
-            self.storey_law.yield_forces(k)  # one yield value, or one per storey
+            # one yield value, or one per yielding storey
+            self.storey_law.yield_forces(k[list(self._yielding(m.size))])
         object.__setattr__(self, "masses", m)
         object.__setattr__(self, "stiffnesses", k)
         object.__setattr__(self, "heights", h)
@@ -279,27 +316,70 @@ class ShearBuilding:
                              "check period and the masses")
         return dataclasses.replace(self, stiffnesses=k)
 
-    def with_storey_law(self, law: StoreyLaw | None) -> ShearBuilding:
+    @classmethod
+    def base_isolated(cls, superstructure: ShearBuilding, base_mass: float, isolator: Any,
+                      base_height: float = 1.0, isolator_damping: float = 0.0,
+                      name: str | None = None) -> ShearBuilding:
+        """A base-isolated building: an isolation storey under ``superstructure``; see
+        :func:`pounding.structure.isolation.base_isolated`."""
+        from pounding.structure.isolation import base_isolated
+
+        return base_isolated(superstructure, base_mass, isolator, base_height=base_height,
+                             isolator_damping=isolator_damping, name=name)
+
+    def with_storey_law(self, law: StoreyLaw | None,
+                        storeys: tuple[int, ...] | None = None) -> ShearBuilding:
         """A copy whose storeys follow ``law`` (None: linear), e.g.
-        ``b.with_storey_law(Bilinear(yield_drift=0.01, hardening=0.05))``."""
-        return dataclasses.replace(self, storey_law=law)
+        ``b.with_storey_law(Bilinear(yield_drift=0.01, hardening=0.05))``; ``storeys``
+        (0-based) limits it to those storeys."""
+        return dataclasses.replace(self, storey_law=law,
+                                   yielding_storeys=storeys if law is not None else None)
+
+    def _yielding(self, n: int) -> tuple[int, ...]:
+        if self.storey_law is None:
+            return ()
+        return tuple(range(n)) if self.yielding_storeys is None else self.yielding_storeys
+
+    @property
+    def yielding(self) -> tuple[int, ...]:
+        """0-based indices of the storeys that follow :attr:`storey_law` (empty if none)."""
+        return self._yielding(self.n)
 
     @property
     def is_inelastic(self) -> bool:
-        """True if the storeys follow a yielding :attr:`storey_law`."""
+        """True if some storeys follow a yielding :attr:`storey_law`."""
         return self.storey_law is not None
 
     def storey_law_params(self) -> NDArray[np.float64]:
-        """Constants of every storey's law, shape (n, P) (see
-        :mod:`pounding.hysteresis.base`); raises if the storeys are linear."""
+        """Constants of the law of every yielding storey (:attr:`yielding` order), shape
+        (len(yielding), P) (see :mod:`pounding.hysteresis.base`); raises if the storeys are
+        linear."""
         if self.storey_law is None:
             raise ValueError(f"building {self.name!r}: its storeys are linear (no storey_law)")
-        return self.storey_law.params(self.stiffnesses)
+        return self.storey_law.params(self.stiffnesses[list(self.yielding)])
 
     @property
     def yield_forces(self) -> NDArray[np.float64] | None:
-        """Storey yield shears [N], or None for linear storeys."""
-        return None if self.storey_law is None else self.storey_law.yield_forces(self.stiffnesses)
+        """Storey yield shears [N] (n,), NaN for the storeys that stay linear; None if every
+        storey is linear."""
+        if self.storey_law is None:
+            return None
+        out = np.full(self.n, np.nan)
+        ys = list(self.yielding)
+        out[ys] = self.storey_law.yield_forces(self.stiffnesses[ys])
+        return out
+
+    def linear_stiffness_matrix(self) -> NDArray[np.float64]:
+        """``K`` [N/m] of the storeys that stay linear (yielding storeys left out; their
+        shear comes from their law), shape (n, n)."""
+        ys = self.yielding
+        if not ys:
+            return self.stiffness_matrix()
+        if len(ys) == self.n:
+            return np.zeros((self.n, self.n))
+        k = np.array(self.stiffnesses)
+        k[list(ys)] = 0.0
+        return _chain_matrix(k)
 
     # ----------------------------------------------------------------- geometry
     @property
@@ -360,6 +440,7 @@ class ShearBuilding:
                 and np.array_equal(self.stiffnesses, other.stiffnesses)
                 and np.array_equal(self.heights, other.heights)
                 and self.damping == other.damping and self.name == other.name
-                and self.storey_law == other.storey_law)
+                and self.storey_law == other.storey_law
+                and self.yielding == other.yielding)
 
     __hash__ = None  # type: ignore[assignment]

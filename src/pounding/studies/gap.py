@@ -420,6 +420,9 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
     if len(model.buildings) < 2:
         raise ValueError("model: a gap study needs at least two buildings (got "
                          f"{len(model.buildings)})")
+    if model.walls:
+        raise ValueError(f"model: a gap study covers the gaps between buildings; remove its "
+                         f"{len(model.walls)} moat wall(s) (walls)")
     if not model.contacts:
         raise ValueError("model: no contact level between neighbours (no shared floor level "
                          "and no floor facing a column), so no gap to study")

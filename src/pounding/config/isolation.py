@@ -1,0 +1,95 @@
+"""``isolator = {...}`` of a ``[[building]]`` and ``[[wall]]``: base isolation and moat walls.
+
+A ``[[building]]`` with an ``isolator`` table is base-isolated: its other keys describe the
+superstructure (fixed-base, linear storeys), and the isolator table adds the base slab and
+the isolation storey under it (:func:`pounding.structure.isolation.base_isolated`):
+
+* ``isolator = { law = "friction-pendulum", radius = 2.0, mu = 0.06, base_mass = 4.0e5 }``
+  (optional ``yield_displacement`` [m], ``weight`` [N]: default the building's weight,
+  ``n``, ``beta``, ``gamma``: :class:`pounding.hysteresis.isolators.FrictionPendulum`);
+* ``isolator = { law = "bilinear", pre_yield_stiffness = 1.2e8, post_yield_stiffness =
+  1.2e7, characteristic_strength = 5.0e5, base_mass = 4.0e5 }`` (or ``yield_force``:
+  :class:`pounding.hysteresis.isolators.BilinearIsolator`);
+* both take ``base_height`` [m] (the isolation storey, default 1.0) and ``damping``
+  [N·s/m] (a viscous coefficient across the isolator, default 0).
+
+``[[wall]]`` is a rigid moat wall at one end of the row
+(:class:`pounding.structure.wall.MoatWall`): ``height`` [m] of its top, ``gap`` [m] to the
+building next to it, ``side = "right"`` (default; right of the last building) or
+``"left"``, and ``name`` (default ``"W"``). Its contacts use the ``[contact]`` law. A
+flexible wall is a one-storey ``[[building]]`` of the wall's height, mass and stiffness
+standing in the row (:func:`pounding.structure.wall.flexible_wall`).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, model_validator
+
+from pounding.config.base import NonNeg, Pos, Section, field_error, fmt
+
+_OWN = {"friction-pendulum": {"radius", "mu", "weight", "yield_displacement", "n", "beta",
+                              "gamma"},
+        "bilinear": {"pre_yield_stiffness", "post_yield_stiffness",
+                     "characteristic_strength", "yield_force"}}
+
+
+class IsolatorConfig(Section):
+    """``isolator = {...}`` of a ``[[building]]`` (module docstring)."""
+
+    law: Literal["friction-pendulum", "bilinear"]
+    base_mass: Pos
+    base_height: Pos = 1.0
+    damping: NonNeg = 0.0
+    radius: Pos | None = None
+    mu: Annotated[float, Field(gt=0, lt=1)] | None = None
+    weight: Pos | None = None
+    yield_displacement: Pos | None = None
+    n: Annotated[float, Field(ge=1)] | None = None
+    beta: float | None = None
+    gamma: float | None = None
+    pre_yield_stiffness: Pos | None = None
+    post_yield_stiffness: NonNeg | None = None
+    characteristic_strength: Pos | None = None
+    yield_force: Pos | None = None
+
+    @model_validator(mode="after")
+    def _keys(self) -> IsolatorConfig:
+        own = _OWN[self.law]
+        for key in set().union(*_OWN.values()) - own:
+            if getattr(self, key) is not None:
+                raise field_error(key, f"not a constant of the {self.law} isolator (got "
+                                        f"{fmt(getattr(self, key))}); it reads "
+                                        f"{', '.join(sorted(own))}")
+        need = (("radius", "mu") if self.law == "friction-pendulum"
+                else ("pre_yield_stiffness", "post_yield_stiffness"))
+        for key in need:
+            if getattr(self, key) is None:
+                raise field_error(key, f"required for the {self.law} isolator")
+        return self
+
+    def build(self) -> Any:
+        """The :class:`pounding.hysteresis.isolators.Isolator`."""
+        from pounding.hysteresis.isolators import BilinearIsolator, FrictionPendulum
+
+        kw = self.model_dump(exclude={"law", "base_mass", "base_height", "damping"},
+                             exclude_none=True)
+        if self.law == "friction-pendulum":
+            return FrictionPendulum(**kw)
+        return BilinearIsolator(**kw)
+
+
+class WallConfig(Section):
+    """``[[wall]]``: a rigid moat wall at one end of the row (module docstring)."""
+
+    height: Pos
+    gap: NonNeg
+    side: Literal["right", "left"] = "right"
+    name: Annotated[str, Field(min_length=1)] = "W"
+
+    def build(self) -> Any:
+        """The :class:`pounding.structure.wall.MoatWall`."""
+        from pounding.structure.wall import MoatWall
+
+        return MoatWall(self.height, self.gap, self.side, self.name)
