@@ -338,6 +338,16 @@ class MatrixBuilding:
         return False
 
     @property
+    def yielding(self) -> tuple[int, ...]:
+        """No storey follows a storey law (empty): a matrix building is linear."""
+        return ()
+
+    def linear_stiffness_matrix(self) -> NDArray[np.float64]:
+        """``K`` [N/m], all of it linear (the row of buildings asks every building for the
+        stiffness of its linear part)."""
+        return self.stiffness_matrix()
+
+    @property
     def yield_forces(self) -> None:
         """None: no storey yield shears (linear)."""
         return None
