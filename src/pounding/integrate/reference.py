@@ -502,15 +502,18 @@ def _storeys(model: PoundingModel) -> list[_Storey]:
         law = b.storey_law
         if law is None:
             continue
-        fy = law.yield_forces(b.stiffnesses)
-        for j in range(b.n):
+        # only the storeys that follow the law (a base-isolated building: the isolation
+        # storey); the others are in the linear stiffness matrix
+        ys = list(b.yielding)
+        fy = law.yield_forces(b.stiffnesses[ys])
+        for r, j in enumerate(ys):
             lo = int(offsets[p] + j - 1) if j > 0 else -1
             hi = int(offsets[p] + j)
             k = float(b.stiffnesses[j])
             if isinstance(law, Bilinear):
-                out.append(_Storey("bilinear", lo, hi, k, float(fy[j]), b=law.hardening))
+                out.append(_Storey("bilinear", lo, hi, k, float(fy[r]), b=law.hardening))
             elif isinstance(law, BoucWen):
-                out.append(_Storey("bouc-wen", lo, hi, k, float(fy[j]), alpha=law.alpha,
+                out.append(_Storey("bouc-wen", lo, hi, k, float(fy[r]), alpha=law.alpha,
                                    n=law.n, beta=law.beta, gamma=law.gamma))
             else:
                 raise ValueError(f"reference: no reference for storey law {law!r}")
