@@ -33,7 +33,7 @@ from pounding.integrate.layout import (
     EVENT_TOL,
     I_NSTEPS,
 )
-from pounding.integrate.rhs import NRT_FREE, drift_of, gap_row
+from pounding.integrate.rhs import G_END, NRT_FREE, drift_of, gap_row, ground_at
 
 
 @njit(**NRT_FREE)
@@ -316,7 +316,8 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
     have_after = False
     err_after = 0.0
     for _ in range(60):
-        err = rk_step(x, kx, px, t_try, gnd, s, False, n, bw, k_band,
+        ground_at(gnd, G_END, s + t_try)
+        err = rk_step(x, kx, px, t_try, gnd, s, n, bw, k_band,
                       c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo,
                       s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp, yb, atol,
                       rtol)
@@ -355,7 +356,8 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
             t_try = 0.5 * (lo + hi)
     if not have_after:
         # the bracket's after end is the full step (or the grazing test)
-        err_after = rk_step(x, kx, px, hi, gnd, s, False, n, bw, k_band,
+        ground_at(gnd, G_END, s + hi)
+        err_after = rk_step(x, kx, px, hi, gnd, s, n, bw, k_band,
                             c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
                             s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1,
                             atol, rtol)

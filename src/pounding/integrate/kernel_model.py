@@ -11,6 +11,7 @@ import numpy as np
 
 from pounding.integrate.layout import P_CONTACT
 from pounding.integrate.propagator import FreeStep
+from pounding.integrate.rhs import G_ROWS
 from pounding.memo import Memo
 from pounding.model import PoundingModel
 
@@ -204,4 +205,4 @@ def kernel_scratch(km: KernelModel, m: int) -> tuple[np.ndarray, ...]:
     floors = np.zeros((6, n))
     return (stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)), np.zeros((1, npw)),
             *states, np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n), *gaps, *floors,
-            1.0 / km.m_diag, np.zeros((4, km.r.shape[1])))
+            1.0 / km.m_diag, np.zeros((G_ROWS, km.r.shape[1])))

@@ -11,8 +11,9 @@ its row (``cdof``, ``cw`` of shape (n_c, W); W = 4 for floor-to-floor and floor-
 contacts of planar buildings, wider where a façade point moves with several DOFs).
 
 The ground components ``a_g`` at the instant a function needs them are row ``G_NOW`` of the
-(4, G) array ``gnd`` (:data:`G_A0`, :data:`G_A1`: the grid values at the ends of the current
-grid step; :data:`G_SLOPE`: their slope). The first component is written out in the
+(5, G) array ``gnd`` (:data:`G_A0`, :data:`G_A1`: the grid values at the ends of the current
+grid step; :data:`G_SLOPE`: their slope; :data:`G_END`: their values at the end of the RK
+step being taken). The first component is written out in the
 expressions where G = 1 has always had it, and the others added after it, so that a G = 1
 model computes bit for bit what it did before there were components.
 
@@ -45,9 +46,11 @@ from pounding.integrate.layout import (
     RATE_SIDE,
 )
 
-G_A0, G_A1, G_SLOPE, G_NOW = range(4)
-"""Rows of ``gnd`` (4, G): the ground components at the start and end of the grid step, their
-slope [m/s³], and their values at the instant being evaluated [m/s²]."""
+G_A0, G_A1, G_SLOPE, G_END, G_NOW = range(5)
+G_ROWS = 5
+"""Rows of ``gnd`` (G_ROWS, G): the ground components at the start and end of the grid step,
+their slope [m/s³], their values at the end of the RK step being taken and at the instant
+being evaluated [m/s²]."""
 
 NRT_FREE = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
                 _nrt=False)
@@ -90,13 +93,28 @@ def ground_rest(r, i, a, j):
 
 
 @njit(**NRT_FREE)
-def add_ground_rest(out, sign, r, a, j, n):
-    """``out[i] += sign · Σ_{g ≥ 1} R[i, g] a[j, g]`` for every floor (nothing for G = 1):
-    the ground components after the first, added to accelerations that hold the first."""
+def add_ground_rest(out, r, a, j, n):
+    """``out[i] += Σ_{g ≥ 1} R[i, g] a[j, g]`` for every floor (nothing for G = 1): the
+    ground components after the first, added to accelerations that hold the first."""
     for g in range(1, r.shape[1]):
-        ag = sign * a[j, g]
+        ag = a[j, g]
         for i in range(n):
             out[i] += r[i, g] * ag
+
+
+@njit(**NRT_FREE)
+def ground_at(gnd, row, s):
+    """``gnd[row] = gnd[G_A0] + gnd[G_SLOPE] s``: the ground components at local time s
+    [s] of the grid step."""
+    for g in range(gnd.shape[1]):
+        gnd[row, g] = gnd[G_A0, g] + gnd[G_SLOPE, g] * s
+
+
+@njit(**NRT_FREE)
+def ground_at_grid_end(gnd, row):
+    """``gnd[row] = gnd[G_A1]``: the record's values at the grid step's end, bit for bit."""
+    for g in range(gnd.shape[1]):
+        gnd[row, g] = gnd[G_A1, g]
 
 
 @njit(**NRT_FREE)
