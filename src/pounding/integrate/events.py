@@ -32,6 +32,7 @@ from pounding.integrate.layout import (
     EV_SEPARATION,
     EVENT_TOL,
     I_NSTEPS,
+    ROW_BLOCK,
 )
 from pounding.integrate.rhs import G_END, NRT_FREE, drift_of, gap_row, ground_at
 
@@ -238,9 +239,10 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
         acc0 = 0.0
         acc1 = 0.0
-        for q in range(cdof.shape[1]):
-            acc0 += cw[c, q] * k0[0, n + cdof[c, q]]
-            acc1 += cw[c, q] * k1[6, n + cdof[c, q]]
+        for q0 in range(0, cdof.shape[1], ROW_BLOCK):
+            for q in range(q0, q0 + ROW_BLOCK):
+                acc0 += cw[c, q] * k0[0, n + cdof[c, q]]
+                acc1 += cw[c, q] * k1[6, n + cdof[c, q]]
         if committed[c, V0] == 0.0:
             if max(d0, d1) + bound + 0.125 * h * h * (abs(acc0) + abs(acc1)) <= -graze_tol:
                 continue
