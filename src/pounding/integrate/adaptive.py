@@ -19,7 +19,7 @@ from pounding.contact.base import V0
 from pounding.devices.laws import DEVICE_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.commit import commit_contacts, commit_storeys
-from pounding.integrate.dormand_prince import ground_at, rk_step, weighted_sum
+from pounding.integrate.dormand_prince import rk_step, weighted_sum
 from pounding.integrate.events import (
     event_tolerance,
     event_value,
@@ -67,6 +67,7 @@ from pounding.integrate.peaks import track_point, track_step
 from pounding.integrate.rhs import (
     G_A0,
     G_A1,
+    G_END,
     G_NOW,
     G_SLOPE,
     INLINE,
@@ -75,6 +76,8 @@ from pounding.integrate.rhs import (
     band_mv,
     deriv_call,
     gap_row,
+    ground_at,
+    ground_at_grid_end,
     jerk,
     law_call,
     recoverable_call,
@@ -95,8 +98,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
     """Grid steps from k with adaptive RK steps and events, writing the outputs of each,
     while a contact is closed (or to ``k1`` if not ``exact_free``). At entry ``kx`` (row 0)
     holds f(x) at ``ag[k]`` (``ag``: (nt, G), the ground components on the grid; ``gnd``:
-    (4, G) scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``, ``arel0``,
-    ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
+    (G_ROWS, G) scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``,
+    ``arel0``, ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why). One call for a whole contact episode: a call passes some sixty arrays.
@@ -118,13 +121,17 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
         h = min(ws_f[W_H], dt, h_max)
         for i in range(n):
             aabs0[i] = kx[0, n + i] + r[i, 0] * a0
-        add_ground_rest(aabs0, 1.0, r, ag, k, n)
+        add_ground_rest(aabs0, r, ag, k, n)
         while s < dt:
             last = False
             if s + h >= dt * (1.0 - 1e-12):
                 h = dt - s
                 last = True
-            err = rk_step(x, kx, px, h, gnd, s, last, n, bw, k_band, c_band, m_inv, mr, r,
+            if last:
+                ground_at_grid_end(gnd, G_END)
+            else:
+                ground_at(gnd, G_END, s + h)
+            err = rk_step(x, kx, px, h, gnd, s, n, bw, k_band, c_band, m_inv, mr, r,
                           cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par,
                           s_zi, sstate, lin, ks, ps, ytmp, y1, atol, rtol)
             ws_i[I_NSTEPS] += 1
@@ -174,7 +181,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 found_hi = side_ok
                 if not side_ok:
                     # grazing: both ends on the 'before' side; test the estimate
-                    err = rk_step(x, kx, px, te, gnd, s, False, n, bw, k_band,
+                    ground_at(gnd, G_END, s + te)
+                    err = rk_step(x, kx, px, te, gnd, s, n, bw, k_band,
                                   c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
                                   s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp,
                                   yb, atol, rtol)
@@ -245,12 +253,15 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 wc[c] += weighted_sum(ps, P_CONTACT + c, h_acc)
             s_new = dt if last else s + h_acc
             t_now = t_k + s_new
-            ground_at(gnd, last, s_new)
+            if last:
+                ground_at_grid_end(gnd, G_NOW)
+            else:
+                ground_at(gnd, G_NOW, s_new)
             a_now = gnd[G_NOW, 0]
             # peaks over the step, from both ends (the states of its start still committed)
             for i in range(n):
                 aabs1[i] = ks[6, n + i] + r[i, 0] * a_now
-            add_ground_rest(aabs1, 1.0, r, gnd, G_NOW, n)
+            add_ground_rest(aabs1, r, gnd, G_NOW, n)
             # (the jerk at both ends only where an acceleration comes within half of its
             # peak so far: an error-controlled step is a small fraction of the fastest
             # period, so its interior cannot rise that far above its ends)
@@ -285,7 +296,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                            px, 0)
                 for i in range(n):
                     aabs0[i] = kx[0, n + i] + r[i, 0] * a_now
-                add_ground_rest(aabs0, 1.0, r, gnd, G_NOW, n)
+                add_ground_rest(aabs0, r, gnd, G_NOW, n)
             else:
                 for i in range(m):
                     kx[0, i] = ks[6, i]
@@ -340,7 +351,7 @@ def grid_outputs(o, ag, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, cc
         u_out[o, i] = x[i]
         v_out[o, i] = x[n + i]
         acc_out[o, i] = kx[0, n + i] + r[i, 0] * a_o
-    add_ground_rest(acc_out[o], 1.0, r, ag, o, n)
+    add_ground_rest(acc_out[o], r, ag, o, n)
     ek = 0.0
     es = 0.0
     for i in range(n):

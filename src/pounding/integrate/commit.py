@@ -19,6 +19,7 @@ from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.events import hermite_max
 from pounding.integrate.layout import (
+    ROW_BLOCK,
     EV_ONSET,
     EV_REENGAGE,
     EV_RELEASE,
@@ -132,8 +133,9 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cpara
                 # force rate at the step end, then the largest force inside the step from
                 # the cubic Hermite of (F, dF/dt) at its two ends
                 rel_acc = 0.0
-                for q in range(cdof.shape[1]):
-                    rel_acc += cw[c, q] * dx[n + cdof[c, q]]
+                for q0 in range(0, cdof.shape[1], ROW_BLOCK):
+                    for q in range(q0, q0 + ROW_BLOCK):
+                        rel_acc += cw[c, q] * dx[n + cdof[c, q]]
                 df1 = kd * rate + kr * rel_acc
                 h = t_now - last_f[c, 0]
                 fin, where = hermite_max(last_f[c, 1], last_f[c, 2], f, df1, h)

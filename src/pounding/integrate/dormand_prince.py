@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.integrate.rhs import G_A0, G_A1, G_NOW, G_SLOPE, INLINE, NRT_FREE, deriv
+from pounding.integrate.rhs import G_END, G_NOW, INLINE, NRT_FREE, deriv, ground_at
 
 # Dormand–Prince 5(4) tableau
 C2, C3, C4, C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
@@ -38,15 +38,16 @@ DP_C = np.array([0.0, C2, C3, C4, C5, 1.0, 1.0])
 
 
 @njit(**NRT_FREE)
-def rk_step(y0, k1, p1, h, gnd, s0, last, n, bw, k_band, c_band, m_inv, mr, r, cdof,
+def rk_step(y0, k1, p1, h, gnd, s0, n, bw, k_band, c_band, m_inv, mr, r, cdof,
             cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin,
             ks, ps, ytmp, y1, atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
 
     ``gnd[G_A0] + gnd[G_SLOPE] * s`` are the ground components at local time s (from the
-    grid point); s0 is the local start; ``last``: the step ends on the next grid point,
-    where the record's values ``gnd[G_A1]`` are used bit for bit (so that its last stage is
-    the next step's first). The stages' ground components are written to ``gnd[G_NOW]``.
+    grid point); s0 is the local start; ``gnd[G_END]`` their values at the step's end, set
+    by the caller (at a grid point the record's values bit for bit, so that the step's last
+    stage is the next step's first). The stages' ground components are written to
+    ``gnd[G_NOW]``.
     Writes y1 and the stage derivatives/powers (ks, ps: 7 rows); returns the error norm
     (RMS of the error over ``atol + rtol |y|``). Row 6 of ks/ps is f at y1.
     """
@@ -84,9 +85,10 @@ def rk_step(y0, k1, p1, h, gnd, s0, last, n, bw, k_band, c_band, m_inv, mr, r, c
                                      + B5 * ks[4, i] + B6 * ks[5, i])
         yt = y1 if st == 6 else ytmp
         if st >= 5:
-            ground_at(gnd, last, s0 + h)
+            for g in range(gnd.shape[1]):
+                gnd[G_NOW, g] = gnd[G_END, g]
         else:
-            ground_at(gnd, False, s0 + DP_C[st] * h)
+            ground_at(gnd, G_NOW, s0 + DP_C[st] * h)
         deriv(yt, y0, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
               cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, st)
     err = 0.0
@@ -96,14 +98,6 @@ def rk_step(y0, k1, p1, h, gnd, s0, last, n, bw, k_band, c_band, m_inv, mr, r, c
         sc = atol[i] + rtol * max(abs(y0[i]), abs(y1[i]))
         err += (e / sc) ** 2
     return np.sqrt(err / m)
-
-
-@njit(**NRT_FREE)
-def ground_at(gnd, at_end, s):
-    """``gnd[G_NOW]``: the ground components at local time s of the grid step (the grid
-    values ``gnd[G_A1]`` themselves if ``at_end``)."""
-    for g in range(gnd.shape[1]):
-        gnd[G_NOW, g] = gnd[G_A1, g] if at_end else gnd[G_A0, g] + gnd[G_SLOPE, g] * s
 
 
 @njit(**INLINE)

@@ -32,8 +32,9 @@ from pounding.integrate.layout import (
     EV_SEPARATION,
     EVENT_TOL,
     I_NSTEPS,
+    ROW_BLOCK,
 )
-from pounding.integrate.rhs import NRT_FREE, drift_of, gap_row
+from pounding.integrate.rhs import G_END, NRT_FREE, drift_of, gap_row, ground_at
 
 
 @njit(**NRT_FREE)
@@ -238,9 +239,10 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
         acc0 = 0.0
         acc1 = 0.0
-        for q in range(cdof.shape[1]):
-            acc0 += cw[c, q] * k0[0, n + cdof[c, q]]
-            acc1 += cw[c, q] * k1[6, n + cdof[c, q]]
+        for q0 in range(0, cdof.shape[1], ROW_BLOCK):
+            for q in range(q0, q0 + ROW_BLOCK):
+                acc0 += cw[c, q] * k0[0, n + cdof[c, q]]
+                acc1 += cw[c, q] * k1[6, n + cdof[c, q]]
         if committed[c, V0] == 0.0:
             if max(d0, d1) + bound + 0.125 * h * h * (abs(acc0) + abs(acc1)) <= -graze_tol:
                 continue
@@ -316,7 +318,8 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
     have_after = False
     err_after = 0.0
     for _ in range(60):
-        err = rk_step(x, kx, px, t_try, gnd, s, False, n, bw, k_band,
+        ground_at(gnd, G_END, s + t_try)
+        err = rk_step(x, kx, px, t_try, gnd, s, n, bw, k_band,
                       c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo,
                       s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp, yb, atol,
                       rtol)
@@ -355,7 +358,8 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
             t_try = 0.5 * (lo + hi)
     if not have_after:
         # the bracket's after end is the full step (or the grazing test)
-        err_after = rk_step(x, kx, px, hi, gnd, s, False, n, bw, k_band,
+        ground_at(gnd, G_END, s + hi)
+        err_after = rk_step(x, kx, px, hi, gnd, s, n, bw, k_band,
                             c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
                             s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1,
                             atol, rtol)

@@ -24,6 +24,7 @@ from numba import njit
 from pounding.integrate.events import touch_possible
 from pounding.integrate.layout import (
     PK_A,
+    ROW_BLOCK,
     E_CONTACT_STORED,
     E_CONTACT_WORK,
     E_DAMPING,
@@ -180,11 +181,13 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
             if d1 > 0.0 or max(gd[c], d1) + 0.25 * dt * (abs(gr[c]) + abs(r1)) > -graze_tol:
                 q0 = 0.0
                 q1 = 0.0
-                for q in range(cdof.shape[1]):
-                    j = cdof[c, q]
-                    q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, bw, k_band, c_band, m_inv, r)
-                    q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, bw, k_band, c_band,
-                                                   m_inv, r)
+                for qb in range(0, cdof.shape[1], ROW_BLOCK):
+                    for q in range(qb, qb + ROW_BLOCK):
+                        j = cdof[c, q]
+                        q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, bw, k_band, c_band,
+                                                       m_inv, r)
+                        q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, bw, k_band,
+                                                       c_band, m_inv, r)
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
                     ws_f[W_E_INPUT] = e_in
                     ws_f[W_E_DAMP] = e_d

@@ -133,7 +133,7 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
         (4N + 4); K u and C u̇ (2, N); (2N,); every contact's δ and δ̇ now and at the end of
         a trial exact step (n_c,) ×4; every floor's relative acceleration ×2, jerk ×2 and
         absolute acceleration ×2 (N,); 1 / floor mass (N,); the ground components at the
-        step's ends, their slope and now (4, G). Allocated by the caller, once a
+        step's ends, their slope, at the RK step's end and now (5, G). Allocated by the caller, once a
         run, so that this function compiles quickly (each allocation inside it cost
         compile time).
     """

@@ -9,8 +9,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pounding.integrate.layout import P_CONTACT
+from pounding.integrate.layout import P_CONTACT, ROW_BLOCK
 from pounding.integrate.propagator import FreeStep
+from pounding.integrate.rhs import G_ROWS
 from pounding.memo import Memo
 from pounding.model import PoundingModel
 
@@ -142,8 +143,24 @@ def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
     structure = STRUCTURES.get(key, lambda: _assemble_structure(model),
                                size=lambda st: 8 * 8 * st["n"] ** 2, keep=model.buildings)
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
+    cdof, cw = padded_rows(cdof, cw)
     return KernelModel(**structure, cdof=cdof, cw=cw, cgap=cgap, ccode=ccode,
                        cparams=np.ascontiguousarray(cparams))
+
+
+def padded_rows(cdof: np.ndarray, cw: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The contact rows (n_c, W) padded to a width that is a multiple of
+    :data:`~pounding.integrate.layout.ROW_BLOCK` with zero weights on each row's first DOF
+    (W = 4, today's contacts, unchanged)."""
+    nc, w = cdof.shape
+    wide = -(-w // ROW_BLOCK) * ROW_BLOCK if w else ROW_BLOCK
+    dof = np.zeros((nc, wide), dtype=np.int64)
+    wt = np.zeros((nc, wide))
+    dof[:, :w] = cdof
+    wt[:, :w] = cw
+    if nc and w:
+        dof[:, w:] = cdof[:, :1]
+    return np.ascontiguousarray(dof), np.ascontiguousarray(wt)
 
 
 def _assemble_structure(model: PoundingModel) -> dict:
@@ -204,4 +221,4 @@ def kernel_scratch(km: KernelModel, m: int) -> tuple[np.ndarray, ...]:
     floors = np.zeros((6, n))
     return (stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)), np.zeros((1, npw)),
             *states, np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n), *gaps, *floors,
-            1.0 / km.m_diag, np.zeros((4, km.r.shape[1])))
+            1.0 / km.m_diag, np.zeros((G_ROWS, km.r.shape[1])))
