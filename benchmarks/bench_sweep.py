@@ -104,10 +104,29 @@ def run_once(n_cases: int, workers: int | None, scheduler: str | None, tmp: Path
 
 
 def cpu_seconds() -> float:
-    """CPU seconds (user + system) of this process and of its children that have ended
-    (a local cluster's workers, once it is closed)."""
+    """CPU seconds (user + system) of this process and of its children that have ended,
+    and of the process the local cluster's workers are forked from with its children
+    that have ended (the workers, once the cluster is closed)."""
     return sum(getattr(resource.getrusage(who), f) for who in
-               (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN) for f in ("ru_utime", "ru_stime"))
+               (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)
+               for f in ("ru_utime", "ru_stime")) + worker_server_cpu()
+
+
+def worker_server_cpu() -> float:
+    """CPU seconds of the fork server the sweep's workers come from
+    (``pounding.studies.sweep.cluster._start_worker_server``) and of its children that
+    have ended, read from ``/proc``; 0 if there is none (yet)."""
+    from multiprocessing import forkserver
+
+    pid = getattr(getattr(forkserver, "_forkserver", None), "_forkserver_pid", None)
+    if pid is None:
+        return 0.0
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except OSError:
+        return 0.0
+    # after the name: state ppid … utime stime cutime cstime (fields 14–17 of proc(5))
+    return sum(int(x) for x in fields[11:15]) / os.sysconf("SC_CLK_TCK")
 
 
 def plain_case(trim: float = 20.0) -> float:
