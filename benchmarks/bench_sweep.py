@@ -21,6 +21,10 @@ Three measurements, printed as a table:
      measured just before and just after the sweep, and the mean taken;
    * the sweep end to end on ``--workers`` (2) workers: cases / wall time (cluster start,
      warm-up, all cases, consolidation), and over the running phase;
+   * the first repeat's sweep starts the server its workers are forked from
+     (``pounding.studies.sweep.cluster._start_worker_server``: the workers' imports and
+     the kernel's load, once); the later repeats reuse it, as a later sweep of the same
+     process does. The line of each repeat shows each;
    * the ratio end-to-end rate / kernel rate on 2 processes, and the spread of each
      number over the repeats; and, since CPU time is what other jobs on a shared machine
      cannot inflate, the kernel's share of all the CPU time the sweep used (its client,
