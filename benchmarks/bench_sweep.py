@@ -223,7 +223,9 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
               f"(1 / 2 processes; 2: {before['kernel_rate']:.0f} before the sweep, "
               f"{after['kernel_rate']:.0f} after; {k2['n']} cases), whole cases in-process "
               f"{k1['case_rate']:.0f} / {k2['case_rate']:.0f}; sweep of {sw['cases']} on "
-              f"{sw['workers']} workers {sw['wall']:.2f} s: {sw['rate_wall']:.0f} cases/s "
+              f"{sw['workers']} workers {sw['wall']:.2f} s ({sw['wall'] - sw['run']:.2f} s "
+              f"outside the running phase: parsing, cluster start and warm-up, close, "
+              f"table): {sw['rate_wall']:.0f} cases/s "
               f"end to end, {sw['rate_run']:.0f} running; end to end / kernel (2 processes) "
               f"{sw['rate_wall'] / k2['kernel_rate']:.0%}", flush=True)
     rows = [
