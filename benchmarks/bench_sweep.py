@@ -21,6 +21,10 @@ Three measurements, printed as a table:
      measured just before and just after the sweep, and the mean taken;
    * the sweep end to end on ``--workers`` (2) workers: cases / wall time (cluster start,
      warm-up, all cases, consolidation), and over the running phase;
+   * the first repeat's sweep starts the server its workers are forked from
+     (``pounding.studies.sweep.cluster._start_worker_server``: the workers' imports and
+     the kernel's load, once); the later repeats reuse it, as a later sweep of the same
+     process does. The line of each repeat shows each;
    * the ratio end-to-end rate / kernel rate on 2 processes, and the spread of each
      number over the repeats; and, since CPU time is what other jobs on a shared machine
      cannot inflate, the kernel's share of all the CPU time the sweep used (its client,
@@ -104,10 +108,29 @@ def run_once(n_cases: int, workers: int | None, scheduler: str | None, tmp: Path
 
 
 def cpu_seconds() -> float:
-    """CPU seconds (user + system) of this process and of its children that have ended
-    (a local cluster's workers, once it is closed)."""
+    """CPU seconds (user + system) of this process and of its children that have ended,
+    and of the process the local cluster's workers are forked from with its children
+    that have ended (the workers, once the cluster is closed)."""
     return sum(getattr(resource.getrusage(who), f) for who in
-               (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN) for f in ("ru_utime", "ru_stime"))
+               (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)
+               for f in ("ru_utime", "ru_stime")) + worker_server_cpu()
+
+
+def worker_server_cpu() -> float:
+    """CPU seconds of the fork server the sweep's workers come from
+    (``pounding.studies.sweep.cluster._start_worker_server``) and of its children that
+    have ended, read from ``/proc``; 0 if there is none (yet)."""
+    from multiprocessing import forkserver
+
+    pid = getattr(getattr(forkserver, "_forkserver", None), "_forkserver_pid", None)
+    if pid is None:
+        return 0.0
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except OSError:
+        return 0.0
+    # after the name: state ppid … utime stime cutime cstime (fields 14–17 of proc(5))
+    return sum(int(x) for x in fields[11:15]) / os.sysconf("SC_CLK_TCK")
 
 
 def plain_case(trim: float = 20.0) -> float:
@@ -200,7 +223,9 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
               f"(1 / 2 processes; 2: {before['kernel_rate']:.0f} before the sweep, "
               f"{after['kernel_rate']:.0f} after; {k2['n']} cases), whole cases in-process "
               f"{k1['case_rate']:.0f} / {k2['case_rate']:.0f}; sweep of {sw['cases']} on "
-              f"{sw['workers']} workers {sw['wall']:.2f} s: {sw['rate_wall']:.0f} cases/s "
+              f"{sw['workers']} workers {sw['wall']:.2f} s ({sw['wall'] - sw['run']:.2f} s "
+              f"outside the running phase: parsing, cluster start and warm-up, close, "
+              f"table): {sw['rate_wall']:.0f} cases/s "
               f"end to end, {sw['rate_run']:.0f} running; end to end / kernel (2 processes) "
               f"{sw['rate_wall'] / k2['kernel_rate']:.0%}", flush=True)
     rows = [

@@ -17,7 +17,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from pounding.studies.sweep.cluster import _auto_batch, _batch_sizes, _client
+from pounding.studies.sweep.cluster import (
+    _auto_batch,
+    _batch_sizes,
+    _client,
+    _start_worker_server,
+)
 from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
@@ -170,6 +175,9 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     pending = [c for c in sweep.cases if c.id not in done]
     n_total = len(sweep.cases)
     n_done = sum(1 for cid in done if cid in wanted)
+    if pending and scheduler is None:
+        # the local cluster's workers load what they need while this process goes on
+        _start_worker_server()
     if progress is not None:
         progress(n_done, n_total)
     payload = {"base": sweep.base, "base_dir": str(sweep.base_dir), "params": sweep.params,
