@@ -1,5 +1,6 @@
 """benchmarks/opensees_plan.py: the OpenSees model of buildings in plan, checked against the
-PlanBuilding's own matrices with solvers written here, not against pounding's engine.
+PlanBuilding's own matrices with solvers written here (not against pounding's engine); then
+pounding's engine checked against it (issue 18).
 
 * Periods: ``ops.eigen`` of the OpenSees model against ``PlanBuilding.modes().periods``.
 * No contact (gaps so large nothing touches): the OpenSees histories against
@@ -13,6 +14,10 @@ PlanBuilding's own matrices with solvers written here, not against pounding's en
 * Contact kinematics: with an undamped contact (c = 0) the contact force equals
   ``k (δ − gap)⁺`` with ``δ`` the x displacements of the two façade points computed from
   the floor histories by rigid-floor kinematics written out here.
+* Against pounding: the torsional pair striking at its corners (El Centro along x; the Düzce
+  pair at 60°), the same impacts per contact, peak forces and floor histories within
+  OpenSees' first-order accuracy (it does not locate contact onsets), the error shrinking
+  from dt = 1 ms to 0.25 ms.
 
 Skipped where OpenSeesPy is not importable; run with a venv that has it, e.g.
 ``PYTHONPATH=src:benchmarks /work/bench-venv/bin/python -m pytest -q
