@@ -57,9 +57,9 @@ about the vertical axis):
   :func:`opensees_models._retry` does.
 
 Run as a script: the example torsional pair (:func:`torsional_pair`) under El Centro 1940
-(Array #9, 180) along x, printing OpenSees' wall time and the peak contact forces. The
-bundled records have no second horizontal component of any event (both El Centro files are
-the N–S component), so the y component is none.
+(Array #9, 180) along x, printing OpenSees' wall time and the peak contact forces; no y
+component. ``bench_plan.py`` runs the pair against pounding, and under two components (the
+bundled Düzce pair, Kocaeli 1999) as well.
 
 Units: SI (m, kg, kg·m², N, s, rad).
 """
@@ -455,8 +455,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         p.error(f"--duration must be a finite number > 0 [s] (got {a.duration!r})")
     left, right, gap = torsional_pair()
     print(f"record: {gm.name}, {gm.accel.size} samples at {gm.dt:g} s, along x; "
-          f"y component: none (no bundled record has a second horizontal component of "
-          f"the same event)")
+          f"y component: none (x only; bench_plan.py adds two components)")
     for b in (left, right):
         ecc = b.stiffness_eccentricity()
         print(f"{b.name}: {b.width:g} m x {b.depth:g} m at site y = {b.site_y:g} m, periods "
