@@ -322,7 +322,9 @@ class PoundingModel:
         return any(b.is_inelastic for b in self.buildings)
 
     def contact_kinematics(self) -> tuple[NDArray[np.int64], NDArray[np.float64]]:
-        """Global DOFs and signed weights of every contact, each shape ``(n_c, 4)``.
+        """Global DOFs and signed weights of every contact, each shape ``(n_c, 4)`` (two
+        slots a side: a floor, a column point between two floors, or a floor in plan and
+        its rotation; the kernel takes rows of any width).
 
         ``δ = Σ_q w[c, q] u[dof[c, q]] − gap``: weights of the left point positive, of the
         right point negative; unused slots carry weight 0 (on a valid DOF). The force ``F`` of

@@ -68,9 +68,11 @@ class AssembledSystem(NamedTuple):
         Damping matrix [N·s/m]; each block from its building's own damping model.
     K : ndarray, shape (N, N)
         Stiffness matrix [N/m].
-    r : ndarray, shape (N,)
+    r : ndarray, shape (N,) or (N, G)
         Influence vector [-]: each building's own (all ones for a shear building: every
-        floor feels the ground acceleration).
+        floor feels the ground acceleration); as :func:`assemble` makes it, (N,). A model
+        with buildings in plan replaces it by the influence matrix R (N × 2) of the
+        ground's x and y components (:class:`pounding.model.PoundingModel`).
     offsets : ndarray of int64, shape (B,)
         Global index of each building's first degree of freedom (its floor 1).
     """
