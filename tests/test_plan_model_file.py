@@ -74,6 +74,10 @@ def test_the_example_through_the_cli_is_the_api_run(tmp_path, capsys) -> None:
     # the figures are written; the copy of the model states its defaults and builds the same
     assert {"displacements.png", "envelopes.png", "contact_forces.png"} <= {
         p.name for p in out.iterdir()}
+    # the report reads the folder (the record section: both components, x and y)
+    assert main(["report", str(out), "--out", str(tmp_path / "report.html")]) == 0
+    html = (tmp_path / "report.html").read_text()
+    assert "PGA of x, y [g]" in html and "record.incidence in model.toml" in html
     copy = load_config(out / "model.toml")
     assert copy.record.incidence == 60.0
     assert copy.building[0].damping is not None
@@ -204,3 +208,24 @@ def test_bad_fields_are_one_line_naming_field_and_value(tmp_path, capsys, text,
     assert code == 2 and len(err) == 1, err
     assert err[0].startswith("error: ") and expected in err[0], err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["model.toml"]
+
+
+def test_the_ground_panel_draws_both_components_labelled_x_and_y() -> None:
+    """The bottom panel of a time-history figure: one line a component, legend x and y, each
+    line's peak that component's (the display decimation keeps every peak)."""
+    from pounding.plot.response import plot_displacements
+
+    cfg = parse_config(__import__("tomllib").loads(_plan_text(
+        f'[record]\nbundled = "{FIRST}"\nsecond = "{SECOND}"\nincidence = 60.0\n'
+        'duration = 10.0\n')))
+    model, motion, solver = cfg.build()
+    r = simulate(model, motion, **solver)
+    fig = plot_displacements(r)
+    ground = fig.axes[len(model.buildings)]
+    assert ground.get_ylabel() == "ground acc. [g]"
+    assert [t.get_text() for t in ground.get_legend().get_texts()] == ["x", "y"]
+    lines = [ln for ln in ground.get_lines() if ln.get_label() in ("x", "y")]
+    for g, ln in enumerate(lines):
+        assert np.abs(ln.get_ydata()).max() == np.abs(np.asarray(r.ground)[:, g]).max() / G
+    title = ground.get_title(loc="left")
+    assert title.startswith("ground acceleration, peak x ") and ", y " in title, title

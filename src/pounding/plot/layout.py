@@ -332,7 +332,10 @@ def ground_panel(ax: Axes, time: NDArray[np.float64], ground: NDArray[np.float64
             peaks.append(f"{labels[g] + ' ' if labels[g] else ''}{abs(ag[k, g]):.3g} g at "
                          f"{time[k]:.2f} s")
     if peaks:
-        ax.set_title(fit_text(f"ground acceleration: {name}; peak {', '.join(peaks)}",
+        # several components: their peaks first, so a long name is what gets cut
+        text = (f"ground acceleration: {name}; peak {peaks[0]}" if n_comp == 1 else
+                f"ground acceleration, peak {', '.join(peaks)}: {name}")
+        ax.set_title(fit_text(text,
                               axes_width(ax), TITLE_SIZE, max_lines=1),
                      fontsize=TITLE_SIZE, loc="left")
     if n_comp > 1:
