@@ -65,6 +65,7 @@ def summarize(r: Result) -> dict[str, Any]:
         "energy_final_J": {name: float(v) for name, v in zip(ENERGY_NAMES, r.energy[-1])},
         "contact_dissipated_J": float(r.contact_dissipated[-1]),
         "energy_balance_error": r.energy_balance_error,
+        **rotation_summary(r),
         **inelastic_summary(r),
         **device_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
@@ -74,6 +75,37 @@ def summarize(r: Result) -> dict[str, Any]:
                    "peaks": ("located inside solver steps" if r.located_peaks is not None
                              else "read at the output steps")},
     }
+
+def floor_rotations(r: Result) -> list[tuple[int, int, str, float, float]]:
+    """The peak rotation of every floor of the buildings in plan: ``(building, floor,
+    label, peak |θ| [rad], time [s])``, building and floor 0-based, ``label`` the floor's θ
+    DOF as ``B2F3θ`` (building 2, floor 3); located inside solver steps as the other peaks
+    (:attr:`pounding.result.Result.peak_displacement` of the θ DOFs)."""
+    from pounding.structure.plan import PlanMatrixBuilding
+
+    out = []
+    peak, time = r.peak_displacement, r.peak_displacement_time
+    for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
+        if not isinstance(bl, PlanMatrixBuilding):
+            continue
+        plan = bl.plan
+        assert plan is not None
+        for k in range(plan.n_floors):
+            j = plan.dof(k, "θ")
+            out.append((b, k, f"B{b + 1}{bl.labels[j]}", float(peak[off + j]),
+                        float(time[off + j])))
+    return out
+
+
+def rotation_summary(r: Result) -> dict[str, Any]:
+    """``peak_floor_rotation_mrad`` and ``peak_floor_rotation_time_s`` by floor
+    (:func:`floor_rotations`), if some building is in plan."""
+    rows = floor_rotations(r)
+    if not rows:
+        return {}
+    return {"peak_floor_rotation_mrad": {lb: 1e3 * v for _, _, lb, v, _ in rows},
+            "peak_floor_rotation_time_s": {lb: t for _, _, lb, _, t in rows}}
+
 
 def building_summary(r: Result) -> list[dict[str, Any]]:
     """Per building: its natural periods and, storey by storey (floors by elevation; a
@@ -91,6 +123,7 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
                   ("peak_storey_shear_time_s", r.peak_storey_shear_time),
                   ("peak_abs_acceleration_m_s2", r.peak_abs_acceleration),
                   ("peak_abs_acceleration_time_s", r.peak_abs_acceleration_time))
+    rotations = {(b, k): (v, t) for b, k, _, v, t in floor_rotations(r)}
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
         storeys = []
         matrices = isinstance(bl, MatrixBuilding)
@@ -101,9 +134,14 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
                                    "floor_elevation_m": float(bl.floor_levels[j]),
                                    "height_m": float(bl.heights[j])}
             row.update({key: float(v[off + j]) for key, v in quantities})
+            if (b, k) in rotations:
+                row["peak_rotation_mrad"] = 1e3 * rotations[b, k][0]
+                row["peak_rotation_time_s"] = rotations[b, k][1]
             storeys.append(row)
+        given = ({"given_as": "plan", "n_dof": bl.n} if any(key[0] == b for key in rotations)
+                 else {"given_as": "matrices", "n_dof": bl.n} if matrices else {})
         out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": len(storeys),
-                    **({"given_as": "matrices", "n_dof": bl.n} if matrices else {}),
+                    **given,
                     "periods_s": [float(t) for t in bl.modes().periods],
                     "storeys": storeys})
     return out

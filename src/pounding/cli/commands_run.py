@@ -128,6 +128,9 @@ def _print_summary(out: Any) -> None:
     head.add_row(_h("wall time [s]"), f"{r.wall_time:.2f} integrating, {out.wall_time:.2f} total")
     console.print(head)
 
+    from pounding.summary import floor_rotations
+
+    rotations = {(b, k) for b, k, *_ in floor_rotations(r)}
     bt = Table(title="Buildings (peaks located inside solver steps)")
     cols = [("building", "left"), ("storeys", "right"), ("T1, T2, T3 [s]", "right"),
             ("peak roof displacement [m]", "right"), ("at t [s]", "right"),
@@ -152,7 +155,8 @@ def _print_summary(out: Any) -> None:
         row = [f"B{b + 1} {bl.name}".strip(), str(floors.size), periods,
                f"{r.peak_displacement[roof]:.4f}", f"{r.peak_displacement_time[roof]:.3f}",
                f"{d[j]:.4f}", str(j + 1), f"{d[j] / bl.heights[floors[j]]:.2%}",
-               f"{v[jv] / 1e3:.4g} (storey {jv + 1})" if jv >= 0 else "– (matrices)"]
+               f"{v[jv] / 1e3:.4g} (storey {jv + 1})" if jv >= 0 else
+               "– (in plan)" if any(k[0] == b for k in rotations) else "– (matrices)"]
         if inelastic:
             law = bl.storey_law
             if law is None:
@@ -212,11 +216,16 @@ def _print_storeys(r: Any) -> None:
     """Every storey's peaks with their times (the envelope figure, as numbers); a building
     of more than :data:`STOREY_ROWS` storeys shows the ten with the largest drift ratio."""
     from pounding.structure.assembly import floor_dofs
+    from pounding.summary import floor_rotations
 
-    st = Table(title="Storeys: peaks and when (all of them in summary.json)")
+    rotations = {(b, k): (v, t) for b, k, _, v, t in floor_rotations(r)}
+    st = Table(title="Storeys: peaks and when (all of them in summary.json)"
+               + ("; in plan: displacement and drift along x, rotation of the floor"
+                  if rotations else ""))
     for col in ("building", "storey", "floor at [m]", "displacement [mm]", "t [s]",
                 "drift ratio [%]", "t [s]", "storey shear [kN]", "t [s]",
-                "abs. acceleration [m/s²]", "t [s]"):
+                "abs. acceleration [m/s²]", "t [s]") + (
+                    ("rotation [mrad]", "t [s]") if rotations else ()):
         st.add_column(_h(col), justify="left" if col == "building" else "right")
     ratio = r.peak_drift_ratio
     shear, shear_t = r.peak_storey_shear, r.peak_storey_shear_time
@@ -229,6 +238,9 @@ def _print_storeys(r: Any) -> None:
             j = int(floors[k])
             i = off + j
             has_shear = bool(np.isfinite(shear[i]))
+            rot = rotations.get((b, int(k)))
+            twist = ([f"{rot[0] * 1e3:.4g}", f"{rot[1]:.3f}"] if rot is not None
+                     else ["–", "–"] if rotations else [])
             st.add_row(f"B{b + 1} {bl.name}".strip(), str(int(k) + 1),
                        f"{bl.floor_levels[j]:g}",
                        f"{r.peak_displacement[i] * 1e3:.2f}", f"{r.peak_displacement_time[i]:.3f}",
@@ -236,9 +248,10 @@ def _print_storeys(r: Any) -> None:
                        f"{shear[i] / 1e3:.5g}" if has_shear else "–",
                        f"{shear_t[i]:.3f}" if has_shear else "–",
                        f"{r.peak_abs_acceleration[i]:.4g}",
-                       f"{r.peak_abs_acceleration_time[i]:.3f}")
+                       f"{r.peak_abs_acceleration_time[i]:.3f}", *twist)
         if floors.size > STOREY_ROWS:
-            st.add_row(f"B{b + 1}", "…", "", "", "", "", "", "", "", "", "")
+            st.add_row(f"B{b + 1}", "…", "", "", "", "", "", "", "", "", "",
+                       *([""] * (2 if rotations else 0)))
     console.print(st)
 
 

@@ -11,10 +11,12 @@ from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
 from pounding.config.isolation import IsolatorConfig
+from pounding.config.plan import ElementConfig, PlanConfig
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
 from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
 from pounding.structure.damping import DampingModel
+from pounding.structure.plan import PlanBuilding
 
 class DampingConfig(Section):
     """``damping = {...}``: inherent damping of one building.
@@ -129,7 +131,7 @@ BUILDINGS = Memo(max_items=64, max_bytes=256 << 20)
 and default name."""
 
 
-def _building_bytes(b: ShearBuilding | MatrixBuilding) -> int:
+def _building_bytes(b: ShearBuilding | MatrixBuilding | PlanBuilding) -> int:
     """Bytes a building holds: its mass, stiffness and damping matrices."""
     return 3 * 8 * b.n * b.n
 
@@ -138,6 +140,8 @@ _SDOF_KEYS = ("mass", "stiffness", "period", "height")
 _UNIFORM_KEYS = ("n_storeys", "mass", "stiffness", "period", "height")
 _STOREY_KEYS = ("masses", "stiffnesses", "heights", "height", "period")
 _MATRIX_KEYS = ("matrices", "npz", "elevations", "labels", "r", "floors")
+_PLAN_KEYS = ("masses", "heights", "height")
+_PLAN_ONLY = ("plan", "elements")
 _SHEAR_KEYS = ("mass", "stiffness", "period", "height", "n_storeys", "masses", "stiffnesses",
                "heights", "storey_law", "isolator")
 
@@ -159,7 +163,7 @@ def _resolve(base: Path, value: str) -> str:
 class BuildingConfig(Section):
     """``[[building]]``: one building; the tables go left to right.
 
-    Three ways to give it, told apart by the keys present:
+    Five ways to give it, told apart by the keys present:
 
     * SDOF: ``mass`` [kg] and ``period`` [s] or ``stiffness`` [N/m]; ``height`` [m] (3).
     * uniform: ``n_storeys``, ``mass`` [kg] per floor, ``stiffness`` [N/m] per storey or
@@ -173,9 +177,15 @@ class BuildingConfig(Section):
       in full); ``elevations`` [m], one per degree of freedom; optional ``labels`` (default
       ``F1`` … ``Fn``), ``r`` (influence vector) and ``floors`` (the DOFs that are floor
       translations, labels or 0-based indices; default all). No storey law.
+    * plan (a :class:`~pounding.structure.plan.PlanBuilding`, rigid floors with ``u_x``,
+      ``u_y``, ``θ``): ``plan = { width, depth, site_y }`` (:class:`PlanConfig`),
+      ``masses`` [kg], ``heights`` [m] (or one ``height``; default 3) and ``elements``
+      (:class:`ElementConfig`), the lateral load-resisting elements. Linear: no storey law,
+      no isolator. Under two horizontal components of the ground (``[record] second``).
 
-    ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF and 5 %
-    Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
+    ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF, 5 %
+    Rayleigh at modes 1 and 3 for a building in plan (the PlanBuilding's own: modes 1 and 2
+    of a symmetric plan share a period) and 5 % Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
     storeys yield; without it they stay linear. ``isolator``
     (:class:`pounding.config.isolation.IsolatorConfig`) puts the building, as its
     superstructure, on a base slab and an isolation storey (base isolation).
@@ -199,6 +209,8 @@ class BuildingConfig(Section):
     labels: Annotated[list[str], Field(min_length=1)] | None = None
     r: Annotated[list[float], Field(min_length=1)] | None = None
     floors: Annotated[list[str | int], Field(min_length=1)] | None = None
+    plan: PlanConfig | None = None
+    elements: Annotated[list[ElementConfig], Field(min_length=1)] | None = None
 
     @model_validator(mode="before")
     @classmethod
@@ -218,7 +230,9 @@ class BuildingConfig(Section):
 
     @property
     def kind(self) -> str:
-        """``'storeys'``, ``'uniform'``, ``'sdof'`` or ``'matrices'``."""
+        """``'storeys'``, ``'uniform'``, ``'sdof'``, ``'matrices'`` or ``'plan'``."""
+        if self.plan is not None:
+            return "plan"
         if self.matrices is not None or self.npz is not None:
             return "matrices"
         if self.masses is not None:
@@ -240,6 +254,14 @@ class BuildingConfig(Section):
             raise field_error("isolator", "a base-isolated building's superstructure stays "
                                           "linear: give isolator or storey_law, not both")
         kind = self.kind
+        if kind == "plan":
+            self._check_plan_keys()
+            return self
+        for key in _PLAN_ONLY:
+            if getattr(self, key) is not None:
+                raise field_error(key, "only for a building in plan (plan = { width = …, "
+                                       "depth = … } with elements = [ … ]) (got "
+                                       f"{fmt(getattr(self, key))})")
         if kind == "matrices":
             self._check_matrix_keys()
             return self
@@ -307,6 +329,49 @@ class BuildingConfig(Section):
                 raise field_error(tuple(key.split(".")), f"{what} {path!r} (relative paths "
                                                          "start at the model file's folder)")
 
+    def _check_plan_keys(self) -> None:
+        own = {*_PLAN_KEYS, *_PLAN_ONLY, "name", "damping"}
+        for key in type(self).model_fields:
+            if key in own or getattr(self, key) is None:
+                continue
+            why = {"storey_law": " (a building in plan is linear)",
+                   "isolator": " (a building in plan stands on the ground)",
+                   "stiffnesses": " (each element of elements has its own stiffnesses)",
+                   }.get(key, "")
+            raise field_error(key, f"not a key of a building in plan{why} (got "
+                                   f"{fmt(getattr(self, key))})")
+        if self.masses is None:
+            raise field_error("masses", "required for a building in plan: one value [kg] per "
+                                        "floor, floor 1 first")
+        n = len(self.masses)
+        if self.elements is None:
+            raise field_error("elements", "required for a building in plan: its lateral "
+                                          "load-resisting elements, e.g. elements = [ { x = "
+                                          "0.0, y = 6.0, direction = \"y\", stiffnesses = "
+                                          "1e8 }, … ]")
+        if self.heights is not None and self.height is not None:
+            raise field_error("height", "give heights or height, not both")
+        if self.heights is not None and len(self.heights) != n:
+            raise field_error("heights", f"need {n} values, one per floor like masses "
+                                          f"(got {len(self.heights)}: {fmt(self.heights)})")
+        for i, e in enumerate(self.elements):
+            if isinstance(e.stiffnesses, list) and len(e.stiffnesses) != n:
+                raise field_error(("elements", i, "stiffnesses"),
+                                  f"need {n} values, one per storey like masses, or one value "
+                                  f"for every storey (got {len(e.stiffnesses)}: "
+                                  f"{fmt(e.stiffnesses)})")
+        plan = self.plan
+        assert plan is not None
+        if plan.mass_centres is not None and isinstance(plan.mass_centres[0], list) \
+                and len(plan.mass_centres) != n:
+            raise field_error(("plan", "mass_centres"),
+                              f"need one [x, y] for every floor or {n}, one a floor (got "
+                              f"{len(plan.mass_centres)}: {fmt(plan.mass_centres)})")
+        if isinstance(plan.inertias, list) and len(plan.inertias) != n:
+            raise field_error(("plan", "inertias"),
+                              f"need one value or {n}, one a floor (got {len(plan.inertias)}: "
+                              f"{fmt(plan.inertias)})")
+
     def _files(self) -> list[str]:
         if self.npz is not None:
             return [self.npz]
@@ -316,10 +381,12 @@ class BuildingConfig(Section):
     def n(self) -> int:
         """Number of storeys (of degrees of freedom, for a building given as matrices)."""
         return {"sdof": 1, "uniform": self.n_storeys or 1, "storeys": len(self.masses or ()),
-                "matrices": len(self.elevations or ())}[self.kind]
+                "matrices": len(self.elevations or ()),
+                "plan": len(self.masses or ())}[self.kind]
 
-    def build(self, default_name: str) -> ShearBuilding | MatrixBuilding:
-        """The :class:`ShearBuilding` or :class:`MatrixBuilding` (domain errors propagate
+    def build(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
+        """The :class:`ShearBuilding`, :class:`MatrixBuilding` or
+        :class:`~pounding.structure.plan.PlanBuilding` (domain errors propagate
         unprefixed).
 
         Remembered per configuration and default name (:data:`BUILDINGS`; matrix files by
@@ -355,10 +422,32 @@ class BuildingConfig(Section):
             raise ValueError(f"{exc}; the time stepper takes lumped masses") from None
         return b
 
-    def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding:
+    def _build_plan(self, name: str) -> PlanBuilding:
+        plan = self.plan
+        assert plan is not None and self.masses is not None and self.elements is not None
+        n = len(self.masses)
+        heights = self.heights if self.heights is not None else [
+            self.height if self.height is not None else 3.0] * n
+        inertias = ([plan.inertias] * n if isinstance(plan.inertias, float)
+                    else plan.inertias)
+        own: dict[str, Any] = {}
+        if self.damping is not None:
+            own["damping"] = self.damping.build()
+        elements = []
+        for i, e in enumerate(self.elements):
+            with prefixed(f"elements[{i}]"):
+                elements.append(e.build())
+        return PlanBuilding(masses=self.masses, heights=heights, width=plan.width,
+                            depth=plan.depth, elements=elements,
+                            mass_centres=plan.mass_centres, inertias=inertias, name=name,
+                            site_y=plan.site_y, **own)
+
+    def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
         name = self.name or default_name
         if self.kind == "matrices":
             return self._build_matrices(name)
+        if self.kind == "plan":
+            return self._build_plan(name)
         damping = self.damping.build() if self.damping is not None else None
         h = self.height if self.height is not None else 3.0
         if self.kind == "sdof":

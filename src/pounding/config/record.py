@@ -10,7 +10,15 @@ from typing import Annotated
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
 from pounding.config.base import Pos, Section, field_error, fmt
-from pounding.ground_motion import GroundMotion, bundled_files, el_centro, load_bundled, read_record
+from pounding.ground_motion import (
+    GroundMotion,
+    GroundMotionComponents,
+    bundled_files,
+    el_centro,
+    load_bundled,
+    read_record,
+)
+from pounding.ground_motion.incidence import at_incidence
 from pounding.memo import Memo
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
@@ -52,6 +60,18 @@ class RecordConfig(Section):
     scales it so that the geometric mean of its pseudo-acceleration at ``saavg_n`` periods
     equally spaced over that range (``sa_damping``) is ``saavg_g``
     (:func:`pounding.spectra.scale_to_saavg`).
+
+    Two horizontal components (for a model with buildings in plan): ``second`` (a bundled
+    record) or ``second_file`` (a path, relative to the model file), the component
+    orthogonal to the first, and ``incidence`` [degrees], the angle of the first component
+    from the site x axis, counter-clockwise (default 0):
+    :func:`pounding.ground_motion.incidence.at_incidence`. ``dt`` and ``units`` are for
+    every record file given; ``duration`` and the scaling apply to both components alike:
+    the factor is the first component's (``pga_g``, ``sa_g``, ``saavg_g`` measured on the
+    first), and the second is multiplied by the same factor. A model with buildings in plan
+    given one component shakes along ``incidence`` with it alone (``a_x = a cos α``,
+    ``a_y = a sin α``); a model without them takes no ``second``, ``second_file`` or
+    ``incidence``.
     """
 
     bundled: str | None = None
@@ -67,10 +87,14 @@ class RecordConfig(Section):
     saavg_g: Pos | None = None
     saavg_periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
     saavg_n: Annotated[int, Field(ge=2, le=1000)] | None = None
+    second: str | None = None
+    second_file: str | None = None
+    incidence: float | None = None
 
     _path: Path | None = PrivateAttr(default=None)
+    _second_path: Path | None = PrivateAttr(default=None)
 
-    @field_validator("bundled")
+    @field_validator("bundled", "second")
     @classmethod
     def _known_bundled(cls, v: str | None) -> str | None:
         if v is None:
@@ -109,21 +133,33 @@ class RecordConfig(Section):
             for key in ("saavg_periods", "saavg_n"):
                 if getattr(self, key) is not None:
                     raise field_error(key, f"only with saavg_g (got {fmt(getattr(self, key))})")
-        if self.bundled is not None:
+        if self.second is not None and self.second_file is not None:
+            raise field_error("second_file", f"give second (bundled) or second_file, not both "
+                                             f"(got second={self.second!r}, "
+                                             f"second_file={self.second_file!r})")
+        if self.bundled is not None and self.second_file is None:
             for key in ("dt", "units"):
                 if getattr(self, key) is not None:
                     raise field_error(key, f"only for record files; a bundled record states "
                                             f"its own (got {fmt(getattr(self, key))})")
-        else:
-            base = Path((info.context or {}).get("base_dir", "."))
-            path = (base / Path(self.file).expanduser()).resolve()  # type: ignore[arg-type]
-            if not path.is_file():
-                what = (f"{str(path)!r} is a directory, not a record file" if path.is_dir()
-                        else f"no such file {str(path)!r}")
-                raise field_error("file", f"{what} (got {self.file!r}; relative paths start "
-                                           "at the model file's folder)")
-            self._path = path
+        base = Path((info.context or {}).get("base_dir", "."))
+        for key in ("file", "second_file"):
+            if getattr(self, key) is not None:
+                setattr(self, f"_{'' if key == 'file' else 'second_'}path",
+                        _record_file(base, key, getattr(self, key)))
         return self
+
+    @property
+    def two_components(self) -> bool:
+        """True if a second horizontal component is given."""
+        return self.second is not None or self.second_file is not None
+
+    @property
+    def second_path(self) -> Path | None:
+        """The second component's file, resolved (None if none or bundled)."""
+        if self.second_file is not None and self._second_path is None:
+            self._second_path = Path(self.second_file).expanduser().resolve()
+        return self._second_path
 
     @property
     def path(self) -> Path | None:
@@ -132,32 +168,68 @@ class RecordConfig(Section):
             self._path = Path(self.file).expanduser().resolve()
         return self._path
 
-    def load(self) -> GroundMotion:
+    def load(self, components: bool = False) -> GroundMotion | GroundMotionComponents:
         """Read the record and apply ``duration``, then ``scale`` / ``pga_g`` / ``sa_g`` /
         ``saavg_g``.
 
-        Remembered (:data:`RECORDS`, keyed by every field, the file resolved and its
-        version): the cases of a sweep that share a record share one (immutable) motion,
+        Parameters
+        ----------
+        components : bool
+            Return the site's x and y components
+            (:class:`~pounding.ground_motion.GroundMotionComponents`, for a model with
+            buildings in plan): ``at_incidence(first, second, incidence)``, the second
+            component scaled by the first's factor. Else the first component alone (a
+            :class:`GroundMotion`).
+
+        Remembered (:data:`RECORDS`, keyed by every field, the files resolved and their
+        versions): the cases of a sweep that share a record share one (immutable) motion,
         and with it its samples on the output grid
         (:func:`pounding.integrate.grid.ground_on_grid_memo`).
         """
-        path = self.path
-        version = None
-        if path is not None and path.exists():
-            stat = path.stat()
-            version = (stat.st_mtime_ns, stat.st_size)
+        path, second = self.path, self.second_path
+        version, version2 = _version(path), _version(second)
         # every field, as text (equal text: equal values of the same types)
-        return RECORDS.get((repr(self.__dict__), str(path), version),
-                           lambda: self._load(path, version), size=lambda gm: gm.accel.nbytes)
+        return RECORDS.get((repr(self.__dict__), str(path), version, str(second), version2,
+                            components),
+                           lambda: self._components(path, version, second, version2)
+                           if components else self._load(path, version)[0],
+                           size=lambda gm: gm.accel.nbytes)
 
-    def _load(self, path: Path | None, version: tuple[int, int] | None) -> GroundMotion:
+    def _components(self, path: Path | None, version: tuple[int, int] | None,
+                    second_path: Path | None, version2: tuple[int, int] | None
+                    ) -> GroundMotionComponents:
+        first, factor = self._load(path, version)
+        angle = 0.0 if self.incidence is None else self.incidence
+        if not self.two_components:
+            ax, ay = at_incidence(first, None, angle)
+            return GroundMotionComponents((ax, ay), name=f"{first.name} alone (one "
+                                                         f"component) at {angle:g}°")
+        if self.second is not None:
+            gm2 = _bundled(self.second)
+        else:
+            gm2 = _read_record_cached(second_path, version2, self.dt, self.units)
+        if self.duration is not None:
+            gm2 = gm2.trimmed(self.duration)
+        if factor != 1.0:
+            gm2 = gm2.scaled(factor)
+        try:
+            ax, ay = at_incidence(first, gm2, angle)
+        except ValueError as exc:
+            key = "second" if self.second is not None else "second_file"
+            raise ValueError(f"{key}: {gm2.name!r}: {exc}") from None
+        return GroundMotionComponents((ax, ay), name=f"{first.name} + {gm2.name} at "
+                                                     f"{angle:g}°")
+
+    def _load(self, path: Path | None, version: tuple[int, int] | None
+              ) -> tuple[GroundMotion, float]:
+        """The first component, and the factor its scaling multiplied it by."""
         if self.bundled is not None:
-            gm = (el_centro() if self.bundled.lower() in EL_CENTRO_ALIASES
-                  else load_bundled(self.bundled))
+            gm = _bundled(self.bundled)
         else:
             gm = _read_record_cached(path, version, self.dt, self.units)
         if self.duration is not None:
             gm = gm.trimmed(self.duration)
+        unscaled = gm
         if self.scale is not None:
             gm = gm.scaled(self.scale)
         if self.pga_g is not None:
@@ -173,4 +245,31 @@ class RecordConfig(Section):
             gm = scale_to_saavg(gm, self.saavg_g, self.saavg_periods,  # type: ignore[arg-type]
                                 SA_DAMPING if self.sa_damping is None else self.sa_damping,
                                 SAAVG_N if self.saavg_n is None else self.saavg_n)
-        return gm
+        if gm is unscaled:
+            return gm, 1.0
+        if self.scale is not None:
+            return gm, self.scale
+        return gm, gm.pga / unscaled.pga
+
+
+def _bundled(name: str) -> GroundMotion:
+    return el_centro() if name.lower() in EL_CENTRO_ALIASES else load_bundled(name)
+
+
+def _version(path: Path | None) -> tuple[int, int] | None:
+    """A file's modification time and size (None: no file)."""
+    if path is None or not path.exists():
+        return None
+    stat = path.stat()
+    return (stat.st_mtime_ns, stat.st_size)
+
+
+def _record_file(base: Path, key: str, value: str) -> Path:
+    """The record file ``value`` of ``key``, relative to ``base``, resolved; must exist."""
+    path = (base / Path(value).expanduser()).resolve()
+    if not path.is_file():
+        what = (f"{str(path)!r} is a directory, not a record file" if path.is_dir()
+                else f"no such file {str(path)!r}")
+        raise field_error(key, f"{what} (got {value!r}; relative paths start at the model "
+                               "file's folder)")
+    return path

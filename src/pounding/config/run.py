@@ -8,7 +8,7 @@ from typing import Annotated, Any, NamedTuple
 
 from pydantic import Field, PrivateAttr, ValidationError, model_validator
 
-from pounding.config.base import Pos, Section, field_error, prefixed
+from pounding.config.base import Pos, Section, field_error, fmt, prefixed
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
 from pounding.config.device import DeviceConfig
@@ -16,7 +16,7 @@ from pounding.config.isolation import WallConfig
 from pounding.config.errors import format_validation_error
 from pounding.config.record import RecordConfig
 from pounding.config.toml import dump_toml
-from pounding.ground_motion import GroundMotion
+from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.io import read_toml
 from pounding.model import ContactSpec, PoundingModel
 
@@ -47,10 +47,11 @@ class OutputConfig(Section):
 
 
 class Built(NamedTuple):
-    """What :meth:`RunConfig.build` returns: unpack as ``model, motion, solver_kwargs``."""
+    """What :meth:`RunConfig.build` returns: unpack as ``model, motion, solver_kwargs``
+    (``motion`` the site's x and y components for a model with buildings in plan)."""
 
     model: PoundingModel
-    motion: GroundMotion
+    motion: GroundMotion | GroundMotionComponents
     solver: dict[str, Any]
 
 
@@ -69,9 +70,23 @@ class RunConfig(Section):
 
     _source: Path | None = PrivateAttr(default=None)
 
+    @property
+    def in_plan(self) -> bool:
+        """True if some building is in plan (the ground then has an x and a y component)."""
+        return any(b.kind == "plan" for b in self.building)
+
     @model_validator(mode="after")
     def _pairs(self) -> RunConfig:
         nb = len(self.building)
+        if not self.in_plan:
+            for key in ("second", "second_file", "incidence"):
+                value = getattr(self.record, key)
+                if value is not None:
+                    raise field_error(("record", key),
+                                      f"a second horizontal component and its incidence are "
+                                      f"for a model with buildings in plan (plan = {{ … }}); "
+                                      f"these buildings are planar, shaken along x by the "
+                                      f"record alone (got {key} = {fmt(value)})")
         if self.contact is None:
             if self.wall:
                 raise field_error("contact", "required with a [[wall]]: a [contact] table "
@@ -156,7 +171,7 @@ class RunConfig(Section):
                     f"{[round(float(x), 6) for x in b.floor_levels]}); with "
                     "contact.floor_to_column = false floors meet only at equal levels")
         with prefixed("record"):
-            motion = self.record.load()
+            motion = self.record.load(components=self.in_plan)
         return Built(model, motion, self.solver.kwargs())
 
     # ------------------------------------------------------------------ writing
@@ -178,6 +193,8 @@ class RunConfig(Section):
             data.pop("device", None)
         if resolve_paths and self.record.file is not None and self.record.path is not None:
             data["record"]["file"] = str(self.record.path)
+        if resolve_paths and self.record.second_path is not None:
+            data["record"]["second_file"] = str(self.record.second_path)
         return data
 
     def to_toml(self, resolve_paths: bool = False, header: str = "",
@@ -207,8 +224,12 @@ class RunConfig(Section):
             if b.kind == "matrices" and (b.matrices is not None and b.matrices.C is not None
                                          or _npz_has_c(b.npz)):
                 continue  # damped by its matrix C
+            elif b.kind == "plan" and b.heights is None:
+                raw.setdefault("height", 3.0)
             if b.damping is None:
                 raw["damping"] = ({"ratio": 0.05} if b.kind == "sdof" else
+                                  {"rayleigh": [0.05, 0.05], "modes": [1, 3]}
+                                  if b.kind == "plan" else
                                   {"rayleigh": [0.05, 0.05], "modes": [1, 2]})
         if self.contact is not None:
             c = data["contact"]
@@ -222,7 +243,9 @@ class RunConfig(Section):
             from pounding.spectra.scaling import SAAVG_N
 
             data["record"].setdefault("saavg_n", SAAVG_N)
-        motion = self.record.load()
+        if self.in_plan:
+            data["record"].setdefault("incidence", 0.0)
+        motion = self.record.load(components=self.in_plan)
         step = grid_step(motion.dt, self.solver.dt or DEFAULT_OUTPUT_STEP)
         sol = data.setdefault("solver", {})
         sol["dt"] = step

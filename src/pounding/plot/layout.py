@@ -311,15 +311,35 @@ def history(ax: Axes, t: NDArray[np.float64], y: NDArray[np.float64], **kw: Any)
 def ground_panel(ax: Axes, time: NDArray[np.float64], ground: NDArray[np.float64],
                  name: str) -> None:
     """The ground acceleration [g] against time [s], its peak marked, in ``ax`` (the
-    bottom panel of a time-history figure, sharing its time axis)."""
+    bottom panel of a time-history figure, sharing its time axis).
+
+    ``ground`` is one history (nt,) or G components (nt, G) applied together, along the
+    columns of the model's influence matrix: two are the site's x and y axes (a building in
+    plan), drawn and labelled ``x`` and ``y``, each with its peak marked."""
     ag = np.asarray(ground, dtype=float) / G
-    history(ax, time, ag, color="0.25", lw=0.6)
-    if ag.size:
-        k = int(np.abs(ag).argmax())
-        ax.plot([time[k]], [ag[k]], "o", ms=3, color="tab:red")
-        ax.set_title(fit_text(f"ground acceleration: {name}; peak {abs(ag[k]):.3g} g at "
-                              f"{time[k]:.2f} s", axes_width(ax), TITLE_SIZE, max_lines=1),
+    if ag.ndim == 1:
+        ag = ag[:, None]
+    n_comp = ag.shape[1]
+    labels = (["x", "y"] if n_comp == 2 else [""] if n_comp == 1
+              else [f"component {g + 1}" for g in range(n_comp)])
+    colors = ["0.25"] if n_comp == 1 else [f"C{g}" for g in range(n_comp)]
+    peaks = []
+    for g in range(n_comp):
+        history(ax, time, ag[:, g], color=colors[g], lw=0.6, label=labels[g] or None)
+        if ag.shape[0]:
+            k = int(np.abs(ag[:, g]).argmax())
+            ax.plot([time[k]], [ag[k, g]], "o", ms=3, color="tab:red")
+            peaks.append(f"{labels[g] + ' ' if labels[g] else ''}{abs(ag[k, g]):.3g} g at "
+                         f"{time[k]:.2f} s")
+    if peaks:
+        # several components: their peaks first, so a long name is what gets cut
+        text = (f"ground acceleration: {name}; peak {peaks[0]}" if n_comp == 1 else
+                f"ground acceleration, peak {', '.join(peaks)}: {name}")
+        ax.set_title(fit_text(text,
+                              axes_width(ax), TITLE_SIZE, max_lines=1),
                      fontsize=TITLE_SIZE, loc="left")
+    if n_comp > 1:
+        ax.legend(loc="upper right", fontsize=TITLE_SIZE, ncols=n_comp, frameon=False)
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_ylabel("ground acc. [g]")
     ax.grid(True, alpha=0.3)

@@ -32,6 +32,7 @@ from pounding.plot.layout import (
     history,
     plain_ticks,
     scale_for,
+    text_width,
     titled_figure,
 )
 from pounding.plot.loops import plot_hysteresis, plot_storey_hysteresis
@@ -79,7 +80,9 @@ def _legend_columns(labels: list[str], rows: int) -> tuple[int, float]:
     """Columns of a legend of ``labels`` with at most ``rows`` rows, and its width [in]."""
     ncol = max(1, math.ceil(len(labels) / max(rows, 1)))
     longest = max((len(s) for s in labels), default=0)
-    return ncol, ncol * (0.35 + _CHAR_WIDTH * longest)
+    # wide glyphs (the '@' and '=' of a contact in plan) measured, not counted
+    measured = max((text_width(s, LEGEND_SIZE) for s in labels), default=0.0)
+    return ncol, ncol * (0.35 + max(_CHAR_WIDTH * longest, measured + 0.05))
 
 
 def _history_figure(result: Result, n_panels: int, legend_width: float, subject: str

@@ -101,9 +101,15 @@ def record_section(r: RunFolder) -> list[Block]:
     items: list[tuple[str, Any]] = [("record", str(s.get("record", ds.attrs.get("record", ""))))]
     if r.built is not None:
         gm = r.built.motion
-        items += [("source", gm.source or "–"), ("units of the source", gm.units_read),
+        # two components (buildings in plan): the site's x and y, rotated from the first's
+        comps = getattr(gm, "components", (gm,))
+        first = comps[0]
+        items += [("source", first.source or "–"), ("units of the source", first.units_read),
                   ("record step [s]", gm.dt), ("record duration [s]", gm.duration),
-                  ("PGA [g]", gm.pga_g), ("PGA [m/s²]", gm.pga)]
+                  ("PGA [g]" + (" (larger of x and y)" if len(comps) > 1 else ""), gm.pga_g),
+                  ("PGA [m/s²]", gm.pga)]
+        if len(comps) == 2:
+            items += [("PGA of x, y [g]", ", ".join(f"{c.pga_g:.4g}" for c in comps))]
     else:
         items += [("PGA [g]", s.get("record_pga_g"))]
     items += [("simulated duration [s]", float(t[-1]) if t.size else None),
@@ -111,7 +117,8 @@ def record_section(r: RunFolder) -> list[Block]:
               ("largest |ground acceleration| at output samples [m/s²]",
                float(np.abs(ag).max()) if ag.size else None)]
     rec = r.toml.get("record", {})
-    for key, unit in (("duration", "s"), ("scale", "-"), ("pga_g", "g")):
+    for key, unit in (("duration", "s"), ("scale", "-"), ("pga_g", "g"), ("second", "-"),
+                      ("second_file", "-"), ("incidence", "degrees")):
         if isinstance(rec, dict) and key in rec:
             items.append((f"record.{key} in model.toml [{unit}]", rec[key]))
     out: list[Block] = [kv_table(items)]
@@ -120,7 +127,13 @@ def record_section(r: RunFolder) -> list[Block]:
 
         fig = MplFigure(figsize=(10, 2.4))
         ax = fig.subplots()
-        ax.plot(t, ag, color="0.2", lw=0.6)
+        if ag.ndim == 2 and ag.shape[1] > 1:  # components along the site axes
+            names = ["x", "y"] if ag.shape[1] == 2 else [str(g + 1) for g in range(ag.shape[1])]
+            for g, name in enumerate(names):
+                ax.plot(t, ag[:, g], color=f"C{g}", lw=0.6, label=name)
+            ax.legend(loc="upper right", fontsize=8, ncols=len(names), frameon=False)
+        else:
+            ax.plot(t, ag, color="0.2", lw=0.6)
         ax.set_xlabel("time [s]")
         ax.set_ylabel("ground acceleration [m/s²]")
         ax.grid(True, alpha=0.3)

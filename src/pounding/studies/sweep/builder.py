@@ -126,8 +126,11 @@ class CaseBuilder:
             return Built(model, built.motion, built.solver)
         record_cfg, motion = record
         if motion is None:
+            from pounding.structure.plan import PlanMatrixBuilding
+
+            in_plan = any(isinstance(b, PlanMatrixBuilding) for b in model.buildings)
             with prefixed("record"):
-                motion = record_cfg.load()
+                motion = record_cfg.load(components=in_plan)
         return Built(model, motion, dict(solver))
 
 
