@@ -353,16 +353,6 @@ class MatrixBuilding:
         return None
 
     @property
-    def yielding(self) -> tuple[int, ...]:
-        """No yielding storeys (empty): a matrix building is linear."""
-        return ()
-
-    def linear_stiffness_matrix(self) -> NDArray[np.float64]:
-        """The whole stiffness matrix [N/m] (every storey linear; cf.
-        :meth:`ShearBuilding.linear_stiffness_matrix`)."""
-        return self.stiffness_matrix()
-
-    @property
     def is_lumped(self) -> bool:
         """True if ``M`` is diagonal (to :data:`DIAGONAL_RTOL`)."""
         return _is_diagonal(self.M)[0]
