@@ -34,7 +34,7 @@ about the vertical axis):
   Rayleigh damping (as in :mod:`opensees_models`).
 * **Contacts.** Between neighbours b and b + 1, at every pair of floors at the same
   elevation (within 1e-6 m), one ``zeroLength`` along x (``-dir 1``) at each site y of
-  :func:`pounding.structure.plan.facing_points` (the ends of the stretch over which the
+  :func:`pounding.structure.plan_row.facing_points` (the ends of the stretch over which the
   façades face each other): from a node on building b's façade ``x = width`` to a node on
   building b + 1's façade ``x = 0``, each tied to its floor by ``rigidLink('beam')``. The
   two nodes are coincident, both at the left façade's site X: only a point's y enters its
@@ -81,7 +81,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import opensees_models as osm  # noqa: E402
 from _environment import load  # noqa: E402
 from pounding.structure.damping import RayleighDamping  # noqa: E402
-from pounding.structure.plan import LateralElement, PlanBuilding, facing_points  # noqa: E402
+from pounding.structure.plan import LateralElement, PlanBuilding  # noqa: E402
+from pounding.structure.plan_row import facing_points  # noqa: E402
 
 LAWS = ("kelvin-voigt",)
 """The contact laws offered, in pounding's names: Kelvin–Voigt as OpenSees'

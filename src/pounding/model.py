@@ -20,7 +20,7 @@ with lumped masses: each of its floor DOFs is a lateral translation along the ro
 elevation, and contacts are found from those elevations exactly as for the floors of a
 shear building (:func:`pounding.structure.assembly.floor_dofs`). A building in plan
 (:class:`~pounding.structure.plan.PlanBuilding`: rigid floors with ``u_x``, ``u_y``, ``θ``)
-stands in the row as its :class:`~pounding.structure.plan.PlanMatrixBuilding`: its floors
+stands in the row as its :class:`~pounding.structure.plan_row.PlanMatrixBuilding`: its floors
 meet a neighbour's at the ends of the stretch where their façades face each other, the
 floors' rotations in the contacts' kinematics, and the model's influence matrix has two
 columns, the ground's x and y components (run it under a
@@ -52,7 +52,8 @@ from pounding.devices import Bumper, Link
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ShearBuilding
-from pounding.structure.plan import PlanBuilding, PlanMatrixBuilding, plan_contact_points
+from pounding.structure.plan import PlanBuilding
+from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
 from pounding.structure.assembly import (
     BUILDING_TYPES,
     AssembledSystem,
@@ -265,7 +266,7 @@ class PoundingModel:
                             start: int) -> list[Contact]:
         """The contacts of pair ``p`` where a building is in plan: at the ends of the
         stretch where the façades face each other, with the floors' rotations in the
-        kinematics (:func:`pounding.structure.plan.plan_contact_points`)."""
+        kinematics (:func:`pounding.structure.plan_row.plan_contact_points`)."""
         out: list[Contact] = []
         for z, i, wi, j, wj, y in plan_contact_points(a, b, self.level_tolerance):
             points = []

@@ -81,7 +81,7 @@ def floor_rotations(r: Result) -> list[tuple[int, int, str, float, float]]:
     label, peak |θ| [rad], time [s])``, building and floor 0-based, ``label`` the floor's θ
     DOF as ``B2F3θ`` (building 2, floor 3); located inside solver steps as the other peaks
     (:attr:`pounding.result.Result.peak_displacement` of the θ DOFs)."""
-    from pounding.structure.plan import PlanMatrixBuilding
+    from pounding.structure.plan_row import PlanMatrixBuilding
 
     out = []
     peak, time = r.peak_displacement, r.peak_displacement_time

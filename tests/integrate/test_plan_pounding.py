@@ -15,7 +15,8 @@ from pounding.ground_motion.incidence import at_incidence
 from pounding.integrate.reference import simulate_reference
 from pounding.model import ContactSpec
 from pounding.structure import RayleighDamping, ShearBuilding
-from pounding.structure.plan import LateralElement, PlanBuilding, PlanMatrixBuilding
+from pounding.structure.plan import LateralElement, PlanBuilding
+from pounding.structure.plan_row import PlanMatrixBuilding
 
 RAYLEIGH = RayleighDamping.from_periods(0.5, 0.1)
 """The same Rayleigh coefficients whatever the modes (the plan building has more of them)."""
@@ -170,7 +171,7 @@ def test_a_plan_building_beside_a_planar_one_meets_it_at_both_ends_of_its_facade
 
 
 def test_the_history_of_a_named_point_is_its_floors_rigid_motion() -> None:
-    from pounding.structure.plan import point_history
+    from pounding.structure.plan_row import point_history
 
     left, right, gap = torsional_pair()
     model = PoundingModel([left, right], gaps=[gap],

@@ -11,7 +11,8 @@ import pytest
 
 from pounding.structure import ShearBuilding, shear_stiffness_matrix
 from pounding.structure import plan as plan_module
-from pounding.structure.plan import LateralElement, PlanBuilding, facing_points
+from pounding.structure.plan import LateralElement, PlanBuilding
+from pounding.structure.plan_row import facing_points
 
 
 def one_storey(kx_right: float = 1e8) -> PlanBuilding:

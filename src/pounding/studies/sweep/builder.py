@@ -126,7 +126,7 @@ class CaseBuilder:
             return Built(model, built.motion, built.solver)
         record_cfg, motion = record
         if motion is None:
-            from pounding.structure.plan import PlanMatrixBuilding
+            from pounding.structure.plan_row import PlanMatrixBuilding
 
             in_plan = any(isinstance(b, PlanMatrixBuilding) for b in model.buildings)
             with prefixed("record"):

@@ -1,0 +1,166 @@
+"""A building in plan in a row of buildings: the matrix building it stands in the row as, the
+points where its façades meet a neighbour's, and the histories of named points.
+
+A :class:`~pounding.structure.plan.PlanBuilding` describes rigid floors in plan; in a
+:class:`~pounding.model.PoundingModel` it is its :class:`PlanMatrixBuilding`, a matrix
+building whose DOFs are ``F1x, F1y, F1θ, …`` and whose floors are the ``u_x`` DOFs, so that
+every part of the engine and its outputs takes it as one. Neighbours stand along x; two
+floors at the same elevation meet at the ends of the stretch where their façades face each
+other (:func:`facing_points`): between two straight edges of rigid floors the gap is linear
+along that stretch, so the first touch is at one of its ends. The penetration at such a point
+is a linear combination of the floors' DOFs (:func:`plan_contact_points`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from pounding.structure.matrices import MatrixBuilding
+from pounding.structure.plan import PlanBuilding
+
+__all__ = ["PlanMatrixBuilding", "facing_points", "plan_contact_points", "point_history"]
+
+
+def facing_points(left: PlanBuilding, right: PlanBuilding) -> list[float]:
+    """Site y [m] of the contact points between the right façade (``x = width``) of
+    ``left`` and the left façade (``x = 0``) of ``right``: the two ends of the stretch over
+    which they face each other (one point if it is a single point; none if they do not face
+    each other). Between two straight edges of rigid floors the gap is linear along that
+    stretch, so the first touch is at one of its ends."""
+    lo = max(left.site_y, right.site_y)
+    hi = min(left.site_y + left.depth, right.site_y + right.depth)
+    if hi < lo:
+        return []
+    if hi == lo:
+        return [lo]
+    return [lo, hi]
+
+
+@dataclass(frozen=True, eq=False)
+class PlanMatrixBuilding(MatrixBuilding):
+    """A :class:`PlanBuilding` as it stands in a row of buildings: a matrix building (so that
+    every part of the engine and its outputs takes it as one: DOF labels ``F1x, F1y, F1θ``,
+    the ``u_x`` DOFs its floors) that keeps its plan (:attr:`plan`) for the influence matrix
+    of two ground components and the kinematics of its façade points. Made by
+    :meth:`PlanBuilding.as_matrix_building`; :class:`~pounding.model.PoundingModel` makes it
+    of every PlanBuilding it is given."""
+
+    plan: PlanBuilding | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.plan, PlanBuilding):
+            raise ValueError(f"plan must be a PlanBuilding (got {self.plan!r})")
+        super().__post_init__()
+
+    def influence_matrix(self) -> NDArray[np.float64]:
+        """``R`` (3n × 2) of the plan (:meth:`PlanBuilding.influence_matrix`)."""
+        return self.plan.influence_matrix()  # type: ignore[union-attr]
+
+    def floor_of(self, dof: int) -> int:
+        """The 0-based floor of a DOF."""
+        return int(dof) // 3
+
+    def point_displacement(self, u: ArrayLike, floor: int, x: float, y: float,
+                           direction: str | float = "x") -> NDArray[np.float64]:
+        """Displacement [m] of a point ``(x, y)`` (plan coordinates) of ``floor`` (0-based)
+        from this building's DOF histories ``u[..., 3n]``
+        (:meth:`PlanBuilding.point_displacement`)."""
+        return self.plan.point_displacement(u, floor, x, y, direction)  # type: ignore[union-attr]
+
+
+def _plan_of(building: Any) -> PlanBuilding | None:
+    return building.plan if isinstance(building, PlanMatrixBuilding) else None
+
+
+def plan_contact_points(a: Any, b: Any, tol: float = 1e-6
+                        ) -> list[tuple[float, int, list[tuple[int, float]], int,
+                                        list[tuple[int, float]], float]]:
+    """Where two neighbours in a row meet when one or both are buildings in plan.
+
+    Floors at the same elevation (within ``tol`` [m]) meet at the ends of the stretch over
+    which their façades face each other (:func:`facing_points`): the right façade
+    (``x = width``) of the left building, the left façade (``x = 0``) of the right one. A
+    planar neighbour (a shear or matrix building) has no plan: its floor faces the whole
+    façade of the building in plan. No floor-to-column contacts: floors at different levels
+    do not meet here.
+
+    Returns
+    -------
+    list of (elevation, i, weights_i, j, weights_j, y)
+        ``i``, ``j``: the floor (``u_x``) DOFs of ``a`` and ``b``; ``weights``: the point's
+        ``(DOF, weight)`` pairs of its displacement along x (:meth:`PlanBuilding.point_weights`;
+        ``[(i, 1.0)]`` for a planar floor); ``y``: site y of the point [m]. Sorted by
+        elevation, then y.
+    """
+    pa, pb = _plan_of(a), _plan_of(b)
+    if pa is None and pb is None:
+        raise ValueError("plan_contact_points: neither building is in plan")
+    fa, fb = _floor_dofs(a), _floor_dofs(b)
+    za, zb = np.asarray(a.floor_levels)[fa], np.asarray(b.floor_levels)[fb]
+    if pa is not None and pb is not None:
+        ys = facing_points(pa, pb)
+    else:
+        p = pa if pa is not None else pb
+        ys = [p.site_y, p.site_y + p.depth]  # type: ignore[union-attr]
+    rows = []
+    for ka, z in enumerate(za):
+        kb = int(np.argmin(np.abs(zb - z)))
+        if abs(zb[kb] - z) > tol or int(np.argmin(np.abs(za - zb[kb]))) != ka:
+            continue
+        i, j = int(fa[ka]), int(fb[kb])
+        for y in ys:
+            wi = ([(i, 1.0)] if pa is None
+                  else pa.point_weights(i // 3, pa.width, y - pa.site_y, "x"))
+            wj = [(j, 1.0)] if pb is None else pb.point_weights(j // 3, 0.0, y - pb.site_y, "x")
+            rows.append((float(z), i, wi, j, wj, float(y)))
+    rows.sort(key=lambda r: (r[0], r[5]))
+    return rows
+
+
+def _floor_dofs(building: Any) -> NDArray[np.int64]:
+    if isinstance(building, MatrixBuilding):
+        return building.floor_dofs
+    return np.arange(building.n, dtype=np.int64)
+
+
+def point_history(result: Any, building: int, floor: int, x: float, y: float,
+                  direction: str | float = "x") -> NDArray[np.float64]:
+    """Displacement history [m] of a named point of a floor in plan, relative to the ground.
+
+    Parameters
+    ----------
+    result : pounding.result.Result
+        A run of a model with buildings in plan.
+    building : int
+        0-based index of the building in the row (a :class:`PlanBuilding`).
+    floor : int
+        0-based floor (0 = floor 1).
+    x, y : float
+        The point in the building's plan coordinates [m] (a corner: ``(width, 0)``, …).
+    direction : {"x", "y"} or float
+        Along x, y or an angle [degrees] from x.
+
+    Returns
+    -------
+    ndarray (nt,)
+        ``c (u_x − (y − y_c) θ) + s (u_y + (x − x_c) θ)`` at every output time
+        (:meth:`PlanBuilding.point_weights`).
+    """
+    model = result.model
+    if not 0 <= building < len(model.buildings):
+        raise ValueError(f"building must be in [0, {len(model.buildings) - 1}] "
+                         f"(got {building!r})")
+    b = model.buildings[building]
+    if not isinstance(b, PlanMatrixBuilding):
+        raise ValueError(f"building {building} ({b.name!r}) is not in plan: its DOFs are "
+                         "translations along the row; read result.displacement")
+    if not 0 <= floor < b.plan.n_floors:  # type: ignore[union-attr]
+        raise ValueError(f"floor must be in [0, {b.plan.n_floors - 1}] "  # type: ignore[union-attr]
+                         f"(got {floor!r})")
+    off = int(model.system.offsets[building])
+    u = np.asarray(result.displacement)[:, off: off + b.n]
+    return b.point_displacement(u, floor, x, y, direction)
