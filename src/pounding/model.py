@@ -272,10 +272,9 @@ class PoundingModel:
             points = []
             for k, (bl, dof, weights) in enumerate(((a, i, wi), (b, j, wj))):
                 twist = next(((d, w) for d, w in weights if d != dof), None)
-                floor = (dof // 3 if isinstance(bl, PlanMatrixBuilding)
-                         else int(np.flatnonzero(floor_dofs(bl) == dof)[0]))
-                name = (f"B{p + k + 1}F{floor + 1}@y={y:g}" if isinstance(bl, PlanMatrixBuilding)
-                        else "")
+                # a floor in plan is named by its floor number (its u_x DOF is 3 (floor − 1))
+                name = (f"B{p + k + 1}F{dof // 3 + 1}@y={y:g}"
+                        if isinstance(bl, PlanMatrixBuilding) else "")
                 points.append(ContactPoint(p + k, dof, 1.0, int(floor_below(bl)[dof]),
                                            twist=twist, name=name))
             left, right = points

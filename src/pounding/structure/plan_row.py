@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.structure.assembly import shared_levels
 from pounding.structure.matrices import MatrixBuilding
 from pounding.structure.plan import PlanBuilding
 
@@ -60,10 +61,6 @@ class PlanMatrixBuilding(MatrixBuilding):
         """``R`` (3n × 2) of the plan (:meth:`PlanBuilding.influence_matrix`)."""
         return self.plan.influence_matrix()  # type: ignore[union-attr]
 
-    def floor_of(self, dof: int) -> int:
-        """The 0-based floor of a DOF."""
-        return int(dof) // 3
-
     def point_displacement(self, u: ArrayLike, floor: int, x: float, y: float,
                            direction: str | float = "x") -> NDArray[np.float64]:
         """Displacement [m] of a point ``(x, y)`` (plan coordinates) of ``floor`` (0-based)
@@ -99,32 +96,21 @@ def plan_contact_points(a: Any, b: Any, tol: float = 1e-6
     pa, pb = _plan_of(a), _plan_of(b)
     if pa is None and pb is None:
         raise ValueError("plan_contact_points: neither building is in plan")
-    fa, fb = _floor_dofs(a), _floor_dofs(b)
-    za, zb = np.asarray(a.floor_levels)[fa], np.asarray(b.floor_levels)[fb]
     if pa is not None and pb is not None:
         ys = facing_points(pa, pb)
     else:
         p = pa if pa is not None else pb
         ys = [p.site_y, p.site_y + p.depth]  # type: ignore[union-attr]
     rows = []
-    for ka, z in enumerate(za):
-        kb = int(np.argmin(np.abs(zb - z)))
-        if abs(zb[kb] - z) > tol or int(np.argmin(np.abs(za - zb[kb]))) != ka:
-            continue
-        i, j = int(fa[ka]), int(fb[kb])
+    levels = np.asarray(a.floor_levels)
+    for i, j in shared_levels(a, b, tol):  # floors at the same elevation, u_x DOFs
         for y in ys:
             wi = ([(i, 1.0)] if pa is None
                   else pa.point_weights(i // 3, pa.width, y - pa.site_y, "x"))
             wj = [(j, 1.0)] if pb is None else pb.point_weights(j // 3, 0.0, y - pb.site_y, "x")
-            rows.append((float(z), i, wi, j, wj, float(y)))
+            rows.append((float(levels[i]), i, wi, j, wj, float(y)))
     rows.sort(key=lambda r: (r[0], r[5]))
     return rows
-
-
-def _floor_dofs(building: Any) -> NDArray[np.int64]:
-    if isinstance(building, MatrixBuilding):
-        return building.floor_dofs
-    return np.arange(building.n, dtype=np.int64)
 
 
 def point_history(result: Any, building: int, floor: int, x: float, y: float,
