@@ -161,14 +161,14 @@ def audit_cmd(
 def collide_cmd(
     law: LawName,
     e: Annotated[float | None, typer.Option("--e", help="Target coefficient of restitution.")] = None,
-    formula: Annotated[str | None, typer.Option(help="Damping formula for e (default: the law's own).")] = None,
+    formula: Annotated[str | None, typer.Option(help="Damping formula for e (default: the one exact for the law, so the impact achieves e; or a published one by name, as `pounding zeta` lists).")] = None,
     m1: Mass1 = 2.0e5,
     m2: Mass2 = 3.0e5,
     v0: ImpactVelocity = 0.5,
     k_h: HertzStiffness = 2.75e9,
     k: LinearStiffness = 9.3e8,
     tension: Tension = False,
-    delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the elastic Hertz value.")] = None,
+    delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the penetration this impact reaches (exact formula) or the elastic Hertz one (--formula muthukumar).")] = None,
 ) -> None:
     """Simulate one impact of two free masses and report what the law really does.
 
@@ -178,20 +178,31 @@ def collide_cmd(
 
       pounding collide kelvin-voigt --e 0.5 --m1 1e5 --m2 1e5 --tension
     """
-    from pounding.contact.calibration import hertz_delta_max
     from pounding.contact.base import m_effective
+    from pounding.contact.bilinear import exact_delta_m
+    from pounding.contact.calibration import hertz_delta_max
     from pounding.contact.collision import simulate_collision
-    from pounding.contact.factory import make_law
+    from pounding.contact.factory import LAW_NAMES, is_exact, make_law, resolve_formula
+    from pounding.validation import choice
 
-    if law.strip().lower() == "bilinear-impact" and delta_m is None:
-        delta_m = hertz_delta_max(k_h, m_effective(m1, m2), v0)
-    obj = make_law(law, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
+    name = choice("law", law, LAW_NAMES)
+    if name == "bilinear-impact" and delta_m is None and e is not None:
+        # the penetration the element reaches in this impact (exact sizing), or Muthukumar's
+        # elastic Hertz one
+        delta_m = (hertz_delta_max(k_h, m_effective(m1, m2), v0)
+                   if resolve_formula(name, formula) == "muthukumar"
+                   else exact_delta_m(k_h, e, m_effective(m1, m2), v0))
+    obj = make_law(name, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
                    tension=tension, delta_m=delta_m)
+    used = resolve_formula(name, formula, tension) if e is not None else None
     r = simulate_collision(obj, m1, m2, v0)
     table = Table(title=obj.readable())
     _col(table, "quantity")
     _col(table, "value", justify="right")
     rows = [("target e", f"{e:.6g}" if e is not None else "-"),
+            ("damping formula for e", "-" if used is None else used + (
+                " (exact for this law)" if is_exact(name, formula, tension)
+                else " (published; not exact for this law)")),
             ("achieved e", f"{r.e:.6f}" if r.separated else "0 (stuck: the bodies never "
                                                              "separate)"),
             ("contact duration [s]", f"{r.duration:.6e}" if r.separated else "stuck"),
