@@ -249,12 +249,11 @@ def _zeta_nonlinear_viscoelastic_exact(e: float) -> float:
     """:func:`zeta_nonlinear_viscoelastic_exact` of one ``e`` (not remembered)."""
     from scipy.optimize import brentq
 
-    from pounding.contact.restitution import zeta_jankowski
-
     if e >= 1.0:
         return 0.0
-    # Jankowski's eq 19 is within a few per cent of it: bracket about it
-    guess = float(zeta_jankowski(e))
+    # Jankowski's eq 19 (restitution.zeta_jankowski) is within a few per cent of it:
+    # bracket about it
+    guess = 4.5 * math.sqrt(5.0) * (1.0 - e * e) / (e * (e * (9.0 * math.pi - 16.0) + 16.0))
     lo, hi = 0.5 * guess, 2.0 * guess
     while restitution_nonlinear_viscoelastic(hi) > e:
         lo, hi = hi, hi * 2.0
