@@ -287,7 +287,9 @@ def test_cli_prints_laws_and_fits_with_units(tmp_path, capsys):
 
     assert main(["collide", "nonlinear-viscoelastic", "--e", "0.65"]) == 0
     out = " ".join(capsys.readouterr().out.split())  # (rich wraps the title)
-    assert "nonlinear viscoelastic (Jankowski): k_h = 2.75e9 N/m^1.5, ζ = 0.373" in out
+    # ζ = 0.368: the exact ζ of e = 0.65, the default since issue 24 (test_default_restitution
+    # checks by an independent integration that it gives 0.65; Jankowski's eq 19 gave 0.373)
+    assert "nonlinear viscoelastic (Jankowski): k_h = 2.75e9 N/m^1.5, ζ = 0.368" in out
     assert "NonlinearViscoelastic(" not in out and "k_h=" not in out
     assert main(["calibrate", "kelvin-voigt", "--e", "0.6"]) == 0
     out = capsys.readouterr().out

@@ -15,7 +15,9 @@ from pounding.cli.app import app, console
 
 SHORT = {"anagnostopoulos": "ζ Anag.", "schwager-poschel": "ζ S&P", "jankowski": "ζ Jank.(19)", "mahmoud": "ζ Mahm.(20)",
          "naderpour": "ζ eq 39", "hunt-crossley": "χ H-C", "lankarani-nikravesh": "χ L-N",
-         "flores": "χ Flores", "gonthier": "χ Gonth."}
+         "flores": "χ Flores", "gonthier": "χ Gonth.",
+         "exact-modified-kelvin-voigt": "ζ mod. K-V", "exact-hunt-crossley": "χ Hunt-Crossley",
+         "exact-nonlinear-viscoelastic": "ζ nonlin. visc."}
 """Column titles of `pounding zeta` (full names and sources: `pounding.contact.FORMULAS`)."""
 
 E_HELP = "Coefficients of restitution, comma-separated (default: the seed's Table 1, 0.1 ... 0.9)."
@@ -65,7 +67,7 @@ def zeta_cmd(
 
       pounding zeta --e 0.3,0.5,0.7 --plot fig4.png
     """
-    from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
+    from pounding.contact.restitution import FORMULAS, PUBLISHED, TABLE1_E, TABLE1_ZETA
     from pounding.io import check_output_file
     from pounding.validation import restitution
 
@@ -76,18 +78,28 @@ def zeta_cmd(
                   box=box.SIMPLE_HEAD)
     _col(table, "e", justify="right")
     _col(table, "Table 1", justify="right", no_wrap=True)
-    for f in FORMULAS.values():
+    published = [FORMULAS[key] for key in PUBLISHED]
+    for f in published:
         _col(table, SHORT[f.key], justify="right", no_wrap=True)
     table1 = dict(zip(TABLE1_E, TABLE1_ZETA))
     for x in values:
         printed = next((f"{v:.2f}" for k, v in table1.items() if abs(k - x) < 1e-12), "")
-        table.add_row(f"{x:.3g}", printed, *(f"{float(f(x)):.4g}" for f in FORMULAS.values()))
+        table.add_row(f"{x:.3g}", printed, *(f"{float(f(x)):.4g}" for f in published))
     table.caption = ("Anag. = Anagnostopoulos 1988 (Kelvin-Voigt with tension); S&P = Schwager & "
                      "Pöschel 2007 (Kelvin-Voigt without tension, the default); Jank. = Jankowski 2006 (seed eq 19); Mahm. = "
                      "Mahmoud & Jankowski 2011 (seed eq 20); eq 39 = Naderpour et al. 2015; H-C = "
                      "Hunt & Crossley 1975; L-N = Lankarani & Nikravesh 1990 (Hertzdamp); Flores = "
                      "Ye et al. 2009 / Flores et al. 2011; Gonth. = Gonthier et al. 2004")
     console.print(table)
+    exact = [f for f in FORMULAS.values() if f.key not in PUBLISHED]
+    ex = Table(title="Exact damping for e: each law's own e inverted (the laws' defaults; "
+                     "Kelvin-Voigt's is S&P above)", box=box.SIMPLE_HEAD)
+    _col(ex, "e", justify="right")
+    for f in exact:
+        _col(ex, SHORT[f.key], justify="right", no_wrap=True)
+    for x in values:
+        ex.add_row(f"{x:.3g}", *(f"{float(f(x)):.4g}" for f in exact))
+    console.print(ex)
     console.print("ζ: damping ratio of the viscoelastic laws (c = 2ζ sqrt(k m_eff) or seed "
                   "eq 18); χ: factor of F = k δⁿ (1 + χ δ̇/v0). Table 1 = eq 39 as printed.")
     if plot is not None:
@@ -161,14 +173,14 @@ def audit_cmd(
 def collide_cmd(
     law: LawName,
     e: Annotated[float | None, typer.Option("--e", help="Target coefficient of restitution.")] = None,
-    formula: Annotated[str | None, typer.Option(help="Damping formula for e (default: the law's own).")] = None,
+    formula: Annotated[str | None, typer.Option(help="Damping formula for e (default: the one exact for the law, so the impact achieves e; or a published one by name, as `pounding zeta` lists).")] = None,
     m1: Mass1 = 2.0e5,
     m2: Mass2 = 3.0e5,
     v0: ImpactVelocity = 0.5,
     k_h: HertzStiffness = 2.75e9,
     k: LinearStiffness = 9.3e8,
     tension: Tension = False,
-    delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the elastic Hertz value.")] = None,
+    delta_m: Annotated[float | None, typer.Option("--delta-m", help="Bilinear: assumed max penetration (m); default the penetration this impact reaches (exact formula) or the elastic Hertz one (--formula muthukumar).")] = None,
 ) -> None:
     """Simulate one impact of two free masses and report what the law really does.
 
@@ -178,20 +190,31 @@ def collide_cmd(
 
       pounding collide kelvin-voigt --e 0.5 --m1 1e5 --m2 1e5 --tension
     """
-    from pounding.contact.calibration import hertz_delta_max
     from pounding.contact.base import m_effective
+    from pounding.contact.bilinear import exact_delta_m
+    from pounding.contact.calibration import hertz_delta_max
     from pounding.contact.collision import simulate_collision
-    from pounding.contact.factory import make_law
+    from pounding.contact.factory import LAW_NAMES, is_exact, make_law, resolve_formula
+    from pounding.validation import choice
 
-    if law.strip().lower() == "bilinear-impact" and delta_m is None:
-        delta_m = hertz_delta_max(k_h, m_effective(m1, m2), v0)
-    obj = make_law(law, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
+    name = choice("law", law, LAW_NAMES)
+    if name == "bilinear-impact" and delta_m is None and e is not None:
+        # the penetration the element reaches in this impact (exact sizing), or Muthukumar's
+        # elastic Hertz one
+        delta_m = (hertz_delta_max(k_h, m_effective(m1, m2), v0)
+                   if resolve_formula(name, formula) == "muthukumar"
+                   else exact_delta_m(k_h, e, m_effective(m1, m2), v0))
+    obj = make_law(name, k=k, k_h=k_h, e=e, formula=formula, m1=m1, m2=m2,
                    tension=tension, delta_m=delta_m)
+    used = resolve_formula(name, formula, tension) if e is not None else None
     r = simulate_collision(obj, m1, m2, v0)
     table = Table(title=obj.readable())
     _col(table, "quantity")
     _col(table, "value", justify="right")
     rows = [("target e", f"{e:.6g}" if e is not None else "-"),
+            ("damping formula for e", "-" if used is None else used + (
+                " (exact for this law)" if is_exact(name, formula, tension)
+                else " (published; not exact for this law)")),
             ("achieved e", f"{r.e:.6f}" if r.separated else "0 (stuck: the bodies never "
                                                              "separate)"),
             ("contact duration [s]", f"{r.duration:.6e}" if r.separated else "stuck"),

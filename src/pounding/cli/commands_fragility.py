@@ -50,6 +50,8 @@ def fragility_cmd(
     from pounding.studies.sweep import SweepInterrupted, SweepStopped
 
     plan = plan_study(study_file, out=out)
+    if plan.record_note:
+        console.print(Text(plan.record_note))
     bar, progress = _progress(f"fragility {plan.config.name}", len(plan.sweep.cases))
     try:
         with _sigterm_as_interrupt(), bar:

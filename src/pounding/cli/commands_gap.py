@@ -23,34 +23,68 @@ def _ratio_cell(value: float, reference: float) -> str:
     return f"{value:.4f} (-)"
 
 
-def _load_records(cfg: Any, files: list[Path], dt: float | None, units: str | None,
-                  unscaled: bool) -> tuple[list[Any], str]:
-    """The ground motions and a sentence saying how they were obtained."""
+def _read_file(f: Path, option: str, dt: float | None, units: str | None) -> Any:
     from pounding.ground_motion import read_record
 
+    if not f.is_file():
+        raise ValueError(f"{option}: {f}: " + ("is a directory, not a record file"
+                                               if f.is_dir() else "no such file"))
+    return read_record(f, dt=dt, units=units)
+
+
+def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | None,
+                  units: str | None, unscaled: bool) -> tuple[list[Any], str]:
+    """The ground motions and a sentence saying how they were obtained: for a model with
+    buildings in plan, each record's x and y site components (its second component, if
+    given, orthogonal to it; both turned to the model's ``[record] incidence``)."""
+    from pounding.ground_motion import GroundMotionComponents
+    from pounding.ground_motion.incidence import at_incidence
+
     rec = cfg.record
+    in_plan = cfg.in_plan
+    if seconds and not in_plan:
+        raise ValueError("--second: a second horizontal component is for a model with "
+                         "buildings in plan; these buildings are planar, shaken along the row")
+    if seconds and len(seconds) != len(files):
+        raise ValueError(f"--second: give one second component for each --records file "
+                         f"({len(files)}), in the same order (got {len(seconds)})")
     if not files:
-        motion = rec.load()
+        motion = rec.load(components=in_plan)
         how = ("record: [record] of the model file"
+               + (" (its two components, [record] second, at the incidence "
+                  f"{rec.incidence or 0.0:g}°)" if in_plan and rec.two_components else
+                  f" (one component, along the incidence {rec.incidence or 0.0:g}°)"
+                  if in_plan else "")
                + (f", trimmed to {rec.duration:g} s" if rec.duration is not None else "")
                + (f", scaled ×{rec.scale:g}" if rec.scale is not None else "")
                + (f", scaled to PGA {rec.pga_g:g} g" if rec.pga_g is not None else ""))
         return [motion], how
     motions = []
-    for f in files:
-        if not f.is_file():
-            raise ValueError(f"--records: {f}: " + ("is a directory, not a record file"
-                                                    if f.is_dir() else "no such file"))
-        gm = read_record(f, dt=dt, units=units)
+    for k, f in enumerate(files):
+        pair = [_read_file(f, "--records", dt, units)]
+        if seconds:
+            pair.append(_read_file(seconds[k], "--second", dt, units))
         if rec.duration is not None:
-            gm = gm.trimmed(rec.duration)
+            pair = [gm.trimmed(rec.duration) for gm in pair]
         if not unscaled:
+            # the second component by the first's factor, as the model file's record
+            factor = 1.0
             if rec.scale is not None:
-                gm = gm.scaled(rec.scale)
+                factor = rec.scale
             if rec.pga_g is not None:
-                gm = gm.scaled_to_pga(rec.pga_g)
-        motions.append(gm)
+                factor = pair[0].scaled(factor).scaled_to_pga(rec.pga_g).pga / pair[0].pga
+            pair = [gm.scaled(factor) for gm in pair]
+        if in_plan:
+            x, y = at_incidence(pair[0], pair[1] if len(pair) > 1 else None,
+                                rec.incidence or 0.0)
+            motions.append(GroundMotionComponents.of(x, y, name=x.name))
+        else:
+            motions.append(pair[0])
     steps = []
+    if in_plan:
+        steps.append(("each with its --second component" if seconds else
+                      "each one component alone")
+                     + f" at the incidence {rec.incidence or 0.0:g}° ([record] incidence)")
     if rec.duration is not None:
         steps.append(f"each trimmed to {rec.duration:g} s ([record] duration)")
     if unscaled or (rec.scale is None and rec.pga_g is None):
@@ -61,6 +95,18 @@ def _load_records(cfg: Any, files: list[Path], dt: float | None, units: str | No
     else:
         steps.append(f"each scaled to PGA {rec.pga_g:g} g ([record] pga_g of the model file)")
     return motions, "records: --records files, " + ", ".join(steps)
+
+
+def _floors(building: Any) -> str:
+    """``3 floors in plan``, ``5 storeys on isolators``, ``10 storey(s)``."""
+    from pounding.structure.isolation import SuperstructureDamping
+
+    plan = getattr(building, "plan", None)
+    if plan is not None:
+        return f"{plan.n_floors} floor(s) in plan"
+    if isinstance(getattr(building, "damping", None), SuperstructureDamping):
+        return f"{building.n - 1} storey(s) on isolators (floor 1: the base slab)"
+    return f"{building.n} storey(s)"
 
 
 @app.command("gap")
@@ -80,6 +126,11 @@ def gap_cmd(
         "--dt", help="Time step \\[s] for record files that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
         "--units", help="Acceleration unit for record files that do not state one.")] = None,
+    second: Annotated[list[Path] | None, typer.Option(
+        "--second", metavar="FILE", help="For a model with buildings in plan: the second "
+        "horizontal component of each --records file, in the same order (orthogonal to it; "
+        "both turned to the model's \\[record] incidence). Without it each file shakes "
+        "alone along the incidence.", show_default=False)] = None,
     unscaled: Annotated[bool, typer.Option(
         "--unscaled", help="Use the --records files as recorded: ignore the model file's "
                            "\\[record] scale / pga_g.")] = False,
@@ -100,9 +151,17 @@ def gap_cmd(
 ) -> None:
     """Critical separation gap per floor level by simulation, beside ABS, SRSS and DDC.
 
+    Buildings in plan: the gap at the two ends of the stretch where their façades face
+    each other, under the two ground components. A base-isolated building beside a moat
+    wall: the moat width it needs on each side.
+
     Examples:
 
       pounding gap examples/two_10_storey.toml
+
+      pounding gap examples/torsional_pair.toml
+
+      pounding gap examples/isolated_moat_wall.toml
 
       pounding gap model.toml A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
     """
@@ -121,14 +180,24 @@ def gap_cmd(
     model_path = model
     cfg = load_config(model_path)
     model, _, solver = cfg.build()
-    if len(model.buildings) < 2:
-        raise ValueError(f"{model_path}: a gap study needs at least two buildings "
-                         f"(got {len(model.buildings)})")
+    if len(model.buildings) < 2 and not model.walls:
+        raise ValueError(f"{model_path}: a gap study needs two or more buildings, or a "
+                         f"building beside a moat wall ([[wall]]) (got "
+                         f"{len(model.buildings)} building and no wall)")
+    if model.links:
+        raise ValueError(f"{model_path}: pounding gap simulates each building alone, and "
+                         f"the model's {len(model.links)} link(s) ([[device]]) tie them "
+                         "together; remove the links, or use pounding run at several gaps")
     spec = DesignSpectrum.from_file(spectrum) if spectrum is not None else None
+    if spec is not None and cfg.in_plan:
+        raise ValueError("--spectrum: the code rules from a design spectrum take each "
+                         "building's fundamental mode along the row, and a building in plan "
+                         "sways and twists in modes of its own; leave out --spectrum (the "
+                         "rules from the simulated peaks are in the table)")
     if spec is not None:  # fail before simulating if a fundamental period is off the table
         for bl in model.buildings:
             spec.sd(bl.fundamental_period)
-    motions, how = _load_records(cfg, files, dt, units, unscaled)
+    motions, how = _load_records(cfg, files, list(second or []), dt, units, unscaled)
     sim_duration = duration if duration is not None else solver.get("duration")
     with console.status(f"simulating {len(model.buildings)} buildings alone under "
                         f"{len(motions)} record(s) ..."):
@@ -141,13 +210,13 @@ def gap_cmd(
     head.add_column("quantity")
     head.add_column("value")
     for b, bl in enumerate(model.buildings):
-        head.add_row(f"B{b + 1} {bl.name}".strip(),
-                     f"{bl.n} storey(s), T1 = {study.period[b]:.4g} s, ζ1 = {study.zeta[b]:.3g}")
+        head.add_row(Text(f"B{b + 1} {bl.name}".strip()),
+                     f"{_floors(bl)}, T1 = {study.period[b]:.4g} s, ζ1 = {study.zeta[b]:.3g}")
     for p, rho in enumerate(study.rho):
         head.add_row(f"ρ B{p + 1}-B{p + 2}", f"{rho:.4f} (CQC, fundamental modes)")
     for i, m in enumerate(motions):
-        head.add_row(f"R{i + 1}", f"{m.name}: PGA {m.pga_g:.3f} g, simulated "
-                                        f"{study.durations[i]:g} s")
+        head.add_row(f"R{i + 1}", Text(f"{m.name}: PGA {m.pga_g:.3f} g, simulated "
+                                        f"{study.durations[i]:g} s"))
     head.add_row("output step", f"{study.dt:g} s (peaks refined between samples)")
     console.print(head)
     console.print(Text(how))
@@ -156,6 +225,9 @@ def gap_cmd(
     table = Table(title=Text(f"{model.name}: critical separation gap [m] by simulation and code rules", style="italic"))
     table.add_column("pair")
     table.add_column(_h("level [m]"), justify="right")
+    plan_points = any("@y=" in label for label in study.labels)
+    if plan_points:
+        table.add_column(_h("contact"))
     for i, name in enumerate(names):
         table.add_column(_h(f"R{i + 1}"), justify="right")
     table.add_column("mean", justify="right")
@@ -165,12 +237,18 @@ def gap_cmd(
         table.add_column(_h(rule), justify="right", no_wrap=True)
     mean, top = study.mean_critical, study.max_critical
     for k in range(study.n_levels):
-        table.add_row(f"B{study.pair[k] + 1}-B{study.pair[k] + 2}", f"{study.elevation[k]:g}",
+        table.add_row(Text(study.gap_names[k]), f"{study.elevation[k]:g}",
+                      *([Text(study.labels[k])] if plan_points else []),
                       *(f"{study.critical[i, k]:.4f}" for i in range(len(names))),
                       f"{mean[k]:.4f}", f"{top[k]:.4f}",
                       *(_ratio_cell(float(v[k]), float(top[k])) for v in rules.values()))
     table.caption = Text("R1, R2, ...: critical gap = max over time of u_left − u_right from each building "
-                     "simulated alone (no contact), 0 if never positive. ABS = u1 + u2, SRSS = "
+                     "simulated alone (no contact), 0 if never positive"
+                     + ("; in plan, u of the contact point along x (the floor's sway and "
+                        "twist)" if plan_points else "")
+                     + ("; beside a moat wall, the building's largest displacement toward "
+                        "the wall (the moat width it needs)" if model.walls else "")
+                     + ". ABS = u1 + u2, SRSS = "
                      "sqrt(u1² + u2²), DDC = sqrt(u1² + u2² − 2ρu1u2), with u1, u2 the mean over "
                      "records of each building's simulated peak |u| at that level; (×r) = rule / "
                      "max simulated.")
@@ -186,7 +264,7 @@ def gap_cmd(
         for rule in spec_rules:
             st.add_column(_h(rule), justify="right", no_wrap=True)
         for k in range(study.n_levels):
-            st.add_row(f"B{study.pair[k] + 1}-B{study.pair[k] + 2}", f"{study.elevation[k]:g}",
+            st.add_row(Text(study.gap_names[k]), f"{study.elevation[k]:g}",
                        f"{spec_peaks[0][k]:.4f}", f"{spec_peaks[1][k]:.4f}",
                        *(_ratio_cell(float(v[k]), float(top[k])) for v in spec_rules.values()))
         st.caption = Text("Sd(T1) [m]: " + ", ".join(
@@ -194,10 +272,17 @@ def gap_cmd(
             for b in range(len(model.buildings))) + "; (×r) = rule / max simulated")
         console.print(st)
 
-    gov = study.governing()
-    console.print("governing critical gap per pair (max over levels and records): "
-                  + ", ".join(f"B{p + 1}-B{p + 2} {g:.4f} m" for p, g in enumerate(gov)),
-                  highlight=False)
+    gov = study.governing_gaps()
+    between = {f"B{p + 1}-B{p + 2}" for p in range(len(model.buildings) - 1)}
+    if between:
+        console.print(Text("governing critical gap per pair (max over levels and records): "
+                           + ", ".join(f"{name} {g:.4f} m" for name, g in gov.items()
+                                       if name in between)))
+    if model.walls:
+        console.print(Text("moat width needed (the building's largest displacement toward "
+                            "each wall, max over records): " + ", ".join(
+                                f"{name} {g:.4f} m" for name, g in gov.items()
+                                if name not in between)))
     if csv is not None:
         from pounding.io import write_text
 

@@ -20,7 +20,7 @@ LAW_FIELDS: dict[str, frozenset[str]] = {
     "hertzdamp": frozenset({"k_h", "e", "formula", "chi", "n"}),
     "nonlinear-viscoelastic": frozenset({"k_h", "e", "formula", "zeta"}),
     "naderpour": frozenset({"k_h", "e", "formula", "zeta"}),
-    "bilinear-impact": frozenset({"k_h", "e", "delta_m", "n", "a"}),
+    "bilinear-impact": frozenset({"k_h", "e", "formula", "delta_m", "n", "a"}),
 }
 """The ``[contact]`` keys each law reads (:func:`pounding.contact.factory.make_law`); giving
 another is an error rather than being silently ignored."""

@@ -25,13 +25,16 @@ from pounding.contact.collision import simulate_collision
 from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
 from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
 from pounding.contact.exact_restitution import (  # noqa: F401  (the exact e's, re-exported)
+    chi_hunt_crossley_exact,
     restitution_hunt_crossley,
     restitution_kelvin_voigt_clipped,
     restitution_modified_kelvin_voigt,
     restitution_nonlinear_viscoelastic,
     zeta_kelvin_voigt_clipped,
+    zeta_modified_kelvin_voigt_exact,
+    zeta_nonlinear_viscoelastic_exact,
 )
-from pounding.contact.restitution import zeta_anagnostopoulos, zeta_jankowski
+from pounding.contact.restitution import zeta_anagnostopoulos
 from pounding.validation import choice, positive, restitution
 
 
@@ -43,6 +46,30 @@ def hertz_delta_max(k_h: float, m_eff: float, v0: float, n: float = 1.5) -> floa
     """
     return ((n + 1.0) * positive("m_eff", m_eff) * positive("v0", v0) ** 2
             / (2.0 * positive("k_h", k_h))) ** (1.0 / (n + 1.0))
+
+
+def restitution_of(law: ContactLaw, m1: float, m2: float) -> float | None:
+    """The ``e`` that ``law`` achieves in an impact of two free bodies of masses ``m1``,
+    ``m2`` [kg] (any impact velocity), from its exact ``e`` of the damping parameter
+    (:mod:`pounding.contact.exact_restitution`); 1 for the elastic laws; None for the
+    bilinear element, whose ``e`` depends on the impact velocity. 0 where the bodies never
+    separate (Kelvin–Voigt with tension and ζ ≥ 1)."""
+    if isinstance(law, (LinearSpring, Hertz)):
+        return 1.0
+    if isinstance(law, HuntCrossley):
+        return float(restitution_hunt_crossley(law.chi))
+    if isinstance(law, NonlinearViscoelastic):
+        return restitution_nonlinear_viscoelastic(law.zeta)
+    if isinstance(law, (KelvinVoigt, ModifiedKelvinVoigt)):
+        zeta = law.c / (2.0 * np.sqrt(law.k * m_effective(m1, m2)))
+        if isinstance(law, ModifiedKelvinVoigt):
+            return float(restitution_modified_kelvin_voigt(zeta))
+        if not law.tension:
+            return float(restitution_kelvin_voigt_clipped(zeta))
+        # with tension: the damped half period (Anagnostopoulos 1988); overdamped never
+        # returns to δ = 0
+        return float(np.exp(-np.pi * zeta / np.sqrt(1.0 - zeta**2))) if zeta < 1.0 else 0.0
+    return None
 
 
 # --------------------------------------------------------------------------- calibration
@@ -137,33 +164,17 @@ def calibrate(law: ContactLaw, target_e: float, m1: float, m2: float, v0: float 
         zeta = float(zeta_anagnostopoulos(e))
         value, method = 2.0 * zeta * np.sqrt(law.k * m_eff), "closed form"
     elif isinstance(law, ModifiedKelvinVoigt):
-        zeta = brentq(lambda z: restitution_modified_kelvin_voigt(z) - e, 0.0, 1e6, xtol=1e-15)
+        zeta = float(zeta_modified_kelvin_voigt_exact(e))
         value, method = 2.0 * zeta * np.sqrt(law.k * m_eff), "closed form"
     elif isinstance(law, KelvinVoigt):
         zeta = float(zeta_kelvin_voigt_clipped(e))
         value, method = 2.0 * zeta * np.sqrt(law.k * m_eff), "closed form"
     elif isinstance(law, HuntCrossley):
-        # e falls from 1 at χ = 0; χ = 3(1 − e²)/4 (the small-dissipation limit) is within a
-        # factor of 3 of it: bracket there, then Brent to round-off
-        guess = max(0.75 * (1.0 - e * e), 1e-300)
-        hi = 4.0 * guess
-        while restitution_hunt_crossley(hi) > e:
-            hi *= 4.0
-        value = brentq(lambda c: restitution_hunt_crossley(c) - e, 0.0, hi, xtol=1e-300,
-                       rtol=8.9e-16, maxiter=200)
-        method = "closed form"
+        value, method = float(chi_hunt_crossley_exact(e)), "closed form"
     elif isinstance(law, NonlinearViscoelastic):
         # e depends on ζ alone (restitution_nonlinear_viscoelastic): Brent's method on that
-        # one-dimensional approach, bracketed about Jankowski's eq 19, which is within a few
-        # per cent of it
-        guess = float(zeta_jankowski(e))
-        lo, hi = 0.5 * guess, 2.0 * guess
-        while restitution_nonlinear_viscoelastic(hi) > e:
-            lo, hi = hi, hi * 2.0
-        while lo > 0.0 and restitution_nonlinear_viscoelastic(lo) < e:
-            lo, hi = 0.0 if lo < 1e-12 else lo / 4.0, lo
-        value = brentq(lambda z: restitution_nonlinear_viscoelastic(z) - e, lo, hi,
-                       xtol=1e-14, rtol=1e-13, maxiter=100)
+        # one-dimensional approach
+        value = float(zeta_nonlinear_viscoelastic_exact(e))
         method = "approach integrated alone"
     else:
         scale = {"c": 2.0 * np.sqrt(getattr(law, "k", 1.0) * m_eff)}.get(law.damping_field, 1.0)

@@ -13,10 +13,12 @@ formulas of :mod:`pounding.contact.restitution` approximate; the simulated colli
 from __future__ import annotations
 
 import math
+from typing import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.memo import Memo
 from pounding.validation import restitution as _check_e
 
 FloatArray = NDArray[np.float64]
@@ -189,3 +191,92 @@ def restitution_nonlinear_viscoelastic(zeta: float) -> float:
                     events=at_max)
     x_max = float(sol.y_events[0][0][0])
     return math.sqrt(0.8 * x_max**2.5)
+
+
+# --------------------------------------------------------------------------- exact inverses
+def _invert(e: ArrayLike, one: Callable[[float], float]) -> FloatArray | float:
+    """``one(e)`` elementwise over a checked ``e`` (0 < e ≤ 1), scalar in, scalar out."""
+    x = np.atleast_1d(_check_e(e)).astype(float)
+    out = np.array([one(float(ei)) for ei in x.ravel()]).reshape(x.shape)
+    return float(out.ravel()[0]) if np.ndim(e) == 0 else out
+
+
+def _brent_decreasing(fun: Callable[[float], float], target: float, hi: float,
+                      xtol: float = 1e-300) -> float:
+    """The x ≥ 0 with ``fun(x) = target`` for ``fun`` falling from ``fun(0) = 1``:
+    ``hi`` doubled until it brackets, then Brent's method to round-off."""
+    from scipy.optimize import brentq
+
+    while fun(hi) > target:
+        hi *= 2.0
+    return float(brentq(lambda z: fun(z) - target, 0.0, hi, xtol=xtol, rtol=8.9e-16,
+                        maxiter=200))
+
+
+def zeta_modified_kelvin_voigt_exact(e: ArrayLike) -> FloatArray | float:
+    """Impact damping ratio with which the modified Kelvin–Voigt law achieves exactly ``e``:
+    the inverse of :func:`restitution_modified_kelvin_voigt` (Brent's method to round-off;
+    ``e`` falls monotonically with ζ). ``c = 2 ζ sqrt(k m_eff)``.
+
+    The default of the modified Kelvin–Voigt law. Mahmoud & Jankowski's eq 20
+    (:func:`~pounding.contact.restitution.zeta_mahmoud`) approximates it (0.6538 achieved for
+    a target of 0.65).
+    """
+    return _invert(e, lambda ei: 0.0 if ei >= 1.0 else
+                   _brent_decreasing(restitution_modified_kelvin_voigt, ei, 1.0))
+
+
+def chi_hunt_crossley_exact(e: ArrayLike) -> FloatArray | float:
+    """Damping factor χ with which the Hunt–Crossley law ``F = k δⁿ (1 + χ δ̇/v0)`` achieves
+    exactly ``e``, any ``n``: the inverse of :func:`restitution_hunt_crossley`, i.e. the root
+    of ``χ (1 + e) = ln((1 + χ) / (1 − χ e))`` (Brent's method to round-off).
+
+    The default of the Hunt–Crossley family (``hunt-crossley``, ``hertzdamp``). The
+    published closed forms approximate it: Lankarani & Nikravesh's ``3(1 − e²)/4`` is its
+    limit for e → 1 (it gives 0.775 for a target of 0.65), Flores' and Gonthier's are
+    within a few hundredths.
+    """
+    def one(ei: float) -> float:
+        if ei >= 1.0:
+            return 0.0
+        # 3(1 − e²)/4 is within a factor of 3 of it: a bracket to start from
+        return _brent_decreasing(restitution_hunt_crossley, ei, max(1.0 - ei * ei, 1e-300))
+
+    return _invert(e, one)
+
+
+def _zeta_nonlinear_viscoelastic_exact(e: float) -> float:
+    """:func:`zeta_nonlinear_viscoelastic_exact` of one ``e`` (not remembered)."""
+    from scipy.optimize import brentq
+
+    if e >= 1.0:
+        return 0.0
+    # Jankowski's eq 19 (restitution.zeta_jankowski) is within a few per cent of it:
+    # bracket about it
+    guess = 4.5 * math.sqrt(5.0) * (1.0 - e * e) / (e * (e * (9.0 * math.pi - 16.0) + 16.0))
+    lo, hi = 0.5 * guess, 2.0 * guess
+    while restitution_nonlinear_viscoelastic(hi) > e:
+        lo, hi = hi, hi * 2.0
+    while lo > 0.0 and restitution_nonlinear_viscoelastic(lo) < e:
+        lo, hi = 0.0 if lo < 1e-12 else lo / 4.0, lo
+    return float(brentq(lambda z: restitution_nonlinear_viscoelastic(z) - e, lo, hi,
+                        xtol=1e-14, rtol=1e-13, maxiter=100))
+
+
+def zeta_nonlinear_viscoelastic_exact(e: ArrayLike) -> FloatArray | float:
+    """Impact damping ratio with which Jankowski's nonlinear viscoelastic law (seed eqs
+    17–18) achieves exactly ``e``: the inverse of :func:`restitution_nonlinear_viscoelastic`
+    (Brent's method on the one-dimensional approach, to 1e-13 relative in ζ).
+
+    The default of the ``nonlinear-viscoelastic`` law. Jankowski's eq 19
+    (:func:`~pounding.contact.restitution.zeta_jankowski`) is a fit to it (0.6470 achieved
+    for a target of 0.65). Each ``e`` costs about a dozen integrations of the approach
+    (≈ 0.1 s); its ζ is remembered (:data:`EXACT_ZETA_NONLINEAR_VISCOELASTIC`), so a sweep
+    or a model with many contacts of one ``e`` pays once.
+    """
+    return _invert(e, lambda ei: EXACT_ZETA_NONLINEAR_VISCOELASTIC.get(
+        ei, lambda: _zeta_nonlinear_viscoelastic_exact(ei)))
+
+
+EXACT_ZETA_NONLINEAR_VISCOELASTIC = Memo(max_items=1024)
+"""ζ of :func:`zeta_nonlinear_viscoelastic_exact`, keyed by ``e``."""

@@ -6,7 +6,7 @@ with the formula that turns it into damping.
 from __future__ import annotations
 
 from pounding.contact.base import ContactLaw, m_effective
-from pounding.contact.bilinear import BilinearImpact
+from pounding.contact.bilinear import BILINEAR_FORMULAS, BilinearImpact
 from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
 from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
 from pounding.contact.restitution import FORMULAS, formula as get_formula
@@ -21,24 +21,55 @@ Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with �
 
 DEFAULT_FORMULA: dict[str, str] = {
     "kelvin-voigt": "schwager-poschel",
-    "modified-kelvin-voigt": "mahmoud",
-    "hunt-crossley": "lankarani-nikravesh",
-    "hertzdamp": "lankarani-nikravesh",
-    "nonlinear-viscoelastic": "jankowski",
+    "modified-kelvin-voigt": "exact-modified-kelvin-voigt",
+    "hunt-crossley": "exact-hunt-crossley",
+    "hertzdamp": "exact-hunt-crossley",
+    "nonlinear-viscoelastic": "exact-nonlinear-viscoelastic",
     "naderpour": "naderpour",
+    "bilinear-impact": "exact-bilinear",
 }
-"""The formula each damped law uses for ``e`` unless told otherwise (the one it was derived
-for; for Kelvin–Voigt, the exact one for the default end of contact, without tension: with
-tension it is ``anagnostopoulos``, :func:`default_formula`)."""
+"""The formula each damped law uses for ``e`` unless told otherwise: the exact inverse of
+the law's own restitution, so that an impact of two free bodies achieves the ``e`` asked
+for (for Kelvin–Voigt, the exact one for its end of contact: ``schwager-poschel`` without
+tension, ``anagnostopoulos`` with it, :func:`default_formula`; for the bilinear element,
+exact for the impact that reaches ``delta_m``). The one exception is ``naderpour``, whose
+name is the seed's eq 39 (it misses e: 0.157 for 0.65; ``nonlinear-viscoelastic`` is the
+same law with the exact ζ). The published formulas stay available by name
+(``formula = "lankarani-nikravesh"``, ``"mahmoud"``, ``"jankowski"``, ``"muthukumar"``…);
+``formula = "exact"`` names the default."""
 
 
 def default_formula(law: str, tension: bool = False) -> str | None:
-    """The damping formula a law uses for ``e`` when none is named: Kelvin–Voigt's exact ζ
-    for its end of contact (Schwager & Pöschel without tension, Anagnostopoulos with it),
-    otherwise :data:`DEFAULT_FORMULA` (None for a law without damping)."""
+    """The damping formula a law uses for ``e`` when none is named: the exact one
+    (:data:`DEFAULT_FORMULA`; Kelvin–Voigt's for its end of contact, Anagnostopoulos with
+    tension), None for a law without damping."""
     if law == "kelvin-voigt" and tension:
         return "anagnostopoulos"
     return DEFAULT_FORMULA.get(law)
+
+
+def resolve_formula(law: str, formula: str | None, tension: bool = False) -> str | None:
+    """The key of the formula a law uses: ``formula`` as given, its default when None, and
+    the law's exact one for ``"exact"`` (:func:`default_formula`)."""
+    if formula is None:
+        return default_formula(law, tension)
+    key = str(formula).strip().lower()
+    if key == "exact":
+        if law == "naderpour":
+            raise ValueError("formula: the naderpour law is the seed's eq 39 (got 'exact'); "
+                             "for the exact damping of the same law use law = "
+                             "\"nonlinear-viscoelastic\"")
+        return default_formula(law, tension)
+    return key
+
+
+def is_exact(law: str, formula: str | None, tension: bool = False) -> bool:
+    """True if ``formula`` (None: the default) gives ``law`` exactly the ``e`` asked for in
+    an impact of two free bodies (for the bilinear element: one that reaches ``delta_m``)."""
+    key = resolve_formula(law, formula, tension)
+    if law == "kelvin-voigt":
+        return key == ("anagnostopoulos" if tension else "schwager-poschel")
+    return key == DEFAULT_FORMULA.get(law) and law != "naderpour"
 
 
 def _need(name: str, value: float | None, law: str) -> float:
@@ -65,8 +96,9 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
     e : float
         Coefficient of restitution; converted to damping by ``formula``.
     formula : str
-        A key of :data:`pounding.contact.restitution.FORMULAS`; default
-        :data:`DEFAULT_FORMULA` for the law. ``naderpour`` fixes it to eq 39.
+        A key of :data:`pounding.contact.restitution.FORMULAS` (for the bilinear element,
+        of :data:`pounding.contact.bilinear.BILINEAR_FORMULAS`), or ``"exact"``; default
+        :data:`DEFAULT_FORMULA` for the law, exact for it. ``naderpour`` fixes it to eq 39.
     c, zeta, chi : float
         Damping given directly instead of ``e``: dashpot [N·s/m], damping ratio, or
         Hunt–Crossley factor.
@@ -88,6 +120,7 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
     """
     law = choice("law", name, LAW_NAMES)
     if formula is not None and law == "naderpour" and formula != "naderpour":
+        resolve_formula(law, formula)  # 'exact': says which law has the exact ζ
         raise ValueError(f"formula: the naderpour law uses eq 39 (got {formula!r})")
     if sum(x is not None for x in (e, c, zeta, chi)) > 1:
         raise ValueError(f"{law}: give only one of e, c, zeta, chi")
@@ -102,7 +135,7 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
     def damping_ratio() -> float:
         if zeta is not None:
             return zeta
-        f = get_formula(formula or default_formula(law, tension))  # type: ignore[arg-type]
+        f = get_formula(resolve_formula(law, formula, tension))  # type: ignore[arg-type]
         if f.kind != "zeta":
             raise ValueError(f"formula: {f.key!r} gives a Hunt-Crossley chi; the {law} law "
                              f"needs a damping ratio formula")
@@ -122,7 +155,7 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
         return ModifiedKelvinVoigt(kk, c)
     if law in ("hunt-crossley", "hertzdamp"):
         if chi is None:
-            f = get_formula(formula or DEFAULT_FORMULA[law])
+            f = get_formula(resolve_formula(law, formula))  # type: ignore[arg-type]
             if f.kind != "chi":
                 raise ValueError(f"formula: {f.key!r} gives a damping ratio; the {law} law "
                                  f"needs a chi formula ({', '.join(k_ for k_, v in FORMULAS.items() if v.kind == 'chi')})")
@@ -132,5 +165,6 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
         return NonlinearViscoelastic(_need("k_h", k_h, law), damping_ratio(),
                                      m_effective(_need("m1", m1, law), _need("m2", m2, law)))
     # bilinear-impact
-    return BilinearImpact.from_hertz(_need("k_h", k_h, law), _need("e", e, law),
-                                     _need("delta_m", delta_m, law), a, n)
+    key = choice("formula", resolve_formula(law, formula), BILINEAR_FORMULAS)  # type: ignore[arg-type]
+    return getattr(BilinearImpact, BILINEAR_FORMULAS[key])(
+        _need("k_h", k_h, law), _need("e", e, law), _need("delta_m", delta_m, law), a, n)

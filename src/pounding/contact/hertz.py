@@ -112,7 +112,9 @@ class HuntCrossley(ContactLaw):
     """Hunt–Crossley family: ``F = k_h δⁿ (1 + χ δ̇ / v0)``, damping in both phases.
 
     The family differs only in how χ comes from ``e`` (see
-    :mod:`pounding.contact.restitution`): Hunt & Crossley (1975) ``3(1−e)/2``; Lankarani &
+    :mod:`pounding.contact.restitution`): exactly, by the law's own ``e(χ)`` inverted
+    (``exact-hunt-crossley``, the default); or by a published closed form: Hunt & Crossley
+    (1975) ``3(1−e)/2``; Lankarani &
     Nikravesh (1990) ``3(1−e²)/4``, which is also the Hertzdamp model of Muthukumar &
     DesRoches (2006, EESD 35(7):811–828); Ye et al. (2009) / Flores et al. (2011)
     ``8(1−e)/(5e)``; Gonthier et al. (2004) ``(1−e²)/e``.
@@ -160,9 +162,10 @@ class HuntCrossley(ContactLaw):
     # overlapping.
 
     @classmethod
-    def from_restitution(cls, k_h: float, e: float, formula: str = "lankarani-nikravesh",
+    def from_restitution(cls, k_h: float, e: float, formula: str = "exact-hunt-crossley",
                          n: float = 1.5) -> "HuntCrossley":
-        """Build from ``e`` via a χ formula (default Lankarani–Nikravesh = Hertzdamp)."""
+        """Build from ``e`` via a χ formula (default the exact one, which achieves ``e``;
+        ``"lankarani-nikravesh"`` is the published Hertzdamp χ, :func:`hertzdamp`)."""
         from pounding.contact.restitution import formula as _formula
 
         f = _formula(formula)
@@ -173,8 +176,10 @@ class HuntCrossley(ContactLaw):
 
 
 def hertzdamp(k_h: float, e: float, n: float = 1.5) -> HuntCrossley:
-    """The Hertzdamp model of Muthukumar & DesRoches (2006): Hunt–Crossley with the
-    Lankarani–Nikravesh factor ``χ = 3(1 − e²)/4``."""
+    """The Hertzdamp model of Muthukumar & DesRoches (2006) as published: Hunt–Crossley with
+    the Lankarani–Nikravesh factor ``χ = 3(1 − e²)/4``, which misses ``e`` (0.775 achieved
+    for 0.65). The law name ``hertzdamp`` of a model file takes the exact χ by default
+    (``formula = "lankarani-nikravesh"`` for this one)."""
     return HuntCrossley.from_restitution(k_h, e, formula="lankarani-nikravesh", n=n)
 
 
@@ -185,8 +190,9 @@ class NonlinearViscoelastic(ContactLaw):
     ``F = k_h δ^1.5 + c δ̇`` while approaching (``δ̇ > 0``), ``F = k_h δ^1.5`` while
     separating, with ``c = 2 ζ sqrt(k_h sqrt(δ) m1 m2 / (m1 + m2))`` (eq 18).
 
-    Source: Jankowski (2005), EESD 34(6):595–611; ζ(e) from Jankowski (2006) = seed eq 19.
-    The seed's proposed model (Naderpour et al. 2015) is this law with ζ from eq 39.
+    Source: Jankowski (2005), EESD 34(6):595–611; ζ(e) by default the exact inverse of the
+    law's restitution (:func:`~pounding.contact.exact_restitution.zeta_nonlinear_viscoelastic_exact`),
+    of which Jankowski (2006) = seed eq 19 is a fit. The seed's proposed model (Naderpour et al. 2015) is this law with ζ from eq 39.
 
     Parameters
     ----------
@@ -221,8 +227,9 @@ class NonlinearViscoelastic(ContactLaw):
 
     @classmethod
     def from_restitution(cls, k_h: float, e: float, m1: float, m2: float,
-                         formula: str = "jankowski") -> "NonlinearViscoelastic":
-        """Build from ``e`` via a ζ formula (default Jankowski, seed eq 19)."""
+                         formula: str = "exact-nonlinear-viscoelastic") -> "NonlinearViscoelastic":
+        """Build from ``e`` via a ζ formula (default the exact one, which achieves ``e``;
+        ``"jankowski"`` is seed eq 19, a fit to it)."""
         from pounding.contact.restitution import formula as _formula
 
         f = _formula(formula)

@@ -179,8 +179,10 @@ class ModifiedKelvinVoigt(ContactLaw):
     ``F = k δ + c δ̇`` for ``δ̇ > 0``, ``F = k δ`` for ``δ̇ ≤ 0``; ``c = 2 ζ sqrt(k m_eff)``.
 
     Source: Mahmoud & Jankowski (2011), Iranian J. Sci. Technol. 35(C1):51–62; its damping
-    ratio is seed eq 20 (:func:`~pounding.contact.restitution.zeta_mahmoud`). No tensile
-    force ever arises.
+    ratio for ``e`` by default the exact inverse of its restitution
+    (:func:`~pounding.contact.exact_restitution.zeta_modified_kelvin_voigt_exact`), of which
+    seed eq 20 (:func:`~pounding.contact.restitution.zeta_mahmoud`) is an approximation. No
+    tensile force ever arises.
 
     Parameters
     ----------
@@ -217,8 +219,9 @@ class ModifiedKelvinVoigt(ContactLaw):
 
     @classmethod
     def from_restitution(cls, k: float, e: float, m1: float, m2: float,
-                         formula: str = "mahmoud") -> "ModifiedKelvinVoigt":
-        """Build from a coefficient of restitution via a ζ formula (default Mahmoud, eq 20)."""
+                         formula: str = "exact-modified-kelvin-voigt") -> "ModifiedKelvinVoigt":
+        """Build from a coefficient of restitution via a ζ formula (default the exact one,
+        which achieves ``e``; ``"mahmoud"`` is Mahmoud & Jankowski's eq 20)."""
         from pounding.contact.restitution import formula as _formula
 
         f = _formula(formula)

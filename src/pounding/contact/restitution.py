@@ -6,7 +6,11 @@ viscoelastic laws, or a damping *factor* χ for the Hunt–Crossley family
 ``F = k δⁿ (1 + χ δ̇ / v0)``. What each formula actually achieves when simulated is measured
 by :mod:`pounding.contact.audit`; see ``docs/formulas/``.
 
-The registry :data:`FORMULAS` lists every formula with its source, equation and law.
+The registry :data:`FORMULAS` lists every formula with its source, equation and law: the
+published closed forms, and for each damped law the exact inverse of its own ``e``
+(``schwager-poschel``, ``exact-modified-kelvin-voigt``, ``exact-hunt-crossley``,
+``exact-nonlinear-viscoelastic``; :mod:`pounding.contact.exact_restitution`), which is the
+law's default (:data:`pounding.contact.factory.DEFAULT_FORMULA`).
 """
 
 from __future__ import annotations
@@ -17,7 +21,12 @@ from typing import Callable, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.contact.exact_restitution import zeta_kelvin_voigt_clipped
+from pounding.contact.exact_restitution import (
+    chi_hunt_crossley_exact,
+    zeta_kelvin_voigt_clipped,
+    zeta_modified_kelvin_voigt_exact,
+    zeta_nonlinear_viscoelastic_exact,
+)
 from pounding.validation import restitution as _check_e
 
 FloatArray = NDArray[np.float64]
@@ -139,6 +148,9 @@ class DampingFormula:
     equation: str
     derived_for: str
     """Key of the contact law the formula was derived for (see ``pounding.contact.LAWS``)."""
+    exact: bool = False
+    """True for the exact inverse of the law's own ``e`` (no approximation: an impact of two
+    free bodies achieves the target to round-off); False for a published closed form."""
 
     def __call__(self, e: ArrayLike) -> FloatArray | float:
         return self.function(e)
@@ -153,7 +165,7 @@ FORMULAS: dict[str, DampingFormula] = {
         DampingFormula("schwager-poschel", "zeta", zeta_kelvin_voigt_clipped,
                        "Schwager & Poschel 2007, Granular Matter 9:465-469",
                        "e = exp(-zeta (pi - 2 asin zeta) / sqrt(1 - zeta^2)), inverted exactly",
-                       "kelvin-voigt"),
+                       "kelvin-voigt", exact=True),
         DampingFormula("jankowski", "zeta", zeta_jankowski,
                        "Jankowski 2006, EESD 35(4):517-524", "seed eq 19", "nonlinear-viscoelastic"),
         DampingFormula("mahmoud", "zeta", zeta_mahmoud,
@@ -173,6 +185,19 @@ FORMULAS: dict[str, DampingFormula] = {
                        "chi = 8(1-e)/(5e)", "hunt-crossley"),
         DampingFormula("gonthier", "chi", chi_gonthier,
                        "Gonthier et al. 2004, MSD 11:209-233", "chi = (1-e^2)/e", "hunt-crossley"),
+        DampingFormula("exact-modified-kelvin-voigt", "zeta", zeta_modified_kelvin_voigt_exact,
+                       "the law's e(zeta) from the damped free vibration of the approach "
+                       "(docs/laws/modified-kelvin-voigt.md)",
+                       "e = exp(-zeta atan(sqrt(1 - zeta^2)/zeta) / sqrt(1 - zeta^2)), inverted "
+                       "exactly", "modified-kelvin-voigt", exact=True),
+        DampingFormula("exact-hunt-crossley", "chi", chi_hunt_crossley_exact,
+                       "Hunt & Crossley 1975, J. Appl. Mech. 42(2):440-445 (the law's own e(chi))",
+                       "chi (1 + e) = ln((1 + chi) / (1 - chi e)), inverted exactly",
+                       "hunt-crossley", exact=True),
+        DampingFormula("exact-nonlinear-viscoelastic", "zeta", zeta_nonlinear_viscoelastic_exact,
+                       "Jankowski 2006, EESD 35(4):517-524 (the law's approach, integrated)",
+                       "e = sqrt(0.8 x_max^2.5) of x'' = -x^1.5 - 2 zeta x^0.25 x', inverted "
+                       "exactly", "nonlinear-viscoelastic", exact=True),
     ]
 }
 """Every damping formula, keyed by a short name used on the command line."""
@@ -190,3 +215,8 @@ def formula(key: str) -> DampingFormula:
     from pounding.validation import choice
 
     return FORMULAS[choice("formula", key, FORMULAS)]
+
+
+PUBLISHED: tuple[str, ...] = tuple(k for k in FORMULAS if not k.startswith("exact-"))
+"""Keys of the published formulas (closed forms, and Schwager & Pöschel's exact e(ζ) of the
+clipped Kelvin–Voigt law): what the seed's Fig 4 and ``pounding zeta`` compare."""

@@ -29,7 +29,8 @@ class ContactSpec:
     e : float, optional
         Coefficient of restitution (turned into damping by ``formula``).
     formula : str, optional
-        Damping formula (default: the law's own).
+        Damping formula for ``e`` (default, or ``"exact"``: the one exact for the law,
+        :data:`pounding.contact.factory.DEFAULT_FORMULA`; a published one by its key).
     c, zeta, chi : float, optional
         Damping given directly.
     n : float
@@ -62,21 +63,40 @@ class ContactSpec:
 
     def describe(self) -> str:
         """One line for outputs: the law, the fields given (with units), the damping formula
-        ``e`` goes through, and for Kelvin–Voigt whether the dashpot may pull."""
-        from pounding.contact.factory import default_formula
+        ``e`` goes through and whether it is exact for the law (if not, the ``e`` an impact
+        of two free bodies achieves with it), and for Kelvin–Voigt whether the dashpot may
+        pull."""
+        from pounding.contact.factory import resolve_formula
 
         units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m"}
-        formula = self.formula or default_formula(self.law, self.tension)
+        formula = resolve_formula(self.law, self.formula, self.tension)
         parts = []
         for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m"):
             value = getattr(self, name)
             if value is not None:
-                via = f" via {formula}" if name == "e" and formula else ""
+                via = f" via {formula}{self._exactness()}" if name == "e" and formula else ""
                 parts.append(f"{name} = {value:g}{units.get(name, '')}{via}")
         if self.law == "kelvin-voigt":
             parts.append("tension (pulls until δ = 0)" if self.tension
                          else "no tension (clipped at zero)")
         return f"{self.law}: {', '.join(parts)}" if parts else self.law
+
+    def _exactness(self) -> str:
+        """`` (exact)`` if the formula gives the law exactly ``e`` in an impact of two free
+        bodies (the bilinear element: one reaching ``delta_m``); otherwise the ``e`` such an
+        impact achieves with it."""
+        from pounding.contact.calibration import restitution_of
+        from pounding.contact.factory import is_exact
+
+        if is_exact(self.law, self.formula, self.tension):
+            return " (exact" + (" for an impact reaching delta_m)" if self.law == "bilinear-impact"
+                                else ")")
+        law = self.build(1.0, 1.0)
+        achieved = restitution_of(law, 1.0, 1.0)
+        if achieved is None:  # the bilinear element: at the penetration it is sized for
+            achieved = law.restitution_at(self.delta_m)  # type: ignore[attr-defined]
+            return f" (not exact: an impact reaching delta_m achieves e = {achieved:.4f})"
+        return f" (not exact: an impact of two free bodies achieves e = {achieved:.4f})"
 
     def build(self, m1: float, m2: float) -> ContactLaw:
         """The contact law between two floors of masses ``m1`` and ``m2`` [kg].

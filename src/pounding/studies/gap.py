@@ -34,10 +34,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.ground_motion import GroundMotion
+from pounding.contact.geometry import Contact, ContactPoint
+from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.model import ContactSpec, PoundingModel
 from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
 from pounding.structure import ShearBuilding
+from pounding.structure.wall import WallPoint
 from pounding.validation import non_negative, positive
 
 if TYPE_CHECKING:
@@ -52,6 +54,7 @@ __all__ = [
     "cqc_correlation",
     "critical_gaps",
     "ddc",
+    "gap_label",
     "fundamental_mode",
     "hermite_max",
     "spectral_displacements",
@@ -247,7 +250,8 @@ class GapStudy:
     """Critical gaps by simulation, per record and per shared floor level.
 
     Levels are the contacts of the model, in :attr:`PoundingModel.contacts` order (pair by
-    pair, bottom to top). Arrays are ``(n_records, n_levels)`` unless stated.
+    pair, bottom to top; then those with moat walls; a bumper's pad left out). Arrays are
+    ``(n_records, n_levels)`` unless stated.
 
     Attributes
     ----------
@@ -255,7 +259,9 @@ class GapStudy:
     records : tuple of str
         Names of the ground motions.
     pair, elevation, labels : (n_levels,)
-        Which gap (0 = between buildings 1 and 2), level above ground [m], contact label.
+        Which gap (0 = between buildings 1 and 2; for a moat wall, −1 on the left of the
+        row and the last building's index on its right), level above ground [m], contact
+        label.
     critical : (n_records, n_levels)
         ``max(0, max_t (u_left − u_right))`` [m]: the smallest gap that is never closed.
     time_of_max : (n_records, n_levels)
@@ -272,6 +278,10 @@ class GapStudy:
         Output step of the uncoupled simulations [s].
     durations : (n_records,)
         Time simulated for each record [s].
+    gap_names : (n_levels,)
+        The gap each level's contact closes (:func:`gap_label`: ``'B1-B2'``, ``'B1-W'``).
+    contacts : (n_levels,)
+        The model's contacts studied.
     """
 
     model: PoundingModel
@@ -289,6 +299,8 @@ class GapStudy:
     rho: FloatArray
     dt: float
     durations: FloatArray
+    gap_names: tuple[str, ...] = ()
+    contacts: tuple[Contact, ...] = ()
 
     @property
     def n_levels(self) -> int:
@@ -306,10 +318,29 @@ class GapStudy:
         return self.critical.max(axis=0)
 
     def governing(self) -> FloatArray:
-        """Critical gap of each pair [m] (n_pairs,): largest over its levels and the records."""
+        """Critical gap of each pair of buildings [m] (n_pairs,): largest over its levels
+        and the records (moat walls: :meth:`governing_gaps`)."""
         n_pairs = len(self.model.buildings) - 1
-        return np.array([self.max_critical[self.pair == p].max(initial=0.0)
+        names = np.array(self.gap_names)
+        return np.array([self.max_critical[names == f"B{p + 1}-B{p + 2}"].max(initial=0.0)
                          for p in range(n_pairs)])
+
+    def governing_gaps(self) -> dict[str, float]:
+        """Critical gap [m] of every gap of the model — between neighbours and between a
+        building and a moat wall (the moat width it needs) — by :attr:`gap_names`: largest
+        over its levels and the records."""
+        names = np.array(self.gap_names)
+        return {n: float(self.max_critical[names == n].max(initial=0.0))
+                for n in dict.fromkeys(self.gap_names)}
+
+    @property
+    def level_rho(self) -> FloatArray:
+        """CQC correlation of each level's two buildings (n_levels,); 0 for a moat wall,
+        which does not move (its peak is 0, so any ρ gives the same rules)."""
+        walls = np.array([isinstance(c.left, WallPoint) or isinstance(c.right, WallPoint)
+                          for c in self.contacts], dtype=bool)
+        pair = np.clip(self.pair, 0, max(self.rho.size - 1, 0))
+        return np.where(walls, 0.0, self.rho[pair] if self.rho.size else 0.0)
 
     def rules_from_peaks(self, stat: str = "mean") -> dict[str, FloatArray]:
         """Code rules at every level from the simulated peak displacements [m].
@@ -317,7 +348,7 @@ class GapStudy:
         ``stat``: ``"mean"`` (default) or ``"max"`` over records of each building's peak at
         that level; or ``"record"`` for the rules of each record, shape (n_records, n_levels).
         """
-        rho = self.rho[self.pair]
+        rho = self.level_rho
         if stat == "mean":
             u1, u2 = self.peak_left.mean(axis=0), self.peak_right.mean(axis=0)
         elif stat == "max":
@@ -333,16 +364,26 @@ class GapStudy:
     def spectral_peaks(self, spectrum: DesignSpectrum) -> tuple[FloatArray, FloatArray]:
         """Peak displacements [m] of the left and right building at every level from
         ``spectrum`` (:func:`spectral_displacements`), (n_levels,) each."""
+        if any(_in_plan(b) for b in self.model.buildings):
+            raise ValueError("spectrum: the code rules from a design spectrum take each "
+                             "building's fundamental mode along the row, and a building in "
+                             "plan sways and twists in modes of its own: use the rules from "
+                             "the simulated peaks, without a spectrum")
         per_b = [spectral_displacements(b, spectrum) for b in self.model.buildings]
-        # fundamental-mode peaks: linear between the floors of a struck storey, like the mode
-        u1 = np.array([c.left.of(np.asarray(per_b[c.pair])) for c in self.model.contacts])
-        u2 = np.array([c.right.of(np.asarray(per_b[c.pair + 1])) for c in self.model.contacts])
+
+        def peak(p: ContactPoint) -> float:
+            # fundamental-mode peaks: linear between the floors of a struck storey, like
+            # the mode; a wall does not move
+            return 0.0 if isinstance(p, WallPoint) else float(p.of(np.asarray(per_b[p.building])))
+
+        u1 = np.array([peak(c.left) for c in self.contacts])
+        u2 = np.array([peak(c.right) for c in self.contacts])
         return u1, u2
 
     def rules_from_spectrum(self, spectrum: DesignSpectrum) -> dict[str, FloatArray]:
         """Code rules at every level [m] from a design spectrum (fundamental modes)."""
         u1, u2 = self.spectral_peaks(spectrum)
-        return code_gaps(u1, u2, self.rho[self.pair])
+        return code_gaps(u1, u2, self.level_rho)
 
     def to_frame(self, spectrum: DesignSpectrum | None = None) -> pd.DataFrame:
         """One row per level: pair, elevation [m], critical gap per record [m], mean, max,
@@ -351,7 +392,7 @@ class GapStudy:
         simulated gap is 0)."""
         import pandas as pd
 
-        df = pd.DataFrame({"pair": [f"B{p + 1}-B{p + 2}" for p in self.pair],
+        df = pd.DataFrame({"pair": list(self.gap_names),
                            "contact": list(self.labels), "elevation_m": self.elevation})
         for name, row in zip(_unique(self.records), self.critical):
             df[f"critical_m[{name}]"] = row
@@ -387,23 +428,79 @@ def _alone(building: ShearBuilding) -> PoundingModel:
                          name=building.name or "building")
 
 
-def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundMotion], *,
+def _in_plan(building: object) -> bool:
+    from pounding.structure.plan_row import PlanMatrixBuilding
+
+    return isinstance(building, PlanMatrixBuilding)
+
+
+def gap_label(model: PoundingModel, contact: Contact) -> str:
+    """The gap a contact closes: ``'B1-B2'`` between two buildings, ``'B1-W'`` / ``'W-B1'``
+    between a building and the moat wall on its right / left."""
+    if isinstance(contact.left, WallPoint):
+        return f"{contact.left.label()}-B{contact.right.building + 1}"
+    if isinstance(contact.right, WallPoint):
+        return f"B{contact.left.building + 1}-{contact.right.label()}"
+    return f"B{contact.pair + 1}-B{contact.pair + 2}"
+
+
+def _check_motions(model: PoundingModel, motions: object
+                   ) -> list[GroundMotion | GroundMotionComponents]:
+    """The records as a list, each of the kind the model is shaken by (one component for a
+    row of planar buildings, x and y components where a building is in plan)."""
+    one = (GroundMotion, GroundMotionComponents)
+    ms = [motions] if isinstance(motions, one) else list(motions)  # type: ignore[call-overload]
+    if not ms:
+        raise ValueError("motions: give at least one ground motion")
+    in_plan = any(_in_plan(b) for b in model.buildings)
+    for i, m in enumerate(ms):
+        if not isinstance(m, one):
+            raise ValueError(f"motions[{i}]: expected a GroundMotion (got {type(m).__name__})")
+        if in_plan and not (isinstance(m, GroundMotionComponents) and m.n_components == 2):
+            raise ValueError(f"motions[{i}]: the model has buildings in plan, shaken along x "
+                             "and y: give each record as its two site components, "
+                             "GroundMotionComponents(x, y) (pounding.ground_motion.at_incidence "
+                             "turns one or two recorded components to an angle)")
+        if not in_plan and isinstance(m, GroundMotionComponents):
+            if m.n_components != 1:
+                raise ValueError(f"motions[{i}]: {m.n_components} ground components for a row "
+                                 "of buildings shaken along the row (one component; several "
+                                 "are for buildings in plan)")
+            ms[i] = m.components[0]
+    return ms
+
+
+def critical_gaps(model: PoundingModel,
+                  motions: GroundMotion | GroundMotionComponents
+                  | Sequence[GroundMotion | GroundMotionComponents], *,
                   dt: float | None = None, duration: float | None = None) -> GapStudy:
-    """Critical separation gap at every shared floor level, by simulation, per record.
+    """Critical separation gap at every contact, by simulation, per record.
 
     Each building is simulated alone (exact stepping: no contact, so the propagator is exact
-    on every output step, :func:`pounding.integrate.simulate`), and at every contact level
-    of the model the critical gap is ``max(0, max_t (u_left(t) − u_right(t)))``, the
-    maximum taken on the cubic Hermite interpolant of ``(Δu, Δu̇)`` between output samples
-    (:func:`hermite_max`). A gap larger than it is never closed in the same time window;
-    a smaller one is. The gaps and contact law of ``model`` are not used.
+    on every output step, :func:`pounding.integrate.simulate`), and at every contact of the
+    model the critical gap is the largest approach of its two points,
+    ``max(0, max_t (u_left(t) − u_right(t)))``, the maximum taken on the cubic Hermite
+    interpolant of the approach and its rate between output samples (:func:`hermite_max`).
+    A gap larger than it is never closed in the same time window; a smaller one is. The gaps
+    and contact law of ``model`` are not used.
+
+    The contact points are those of the model's contacts: floors, points of a column
+    between two floors, the two ends of the stretch where two façades in plan face each
+    other (their displacement along x with the floor's rotation, rigid-floor kinematics:
+    :meth:`~pounding.structure.plan.PlanBuilding.point_weights`), and the floors facing a
+    moat wall (the wall does not move: the critical gap there is the moat width the
+    building needs, its largest displacement toward the wall).
 
     Parameters
     ----------
     model : PoundingModel
-        At least two buildings with a shared floor level.
-    motions : GroundMotion or sequence of GroundMotion
-        The records (used as given: scale them beforehand).
+        Two or more buildings with a contact between neighbours, or a building beside a
+        moat wall. Links between buildings (:class:`pounding.devices.Link`) are refused:
+        the buildings are simulated apart. Bumpers are ignored (they act only in contact).
+    motions : GroundMotion, GroundMotionComponents, or a sequence of them
+        The records (used as given: scale them beforehand); for a model with buildings in
+        plan, each record's x and y site components (a planar building in such a row feels
+        the x component, as in :class:`~pounding.model.PoundingModel`).
     dt : float, optional
         Output step [s] (default 1 ms, rounded to a divisor of each record's step).
     duration : float, optional
@@ -417,22 +514,19 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
 
     if not isinstance(model, PoundingModel):
         raise ValueError(f"model: expected a PoundingModel (got {type(model).__name__})")
-    if len(model.buildings) < 2:
-        raise ValueError("model: a gap study needs at least two buildings (got "
-                         f"{len(model.buildings)})")
-    if model.walls:
-        raise ValueError(f"model: a gap study covers the gaps between buildings; remove its "
-                         f"{len(model.walls)} moat wall(s) (walls)")
-    if not model.contacts:
+    if len(model.buildings) < 2 and not model.walls:
+        raise ValueError("model: a gap study needs two or more buildings, or a building "
+                         f"beside a moat wall (got {len(model.buildings)} building and no "
+                         "wall)")
+    if model.links:
+        raise ValueError(f"model: a gap study simulates each building alone, and "
+                         f"{len(model.links)} link(s) (devices) tie the buildings together; "
+                         "remove the links, or run the model (pounding run) at several gaps")
+    cs = tuple(c for c in model.contacts if c.tag != "bumper")
+    if not cs:
         raise ValueError("model: no contact level between neighbours (no shared floor level "
                          "and no floor facing a column), so no gap to study")
-    ms = [motions] if isinstance(motions, GroundMotion) else list(motions)
-    if not ms:
-        raise ValueError("motions: give at least one ground motion")
-    for i, m in enumerate(ms):
-        if not isinstance(m, GroundMotion):
-            raise ValueError(f"motions[{i}]: expected a GroundMotion (got {type(m).__name__})")
-    cs = model.contacts
+    ms = _check_motions(model, motions)
     nr, nc = len(ms), len(cs)
     crit = np.zeros((nr, nc))
     tmax = np.zeros((nr, nc))
@@ -442,27 +536,37 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
     durs = np.zeros(nr)
     step = 0.0
     for i, motion in enumerate(ms):
+        # every building over the same time (the longest component's when two are given);
         # exact stepping for linear buildings; yielding ones are RK-stepped (not linear)
-        runs = [simulate(_alone(b), motion, dt=dt, duration=duration,
+        t_end = motion.duration if duration is None else duration
+        runs = [simulate(_alone(b), motion if _in_plan(b) or isinstance(motion, GroundMotion)
+                         else motion.components[0], dt=dt, duration=t_end,
                          free_stepping="rk" if b.is_inelastic else "exact")
                 for b in model.buildings]
         step = runs[0].dt
         durs[i] = float(runs[0].time[-1])
-        for c in cs:
-            left, right = runs[c.pair], runs[c.pair + 1]
-            # contact points: a floor, or a column point between two floors (interpolated)
-            ul, vl = c.left.of(left.displacement), c.left.of(left.velocity)
-            ur, vr = c.right.of(right.displacement), c.right.of(right.velocity)
+
+        def point(p: ContactPoint) -> tuple[FloatArray, FloatArray]:
+            if isinstance(p, WallPoint):  # fixed to the ground
+                return np.zeros(runs[0].time.size), np.zeros(runs[0].time.size)
+            run = runs[p.building]
+            return p.of(run.displacement), p.of(run.velocity)
+
+        for k, c in enumerate(cs):
+            # contact points: a floor, a column point between two floors (interpolated), a
+            # façade point of a floor in plan (with the floor's rotation), or a wall
+            ul, vl = point(c.left)
+            ur, vr = point(c.right)
             d, dd = ul - ur, vl - vr
             top, when = hermite_max(d, dd, step)
             low, _ = hermite_max(-d, -dd, step)
-            crit[i, c.index] = max(0.0, float(top))
-            tmax[i, c.index] = float(when)
-            rel[i, c.index] = max(float(top), float(low), 0.0)
-            pl[i, c.index] = max(float(hermite_max(ul, vl, step)[0]),
-                                 float(hermite_max(-ul, -vl, step)[0]))
-            pr[i, c.index] = max(float(hermite_max(ur, vr, step)[0]),
-                                 float(hermite_max(-ur, -vr, step)[0]))
+            crit[i, k] = max(0.0, float(top))
+            tmax[i, k] = float(when)
+            rel[i, k] = max(float(top), float(low), 0.0)
+            pl[i, k] = max(float(hermite_max(ul, vl, step)[0]),
+                           float(hermite_max(-ul, -vl, step)[0]))
+            pr[i, k] = max(float(hermite_max(ur, vr, step)[0]),
+                           float(hermite_max(-ur, -vr, step)[0]))
     modes = [fundamental_mode(b) for b in model.buildings]
     period = np.array([m[0] for m in modes])
     zeta = np.array([m[1] for m in modes])
@@ -473,5 +577,6 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
                     elevation=np.array([c.elevation for c in cs]),
                     labels=tuple(c.label for c in cs), critical=crit, time_of_max=tmax,
                     peak_relative=rel, peak_left=pl, peak_right=pr, period=period, zeta=zeta,
-                    rho=rho, dt=step, durations=durs)
-
+                    rho=rho, dt=step, durations=durs,
+                    gap_names=tuple(gap_label(model, c) for c in cs),
+                    contacts=cs)

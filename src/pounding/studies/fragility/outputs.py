@@ -113,6 +113,7 @@ def summary(plan: StudyPlan, a: FragilityAnalysis) -> dict[str, Any]:
                                   else "each record to the level"),
                       "target_g": plan.im_target},
         "levels_g": list(plan.levels), "records": plan.records,
+        "records_applied": plan.record_note or "along the row (x), as recorded",
         "gaps_m": [g for g in plan.gaps], "building_periods_s": plan.periods,
         "limit_states": ls,
         "gap": {"at_g": ga.needed.at, "target_probability": ga.target,

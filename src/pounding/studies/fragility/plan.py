@@ -65,6 +65,9 @@ class StudyPlan:
         The runs.
     rows : list of (int, int, int)
         Per case (in case order): record, level and gap index.
+    record_note : str
+        How each record shakes the model, where that needs saying (buildings in plan: one
+        component along the base model's ``[record] incidence``); empty otherwise.
     """
 
     config: StudyConfig
@@ -82,6 +85,7 @@ class StudyPlan:
     periods: list[float]
     sweep: Any
     rows: list[tuple[int, int, int]] = field(repr=False, default_factory=list)
+    record_note: str = ""
 
     def case_values(self, record: int, level: float, gap: float | None = None
                     ) -> tuple[list[str], list[Any]]:
@@ -164,8 +168,11 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
     base_cfg = load_config(model_file)
     model, _, _ = base_cfg.build()
     if len(model.buildings) < 2:
-        raise ValueError(f"{where}: base: {model_file} has one building; a study of pounding "
-                         "needs two or more")
+        raise ValueError(f"{where}: base: {model_file} has one building; a fragility study of "
+                         "pounding needs two or more buildings"
+                         + (" (a moat wall is not supported here yet: pounding gap gives the "
+                            "moat width a record needs, pounding sweep over wall.gap the rest)"
+                            if model.walls else ""))
     for i, ls in enumerate(cfg.limit_state):
         if ls.demand == "ductility" and not model.is_inelastic:
             raise ValueError(f"{where}: limit_state[{i}].demand: \"ductility\" needs yielding "
@@ -199,13 +206,24 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
             rec.update(sa_period=it.period, sa_damping=it.damping)
         elif it.measure == "saavg":
             rec.update(saavg_periods=list(saavg), saavg_n=it.n_periods, sa_damping=it.damping)
+    note = ""
+    if base_cfg.in_plan:
+        # a record of the suite is one component: it shakes the buildings in plan along the
+        # base model's incidence (its second component, if any, belongs to its own record)
+        incidence = base_cfg.record.incidence or 0.0
+        rec["incidence"] = incidence
+        note = (f"buildings in plan: each record of the suite shakes them alone along the "
+                f"incidence {incidence:g}° ([record] incidence of {cfg.base})"
+                + (f"; the base model's second component ([record] "
+                   f"{'second' if base_cfg.record.second else 'second_file'}) is not used"
+                   if base_cfg.record.two_components else ""))
     base["record"] = rec
     plan = StudyPlan(config=cfg, source=source, out=Path(out) if out is not None else
                      here / (cfg.out or f"{cfg.name}-results"), records=names, source_key=key,
                      sources=sources, levels=levels,
                      gaps=list(cfg.gap.values) if cfg.gap.values else [None],
                      im_label=_im_label(cfg, saavg), saavg_range=saavg, factors=None,
-                     im_target=None, periods=periods, sweep=None)
+                     im_target=None, periods=periods, sweep=None, record_note=note)
     if cfg.suite.scaling is not None:
         factors, im_target = _suite_factors(plan, base, here, model_file.parent, where)
         plan.factors, plan.im_target = factors, im_target
