@@ -8,12 +8,14 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from pounding.contact.restitution import FORMULAS, TABLE1_E, TABLE1_ZETA
+from pounding.contact.restitution import FORMULAS, PUBLISHED, TABLE1_E, TABLE1_ZETA
 from pounding.plot import new_figure
 
 
 def plot_damping_formulas(e: np.ndarray | None = None) -> Figure:
-    """The seed's Fig 4: every ζ(e) formula (log scale), with Table 1 marked; χ(e) beside it.
+    """The seed's Fig 4: every published ζ(e) formula (log scale), with Table 1 marked; χ(e)
+    beside it. The exact inverses (``exact-*``, the laws' defaults) are not drawn: each is a
+    law's own e(ζ) inverted, not a formula the seed compares.
 
     Parameters
     ----------
@@ -23,7 +25,7 @@ def plot_damping_formulas(e: np.ndarray | None = None) -> Figure:
     e = np.linspace(0.05, 1.0, 400) if e is None else np.asarray(e, dtype=float)
     fig = new_figure(11, 6.2, laid_out=False, layout="constrained")
     ax_z, ax_c = fig.subplots(1, 2)
-    for f in FORMULAS.values():
+    for f in (FORMULAS[k] for k in PUBLISHED):
         ax = ax_z if f.kind == "zeta" else ax_c
         ax.plot(e, f(e), label=f"{f.key} ({f.equation})")
     ax_z.plot(TABLE1_E, TABLE1_ZETA, "ko", mfc="none", label="seed Table 1")
