@@ -114,11 +114,8 @@ class Manifest:
 
     def start(self, kind: str) -> None:
         """Write a new manifest listing nothing yet (replacing any)."""
-        from pounding import __version__
-
         self.folder.mkdir(parents=True, exist_ok=True)
-        head = json.dumps({"manifest": _HEADER, "format": 1, "kind": kind,
-                           "pounding": __version__})
+        head = json.dumps({"manifest": _HEADER, "format": 1, "kind": kind})
         with atomic_path(self.path) as tmp:
             tmp.write_text(head + "\n", encoding="utf-8")
 
