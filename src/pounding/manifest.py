@@ -256,7 +256,8 @@ def foreign_entry(folder: Path) -> str | None:
         for name in sorted(filenames) + [d for d in dirnames if (here / d).is_symlink()]:
             p = here / name
             rel = _rel(folder, p)
-            if rel == MANIFEST_FILE or _is_stale(p):
+            if rel == MANIFEST_FILE or _is_stale(p) or (
+                    rel == TEMPORARY_MARKER and _is_stale_marker(p)):
                 continue
             m = _TEMP_FILE.match(name)
             if m and pid_alive(int(m["pid"])):
@@ -277,6 +278,16 @@ def foreign_entry(folder: Path) -> str | None:
                             "still running)")
                 return f"{rel}/ (a folder pounding did not make)"
     return None
+
+
+def _is_stale_marker(p: Path) -> bool:
+    """Whether ``p`` is the marker of a temporary folder moved into place as an output
+    folder by a process killed before it removed the marker (beside a manifest)."""
+    if p.is_symlink() or not p.is_file() or not (p.parent / MANIFEST_FILE).is_file():
+        return False
+    marker = _marker(p.parent)
+    return (marker is not None and isinstance(marker.get("pid"), int)
+            and not pid_alive(marker["pid"]))
 
 
 def _is_stale(p: Path) -> bool:
@@ -425,6 +436,8 @@ def remove_stale(folder: Path, restore: Path | None = None) -> None:
     put back there, else removed by its manifest."""
     if not folder.is_dir() or folder.is_symlink():
         return
+    if _is_stale_marker(folder / TEMPORARY_MARKER):
+        (folder / TEMPORARY_MARKER).unlink()
     for p in sorted(folder.iterdir()):
         if not _is_stale(p):
             continue
@@ -457,7 +470,6 @@ def publish_folder(tmp: Path, out: Path) -> None:
     ``.<name>.old-<pid>-…``, and removed file by file from its manifest once the new one
     is in place; if this process is killed in between, :func:`remove_stale` puts it back
     or finishes the removal."""
-    (tmp / TEMPORARY_MARKER).unlink(missing_ok=True)
     old = None
     if out.exists():
         old = make_temporary_folder(out.absolute().parent, out.name, "old", holds=[out.name])
@@ -470,6 +482,7 @@ def publish_folder(tmp: Path, out: Path) -> None:
             (old / TEMPORARY_MARKER).unlink(missing_ok=True)
             old.rmdir()
         raise
+    (out / TEMPORARY_MARKER).unlink()  # killed before this: remove_stale removes it
     if old is not None:
         with contextlib.suppress(OSError):
             remove_outputs(old / out.name)

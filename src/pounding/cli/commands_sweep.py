@@ -181,6 +181,18 @@ def plot_cmd(
     df = load_results(results)
     fig, xs, ys = plot_sweep(df, x=x, y=y, measure=measure, kind=kind, reduce=reduce)
     folder = results if results.is_dir() else results.parent
-    target = out if out is not None else folder / default_figure_name(measure, xs, ys)
-    save_figure(fig, target, dpi=dpi)
+    if out is not None:
+        target = out
+        save_figure(fig, target, dpi=dpi)
+    else:  # beside the table: pounding's own file, in the folder's manifest
+        from pounding.manifest import Manifest
+
+        target = folder / default_figure_name(measure, xs, ys)
+        manifest = Manifest(folder)
+        if manifest.exists():
+            manifest.check_free(target)
+            with manifest.write(target) as tmp:
+                save_figure(fig, tmp, dpi=dpi)
+        else:
+            save_figure(fig, target, dpi=dpi)
     console.print(f"figure in [bold]{target}[/]", highlight=False)

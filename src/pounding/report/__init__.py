@@ -18,7 +18,9 @@ Every text taken from the files is HTML-escaped; every quantity carries its unit
   and the main measure plotted against each swept parameter.
 
 The report only reads the folder; it writes nothing there but the report itself (written
-atomically, :func:`pounding.io.write_text`). See ``docs/report.md``.
+atomically, :func:`pounding.io.write_text`; ``report.html`` is added to the folder's manifest,
+:mod:`pounding.manifest`, so that ``--overwrite`` may replace it, and an existing
+``report.html`` pounding did not write is not replaced). See ``docs/report.md``.
 
 The package, by concept: this module (what a folder is, writing the page);
 :mod:`~pounding.report.run` with :mod:`~pounding.report.run_folder` (reading it),
@@ -116,6 +118,12 @@ def write_report(results_dir: str | os.PathLike[str],
     if target.is_dir():
         raise ValueError(f"report: --out {target} is a folder; give a file name such as "
                          f"{target / DEFAULT_NAME}")
+    if out is None:
+        from pounding.manifest import Manifest
+
+        manifest = Manifest(folder)
+        if manifest.exists():  # pounding's own file in its folder: listed, so replaceable
+            return manifest.write_text(target, text)
     return write_text(target, text)
 
 
