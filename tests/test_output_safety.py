@@ -392,3 +392,15 @@ def test_an_out_outside_is_fine_when_given_on_the_command_line(tmp_path, work, c
                     "--no-figures")
     assert code == 0, err
     assert (tmp_path / "x" / "runs.csv").is_file()
+
+
+def test_a_figure_plot_puts_beside_the_table_is_pounding_s_and_goes_with_overwrite(tmp_path,
+                                                                                  capsys):
+    path = sweep_file(tmp_path, '[grid]\n"contact.gap" = [0.01, 0.02]\n')
+    out = tmp_path / "out"
+    assert cli(capsys, "sweep", str(path), "--scheduler", "synchronous")[0] == 0
+    assert cli(capsys, "plot", str(out), "--x", "contact.gap")[0] == 0
+    [figure] = [p for p in out.glob("*.png")]
+    assert figure.name in Manifest(out).entries()
+    assert cli(capsys, "sweep", str(path), "--scheduler", "synchronous", "--overwrite")[0] == 0
+    assert not figure.exists() and (out / "results.parquet").is_file()

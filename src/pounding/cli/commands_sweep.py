@@ -49,7 +49,9 @@ def sweep_cmd(
         "--histories", help="Write time histories per case: netcdf, zarr or none "
                             "(default: histories of the sweep file).", show_default=False)] = None,
     overwrite: Annotated[bool, typer.Option(
-        "--overwrite", help="Start afresh: discard finished cases in the output folder.")] = False,
+        "--overwrite", help="Start afresh: discard finished cases in the output folder (only "
+                            "the files pounding wrote there; refused if it holds others).")
+] = False,
 ) -> None:
     """Run a parameter sweep on Dask; resumable: a re-run does only the missing cases.
 
