@@ -127,7 +127,11 @@ def test_overwrite_refuses_an_earlier_run_holding_anything_else(tmp_path, capsys
 
 
 def test_overwrite_replaces_its_own_output_with_the_report_written_into_it(tmp_path, capsys,
-                                                                          earlier_run):
+                                                                          earlier_run,
+                                                                          monkeypatch):
+    import pounding.report as report
+
+    monkeypatch.setattr(report, "render_report", lambda folder: "<html>the report</html>")
     model, earlier = earlier_run
     out = copy_of(earlier, tmp_path / "out")
     (out / "report.html").write_text("not pounding's")
@@ -316,10 +320,22 @@ def test_resume_removes_what_a_sweep_killed_while_consolidating_left(tmp_path, c
                                  "a file pounding wrote); move it away or choose another --out"]
     assert snapshot(out) == before
     (out / "parts" / ".mine").unlink()
+    # the figure pounding plot puts beside the table is pounding's: listed, and replaced
+    assert cli(capsys, "plot", str(out), "--x", "contact.gap")[0] == 0
+    [figure] = list(out.glob("*.png"))
+    assert figure.name in Manifest(out).entries()
     assert cli(capsys, "sweep", str(path), "--scheduler", "synchronous", "--overwrite")[0] == 0
     assert sorted(Manifest(out).entries()) == sorted(
         ["sweep.json", "results.parquet",
          *(f"parts/{p.name}" for p in (out / "parts").glob("part-*.parquet"))])
+    assert not figure.exists()
+    # a run never replaces a sweep's folder, even with --overwrite
+    before = snapshot(out)
+    code, err = cli(capsys, "run", str(tmp_path / "short.toml"), "--out", str(out),
+                    "--overwrite")
+    assert code == 2 and err == [f"error: out: not replacing {out}: it holds the output of a "
+                                 "sweep, not of a run; choose another --out"]
+    assert snapshot(out) == before
 
 
 def test_a_sweep_folder_written_before_manifests_is_not_replaced(tmp_path, capsys):
@@ -393,14 +409,3 @@ def test_an_out_outside_is_fine_when_given_on_the_command_line(tmp_path, work, c
     assert code == 0, err
     assert (tmp_path / "x" / "runs.csv").is_file()
 
-
-def test_a_figure_plot_puts_beside_the_table_is_pounding_s_and_goes_with_overwrite(tmp_path,
-                                                                                  capsys):
-    path = sweep_file(tmp_path, '[grid]\n"contact.gap" = [0.01, 0.02]\n')
-    out = tmp_path / "out"
-    assert cli(capsys, "sweep", str(path), "--scheduler", "synchronous")[0] == 0
-    assert cli(capsys, "plot", str(out), "--x", "contact.gap")[0] == 0
-    [figure] = [p for p in out.glob("*.png")]
-    assert figure.name in Manifest(out).entries()
-    assert cli(capsys, "sweep", str(path), "--scheduler", "synchronous", "--overwrite")[0] == 0
-    assert not figure.exists() and (out / "results.parquet").is_file()

@@ -136,7 +136,10 @@ class Manifest:
         if not self.exists():
             return {}
         found: dict[str, Entry] = {}
-        for rec in self._lines()[1:]:
+        lines = self._lines()
+        if isinstance(lines[0], dict) and lines[0].get("manifest") == _HEADER:
+            lines = lines[1:]
+        for rec in lines:
             with contextlib.suppress(KeyError, TypeError, ValueError):
                 assert rec is not None
                 e = Entry(str(rec["path"]), int(rec["size"]), str(rec["sha256"]))
@@ -177,6 +180,9 @@ class Manifest:
         e = (self.entries() if entries is None else entries).get(_rel(self.folder, target))
         if e is None or target.is_symlink() or not target.is_file():
             return False
+        real = Path(os.path.realpath(target))
+        if real.parent != Path(os.path.realpath(self.folder)) / Path(e.path).parent:
+            return False  # reached through a symlinked folder: not where pounding wrote it
         if target.stat().st_size != e.size:
             return False
         return _file_hash(target)[1] == e.sha256

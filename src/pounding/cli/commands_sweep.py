@@ -192,7 +192,6 @@ def plot_cmd(
         target = folder / default_figure_name(measure, xs, ys)
         manifest = Manifest(folder)
         if manifest.exists():
-            manifest.check_free(target)
             with manifest.write(target) as tmp:
                 save_figure(fig, tmp, dpi=dpi)
         else:

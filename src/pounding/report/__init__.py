@@ -112,18 +112,21 @@ def write_report(results_dir: str | os.PathLike[str],
     ValueError
         ``results_dir`` is neither a run nor a sweep output, or a file in it is unreadable.
     """
+    from pounding.manifest import Manifest
+
     folder = Path(results_dir)
-    text = render_report(folder)
     target = Path(out) if out is not None else folder / DEFAULT_NAME
     if target.is_dir():
         raise ValueError(f"report: --out {target} is a folder; give a file name such as "
                          f"{target / DEFAULT_NAME}")
-    if out is None:
-        from pounding.manifest import Manifest
-
-        manifest = Manifest(folder)
-        if manifest.exists():  # pounding's own file in its folder: listed, so replaceable
-            return manifest.write_text(target, text)
+    # pounding's own file in its folder: listed in the manifest, so replaceable by
+    # --overwrite; a file of that name pounding did not write is refused before any work
+    manifest = Manifest(folder) if out is None and Manifest(folder).exists() else None
+    if manifest is not None:
+        manifest.check_free(target)
+    text = render_report(folder)
+    if manifest is not None:
+        return manifest.write_text(target, text)
     return write_text(target, text)
 
 

@@ -236,7 +236,11 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
                               + ("; run the sweep again to resume" if saved else ""),
                               exc.errno) from None
         raise
-    results, n_err = _write_results(sweep, done, out_dir)
+    try:
+        results, n_err = _write_results(sweep, done, out_dir)
+    except WriteFailed as exc:
+        raise WriteFailed(exc.target, f"{exc.reason}; {_saved_text(n_total, n_total, out_dir)}; "
+                          "run the sweep again to write the table", exc.errno) from None
     return SweepOutcome(out_dir=out_dir, results=results, n_cases=n_total,
                         n_run=len(pending), n_errors=n_err,
                         wall_time=time.perf_counter() - start, run_time=run_time,
