@@ -203,7 +203,7 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     try:
         # the client first: no output is made for a sweep that cannot start
         with (_client(scheduler, n_workers) if pending else contextlib.nullcontext()) as client:
-            _prepare_out(sweep, out_dir, resume, created)
+            _prepare_out(sweep, out_dir, resume, created, histories=hist is not None)
             if pending:
                 workers = max(1, len(client.scheduler_info(n_workers=-1)["workers"])) \
                     if client is not None else 1

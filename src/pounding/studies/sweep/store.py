@@ -78,7 +78,8 @@ def _check_out(sweep: Sweep, out: Path, overwrite: bool) -> bool:
     return False
 
 
-def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path]) -> None:
+def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path],
+                 histories: bool = False) -> None:
     """Make ``out`` ready (checked by :func:`_check_out`): remove the temporaries of killed
     runs; unless resuming, remove an earlier sweep's files (those its manifest lists) and
     write a new manifest and ``sweep.json``; make the parts folder. What it creates
@@ -101,10 +102,10 @@ def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path]) -> 
         created.append(out / MANIFEST_FILE)
     elif not man.exists():  # a sweep written before manifests: list what is added now
         man.start("sweep")
-    parts = out / PARTS_DIR
-    if not parts.is_dir():
-        parts.mkdir()
-        created.append(parts)
+    for name in (PARTS_DIR, HISTORIES_DIR) if histories else (PARTS_DIR,):
+        if not (out / name).is_dir():
+            (out / name).mkdir()
+            created.append(out / name)
 
 
 def _remove_created(out: Path, created: list[Path]) -> None:
@@ -113,15 +114,16 @@ def _remove_created(out: Path, created: list[Path]) -> None:
     part, a history or a file of an earlier sweep keeps the folder."""
     from pounding.io import remove_empty_folders
 
-    parts = out / PARTS_DIR
-    if parts in created:
-        with contextlib.suppress(OSError):
-            parts.rmdir()  # only if empty
-    made = {p for p in created if p.parent == out and p.name != PARTS_DIR}
+    folders = [out / PARTS_DIR, out / HISTORIES_DIR]
+    for folder in folders:
+        if folder in created:
+            with contextlib.suppress(OSError):
+                folder.rmdir()  # only if empty
+    made = {p for p in created if p.parent == out and p not in folders}
     if made and {p for p in out.iterdir()} == made:
         for p in made:
             p.unlink()
-    remove_empty_folders([p for p in created if p != parts and p not in made])
+    remove_empty_folders([p for p in created if p not in folders and p not in made])
 
 
 def _saved_ids(folder: Path) -> set[str]:
