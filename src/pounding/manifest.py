@@ -17,9 +17,11 @@ The rules built on it (``docs/running.md``, "What pounding promises"):
   ``rmdir`` once empty (:func:`remove_outputs`) — never a whole tree;
 * a process killed outright (SIGKILL) leaves temporaries whose names carry its pid
   (``.<name>.part-<pid>-XXXXXXXX``, ``.<name>.tmp-<pid>-XXXXXXXX``); a later run removes
-  them once that process is gone, and only those (:func:`remove_stale`): a temporary file by
-  its name, a temporary folder only through the marker it was given when made (which
-  lists what may be in it).
+  them once that process is gone, and only those
+  (:func:`pounding.output_folder.remove_stale`): a temporary file by its name, a temporary
+  folder only through the marker it was given when made (which lists what may be in it).
+  This module tells them apart (:func:`is_stale`); :mod:`pounding.output_folder` makes and
+  removes them, and puts a finished folder in place.
 
 A one-line JSON Lines file rather than one JSON document: a sweep adds a line per finished
 batch without rewriting what it recorded before, and a line cut short by a kill is simply
@@ -33,17 +35,15 @@ import hashlib
 import json
 import os
 import re
-import tempfile
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from pounding.io import WriteFailed, atomic_path, failure_reason, pid_alive, umask
+from pounding.io import WriteFailed, atomic_path, failure_reason, pid_alive
 
 __all__ = ["MANIFEST_FILE", "TEMPORARY_MARKER", "Entry", "Manifest", "check_replaceable",
-           "foreign_entry", "make_temporary_folder", "new_output_folder", "normal_permissions",
-           "publish_folder",
-           "remove_outputs", "remove_stale", "remove_temporary_folder"]
+           "files_under", "foreign_entry", "is_stale", "is_stale_marker", "read_marker",
+           "remove_outputs"]
 
 MANIFEST_FILE = ".pounding-manifest.jsonl"
 """The manifest of an output folder (module docstring)."""
@@ -52,8 +52,8 @@ TEMPORARY_MARKER = ".pounding-temporary.json"
 """The marker of a temporary folder: the pid that made it and what may be in it."""
 
 _HEADER = "pounding output folder"
-_TEMP_FILE = re.compile(r"^\.(?P<name>.+)\.part-(?P<pid>\d+)-[a-z0-9_]{8}(\.[^.]+)?$")
-_TEMP_DIR = re.compile(r"^\.(?P<name>.+)\.(?P<kind>tmp|old|stage|part)-(?P<pid>\d+)-"
+TEMP_FILE = re.compile(r"^\.(?P<name>.+)\.part-(?P<pid>\d+)-[a-z0-9_]{8}(\.[^.]+)?$")
+TEMP_DIR = re.compile(r"^\.(?P<name>.+)\.(?P<kind>tmp|old|stage|part)-(?P<pid>\d+)-"
                        r"[a-z0-9_]{8}$")
 _CHUNK = 1 << 20
 
@@ -229,7 +229,7 @@ class Manifest:
 
     def record_tree(self, root: Path) -> None:
         """Record every file under ``root`` (a folder in the manifest's folder)."""
-        self.append(self.entry_of(p) for p in _files_under(root))
+        self.append(self.entry_of(p) for p in files_under(root))
 
     def discard(self, target: Path) -> None:
         """Remove ``target`` if pounding wrote it and it is unchanged; else leave it."""
@@ -237,7 +237,7 @@ class Manifest:
             target.unlink()
 
 
-def _files_under(root: Path) -> list[Path]:
+def files_under(root: Path) -> list[Path]:
     """Every file under ``root`` (symlinks not followed), sorted."""
     out = []
     for dirpath, dirnames, filenames in os.walk(root):
@@ -250,8 +250,9 @@ def foreign_entry(folder: Path) -> str | None:
     """The first entry of ``folder`` that is not a file its manifest lists unchanged, as
     ``"<relative path> (<why>)"``; None if there is none.
 
-    Temporaries of pounding processes no longer running do not count (:func:`remove_stale`
-    removes them); one of a running process is named as such.
+    Temporaries of pounding processes no longer running do not count
+    (:func:`pounding.output_folder.remove_stale` removes them); one of a running process is
+    named as such.
     """
     man = Manifest(folder)
     entries = man.entries()
@@ -262,10 +263,10 @@ def foreign_entry(folder: Path) -> str | None:
         for name in sorted(filenames) + [d for d in dirnames if (here / d).is_symlink()]:
             p = here / name
             rel = _rel(folder, p)
-            if rel == MANIFEST_FILE or _is_stale(p) or (
-                    rel == TEMPORARY_MARKER and _is_stale_marker(p)):
+            if rel == MANIFEST_FILE or is_stale(p) or (
+                    rel == TEMPORARY_MARKER and is_stale_marker(p)):
                 continue
-            m = _TEMP_FILE.match(name)
+            m = TEMP_FILE.match(name)
             if m and pid_alive(int(m["pid"])):
                 return f"{rel} (a temporary file of pounding process {m['pid']}, still running)"
             if rel not in entries:
@@ -275,39 +276,39 @@ def foreign_entry(folder: Path) -> str | None:
         for d in list(dirnames):
             p = here / d
             rel = _rel(folder, p)
-            if p.is_symlink() or _is_stale(p):
+            if p.is_symlink() or is_stale(p):
                 dirnames.remove(d)
             elif rel not in dirs_needed:
-                m = _TEMP_DIR.match(d)
-                if m and pid_alive(int(m["pid"])) and _marker(p) is not None:
+                m = TEMP_DIR.match(d)
+                if m and pid_alive(int(m["pid"])) and read_marker(p) is not None:
                     return (f"{rel}/ (a temporary folder of pounding process {m['pid']}, "
                             "still running)")
                 return f"{rel}/ (a folder pounding did not make)"
     return None
 
 
-def _is_stale_marker(p: Path) -> bool:
+def is_stale_marker(p: Path) -> bool:
     """Whether ``p`` is the marker of a temporary folder moved into place as an output
     folder by a process killed before it removed the marker (beside a manifest)."""
     if p.is_symlink() or not p.is_file() or not (p.parent / MANIFEST_FILE).is_file():
         return False
-    marker = _marker(p.parent)
+    marker = read_marker(p.parent)
     return (marker is not None and isinstance(marker.get("pid"), int)
             and not pid_alive(marker["pid"]))
 
 
-def _is_stale(p: Path) -> bool:
+def is_stale(p: Path) -> bool:
     """Whether ``p`` is a temporary of a pounding process no longer running: a file named
     as :func:`pounding.io.atomic_path` names them, or a folder carrying the marker of
-    :func:`make_temporary_folder` with the pid of its name."""
+    :func:`pounding.output_folder.make_temporary_folder` with the pid of its name."""
     if p.is_symlink():
         return False
-    m = _TEMP_FILE.match(p.name)
+    m = TEMP_FILE.match(p.name)
     if m and p.is_file():
         return not pid_alive(int(m["pid"]))
-    m = _TEMP_DIR.match(p.name)
+    m = TEMP_DIR.match(p.name)
     if m and p.is_dir():
-        marker = _marker(p)
+        marker = read_marker(p)
         return (marker is not None and marker.get("pid") == int(m["pid"])
                 and not pid_alive(int(m["pid"])))
     return False
@@ -373,172 +374,9 @@ def remove_outputs(folder: Path, keep_folder: bool = False) -> None:
             folder.rmdir()
 
 
-def make_temporary_folder(parent: Path, name: str, kind: str, holds: Iterable[str]) -> Path:
-    """Make a private folder ``parent/.<name>.<kind>-<pid>-XXXXXXXX`` marked as pounding's
-    (:data:`TEMPORARY_MARKER`): its pid, and ``holds``, the names (relative paths; ending
-    ``/**``: a whole tree, e.g. a Zarr store) of what may be put in it."""
-    tmp = Path(tempfile.mkdtemp(prefix=f".{name}.{kind}-{os.getpid()}-", dir=parent))
-    (tmp / TEMPORARY_MARKER).write_text(json.dumps(
-        {"marker": "pounding temporary folder", "pid": os.getpid(), "holds": list(holds)}),
-        encoding="utf-8")
-    return tmp
-
-
-def _marker(folder: Path) -> dict | None:
+def read_marker(folder: Path) -> dict | None:
     with contextlib.suppress(OSError, ValueError):
         m = json.loads((folder / TEMPORARY_MARKER).read_text(encoding="utf-8"))
         if isinstance(m, dict) and isinstance(m.get("holds"), list):
             return m
     return None
-
-
-def remove_temporary_folder(tmp: Path) -> None:
-    """Remove a temporary folder of :func:`make_temporary_folder` (of this process, or of
-    one no longer running): the names its marker lists and its manifest's files, pounding's
-    temporaries, the marker, then the folder if empty. An entry it does not list stays, and
-    so does the folder then."""
-    marker = _marker(tmp) or {"holds": []}
-    for pattern in marker["holds"]:
-        if not isinstance(pattern, str) or pattern.startswith(("/", "..")) or "/../" in pattern:
-            continue
-        if pattern.endswith("/**"):
-            _remove_tree(tmp / pattern[:-3])
-        else:
-            with contextlib.suppress(IsADirectoryError, PermissionError):
-                (tmp / pattern).unlink(missing_ok=True)
-    if Manifest(tmp).exists():
-        remove_outputs(tmp, keep_folder=True)
-    for p in tmp.iterdir():
-        if _TEMP_FILE.match(p.name) and p.is_file() and not p.is_symlink():
-            p.unlink(missing_ok=True)
-    (tmp / TEMPORARY_MARKER).unlink(missing_ok=True)
-    with contextlib.suppress(OSError):
-        tmp.rmdir()
-
-
-def _remove_tree(root: Path) -> None:
-    """Remove the tree ``root`` listed in a marker as written by a library (a Zarr store)
-    inside pounding's private temporary folder, files first, folders once empty; symlinks
-    are removed as links, never followed."""
-    if root.is_symlink() or not root.is_dir():
-        return
-    for dirpath, dirnames, filenames in os.walk(root, topdown=False):
-        for f in filenames:
-            with contextlib.suppress(OSError):
-                (Path(dirpath) / f).unlink()
-        for d in dirnames:
-            p = Path(dirpath) / d
-            with contextlib.suppress(OSError):
-                p.unlink() if p.is_symlink() else p.rmdir()
-    with contextlib.suppress(OSError):
-        root.rmdir()
-
-
-def remove_stale(folder: Path, restore: Path | None = None) -> None:
-    """Remove from ``folder`` the temporaries of pounding processes no longer running:
-    files ``.<name>.part-<pid>-XXXXXXXX[.suffix]`` and marked temporary folders
-    (:func:`make_temporary_folder`). A folder ``.<name>.old-<pid>-…`` holds an earlier
-    output a killed run was replacing: if ``restore`` (the output folder) is missing it is
-    put back there, else removed by its manifest."""
-    if not folder.is_dir() or folder.is_symlink():
-        return
-    if _is_stale_marker(folder / TEMPORARY_MARKER):
-        (folder / TEMPORARY_MARKER).unlink()
-    for p in sorted(folder.iterdir()):
-        if not _is_stale(p):
-            continue
-        if p.is_file():
-            p.unlink(missing_ok=True)
-            continue
-        m = _TEMP_DIR.match(p.name)
-        assert m is not None
-        if m["kind"] != "old":
-            remove_temporary_folder(p)
-            continue
-        for held in (_marker(p) or {"holds": []})["holds"]:
-            old = p / str(held)
-            if "/" in str(held) or not old.is_dir() or old.is_symlink():
-                continue
-            if restore is not None and held == restore.name and not restore.exists():
-                with contextlib.suppress(OSError):
-                    os.replace(old, restore)
-            elif Manifest(old).exists() and foreign_entry(old) is None:
-                remove_outputs(old)
-        (p / TEMPORARY_MARKER).unlink(missing_ok=True)
-        with contextlib.suppress(OSError):
-            p.rmdir()
-
-
-def publish_folder(tmp: Path, out: Path) -> None:
-    """Move the complete output folder ``tmp`` (a temporary folder of this process, its
-    manifest written) to ``out``. An earlier output there (checked replaceable by the
-    caller, :func:`check_replaceable`) is moved aside first, into a marked folder
-    ``.<name>.old-<pid>-…``, and removed file by file from its manifest once the new one
-    is in place; if this process is killed in between, :func:`remove_stale` puts it back
-    or finishes the removal."""
-    old = None
-    if out.exists():
-        old = make_temporary_folder(out.absolute().parent, out.name, "old", holds=[out.name])
-        os.replace(out, old / out.name)
-    try:
-        os.replace(tmp, out)
-    except BaseException:
-        if old is not None:
-            os.replace(old / out.name, out)
-            (old / TEMPORARY_MARKER).unlink(missing_ok=True)
-            old.rmdir()
-        raise
-    (out / TEMPORARY_MARKER).unlink()  # killed before this: remove_stale removes it
-    if old is not None:
-        with contextlib.suppress(OSError):
-            remove_outputs(old / out.name)
-            (old / TEMPORARY_MARKER).unlink(missing_ok=True)
-            old.rmdir()
-
-
-@contextlib.contextmanager
-def new_output_folder(out: Path, kind: str, holds: Iterable[str],
-                      check: Callable[[], None]) -> Iterator[Path]:
-    """Build an output folder whole, then put it in place: yield a marked temporary folder
-    beside ``out`` (``.<name>.tmp-<pid>-…``, :func:`make_temporary_folder` with ``holds``)
-    to write into; on success record every file in it in a new manifest of ``kind``, give
-    them the usual permissions, call ``check`` (the target may still be replaced: it
-    raises if not) and move the folder to ``out`` (:func:`publish_folder`). On any failure
-    the temporary folder is removed (with the parent folders made for it) and ``out`` is
-    as it was; a :class:`pounding.io.WriteFailed` then names the file under ``out``."""
-    import shutil
-
-    from pounding.io import make_folders, remove_empty_folders
-
-    parent = out.absolute().parent
-    created = make_folders(parent)
-    tmp = make_temporary_folder(parent, out.name, "tmp", [*holds, MANIFEST_FILE])
-    try:
-        yield tmp
-        man = Manifest(tmp)
-        man.start(kind)
-        man.append(man.entry_of(p) for p in _files_under(tmp)
-                   if p.name not in (TEMPORARY_MARKER, MANIFEST_FILE) or p.parent != tmp)
-        normal_permissions(tmp)
-        remove_stale(parent, restore=out.absolute())
-        check()
-        publish_folder(tmp, out)
-    except BaseException as exc:
-        if tmp.is_dir():
-            shutil.rmtree(tmp, ignore_errors=True)  # made whole by this process
-        remove_empty_folders(created)
-        if isinstance(exc, WriteFailed):
-            raise exc.moved(tmp, out) from None
-        raise
-
-
-def normal_permissions(folder: Path) -> None:
-    """Temporary files and folders are private (0600/0700): give the finished ones the
-    permissions an ordinary ``mkdir``/``open`` would."""
-    mask = umask()
-    folder.chmod(0o777 & ~mask)
-    for p in _files_under(folder):
-        p.chmod(0o666 & ~mask)
-    for dirpath, dirnames, _ in os.walk(folder):
-        for d in dirnames:
-            (Path(dirpath) / d).chmod(0o777 & ~mask)

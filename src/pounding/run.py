@@ -2,7 +2,7 @@
 
 :func:`run` never leaves a half-written output folder. Everything is written into a hidden
 temporary folder beside the target (``.<name>.tmp-<pid>-XXXXXXXX``, marked as pounding's,
-:func:`pounding.manifest.make_temporary_folder`) with a manifest of the files written
+:func:`pounding.output_folder.make_temporary_folder`) with a manifest of the files written
 (:mod:`pounding.manifest`), and moved into place only when complete; if anything fails (a
 full disk, an error, Ctrl-C or SIGTERM) the temporary folder is removed and a previous
 output folder is left untouched. A run killed outright (SIGKILL) cannot clean up after
@@ -26,7 +26,8 @@ from pathlib import Path
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
 from pounding.io import check_writable, write_text
-from pounding.manifest import check_replaceable, new_output_folder, remove_stale
+from pounding.manifest import check_replaceable
+from pounding.output_folder import new_output_folder, remove_stale
 from pounding.plot.registry import RUN_FIGURES
 from pounding.result import Result
 
@@ -92,7 +93,7 @@ def _check_target(out_dir: Path, overwrite: bool) -> None:
 
 def _remove_stale(out_dir: Path) -> None:
     """Remove what a run into ``out_dir`` killed outright (SIGKILL, power loss) left behind
-    (:func:`pounding.manifest.remove_stale`): its temporary folder beside ``out_dir``, and
+    (:func:`pounding.output_folder.remove_stale`): its temporary folder beside ``out_dir``, and
     if it was killed while replacing an earlier output, put that output back. Temporaries
     in ``out_dir`` itself (of a killed ``pounding report``) go too. Only what pounding
     marked, of processes no longer running, is touched."""

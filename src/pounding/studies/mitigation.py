@@ -228,7 +228,7 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
 
     from pounding.integrate import simulate
     from pounding.io import atomic_path, check_writable, write_text
-    from pounding.manifest import new_output_folder, remove_stale
+    from pounding.output_folder import new_output_folder, remove_stale
     from pounding.plot import save_figure
 
     study, here = load_mitigation(path)

@@ -14,8 +14,8 @@
 
 Every file is written atomically, all of them moved into place together, each recorded
 in the folder's manifest (:func:`write_outputs`), and depends only on the runs and the
-study: a re-run writes the same bytes (figures aside: their metadata are fixed, their pixels too on one
-machine).
+study: a re-run writes the same bytes (figures aside: their metadata are fixed, their
+pixels too on one machine).
 """
 
 from __future__ import annotations
@@ -172,7 +172,8 @@ def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -
     line, before any is moved).
     """
     from pounding.io import WriteFailed, write_text
-    from pounding.manifest import Manifest, make_temporary_folder, remove_temporary_folder
+    from pounding.manifest import Manifest
+    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
 
     out = plan.out
     man = Manifest(out)

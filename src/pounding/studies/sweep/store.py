@@ -139,9 +139,9 @@ def _saved_ids(folder: Path) -> set[str]:
 
 def _remove_temporaries(out: Path) -> None:
     """Remove what killed runs left half-written in ``out``, ``parts`` and ``histories``
-    (:func:`pounding.manifest.remove_stale`: temporaries named with the pid of a pounding
+    (:func:`pounding.output_folder.remove_stale`: temporaries named with the pid of a pounding
     process no longer running, e.g. ``.results.parquet.part-<pid>-XXXXXXXX.parquet``)."""
-    from pounding.manifest import remove_stale
+    from pounding.output_folder import remove_stale
 
     for folder in (out, out / PARTS_DIR, out / HISTORIES_DIR):
         remove_stale(folder)
@@ -202,7 +202,7 @@ def _write_history(out: Path, cid: str, ds: Any, fmt: str) -> None:
     if fmt == "netcdf":
         man.write_bytes(folder / f"{cid}.nc", ds.to_netcdf(engine="h5netcdf"))
         return
-    from pounding.manifest import make_temporary_folder, remove_temporary_folder
+    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
 
     target = folder / f"{cid}.zarr"
     man.check_free(target)  # (a folder there is refused)
