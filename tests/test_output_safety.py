@@ -352,7 +352,9 @@ def test_a_sweep_folder_written_before_manifests_is_not_replaced(tmp_path, capsy
 
 # ------------------------------------------------------------------ names and out of studies
 # Run from tmp_path/a/b, so that even a name or out that escaped would stay in tmp_path.
-BAD_NAMES = ["../../escaped", "{tmp}/abs", "a/b", ".hidden", "a\\\\b"]
+BAD_NAMES = [  # (as written in TOML, the value)
+    ("../../escaped", "../../escaped"), ("{tmp}/abs", "{tmp}/abs"), ("a/b", "a/b"),
+    (".hidden", ".hidden"), ("a\\\\b", "a\\b"), ("a\\u0000b", "a\0b")]
 
 
 @pytest.fixture
@@ -363,26 +365,25 @@ def work(tmp_path, monkeypatch) -> Path:
     return folder
 
 
-@pytest.mark.parametrize("name", BAD_NAMES)
-def test_a_sweep_name_is_a_label_not_a_path(tmp_path, work, capsys, name):
-    name = name.format(tmp=tmp_path)
-    path = sweep_file(work, '[grid]\n"contact.gap" = [0.01]\n', head=f'name = "{name}"\n')
+@pytest.mark.parametrize("written, value", BAD_NAMES)
+def test_a_sweep_name_is_a_label_not_a_path(tmp_path, work, capsys, written, value):
+    written, value = written.format(tmp=tmp_path), value.format(tmp=tmp_path)
+    path = sweep_file(work, '[grid]\n"contact.gap" = [0.01]\n', head=f'name = "{written}"\n')
     before = snapshot(tmp_path)
     code, err = cli(capsys, "sweep", str(path), "--scheduler", "synchronous")
-    shown = name.replace("\\\\", "\\")
     assert code == 2 and err == [f"error: {path}: name: a label, not a path: no '/', '\\', NUL "
-                                 f"or leading '.' (got {shown!r})"]
+                                 f"or leading '.' (got {value!r})"]
     assert snapshot(tmp_path) == before
 
 
-@pytest.mark.parametrize("name", BAD_NAMES[:2])
-def test_a_mitigation_name_is_a_label_not_a_path(tmp_path, work, capsys, name):
-    name = name.format(tmp=tmp_path)
-    study = mitigation_file(work, head=f'name = "{name}"\n')
+@pytest.mark.parametrize("written, value", BAD_NAMES[:2])
+def test_a_mitigation_name_is_a_label_not_a_path(tmp_path, work, capsys, written, value):
+    written, value = written.format(tmp=tmp_path), value.format(tmp=tmp_path)
+    study = mitigation_file(work, head=f'name = "{written}"\n')
     before = snapshot(tmp_path)
     code, err = cli(capsys, "mitigate", str(study))
     assert code == 2 and len(err) == 1 and "name: a label, not a path" in err[0]
-    assert f"(got {name!r})" in err[0] and snapshot(tmp_path) == before
+    assert f"(got {value!r})" in err[0] and snapshot(tmp_path) == before
 
 
 @pytest.mark.parametrize("out", ["../x", "{tmp}/elsewhere", ".", "sub/../../x"])

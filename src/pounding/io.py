@@ -271,6 +271,8 @@ def study_out(here: str | os.PathLike[str], out: str, where: str) -> tuple[Path,
     not followed; an output folder given on the command line (``--out``) is not checked.
     """
     base = Path(os.path.abspath(here))
+    if not out or "\0" in out:
+        return base, f"{where}: out: a folder name (got {out!r})"
     target = Path(os.path.normpath(base / Path(out).expanduser()))
     if target == base or not target.is_relative_to(base):
         return target, (f"{where}: out: {out!r} is not a folder inside the study file's folder "
