@@ -159,19 +159,29 @@ def test_out_in_a_read_only_folder_is_one_line(tmp_path, capsys):
 
 def test_a_killed_runs_leftovers_are_cleaned_by_the_next_run(tmp_path, capsys):
     # what `kill -9` during a run leaves: its temporary folder, named with its (dead) pid
+    # and marked as pounding's (pounding.output_folder.make_temporary_folder)
+    import json
+
+    from pounding.manifest import TEMPORARY_MARKER
+
+    def marked(name: str, pid: int, holds: list[str]) -> Path:
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / TEMPORARY_MARKER).write_text(json.dumps({"pid": pid, "holds": holds}))
+        return folder
+
     dead = 2**22 + 12345  # above the kernel's pid limit: never a live process
-    stale = tmp_path / f".out.tmp-{dead}-abcd"
-    stale.mkdir()
+    stale = marked(f".out.tmp-{dead}-abcdefgh", dead, ["timehistories.nc"])
     (stale / "timehistories.nc").write_text("half written")
-    live = tmp_path / f".out.tmp-{os.getpid()}-efgh"  # a run still going: left alone
-    live.mkdir()
+    live = marked(f".out.tmp-{os.getpid()}-efghijkl", os.getpid(), [])  # a run still going
+    unmarked = tmp_path / f".out.tmp-{dead}-mnopqrst"  # not pounding's: left alone
+    unmarked.mkdir()
     short = BASE + "[solver]\nduration = 1.0\n"
     code, _ = run_file(tmp_path, short, capsys)
     assert code == 0
-    assert not stale.exists() and live.exists()
+    assert not stale.exists() and live.exists() and unmarked.exists()
     # killed while replacing an earlier output: that output is put back
-    old = tmp_path / f".out.old-{dead}-ijkl"
-    old.mkdir()
+    old = marked(f".out.old-{dead}-ijklmnop", dead, ["out"])
     os.replace(tmp_path / "out", old / "out")
     code, _ = run_file(tmp_path, short, capsys, "--overwrite")
     assert code == 0 and (tmp_path / "out" / "summary.json").is_file() and not old.exists()

@@ -18,6 +18,7 @@ import pounding.run as run_mod
 from pounding.cli import main
 from pounding.config import dump_toml, parse_config
 from pounding.integrate import simulate
+from pounding.manifest import MANIFEST_FILE
 from pounding.plot.loops import plot_hysteresis
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
 from pounding.result import IMPACT_COLUMNS
@@ -28,6 +29,8 @@ SEED = ROOT / "examples" / "seed_sdof_pair.toml"
 # the files of a run of a model with linear storeys (no storey hysteresis figure)
 ALL_FILES = sorted([*OUTPUT_FILES.values(),
                     *(name for key, name in FIGURE_FILES.items() if key != "storey_figure")])
+# ... and the manifest of the files a run wrote (what --overwrite may replace)
+IN_FOLDER = sorted([MANIFEST_FILE, *ALL_FILES])
 
 
 def short_model(tmp_path: Path, duration: float = 3.0, **changes: Any) -> Path:
@@ -60,7 +63,7 @@ def test_run_seed_example_writes_everything(tmp_path: Path,
                      "peak drift", "dissipated in contacts [J]", "energy-balance error",
                      "wall time [s]", "B1F1-B2F1", str(out)):
         assert expected in text, expected
-    assert sorted(p.name for p in out.iterdir()) == ALL_FILES
+    assert sorted(p.name for p in out.iterdir()) == IN_FOLDER
     assert leftovers(tmp_path) == []
 
     with xr.open_dataset(out / "timehistories.nc", engine="h5netcdf") as ds:
@@ -108,7 +111,7 @@ def test_existing_output_needs_overwrite(tmp_path: Path,
     other.mkdir()
     (other / "thesis.tex").write_text("x")
     assert main(["run", str(model), "--out", str(other), "--overwrite"]) == 2
-    assert "not a pounding output" in capsys.readouterr().err
+    assert "has no manifest of pounding's files" in capsys.readouterr().err
     assert [p.name for p in other.iterdir()] == ["thesis.tex"]
 
 
@@ -157,7 +160,7 @@ def test_demo(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["demo", "--out", str(out)]) == 0
     text = capsys.readouterr().out
     assert "two 10-storey buildings" in text and "B1F10-B2F10" in text
-    assert sorted(p.name for p in out.iterdir()) == ALL_FILES
+    assert sorted(p.name for p in out.iterdir()) == IN_FOLDER
     summary = json.loads((out / "summary.json").read_text())
     assert summary["n_impacts"] > 10 and len(summary["peak_displacement_m"]) == 20
 
@@ -253,7 +256,7 @@ def test_figures_have_units_and_handle_no_contacts(tmp_path: Path) -> None:
     one = parse_config({"record": {"bundled": "el_centro", "duration": 1.0},
                         "building": [{"mass": 1e5, "period": 0.5}]})
     res = run_config(one, tmp_path / "single")
-    assert sorted(p.name for p in res.out_dir.iterdir()) == ALL_FILES
+    assert sorted(p.name for p in res.out_dir.iterdir()) == IN_FOLDER
     assert res.result.n_impacts == 0
 
 

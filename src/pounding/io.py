@@ -1,41 +1,133 @@
 """Loss-free output: every file is written to a temporary name beside its target and moved
 into place only when complete, so an interrupted run never leaves a half-written file; and
-the checks and folder bookkeeping every output folder (of a run, of a sweep) shares.
+the checks and folder bookkeeping every output folder (of a run, of a sweep) shares (what
+pounding wrote in a folder, and may remove, is :mod:`pounding.manifest`).
+
+A temporary name carries the pid of the process writing it
+(``.<name>.part-<pid>-XXXXXXXX<suffix>``), so a later run can tell the leftovers of a killed
+process from those of one still running. A write that fails (a full disk, a file-size
+limit) raises :class:`WriteFailed`: one line naming the file and the cause, the temporary
+removed, the target as it was.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
+import re
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 
+class WriteFailed(OSError):
+    """A file could not be written: ``cannot write <target>: <cause>`` (e.g. ``no space
+    left on device``, ``file too large``). Nothing was left in its place.
+
+    Attributes
+    ----------
+    target : Path
+        The file that was being written.
+    reason : str
+        The cause, in words.
+    """
+
+    def __init__(self, target: str | os.PathLike[str], reason: str,
+                 code: int | None = None) -> None:
+        self.target = Path(target)
+        self.reason = reason
+        super().__init__(code or errno.EIO, f"cannot write {self.target}: {reason}")
+
+    def __str__(self) -> str:
+        return str(self.strerror)
+
+    def moved(self, old: Path, new: Path) -> WriteFailed:
+        """The same failure told of ``new/…`` for a file written under ``old/…`` (a
+        temporary folder renamed into place when complete)."""
+        try:
+            target = new / self.target.relative_to(old)
+        except ValueError:
+            target = self.target
+        return WriteFailed(target, self.reason, self.errno)
+
+
+def failure_reason(exc: BaseException) -> tuple[str, int | None]:
+    """The cause of a failed write in words (``no space left on device``) and its errno:
+    from the exception's errno, or an ``[errno N]`` in its message (pyarrow's)."""
+    code = getattr(exc, "errno", None)
+    if not code:
+        m = re.search(r"\[errno (\d+)\]", str(exc), flags=re.IGNORECASE)
+        code = int(m.group(1)) if m else None
+    if code:
+        text = os.strerror(code)
+    else:
+        text = (str(exc).strip().splitlines() or [type(exc).__name__])[0]
+    return (text[:1].lower() + text[1:]), code
+
+
 @contextlib.contextmanager
-def atomic_path(target: str | os.PathLike[str]) -> Iterator[Path]:
+def atomic_path(target: str | os.PathLike[str],
+                before_replace: Callable[[Path], None] | None = None) -> Iterator[Path]:
     """Yield a temporary path in the target's folder; on success move it onto ``target``.
 
     The temporary name keeps the target's suffix, so writers that choose a format from the
     suffix (matplotlib, xarray) behave as they would with the target. On an exception the
-    temporary file is removed and ``target`` is left as it was.
+    temporary file is removed and ``target`` is left as it was; a file-system error (a
+    full disk, a size limit) becomes :class:`WriteFailed`.
+
+    Parameters
+    ----------
+    target : path-like
+        The file to write.
+    before_replace : callable, optional
+        Called with the complete temporary file just before it is moved into place (to
+        record it in a manifest, :mod:`pounding.manifest`).
     """
     target = Path(target)
     if target.exists() and target.is_dir():
         raise IsADirectoryError(f"output: {target} is a directory, not a file")
     target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.part-", suffix=target.suffix,
-                               dir=target.parent)
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.part-{os.getpid()}-",
+                               suffix=target.suffix, dir=target.parent)
     os.close(fd)
     tmp_path = Path(tmp)
     try:
         yield tmp_path
-        os.chmod(tmp_path, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
+        os.chmod(tmp_path, 0o666 & ~umask())  # mkstemp makes 0600; give the usual mode
+        if before_replace is not None:
+            before_replace(tmp_path)
         os.replace(tmp_path, target)
-    except BaseException:
+    except BaseException as exc:
         with contextlib.suppress(FileNotFoundError):
             tmp_path.unlink()
+        if isinstance(exc, OSError) and not isinstance(exc, WriteFailed):
+            reason, code = failure_reason(exc)
+            raise WriteFailed(target, reason, code) from None
         raise
+
+
+def write_bytes(target: str | os.PathLike[str], data: bytes | memoryview) -> Path:
+    """Write ``data`` to ``target`` atomically with plain file I/O and return the target
+    (a failure is :class:`WriteFailed`; used for files serialised in memory, so that a
+    library never meets a full disk)."""
+    with atomic_path(target) as tmp:
+        with open(tmp, "wb") as fh:
+            fh.write(data)
+    return Path(target)
+
+
+def pid_alive(pid: int) -> bool:
+    """Whether a process ``pid`` exists (one of another user counts as alive)."""
+    if pid <= 0:
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True
+    return True
 
 
 def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
@@ -56,8 +148,13 @@ def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
         raise ValueError(f"{p}: not a UTF-8 text file ({exc.reason})") from None
 
 
-def _umask() -> int:
-    mask = os.umask(0)
+def umask() -> int:
+    """The process umask (from /proc where possible, so it is not changed even briefly)."""
+    with contextlib.suppress(OSError, ValueError):
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("Umask:"):
+                return int(line.split()[1], 8)
+    mask = os.umask(0o022)
     os.umask(mask)
     return mask
 
@@ -147,3 +244,38 @@ def remove_empty_folders(created: list[Path]) -> None:
     for p in reversed(created):
         with contextlib.suppress(OSError):
             p.rmdir()
+
+
+def check_label(value: object, where: str, key: str = "name") -> str:
+    """A study's ``name`` (it names the default output folder ``<name>-results``) is a
+    label, not a path: refuse a path separator, NUL, a leading dot (``..``, a hidden
+    folder) or an empty name. Returns the name as text.
+
+    Raises
+    ------
+    ValueError
+        One line naming the key and the value.
+    """
+    text = str(value)
+    if (not text.strip() or any(c in text for c in ("/", "\\", "\0"))
+            or text.startswith(".")):
+        raise ValueError(f"{where}: {key}: a label, not a path: no '/', '\\', NUL or leading "
+                         f"'.' (got {value!r})")
+    return text
+
+
+def study_out(here: str | os.PathLike[str], out: str, where: str) -> tuple[Path, str | None]:
+    """The folder ``out`` of a study file names, relative to the file's folder ``here``,
+    and why it is refused (None if not): a folder outside ``here`` (``"../x"``, an
+    absolute path elsewhere) or ``here`` itself. The check is on the names, symlinks are
+    not followed; an output folder given on the command line (``--out``) is not checked.
+    """
+    base = Path(os.path.abspath(here))
+    if not out or "\0" in out:
+        return base, f"{where}: out: a folder name (got {out!r})"
+    target = Path(os.path.normpath(base / Path(out).expanduser()))
+    if target == base or not target.is_relative_to(base):
+        return target, (f"{where}: out: {out!r} is not a folder inside the study file's folder "
+                        f"{base}; give the output folder on the command line (--out) to "
+                        "write there")
+    return target, None

@@ -1,23 +1,22 @@
 """Run a model file end to end: load, simulate, write every output into one folder.
 
 :func:`run` never leaves a half-written output folder. Everything is written into a hidden
-temporary folder beside the target (``.<name>.tmp-<pid>-XXXX``) and moved into place only
-when complete; if anything fails (or the run is interrupted with Ctrl-C or SIGTERM) the
-temporary folder is removed and a previous output folder is left untouched. A run killed
-outright (SIGKILL) cannot clean up after itself: the next run into the same folder removes
-what it left (and puts back an earlier output it was replacing).
+temporary folder beside the target (``.<name>.tmp-<pid>-XXXXXXXX``, marked as pounding's,
+:func:`pounding.output_folder.make_temporary_folder`) with a manifest of the files written
+(:mod:`pounding.manifest`), and moved into place only when complete; if anything fails (a
+full disk, an error, Ctrl-C or SIGTERM) the temporary folder is removed and a previous
+output folder is left untouched. A run killed outright (SIGKILL) cannot clean up after
+itself: the next run into the same folder removes what it left (and puts back an earlier
+output it was replacing) — only folders marked as made by a process no longer running.
 
-An existing output folder is replaced only with ``overwrite=True``, and only if it looks like
-an earlier output (it holds ``summary.json``) or is empty: the new folder is complete before
-the old one is removed.
+An existing output folder is replaced only with ``overwrite=True``, and only if it is empty
+or holds nothing but the files its manifest lists, unchanged (an earlier run's output):
+the new folder is complete before the old one is removed, file by file.
 """
 
 from __future__ import annotations
 
-import contextlib
 import os
-import shutil
-import tempfile
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -26,7 +25,9 @@ from pathlib import Path
 
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
-from pounding.io import check_writable, make_folders, remove_empty_folders, write_text
+from pounding.io import check_writable, write_text
+from pounding.manifest import check_replaceable
+from pounding.output_folder import new_output_folder, remove_stale
 from pounding.plot.registry import RUN_FIGURES
 from pounding.result import Result
 
@@ -44,6 +45,10 @@ OUTPUT_FILES: dict[str, str] = {
 FIGURE_FILES: dict[str, str] = {key: fig.file for key, fig in RUN_FIGURES.items()}
 """Every figure a run can write (key → file name); a run writes those of its model
 (:func:`pounding.plot.registry.figures_for`)."""
+
+TEMPORARY_HOLDS: tuple[str, ...] = (*OUTPUT_FILES.values(), *FIGURE_FILES.values())
+"""What a run's temporary folder may hold: what a run killed outright leaves is removed by
+these names (:func:`pounding.manifest.remove_temporary_folder`)."""
 
 
 @dataclass(frozen=True)
@@ -83,60 +88,18 @@ def _check_target(out_dir: Path, overwrite: bool) -> None:
         if not overwrite:
             raise ValueError(f"out: {out_dir} already exists; give --overwrite to replace it "
                              "or choose another --out")
-        if any(out_dir.iterdir()) and not (out_dir / OUTPUT_FILES["summary"]).is_file():
-            raise ValueError(f"out: {out_dir} is a non-empty folder that is not a pounding "
-                             "output (no summary.json); not replacing it")
-
-
-def _pid_alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except (PermissionError, OSError):
-        return True
-    return True
+        check_replaceable(out_dir, "run")
 
 
 def _remove_stale(out_dir: Path) -> None:
-    """Remove what a run into ``out_dir`` killed outright (SIGKILL, power loss) left behind:
-    its temporary folder ``.<name>.tmp-<pid>-*``; and if it was killed while replacing an
-    earlier output, put that output back from ``.<name>.old-<pid>-*``. Only folders of
-    processes no longer running are touched."""
-    parent = out_dir.absolute().parent
-    if not parent.is_dir():
-        return
-    for kind in ("old", "tmp"):
-        for p in parent.glob(f".{out_dir.name}.{kind}-*-*"):
-            pid = p.name[len(f".{out_dir.name}.{kind}-"):].split("-", 1)[0]
-            if not pid.isdigit() or _pid_alive(int(pid)):
-                continue
-            held = p / out_dir.name
-            if kind == "old" and held.is_dir() and not out_dir.exists():
-                with contextlib.suppress(OSError):
-                    os.replace(held, out_dir)
-            shutil.rmtree(p, ignore_errors=True)
-
-
-def _umask() -> int:
-    """The process umask (from /proc where possible, so it is not changed even briefly)."""
-    with contextlib.suppress(OSError, ValueError):
-        for line in Path("/proc/self/status").read_text().splitlines():
-            if line.startswith("Umask:"):
-                return int(line.split()[1], 8)
-    old = os.umask(0o022)
-    os.umask(old)
-    return old
-
-
-def _normal_permissions(folder: Path) -> None:
-    """Temporary files and folders are private (0600/0700); give the finished output the
-    permissions an ordinary ``mkdir``/``open`` would."""
-    mask = _umask()
-    folder.chmod(0o777 & ~mask)
-    for f in folder.iterdir():
-        if f.is_file():
-            f.chmod(0o666 & ~mask)
+    """Remove what a run into ``out_dir`` killed outright (SIGKILL, power loss) left behind
+    (:func:`pounding.output_folder.remove_stale`): its temporary folder beside ``out_dir``, and
+    if it was killed while replacing an earlier output, put that output back. Temporaries
+    in ``out_dir`` itself (of a killed ``pounding report``) go too. Only what pounding
+    marked, of processes no longer running, is touched."""
+    remove_stale(out_dir.absolute().parent, restore=out_dir.absolute())
+    if out_dir.is_dir() and not out_dir.is_symlink():
+        remove_stale(out_dir)
 
 
 def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
@@ -166,10 +129,8 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
     model, motion, solver = cfg.build()
     want_figures = cfg.output.figures if figures is None else figures
 
-    created = make_folders(out.absolute().parent)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-{os.getpid()}-",
-                                dir=out.absolute().parent))
-    try:
+    with new_output_folder(out, "run", TEMPORARY_HOLDS,
+                           check=lambda: _check_target(out, overwrite)) as tmp:
         result = simulate(model, motion, progress=progress, **solver)
         files = result.save(tmp)
         source = str(cfg.source) if cfg.source is not None else "(not read from a file)"
@@ -181,27 +142,6 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
                                f"Source: {source}\nRe-run: pounding run model.toml"))
         if want_figures:
             files.update(_write_figures(result, tmp, cfg.output.dpi))
-        _normal_permissions(tmp)
-        # move into place: the old folder (if any) is removed only once the new one is in
-        _check_target(out, overwrite)
-        old = None
-        if out.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-{os.getpid()}-",
-                                        dir=out.absolute().parent))
-            os.replace(out, old / out.name)
-        try:
-            os.replace(tmp, out)
-        except BaseException:
-            if old is not None:
-                os.replace(old / out.name, out)
-                shutil.rmtree(old, ignore_errors=True)
-            raise
-        if old is not None:
-            shutil.rmtree(old, ignore_errors=True)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        remove_empty_folders(created)
-        raise
     files = {k: out / Path(v).name for k, v in files.items()}
     return RunOutput(out_dir=out, files=files, result=result, config=cfg,
                      wall_time=time.perf_counter() - start)

@@ -133,6 +133,78 @@ def test_cli_runs_resumes_and_reports(small, tmp_path, capsys):
     assert "<study>" not in html and "Probability of pounding" in html
 
 
+def _snapshot(folder: Path) -> dict[str, bytes | None]:
+    return {p.relative_to(folder).as_posix(): (p.read_bytes() if p.is_file() else None)
+            for p in sorted(folder.rglob("*"))}
+
+
+def test_overwrite_refuses_a_study_folder_holding_a_file_of_the_users(small, capsys):
+    study, res = small
+    out = res.plan.out
+    mine = out / "notes.txt"
+    mine.write_text("mine")
+    try:
+        before = _snapshot(out)
+        capsys.readouterr()
+        assert main(["fragility", str(study), "--overwrite"]) == 2
+        assert capsys.readouterr().err.strip().splitlines() == [
+            f"error: out: not replacing {out}: it holds notes.txt (not a file pounding wrote); "
+            "move it away or choose another --out"]
+        assert _snapshot(out) == before
+    finally:
+        mine.unlink()
+
+
+def test_a_full_disk_while_writing_the_analysis_keeps_the_earlier_files(small, tmp_path,
+                                                                        monkeypatch):
+    import copy
+    import errno
+    import shutil
+
+    from matplotlib.figure import Figure
+
+    from pounding.io import WriteFailed
+    from pounding.studies.fragility.outputs import write_outputs
+
+    study, res = small
+    plan = copy.copy(res.plan)
+    plan.out = Path(shutil.copytree(res.plan.out, tmp_path / "out"))
+    for name in ("ida.png", "fragility.png", "pounding_vs_gap.png", "pounding_surface.png"):
+        (plan.out / name).unlink(missing_ok=True)
+    before = _snapshot(plan.out)
+    calls = []
+
+    def full(self, fname, **kw):
+        calls.append(fname)
+        if len(calls) == 2:  # the first figure is written, the second meets a full disk
+            raise OSError(errno.ENOSPC, "No space left on device")
+        Path(fname).write_bytes(b"\x89PNG")
+
+    monkeypatch.setattr(Figure, "savefig", full)
+    with pytest.raises(WriteFailed) as info:
+        write_outputs(plan, res.analysis, figures=True)
+    assert str(info.value) == (f"cannot write {plan.out / 'fragility.png'}: no space left on "
+                               "device")
+    assert _snapshot(plan.out) == before  # not one file of the new analysis, nothing left
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ('name = "small <study>"', 'name = "../up"', "name: a label, not a path"),
+    ('out = "small-results"', 'out = "../up"', "out: '../up' is not a folder inside the study "
+                                               "file's folder"),
+])
+def test_a_study_writes_only_in_its_folder_unless_told(tmp_path, capsys, old, new, message):
+    folder = tmp_path / "a"
+    folder.mkdir()
+    study = folder / "study.toml"
+    study.write_text(STUDY.replace(old, new))
+    capsys.readouterr()
+    assert main(["fragility", str(study)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and message in err[0], err
+    assert sorted(p.name for p in tmp_path.rglob("*")) == ["a", "study.toml"]
+
+
 @pytest.mark.parametrize("change, message", [
     ("[suite]\nbundled = true\nbundle = 1", "suite.bundle: unknown key (got 1); did you mean "
                                               "'bundled'?"),

@@ -13,6 +13,7 @@ from pounding import simulate
 from pounding.cli import main
 from pounding.config import load_config
 from pounding.devices import Link
+from pounding.manifest import MANIFEST_FILE
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = ROOT / "examples" / "two_10_storey.toml"
@@ -39,8 +40,8 @@ def test_the_table_is_what_direct_runs_give(tmp_path: Path, capsys):
     out = capsys.readouterr().out
     assert "bare gap" in out and "dashpots" in out
     runs = pd.read_csv(tmp_path / "o" / "runs.csv")
-    assert {p.name for p in (tmp_path / "o").iterdir()} == {"runs.csv", "summary.csv",
-                                                            "study.toml", "mitigation.png"}
+    assert {p.name for p in (tmp_path / "o").iterdir()} == {
+        "runs.csv", "summary.csv", "study.toml", "mitigation.png", MANIFEST_FILE}
     model, motion, kw = load_config(BASE).build()
     bare = simulate(model, motion, **kw)
     row = runs.set_index("option").loc["bare gap"]

@@ -27,7 +27,8 @@ def fragility_cmd(
                             "'synchronous' to run in this process.",
         show_default=False)] = None,
     overwrite: Annotated[bool, typer.Option(
-        "--overwrite", help="Start afresh: discard the runs saved in the output folder.")
+        "--overwrite", help="Start afresh: discard the runs saved in the output folder (only "
+                            "the files pounding wrote there; refused if it holds others).")
     ] = False,
     figures: Annotated[bool, typer.Option(
         "--figures/--no-figures", help="Draw the figures (IDA, fragility, gap).")] = True,

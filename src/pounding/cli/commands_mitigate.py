@@ -19,7 +19,8 @@ def mitigate_cmd(
         "--out", "-o", help="Output folder (default: out of the study file, else "
                             "<name>-results beside it).", show_default=False)] = None,
     overwrite: Annotated[bool, typer.Option(
-        "--overwrite", help="Replace the files of an earlier study in the folder.")] = False,
+        "--overwrite", help="Replace the output folder of an earlier study (only one holding "
+                            "nothing but the files of its manifest).")] = False,
     figures: Annotated[bool, typer.Option(
         "--figures/--no-figures", help="Draw the trade-off figure.")] = True,
 ) -> None:

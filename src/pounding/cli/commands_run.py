@@ -279,8 +279,9 @@ OutOpt = Annotated[Path | None, typer.Option(
     "--out", "-o", help="Output folder (default: MODEL-STEM-results in the current folder). "
                         "Written complete or not at all.", show_default=False)]
 OverwriteOpt = Annotated[bool, typer.Option(
-    "--overwrite", help="Replace the output folder if it exists (only an earlier pounding "
-                        "output or an empty folder; the old one goes once the new is complete).")]
+    "--overwrite", help="Replace the output folder if it exists: only an empty folder or an "
+                        "earlier run's, holding nothing but the files of its manifest; the old "
+                        "one goes, file by file, once the new is complete.")]
 FiguresOpt = Annotated[bool | None, typer.Option(
     "--figures/--no-figures", help="Write the PNG figures (default: [output] figures of the "
                                    "model file, true if not given).", show_default=False)]
@@ -312,7 +313,8 @@ def demo_cmd(
     overwrite: Annotated[bool, typer.Option(
         "--overwrite/--no-overwrite",
         help="Replace an earlier output in the folder (default: yes, so the demo can be run "
-             "again; a folder that is not a pounding output is never replaced).")] = True,
+             "again; a folder holding anything pounding did not write is never replaced).")
+] = True,
     figures: FiguresOpt = None,
 ) -> None:
     """Two 10-storey buildings pounding under El Centro 1940: the bundled example

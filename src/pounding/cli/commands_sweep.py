@@ -49,7 +49,9 @@ def sweep_cmd(
         "--histories", help="Write time histories per case: netcdf, zarr or none "
                             "(default: histories of the sweep file).", show_default=False)] = None,
     overwrite: Annotated[bool, typer.Option(
-        "--overwrite", help="Start afresh: discard finished cases in the output folder.")] = False,
+        "--overwrite", help="Start afresh: discard finished cases in the output folder (only "
+                            "the files pounding wrote there; refused if it holds others).")
+] = False,
 ) -> None:
     """Run a parameter sweep on Dask; resumable: a re-run does only the missing cases.
 
@@ -181,6 +183,17 @@ def plot_cmd(
     df = load_results(results)
     fig, xs, ys = plot_sweep(df, x=x, y=y, measure=measure, kind=kind, reduce=reduce)
     folder = results if results.is_dir() else results.parent
-    target = out if out is not None else folder / default_figure_name(measure, xs, ys)
-    save_figure(fig, target, dpi=dpi)
+    if out is not None:
+        target = out
+        save_figure(fig, target, dpi=dpi)
+    else:  # beside the table: pounding's own file, in the folder's manifest
+        from pounding.manifest import Manifest
+
+        target = folder / default_figure_name(measure, xs, ys)
+        manifest = Manifest(folder)
+        if manifest.exists():
+            with manifest.write(target) as tmp:
+                save_figure(fig, tmp, dpi=dpi)
+        else:
+            save_figure(fig, target, dpi=dpi)
     console.print(f"figure in [bold]{target}[/]", highlight=False)

@@ -18,7 +18,9 @@ Every text taken from the files is HTML-escaped; every quantity carries its unit
   and the main measure plotted against each swept parameter.
 
 The report only reads the folder; it writes nothing there but the report itself (written
-atomically, :func:`pounding.io.write_text`). See ``docs/report.md``.
+atomically, :func:`pounding.io.write_text`; ``report.html`` is added to the folder's manifest,
+:mod:`pounding.manifest`, so that ``--overwrite`` may replace it, and an existing
+``report.html`` pounding did not write is not replaced). See ``docs/report.md``.
 
 The package, by concept: this module (what a folder is, writing the page);
 :mod:`~pounding.report.run` with :mod:`~pounding.report.run_folder` (reading it),
@@ -110,12 +112,21 @@ def write_report(results_dir: str | os.PathLike[str],
     ValueError
         ``results_dir`` is neither a run nor a sweep output, or a file in it is unreadable.
     """
+    from pounding.manifest import Manifest
+
     folder = Path(results_dir)
-    text = render_report(folder)
     target = Path(out) if out is not None else folder / DEFAULT_NAME
     if target.is_dir():
         raise ValueError(f"report: --out {target} is a folder; give a file name such as "
                          f"{target / DEFAULT_NAME}")
+    # pounding's own file in its folder: listed in the manifest, so replaceable by
+    # --overwrite; a file of that name pounding did not write is refused before any work
+    manifest = Manifest(folder) if out is None and Manifest(folder).exists() else None
+    if manifest is not None:
+        manifest.check_free(target)
+    text = render_report(folder)
+    if manifest is not None:
+        return manifest.write_text(target, text)
     return write_text(target, text)
 
 

@@ -166,6 +166,47 @@ def summarise(table: "pd.DataFrame") -> "pd.DataFrame":
     return out.loc[order]
 
 
+MITIGATION_FILES: tuple[str, ...] = ("runs.csv", "summary.csv", "study.toml", "mitigation.png")
+"""The files of a study's output folder (and its manifest, :mod:`pounding.manifest`)."""
+
+
+def _out_folder(study: MitigationStudy, here: Path, out: str | os.PathLike[str] | None,
+                where: str) -> Path:
+    """The output folder: ``out`` given (``--out``), else ``out`` of the study file —
+    inside the file's folder (:func:`pounding.io.study_out`) — else ``<name>-results``
+    beside the file; the name is a label (:func:`pounding.io.check_label`)."""
+    from pounding.io import check_label, study_out
+
+    name = check_label(study.name, where)
+    if out is not None:
+        folder = Path(out)
+    elif study.out is None:
+        folder = here / f"{name}-results"
+    else:
+        folder, refused = study_out(here, study.out, where)
+        if refused is not None:
+            raise ValueError(refused)
+    if folder.name in ("", ".", ".."):
+        raise ValueError(f"out: {folder} is not a folder name; give e.g. --out results")
+    return folder
+
+
+def _check_target(out_dir: Path, overwrite: bool) -> None:
+    """Refuse an output folder that is a file, or one that holds anything unless
+    ``overwrite`` and it holds only an earlier study's files (its manifest)."""
+    from pounding.manifest import check_replaceable
+
+    if out_dir.exists() or out_dir.is_symlink():
+        if not out_dir.is_dir() or out_dir.is_symlink():
+            raise ValueError(f"out: {out_dir} exists and is not a folder; choose another --out")
+        if any(out_dir.iterdir()):
+            if not overwrite:
+                raise ValueError(f"out: {out_dir} exists and is not empty; give --overwrite "
+                                 "to replace an earlier study's output, or choose another "
+                                 "--out")
+            check_replaceable(out_dir, "mitigation")
+
+
 def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
                    overwrite: bool = False, figures: bool = True,
                    progress: Any = None) -> StudyOutcome:
@@ -173,23 +214,33 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
     record), ``summary.csv`` (mean per option), ``study.toml`` (the file as read) and
     ``mitigation.png`` (the trade-off figure).
 
+    The folder is written whole or not at all, as a run's (:func:`pounding.run.run`): built
+    beside the target and moved into place when complete; an earlier study's folder is
+    replaced (``overwrite``) only if it holds nothing but the files its manifest lists.
+
     Raises
     ------
     ValueError
-        One line naming the key: a bad study file, base model, record or device.
+        One line naming the key: a bad study file, base model, record or device; an output
+        folder that cannot be used.
     """
     import pandas as pd
 
     from pounding.integrate import simulate
     from pounding.io import atomic_path, check_writable, write_text
+    from pounding.output_folder import new_output_folder, remove_stale
     from pounding.plot import save_figure
 
     study, here = load_mitigation(path)
+    where = str(path)
+    out_dir = _out_folder(study, here, out, where)
     runs = _configs(study, here)
-    out_dir = Path(out) if out is not None else here / (study.out or f"{study.name}-results")
-    check_writable(out_dir, inside=True)
-    if out_dir.exists() and any(out_dir.iterdir()) and not overwrite:
-        raise ValueError(f"out: {out_dir} exists and is not empty; give --overwrite")
+    check_writable(out_dir)
+    remove_stale(out_dir.absolute().parent, restore=out_dir.absolute())
+    if out_dir.is_dir() and not out_dir.is_symlink():
+        remove_stale(out_dir)
+    _check_target(out_dir, overwrite)
+    study_text = Path(path).read_text(encoding="utf-8")
     rows = []
     for k, (option, record, cfg) in enumerate(runs):
         model, motion, solver = cfg.build()
@@ -199,18 +250,18 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
             progress((k + 1) / len(runs))
     table = pd.DataFrame(rows)
     summary = summarise(table)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    files = {}
-    with atomic_path(out_dir / "runs.csv") as tmp:
-        table.to_csv(tmp, index=False)
-    files["runs"] = out_dir / "runs.csv"
-    with atomic_path(out_dir / "summary.csv") as tmp:
-        summary.to_csv(tmp)
-    files["summary"] = out_dir / "summary.csv"
-    files["study"] = write_text(out_dir / "study.toml", Path(path).read_text(encoding="utf-8"))
-    if figures:
-        from pounding.plot.mitigation import plot_mitigation
+    names = {"runs": "runs.csv", "summary": "summary.csv", "study": "study.toml",
+             "figure": "mitigation.png"}
+    with new_output_folder(out_dir, "mitigation", MITIGATION_FILES,
+                           check=lambda: _check_target(out_dir, overwrite)) as tmp:
+        with atomic_path(tmp / names["runs"]) as f:
+            table.to_csv(f, index=False)
+        with atomic_path(tmp / names["summary"]) as f:
+            summary.to_csv(f)
+        write_text(tmp / names["study"], study_text)
+        if figures:
+            from pounding.plot.mitigation import plot_mitigation
 
-        files["figure"] = save_figure(plot_mitigation(summary, title=study.name),
-                                      out_dir / "mitigation.png")
+            save_figure(plot_mitigation(summary, title=study.name), tmp / names["figure"])
+    files = {k: out_dir / v for k, v in names.items() if k != "figure" or figures}
     return StudyOutcome(table=table, summary=summary, out_dir=out_dir, files=files)

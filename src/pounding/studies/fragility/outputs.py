@@ -12,9 +12,10 @@
 * figures (:mod:`pounding.plot.fragility`): ``ida.png``, ``fragility.png``,
   ``pounding_vs_gap.png``, ``pounding_surface.png``.
 
-Every file is written atomically and depends only on the runs and the study: a re-run
-writes the same bytes (figures aside: their metadata are fixed, their pixels too on one
-machine).
+Every file is written atomically, all of them moved into place together, each recorded
+in the folder's manifest (:func:`write_outputs`), and depends only on the runs and the
+study: a re-run writes the same bytes (figures aside: their metadata are fixed, their
+pixels too on one machine).
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ import csv
 import io
 import json
 import math
+import os
 from pathlib import Path
 from typing import Any
 
@@ -162,20 +164,53 @@ def _gap_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
 
 def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -> list[Path]:
     """Write the tables, ``fragility.json`` and (with ``figures``) the figures into
-    ``plan.out``; returns the files written."""
-    from pounding.io import write_text
+    ``plan.out``; returns the files written.
+
+    All are written first into a temporary folder inside ``plan.out`` and moved into place
+    together once complete, each recorded in the folder's manifest
+    (:mod:`pounding.manifest`): a full disk leaves the files of an earlier analysis as
+    they were. A file of the same name that pounding did not write is not replaced (one
+    line, before any is moved).
+    """
+    from pounding.io import WriteFailed, write_text
+    from pounding.manifest import Manifest
+    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
 
     out = plan.out
-    files = []
+    man = Manifest(out)
+    names = [*TABLES, STUDY_FILE, *(FIGURES if figures else ())]
+    for name in names:
+        man.check_free(out / name)
+    stage = make_temporary_folder(out, "fragility", "stage", holds=names)
+    try:
+        try:
+            _write_all(plan, a, stage, figures, write_text)
+        except WriteFailed as exc:
+            raise exc.moved(stage, out) from None
+        written = [out / name for name in names]
+        for target in written:
+            man.append([man.entry_of(target, stage / target.name)])
+            os.replace(stage / target.name, target)
+    finally:
+        remove_temporary_folder(stage)
+    if not figures:
+        for name in FIGURES:  # no stale figure of an earlier run (only pounding's own)
+            man.discard(out / name)
+    return written
+
+
+def _write_all(plan: StudyPlan, a: FragilityAnalysis, out: Path, figures: bool,
+               write_text: Any) -> None:
+    """Write every file of :func:`write_outputs` into the folder ``out``."""
     fr = _fragility_rows(plan, a)
-    files.append(write_text(out / "fragility.csv", _csv(fr, [
+    write_text(out / "fragility.csv", _csv(fr, [
         "limit_state", "demand", "limit", "unit", "gap_m", "method", "intensity_measure",
         "median_g", "median_lo_g", "median_hi_g", "beta", "beta_lo", "beta_hi", "n_records",
-        "n_records_exceeding", "status"])))
+        "n_records_exceeding", "status"]))
     counts = [[r.spec.label, r.gap, x, int(n), int(z), z / n if n else math.nan]
               for r in a.limit_states for x, n, z in zip(plan.levels, r.n_runs, r.n_exceed)]
-    files.append(write_text(out / "counts.csv", _csv(counts, [
-        "limit_state", "gap_m", "level_g", "n_runs", "n_exceed", "fraction"])))
+    write_text(out / "counts.csv", _csv(counts, [
+        "limit_state", "gap_m", "level_g", "n_runs", "n_exceed", "fraction"]))
     keys = list(a.demands)
     runs = []
     for gi, g in enumerate(plan.gaps):
@@ -183,17 +218,16 @@ def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -
             for li, x in enumerate(plan.levels):
                 runs.append([name, x, g] + [a.demands[k][gi, ri, li] * DEMANDS[k].factor
                                             for k in keys])
-    files.append(write_text(out / "ida.csv", _csv(runs, ["record", "level_g", "gap_m"] + [
-        f"{k}_{DEMANDS[k].unit}".replace("_-", "").replace("%", "pct") for k in keys])))
-    files.append(write_text(out / "gap.csv", _csv(_gap_rows(plan, a), [
+    write_text(out / "ida.csv", _csv(runs, ["record", "level_g", "gap_m"] + [
+        f"{k}_{DEMANDS[k].unit}".replace("_-", "").replace("%", "pct") for k in keys]))
+    write_text(out / "gap.csv", _csv(_gap_rows(plan, a), [
         "gap", "at_g", "gap_m", "gap_lo_m", "gap_hi_m", "p_pounding_records",
-        "p_pounding_lognormal"])))
+        "p_pounding_lognormal"]))
     ng = a.gap.needed
-    files.append(write_text(out / "needed_gaps.csv", _csv(
+    write_text(out / "needed_gaps.csv", _csv(
         [[name] + list(row) for name, row in zip(plan.records, ng.needed)],
-        ["record"] + [f"{x:g}" for x in plan.levels])))
-    files.append(write_text(out / STUDY_FILE, json.dumps(summary(plan, a), indent=2,
-                                                         allow_nan=False) + "\n"))
+        ["record"] + [f"{x:g}" for x in plan.levels]))
+    write_text(out / STUDY_FILE, json.dumps(summary(plan, a), indent=2, allow_nan=False) + "\n")
     if figures:
         from pounding.plot import save_figure
         from pounding.plot.fragility import (
@@ -206,8 +240,4 @@ def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -
         for name, fig in (("ida.png", plot_ida(a)), ("fragility.png", plot_fragility(a)),
                           ("pounding_vs_gap.png", plot_gap_probability(a)),
                           ("pounding_surface.png", plot_gap_surface(a))):
-            files.append(save_figure(fig, out / name, dpi=130))
-    else:
-        for name in FIGURES:  # no stale figure of an earlier run
-            (out / name).unlink(missing_ok=True)
-    return files
+            save_figure(fig, out / name, dpi=130)

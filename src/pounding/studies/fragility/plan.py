@@ -218,8 +218,8 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
                    f"{'second' if base_cfg.record.second else 'second_file'}) is not used"
                    if base_cfg.record.two_components else ""))
     base["record"] = rec
-    plan = StudyPlan(config=cfg, source=source, out=Path(out) if out is not None else
-                     here / (cfg.out or f"{cfg.name}-results"), records=names, source_key=key,
+    plan = StudyPlan(config=cfg, source=source, out=_out_folder(cfg, here, out, where),
+                     records=names, source_key=key,
                      sources=sources, levels=levels,
                      gaps=list(cfg.gap.values) if cfg.gap.values else [None],
                      im_label=_im_label(cfg, saavg), saavg_range=saavg, factors=None,
@@ -246,6 +246,25 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
     plan.sweep.source = source
     plan.rows = rows
     return plan
+
+
+def _out_folder(cfg: StudyConfig, here: Path, out: str | os.PathLike[str] | None,
+                where: str) -> Path:
+    """The output folder: ``out`` given (the command line's ``--out``), else ``out`` of the
+    study file — inside the file's folder (:func:`pounding.io.study_out`) — else
+    ``<name>-results`` beside the file; the name is a label (:func:`pounding.io.check_label`).
+    """
+    from pounding.io import check_label, study_out
+
+    name = check_label(cfg.name, where)
+    if out is not None:
+        return Path(out)
+    if cfg.out is None:
+        return here / f"{name}-results"
+    folder, refused = study_out(here, cfg.out, where)
+    if refused is not None:
+        raise ValueError(refused)
+    return folder
 
 
 def _im_label(cfg: StudyConfig, saavg: tuple[float, float] | None) -> str:

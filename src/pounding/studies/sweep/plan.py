@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from pounding.io import read_toml
+from pounding.io import check_label, read_toml, study_out
 from pounding.studies.sweep.cases import Case, _canon, case_rows, unique_cases
 from pounding.studies.sweep.checks import _check_path, check_cases
 
@@ -35,12 +35,17 @@ class Sweep:
     params: tuple[str, ...]
     cases: list[Case]
     out: Path
+    """The output folder: ``out`` of the file (relative to it), else ``<name>-results`` in
+    the current folder."""
     histories: str | None = None
     batch_size: int | None = None
     source: Path | None = None
     duplicates: int = 0
     """Cases given twice (same values): run once."""
     records: dict[str, Any] = field(default_factory=dict, repr=False)
+    out_refused: str | None = None
+    """Why ``out`` of the file cannot be used unless an output folder is given
+    explicitly (it leads outside the file's folder, :func:`pounding.io.study_out`)."""
 
     @property
     def fingerprint(self) -> str:
@@ -108,14 +113,19 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
         raise ValueError(f"{where}: batch_size: an integer >= 1 (got {batch!r})")
     # an ``out`` the file names is relative to the file; by default, as for ``pounding run``,
     # NAME-results in the current folder (never inside a folder of examples one ran)
+    # a name is a label: it never leads the default folder elsewhere
+    name = check_label(data.get("name", "sweep"), where)
     out = data.get("out")
-    if out is not None and (not isinstance(out, str) or not out):
+    if out is not None and (not isinstance(out, str) or not out or "\0" in out):
         raise ValueError(f"{where}: out: a folder name (got {out!r})")
-    out_dir = (here / out if out is not None
-               else Path.cwd() / f"{data.get('name', 'sweep')}-results")
-    sweep = Sweep(name=str(data.get("name", "sweep")), base=base_data, base_dir=model_dir,
+    refused = None
+    if out is not None:
+        out_dir, refused = study_out(here, out, where)
+    else:
+        out_dir = Path.cwd() / f"{name}-results"
+    sweep = Sweep(name=name, base=base_data, base_dir=model_dir,
                   params=params, cases=cases, out=out_dir, histories=hist,
-                  batch_size=batch, duplicates=len(rows) - len(cases))
+                  batch_size=batch, duplicates=len(rows) - len(cases), out_refused=refused)
     check_cases(sweep, samples, where, kind)
     return sweep
 

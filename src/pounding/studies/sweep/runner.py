@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from pounding.io import WriteFailed
 from pounding.studies.sweep.cluster import (
     _auto_batch,
     _batch_sizes,
@@ -26,14 +27,12 @@ from pounding.studies.sweep.cluster import (
 from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
-    HISTORIES_DIR,
     PARTS_DIR,
     _check_out,
     _part_name,
     _prepare_out,
     _read_parts,
     _remove_created,
-    _remove_temporaries,
     _saved_ids,
     _write_history,
     _write_part,
@@ -155,6 +154,8 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     start = time.perf_counter()
     if not isinstance(sweep, Sweep):
         sweep = load_sweep(sweep)
+    if out is None and sweep.out_refused is not None:
+        raise ValueError(sweep.out_refused)
     out_dir = Path(out) if out is not None else sweep.out
     hist = sweep.histories if histories is None else (histories or None)
     if hist not in (None, *HISTORY_FORMATS):
@@ -169,7 +170,6 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     parts = out_dir / PARTS_DIR
     done: dict[str, dict[str, Any]] = {}
     if resume:
-        _remove_temporaries(out_dir)
         done = _read_parts(parts)
     wanted = {c.id for c in sweep.cases}
     pending = [c for c in sweep.cases if c.id not in done]
@@ -182,15 +182,14 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
         progress(n_done, n_total)
     payload = {"base": sweep.base, "base_dir": str(sweep.base_dir), "params": sweep.params,
                "histories": hist}
-    hist_dir = out_dir / HISTORIES_DIR
 
     def finish(results: list[tuple[str, dict[str, Any], Any]]) -> None:
         nonlocal n_done
         if hist is not None:
             for cid, row, ds in results:
                 if ds is not None:
-                    _write_history(hist_dir, cid, ds, hist)
-        _write_part(parts, [(cid, row) for cid, row, _ in results])
+                    _write_history(out_dir, cid, ds, hist)
+        _write_part(out_dir, [(cid, row) for cid, row, _ in results])
         for cid, row, _ in results:
             done[cid] = {"case_id": cid, **row}
         n_done += len(results)
@@ -204,7 +203,7 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     try:
         # the client first: no output is made for a sweep that cannot start
         with (_client(scheduler, n_workers) if pending else contextlib.nullcontext()) as client:
-            _prepare_out(sweep, out_dir, resume, created)
+            _prepare_out(sweep, out_dir, resume, created, histories=hist is not None)
             if pending:
                 workers = max(1, len(client.scheduler_info(n_workers=-1)["workers"])) \
                     if client is not None else 1
@@ -232,8 +231,16 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
             raise SweepInterrupted(saved, n_total, out_dir) from None
         if isinstance(exc, _ClusterFailure):
             raise SweepStopped(str(exc), saved, n_total, out_dir) from None
+        if isinstance(exc, WriteFailed):
+            raise WriteFailed(exc.target, f"{exc.reason}; {_saved_text(saved, n_total, out_dir)}"
+                              + ("; run the sweep again to resume" if saved else ""),
+                              exc.errno) from None
         raise
-    results, n_err = _write_results(sweep, done, out_dir)
+    try:
+        results, n_err = _write_results(sweep, done, out_dir)
+    except WriteFailed as exc:
+        raise WriteFailed(exc.target, f"{exc.reason}; {_saved_text(n_total, n_total, out_dir)}; "
+                          "run the sweep again to write the table", exc.errno) from None
     return SweepOutcome(out_dir=out_dir, results=results, n_cases=n_total,
                         n_run=len(pending), n_errors=n_err,
                         wall_time=time.perf_counter() - start, run_time=run_time,

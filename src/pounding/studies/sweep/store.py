@@ -3,10 +3,16 @@ histories, each written under a temporary name and renamed, so a file is whole o
 
 Layout::
 
-    <out>/sweep.json                  the manifest: name, fingerprint, parameters, cases
+    <out>/.pounding-manifest.jsonl    every file pounding wrote here (:mod:`pounding.manifest`)
+    <out>/sweep.json                  the sweep: name, fingerprint, parameters, cases
     <out>/parts/part-<hash>.parquet   one per finished batch (rows keyed by case id)
     <out>/histories/<case_id>.nc      time histories of a case (or .zarr), if asked for
     <out>/results.parquet             the consolidated table (:mod:`.table`)
+
+Each file is recorded in the manifest when complete, before it is moved into place;
+``--overwrite`` removes only what the manifest lists (and refuses a folder holding
+anything else), and a run removes only the temporaries of pounding processes no longer
+running.
 """
 
 from __future__ import annotations
@@ -15,11 +21,11 @@ import contextlib
 import hashlib
 import json
 import os
-import shutil
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
+from pounding.manifest import Manifest
 from pounding.studies.sweep.plan import Sweep
 
 __all__ = ["HISTORIES_DIR", "MANIFEST_FILE", "PARTS_DIR", "RESULTS_FILE"]
@@ -40,23 +46,31 @@ def _check_out(sweep: Sweep, out: Path, overwrite: bool) -> bool:
     ------
     ValueError
         One line: ``out`` cannot be made or written (a file on its path, a read-only
-        folder), is a file, holds another sweep (without ``overwrite``), or is a non-empty
-        folder that is not a sweep's.
+        folder), is a file, holds another sweep (without ``overwrite``), is a non-empty
+        folder that is not a sweep's, or (with ``overwrite``) holds something pounding did
+        not write (:func:`pounding.manifest.check_replaceable`).
     """
     from pounding.io import check_writable
+    from pounding.manifest import check_replaceable
 
     check_writable(out, inside=True)
-    if not out.exists():
+    if not out.exists() and not out.is_symlink():
         return False
-    if not out.is_dir():
+    if not out.is_dir() or out.is_symlink():
         raise ValueError(f"out: {out} exists and is not a folder")
     manifest = out / MANIFEST_FILE
     if manifest.is_file():
-        old = json.loads(manifest.read_text(encoding="utf-8")).get("fingerprint")
+        try:
+            old = json.loads(manifest.read_text(encoding="utf-8")).get("fingerprint")
+        except (ValueError, AttributeError, OSError):
+            raise ValueError(f"out: {out} holds a {MANIFEST_FILE} that is not a sweep's; "
+                             "choose another --out") from None
         if old != sweep.fingerprint and not overwrite:
             raise ValueError(f"out: {out} holds the results of another sweep (its base "
                              "model or cases differ); give --overwrite to start afresh "
                              "or choose another --out")
+        if overwrite:
+            check_replaceable(out, "sweep")
         return not overwrite
     if any(out.iterdir()):
         raise ValueError(f"out: {out} is a non-empty folder that is not a sweep output "
@@ -64,31 +78,34 @@ def _check_out(sweep: Sweep, out: Path, overwrite: bool) -> bool:
     return False
 
 
-def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path]) -> None:
-    """Make ``out`` ready (checked by :func:`_check_out`): unless resuming, remove an
-    earlier sweep's files and write the manifest; make the parts folder. What it creates
-    (folders, the manifest) is appended to ``created`` as it goes, for
-    :func:`_remove_created`."""
-    from pounding.io import make_folders, write_text
+def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path],
+                 histories: bool = False) -> None:
+    """Make ``out`` ready (checked by :func:`_check_out`): remove the temporaries of killed
+    runs; unless resuming, remove an earlier sweep's files (those its manifest lists) and
+    write a new manifest and ``sweep.json``; make the parts folder. What it creates
+    (folders, files) is appended to ``created`` as it goes, for :func:`_remove_created`."""
+    from pounding.io import make_folders
+    from pounding.manifest import remove_outputs
 
     created += make_folders(out)
-    manifest = out / MANIFEST_FILE
+    _remove_temporaries(out)
+    man = Manifest(out)
     if not resume:
-        for name in (PARTS_DIR, HISTORIES_DIR, RESULTS_FILE, MANIFEST_FILE):
-            target = out / name
-            if target.is_dir():
-                shutil.rmtree(target)
-            elif target.exists():
-                target.unlink()
-        write_text(manifest, json.dumps(
+        if man.exists():
+            remove_outputs(out, keep_folder=True)
+        man.start("sweep")
+        created.append(man.path)
+        man.write_text(out / MANIFEST_FILE, json.dumps(
             {"name": sweep.name, "fingerprint": sweep.fingerprint, "params": list(sweep.params),
              "n_cases": len(sweep.cases), "source": str(sweep.source) if sweep.source else None},
             indent=2))
-        created.append(manifest)
-    parts = out / PARTS_DIR
-    if not parts.is_dir():
-        parts.mkdir()
-        created.append(parts)
+        created.append(out / MANIFEST_FILE)
+    elif not man.exists():  # a sweep written before manifests: list what is added now
+        man.start("sweep")
+    for name in (PARTS_DIR, HISTORIES_DIR) if histories else (PARTS_DIR,):
+        if not (out / name).is_dir():
+            (out / name).mkdir()
+            created.append(out / name)
 
 
 def _remove_created(out: Path, created: list[Path]) -> None:
@@ -97,14 +114,16 @@ def _remove_created(out: Path, created: list[Path]) -> None:
     part, a history or a file of an earlier sweep keeps the folder."""
     from pounding.io import remove_empty_folders
 
-    parts = out / PARTS_DIR
-    if parts in created:
-        with contextlib.suppress(OSError):
-            parts.rmdir()  # only if empty
-    manifest = out / MANIFEST_FILE
-    if manifest in created and [p.name for p in out.iterdir()] == [MANIFEST_FILE]:
-        manifest.unlink()
-    remove_empty_folders([p for p in created if p not in (parts, manifest)])
+    folders = [out / PARTS_DIR, out / HISTORIES_DIR]
+    for folder in folders:
+        if folder in created:
+            with contextlib.suppress(OSError):
+                folder.rmdir()  # only if empty
+    made = {p for p in created if p.parent == out and p not in folders}
+    if made and {p for p in out.iterdir()} == made:
+        for p in made:
+            p.unlink()
+    remove_empty_folders([p for p in created if p not in folders and p not in made])
 
 
 def _saved_ids(folder: Path) -> set[str]:
@@ -119,18 +138,13 @@ def _saved_ids(folder: Path) -> set[str]:
 
 
 def _remove_temporaries(out: Path) -> None:
-    """Remove what a killed run left half-written: temporaries in ``parts`` and
-    ``histories`` (their names start with a dot)."""
-    parts = out / PARTS_DIR
-    for stale in parts.glob(".*"):  # temporaries of a killed run
-        if stale.is_dir():
-            shutil.rmtree(stale, ignore_errors=True)
-        else:
-            stale.unlink(missing_ok=True)
-    hist_dir = out / HISTORIES_DIR
-    if hist_dir.is_dir():
-        for stale in hist_dir.glob(".*"):
-            shutil.rmtree(stale, ignore_errors=True) if stale.is_dir() else stale.unlink()
+    """Remove what killed runs left half-written in ``out``, ``parts`` and ``histories``
+    (:func:`pounding.output_folder.remove_stale`: temporaries named with the pid of a pounding
+    process no longer running, e.g. ``.results.parquet.part-<pid>-XXXXXXXX.parquet``)."""
+    from pounding.output_folder import remove_stale
+
+    for folder in (out, out / PARTS_DIR, out / HISTORIES_DIR):
+        remove_stale(folder)
 
 
 def _part_name(ids: Sequence[str]) -> str:
@@ -138,12 +152,11 @@ def _part_name(ids: Sequence[str]) -> str:
     return "part-" + hashlib.sha256("".join(sorted(ids)).encode()).hexdigest()[:16] + ".parquet"
 
 
-def _write_part(folder: Path, rows: list[tuple[str, dict[str, Any]]]) -> Path:
-    """Write the rows of finished cases as one part file (atomically, synced to disk)."""
+def _write_part(out: Path, rows: list[tuple[str, dict[str, Any]]]) -> Path:
+    """Write the rows of finished cases as one part file in ``out/parts`` (atomically,
+    synced to disk, recorded in the manifest of ``out``)."""
     import pyarrow as pa
     import pyarrow.parquet as pq
-
-    from pounding.io import atomic_path
 
     records = [{"case_id": cid, **row} for cid, row in rows]
     cols: dict[str, list[Any]] = {}
@@ -151,8 +164,8 @@ def _write_part(folder: Path, rows: list[tuple[str, dict[str, Any]]]) -> Path:
         for k in rec:
             cols.setdefault(k, [])
     table = pa.table({k: pa.array([rec.get(k) for rec in records]) for k in cols})
-    target = folder / _part_name([cid for cid, _ in rows])
-    with atomic_path(target) as tmp:
+    target = out / PARTS_DIR / _part_name([cid for cid, _ in rows])
+    with Manifest(out).write(target) as tmp:
         pq.write_table(table, tmp)
         with open(tmp, "rb") as fh:
             os.fsync(fh.fileno())
@@ -160,7 +173,8 @@ def _write_part(folder: Path, rows: list[tuple[str, dict[str, Any]]]) -> Path:
 
 
 def _read_parts(folder: Path) -> dict[str, dict[str, Any]]:
-    """Rows of every complete part file, by case id (first copy wins)."""
+    """Rows of every complete part file, by case id (first copy wins); a part that cannot
+    be read is left as it is and its cases run again."""
     import pyarrow.parquet as pq
 
     rows: dict[str, dict[str, Any]] = {}
@@ -170,30 +184,40 @@ def _read_parts(folder: Path) -> dict[str, dict[str, Any]]:
         try:
             recs = pq.read_table(p).to_pylist()
         except Exception:  # noqa: BLE001  (cannot happen with atomic writes; be safe)
-            p.unlink(missing_ok=True)
             continue
         for rec in recs:
             rows.setdefault(rec["case_id"], rec)
     return rows
 
 
-def _write_history(folder: Path, cid: str, ds: Any, fmt: str) -> None:
-    """Write a case's time histories as ``<cid>.nc`` or ``<cid>.zarr`` (atomically)."""
-    from pounding.io import atomic_path
+def _write_history(out: Path, cid: str, ds: Any, fmt: str) -> None:
+    """Write a case's time histories as ``out/histories/<cid>.nc`` or ``<cid>.zarr``
+    (atomically, recorded in the manifest of ``out``). NetCDF is serialised in memory and
+    written with plain file I/O, so HDF5 never meets a full disk."""
+    from pounding.io import WriteFailed
 
+    folder = out / HISTORIES_DIR
     folder.mkdir(parents=True, exist_ok=True)
+    man = Manifest(out)
     if fmt == "netcdf":
-        with atomic_path(folder / f"{cid}.nc") as tmp:
-            ds.to_netcdf(tmp, engine="h5netcdf")
-    else:
-        import tempfile
+        man.write_bytes(folder / f"{cid}.nc", ds.to_netcdf(engine="h5netcdf"))
+        return
+    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
 
-        target = folder / f"{cid}.zarr"
-        tmp = Path(tempfile.mkdtemp(prefix=f".{cid}.zarr.part-", dir=folder))
+    target = folder / f"{cid}.zarr"
+    man.check_free(target)  # (a folder there is refused)
+    tmp = make_temporary_folder(folder, f"{cid}.zarr", "part", holds=["store.zarr/**"])
+    try:
+        store = tmp / "store.zarr"
         try:
-            ds.to_zarr(tmp / "store.zarr", mode="w")
-            if target.exists():
-                shutil.rmtree(target)
-            os.replace(tmp / "store.zarr", target)
-        finally:
-            shutil.rmtree(tmp, ignore_errors=True)
+            ds.to_zarr(store, mode="w")
+        except OSError as exc:
+            from pounding.io import failure_reason
+
+            reason, code = failure_reason(exc)
+            raise WriteFailed(target, reason, code) from None
+        man.append(man.entry_of(target / p.relative_to(store), p)
+                   for p in sorted(store.rglob("*")) if p.is_file() and not p.is_symlink())
+        os.replace(store, target)
+    finally:
+        remove_temporary_folder(tmp)

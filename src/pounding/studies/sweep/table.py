@@ -79,7 +79,8 @@ def _consolidate(sweep: Sweep, rows: dict[str, dict[str, Any]]) -> Any:
 
 def _write_results(sweep: Sweep, rows: dict[str, dict[str, Any]], out: Path
                    ) -> tuple[Path, int]:
-    """Consolidate ``rows`` into ``<out>/results.parquet`` (atomically).
+    """Consolidate ``rows`` into ``<out>/results.parquet`` (atomically, recorded in the
+    manifest of ``out``; an earlier table is replaced only if pounding wrote it).
 
     Returns
     -------
@@ -90,11 +91,11 @@ def _write_results(sweep: Sweep, rows: dict[str, dict[str, Any]], out: Path
     """
     import pyarrow.parquet as pq
 
-    from pounding.io import atomic_path
+    from pounding.manifest import Manifest
 
     table = _consolidate(sweep, rows)
     results = out / RESULTS_FILE
-    with atomic_path(results) as tmp:
+    with Manifest(out).write(results) as tmp:
         pq.write_table(table, tmp)
     n_err = sum(1 for s in table.column("status").to_pylist() if s != "ok")
     return results, n_err
