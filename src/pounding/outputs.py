@@ -95,7 +95,7 @@ def impacts_csv(result: Result) -> str:
     """The impact table as CSV text (no unit line): one row per impact, columns
     ``contact, elevation`` and :data:`pounding.result.IMPACT_COLUMNS` after ``contact``;
     a missing value (an impact still open at the end) is an empty field."""
-    from pounding.result import IMPACT_COLUMNS
+    from pounding.result import IMPACT_COLUMNS, rounded_length
 
     contacts = result.model.contacts
     buf = io.StringIO()
@@ -103,7 +103,7 @@ def impacts_csv(result: Result) -> str:
     w.writerow(["contact", "elevation", *IMPACT_COLUMNS[1:]])
     for row in result.impact_array:
         c = contacts[int(row[0])]
-        w.writerow([c.label, _number(c.elevation), *(_number(x) for x in row[1:])])
+        w.writerow([c.label, _number(rounded_length(c.elevation)), *(_number(x) for x in row[1:])])
     return buf.getvalue()
 
 

@@ -42,6 +42,20 @@ of the yielding storeys (their work ``∫ΣV ḋ dt`` minus their recoverable en
 ``contact_work − contact_stored``. The balance: ``E_0 + input = kinetic + strain + damping
 + hysteretic + contact_work``."""
 
+ELEVATION_DECIMALS = 6
+"""Decimals [m] of an elevation or storey height written to the outputs (1 µm): floor
+elevations are sums of storey heights, ``3.2 × 10`` adds up to ``31.999999999999996``."""
+
+
+def rounded_length(value: Any) -> Any:
+    """An elevation or storey height [m] (a float or an array) rounded to
+    :data:`ELEVATION_DECIMALS` for the outputs, so that it reads as given (``32.0``, not
+    ``31.999999999999996``)."""
+    if np.ndim(value) == 0:
+        return round(float(value), ELEVATION_DECIMALS)
+    return np.round(np.asarray(value, dtype=float), ELEVATION_DECIMALS)
+
+
 def peak_abs(a: NDArray[np.float64]) -> NDArray[np.float64]:
     """Largest absolute value of each column of a (time, item) history.
 
@@ -302,7 +316,8 @@ class Result:
         df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
         labels = [c.label for c in self.model.contacts]
         df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
-        df.insert(1, "elevation", [self.model.contacts[labels.index(lb)].elevation
+        df.insert(1, "elevation", [rounded_length(self.model.contacts[labels.index(lb)]
+                                                  .elevation)
                                    for lb in df["contact"]] if len(df) else [])
         return df
 

@@ -37,7 +37,7 @@ def history_variables(result: "Result") -> HistoryVariables:
     """Every time history and per-floor result as named variables with dimensions, units
     and descriptions: what :meth:`Result.to_dataset` and the NetCDF file hold (one description,
     two writers)."""
-    from pounding.result import ENERGY_NAMES
+    from pounding.result import ENERGY_NAMES, rounded_length
 
     model = result.model
     contacts = model.contacts
@@ -92,16 +92,17 @@ def history_variables(result: "Result") -> HistoryVariables:
         "energy_term": Variable(("energy_term",), np.array(ENERGY_NAMES, dtype=object), {}),
         "building": Variable(("floor",), np.array(buildings, dtype=object),
                              {"long_name": "building of each floor (B1 leftmost)"}),
-        "floor_elevation": var(np.concatenate([b.floor_levels for b in model.buildings]),
+        "floor_elevation": var(rounded_length(np.concatenate([b.floor_levels
+                                                                   for b in model.buildings])),
                                ("floor",), "m", "floor elevation above the ground"),
-        "storey_height": var(np.concatenate([b.heights for b in model.buildings]),
+        "storey_height": var(rounded_length(np.concatenate([b.heights for b in model.buildings])),
                              ("floor",), "m", "height of the storey below the floor (NaN: "
                              "a degree of freedom that is not a floor)"),
         "dof_name": Variable(("floor",), np.array(model.dof_names(), dtype=object),
                              {"long_name": "the degree of freedom's name in its building (a "
                                            "matrix building's labels; a DOF that is not a "
                                            "floor translation, a rotation say, is in rad)"}),
-        "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
+        "contact_elevation": var(rounded_length([c.elevation for c in contacts]), ("contact",), "m",
                                  "elevation of the contact"),
     }
     if len(ground_dims) == 2:

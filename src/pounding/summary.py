@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.result import ENERGY_NAMES
+from pounding.result import ENERGY_NAMES, rounded_length
 
 if TYPE_CHECKING:
     from pounding.result import Result
@@ -131,8 +131,8 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
             row: dict[str, Any] = {"storey": k + 1,
                                    **({"floor": f"F{j + 1}", "label": bl.labels[j]}
                                       if matrices else {}),
-                                   "floor_elevation_m": float(bl.floor_levels[j]),
-                                   "height_m": float(bl.heights[j])}
+                                   "floor_elevation_m": rounded_length(bl.floor_levels[j]),
+                                   "height_m": rounded_length(bl.heights[j])}
             row.update({key: float(v[off + j]) for key, v in quantities})
             if (b, k) in rotations:
                 row["peak_rotation_mrad"] = 1e3 * rotations[b, k][0]
