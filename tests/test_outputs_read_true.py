@@ -65,3 +65,53 @@ def test_elevations_read_as_given(demo_run: Path) -> None:
     with xr.open_dataset(demo_run / "timehistories.nc", engine="h5netcdf") as ds:
         assert float(ds["floor_elevation"].values[9]) == 32.0
         assert float(ds["contact_elevation"].values[-1]) == 32.0
+
+
+# ------------------------------------------------------- impacts.csv, each impact (item 2)
+def _impacts(folder: Path) -> tuple[str, list[dict[str, str]]]:
+    lines = (folder / "impacts.csv").read_text(encoding="utf-8").splitlines()
+    return lines[0], list(csv.DictReader(line for line in lines if not line.startswith("#")))
+
+
+def test_impacts_csv_says_what_its_ratio_is_and_each_loss_is_not_negative(demo_run: Path
+                                                                         ) -> None:
+    """Between buildings the velocity ratio is no energy ratio (the units line says so);
+    every finished impact's own loss, the contact's dissipated energy, is ≥ 0."""
+    head, rows = _impacts(demo_run)
+    assert "may exceed 1" in head and "not an energy ratio" in head
+    assert "energy_dissipated = energy the contact element dissipated" in head
+    done = [r for r in rows if r["energy_dissipated"]]
+    assert len(done) > 10
+    for r in done:
+        assert float(r["energy_dissipated"]) >= 0.0, r
+    summary = json.loads((demo_run / "summary.json").read_text())
+    total = sum(float(r["energy_dissipated"]) for r in done)
+    assert total == pytest.approx(summary["contact_dissipated_J"], rel=1e-6)
+
+
+@pytest.mark.parametrize("law,kw", [("kelvin-voigt", {"k": 9.3e8}),
+                                    ("nonlinear-viscoelastic", {"k_h": 2.75e9})])
+def test_free_bodies_impact_reaches_the_laws_restitution(tmp_path: Path, law: str,
+                                                         kw: dict[str, float]) -> None:
+    """Two free masses, no ground motion: impacts.csv's ratio is the e the law achieves and
+    the impact's loss ½ m_eff v0² (1 − e²), as the single-collision analysis gives them."""
+    from pounding import PoundingModel, ShearBuilding, simulate
+    from pounding.contact.collision import simulate_collision
+    from pounding.ground_motion import GroundMotion
+    from pounding.model import ContactSpec
+
+    m1, m2, v0 = 2.0e5, 3.0e5, 0.4
+    model = PoundingModel([ShearBuilding.sdof(m1, period=1e3, damping_ratio=0.0),
+                           ShearBuilding.sdof(m2, period=1e3, damping_ratio=0.0)], [0.0],
+                          ContactSpec(law, e=0.65, **kw))
+    res = simulate(model, GroundMotion(0.01, np.zeros(31), name="no shaking"),
+                   initial_velocity=np.array([v0, 0.0]))
+    res.save(tmp_path)
+    _, rows = _impacts(tmp_path)
+    assert len(rows) == 1
+    single = simulate_collision(model.contacts[0].law, m1, m2, v0)
+    assert float(rows[0]["restitution"]) == pytest.approx(single.e, abs=2e-5)
+    m_eff = m1 * m2 / (m1 + m2)
+    loss = float(rows[0]["energy_dissipated"])
+    assert loss == pytest.approx(single.energy_dissipated, rel=1e-4)
+    assert loss == pytest.approx(0.5 * m_eff * v0**2 * (1 - single.e**2), rel=1e-4)

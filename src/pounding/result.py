@@ -72,8 +72,10 @@ IMPACT_COLUMNS: tuple[str, ...] = ("contact", "start", "end", "v0", "peak_force"
                                    "energy_dissipated")
 """Columns of :attr:`Result.impact_array` (the contact as its index) and of
 :attr:`Result.impacts` (the contact as its label): start and end [s], closing velocity v0
-[m/s], peak force [N] and its time [s], largest penetration [m], achieved restitution [-],
-energy dissipated [J]."""
+[m/s], peak force [N] and its time [s], largest penetration [m], the velocity ratio
+``restitution`` (separation over approach speed of the two contact points [-]; the law's
+restitution only for free bodies: see :attr:`Result.impacts`), and the energy the contact
+element dissipated in the impact [J] (≥ 0)."""
 
 
 @dataclass(frozen=True)
@@ -301,15 +303,23 @@ class Result:
     # ----------------------------------------------------------------- impacts and peaks
     @cached_property
     def impacts(self) -> pd.DataFrame:
-        """One row per impact: contact label, start/end [s], impact velocity v0 [m/s], peak
-        force [N], maximum penetration [m], achieved restitution, energy dissipated [J].
+        """One row per impact: contact label, elevation [m], start/end [s], impact velocity
+        v0 [m/s], peak force [N] and its time [s], maximum penetration [m], the velocity
+        ratio ``restitution`` [-], the energy dissipated by the contact in the impact [J].
 
         An impact ends when the penetration returns to zero (``end``); for laws that cannot
         pull (clipped Kelvin–Voigt, Hunt–Crossley) the force may have returned to zero a
         little earlier, which is where :func:`pounding.contact.collision.simulate_collision`
-        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``. Between buildings it is not bounded by 1:
-        the floors are not free bodies, and the rest of each building can push them apart
-        faster than they met. Impacts still open at the end have NaN end, restitution and
+        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``, the ratio of
+        the speeds at which the two contact points part and met. For two free bodies it is
+        the law's coefficient of restitution (the kinetic energy of the relative motion
+        keeps the fraction e² of itself); between buildings it is not: the ground and the
+        storeys keep pushing the floors during the impact, so the ratio says nothing of
+        the energy and may exceed 1 (the rest of each building pushing the floors apart
+        faster than they met) — no energy is created. The impact's own loss is
+        ``energy_dissipated``, the work of the contact force over the impact
+        ``∫ F δ̇ dt`` (δ = 0 at both ends, so none of it is still stored), ≥ 0 for every
+        passive law. Impacts still open at the end have NaN end, restitution and
         energy."""
         import pandas as pd
 

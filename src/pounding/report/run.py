@@ -28,8 +28,9 @@ MAX_IMPACT_ROWS = 500
 IMPACT_HEADERS: dict[str, str] = {
     "contact": "contact", "elevation": "elevation [m]", "start": "start [s]", "end": "end [s]",
     "v0": "impact velocity v0 [m/s]", "peak_force": "peak force [N]",
-    "max_penetration": "max penetration [m]", "restitution": "restitution [-]",
-    "energy_dissipated": "energy dissipated [J]",
+    "max_penetration": "max penetration [m]",
+    "restitution": "separation ÷ approach speed [-]",
+    "energy_dissipated": "energy dissipated by the contact [J]",
 }
 """Headers of the columns of ``impacts.csv``, with their units."""
 
@@ -167,8 +168,13 @@ def _impacts_section(r: RunFolder) -> list[Block]:
                         "impacts.csv."))
     else:
         out.append(Note(f"{len(imp)} impact(s), in time order per the solver's impact table "
-                        "(impacts.csv). Restitution is −δ̇ at separation / v0; an impact "
-                        "still open at the end has no end, restitution or energy (–)."))
+                        "(impacts.csv). Separation ÷ approach speed is −δ̇ at separation / "
+                        "v0 (the column restitution of impacts.csv): the law's coefficient "
+                        "of restitution only for free bodies; between buildings the ground "
+                        "and the storeys push the floors during the impact, so it is no "
+                        "energy ratio and may exceed 1. The impact's own loss is the energy "
+                        "dissipated by the contact (≥ 0). An impact still open at the end "
+                        "has no end, ratio or energy (–)."))
     out.append(t)
     if r.impacts_units:
         out.append(Note(f"Units as stated in impacts.csv: {r.impacts_units}"))
