@@ -115,3 +115,36 @@ def test_free_bodies_impact_reaches_the_laws_restitution(tmp_path: Path, law: st
     loss = float(rows[0]["energy_dissipated"])
     assert loss == pytest.approx(single.energy_dissipated, rel=1e-4)
     assert loss == pytest.approx(0.5 * m_eff * v0**2 * (1 - single.e**2), rel=1e-4)
+
+
+# ------------------------------------------------------- the report's critical gap (item 1)
+def _report_cells(html: str, section: str, label: str) -> list[str]:
+    part = html[html.index(f'id="{section}"'):]
+    row = re.search(rf"<tr><td>{re.escape(label)}</td>(.*?)</tr>", part, re.S)
+    assert row, label
+    return re.findall(r"<td[^>]*>(.*?)</td>", row.group(1))
+
+
+def test_report_critical_gap_is_pounding_gaps(demo_run: Path, tmp_path: Path) -> None:
+    """The report's critical gap of every contact equals `pounding gap`'s for the same model
+    file, to the 4 significant digits the report prints (relative 5e-4) — also for the
+    floors that never touched in a run where others did (the run's own largest approach of
+    those is smaller: unconservative)."""
+    import pandas as pd
+
+    model = _short_demo(tmp_path)
+    table = tmp_path / "gaps.csv"
+    assert main(["gap", str(model), "--csv", str(table)]) == 0
+    gaps = pd.read_csv(table, comment="#").set_index("contact")["max_m"]
+    report = tmp_path / "report.html"
+    assert main(["report", str(demo_run), "--out", str(report)]) == 0
+    html = report.read_text(encoding="utf-8")
+    _, rows = _impacts(demo_run)
+    touched = {r["contact"] for r in rows}
+    assert "B1F1-B2F1" not in touched and "B1F10-B2F10" in touched
+    for label, expected in gaps.items():
+        cells = _report_cells(html, "gap-check", label)
+        assert float(cells[-1]) == pytest.approx(expected, rel=5e-4), label
+    # the untouched floor's largest approach in this run is not its critical gap
+    cells = _report_cells(html, "gap-check", "B1F1-B2F1")
+    assert float(cells[5]) < 0.9 * gaps["B1F1-B2F1"]
