@@ -57,19 +57,37 @@ def history_variables(result: "Result") -> HistoryVariables:
         "absolute_acceleration": var(result.abs_acceleration, ("time", "floor"), "m/s^2",
                                      "absolute floor acceleration"),
         "drift": var(result.drift, ("time", "floor"), "m",
-                     "storey drift (floor minus floor below; NaN: not a floor)"),
+                     "storey drift (floor minus floor below; a building in plan: along x "
+                     "under its x DOFs, along y under its y DOFs, at the centres of mass; "
+                     "under a base slab: its isolation bearing's displacement, also "
+                     "bearing_displacement; NaN: not a floor)"),
         "storey_shear": var(result.storey_shear, ("time", "floor"), "N",
-                            "storey shear (NaN: a building given as matrices)"),
+                            "storey shear (a building in plan: from its lateral elements, "
+                            "along x under its x DOFs, along y under its y DOFs; under a base "
+                            "slab: its isolation bearing's force, also bearing_force; NaN: a "
+                            "building given as matrices, which has no storey stiffness)"),
         "penetration": var(result.penetration, ("time", "contact"), "m",
                            "penetration u_left - u_right - gap (negative: open)"),
         "contact_force": var(result.contact_force, ("time", "contact"), "N",
                              "contact force (compression positive)"),
         "energy": var(result.energy, ("time", "energy_term"), "J", "cumulative energies"),
     }
+    if any(ps.has_elements for ps in result.plan_storeys):
+        data["storey_torque"] = var(result.storey_torque, ("time", "floor"), "N m",
+                                    "storey torque of a building in plan from its lateral "
+                                    "elements, about the centre of mass of the floor above, "
+                                    "under its θ DOFs (NaN elsewhere)")
+    if result.bearings:
+        dofs = [x.dof for x in result.bearings]
+        data["bearing_displacement"] = var(result.drift[:, dofs], ("time", "bearing"), "m",
+                                           "displacement of each isolation bearing (its "
+                                           "base slab relative to the ground)")
+        data["bearing_force"] = var(result.storey_shear[:, dofs], ("time", "bearing"), "N",
+                                    "force of each isolation bearing (its law's)")
     if model.is_inelastic:
         data["ductility"] = var(result.ductility, ("floor",), "1",
                                 "storey ductility demand max|drift| / yield drift "
-                                "(NaN: linear storey)")
+                                "(NaN: linear storey, or an isolation bearing)")
         data["residual_drift"] = var(result.residual_drift, ("floor",), "m",
                                      "residual storey drift after elastic unloading")
     if any(c.struck is not None for c in contacts):
@@ -111,6 +129,17 @@ def history_variables(result: "Result") -> HistoryVariables:
                                               np.array(names, dtype=object),
                                               {"long_name": "ground motion component "
                                                             "(column of the influence matrix)"})
+    kind = np.where(result.is_bearing, "bearing", np.where(model.is_floor, "storey", ""))
+    coords["storey_kind"] = Variable(("floor",), np.array(kind, dtype=object), {
+        "long_name": "what lies under the floor: 'storey', 'bearing' (an isolation bearing "
+                     "under a base slab, not a storey) or '' (not a floor)"})
+    if result.bearings:
+        coords["bearing"] = Variable(("bearing",), np.array(
+            [f"B{x.building + 1}" for x in result.bearings], dtype=object),
+            {"long_name": "building whose isolation bearing it is"})
+        coords["bearing_law"] = Variable(("bearing",), np.array(
+            [x.law for x in result.bearings], dtype=object),
+            {"long_name": "the bearing's law"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
                                                       dtype=object), {})

@@ -10,6 +10,7 @@ from rich.table import Table
 from rich.text import Text
 
 from pounding.cli.app import app, console  # noqa: F401
+from pounding.cli.tables import building_label
 
 
 def _h(text: str) -> Text:
@@ -141,7 +142,7 @@ def gap_cmd(
     head.add_column("quantity")
     head.add_column("value")
     for b, bl in enumerate(model.buildings):
-        head.add_row(f"B{b + 1} {bl.name}".strip(),
+        head.add_row(building_label(b, bl.name),
                      f"{bl.n} storey(s), T1 = {study.period[b]:.4g} s, ζ1 = {study.zeta[b]:.3g}")
     for p, rho in enumerate(study.rho):
         head.add_row(f"ρ B{p + 1}-B{p + 2}", f"{rho:.4f} (CQC, fundamental modes)")

@@ -79,7 +79,7 @@ def critical_gaps_of(r: RunFolder) -> tuple[dict[str, float], str]:
     try:
         study = critical_gaps(model, motion, dt=solver.get("dt"),
                               duration=solver.get("duration"))
-    except ValueError as exc:
+    except (ValueError, TypeError) as exc:  # (a model or record the study does not take)
         return {}, f"the gap study cannot be run for this model ({exc})"
     gaps = {label: float(g) for label, g in zip(study.labels, study.critical[0])}
     return gaps, (f"as pounding gap computes it from model.toml: each building simulated "
