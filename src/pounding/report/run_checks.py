@@ -16,8 +16,9 @@ ENERGY_DESCRIPTIONS: dict[str, str] = {
     "damping": "dissipated by structural (viscous) damping ∫u̇ᵀCu̇ dt",
     "contact_work": "work of the contact forces ∫ΣF·δ̇ dt",
     "contact_stored": "elastic energy still stored in closed contacts",
-    "hysteretic": "hysteretic energy of yielding storeys (their work less what they would give "
-                  "back)",
+    "hysteretic": "hysteretic energy of yielding storeys and isolation bearings (their work "
+                  "less what they would give back)",
+    "links": "dissipated by the links between buildings (their springs' energy is in strain)",
 }
 """What each term of the energy balance (``energy_term`` of ``timehistories.nc``) is."""
 
@@ -35,25 +36,36 @@ def energy_section(r: RunFolder) -> list[Block]:
     out: list[Block] = [t]
     needed = ("input", "kinetic", "strain", "damping", "contact_work")
     if all(k in col for k in needed):
-        closure = col["input"] - (col["kinetic"] + col["strain"] + col["damping"]
-                                  + col["contact_work"])
-        scale = max(float(np.abs(col["input"]).max()), 1e-300)
+        zero = np.zeros_like(col["input"])
+        # every term of the balance E_0 + input = kinetic + strain + damping + hysteretic
+        # + contact_work + links (result.ENERGY_NAMES); a term the file does not have is 0
+        spent = ("kinetic", "strain", "damping", "hysteretic", "contact_work", "links")
+        present = [k for k in spent if k in col]
+        e0 = float(col["kinetic"][0] + col["strain"][0])
+        total = sum((col[k] for k in present), zero)
+        closure = e0 + col["input"] - total
+        scale = max(float(np.abs(col["input"]).max()), e0, 1e-300)
         diss = col["contact_work"] - col.get("contact_stored", 0.0)
+        terms = " + ".join(present)
         items = [
             ("dissipated in contacts = contact_work − contact_stored, final [J]",
              float(diss[-1])),
-            ("kinetic + strain + damping + contact_work, final [J]",
-             float(col["input"][-1] - closure[-1])),
-            ("closure input − (kinetic + strain + damping + contact_work), final [J]",
-             float(closure[-1])),
+            (f"{terms}, final [J]", float(total[-1])),
+            ("energy at the start E_0 = kinetic + strain at t = 0 [J]", e0),
+            (f"closure E_0 + input − ({terms}), final [J]", float(closure[-1])),
             ("largest |closure| during the run [J]", float(np.abs(closure).max())),
-            ("largest |closure| / largest |input| [-]", float(np.abs(closure).max() / scale)),
+            ("largest |closure| / larger of largest |input| and E_0 [-]",
+             float(np.abs(closure).max() / scale)),
             ("energy_balance_error in summary.json [-]", r.summary.get("energy_balance_error")),
         ]
         if col["input"][-1] > 0:
-            share = [("structural damping", col["damping"][-1]), ("contacts", diss[-1]),
-                     ("kinetic + strain (still in motion)",
-                      col["kinetic"][-1] + col["strain"][-1])]
+            share = [("structural damping", col["damping"][-1]), ("contacts", diss[-1])]
+            if "hysteretic" in col and np.any(col["hysteretic"]):
+                share.append(("hysteresis (yielding storeys, bearings)", col["hysteretic"][-1]))
+            if "links" in col and np.any(col["links"]):
+                share.append(("links between buildings", col["links"][-1]))
+            share.append(("kinetic + strain (still in motion)",
+                          col["kinetic"][-1] + col["strain"][-1]))
             items += [(f"share of the final input: {k} [%]", 100.0 * float(v) / col["input"][-1])
                       for k, v in share]
         out.append(kv_table(items, caption="Closure"))
