@@ -312,6 +312,15 @@ def test_an_isolation_bearing_is_reported_as_a_bearing(tmp_path: Path,
     assert drawn and max(float(np.max(ln.get_xdata())) for ln in drawn) < 3.0
     assert min(float(np.min(ln.get_ydata())) for ln in drawn) == pytest.approx(1.0)
     assert "isolation bearing" in " ".join(t.get_text() for t in drift_panel.texts)
+    # the studies' measures of the same run: the superstructure's drift ratio, no ductility
+    from pounding.devices.optimal import RESPONSES
+    from pounding.studies.sweep.measures import result_row
+
+    row = result_row(r)
+    assert row["peak_drift_ratio"] == pytest.approx(max(s["peak_drift_ratio"].values()),
+                                                    rel=1e-2)
+    assert row["max_ductility"] is None
+    assert RESPONSES["peak_drift_ratio"](r) == pytest.approx(row["peak_drift_ratio"], rel=1e-2)
 
 
 # ------------------------------------------------ buildings in plan (item 5)
