@@ -417,3 +417,11 @@ def test_a_building_in_plan_is_labelled_by_floor_and_direction(
     assert damping == ["Rayleigh, ζ = 0.05 at modes 1 and 3"] * 2  # not "matrix C (given)"
     assert [t.caption.split(",")[0] for t in _plan_tables(folder)] == [
         "B1 in plan", "B2 in plan"]
+    # the headline's largest floor displacement is along y here, not the largest along x
+    from pounding.report.format import num
+    from pounding.report.run import _headline_section
+
+    cards = dict(_headline_section(folder)[0].items)
+    largest = max(row["peak_displacement_y_m"] for b in s["buildings"] for row in b["storeys"])
+    assert largest > max(s["peak_displacement_m"].values())
+    assert cards["largest floor displacement [m]"] == num(largest)

@@ -72,11 +72,14 @@ def _headline_section(r: RunFolder) -> list[Block]:
     s = r.summary
     solver = s.get("solver", {}) or {}
     e_err = s.get("energy_balance_error")
-    pdisp = s.get("peak_displacement_m", {}) or {}
+    pdisp = [v for v in (s.get("peak_displacement_m", {}) or {}).values() if v is not None]
+    # a building in plan: along y too (its floor labels above are along x)
+    pdisp += [row["peak_displacement_y_m"] for b in s.get("buildings", []) or []
+              for row in b.get("storeys", []) if row.get("peak_displacement_y_m") is not None]
     out: list[Block] = [Cards([
         ("impacts", num(s.get("n_impacts"))),
         ("peak contact force [N]", num(s.get("peak_contact_force_N"))),
-        ("largest floor displacement [m]", num(max(pdisp.values())) if pdisp else "–"),
+        ("largest floor displacement [m]", num(max(pdisp)) if pdisp else "–"),
         ("dissipated in contacts [J]", num(s.get("contact_dissipated_J"))),
         ("energy-balance error [of peak input]", f"{e_err:.2e}" if isinstance(e_err, float)
          else "–"),
@@ -128,7 +131,9 @@ def _response_table(r: RunFolder) -> Table:
         "at storey", "peak drift ratio [%]", "peak absolute floor acceleration [m/s²]")
     if inelastic:
         cols += ("peak storey ductility [-]", "largest residual drift [m]")
-    t = Table(cols, caption="Peak response of each building (absolute values over the run)"
+    t = Table(cols, caption="Peak response of each building (absolute values over the run, "
+              "at the output samples of timehistories.nc; summary.json and the printed tables "
+              "locate them inside solver steps)"
               + ("; ductility = peak drift / yield drift (NaN: linear storeys), residual "
                  "drift after elastic unloading" if inelastic else "")
               + ("; of an isolated building, its storeys above the base slab (the bearing "
