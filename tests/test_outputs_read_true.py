@@ -425,3 +425,32 @@ def test_a_building_in_plan_is_labelled_by_floor_and_direction(
     largest = max(row["peak_displacement_y_m"] for b in s["buildings"] for row in b["storeys"])
     assert largest > max(s["peak_displacement_m"].values())
     assert cards["largest floor displacement [m]"] == num(largest)
+
+
+# ------------------------------------------------ matrix buildings (item 6)
+def test_a_matrix_building_is_labelled_by_its_own_labels(tmp_path: Path) -> None:
+    """A matrix building with a rotation between its two floors (labels L1, θ1, L2): the
+    legends name its floors by its labels (L2, not the DOF number F3), the summary lists
+    only its floors, its storey shear is null and said to be missing, not zero."""
+    from pounding import PoundingModel, ShearBuilding, simulate
+    from pounding.ground_motion import el_centro
+    from pounding.model import ContactSpec
+    from pounding.plot.response import plot_displacements
+    from pounding.structure import MatrixBuilding
+
+    k = 4e8
+    frame = MatrixBuilding(M=np.diag([3e5, 2e4, 3e5]),
+                           K=[[2 * k, 0.1 * k, -k], [0.1 * k, 0.5 * k, 0.1 * k],
+                              [-k, 0.1 * k, k]],
+                           labels=["L1", "θ1", "L2"], elevations=[3.0, 3.0, 6.0],
+                           floors=["L1", "L2"], name="frame")
+    shear = ShearBuilding.uniform(2, 3e5, 6e8, height=3.0, name="shear")
+    model = PoundingModel([frame, shear], [0.005], ContactSpec("kelvin-voigt", k=9e8, e=0.65))
+    r = simulate(model, el_centro().trimmed(3.0))
+    s = r.summary()
+    assert list(s["peak_drift_ratio"]) == ["B1F1", "B1F3", "B2F1", "B2F2"]
+    assert [row["label"] for row in s["buildings"][0]["storeys"]] == ["L1", "L2"]
+    assert s["peak_storey_shear_N"]["B1F3"] != s["peak_storey_shear_N"]["B1F3"]  # NaN
+    legend = [t.get_text() for ax in plot_displacements(r).axes if ax.get_legend()
+              for t in ax.get_legend().get_texts()]
+    assert "L2 (roof, 6 m)" in legend and not any(t.startswith("F3") for t in legend)
