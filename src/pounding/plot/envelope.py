@@ -47,7 +47,7 @@ class Envelopes(NamedTuple):
     """Peak |displacement| of each floor relative to the ground [m] (N,)."""
     drift_ratio: NDArray[np.float64]
     """Peak |storey drift| / storey height of each storey (the storey below each floor)
-    [-] (N,)."""
+    [-] (N,); NaN under a base slab (its isolation bearing is no storey)."""
     shear: NDArray[np.float64]
     """Peak |storey shear| of each storey [N] (N,)."""
 
