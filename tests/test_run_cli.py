@@ -59,8 +59,8 @@ def test_run_seed_example_writes_everything(tmp_path: Path,
     out = tmp_path / "out"
     assert main(["run", str(SEED), "--out", str(out)]) == 0
     text = capsys.readouterr().out
-    for expected in ("impacts", "26", "peak contact force [N]", "peak roof displacement [m]",
-                     "peak drift", "dissipated in contacts [J]", "energy-balance error",
+    for expected in ("impacts", "26", "peak contact force [kN]", "peak roof displacement [mm]",
+                     "peak drift", "dissipated in contacts [kJ]", "energy-balance error",
                      "wall time [s]", "B1F1-B2F1", str(out)):
         assert expected in text, expected
     assert sorted(p.name for p in out.iterdir()) == IN_FOLDER

@@ -441,8 +441,12 @@ class PoundingModel:
 
     def dof_labels(self) -> list[str]:
         """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based): ``F<j>`` is the
-        building's DOF ``j`` (a matrix building's own labels: :meth:`dof_names`)."""
-        return [f"B{b + 1}F{j + 1}" for b, bl in enumerate(self.buildings) for j in range(bl.n)]
+        building's DOF ``j`` (a matrix building's own labels: :meth:`dof_names`); of a
+        building in plan, its floor and direction, ``'B2F3x'``, ``'B2F3y'``, ``'B2F3θ'``
+        (building 2, floor 3), as its contacts name its floors."""
+        return [f"B{b + 1}{bl.labels[j]}" if isinstance(bl, PlanMatrixBuilding)
+                else f"B{b + 1}F{j + 1}" for b, bl in enumerate(self.buildings)
+                for j in range(bl.n)]
 
     def dof_names(self) -> list[str]:
         """Every DOF's name in its building: a matrix building's labels, ``'F1'``, ``'F2'``,

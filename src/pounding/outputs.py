@@ -30,9 +30,15 @@ if TYPE_CHECKING:
 
 __all__ = ["IMPACTS_HEADER", "impacts_csv", "save_result", "write_netcdf"]
 
-IMPACTS_HEADER = ("# units: start, end [s]; v0 [m/s]; peak_force [N]; max_penetration [m]; "
-                  "restitution [-]; energy_dissipated [J]; elevation [m]\n")
-"""The comment line that opens ``impacts.csv``: the unit of every column."""
+IMPACTS_HEADER = ("# units: elevation [m]; start, end [s]; v0 [m/s]; peak_force [N]; "
+                  "peak_force_time [s]; max_penetration [m]; restitution [-]; "
+                  "energy_dissipated [J]. restitution = separation speed / approach speed v0 "
+                  "of the two contact points: between buildings the ground and the storeys "
+                  "push the floors during the impact, so it is not an energy ratio and may "
+                  "exceed 1; energy_dissipated = energy the contact element dissipated in "
+                  "that impact (>= 0), the impact's own loss\n")
+"""The comment line that opens ``impacts.csv``: the unit of every column and what the
+velocity ratio ``restitution`` and ``energy_dissipated`` mean."""
 
 
 def save_result(result: Result, folder: str | os.PathLike[str]) -> dict[str, Path]:
@@ -101,7 +107,7 @@ def impacts_csv(result: Result) -> str:
     """The impact table as CSV text (no unit line): one row per impact, columns
     ``contact, elevation`` and :data:`pounding.result.IMPACT_COLUMNS` after ``contact``;
     a missing value (an impact still open at the end) is an empty field."""
-    from pounding.result import IMPACT_COLUMNS
+    from pounding.result import IMPACT_COLUMNS, rounded_length
 
     contacts = result.model.contacts
     buf = io.StringIO()
@@ -109,7 +115,7 @@ def impacts_csv(result: Result) -> str:
     w.writerow(["contact", "elevation", *IMPACT_COLUMNS[1:]])
     for row in result.impact_array:
         c = contacts[int(row[0])]
-        w.writerow([c.label, _number(c.elevation), *(_number(x) for x in row[1:])])
+        w.writerow([c.label, _number(rounded_length(c.elevation)), *(_number(x) for x in row[1:])])
     return buf.getvalue()
 
 

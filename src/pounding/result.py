@@ -42,6 +42,20 @@ of the yielding storeys (their work ``∫ΣV ḋ dt`` minus their recoverable en
 ``contact_work − contact_stored``. The balance: ``E_0 + input = kinetic + strain + damping
 + hysteretic + contact_work``."""
 
+ELEVATION_DECIMALS = 6
+"""Decimals [m] of an elevation or storey height written to the outputs (1 µm): floor
+elevations are sums of storey heights, ``3.2 × 10`` adds up to ``31.999999999999996``."""
+
+
+def rounded_length(value: Any) -> Any:
+    """An elevation or storey height [m] (a float or an array) rounded to
+    :data:`ELEVATION_DECIMALS` for the outputs, so that it reads as given (``32.0``, not
+    ``31.999999999999996``)."""
+    if np.ndim(value) == 0:
+        return round(float(value), ELEVATION_DECIMALS)
+    return np.round(np.asarray(value, dtype=float), ELEVATION_DECIMALS)
+
+
 def peak_abs(a: NDArray[np.float64]) -> NDArray[np.float64]:
     """Largest absolute value of each column of a (time, item) history.
 
@@ -58,8 +72,10 @@ IMPACT_COLUMNS: tuple[str, ...] = ("contact", "start", "end", "v0", "peak_force"
                                    "energy_dissipated")
 """Columns of :attr:`Result.impact_array` (the contact as its index) and of
 :attr:`Result.impacts` (the contact as its label): start and end [s], closing velocity v0
-[m/s], peak force [N] and its time [s], largest penetration [m], achieved restitution [-],
-energy dissipated [J]."""
+[m/s], peak force [N] and its time [s], largest penetration [m], the velocity ratio
+``restitution`` (separation over approach speed of the two contact points [-]; the law's
+restitution only for free bodies: see :attr:`Result.impacts`), and the energy the contact
+element dissipated in the impact [J] (≥ 0)."""
 
 
 @dataclass(frozen=True)
@@ -159,14 +175,28 @@ class Result:
     def drift(self) -> NDArray[np.float64]:
         """Storey drift ``u_j − u_{j−1}`` [m] (nt, N), storey j of each building: floor j
         less the floor below it (:meth:`PoundingModel.floor_below`; consecutive floors by
-        elevation in a matrix building); NaN for a DOF that is not a floor."""
+        elevation in a matrix building); NaN for a DOF that is not a floor — except the
+        ``u_y`` DOFs of a building in plan, which hold the drift of the floors' centres of
+        mass along y (its ``u_x`` DOFs are its floors, their drift along x). A base slab's
+        drift is its isolation bearing's displacement (:attr:`bearings`)."""
         u = self.displacement
         below = self.model.floor_below()
         out = u.copy()
         sub = np.flatnonzero(below >= 0)
         out[:, sub] -= u[:, below[sub]]
         out[:, below == -2] = np.nan
+        for off, n in self._plan_blocks:
+            iy = off + 1 + 3 * np.arange(n)
+            out[:, iy] = u[:, iy]
+            out[:, iy[1:]] -= u[:, iy[:-1]]
         return out
+
+    @cached_property
+    def _plan_blocks(self) -> list[tuple[int, int]]:
+        """``(first DOF, floors)`` of every building in plan."""
+        return [(int(off), bl.plan.n_floors)
+                for off, bl in zip(self.model.system.offsets, self.model.buildings)
+                if getattr(bl, "plan", None) is not None]
 
     def _storey_stiffness(self) -> NDArray[np.float64]:
         """Storey stiffness [N/m] under every DOF: a shear building's ``k_j``; NaN for a
@@ -177,7 +207,10 @@ class Result:
     @cached_property
     def storey_shear(self) -> NDArray[np.float64]:
         """Storey shear [N] (nt, N): ``k_j × drift_j`` for linear storeys, the storey law's
-        shear for yielding ones; NaN for a matrix building (no storey stiffness)."""
+        shear for yielding ones (a base slab's: its bearing's force); for a building in plan
+        with lateral elements, ``V_x`` under its ``u_x`` DOFs and ``V_y`` under its ``u_y``
+        DOFs (:func:`pounding.result_storeys.plan_storey_forces`; the torque is
+        :attr:`storey_torque`); NaN for another matrix building (no storey stiffness)."""
         k = self._storey_stiffness()
         out = self.drift * k
         cols = self._yielding_columns()
@@ -185,7 +218,56 @@ class Result:
             if self.yielding_shear is None:
                 raise ValueError("result: the model has yielding storeys but no yielding_shear")
             out[:, cols] = self.yielding_shear
+        for (off, n), (vx, vy, _) in zip(self._plan_blocks, self._plan_forces):
+            ix = off + 3 * np.arange(n)
+            out[:, ix], out[:, ix + 1] = vx, vy
         return out
+
+    @cached_property
+    def storey_torque(self) -> NDArray[np.float64]:
+        """Storey torque [N·m] (nt, N) under the ``θ`` DOFs of a building in plan with
+        lateral elements, about the centre of mass of the floor above
+        (:func:`pounding.result_storeys.plan_storey_forces`); NaN elsewhere."""
+        out = np.full(self.displacement.shape, np.nan)
+        for (off, n), (_, _, tq) in zip(self._plan_blocks, self._plan_forces):
+            out[:, off + 2 + 3 * np.arange(n)] = tq
+        return out
+
+    @cached_property
+    def _plan_forces(self) -> list[tuple[NDArray[np.float64], ...]]:
+        """``(V_x, V_y, T)`` histories of every building in plan, (nt, floors) each."""
+        from pounding.result_storeys import plan_storey_forces
+
+        plans = [bl.plan for bl in self.model.buildings if getattr(bl, "plan", None) is not None]
+        return [plan_storey_forces(plan, self.displacement[:, off: off + 3 * n])
+                for plan, (off, n) in zip(plans, self._plan_blocks)]
+
+    @cached_property
+    def plan_storeys(self) -> list[Any]:
+        """Floor-by-floor peaks of every building in plan (x, y, rotation, drifts, storey
+        shears and torque: :class:`pounding.result_storeys.PlanStoreys`); empty without
+        one."""
+        from pounding.result_storeys import plan_storeys
+
+        return plan_storeys(self)
+
+    @cached_property
+    def bearings(self) -> list[Any]:
+        """The isolation bearing of every base-isolated building: its law, peak displacement
+        and force with their times, residual displacement
+        (:class:`pounding.result_storeys.BearingPeaks`); empty without one."""
+        from pounding.result_storeys import bearing_peaks
+
+        return bearing_peaks(self)
+
+    @cached_property
+    def is_bearing(self) -> NDArray[np.bool_]:
+        """True at every base slab (N,): its "storey" is an isolation bearing, reported by
+        :attr:`bearings` and left out of the storey measures (:attr:`peak_drift_ratio`,
+        :attr:`ductility`)."""
+        from pounding.result_storeys import bearing_mask
+
+        return bearing_mask(self.model)
 
     def _yielding_columns(self) -> NDArray[np.int64]:
         offsets = self.model.system.offsets
@@ -194,14 +276,16 @@ class Result:
     @cached_property
     def ductility(self) -> NDArray[np.float64]:
         """Storey ductility demand ``max|drift| / (F_y / k)`` [-] (N,); NaN for linear
-        storeys (no yield point). The peak drift is :attr:`peak_drift` (located inside
-        steps)."""
+        storeys (no yield point) and for an isolation bearing (not a storey: its
+        displacement is in :attr:`bearings`). The peak drift is :attr:`peak_drift` (located
+        inside steps)."""
         out = np.full(self.model.n_dof, np.nan)
         peak = self.peak_drift
         for off, b in zip(self.model.system.offsets, self.model.buildings):
             fy = b.yield_forces
             if fy is not None:
                 out[off: off + b.n] = peak[off: off + b.n] / (fy / b.stiffnesses)
+        out[self.is_bearing] = np.nan
         return out
 
     @cached_property
@@ -287,22 +371,31 @@ class Result:
     # ----------------------------------------------------------------- impacts and peaks
     @cached_property
     def impacts(self) -> pd.DataFrame:
-        """One row per impact: contact label, start/end [s], impact velocity v0 [m/s], peak
-        force [N], maximum penetration [m], achieved restitution, energy dissipated [J].
+        """One row per impact: contact label, elevation [m], start/end [s], impact velocity
+        v0 [m/s], peak force [N] and its time [s], maximum penetration [m], the velocity
+        ratio ``restitution`` [-], the energy dissipated by the contact in the impact [J].
 
         An impact ends when the penetration returns to zero (``end``); for laws that cannot
         pull (clipped Kelvin–Voigt, Hunt–Crossley) the force may have returned to zero a
         little earlier, which is where :func:`pounding.contact.collision.simulate_collision`
-        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``. Between buildings it is not bounded by 1:
-        the floors are not free bodies, and the rest of each building can push them apart
-        faster than they met. Impacts still open at the end have NaN end, restitution and
+        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``, the ratio of
+        the speeds at which the two contact points part and met. For two free bodies it is
+        the law's coefficient of restitution (the kinetic energy of the relative motion
+        keeps the fraction e² of itself); between buildings it is not: the ground and the
+        storeys keep pushing the floors during the impact, so the ratio says nothing of
+        the energy and may exceed 1 (the rest of each building pushing the floors apart
+        faster than they met) — no energy is created. The impact's own loss is
+        ``energy_dissipated``, the work of the contact force over the impact
+        ``∫ F δ̇ dt`` (δ = 0 at both ends, so none of it is still stored), ≥ 0 for every
+        passive law. Impacts still open at the end have NaN end, restitution and
         energy."""
         import pandas as pd
 
         df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
         labels = [c.label for c in self.model.contacts]
         df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
-        df.insert(1, "elevation", [self.model.contacts[labels.index(lb)].elevation
+        df.insert(1, "elevation", [rounded_length(self.model.contacts[labels.index(lb)]
+                                                  .elevation)
                                    for lb in df["contact"]] if len(df) else [])
         return df
 
@@ -402,8 +495,10 @@ class Result:
 
     @property
     def peak_drift_ratio(self) -> NDArray[np.float64]:
-        """:attr:`peak_drift` over the storey height [-] (N,)."""
-        return self.peak_drift / np.concatenate([b.heights for b in self.model.buildings])
+        """:attr:`peak_drift` over the storey height [-] (N,); NaN for a DOF that is not a
+        floor and under a base slab (its isolation bearing is no storey: :attr:`bearings`)."""
+        ratio = self.peak_drift / np.concatenate([b.heights for b in self.model.buildings])
+        return np.where(self.is_bearing, np.nan, ratio)
 
     @property
     def peak_abs_acceleration(self) -> NDArray[np.float64]:
@@ -426,6 +521,9 @@ class Result:
         cols = self._yielding_columns()
         if cols.size:
             out[cols] = np.abs(self.storey_shear[:, cols]).max(axis=0)
+        for ps in self.plan_storeys:
+            ix = ps.offset + 3 * np.arange(ps.elevation.size)
+            out[ix], out[ix + 1] = ps.shear_x, ps.shear_y
         return out
 
     @cached_property
@@ -436,6 +534,9 @@ class Result:
         cols = self._yielding_columns()
         if cols.size:
             out[cols] = self.time[np.argmax(np.abs(self.storey_shear[:, cols]), axis=0)]
+        for ps in self.plan_storeys:
+            ix = ps.offset + 3 * np.arange(ps.elevation.size)
+            out[ix], out[ix + 1] = ps.shear_x_time, ps.shear_y_time
         return out
 
     @property

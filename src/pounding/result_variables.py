@@ -37,7 +37,7 @@ def history_variables(result: "Result") -> HistoryVariables:
     """Every time history and per-floor result as named variables with dimensions, units
     and descriptions: what :meth:`Result.to_dataset` and the NetCDF file hold (one description,
     two writers)."""
-    from pounding.result import ENERGY_NAMES
+    from pounding.result import ENERGY_NAMES, rounded_length
 
     model = result.model
     contacts = model.contacts
@@ -57,19 +57,37 @@ def history_variables(result: "Result") -> HistoryVariables:
         "absolute_acceleration": var(result.abs_acceleration, ("time", "floor"), "m/s^2",
                                      "absolute floor acceleration"),
         "drift": var(result.drift, ("time", "floor"), "m",
-                     "storey drift (floor minus floor below; NaN: not a floor)"),
+                     "storey drift (floor minus floor below; a building in plan: along x "
+                     "under its x DOFs, along y under its y DOFs, at the centres of mass; "
+                     "under a base slab: its isolation bearing's displacement, also "
+                     "bearing_displacement; NaN: not a floor)"),
         "storey_shear": var(result.storey_shear, ("time", "floor"), "N",
-                            "storey shear (NaN: a building given as matrices)"),
+                            "storey shear (a building in plan: from its lateral elements, "
+                            "along x under its x DOFs, along y under its y DOFs; under a base "
+                            "slab: its isolation bearing's force, also bearing_force; NaN: a "
+                            "building given as matrices, which has no storey stiffness)"),
         "penetration": var(result.penetration, ("time", "contact"), "m",
                            "penetration u_left - u_right - gap (negative: open)"),
         "contact_force": var(result.contact_force, ("time", "contact"), "N",
                              "contact force (compression positive)"),
         "energy": var(result.energy, ("time", "energy_term"), "J", "cumulative energies"),
     }
+    if any(ps.has_elements for ps in result.plan_storeys):
+        data["storey_torque"] = var(result.storey_torque, ("time", "floor"), "N m",
+                                    "storey torque of a building in plan from its lateral "
+                                    "elements, about the centre of mass of the floor above, "
+                                    "under its θ DOFs (NaN elsewhere)")
+    if result.bearings:
+        dofs = [x.dof for x in result.bearings]
+        data["bearing_displacement"] = var(result.drift[:, dofs], ("time", "bearing"), "m",
+                                           "displacement of each isolation bearing (its "
+                                           "base slab relative to the ground)")
+        data["bearing_force"] = var(result.storey_shear[:, dofs], ("time", "bearing"), "N",
+                                    "force of each isolation bearing (its law's)")
     if model.is_inelastic:
         data["ductility"] = var(result.ductility, ("floor",), "1",
                                 "storey ductility demand max|drift| / yield drift "
-                                "(NaN: linear storey)")
+                                "(NaN: linear storey, or an isolation bearing)")
         data["residual_drift"] = var(result.residual_drift, ("floor",), "m",
                                      "residual storey drift after elastic unloading")
     if any(c.struck is not None for c in contacts):
@@ -92,16 +110,17 @@ def history_variables(result: "Result") -> HistoryVariables:
         "energy_term": Variable(("energy_term",), np.array(ENERGY_NAMES, dtype=object), {}),
         "building": Variable(("floor",), np.array(buildings, dtype=object),
                              {"long_name": "building of each floor (B1 leftmost)"}),
-        "floor_elevation": var(np.concatenate([b.floor_levels for b in model.buildings]),
+        "floor_elevation": var(rounded_length(np.concatenate([b.floor_levels
+                                                                   for b in model.buildings])),
                                ("floor",), "m", "floor elevation above the ground"),
-        "storey_height": var(np.concatenate([b.heights for b in model.buildings]),
+        "storey_height": var(rounded_length(np.concatenate([b.heights for b in model.buildings])),
                              ("floor",), "m", "height of the storey below the floor (NaN: "
                              "a degree of freedom that is not a floor)"),
         "dof_name": Variable(("floor",), np.array(model.dof_names(), dtype=object),
                              {"long_name": "the degree of freedom's name in its building (a "
                                            "matrix building's labels; a DOF that is not a "
                                            "floor translation, a rotation say, is in rad)"}),
-        "contact_elevation": var([c.elevation for c in contacts], ("contact",), "m",
+        "contact_elevation": var(rounded_length([c.elevation for c in contacts]), ("contact",), "m",
                                  "elevation of the contact"),
     }
     if len(ground_dims) == 2:
@@ -110,6 +129,17 @@ def history_variables(result: "Result") -> HistoryVariables:
                                               np.array(names, dtype=object),
                                               {"long_name": "ground motion component "
                                                             "(column of the influence matrix)"})
+    kind = np.where(result.is_bearing, "bearing", np.where(model.is_floor, "storey", ""))
+    coords["storey_kind"] = Variable(("floor",), np.array(kind, dtype=object), {
+        "long_name": "what lies under the floor: 'storey', 'bearing' (an isolation bearing "
+                     "under a base slab, not a storey) or '' (not a floor)"})
+    if result.bearings:
+        coords["bearing"] = Variable(("bearing",), np.array(
+            [f"B{x.building + 1}" for x in result.bearings], dtype=object),
+            {"long_name": "building whose isolation bearing it is"})
+        coords["bearing_law"] = Variable(("bearing",), np.array(
+            [x.law for x in result.bearings], dtype=object),
+            {"long_name": "the bearing's law"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
                                                       dtype=object), {})

@@ -9,32 +9,41 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.result import ENERGY_NAMES
+from pounding.result import ENERGY_NAMES, rounded_length
 
 if TYPE_CHECKING:
     from pounding.result import Result
 
-__all__ = ["building_summary", "inelastic_summary", "summarize"]
+__all__ = ["bearing_summary", "building_summary", "inelastic_summary", "summarize"]
 
 
 def summarize(r: Result) -> dict[str, Any]:
     """Headline numbers (JSON-ready), each key naming its unit.
 
     Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3 — of a matrix
-    building, its DOF 3; the drift and shear of a floor are those of the storey below it)
-    and located inside solver steps, each with its time (``…_time_s``); only floors are
-    listed (a matrix building's other DOFs, rotations say, are in the NetCDF file). The
-    storey shear of a matrix building is null: its ``K`` has no storey stiffness.
-    ``buildings`` repeats them building by building, storey by storey (floors by
-    elevation), with the building's natural periods — the table an engineer reads first.
+    building, its DOF 3; of a building in plan, floor and direction, ``B1F3x``; the drift
+    and shear of a floor are those of the storey below it) and located inside solver
+    steps, each with its time (``…_time_s``); only floors are listed (a matrix building's
+    other DOFs, rotations say, are in the NetCDF file). The storey shear of a matrix
+    building is null: its ``K`` has no storey stiffness (a building in plan with lateral
+    elements has its shears, from them). The drift, drift ratio and shear under a base
+    slab are not listed: that is the isolation bearing, in ``bearings`` (its law,
+    displacement and force). ``buildings`` repeats them building by building, storey by
+    storey (floors by elevation), with the building's natural periods — the table an
+    engineer reads first; a building in plan adds, storey by storey, the peaks along y,
+    the rotation and the torque.
     """
     pcf = r.peak_contact_force
     labels = r.model.dof_labels()
     floor = r.model.is_floor
+    storey = floor & ~r.is_bearing  # a base slab's "storey" is its bearing: r.bearings
     contacts = r.model.contacts
 
     def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
         return {lb: float(v) for lb, v, f in zip(labels, values, floor) if f}
+
+    def by_storey(values: NDArray[np.float64]) -> dict[str, float]:
+        return {lb: float(v) for lb, v, f in zip(labels, values, storey) if f}
 
     return {
         "model": r.model.name,
@@ -54,11 +63,11 @@ def summarize(r: Result) -> dict[str, Any]:
                                zip(contacts, r.impacts_per_contact)},
         "peak_displacement_m": by_floor(r.peak_displacement),
         "peak_displacement_time_s": by_floor(r.peak_displacement_time),
-        "peak_drift_m": by_floor(r.peak_drift),
-        "peak_drift_time_s": by_floor(r.peak_drift_time),
-        "peak_drift_ratio": by_floor(r.peak_drift_ratio),
-        "peak_storey_shear_N": by_floor(r.peak_storey_shear),
-        "peak_storey_shear_time_s": by_floor(r.peak_storey_shear_time),
+        "peak_drift_m": by_storey(r.peak_drift),
+        "peak_drift_time_s": by_storey(r.peak_drift_time),
+        "peak_drift_ratio": by_storey(r.peak_drift_ratio),
+        "peak_storey_shear_N": by_storey(r.peak_storey_shear),
+        "peak_storey_shear_time_s": by_storey(r.peak_storey_shear_time),
         "peak_abs_acceleration_m_s2": by_floor(r.peak_abs_acceleration),
         "peak_abs_acceleration_time_s": by_floor(r.peak_abs_acceleration_time),
         "buildings": building_summary(r),
@@ -66,6 +75,7 @@ def summarize(r: Result) -> dict[str, Any]:
         "contact_dissipated_J": float(r.contact_dissipated[-1]),
         "energy_balance_error": r.energy_balance_error,
         **rotation_summary(r),
+        **bearing_summary(r),
         **inelastic_summary(r),
         **device_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
@@ -109,7 +119,11 @@ def rotation_summary(r: Result) -> dict[str, Any]:
 
 def building_summary(r: Result) -> list[dict[str, Any]]:
     """Per building: its natural periods and, storey by storey (floors by elevation; a
-    matrix building's DOF label as ``label``), the peaks and times."""
+    matrix building's DOF label as ``label``), the peaks and times. A base-isolated
+    building lists its superstructure's storeys (storey 1 above the base slab; the bearing
+    under the slab is in ``bearings``: :func:`bearing_summary`); a building in plan adds
+    along y (centres of mass), the floor's rotation and the storey torque, its storey
+    shears from its lateral elements."""
     from pounding.structure import MatrixBuilding
     from pounding.structure.assembly import floor_dofs
 
@@ -123,28 +137,72 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
                   ("peak_storey_shear_time_s", r.peak_storey_shear_time),
                   ("peak_abs_acceleration_m_s2", r.peak_abs_acceleration),
                   ("peak_abs_acceleration_time_s", r.peak_abs_acceleration_time))
-    rotations = {(b, k): (v, t) for b, k, _, v, t in floor_rotations(r)}
+    plans = {ps.building: ps for ps in r.plan_storeys}
+    bearing = r.is_bearing
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
         storeys = []
         matrices = isinstance(bl, MatrixBuilding)
-        for k, j in enumerate(floor_dofs(bl)):
-            row: dict[str, Any] = {"storey": k + 1,
-                                   **({"floor": f"F{j + 1}", "label": bl.labels[j]}
-                                      if matrices else {}),
-                                   "floor_elevation_m": float(bl.floor_levels[j]),
-                                   "height_m": float(bl.heights[j])}
+        ps = plans.get(b)
+        for k, j in enumerate(j for j in floor_dofs(bl) if not bearing[off + j]):
+            row: dict[str, Any] = {"storey": k + 1}
+            if ps is not None:
+                row.update(floor=f"F{j // 3 + 1}", label=bl.labels[j])
+            elif matrices:
+                row.update(floor=f"F{j + 1}", label=bl.labels[j])
+            elif bearing[off]:
+                row["floor"] = f"F{j + 1}"  # floor 1 is the base slab
+            row.update({"floor_elevation_m": rounded_length(bl.floor_levels[j]),
+                        "height_m": rounded_length(bl.heights[j])})
             row.update({key: float(v[off + j]) for key, v in quantities})
-            if (b, k) in rotations:
-                row["peak_rotation_mrad"] = 1e3 * rotations[b, k][0]
-                row["peak_rotation_time_s"] = rotations[b, k][1]
+            if ps is not None:
+                f = j // 3
+                row.update({
+                    "peak_displacement_y_m": float(ps.displacement_y[f]),
+                    "peak_displacement_y_time_s": float(ps.displacement_y_time[f]),
+                    "peak_drift_y_m": float(ps.drift_y[f]),
+                    "peak_drift_y_time_s": float(ps.drift_y_time[f]),
+                    "peak_drift_ratio_y": float(ps.drift_ratio_y[f]),
+                    "peak_storey_shear_y_N": float(ps.shear_y[f]),
+                    "peak_storey_shear_y_time_s": float(ps.shear_y_time[f]),
+                    "peak_storey_torque_N_m": float(ps.torque[f]),
+                    "peak_storey_torque_time_s": float(ps.torque_time[f]),
+                    "peak_abs_acceleration_y_m_s2": float(ps.acceleration_y[f]),
+                    "peak_abs_acceleration_y_time_s": float(ps.acceleration_y_time[f]),
+                    "peak_rotation_mrad": 1e3 * float(ps.rotation[f]),
+                    "peak_rotation_time_s": float(ps.rotation_time[f])})
             storeys.append(row)
-        given = ({"given_as": "plan", "n_dof": bl.n} if any(key[0] == b for key in rotations)
+        given = ({"given_as": "plan", "n_dof": bl.n,
+                  "directions": "x, y: along the site axes at each floor's centre of mass; "
+                                "θ: the floor's rotation; torque about the centre of mass "
+                                "of the floor above"} if ps is not None
                  else {"given_as": "matrices", "n_dof": bl.n} if matrices else {})
+        if bearing[off]:
+            given = {"isolated_on": next(x.law for x in r.bearings if x.building == b),
+                     "base_slab_elevation_m": rounded_length(bl.floor_levels[0])}
         out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": len(storeys),
                     **given,
                     "periods_s": [float(t) for t in bl.modes().periods],
                     "storeys": storeys})
     return out
+
+
+def bearing_summary(r: Result) -> dict[str, Any]:
+    """``bearings``: the isolation bearing of every base-isolated building — its law in
+    words, the base slab it carries, its peak displacement [m] (located inside solver
+    steps) and force [N] with their times, and its residual displacement [m]; reported
+    here, apart from the storeys above it."""
+    if not r.bearings:
+        return {}
+    labels = r.model.dof_labels()
+    return {"bearings": [{"building": f"B{x.building + 1}", "base_slab": labels[x.dof],
+                          "law": x.law, "kind": x.kind,
+                          "base_slab_elevation_m": rounded_length(x.elevation),
+                          "peak_displacement_m": x.peak_displacement,
+                          "peak_displacement_time_s": x.peak_displacement_time,
+                          "peak_force_N": x.peak_force,
+                          "peak_force_time_s": x.peak_force_time,
+                          "residual_displacement_m": x.residual_displacement}
+                         for x in r.bearings]}
 
 def inelastic_summary(r: Result) -> dict[str, Any]:
     out: dict[str, Any] = {}
@@ -153,8 +211,8 @@ def inelastic_summary(r: Result) -> dict[str, Any]:
         out["hysteretic_energy_J"] = float(r.energy[-1, 6])
         out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
                                    if np.isfinite(v)}
-        out["residual_drift_m"] = {lb: float(v) for lb, v in
-                                   zip(labels, r.residual_drift)}
+        out["residual_drift_m"] = {lb: float(v) for lb, v, bearing in
+                                   zip(labels, r.residual_drift, r.is_bearing) if not bearing}
     struck = [c for c in r.model.contacts if c.struck is not None]
     if struck:
         pcs = r.peak_column_shear

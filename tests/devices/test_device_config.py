@@ -58,7 +58,7 @@ def test_a_linked_run_reports_its_links(tmp_path: Path, capsys):
     f.write_text(MODEL)
     assert main(["run", str(f), "--out", str(tmp_path / "o"), "--no-figures"]) == 0
     out = capsys.readouterr().out
-    assert "Links between buildings" in out and "dissipated by links [J]" in out
+    assert "Links between buildings" in out and "dissipated by links [kJ]" in out
     s = json.loads((tmp_path / "o" / "summary.json").read_text())
     assert s["links"][0]["name"] == "B1F1-B2F1"
     assert s["links_dissipated_J"] == pytest.approx(s["energy_final_J"]["links"])

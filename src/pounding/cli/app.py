@@ -37,9 +37,13 @@ def _root(version: Annotated[bool, typer.Option(
     """Seismic pounding of adjacent buildings: impact laws, restitution, time histories."""
 
 
-console = Console(width=None if sys.stdout.isatty() else 160)
+console = Console(width=None if sys.stdout.isatty() else 160, markup=False, emoji=False,
+                  highlight=False)
 """Where tables and messages go (standard output); 160 columns wide when not a terminal, so
-tables written to a file or a pipe are never squeezed."""
+tables written to a file or a pipe are never squeezed. It prints text literally: no rich
+markup (a name with ``[bold]`` or ``[link=…]`` in it prints as typed), no emoji codes
+(``:x:``), no highlighting; styles are given as :class:`rich.text.Text` styles."""
 
-err_console = Console(stderr=True)
-"""Where errors go (standard error)."""
+err_console = Console(stderr=True, emoji=False, highlight=False)
+"""Where errors go (standard error); :func:`pounding.cli.error_line` escapes the message's
+markup, and emoji codes are never replaced."""

@@ -94,9 +94,9 @@ def _print(res: Any) -> None:
         g.add_row(name, f"{1000 * gm:.1f}{ci}", f"{pe:.2f}", f"{pf:.3f}")
     console.print(g)
     if a.n_failed:
-        console.print(f"[red]{a.n_failed} run(s) failed[/]: see results.parquet "
-                      f"(first: {a.failures[0]})", highlight=False)
+        console.print(Text.assemble((f"{a.n_failed} run(s) failed", "red"),
+                                    f": see results.parquet (first: {a.failures[0]})"))
     console.print(f"{res.wall_time:.1f} s (runs {res.sweep.run_time:.1f} s, gaps "
                   f"{res.gap_time:.1f} s, analysis and files {res.analysis_time:.1f} s); "
-                  f"results in [bold]{plan.out}[/]", highlight=False)
+                  f"results in {plan.out}")
 

@@ -6,15 +6,10 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from rich.table import Table
 from rich.text import Text
 
 from pounding.cli.app import app, console  # noqa: F401
-
-
-def _h(text: str) -> Text:
-    """A header cell: brackets in units are literal, not rich markup."""
-    return Text(text)
+from pounding.cli.tables import Col, building_label, print_table
 
 
 def _ratio_cell(value: float, reference: float) -> str:
@@ -206,71 +201,57 @@ def gap_cmd(
         spec_peaks = study.spectral_peaks(spec)
         spec_rules = study.rules_from_spectrum(spec)
 
-    head = Table(title=f"{model.name}: buildings and records", show_header=False)
-    head.add_column("quantity")
-    head.add_column("value")
-    for b, bl in enumerate(model.buildings):
-        head.add_row(Text(f"B{b + 1} {bl.name}".strip()),
-                     f"{_floors(bl)}, T1 = {study.period[b]:.4g} s, ζ1 = {study.zeta[b]:.3g}")
-    for p, rho in enumerate(study.rho):
-        head.add_row(f"ρ B{p + 1}-B{p + 2}", f"{rho:.4f} (CQC, fundamental modes)")
-    for i, m in enumerate(motions):
-        head.add_row(f"R{i + 1}", Text(f"{m.name}: PGA {m.pga_g:.3f} g, simulated "
-                                        f"{study.durations[i]:g} s"))
-    head.add_row("output step", f"{study.dt:g} s (peaks refined between samples)")
-    console.print(head)
+    head = [(building_label(b, bl.name),
+             f"{_floors(bl)}, T1 = {study.period[b]:.4g} s, ζ1 = {study.zeta[b]:.3g}")
+            for b, bl in enumerate(model.buildings)]
+    head += [(f"ρ B{p + 1}-B{p + 2}", f"{rho:.4f} (CQC, fundamental modes)")
+             for p, rho in enumerate(study.rho)]
+    head += [(f"R{i + 1}", f"{m.name}: PGA {m.pga_g:.3f} g, simulated "
+                           f"{study.durations[i]:g} s") for i, m in enumerate(motions)]
+    head.append(("output step", f"{study.dt:g} s (peaks refined between samples)"))
+    print_table(console, f"{model.name}: buildings and records",
+                [Col("quantity", "left", wrap=True), Col("value", "left", wrap=True)], head,
+                show_header=False)
     console.print(Text(how))
 
     names = list(study.records)
-    table = Table(title=Text(f"{model.name}: critical separation gap [m] by simulation and code rules", style="italic"))
-    table.add_column("pair")
-    table.add_column(_h("level [m]"), justify="right")
     plan_points = any("@y=" in label for label in study.labels)
-    if plan_points:
-        table.add_column(_h("contact"))
-    for i, name in enumerate(names):
-        table.add_column(_h(f"R{i + 1}"), justify="right")
-    table.add_column("mean", justify="right")
-    table.add_column("max", justify="right")
     rules = study.rules_from_peaks("mean")
-    for rule in rules:
-        table.add_column(_h(rule), justify="right", no_wrap=True)
+    cols = [Col("pair", "left"), Col("level [m]"),
+            *([Col("contact", "left", wrap=True)] if plan_points else []),
+            *(Col(f"R{i + 1}") for i in range(len(names))), Col("mean"), Col("max"),
+            *(Col(rule, wrap=True) for rule in rules)]
     mean, top = study.mean_critical, study.max_critical
-    for k in range(study.n_levels):
-        table.add_row(Text(study.gap_names[k]), f"{study.elevation[k]:g}",
-                      *([Text(study.labels[k])] if plan_points else []),
-                      *(f"{study.critical[i, k]:.4f}" for i in range(len(names))),
-                      f"{mean[k]:.4f}", f"{top[k]:.4f}",
-                      *(_ratio_cell(float(v[k]), float(top[k])) for v in rules.values()))
-    table.caption = Text("R1, R2, ...: critical gap = max over time of u_left − u_right from each building "
-                     "simulated alone (no contact), 0 if never positive"
-                     + ("; in plan, u of the contact point along x (the floor's sway and "
-                        "twist)" if plan_points else "")
-                     + ("; beside a moat wall, the building's largest displacement toward "
-                        "the wall (the moat width it needs)" if model.walls else "")
-                     + ". ABS = u1 + u2, SRSS = "
-                     "sqrt(u1² + u2²), DDC = sqrt(u1² + u2² − 2ρu1u2), with u1, u2 the mean over "
-                     "records of each building's simulated peak |u| at that level; (×r) = rule / "
-                     "max simulated.")
-    console.print(table)
+    rows = [[study.gap_names[k], f"{study.elevation[k]:g}",
+             *([study.labels[k]] if plan_points else []),
+             *(f"{study.critical[i, k]:.4f}" for i in range(len(names))),
+             f"{mean[k]:.4f}", f"{top[k]:.4f}",
+             *(_ratio_cell(float(v[k]), float(top[k])) for v in rules.values())]
+            for k in range(study.n_levels)]
+    print_table(console, f"{model.name}: critical separation gap [m] by simulation and code "
+                "rules", cols, rows, keys=2,
+                caption="R1, R2, ...: critical gap = max over time of u_left − u_right from "
+                        "each building simulated alone (no contact), 0 if never positive"
+                        + ("; in plan, u of the contact point along x (the floor's sway and "
+                           "twist)" if plan_points else "")
+                        + ("; beside a moat wall, the building's largest displacement toward "
+                           "the wall (the moat width it needs)" if model.walls else "")
+                        + ". ABS = u1 + u2, SRSS = sqrt(u1² + u2²), DDC = sqrt(u1² + u2² − "
+                        "2ρu1u2), with u1, u2 the mean over records of each building's "
+                        "simulated peak |u| at that level; (×r) = rule / max simulated.")
 
     if spec is not None:
-        st = Table(title=Text(f"Code rules from the design spectrum {spec.name!r} [m] "
-                              "(fundamental mode: u = |Γ1 φ1| Sd(T1))", style="italic"))
-        st.add_column("pair")
-        st.add_column(_h("level [m]"), justify="right")
-        st.add_column(_h("u1 [m]"), justify="right")
-        st.add_column(_h("u2 [m]"), justify="right")
-        for rule in spec_rules:
-            st.add_column(_h(rule), justify="right", no_wrap=True)
-        for k in range(study.n_levels):
-            st.add_row(Text(study.gap_names[k]), f"{study.elevation[k]:g}",
-                       f"{spec_peaks[0][k]:.4f}", f"{spec_peaks[1][k]:.4f}",
-                       *(_ratio_cell(float(v[k]), float(top[k])) for v in spec_rules.values()))
-        st.caption = Text("Sd(T1) [m]: " + ", ".join(
-            f"B{b + 1} {float(spec.sd(study.period[b])):.4f}"
-            for b in range(len(model.buildings))) + "; (×r) = rule / max simulated")
-        console.print(st)
+        cols = [Col("pair", "left"), Col("level [m]"), Col("u1 [m]"), Col("u2 [m]"),
+                *(Col(rule, wrap=True) for rule in spec_rules)]
+        rows = [[study.gap_names[k], f"{study.elevation[k]:g}",
+                 f"{spec_peaks[0][k]:.4f}", f"{spec_peaks[1][k]:.4f}",
+                 *(_ratio_cell(float(v[k]), float(top[k])) for v in spec_rules.values())]
+                for k in range(study.n_levels)]
+        print_table(console, f"Code rules from the design spectrum {spec.name!r} [m] "
+                    "(fundamental mode: u = |Γ1 φ1| Sd(T1))", cols, rows, keys=2,
+                    caption="Sd(T1) [m]: " + ", ".join(
+                        f"B{b + 1} {float(spec.sd(study.period[b])):.4f}"
+                        for b in range(len(model.buildings))) + "; (×r) = rule / max simulated")
 
     gov = study.governing_gaps()
     between = {f"B{p + 1}-B{p + 2}" for p in range(len(model.buildings) - 1)}

@@ -61,5 +61,5 @@ def _print(res: Any) -> None:
                   f"{r['contact_dissipated_J'] / 1e6:.3g} / {r['pads_dissipated_J'] / 1e6:.3g}"
                   f" / {r['links_dissipated_J'] / 1e6:.3g}")
     console.print(t)
-    console.print(f"results in [bold]{res.out_dir}[/]: "
-                  + ", ".join(sorted(p.name for p in res.files.values())), highlight=False)
+    console.print(Text.assemble("results in ", (str(res.out_dir), "bold"), ": "
+                                + ", ".join(sorted(p.name for p in res.files.values()))))

@@ -6,6 +6,7 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
+from rich.text import Text
 
 from pounding.cli.app import app, console  # noqa: F401
 
@@ -37,5 +38,5 @@ def report_cmd(
     check_output_file(out, "--out")
     path = write_report(results_dir, out)
     size = path.stat().st_size
-    console.print(f"report written: [bold]{path}[/] ({size / 1024:.0f} kB, self-contained)",
-                  highlight=False)
+    console.print(Text.assemble("report written: ", (str(path), "bold"),
+                                f" ({size / 1024:.0f} kB, self-contained)"))

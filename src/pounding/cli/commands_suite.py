@@ -145,8 +145,10 @@ def _print(r: Any, suite: Any) -> None:
                  "scaled Sa(T1) [g]"):
         table.add_column(Text(head), justify="left" if head == "record" else "right")
     for name, f, flag, pga, _, sa, ssa in _rows(r):
-        mark = " [red](outside limits)[/]" if flag else ""
-        table.add_row(name, f"{pga:.4f}", f"{sa:.4f}", f"{f:.4f}{mark}", f"{f * pga:.4f}",
+        factor = Text(f"{f:.4f}")
+        if flag:
+            factor.append(" (outside limits)", style="red")
+        table.add_row(Text(str(name)), f"{pga:.4f}", f"{sa:.4f}", factor, f"{f * pga:.4f}",
                       f"{ssa:.4f}")
     j = r.at_period
     ratio = r.mean_over_target

@@ -83,13 +83,13 @@ def sweep_cmd(
     if sweep.duplicates:
         t.add_row("duplicates skipped", str(sweep.duplicates))
     t.add_row("run now / done before", f"{res.n_run} / {res.n_cases - res.n_run}")
-    t.add_row("failed cases", f"[red]{res.n_errors}[/]" if res.n_errors else "0")
+    t.add_row("failed cases", Text(str(res.n_errors), style="red") if res.n_errors else "0")
     t.add_row("workers / cases per task", f"{res.n_workers} / {res.batch_size}")
     if res.n_run:
         t.add_row(Text("running [s] / rate"), f"{res.run_time:.2f} / {res.rate:,.1f} cases/s")
     t.add_row(Text("wall time [s]"), f"{res.wall_time:.2f}")
     console.print(t)
-    console.print(f"table in [bold]{res.results}[/]", highlight=False)
+    console.print(Text.assemble("table in ", (str(res.results), "bold")))
 
 
 def _progress(description: str, total: int) -> tuple[Progress, Any]:
@@ -97,7 +97,8 @@ def _progress(description: str, total: int) -> tuple[Progress, Any]:
     the ``progress(done, total)`` callback of :func:`~pounding.studies.sweep.run_sweep` that
     moves it; cases finished by an earlier run count as done from the start, without a
     rate."""
-    bar = Progress(TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(),
+    bar = Progress(TextColumn("{task.description}", style="bold", markup=False), BarColumn(),
+                   MofNCompleteColumn(),
                    TaskProgressColumn(), _RateColumn(), TimeElapsedColumn(),
                    TimeRemainingColumn(), console=console, transient=True,
                    disable=not console.is_terminal)  # (a log gets no bar)
@@ -196,4 +197,4 @@ def plot_cmd(
                 save_figure(fig, tmp, dpi=dpi)
         else:
             save_figure(fig, target, dpi=dpi)
-    console.print(f"figure in [bold]{target}[/]", highlight=False)
+    console.print(Text.assemble("figure in ", (str(target), "bold")))

@@ -95,7 +95,7 @@ def white_noise_optimum(m1: float, period1: float, m2: float, period2: float,
 
 
 RESPONSES: dict[str, Callable[["Result"], float]] = {
-    "peak_drift_ratio": lambda r: float(np.max(r.peak_drift_ratio)),
+    "peak_drift_ratio": lambda r: float(np.nanmax(r.peak_drift_ratio)),  # storeys only
     "peak_displacement": lambda r: float(np.max(r.peak_displacement)),
     "peak_abs_acceleration": lambda r: float(np.max(r.peak_abs_acceleration)),
     "peak_contact_force": lambda r: float(r.peak_contact_force.max()) if r.peak_contact_force.size

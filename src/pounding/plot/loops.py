@@ -116,7 +116,8 @@ def plot_hysteresis(result: Result) -> Figure:
 
 
 def plot_storey_hysteresis(result: Result) -> Figure:
-    """Storey shear [kN or MN] against storey drift [mm] of the yielding storeys.
+    """Storey shear [kN or MN] against storey drift [mm] of the yielding storeys; an
+    isolation bearing's force against its displacement, titled as the bearing it is.
 
     One row per building with yielding storeys, its :data:`MAX_STOREY_PANELS` storeys of
     largest peak drift; the yield shears ``±F_y`` are dashed and each title gives the
@@ -134,8 +135,12 @@ def plot_storey_hysteresis(result: Result) -> Figure:
     cols = [model.system.offsets[b] + j for b in rows for j in model.buildings[b].yielding]
     force = scale_for(float(peak_abs(shear[:, cols]).max()) if cols else 0.0, "N")
     width, height = PANEL_SIZE
-    fig, extra = titled_figure(model.name, "storey shear against drift of the yielding "
-                               "storeys (dashed: yield shear)",
+    n_bearings = int(result.is_bearing.sum())
+    subject = ("force against displacement of the isolation bearings"
+               if n_bearings and n_bearings == len(cols) else
+               "storey shear against drift of the yielding storeys"
+               + (", force against displacement of the bearings" if n_bearings else ""))
+    fig, extra = titled_figure(model.name, subject + " (dashed: yield force)",
                                0.8 + ncol * width + (ncol - 1) * 0.25 + 0.25,
                                0.9 + nrow * height + (nrow - 1) * 1.0 + 0.55)
     # one row per building, its storeys on the same shear scale
@@ -152,15 +157,28 @@ def plot_storey_hysteresis(result: Result) -> Figure:
             if fy is not None:
                 for sgn in (1.0, -1.0):
                     ax.axhline(sgn * fy[j] * force.factor, color="0.5", lw=0.6, ls="--")
-            ax.set_title(f"B{b + 1} storey {j + 1}: peak drift {peak[col] * MM.factor:.3g} mm"
-                         f"\nductility {result.ductility[col]:.2f}, residual "
-                         f"{result.residual_drift[col] * MM.factor:+.3g} mm",
-                         fontsize=TITLE_SIZE - 1)
-            ax.set_xlabel(f"storey drift [{MM.unit}]")
+            if result.is_bearing[col]:  # an isolation bearing, not a storey
+                iso = getattr(bl, "isolator", None)
+                ax.set_title(f"B{b + 1} bearing, {getattr(iso, 'label', 'isolator')}: peak "
+                             f"{peak[col] * MM.factor:.3g} mm\nresidual "
+                             f"{result.residual_drift[col] * MM.factor:+.3g} mm",
+                             fontsize=TITLE_SIZE - 1)
+                ax.set_xlabel(f"bearing displacement [{MM.unit}]")
+                ax.set_ylabel(f"bearing force [{force.unit}]")
+                ax.yaxis.set_tick_params(labelleft=True)
+            else:
+                storey = j + 1 - int(result.is_bearing[off])  # above a base slab: from 1
+                ax.set_title(f"B{b + 1} storey {storey}: peak drift "
+                             f"{peak[col] * MM.factor:.3g} mm\nductility "
+                             f"{result.ductility[col]:.2f}, residual "
+                             f"{result.residual_drift[col] * MM.factor:+.3g} mm",
+                             fontsize=TITLE_SIZE - 1)
+                ax.set_xlabel(f"storey drift [{MM.unit}]")
             ax.axhline(0.0, color="0.7", lw=0.4)
             ax.axvline(0.0, color="0.7", lw=0.4)
             ax.grid(True, alpha=0.3)
-        ax_row[0].set_ylabel(f"storey shear [{force.unit}]")
+        if order and not result.is_bearing[off + order[0]]:
+            ax_row[0].set_ylabel(f"storey shear [{force.unit}]")
         for ax in ax_row[len(order):]:
             ax.set_axis_off()
     if not rows:

@@ -50,6 +50,8 @@ GROUND_HEIGHT = 1.1
 """Height of the ground-acceleration panel [in]."""
 ENERGY_COLOURS = {"kinetic": "tab:blue", "elastic strain": "tab:orange",
                   "structural damping": "tab:green", "hysteretic (storeys yielding)": "tab:brown",
+                  "hysteretic (isolation bearings)": "tab:brown",
+                  "hysteretic (yielding storeys and bearings)": "tab:brown",
                   "dissipated by links": "tab:cyan", "dissipated in contacts": "tab:red",
                   "stored in closed contacts": "tab:purple"}
 """One colour per energy term, the same in every run."""
@@ -105,8 +107,11 @@ def plot_displacements(result: Result) -> Figure:
     """Displacement histories [mm] of each building's roof and of every floor with a
     contact, one panel per building, the ground acceleration [g] below.
 
-    The roof is drawn thick; the legend gives each floor's elevation [m].
+    The roof is drawn thick; the legend names each floor (``F3``; of a building in plan
+    ``F3 x``, its floor 3 along x; of a matrix building its DOF label) with its elevation
+    [m].
     """
+    from pounding.result_storeys import floor_name
     from pounding.structure.assembly import floor_dofs
 
     model = result.model
@@ -114,8 +119,9 @@ def plot_displacements(result: Result) -> Figure:
     floors = contact_floors(result)
     roofs = [int(floor_dofs(bl)[-1]) for bl in model.buildings]  # the highest floor
     shown = [sorted(floors.get(b, set()) | {roofs[b]}) for b in range(len(model.buildings))]
-    labels = [[f"F{j + 1} (roof, {bl.floor_levels[j]:g} m)" if j == roof
-               else f"F{j + 1} ({bl.floor_levels[j]:g} m)" for j in show]
+    # floors by name: F3 (shear building), F3 x (in plan: floor 3 along x), a matrix label
+    labels = [[f"{floor_name(bl, j)} (roof, {bl.floor_levels[j]:g} m)" if j == roof
+               else f"{floor_name(bl, j)} ({bl.floor_levels[j]:g} m)" for j in show]
               for bl, show, roof in zip(model.buildings, shown, roofs)]
     rows = int(PANEL_HEIGHT / 0.15)
     ncols, width = zip(*(_legend_columns(lb, rows) for lb in labels))
@@ -212,7 +218,11 @@ def plot_energy(result: Result) -> Figure:
         ("stored in closed contacts", col["contact_stored"]),
     ]
     if result.model.is_inelastic:
-        terms.insert(3, ("hysteretic (storeys yielding)", col["hysteretic"]))
+        bearings = int(result.is_bearing.sum())
+        what = ("storeys yielding" if not bearings else "isolation bearings"
+                if bearings == len(result.model.yielding_storeys)
+                else "yielding storeys and bearings")
+        terms.insert(3, (f"hysteretic ({what})", col["hysteretic"]))
     if result.model.links and "links" in col:
         terms.insert(3, ("dissipated by links", col["links"]))
     stack = np.column_stack([v for _, v in terms])

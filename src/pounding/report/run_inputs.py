@@ -47,7 +47,23 @@ def model_section(r: RunFolder) -> list[Block]:
                 periods = ", ".join(num(p) for p in bl.modes().periods[:3])
             except Exception:  # noqa: BLE001  (a display nicety only)
                 periods = "–"
-            if hasattr(bl, "stiffnesses"):
+            plan = getattr(bl, "plan", None)
+            iso = getattr(bl, "isolator", None)
+            if plan is not None:  # a building in plan: floors of three DOFs, lateral elements
+                storeys, masses = plan.n_floors, _range_text(plan.masses, "kg")
+                stiffness = (f"{len(plan.elements)} lateral elements (frames, walls) in plan"
+                             if plan.elements else "K given (3 DOFs a floor)")
+                damping = plan.damping.readable()
+            elif iso is not None:  # a base-isolated building: superstructure on a bearing
+                from pounding.result_storeys import bearing_law
+
+                storeys = bl.n - 1
+                masses = (f"base slab {num(float(bl.masses[0]))} kg; floors "
+                          + _range_text(bl.masses[1:], "kg"))
+                stiffness = (_range_text(bl.stiffnesses[1:], "N/m") + "; on an isolation "
+                             f"bearing: {bearing_law(iso)}")
+                damping = bl.damping.readable()
+            elif hasattr(bl, "stiffnesses"):
                 storeys, masses = bl.n, _range_text(bl.masses, "kg")
                 stiffness = _range_text(bl.stiffnesses, "N/m")
                 damping = bl.damping.readable()
@@ -58,7 +74,8 @@ def model_section(r: RunFolder) -> list[Block]:
                              + (f" ({bl.sources['K']})" if "K" in bl.sources else ""))
                 damping = (bl.damping.readable() if bl.damping is not None
                            else f"matrix C ({bl.sources.get('C', 'given')})")
-            t.add(f"B{b + 1}", bl.name or "–", storeys, float(bl.total_height),
+            t.add(f"B{b + 1}", bl.name if bl.name and bl.name != f"B{b + 1}" else "–",
+                  storeys, float(bl.total_height),
                   float(bl.total_mass), masses, stiffness, float(bl.fundamental_period),
                   periods, damping)
         parts.append(t)

@@ -142,4 +142,4 @@ def base_isolated(superstructure: ShearBuilding, base_mass: float, isolator: Iso
         heights=np.concatenate([[hb], superstructure.heights]),
         damping=SuperstructureDamping(superstructure.damping, isolator_damping),
         name=superstructure.name if name is None else name,
-        storey_law=iso.law(), yielding_storeys=(0,))
+        storey_law=iso.law(), yielding_storeys=(0,), isolator=iso)

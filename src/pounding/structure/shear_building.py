@@ -155,6 +155,10 @@ class ShearBuilding:
         0-based indices of the storeys that follow ``storey_law`` (the others stay linear);
         ``None`` (default): every storey. A base-isolated building
         (:meth:`base_isolated`) has ``(0,)``: its isolation storey.
+    isolator : Isolator, optional
+        Set by :meth:`base_isolated` only: the isolation bearing storey 1 stands for
+        (:mod:`pounding.hysteresis.isolators`), so that outputs report it as a bearing, apart
+        from the storeys; ``None`` for a fixed-base building.
 
     Raises
     ------
@@ -182,6 +186,7 @@ class ShearBuilding:
     name: str = ""
     storey_law: StoreyLaw | None = None
     yielding_storeys: tuple[int, ...] | None = None
+    isolator: Any = None
 
     def __post_init__(self) -> None:
         m = _floor_vector("masses", self.masses)
@@ -331,9 +336,11 @@ class ShearBuilding:
                         storeys: tuple[int, ...] | None = None) -> ShearBuilding:
         """A copy whose storeys follow ``law`` (None: linear), e.g.
         ``b.with_storey_law(Bilinear(yield_drift=0.01, hardening=0.05))``; ``storeys``
-        (0-based) limits it to those storeys."""
+        (0-based) limits it to those storeys (an isolated building's storey 1 is then no
+        bearing: :attr:`isolator` is dropped)."""
         return dataclasses.replace(self, storey_law=law,
-                                   yielding_storeys=storeys if law is not None else None)
+                                   yielding_storeys=storeys if law is not None else None,
+                                   isolator=None)
 
     def _yielding(self, n: int) -> tuple[int, ...]:
         if self.storey_law is None:

@@ -148,8 +148,9 @@ def measure_row(result: "Result") -> dict[str, float]:
         "peak_impact_force_N": float(pcf[~pads].max()) if (~pads).any() else 0.0,
         "n_pad_impacts": int(counts[pads].sum()),
         "peak_pad_force_N": float(pcf[pads].max()) if pads.any() else 0.0,
-        "peak_drift_ratio": float(np.max(result.peak_drift_ratio)),
-        "peak_storey_shear_N": float(np.max(result.peak_storey_shear)),
+        # storeys only: NaN under a base slab (its bearing) and where there is no storey
+        "peak_drift_ratio": float(np.nanmax(result.peak_drift_ratio)),
+        "peak_storey_shear_N": float(np.nanmax(result.peak_storey_shear[~result.is_bearing])),
         "peak_abs_accel_m_s2": float(np.max(result.peak_abs_acceleration)),
         "contact_dissipated_J": float(np.nansum(diss[~pads])),
         "pads_dissipated_J": float(np.nansum(diss[pads])),

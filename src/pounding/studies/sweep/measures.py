@@ -71,9 +71,14 @@ def _layout(model: Any) -> _Layout:
         below = model.floor_below()  # −2: not a floor (a matrix building's rotation, say)
         own = below == -2
         below[own] = np.flatnonzero(own)  # drift u − u = 0, over a NaN height: left out
+        heights = np.concatenate([b.heights for b in model.buildings]).astype(float)
+        # an isolation bearing under a base slab is no storey: no drift ratio
+        # (pounding.result_storeys.bearing_mask)
+        from pounding.result_storeys import bearing_mask
+
+        heights[bearing_mask(model)] = np.nan
         layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
-                               for name in FLOOR_MEASURES),
-                         np.concatenate([b.heights for b in model.buildings]), below,
+                               for name in FLOOR_MEASURES), heights, below,
                          bool(model.is_inelastic),
                          any(c.struck is not None for c in model.contacts))
         try:
@@ -122,7 +127,8 @@ def result_row(result: Any) -> dict[str, Any]:
         "impact_overflow": bool(result.stats.impact_overflow),
         # not applicable → null (not NaN: a null compares equal, so tables stay comparable)
         "hysteretic_energy_J": float(e[-1, 6]) if inelastic else None,
-        "max_ductility": float(np.nanmax(result.ductility)) if inelastic else None,
+        "max_ductility": (float(np.nanmax(result.ductility))
+                          if inelastic and np.isfinite(result.ductility).any() else None),
         "max_residual_drift_m": (float(np.max(np.abs(result.residual_drift))) if inelastic
                                  else 0.0),
         "max_column_shear_ratio": (float(np.nanmax(shear_ratio))
