@@ -219,7 +219,7 @@ class ContactLaw(ABC):
     def readable(self) -> str:
         """One line for people: the law, its source, each field with its unit in three
         significant digits, e.g. ``nonlinear viscoelastic (Jankowski): k_h = 2.75e9
-        N/m^1.5, ζ = 0.373, m_eff = 2.40e5 kg``; a yes/no field by its name or ``no``
+        N/m^1.5, ζ = 0.368, m_eff = 2.40e5 kg``; a yes/no field by its name or ``no``
         and its name (``no tension``)."""
         parts = []
         for f in fields(self):
