@@ -9,14 +9,45 @@ from typing import Annotated, Any
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
 
-from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
+from pounding.config.base import (
+    Ratio,
+    Section,
+    check_bouc_wen_shape,
+    field_error,
+    fmt,
+    prefixed,
+)
 from pounding.config.isolation import IsolatorConfig
 from pounding.config.plan import ElementConfig, PlanConfig
+from pounding.config.quantities import (
+    MAX_LENGTH,
+    Elevation,
+    Force,
+    Length,
+    Mass,
+    Period,
+    Stiffness,
+)
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
 from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
 from pounding.structure.damping import DampingModel
 from pounding.structure.plan import PlanBuilding
+
+DriftRatio = Annotated[float, Field(gt=0, le=1)]
+"""A yield drift ratio [-]: yield drift / storey height (a drift of the whole storey height
+is no yield point)."""
+BoucWenExponent = Annotated[float, Field(ge=1, le=100)]
+"""Bouc–Wen ``n`` [-]: 1 (smooth) to about 20 (nearly bilinear); 100 is the bilinear law in
+all but name."""
+BoucWenBeta = Annotated[float, Field(ge=0, le=100)]
+"""Bouc–Wen ``beta`` [-] (>= 0; with ``beta + gamma = 1`` the usual choice)."""
+BoucWenGamma = Annotated[float, Field(ge=-100, le=100)]
+"""Bouc–Wen ``gamma`` [-]."""
+Influence = Annotated[float, Field(ge=-MAX_LENGTH, le=MAX_LENGTH)]
+"""An entry of an influence vector ``r`` (1 for a translation along the ground motion, a
+lever arm [m] for a rotation)."""
+
 
 class DampingConfig(Section):
     """``damping = {...}``: inherent damping of one building.
@@ -31,7 +62,7 @@ class DampingConfig(Section):
     rayleigh: Annotated[list[Ratio], Field(min_length=1, max_length=2)] | None = None
     modes: Annotated[list[Annotated[int, Field(ge=1)]],
                      Field(min_length=2, max_length=2)] | None = None
-    periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
+    periods: Annotated[list[Period], Field(min_length=2, max_length=2)] | None = None
 
     @model_validator(mode="after")
     def _one_kind(self) -> DampingConfig:
@@ -74,14 +105,15 @@ class StoreyLawConfig(Section):
     """
 
     type: str
-    yield_force: Pos | list[Pos] | None = None
-    yield_drift: Pos | list[Pos] | None = None
-    yield_drift_ratio: Pos | list[Pos] | None = None
+    yield_force: Force | Annotated[list[Force], Field(min_length=1)] | None = None
+    yield_drift: Length | Annotated[list[Length], Field(min_length=1)] | None = None
+    yield_drift_ratio: (DriftRatio | Annotated[list[DriftRatio], Field(min_length=1)]
+                        | None) = None
     hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
     alpha: Annotated[float, Field(ge=0, lt=1)] | None = None
-    n: Annotated[float, Field(ge=1)] | None = None
-    beta: float | None = None
-    gamma: float | None = None
+    n: BoucWenExponent | None = None
+    beta: BoucWenBeta | None = None
+    gamma: BoucWenGamma | None = None
 
     @field_validator("type")
     @classmethod
@@ -108,7 +140,18 @@ class StoreyLawConfig(Section):
             raise field_error("yield_force", "give exactly one of yield_force [N], "
                                               "yield_drift [m] or yield_drift_ratio [-] "
                                               f"(got {', '.join(given) or 'none'})")
+        if self.type == "bouc-wen":
+            check_bouc_wen_shape(self.beta, self.gamma)
         return self
+
+    def check_storeys(self, n: int) -> None:
+        """Refuse a list of yield points that is not one value or ``n`` (one per storey)."""
+        for key in ("yield_force", "yield_drift", "yield_drift_ratio"):
+            value = getattr(self, key)
+            if isinstance(value, list) and len(value) not in (1, n):
+                raise field_error(("storey_law", key),
+                                  f"need one value or {n}, one per storey (got {len(value)}: "
+                                  f"{fmt(value)})")
 
     def build(self, heights: Any) -> Any:
         """The :class:`pounding.hysteresis.StoreyLaw` for storeys of these heights [m]."""
@@ -192,22 +235,22 @@ class BuildingConfig(Section):
     """
 
     name: str | None = None
-    mass: Pos | None = None
-    stiffness: Pos | None = None
-    period: Pos | None = None
-    height: Pos | None = None
+    mass: Mass | None = None
+    stiffness: Stiffness | None = None
+    period: Period | None = None
+    height: Length | None = None
     n_storeys: Annotated[int, Field(ge=1, le=MAX_FLOORS)] | None = None
-    masses: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
-    stiffnesses: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
-    heights: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    masses: Annotated[list[Mass], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    stiffnesses: Annotated[list[Stiffness], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    heights: Annotated[list[Length], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
     damping: DampingConfig | None = None
     storey_law: StoreyLawConfig | None = None
     isolator: IsolatorConfig | None = None
     matrices: MatrixFilesConfig | None = None
     npz: str | None = None
-    elevations: Annotated[list[float], Field(min_length=1)] | None = None
+    elevations: Annotated[list[Elevation], Field(min_length=1)] | None = None
     labels: Annotated[list[str], Field(min_length=1)] | None = None
-    r: Annotated[list[float], Field(min_length=1)] | None = None
+    r: Annotated[list[Influence], Field(min_length=1)] | None = None
     floors: Annotated[list[str | int], Field(min_length=1)] | None = None
     plan: PlanConfig | None = None
     elements: Annotated[list[ElementConfig], Field(min_length=1)] | None = None
@@ -254,9 +297,26 @@ class BuildingConfig(Section):
             raise field_error("isolator", "a base-isolated building's superstructure stays "
                                           "linear: give isolator or storey_law, not both")
         kind = self.kind
+        self._check_shape()
+        self._check_modes()
+        return self
+
+    def _check_modes(self) -> None:
+        """Refuse Rayleigh damping anchored at a mode the building does not have."""
+        if self.damping is None or self.damping.modes is None:
+            return
+        n = {"plan": 3 * self.n}.get(self.kind, self.n)
+        for i, mode in enumerate(self.damping.modes):
+            if mode > n:
+                raise field_error(("damping", "modes", i),
+                                  f"must be in [1, {n}]: the building has {n} mode(s) (got "
+                                  f"{mode})")
+
+    def _check_shape(self) -> None:
+        kind = self.kind
         if kind == "plan":
             self._check_plan_keys()
-            return self
+            return
         for key in _PLAN_ONLY:
             if getattr(self, key) is not None:
                 raise field_error(key, "only for a building in plan (plan = { width = …, "
@@ -264,7 +324,7 @@ class BuildingConfig(Section):
                                        f"{fmt(getattr(self, key))})")
         if kind == "matrices":
             self._check_matrix_keys()
-            return self
+            return
         for key in _MATRIX_KEYS:
             if getattr(self, key) is not None:
                 raise field_error(key, f"only for a building given as matrices (matrices = "
@@ -301,7 +361,8 @@ class BuildingConfig(Section):
             if self.heights is not None and len(self.heights) != n:
                 raise field_error("heights", f"need {n} values, one per floor like masses "
                                               f"(got {len(self.heights)})")
-        return self
+        if self.storey_law is not None:
+            self.storey_law.check_storeys(self.n)
 
     def _check_matrix_keys(self) -> None:
         for key in _SHEAR_KEYS:
@@ -316,6 +377,18 @@ class BuildingConfig(Section):
         if self.elevations is None:
             raise field_error("elevations", "required for a building given as matrices: one "
                                             "elevation [m] per degree of freedom")
+        if self.floors is None:  # every degree of freedom is a floor
+            for i, z in enumerate(self.elevations):
+                if not z > 0.0:
+                    raise field_error(("elevations", i),
+                                      f"must be > 0 m: without floors = [...] every degree of "
+                                      f"freedom is a floor, and floors stand above the ground "
+                                      f"(got {fmt(z)})")
+                if i and not z > self.elevations[i - 1]:
+                    raise field_error(("elevations", i),
+                                      f"must be above elevations[{i - 1}] = "
+                                      f"{fmt(self.elevations[i - 1])} m: each floor its own "
+                                      f"elevation, the lowest first (got {fmt(z)})")
         if self.matrices is not None and self.matrices.C is not None and self.damping is not None:
             raise field_error("damping", "give a damping matrix (matrices.C) or damping, not "
                                          f"both (got C = {self.matrices.C!r})")
@@ -371,6 +444,14 @@ class BuildingConfig(Section):
             raise field_error(("plan", "inertias"),
                               f"need one value or {n}, one a floor (got {len(plan.inertias)}: "
                               f"{fmt(plan.inertias)})")
+        plan.check_inertias(self.masses)
+        for i, e in enumerate(self.elements):
+            for key, value, size in (("x", e.x, plan.width), ("y", e.y, plan.depth)):
+                if not 0.0 <= value <= size:
+                    raise field_error(("elements", i, key),
+                                      f"must lie inside the plan, in [0, {fmt(size)}] m (the "
+                                      f"plan's {'width' if key == 'x' else 'depth'}) (got "
+                                      f"{fmt(value)})")
 
     def _files(self) -> list[str]:
         if self.npz is not None:
@@ -435,7 +516,7 @@ class BuildingConfig(Section):
             own["damping"] = self.damping.build()
         elements = []
         for i, e in enumerate(self.elements):
-            with prefixed(f"elements[{i}]"):
+            with prefixed(f"elements[{i}]", ElementConfig.model_fields):
                 elements.append(e.build())
         return PlanBuilding(masses=self.masses, heights=heights, width=plan.width,
                             depth=plan.depth, elements=elements,
@@ -443,6 +524,14 @@ class BuildingConfig(Section):
                             site_y=plan.site_y, **own)
 
     def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
+        try:
+            return self._make(default_name)
+        except ValueError as exc:
+            if str(exc).startswith("Rayleigh damping"):  # the ratios given, at these modes
+                raise ValueError(f"damping.rayleigh: {exc}") from None
+            raise
+
+    def _make(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
         name = self.name or default_name
         if self.kind == "matrices":
             return self._build_matrices(name)
@@ -476,11 +565,11 @@ class BuildingConfig(Section):
     def _with_law(self, b: ShearBuilding) -> ShearBuilding:
         if self.isolator is not None:
             iso = self.isolator
-            with prefixed("isolator"):
+            with prefixed("isolator", IsolatorConfig.model_fields):
                 return ShearBuilding.base_isolated(b, iso.base_mass, iso.build(),
                                                    base_height=iso.base_height,
                                                    isolator_damping=iso.damping)
         if self.storey_law is None:
             return b
-        with prefixed("storey_law"):
+        with prefixed("storey_law", StoreyLawConfig.model_fields):
             return b.with_storey_law(self.storey_law.build(b.heights))

@@ -3,17 +3,19 @@
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 from typing import Annotated, Any, NamedTuple
 
 from pydantic import Field, PrivateAttr, ValidationError, model_validator
 
-from pounding.config.base import Pos, Section, field_error, fmt, prefixed
+from pounding.config.base import Section, field_error, fmt, prefixed
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
 from pounding.config.device import DeviceConfig
 from pounding.config.isolation import WallConfig
 from pounding.config.errors import format_validation_error
+from pounding.config.quantities import Duration, Step
 from pounding.config.record import RecordConfig
 from pounding.config.toml import dump_toml
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
@@ -29,10 +31,10 @@ class SolverConfig(Section):
     largest size.
     """
 
-    dt: Pos | None = None
-    duration: Pos | None = None
+    dt: Step | None = None
+    duration: Duration | None = None
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
-    h_max: Pos | None = None
+    h_max: Step | None = None
 
     def kwargs(self) -> dict[str, Any]:
         """Keyword arguments of :func:`~pounding.integrate.simulate`."""
@@ -118,10 +120,10 @@ class RunConfig(Section):
         """
         buildings = []
         for i, b in enumerate(self.building):
-            with prefixed(f"building[{i}]"):
+            with prefixed(f"building[{i}]", BuildingConfig.model_fields):
                 buildings.append(b.build(f"B{i + 1}"))
         if self.contact is not None:
-            with prefixed("contact"):
+            with prefixed("contact", ContactConfig.model_fields):
                 spec = self.contact.spec()
             gaps = self.contact.gap_list(len(buildings) - 1)
         else:
@@ -141,21 +143,27 @@ class RunConfig(Section):
                 raise ValueError(f"contact: {text}") from exc
             floors = [(c.left.label(), c.right.label()) for c in bare.contacts
                       if c.is_floor_to_floor]
+        owner: list[int] = []  # the file's device table of each of the model's devices
         for i, d in enumerate(self.device):
-            with prefixed(f"device[{i}]"):
-                devices.extend(d.build(floors))
+            with prefixed(f"device[{i}]", DeviceConfig.model_fields):
+                made = d.build(floors)
+            devices.extend(made)
+            owner.extend([i] * len(made))
         try:
             walls = []
             for i, w in enumerate(self.wall):
-                with prefixed(f"walls[{i}]"):
+                with prefixed(f"wall[{i}]", WallConfig.model_fields):
                     walls.append(w.build())
             model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry,
                                   devices=devices, walls=walls)
             model.contacts  # noqa: B018  (builds every contact law with its floor masses)
         except ValueError as exc:
             text = str(exc)
-            if text.startswith("devices["):  # the model's devices[i] is the file's device[i]
-                raise ValueError("device[" + text[len("devices["):]) from exc
+            found = re.match(r"devices\[(\d+)\]", text)
+            if found and int(found[1]) < len(owner):
+                # the model's devices[k] comes from the file's device[owner[k]] (a table with
+                # floors = "all" makes one device at each shared floor level)
+                raise ValueError(f"device[{owner[int(found[1])]}]" + text[found.end():]) from exc
             if text.startswith("buildings["):  # and its buildings[i] the file's building[i]
                 raise ValueError("building[" + text[len("buildings["):]) from exc
             if text.startswith("walls["):  # the model's walls[i] is the file's wall[i]
@@ -170,7 +178,7 @@ class RunConfig(Section):
                     f"{[round(float(x), 6) for x in a.floor_levels]} and "
                     f"{[round(float(x), 6) for x in b.floor_levels]}); with "
                     "contact.floor_to_column = false floors meet only at equal levels")
-        with prefixed("record"):
+        with prefixed("record", RecordConfig.model_fields):
             motion = self.record.load(components=self.in_plan)
         return Built(model, motion, self.solver.kwargs())
 

@@ -75,7 +75,8 @@ class MitigationStudy(Section):
     name: str = "mitigation"
     base: str
     out: str | None = None
-    records: list[str] | None = None
+    records: Annotated[list[Annotated[str, Field(min_length=1)]],
+                       Field(min_length=1)] | None = None
     option: Annotated[list[OptionConfig], Field(min_length=1)]
 
 
@@ -99,7 +100,8 @@ def load_mitigation(path: str | os.PathLike[str]) -> tuple[MitigationStudy, Path
     try:
         return MitigationStudy.model_validate(data), p.resolve().parent
     except ValidationError as exc:
-        raise ValueError(format_validation_error(exc, str(p))) from None
+        raise ValueError(format_validation_error(exc, prefix=f"{p}: ",
+                                                 root=MitigationStudy)) from None
 
 
 def _configs(study: MitigationStudy, here: Path) -> list[tuple[str, str, Any]]:
