@@ -131,7 +131,8 @@ def test_pounding_run_on_a_building_given_as_npz(tmp_path, capsys):
      'damping = { ratio = 0.05 }\n', "building[0].damping: give a damping matrix (matrices.C) "
                                      "or damping, not both"),
     (MATRIX.replace("[3.0, 6.0]", "[3.0, 3.0]"),
-     "building[0] ('mx'): floors 'F1' and 'F2' are both at elevation 3 m"),
+     "building[0].elevations[1]: must be above elevations[0] = 3 m: each floor its own "
+     "elevation, the lowest first (got 3)"),
     ('n_storeys = 2\nmass = 2e5\nstiffness = 4e7\nelevations = [3.0, 6.0]\n',
      "building[0].elevations: only for a building given as matrices"),
 ])

@@ -184,23 +184,37 @@ def _toml_literal(value: Any) -> str:
     return fmt(value)
 
 
-def _kind_words(tp: Any) -> str:
-    """What a value of type ``tp`` looks like, in words."""
-    base, _ = _strip(tp)
+def _kind_pieces(tp: Any) -> list[str]:
+    """The kinds of value ``tp`` accepts, in words (a literal's values one by one)."""
+    base, meta = _strip(tp)
     members = _members(base)
     if members is not None:
-        return " or ".join(dict.fromkeys(_kind_words(m) for m in members))
+        return list(dict.fromkeys(p for m in members for p in _kind_pieces(m)))
     if typing.get_origin(base) is Literal:
-        values = [_toml_literal(v) for v in typing.get_args(base)]
-        return values[0] if len(values) == 1 else ", ".join(values[:-1]) + " or " + values[-1]
+        return [_toml_literal(v) for v in typing.get_args(base)]
     if typing.get_origin(base) is list:
-        inner = _kind_words(typing.get_args(base)[0])
-        return {"a number": "a list of numbers [ ... ]", "an integer": "a list of integers "
-                "[ ... ]", "a string (in quotes)": "a list of strings [ ... ]"}.get(
-                    inner, "a list [ ... ]")
+        inner = _kind_pieces(typing.get_args(base)[0])
+        word = {"a number": "numbers", "an integer": "integers",
+                "a string (in quotes)": "strings"}.get(inner[0].split(" in ")[0], "")
+        if len(inner) == 1 and inner[0].startswith("a list"):
+            return ["a list of lists [ [ ... ], ... ]"]
+        return [f"a list of {word} [ ... ]" if len(inner) == 1 and word else "a list [ ... ]"]
     if _is_model(base):
-        return "a table"
-    return _SCALAR_WORDS.get(base, "a value of another kind")
+        return ["a table"]
+    word = _SCALAR_WORDS.get(base, "a value of another kind")
+    rng = _range_text(meta) if base in (int, float) else None
+    if rng is not None and rng.startswith("in "):
+        word += f" {rng}"
+    return [word]
+
+
+def _kind_words(tp: Any) -> str:
+    """What a value of type ``tp`` looks like, in words."""
+    return _or(_kind_pieces(tp))
+
+
+def _or(pieces: list[str]) -> str:
+    return pieces[0] if len(pieces) == 1 else ", ".join(pieces[:-1]) + " or " + pieces[-1]
 
 
 def _range_text(meta: list[Any]) -> str | None:
@@ -328,12 +342,11 @@ def _resolve(items: list[tuple[dict[str, Any], _Located]], root: Any) -> list[st
             lines += _resolve(rest, root)
             continue
         e0, w0 = group[0]
-        kinds = [_kind_words(w.unions[0][2]) if w.unions[0][2] is not None else None
-                 for _, w in (br[0] for br in branches.values())]
-        if any(k is None for k in kinds):
+        members = [w.unions[0][2] for _, w in (br[0] for br in branches.values())]
+        if any(m is None for m in members):
             words = "a value of another kind"
         else:
-            words = " or ".join(dict.fromkeys(k for k in kinds if k))
+            words = _or(list(dict.fromkeys(p for m in members for p in _kind_pieces(m))))
         lines.append(f"{_loc_text(value) or '(top level)'}: must be {words} (got "
                      f"{fmt(e0.get('input'))})")
     return lines
