@@ -21,6 +21,7 @@ from pounding.config.toml import dump_toml
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.io import read_toml
 from pounding.model import ContactSpec, PoundingModel
+from pounding.plausibility import warn_plausibility
 
 class SolverConfig(Section):
     """``[solver]``: options of :func:`pounding.integrate.simulate`.
@@ -71,6 +72,7 @@ class RunConfig(Section):
     output: OutputConfig = OutputConfig()
 
     _source: Path | None = PrivateAttr(default=None)
+    _plausibility: tuple[str, ...] = PrivateAttr(default=())
 
     @property
     def in_plan(self) -> bool:
@@ -111,6 +113,14 @@ class RunConfig(Section):
     def source(self) -> Path | None:
         """The file this was read from, if any."""
         return self._source
+
+    @property
+    def plausibility(self) -> tuple[str, ...]:
+        """The plausibility warnings of the file as read by :func:`load_config` or
+        :func:`parse_config` (inputs probably in the wrong unit, one line each,
+        :mod:`pounding.config.plausibility`); each was also issued as a
+        :class:`~pounding.plausibility.PlausibilityWarning`."""
+        return self._plausibility
 
     def build(self) -> Built:
         """The model, the ground motion and the solver keyword arguments.
@@ -276,19 +286,34 @@ def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
                  where: str = "config") -> RunConfig:
     """Validate already-parsed TOML data; ``base_dir`` is where relative paths start.
 
+    An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of 600
+    kg, T1 below 0.05 s or above 10 s, a PGA above 3 g) is issued as a
+    :class:`~pounding.plausibility.PlausibilityWarning`, ``<where>: <key>: …``, and kept in
+    :attr:`RunConfig.plausibility`.
+
     Raises
     ------
     ValueError
         One line per problem, each ``<where>: <key path>: <problem> (got <value>)``.
     """
+    cfg = _parse(data, base_dir, where)
+    warn_plausibility(cfg.plausibility)
+    return cfg
+
+
+def _parse(data: dict[str, Any], base_dir: str | os.PathLike[str], where: str) -> RunConfig:
+    """:func:`parse_config` without issuing its warnings."""
     try:
         cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
     except ValidationError as exc:
         raise ValueError(format_validation_error(exc, prefix=f"{where}: ")) from None
     try:
-        cfg.build()
+        built = cfg.build()
     except ValueError as exc:
         raise ValueError(f"{where}: {exc}") from None
+    from pounding.config.plausibility import plausibility_warnings
+
+    cfg._plausibility = tuple(f"{where}: {line}" for line in plausibility_warnings(cfg, built))
     return cfg
 
 
@@ -311,6 +336,7 @@ def load_config(path: str | os.PathLike[str]) -> RunConfig:
     if "base" in data and any(k in data for k in SWEEP_CASE_TABLES):
         raise ValueError(f"{p}: this is a sweep file (it has 'base' and a [grid], [list] or "
                          f"[random] table), not a model file: run it with `pounding sweep {p}`")
-    cfg = parse_config(data, base_dir=p.resolve().parent, where=str(p))
+    cfg = _parse(data, base_dir=p.resolve().parent, where=str(p))
     cfg._source = p.resolve()
+    warn_plausibility(cfg.plausibility)
     return cfg
