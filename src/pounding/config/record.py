@@ -53,7 +53,8 @@ class RecordConfig(Section):
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
     them. Then, in this order: ``duration`` [s] keeps the record up to that time, and at
-    most one of ``scale`` [-] (multiplies it), ``pga_g`` [g] (scales it to that peak) and
+    most one of ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor
+    reversing the record's polarity), ``pga_g`` [g] (scales it to that peak) and
     ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
     period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
     incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`), or ``saavg_g`` [g]
@@ -65,7 +66,7 @@ class RecordConfig(Section):
     Two horizontal components (for a model with buildings in plan): ``second`` (a bundled
     record) or ``second_file`` (a path, relative to the model file), the component
     orthogonal to the first, and ``incidence`` [degrees], the angle of the first component
-    from the site x axis, counter-clockwise (default 0):
+    from the site x axis, counter-clockwise, in [-360, 360] (default 0):
     :func:`pounding.ground_motion.incidence.at_incidence`. ``dt`` and ``units`` are for
     every record file given; ``duration`` and the scaling apply to both components alike:
     the factor is the first component's (``pga_g``, ``sa_g``, ``saavg_g`` measured on the
