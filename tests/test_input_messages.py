@@ -380,6 +380,32 @@ def test_the_messages_of_the_issue_name_the_key_as_written(doc: str, path: tuple
     assert str(info.value) == expected
 
 
+@pytest.mark.parametrize("doc, path, value, expected", [
+    ("matrices", ("building", 0, "floors"), [-1],
+     "m.toml: building[0].floors[0]: must be a label or an index in [0, 9] (got -1)"),
+    ("matrices", ("building", 0, "labels", 3), "L1",
+     "m.toml: building[0].labels[3]: repeats labels[0]: each degree of freedom needs its own "
+     "label (got 'L1')"),
+    ("storeys", ("building", 0, "damping", "modes"), [2, 2],
+     "m.toml: building[0].damping.modes[1]: must differ from modes[0]: Rayleigh damping is "
+     "anchored at two modes (got 2)"),
+    ("storeys", ("building", 1, "storey_law", "yield_drift_ratio"), [0.005, 0.005],
+     "m.toml: building[1].storey_law.yield_drift_ratio: need one value or 3, one per storey "
+     "(got 2: [0.005, 0.005])"),
+    ("storeys", ("building", 1, "storey_law", "gamma"), -1.0,
+     "m.toml: building[1].storey_law.gamma: beta + gamma must be > 0, or the hysteretic "
+     "variable grows without bound (got beta = 0.5, gamma = -1)"),
+])
+def test_what_the_library_refused_is_named_by_the_files_key(
+        doc: str, path: tuple[Any, ...], value: Any, expected: str) -> None:
+    """Refusals that came from the library's constructors, with their names
+    (``building[0]: building 'B1': floors[0] = -1 …``, ``mode_i and mode_j must differ``,
+    ``storey_law: beta, gamma: …``), are found in the file and named by its keys."""
+    with pytest.raises(ValueError) as info:
+        parse_config(_replaced(MODEL_DOCS[doc], path, value), EXAMPLES, where="m.toml")
+    assert str(info.value) == expected
+
+
 def test_a_storey_law_in_a_message_is_written_as_in_the_file() -> None:
     """Not its ``StoreyLawConfig(...)`` repr."""
     doc = copy.deepcopy(MODEL_DOCS["matrices"])
@@ -450,9 +476,6 @@ def test_a_device_of_every_shared_floor_is_named_by_its_table() -> None:
     ("plan", ("building", 0, "elements", 0, "y"), 13.0,
      "m.toml: building[0].elements[0].y: must lie inside the plan, in [0, 12] m (the plan's "
      "depth) (got 13)"),
-    ("storeys", ("building", 1, "storey_law", "gamma"), -1.0,
-     "m.toml: building[1].storey_law.gamma: beta + gamma must be > 0, or the hysteretic "
-     "variable grows without bound (got beta = 0.5, gamma = -1)"),
 ])
 def test_numbers_accepted_silently_before_are_refused_with_their_range(
         doc: str, path: tuple[Any, ...], value: Any, expected: str) -> None:

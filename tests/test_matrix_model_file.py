@@ -118,8 +118,10 @@ def test_pounding_run_on_a_building_given_as_npz(tmp_path, capsys):
                                                   "building given as matrices"),
     (MATRIX.replace("[3.0, 6.0]", "[3.0, 6.0, 9.0]"),
      "building[0]: building 'mx': elevations has 3 values but the matrices have 2 degrees"),
-    (MATRIX + 'labels = ["a"]\n', "labels has 1 entries but the matrices have 2"),
-    (MATRIX + 'floors = ["F1", "F9"]\n', "floors[1] = 'F9' is not one of the labels"),
+    (MATRIX + 'labels = ["a"]\n', "building[0].labels: need 2 values, one per degree of "
+                                   "freedom like elevations (got 1: ['a'])"),
+    (MATRIX + 'floors = ["F1", "F9"]\n', "building[0].floors[1]: must be one of the labels "
+                                         "(F1, F2) or an index in [0, 1] (got 'F9')"),
     (MATRIX + 'r = [1.0, 0.0, 1.0]\n', "r has 3 values but the matrices have 2"),
     (MATRIX + 'storey_law = { type = "bilinear", yield_force = 1e6 }\n',
      "building[0].storey_law: not a key of a building given as matrices (a matrix building "

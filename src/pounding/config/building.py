@@ -76,6 +76,11 @@ class DampingConfig(Section):
         if self.modes is not None and self.periods is not None:
             raise field_error("periods", "give modes or periods, not both "
                                           f"(got modes={self.modes!r}, periods={self.periods!r})")
+        for key in ("modes", "periods"):
+            pair = getattr(self, key)
+            if pair is not None and pair[0] == pair[1]:
+                raise field_error((key, 1), f"must differ from {key}[0]: Rayleigh damping is "
+                                            f"anchored at two {key} (got {fmt(pair[1])})")
         return self
 
     def build(self) -> DampingModel:
@@ -377,6 +382,27 @@ class BuildingConfig(Section):
         if self.elevations is None:
             raise field_error("elevations", "required for a building given as matrices: one "
                                             "elevation [m] per degree of freedom")
+        n = len(self.elevations)
+        labels = self.labels if self.labels is not None else [f"F{j + 1}" for j in range(n)]
+        if self.labels is not None:
+            if len(self.labels) != n:
+                raise field_error("labels", f"need {n} values, one per degree of freedom like "
+                                            f"elevations (got {len(self.labels)}: "
+                                            f"{fmt(self.labels)})")
+            for i, label in enumerate(self.labels):
+                if label in self.labels[:i]:
+                    raise field_error(("labels", i), f"repeats labels[{self.labels.index(label)}]"
+                                                     f": each degree of freedom needs its own "
+                                                     f"label (got {label!r})")
+        for i, f in enumerate(self.floors or []):
+            if isinstance(f, int) and not 0 <= f < n:
+                raise field_error(("floors", i), f"must be a label or an index in [0, {n - 1}] "
+                                                 f"(got {f})")
+            if isinstance(f, str) and f not in labels:
+                raise field_error(("floors", i), f"must be one of the labels "
+                                                 f"({', '.join(labels[:12])}"
+                                                 f"{', …' if n > 12 else ''}) or an index in "
+                                                 f"[0, {n - 1}] (got {f!r})")
         if self.floors is None:  # every degree of freedom is a floor
             for i, z in enumerate(self.elevations):
                 if not z > 0.0:
