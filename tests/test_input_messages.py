@@ -579,3 +579,27 @@ def test_the_command_line_prints_a_warning_line_and_runs(tmp_path: Path,
     assert err == [f"warning: {model}: contact.gap: 40 m is wider than 2 m, more than any "
                    "separation of buildings; is it in mm or cm?"]
     assert (tmp_path / "out" / "summary.json").is_file()
+
+
+@pytest.mark.parametrize("command, text, expected", [
+    ("fragility", 'base = "{base}"\n[suite]\nbundled = true\n[intensity]\nmeasure = "pga"\n'
+                  'levels = ["a", 0.2]\n',
+     "intensity.levels[0]: must be a number (got 'a')"),
+    ("fragility", 'base = "{base}"\n[suite]\nbundled = true\n[intensity]\nmeasure = "pga"\n'
+                  'levels = [0.1, 0.2]\n[bootstrap]\nseed = -5\n',
+     "bootstrap.seed: must be >= 0 (got -5)"),
+    ("sweep", 'base = "{base}"\n[random]\nn = 2\nseed = -1\n"contact.gap" = [0.0, 0.05]\n',
+     "random.seed: required, an integer >= 0 (got -1)"),
+    ("mitigate", 'base = "{base}"\nrecords = []\n[[option]]\nname = "bare"\n',
+     "records: must hold at least 1 value(s) (got 0: [])"),
+])
+def test_the_command_line_refuses_bad_study_files_in_one_line(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], command: str, text: str,
+        expected: str) -> None:
+    study = tmp_path / "study.toml"
+    study.write_text(text.format(base=EXAMPLES / "seed_sdof_pair.toml"), encoding="utf-8")
+    capsys.readouterr()
+    assert main([command, str(study), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"error: {study}: {expected}"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["study.toml"]
