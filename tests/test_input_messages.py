@@ -603,3 +603,26 @@ def test_the_command_line_refuses_bad_study_files_in_one_line(
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"error: {study}: {expected}"]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["study.toml"]
+
+
+def test_a_sweep_value_out_of_range_of_a_union_fails_in_its_row_not_as_a_wrong_type(
+        tmp_path: Path) -> None:
+    """``yield_force = -1`` is a number out of range (its case fails in its row, the sweep
+    goes on), not "must be a list" (which refused the whole sweep as a wrong type)."""
+    from pydantic import ValidationError
+
+    from pounding.config import RunConfig, format_validation_error
+    from pounding.studies.sweep import apply_overrides, load_sweep
+
+    base = tmp_path / "model.toml"
+    base.write_text(dump_toml(MODEL_DOCS["storeys"]), encoding="utf-8")
+    sweep_file = tmp_path / "sweep.toml"
+    sweep_file.write_text('base = "model.toml"\n[grid]\n'
+                          '"building.0.storey_law.yield_force" = [-1.0, 3e6]\n')
+    sweep = load_sweep(sweep_file)
+    assert len(sweep.cases) == 2
+    data = apply_overrides(sweep.base, sweep.params, sweep.cases[0].values)
+    with pytest.raises(ValidationError) as info:
+        RunConfig.model_validate(data, context={"base_dir": sweep.base_dir})
+    assert format_validation_error(info.value) == (
+        "building[0].storey_law.yield_force: must be in (0, 1e+13] N (got -1)")

@@ -352,6 +352,35 @@ def _resolve(items: list[tuple[dict[str, Any], _Located]], root: Any) -> list[st
     return lines
 
 
+def meant_elsewhere(exc: ValidationError, root: type[BaseModel] | None = None
+                    ) -> list[bool]:
+    """For each error of ``exc`` (in order): True if it is the error of a union member the
+    value was not meant for, because another member of the same union took the value's
+    kind and failed otherwise (``yield_force = -1``: the list member's "must be a list" is
+    beside the point, the number member's "must be > 0" is the problem)."""
+    if root is None:
+        from pounding.config.run import RunConfig
+
+        root = RunConfig
+    located = [(dict(e), _locate(tuple(e.get("loc", ())), root))
+               for e in exc.errors(include_url=False)]
+    groups: dict[tuple[Any, ...], dict[str, list[tuple[dict[str, Any], _Located]]]] = {}
+    for e, w in located:
+        if w.unions:
+            pos, tag, _ = w.unions[0]
+            groups.setdefault(tuple(w.parts[:pos]), {}).setdefault(tag, []).append((e, w))
+    out = []
+    for e, w in located:
+        if not w.unions:
+            out.append(False)
+            continue
+        pos, tag, _ = w.unions[0]
+        branches = groups[tuple(w.parts[:pos])]
+        out.append(_is_shape_only(branches[tag], pos) and any(
+            not _is_shape_only(br, pos) for br in branches.values()))
+    return out
+
+
 def format_validation_error(exc: ValidationError, prefix: str = "",
                             root: type[BaseModel] | None = None) -> str:
     """One line per problem: ``<prefix><key path>: <problem> (got <value>)``; ``root`` is
