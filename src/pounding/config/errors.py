@@ -130,6 +130,8 @@ class _Located:
     unions: list[tuple[int, str, Any]] = field(default_factory=list)
     tp: Any = None
     meta: list[Any] = field(default_factory=list)
+    table: Any = None
+    """The model class of the table holding the last key (for an unknown key)."""
 
 
 def _locate(loc: tuple[Any, ...], root: Any) -> _Located:
@@ -154,6 +156,8 @@ def _locate(loc: tuple[Any, ...], root: Any) -> _Located:
                 out.parts.append(part)
             continue
         out.parts.append(part)
+        if _is_model(tp):
+            out.table = tp
         if isinstance(part, int) and typing.get_origin(tp) is list:
             tp, meta = _strip(typing.get_args(tp)[0])
         elif isinstance(part, str) and _is_model(tp) and part in tp.model_fields:
@@ -274,7 +278,7 @@ def _one_error(err: dict[str, Any], where: _Located, root: Any) -> str:
         return f"{at}: {msg}"
     if typ == "extra_forbidden":
         key = str(parts[-1]) if parts else "?"
-        model = _section_model(parts[:-1], root)
+        model = where.table if where.table is not None else _section_model(parts[:-1], root)
         allowed = sorted(model.model_fields) if model is not None else []
         close = difflib.get_close_matches(key, allowed, n=1)
         hint = f"; did you mean {close[0]!r}?" if close else ""
@@ -338,7 +342,8 @@ def _resolve(items: list[tuple[dict[str, Any], _Located]], root: Any) -> list[st
         if meant:
             tag, chosen = max(meant.items(), key=lambda kv: (
                 max(len(w.parts) for _, w in kv[1]), -len(kv[1])))
-            rest = [(e, _Located(w.parts, w.unions[1:], w.tp, w.meta)) for e, w in chosen]
+            rest = [(e, _Located(w.parts, w.unions[1:], w.tp, w.meta, w.table))
+                    for e, w in chosen]
             lines += _resolve(rest, root)
             continue
         e0, w0 = group[0]
