@@ -19,9 +19,13 @@ error messages of the library itself). Every number has a physical range
 is a :class:`~pounding.plausibility.PlausibilityWarning`
 (:mod:`~pounding.config.plausibility`). The format, key by key, is in ``docs/running.md``.
 
-One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.building`,
-:mod:`~pounding.config.contact`, :mod:`~pounding.config.run` (solver, output, the whole
-file, loading it); :mod:`~pounding.config.errors` turns validation errors into those lines,
+One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.building`
+(its damping and storey laws in :mod:`~pounding.config.storeys`, plans in
+:mod:`~pounding.config.plan`, isolators and walls in :mod:`~pounding.config.isolation`),
+:mod:`~pounding.config.contact`, :mod:`~pounding.config.device`, :mod:`~pounding.config.run`
+(solver, output, the whole file, loading it); :mod:`~pounding.config.quantities` gives every
+number its unit and range, :mod:`~pounding.config.errors` turns validation errors into those
+lines, :mod:`~pounding.config.plausibility` finds inputs probably in the wrong unit, and
 :mod:`~pounding.config.toml` writes a model file back.
 """
 
