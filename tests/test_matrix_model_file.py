@@ -118,8 +118,10 @@ def test_pounding_run_on_a_building_given_as_npz(tmp_path, capsys):
                                                   "building given as matrices"),
     (MATRIX.replace("[3.0, 6.0]", "[3.0, 6.0, 9.0]"),
      "building[0]: building 'mx': elevations has 3 values but the matrices have 2 degrees"),
-    (MATRIX + 'labels = ["a"]\n', "labels has 1 entries but the matrices have 2"),
-    (MATRIX + 'floors = ["F1", "F9"]\n', "floors[1] = 'F9' is not one of the labels"),
+    (MATRIX + 'labels = ["a"]\n', "building[0].labels: need 2 values, one per degree of "
+                                   "freedom like elevations (got 1: ['a'])"),
+    (MATRIX + 'floors = ["F1", "F9"]\n', "building[0].floors[1]: must be one of the labels "
+                                         "(F1, F2) or an index in [0, 1] (got 'F9')"),
     (MATRIX + 'r = [1.0, 0.0, 1.0]\n', "r has 3 values but the matrices have 2"),
     (MATRIX + 'storey_law = { type = "bilinear", yield_force = 1e6 }\n',
      "building[0].storey_law: not a key of a building given as matrices (a matrix building "
@@ -131,7 +133,8 @@ def test_pounding_run_on_a_building_given_as_npz(tmp_path, capsys):
      'damping = { ratio = 0.05 }\n', "building[0].damping: give a damping matrix (matrices.C) "
                                      "or damping, not both"),
     (MATRIX.replace("[3.0, 6.0]", "[3.0, 3.0]"),
-     "building[0] ('mx'): floors 'F1' and 'F2' are both at elevation 3 m"),
+     "building[0].elevations[1]: must be above elevations[0] = 3 m: each floor its own "
+     "elevation, the lowest first (got 3)"),
     ('n_storeys = 2\nmass = 2e5\nstiffness = 4e7\nelevations = [3.0, 6.0]\n',
      "building[0].elevations: only for a building given as matrices"),
 ])

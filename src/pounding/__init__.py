@@ -59,6 +59,7 @@ _EXPORTS: dict[str, str] = {
     "run": "pounding.run",
     "RunOutput": "pounding.run",
     "load_config": "pounding.config",
+    "PlausibilityWarning": "pounding.plausibility",
     # contact laws and damping
     "FORMULAS": "pounding.contact",
     "LAWS": "pounding.contact",
@@ -125,6 +126,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.hysteresis import Bilinear, BoucWen
     from pounding.integrate import simulate
     from pounding.model import ContactSpec, PoundingModel
+    from pounding.plausibility import PlausibilityWarning
     from pounding.result import Result, SolverStats
     from pounding.run import RunOutput, run
     from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding, modes

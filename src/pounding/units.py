@@ -206,18 +206,25 @@ def format_value(value: float, unit: str = "", digits: int = 3) -> str:
     return f"{text} {unit}" if unit and unit != "-" else text
 
 
+MAX_ANGLE_DEG = 360.0
+"""Largest |angle| [degrees] of a direction: one turn either way. Beyond it an angle is a
+mistake (1e308 degrees names no direction: its cosine is rounding noise)."""
+
+
 def direction_cosines(direction: str | float) -> tuple[float, float]:
-    """``(cos β, sin β)`` of ``"x"``, ``"y"`` or an angle β [degrees] from the x axis,
-    exact (0 or ±1) at multiples of 90° so that elements along the axes couple nothing."""
+    """``(cos β, sin β)`` of ``"x"``, ``"y"`` or an angle β [degrees] from the x axis, in
+    [-360, 360], exact (0 or ±1) at multiples of 90° so that elements along the axes couple
+    nothing."""
     if direction == "x":
         return 1.0, 0.0
     if direction == "y":
         return 0.0, 1.0
     if isinstance(direction, numbers.Real) and not isinstance(direction, bool) \
-            and math.isfinite(direction):
+            and math.isfinite(direction) and abs(direction) <= MAX_ANGLE_DEG:
         quarter, rest = divmod(float(direction), 90.0)
         if rest == 0.0:
             return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(quarter) % 4]
         beta = math.radians(float(direction))
         return math.cos(beta), math.sin(beta)
-    raise ValueError(f"direction must be 'x', 'y' or an angle in degrees (got {direction!r})")
+    raise ValueError(f"direction must be 'x', 'y' or an angle in [-360, 360] degrees (got "
+                     f"{direction!r})")

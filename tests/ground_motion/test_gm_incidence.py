@@ -46,8 +46,12 @@ def test_bad_input() -> None:
     a1, a2 = _pair()
     with pytest.raises(ValueError, match="time step 0.02 s differs"):
         at_incidence(a1, GroundMotion(0.02, a2.accel), 0.0)
-    with pytest.raises(ValueError, match="angle must be a finite number"):
+    with pytest.raises(ValueError, match=r"angle must be a number of degrees in \[-360, 360\] "
+                                         r"\(got nan\)"):
         at_incidence(a1, a2, float("nan"))
+    with pytest.raises(ValueError, match=r"angle must be a number of degrees in \[-360, 360\] "
+                                         r"\(got 1e\+300\)"):
+        at_incidence(a1, a2, 1e300)  # its cosine would be rounding noise
     with pytest.raises(ValueError, match="first: expected a GroundMotion"):
         at_incidence(np.zeros(3), a2)  # type: ignore[arg-type]
 

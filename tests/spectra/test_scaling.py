@@ -120,7 +120,7 @@ def test_a_record_scaled_to_sa_in_a_model_file(tmp_path):
     ("sa_g = 0.8\nsa_period = 0.5\npga_g = 0.3",
      "give one of scale, pga_g, sa_g and saavg_g"),
     ("sa_period = 0.5", "record.sa_period: only with sa_g"),
-    ("sa_g = 0.8\nsa_period = 0.5\nsa_damping = 1.0", "record.sa_damping: must be < 1"),
+    ("sa_g = 0.8\nsa_period = 0.5\nsa_damping = 1.0", "record.sa_damping: must be in [0, 1) (got 1)"),
 ])
 def test_bad_sa_keys_are_one_line(tmp_path, capsys, change, message):
     model = tmp_path / "m.toml"

@@ -61,17 +61,34 @@ def test_the_table_is_what_direct_runs_give(tmp_path: Path, capsys):
 
 
 @pytest.mark.parametrize("extra, line", [
-    ('[[option]]\nname = "dashpots"\n', "option.name: two options are called 'dashpots'"),
+    ('[[option]]\nname = "dashpots"\n', "s.toml: option[2].name: two options are called "
+                                       "'dashpots'"),
     ('[[option]]\nname = "thick"\n[[option.device]]\ntype = "bumper"\nfloors = "all"\n'
      'thickness = 0.05\ncompression_limit = 0.5\nrubber = { law = "hertz", k_h = 1e8 }\n',
-     "option[2] (thick): device[0].thickness: the B1F1-B2F1 bumper (0.05 m) is thicker than "
+     "s.toml: option[2].device[0].thickness: the B1F1-B2F1 bumper (0.05 m) is thicker than "
      "its gap (0.04 m)"),
+    ('[[option]]\nname = "x"\n[[option.device]]\ntype = "viscous"\nfloors = ["B1F20", '
+     '"B2F1"]\nc = 1e6\n', "s.toml: option[2].device[0].floors: no floor B1F20 in this model"),
     ('[[option]]\nname = "x"\ncolour = "red"\n', "colour"),
 ])
 def test_bad_studies_get_one_line(tmp_path: Path, capsys, extra, line):
+    """Each line names the study file and the study's own key (not the model's)."""
     study = tmp_path / "s.toml"
     study.write_text(STUDY + extra)
     assert main(["mitigate", str(study), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and line in err[0], err
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("records, line", [
+    ('["el_centro", "nope.at2"]', "s.toml: records[1]: 'nope.at2' is no such file ("),
+    ("[]", "s.toml: records: must hold at least 1 value(s) (got 0: [])"),
+])
+def test_bad_records_are_named_as_the_study_gives_them(tmp_path: Path, capsys, records, line):
+    study = tmp_path / "s.toml"
+    study.write_text(STUDY.replace('records = ["el_centro"]', f"records = {records}"))
+    assert main(["mitigate", str(study), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: {tmp_path}/{line}"), err
     assert not (tmp_path / "o").exists()

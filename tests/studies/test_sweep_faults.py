@@ -84,7 +84,7 @@ def test_a_case_too_large_for_memory_is_refused_with_the_check_of_pounding_run(t
     ('[grid]\n"contact.gap" = ["abc", "def"]\n"contact.e" = [0.5, 0.6]\n',
      'grid.contact.gap = "abc": contact.gap: must be a number (got \'abc\')'),
     ('[list]\n"contact.e" = [0.5, 0.6]\n"record.scale" = [1.0, true]\n',
-     "list.record.scale = true: record.scale: must be a number (got True)"),
+     "list.record.scale = true: record.scale: must be a number (got true)"),
     ('[random]\nn = 20\nseed = 1\n"contact.gap" = [0.0, 0.05]\n'
      '"contact.law" = { choice = ["hertz", 3] }\n',
      "random.contact.law = 3: contact.law: must be a string (in quotes) (got 3)"),

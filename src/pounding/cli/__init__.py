@@ -11,13 +11,21 @@ field (or option) and the value, without a traceback:
 * a sweep stopped by its cluster (a lost Dask scheduler, a failed worker) exits with
   status 1 after saying what was kept and how to resume.
 
+An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of 600 kg;
+:mod:`pounding.config.plausibility`) is one line on standard error that starts
+``warning:``; the command goes on.
+
 Command modules import only typer and rich at module level; everything else is imported by
 the command that uses it, so ``pounding --help`` and ``pounding --version`` start at once.
 """
 
 from __future__ import annotations
 
+import contextlib
 import sys
+import warnings
+from collections.abc import Iterator
+from typing import Any
 
 import typer
 from rich.markup import escape
@@ -37,7 +45,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
 )
 from pounding.cli.app import app, err_console
 
-__all__ = ["app", "main", "error_line"]
+__all__ = ["app", "main", "error_line", "warning_line"]
 
 EXIT_BAD_INPUT = 2
 """Exit status of bad input and usage errors."""
@@ -72,12 +80,49 @@ def _usage_error(exc: typer.TyperException) -> int:
     return int(getattr(exc, "exit_code", EXIT_BAD_INPUT) or EXIT_BAD_INPUT)
 
 
+def warning_line(message: str) -> None:
+    """Print a warning on standard error as one line starting ``warning: ``."""
+    text = " ".join(str(message).split())
+    err_console.print(f"[bold yellow]warning:[/] {escape(text)}", highlight=False,
+                      soft_wrap=True)
+
+
+@contextlib.contextmanager
+def _plausibility_lines() -> Iterator[None]:
+    """Show every :class:`~pounding.plausibility.PlausibilityWarning` issued while a command
+    runs as one ``warning:`` line on standard error, each text once; other warnings as
+    Python shows them."""
+    from pounding.plausibility import PlausibilityWarning
+
+    shown: set[str] = set()
+    with warnings.catch_warnings():
+        warnings.simplefilter("always", PlausibilityWarning)
+        python_shows = warnings.showwarning
+
+        def show(message: Any, category: type[Warning], filename: str, lineno: int,
+                 file: Any = None, line: str | None = None) -> None:
+            if not issubclass(category, PlausibilityWarning):
+                python_shows(message, category, filename, lineno, file, line)
+            elif str(message) not in shown:
+                shown.add(str(message))
+                warning_line(str(message))
+
+        warnings.showwarning = show
+        yield
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI and return its exit status: 0 success, 2 bad input or usage, 130
-    interrupted.
+    interrupted. Plausibility warnings (inputs probably in the wrong unit) are printed as
+    ``warning:`` lines on standard error and change nothing else.
 
     Called with ``argv=None`` (the console script) it exits the process with that status.
     """
+    with _plausibility_lines():
+        return _main(argv)
+
+
+def _main(argv: list[str] | None) -> int:
     try:
         rv = app(args=argv, prog_name="pounding", standalone_mode=False)
         code = rv if isinstance(rv, int) else 0

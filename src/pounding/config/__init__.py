@@ -10,15 +10,22 @@ library — a :class:`~pounding.model.PoundingModel`, a
 Every problem is reported as one :class:`ValueError` holding one line per problem, each
 naming the key by its path in the file and the value found, e.g.::
 
-    model.toml: building[1].period: must be > 0 (got -0.5)
+    model.toml: building[1].period: must be in (0, 100] s (got -0.5)
     model.toml: contact.gaps: need 1 value for 2 buildings (got 2: [0.02, 0.03])
 
 (``building[1]`` is the second ``[[building]]`` table: indices are 0-based, as in the
-error messages of the library itself). The format, key by key, is in ``docs/running.md``.
+error messages of the library itself). Every number has a physical range
+(:mod:`~pounding.config.quantities`). An input that is valid but probably in the wrong unit
+is a :class:`~pounding.plausibility.PlausibilityWarning`
+(:mod:`~pounding.config.plausibility`). The format, key by key, is in ``docs/running.md``.
 
-One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.building`,
-:mod:`~pounding.config.contact`, :mod:`~pounding.config.run` (solver, output, the whole
-file, loading it); :mod:`~pounding.config.errors` turns validation errors into those lines,
+One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.building`
+(its damping and storey laws in :mod:`~pounding.config.storeys`, plans in
+:mod:`~pounding.config.plan`, isolators and walls in :mod:`~pounding.config.isolation`),
+:mod:`~pounding.config.contact`, :mod:`~pounding.config.device`, :mod:`~pounding.config.run`
+(solver, output, the whole file, loading it); :mod:`~pounding.config.quantities` gives every
+number its unit and range, :mod:`~pounding.config.errors` turns validation errors into those
+lines, :mod:`~pounding.config.plausibility` finds inputs probably in the wrong unit, and
 :mod:`~pounding.config.toml` writes a model file back.
 """
 

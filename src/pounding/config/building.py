@@ -1,4 +1,5 @@
-"""``[[building]]``: the buildings of a model file, their damping and storey laws."""
+"""``[[building]]``: the buildings of a model file (their damping and storey laws:
+:mod:`pounding.config.storeys`)."""
 
 from __future__ import annotations
 
@@ -7,123 +8,24 @@ import os
 from pathlib import Path
 from typing import Annotated, Any
 
-from pydantic import Field, ValidationInfo, field_validator, model_validator
+from pydantic import Field, ValidationInfo, model_validator
 
-from pounding.config.base import Pos, Ratio, Section, field_error, fmt, prefixed
+from pounding.config.base import Section, field_error, fmt, prefixed
 from pounding.config.isolation import IsolatorConfig
 from pounding.config.plan import ElementConfig, PlanConfig
+from pounding.config.quantities import MAX_LENGTH, Elevation, Length, Mass, Period, Stiffness
+from pounding.config.storeys import DampingConfig, StoreyLawConfig
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
-from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
-from pounding.structure.damping import DampingModel
 from pounding.structure.plan import PlanBuilding
+from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
 
-class DampingConfig(Section):
-    """``damping = {...}``: inherent damping of one building.
+__all__ = ["BUILDINGS", "BuildingConfig", "DampingConfig", "MatrixFilesConfig",
+           "StoreyLawConfig"]
 
-    * ``{ ratio = 0.05 }`` — the same ratio in every mode (:class:`ModalDamping`);
-    * ``{ rayleigh = [0.05, 0.05], modes = [1, 2] }`` — Rayleigh damping with those ratios
-      at those modes (default modes 1 and 2; one ratio means the same at both);
-    * ``{ rayleigh = [0.05, 0.05], periods = [1.0, 0.2] }`` — anchored at two periods [s].
-    """
-
-    ratio: Ratio | None = None
-    rayleigh: Annotated[list[Ratio], Field(min_length=1, max_length=2)] | None = None
-    modes: Annotated[list[Annotated[int, Field(ge=1)]],
-                     Field(min_length=2, max_length=2)] | None = None
-    periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
-
-    @model_validator(mode="after")
-    def _one_kind(self) -> DampingConfig:
-        if (self.ratio is None) == (self.rayleigh is None):
-            raise ValueError("give exactly one of ratio (same ratio in every mode) and "
-                             f"rayleigh (got ratio={self.ratio!r}, rayleigh={self.rayleigh!r})")
-        if self.ratio is not None:
-            for key in ("modes", "periods"):
-                if getattr(self, key) is not None:
-                    raise field_error(key, f"only with rayleigh (got {getattr(self, key)!r})")
-        if self.modes is not None and self.periods is not None:
-            raise field_error("periods", "give modes or periods, not both "
-                                          f"(got modes={self.modes!r}, periods={self.periods!r})")
-        return self
-
-    def build(self) -> DampingModel:
-        """The damping model."""
-        if self.ratio is not None:
-            return ModalDamping(self.ratio)
-        assert self.rayleigh is not None
-        zi = self.rayleigh[0]
-        zj = self.rayleigh[-1]
-        if self.periods is not None:
-            return RayleighDamping.from_periods(self.periods[0], self.periods[1], zi, zj)
-        mi, mj = self.modes or (1, 2)
-        return RayleighDamping(zeta_i=zi, zeta_j=zj, mode_i=mi, mode_j=mj)
-
-
-class StoreyLawConfig(Section):
-    """``storey_law = {...}``: how the storeys of one building yield (default: linear).
-
-    * ``{ type = "bilinear", yield_force = 2.0e6, hardening = 0.05 }`` — bilinear with
-      kinematic hardening (:class:`pounding.hysteresis.Bilinear`);
-    * ``{ type = "bouc-wen", yield_drift_ratio = 0.005, alpha = 0.05, n = 2, beta = 0.5,
-      gamma = 0.5 }`` — Bouc–Wen (:class:`pounding.hysteresis.BoucWen`).
-
-    The yield point is one of ``yield_force`` [N], ``yield_drift`` [m] or
-    ``yield_drift_ratio`` [-] (yield drift / storey height), each a number for every storey
-    or a list with one value per storey. The elastic stiffness is the building's.
-    """
-
-    type: str
-    yield_force: Pos | list[Pos] | None = None
-    yield_drift: Pos | list[Pos] | None = None
-    yield_drift_ratio: Pos | list[Pos] | None = None
-    hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
-    alpha: Annotated[float, Field(ge=0, lt=1)] | None = None
-    n: Annotated[float, Field(ge=1)] | None = None
-    beta: float | None = None
-    gamma: float | None = None
-
-    @field_validator("type")
-    @classmethod
-    def _known_type(cls, v: str) -> str:
-        from pounding.hysteresis import STOREY_LAWS
-
-        key = v.strip().lower()
-        if key not in STOREY_LAWS:
-            raise ValueError(f"unknown storey law {v!r}; choose one of "
-                             f"{', '.join(STOREY_LAWS)}")
-        return key
-
-    @model_validator(mode="after")
-    def _keys(self) -> StoreyLawConfig:
-        own = {"bilinear": {"hardening"}, "bouc-wen": {"alpha", "n", "beta", "gamma"}}[self.type]
-        for key in ("hardening", "alpha", "n", "beta", "gamma"):
-            if key not in own and getattr(self, key) is not None:
-                raise field_error(key, f"not a constant of the {self.type} law (got "
-                                        f"{fmt(getattr(self, key))}); it reads "
-                                        f"{', '.join(sorted(own))}")
-        given = [k for k in ("yield_force", "yield_drift", "yield_drift_ratio")
-                 if getattr(self, k) is not None]
-        if len(given) != 1:
-            raise field_error("yield_force", "give exactly one of yield_force [N], "
-                                              "yield_drift [m] or yield_drift_ratio [-] "
-                                              f"(got {', '.join(given) or 'none'})")
-        return self
-
-    def build(self, heights: Any) -> Any:
-        """The :class:`pounding.hysteresis.StoreyLaw` for storeys of these heights [m]."""
-        import numpy as np
-
-        from pounding.hysteresis import STOREY_LAWS
-
-        kw = self.model_dump(exclude={"type", "yield_drift_ratio"}, exclude_none=True)
-        if self.yield_drift_ratio is not None:
-            ratio = np.asarray(self.yield_drift_ratio, dtype=float)
-            if ratio.size not in (1, len(heights)):
-                raise field_error("yield_drift_ratio", f"need one value or {len(heights)} "
-                                   f"(one per storey), got {ratio.size}")
-            kw["yield_drift"] = [float(v) for v in ratio * np.asarray(heights, dtype=float)]
-        return STOREY_LAWS[self.type](**kw)
+Influence = Annotated[float, Field(ge=-MAX_LENGTH, le=MAX_LENGTH)]
+"""An entry of an influence vector ``r`` (1 for a translation along the ground motion, a
+lever arm [m] for a rotation)."""
 
 
 BUILDINGS = Memo(max_items=64, max_bytes=256 << 20)
@@ -192,22 +94,22 @@ class BuildingConfig(Section):
     """
 
     name: str | None = None
-    mass: Pos | None = None
-    stiffness: Pos | None = None
-    period: Pos | None = None
-    height: Pos | None = None
+    mass: Mass | None = None
+    stiffness: Stiffness | None = None
+    period: Period | None = None
+    height: Length | None = None
     n_storeys: Annotated[int, Field(ge=1, le=MAX_FLOORS)] | None = None
-    masses: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
-    stiffnesses: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
-    heights: Annotated[list[Pos], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    masses: Annotated[list[Mass], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    stiffnesses: Annotated[list[Stiffness], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
+    heights: Annotated[list[Length], Field(min_length=1, max_length=MAX_FLOORS)] | None = None
     damping: DampingConfig | None = None
     storey_law: StoreyLawConfig | None = None
     isolator: IsolatorConfig | None = None
     matrices: MatrixFilesConfig | None = None
     npz: str | None = None
-    elevations: Annotated[list[float], Field(min_length=1)] | None = None
+    elevations: Annotated[list[Elevation], Field(min_length=1)] | None = None
     labels: Annotated[list[str], Field(min_length=1)] | None = None
-    r: Annotated[list[float], Field(min_length=1)] | None = None
+    r: Annotated[list[Influence], Field(min_length=1)] | None = None
     floors: Annotated[list[str | int], Field(min_length=1)] | None = None
     plan: PlanConfig | None = None
     elements: Annotated[list[ElementConfig], Field(min_length=1)] | None = None
@@ -254,9 +156,26 @@ class BuildingConfig(Section):
             raise field_error("isolator", "a base-isolated building's superstructure stays "
                                           "linear: give isolator or storey_law, not both")
         kind = self.kind
+        self._check_shape()
+        self._check_modes()
+        return self
+
+    def _check_modes(self) -> None:
+        """Refuse Rayleigh damping anchored at a mode the building does not have."""
+        if self.damping is None or self.damping.modes is None:
+            return
+        n = {"plan": 3 * self.n}.get(self.kind, self.n)
+        for i, mode in enumerate(self.damping.modes):
+            if mode > n:
+                raise field_error(("damping", "modes", i),
+                                  f"must be in [1, {n}]: the building has {n} mode(s) (got "
+                                  f"{mode})")
+
+    def _check_shape(self) -> None:
+        kind = self.kind
         if kind == "plan":
             self._check_plan_keys()
-            return self
+            return
         for key in _PLAN_ONLY:
             if getattr(self, key) is not None:
                 raise field_error(key, "only for a building in plan (plan = { width = …, "
@@ -264,7 +183,7 @@ class BuildingConfig(Section):
                                        f"{fmt(getattr(self, key))})")
         if kind == "matrices":
             self._check_matrix_keys()
-            return self
+            return
         for key in _MATRIX_KEYS:
             if getattr(self, key) is not None:
                 raise field_error(key, f"only for a building given as matrices (matrices = "
@@ -301,7 +220,8 @@ class BuildingConfig(Section):
             if self.heights is not None and len(self.heights) != n:
                 raise field_error("heights", f"need {n} values, one per floor like masses "
                                               f"(got {len(self.heights)})")
-        return self
+        if self.storey_law is not None:
+            self.storey_law.check_storeys(self.n)
 
     def _check_matrix_keys(self) -> None:
         for key in _SHEAR_KEYS:
@@ -316,6 +236,39 @@ class BuildingConfig(Section):
         if self.elevations is None:
             raise field_error("elevations", "required for a building given as matrices: one "
                                             "elevation [m] per degree of freedom")
+        n = len(self.elevations)
+        labels = self.labels if self.labels is not None else [f"F{j + 1}" for j in range(n)]
+        if self.labels is not None:
+            if len(self.labels) != n:
+                raise field_error("labels", f"need {n} values, one per degree of freedom like "
+                                            f"elevations (got {len(self.labels)}: "
+                                            f"{fmt(self.labels)})")
+            for i, label in enumerate(self.labels):
+                if label in self.labels[:i]:
+                    raise field_error(("labels", i), f"repeats labels[{self.labels.index(label)}]"
+                                                     f": each degree of freedom needs its own "
+                                                     f"label (got {label!r})")
+        for i, f in enumerate(self.floors or []):
+            if isinstance(f, int) and not 0 <= f < n:
+                raise field_error(("floors", i), f"must be a label or an index in [0, {n - 1}] "
+                                                 f"(got {f})")
+            if isinstance(f, str) and f not in labels:
+                raise field_error(("floors", i), f"must be one of the labels "
+                                                 f"({', '.join(labels[:12])}"
+                                                 f"{', …' if n > 12 else ''}) or an index in "
+                                                 f"[0, {n - 1}] (got {f!r})")
+        if self.floors is None:  # every degree of freedom is a floor
+            for i, z in enumerate(self.elevations):
+                if not z > 0.0:
+                    raise field_error(("elevations", i),
+                                      f"must be > 0 m: without floors = [...] every degree of "
+                                      f"freedom is a floor, and floors stand above the ground "
+                                      f"(got {fmt(z)})")
+                if i and not z > self.elevations[i - 1]:
+                    raise field_error(("elevations", i),
+                                      f"must be above elevations[{i - 1}] = "
+                                      f"{fmt(self.elevations[i - 1])} m: each floor its own "
+                                      f"elevation, the lowest first (got {fmt(z)})")
         if self.matrices is not None and self.matrices.C is not None and self.damping is not None:
             raise field_error("damping", "give a damping matrix (matrices.C) or damping, not "
                                          f"both (got C = {self.matrices.C!r})")
@@ -371,6 +324,14 @@ class BuildingConfig(Section):
             raise field_error(("plan", "inertias"),
                               f"need one value or {n}, one a floor (got {len(plan.inertias)}: "
                               f"{fmt(plan.inertias)})")
+        plan.check_inertias(self.masses)
+        for i, e in enumerate(self.elements):
+            for key, value, size in (("x", e.x, plan.width), ("y", e.y, plan.depth)):
+                if not 0.0 <= value <= size:
+                    raise field_error(("elements", i, key),
+                                      f"must lie inside the plan, in [0, {fmt(size)}] m (the "
+                                      f"plan's {'width' if key == 'x' else 'depth'}) (got "
+                                      f"{fmt(value)})")
 
     def _files(self) -> list[str]:
         if self.npz is not None:
@@ -435,7 +396,7 @@ class BuildingConfig(Section):
             own["damping"] = self.damping.build()
         elements = []
         for i, e in enumerate(self.elements):
-            with prefixed(f"elements[{i}]"):
+            with prefixed(f"elements[{i}]", ElementConfig.model_fields):
                 elements.append(e.build())
         return PlanBuilding(masses=self.masses, heights=heights, width=plan.width,
                             depth=plan.depth, elements=elements,
@@ -443,6 +404,14 @@ class BuildingConfig(Section):
                             site_y=plan.site_y, **own)
 
     def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
+        try:
+            return self._make(default_name)
+        except ValueError as exc:
+            if str(exc).startswith("Rayleigh damping"):  # the ratios given, at these modes
+                raise ValueError(f"damping.rayleigh: {exc}") from None
+            raise
+
+    def _make(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
         name = self.name or default_name
         if self.kind == "matrices":
             return self._build_matrices(name)
@@ -476,11 +445,11 @@ class BuildingConfig(Section):
     def _with_law(self, b: ShearBuilding) -> ShearBuilding:
         if self.isolator is not None:
             iso = self.isolator
-            with prefixed("isolator"):
+            with prefixed("isolator", IsolatorConfig.model_fields):
                 return ShearBuilding.base_isolated(b, iso.base_mass, iso.build(),
                                                    base_height=iso.base_height,
                                                    isolator_damping=iso.damping)
         if self.storey_law is None:
             return b
-        with prefixed("storey_law"):
+        with prefixed("storey_law", StoreyLawConfig.model_fields):
             return b.with_storey_law(self.storey_law.build(b.heights))

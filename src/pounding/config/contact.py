@@ -7,7 +7,8 @@ from typing import Annotated
 
 from pydantic import Field, field_validator, model_validator
 
-from pounding.config.base import NonNeg, Pos, Section, field_error, fmt
+from pounding.config.base import Section, field_error, fmt
+from pounding.config.quantities import DampingCoefficient, Gap, HertzStiffness, Length, Stiffness
 from pounding.contact.factory import LAW_NAMES
 from pounding.model import ContactSpec
 
@@ -40,16 +41,16 @@ class LawConfig(Section):
     """
 
     law: str
-    k: Pos | None = None
-    k_h: Pos | None = None
+    k: Stiffness | None = None
+    k_h: HertzStiffness | None = None
     e: Annotated[float, Field(gt=0, le=1)] | None = None
     formula: str | None = None
-    c: NonNeg | None = None
-    zeta: NonNeg | None = None
-    chi: NonNeg | None = None
-    n: Pos = 1.5
+    c: DampingCoefficient | None = None
+    zeta: Annotated[float, Field(ge=0, le=100)] | None = None
+    chi: Annotated[float, Field(ge=0, le=100)] | None = None
+    n: Annotated[float, Field(ge=1, le=3)] = 1.5
     tension: bool = False
-    delta_m: Pos | None = None
+    delta_m: Length | None = None
     a: Annotated[float, Field(gt=0, lt=1)] = 0.1
 
     @field_validator("law")
@@ -88,10 +89,10 @@ class ContactConfig(LawConfig):
     slab.
     """
 
-    gap: NonNeg | None = None
-    gaps: list[NonNeg] | None = None
+    gap: Gap | None = None
+    gaps: list[Gap] | None = None
     floor_to_column: bool = True
-    level_tolerance: Pos = 0.1
+    level_tolerance: Length = 0.1
 
     @model_validator(mode="after")
     def _gap_keys(self) -> ContactConfig:

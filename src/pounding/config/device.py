@@ -6,7 +6,8 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from pounding.config.base import Pos, Section, field_error
+from pounding.config.base import Section, field_error
+from pounding.config.quantities import Length, PositiveDamping, Stiffness
 from pounding.config.contact import LawConfig
 from pounding.devices import Bumper, Link
 
@@ -30,10 +31,10 @@ class DeviceConfig(Section):
 
     type: Literal["viscous", "kelvin", "maxwell", "bumper"]
     floors: Annotated[list[str], Field(min_length=2, max_length=2)] | Literal["all"]
-    c: Pos | None = None
+    c: PositiveDamping | None = None
     alpha: Annotated[float, Field(gt=0, le=2)] | None = None
-    k: Pos | None = None
-    thickness: Pos | None = None
+    k: Stiffness | None = None
+    thickness: Length | None = None
     compression_limit: Annotated[float, Field(gt=0, lt=1)] | None = None
     rubber: LawConfig | None = None
 

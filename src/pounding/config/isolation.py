@@ -27,7 +27,16 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
-from pounding.config.base import NonNeg, Pos, Section, field_error, fmt
+from pounding.config.base import Section, check_bouc_wen_shape, field_error, fmt
+from pounding.config.quantities import (
+    DampingCoefficient,
+    Force,
+    Gap,
+    Length,
+    Mass,
+    Stiffness,
+    StiffnessOrZero,
+)
 
 _OWN = {"friction-pendulum": {"radius", "mu", "weight", "yield_displacement", "n", "beta",
                               "gamma"},
@@ -39,20 +48,20 @@ class IsolatorConfig(Section):
     """``isolator = {...}`` of a ``[[building]]`` (module docstring)."""
 
     law: Literal["friction-pendulum", "bilinear"]
-    base_mass: Pos
-    base_height: Pos = 1.0
-    damping: NonNeg = 0.0
-    radius: Pos | None = None
+    base_mass: Mass
+    base_height: Length = 1.0
+    damping: DampingCoefficient = 0.0
+    radius: Length | None = None
     mu: Annotated[float, Field(gt=0, lt=1)] | None = None
-    weight: Pos | None = None
-    yield_displacement: Pos | None = None
-    n: Annotated[float, Field(ge=1)] | None = None
-    beta: float | None = None
-    gamma: float | None = None
-    pre_yield_stiffness: Pos | None = None
-    post_yield_stiffness: NonNeg | None = None
-    characteristic_strength: Pos | None = None
-    yield_force: Pos | None = None
+    weight: Force | None = None
+    yield_displacement: Length | None = None
+    n: Annotated[float, Field(ge=1, le=100)] | None = None
+    beta: Annotated[float, Field(ge=0, le=100)] | None = None
+    gamma: Annotated[float, Field(ge=-100, le=100)] | None = None
+    pre_yield_stiffness: Stiffness | None = None
+    post_yield_stiffness: StiffnessOrZero | None = None
+    characteristic_strength: Force | None = None
+    yield_force: Force | None = None
 
     @model_validator(mode="after")
     def _keys(self) -> IsolatorConfig:
@@ -67,6 +76,8 @@ class IsolatorConfig(Section):
         for key in need:
             if getattr(self, key) is None:
                 raise field_error(key, f"required for the {self.law} isolator")
+        if self.law == "friction-pendulum":
+            check_bouc_wen_shape(self.beta, self.gamma)
         return self
 
     def build(self) -> Any:
@@ -83,8 +94,8 @@ class IsolatorConfig(Section):
 class WallConfig(Section):
     """``[[wall]]``: a rigid moat wall at one end of the row (module docstring)."""
 
-    height: Pos
-    gap: NonNeg
+    height: Length
+    gap: Gap
     side: Literal["right", "left"] = "right"
     name: Annotated[str, Field(min_length=1)] = "W"
 

@@ -9,7 +9,8 @@ from typing import Annotated
 
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
-from pounding.config.base import Pos, Section, field_error, fmt
+from pounding.config.base import Section, field_error, fmt
+from pounding.config.quantities import Angle, Duration, Intensity, Period, Scale, Step
 from pounding.ground_motion import (
     GroundMotion,
     GroundMotionComponents,
@@ -52,7 +53,8 @@ class RecordConfig(Section):
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
     them. Then, in this order: ``duration`` [s] keeps the record up to that time, and at
-    most one of ``scale`` [-] (multiplies it), ``pga_g`` [g] (scales it to that peak) and
+    most one of ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor
+    reversing the record's polarity), ``pga_g`` [g] (scales it to that peak) and
     ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
     period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
     incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`), or ``saavg_g`` [g]
@@ -64,7 +66,7 @@ class RecordConfig(Section):
     Two horizontal components (for a model with buildings in plan): ``second`` (a bundled
     record) or ``second_file`` (a path, relative to the model file), the component
     orthogonal to the first, and ``incidence`` [degrees], the angle of the first component
-    from the site x axis, counter-clockwise (default 0):
+    from the site x axis, counter-clockwise, in [-360, 360] (default 0):
     :func:`pounding.ground_motion.incidence.at_incidence`. ``dt`` and ``units`` are for
     every record file given; ``duration`` and the scaling apply to both components alike:
     the factor is the first component's (``pga_g``, ``sa_g``, ``saavg_g`` measured on the
@@ -76,20 +78,20 @@ class RecordConfig(Section):
 
     bundled: str | None = None
     file: str | None = None
-    dt: Pos | None = None
+    dt: Step | None = None
     units: str | None = None
-    duration: Pos | None = None
-    scale: float | None = None
-    pga_g: Pos | None = None
-    sa_g: Pos | None = None
-    sa_period: Pos | None = None
+    duration: Duration | None = None
+    scale: Scale | None = None
+    pga_g: Intensity | None = None
+    sa_g: Intensity | None = None
+    sa_period: Period | None = None
     sa_damping: Annotated[float, Field(ge=0.0, lt=1.0)] | None = None
-    saavg_g: Pos | None = None
-    saavg_periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
+    saavg_g: Intensity | None = None
+    saavg_periods: Annotated[list[Period], Field(min_length=2, max_length=2)] | None = None
     saavg_n: Annotated[int, Field(ge=2, le=1000)] | None = None
     second: str | None = None
     second_file: str | None = None
-    incidence: float | None = None
+    incidence: Angle | None = None
 
     _path: Path | None = PrivateAttr(default=None)
     _second_path: Path | None = PrivateAttr(default=None)
@@ -110,6 +112,10 @@ class RecordConfig(Section):
         if (self.bundled is None) == (self.file is None):
             raise ValueError("give exactly one of bundled (e.g. bundled = \"el_centro\") and "
                              f"file (got bundled={self.bundled!r}, file={self.file!r})")
+        if self.scale == 0.0:
+            raise field_error("scale", "must not be 0: the record would not shake anything "
+                                       "(a factor in [-1000, 1000]; negative flips the "
+                                       "record's polarity) (got 0)")
         given = [k for k in ("scale", "pga_g", "sa_g", "saavg_g") if getattr(self, k) is not None]
         if len(given) > 1:
             raise field_error(given[-1], "give one of scale, pga_g, sa_g and saavg_g (got "

@@ -3,22 +3,25 @@
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 from typing import Annotated, Any, NamedTuple
 
 from pydantic import Field, PrivateAttr, ValidationError, model_validator
 
-from pounding.config.base import Pos, Section, field_error, fmt, prefixed
+from pounding.config.base import Section, field_error, fmt, prefixed
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
 from pounding.config.device import DeviceConfig
 from pounding.config.isolation import WallConfig
 from pounding.config.errors import format_validation_error
+from pounding.config.quantities import Duration, Step
 from pounding.config.record import RecordConfig
 from pounding.config.toml import dump_toml
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.io import read_toml
 from pounding.model import ContactSpec, PoundingModel
+from pounding.plausibility import warn_plausibility
 
 class SolverConfig(Section):
     """``[solver]``: options of :func:`pounding.integrate.simulate`.
@@ -29,10 +32,10 @@ class SolverConfig(Section):
     largest size.
     """
 
-    dt: Pos | None = None
-    duration: Pos | None = None
+    dt: Step | None = None
+    duration: Duration | None = None
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
-    h_max: Pos | None = None
+    h_max: Step | None = None
 
     def kwargs(self) -> dict[str, Any]:
         """Keyword arguments of :func:`~pounding.integrate.simulate`."""
@@ -69,6 +72,7 @@ class RunConfig(Section):
     output: OutputConfig = OutputConfig()
 
     _source: Path | None = PrivateAttr(default=None)
+    _plausibility: tuple[str, ...] = PrivateAttr(default=())
 
     @property
     def in_plan(self) -> bool:
@@ -110,6 +114,14 @@ class RunConfig(Section):
         """The file this was read from, if any."""
         return self._source
 
+    @property
+    def plausibility(self) -> tuple[str, ...]:
+        """The plausibility warnings of the file as read by :func:`load_config` or
+        :func:`parse_config` (inputs probably in the wrong unit, one line each,
+        :mod:`pounding.config.plausibility`); each was also issued as a
+        :class:`~pounding.plausibility.PlausibilityWarning`."""
+        return self._plausibility
+
     def build(self) -> Built:
         """The model, the ground motion and the solver keyword arguments.
 
@@ -118,10 +130,10 @@ class RunConfig(Section):
         """
         buildings = []
         for i, b in enumerate(self.building):
-            with prefixed(f"building[{i}]"):
+            with prefixed(f"building[{i}]", BuildingConfig.model_fields):
                 buildings.append(b.build(f"B{i + 1}"))
         if self.contact is not None:
-            with prefixed("contact"):
+            with prefixed("contact", ContactConfig.model_fields):
                 spec = self.contact.spec()
             gaps = self.contact.gap_list(len(buildings) - 1)
         else:
@@ -141,21 +153,27 @@ class RunConfig(Section):
                 raise ValueError(f"contact: {text}") from exc
             floors = [(c.left.label(), c.right.label()) for c in bare.contacts
                       if c.is_floor_to_floor]
+        owner: list[int] = []  # the file's device table of each of the model's devices
         for i, d in enumerate(self.device):
-            with prefixed(f"device[{i}]"):
-                devices.extend(d.build(floors))
+            with prefixed(f"device[{i}]", DeviceConfig.model_fields):
+                made = d.build(floors)
+            devices.extend(made)
+            owner.extend([i] * len(made))
         try:
             walls = []
             for i, w in enumerate(self.wall):
-                with prefixed(f"walls[{i}]"):
+                with prefixed(f"wall[{i}]", WallConfig.model_fields):
                     walls.append(w.build())
             model = PoundingModel(buildings, gaps, spec, name=self.name, **geometry,
                                   devices=devices, walls=walls)
             model.contacts  # noqa: B018  (builds every contact law with its floor masses)
         except ValueError as exc:
             text = str(exc)
-            if text.startswith("devices["):  # the model's devices[i] is the file's device[i]
-                raise ValueError("device[" + text[len("devices["):]) from exc
+            found = re.match(r"devices\[(\d+)\]", text)
+            if found and int(found[1]) < len(owner):
+                # the model's devices[k] comes from the file's device[owner[k]] (a table with
+                # floors = "all" makes one device at each shared floor level)
+                raise ValueError(f"device[{owner[int(found[1])]}]" + text[found.end():]) from exc
             if text.startswith("buildings["):  # and its buildings[i] the file's building[i]
                 raise ValueError("building[" + text[len("buildings["):]) from exc
             if text.startswith("walls["):  # the model's walls[i] is the file's wall[i]
@@ -170,7 +188,7 @@ class RunConfig(Section):
                     f"{[round(float(x), 6) for x in a.floor_levels]} and "
                     f"{[round(float(x), 6) for x in b.floor_levels]}); with "
                     "contact.floor_to_column = false floors meet only at equal levels")
-        with prefixed("record"):
+        with prefixed("record", RecordConfig.model_fields):
             motion = self.record.load(components=self.in_plan)
         return Built(model, motion, self.solver.kwargs())
 
@@ -268,19 +286,34 @@ def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
                  where: str = "config") -> RunConfig:
     """Validate already-parsed TOML data; ``base_dir`` is where relative paths start.
 
+    An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of 600
+    kg, T1 below 0.05 s or above 10 s, a PGA above 3 g) is issued as a
+    :class:`~pounding.plausibility.PlausibilityWarning`, ``<where>: <key>: …``, and kept in
+    :attr:`RunConfig.plausibility`.
+
     Raises
     ------
     ValueError
         One line per problem, each ``<where>: <key path>: <problem> (got <value>)``.
     """
+    cfg = _parse(data, base_dir, where)
+    warn_plausibility(cfg.plausibility)
+    return cfg
+
+
+def _parse(data: dict[str, Any], base_dir: str | os.PathLike[str], where: str) -> RunConfig:
+    """:func:`parse_config` without issuing its warnings."""
     try:
         cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
     except ValidationError as exc:
         raise ValueError(format_validation_error(exc, prefix=f"{where}: ")) from None
     try:
-        cfg.build()
+        built = cfg.build()
     except ValueError as exc:
         raise ValueError(f"{where}: {exc}") from None
+    from pounding.config.plausibility import plausibility_warnings
+
+    cfg._plausibility = tuple(f"{where}: {line}" for line in plausibility_warnings(cfg, built))
     return cfg
 
 
@@ -303,6 +336,7 @@ def load_config(path: str | os.PathLike[str]) -> RunConfig:
     if "base" in data and any(k in data for k in SWEEP_CASE_TABLES):
         raise ValueError(f"{p}: this is a sweep file (it has 'base' and a [grid], [list] or "
                          f"[random] table), not a model file: run it with `pounding sweep {p}`")
-    cfg = parse_config(data, base_dir=p.resolve().parent, where=str(p))
+    cfg = _parse(data, base_dir=p.resolve().parent, where=str(p))
     cfg._source = p.resolve()
+    warn_plausibility(cfg.plausibility)
     return cfg

@@ -36,7 +36,8 @@ def at_incidence(first: GroundMotion, second: GroundMotion | None = None,
         the first component alone.
     angle : float
         Incidence angle α [degrees] of the first component from the site x axis,
-        counter-clockwise. Exact at multiples of 90° (0°: the first component along x).
+        counter-clockwise, in [-360, 360]. Exact at multiples of 90° (0°: the first
+        component along x).
 
     Returns
     -------
@@ -47,7 +48,8 @@ def at_incidence(first: GroundMotion, second: GroundMotion | None = None,
     Raises
     ------
     ValueError
-        The two components have different time steps, or the angle is not finite.
+        The two components have different time steps, or the angle is not a number in
+        [-360, 360].
 
     Examples
     --------
@@ -65,7 +67,8 @@ def at_incidence(first: GroundMotion, second: GroundMotion | None = None,
     try:
         c, s = direction_cosines(float(angle))
     except (TypeError, ValueError):
-        raise ValueError(f"angle must be a finite number of degrees (got {angle!r})") from None
+        raise ValueError(f"angle must be a number of degrees in [-360, 360] (got "
+                         f"{angle!r})") from None
     a1 = first.accel
     if second is None:
         a2 = np.zeros_like(a1)

@@ -137,7 +137,8 @@ class FrictionPendulum(Isolator):
     ----------
     radius : float
         Radius of curvature of the sliding surface ``R`` [m] (pendulum period
-        ``2π √(R/g)``).
+        ``2π √(R/g)``), above ``Y/μ`` (a pendulum stiffness ``W/R`` below the stick
+        stiffness of friction ``μW/Y``: the Bouc–Wen ``α`` below 1/2).
     mu : float
         Coefficient of friction ``μ`` (0 < μ < 1), constant.
     weight : float, optional
@@ -175,6 +176,12 @@ class FrictionPendulum(Isolator):
         positive("radius", self.radius)
         in_range("mu", self.mu, 0.0, 1.0, low_open=True, high_open=True)
         positive("yield_displacement", self.yield_displacement)
+        smallest = self.yield_displacement / self.mu
+        if not self.radius > smallest:
+            raise ValueError(f"radius must be > yield_displacement / mu = {smallest:g} m (got "
+                             f"{self.radius:g}): on a smaller radius the pendulum's stiffness "
+                             "W/R outgrows the friction's μW/Y and the bearing no longer "
+                             "slides on friction (real radii: 0.5–10 m)")
         if self.weight is not None and self.mass is not None:
             raise ValueError(f"isolator: give weight [N] or mass [kg], not both (got "
                              f"weight={self.weight!r}, mass={self.mass!r})")

@@ -93,7 +93,8 @@ def rayleigh_coefficients(omega_i: float, omega_j: float, zeta_i: float,
             f"Rayleigh damping with zeta_i={zi:g} at omega_i={wi:g} rad/s and zeta_j={zj:g} at "
             f"omega_j={wj:g} rad/s needs a negative coefficient (a0={a0:g} 1/s, a1={a1:g} s), "
             "i.e. negative damping in some band; choose ratios whose quotient zeta_j/zeta_i "
-            "lies between omega_i/omega_j and omega_j/omega_i")
+            f"lies in [{min(wi, wj) / max(wi, wj):.4g}, {max(wi, wj) / min(wi, wj):.4g}] "
+            "(between omega_i/omega_j and omega_j/omega_i)")
     return max(a0, 0.0), max(a1, 0.0)
 
 

@@ -79,7 +79,7 @@ class LateralElement:
         :attr:`PlanBuilding.width` and :attr:`PlanBuilding.depth`).
     direction : {"x", "y"} or float
         The direction it resists: along x, along y, or an angle [degrees] from the x axis,
-        counter-clockwise.
+        counter-clockwise, in [-360, 360].
     stiffnesses : array_like, shape (n,) or float
         Its lateral stiffness in each storey [N/m], storey 1 first (a single value: the same
         in every storey).
@@ -148,10 +148,13 @@ class PlanBuilding:
         y and rotation (at least two non-parallel directions and a lever arm). Give either
         these or ``stiffness``.
     mass_centres : array_like, shape (n, 2), optional
-        Centre of mass ``(x_c, y_c)`` of each floor [m]; default the centre of the plan.
+        Centre of mass ``(x_c, y_c)`` of each floor [m], inside the plan; default the
+        centre of the plan.
     inertias : array_like, shape (n,), optional
         Polar moment of inertia of each floor about its centre of mass [kg·m²]; default
-        that of a uniform rectangle, ``m (width² + depth²) / 12``.
+        that of a uniform rectangle, ``m (width² + depth²) / 12``. At most ``m ρ²``, ``ρ``
+        the distance from the centre of mass to the farthest corner of the plan (the
+        floor's whole mass there): no floor on the plan has more.
     damping : DampingModel
         Default 5 % Rayleigh damping at modes 1 and 3 (see :func:`_default_damping`).
     name : str
@@ -214,6 +217,13 @@ class PlanBuilding:
             if centres.shape != (n, 2) or not np.all(np.isfinite(centres)):
                 raise ValueError(f"mass_centres must be finite (x, y) pairs [m], one a floor "
                                  f"({n}) (got shape {centres.shape})")
+            outside = np.flatnonzero((centres[:, 0] < 0.0) | (centres[:, 0] > self.width)
+                                     | (centres[:, 1] < 0.0) | (centres[:, 1] > self.depth))
+            if outside.size:
+                k = int(outside[0])
+                raise ValueError(f"mass_centres[{k}] must lie inside the plan, x in [0, "
+                                 f"{self.width:g}] and y in [0, {self.depth:g}] m (got "
+                                 f"[{centres[k, 0]:g}, {centres[k, 1]:g}])")
         if self.inertias is None:
             inertia = m * (self.width ** 2 + self.depth ** 2) / 12.0
         else:
@@ -221,6 +231,15 @@ class PlanBuilding:
             if inertia.size != n:
                 raise ValueError(f"inertias must have one value per floor ({n}) "
                                  f"(got {inertia.size})")
+            rho2 = np.max([(cx - centres[:, 0]) ** 2 + (cy - centres[:, 1]) ** 2
+                           for cx in (0.0, self.width) for cy in (0.0, self.depth)], axis=0)
+            over = np.flatnonzero(inertia > m * rho2 * (1.0 + 1e-12))
+            if over.size:
+                k = int(over[0])
+                raise ValueError(f"inertias[{k}] must be in (0, {m[k] * rho2[k]:.6g}] kg·m² "
+                                 f"(mass {m[k]:g} kg, the farthest plan corner "
+                                 f"{math.sqrt(rho2[k]):.6g} m from its centre of mass) (got "
+                                 f"{inertia[k]:g})")
         elements = tuple(self.elements)
         if not elements and self.stiffness is None:
             raise ValueError("elements: give the lateral load-resisting elements (none given), "
@@ -231,6 +250,10 @@ class PlanBuilding:
             if not isinstance(e, LateralElement):
                 raise ValueError(f"elements[{i}] must be a LateralElement (got {e!r})")
             e.storey_stiffnesses(n)
+            for key, value, size in (("x", e.x, self.width), ("y", e.y, self.depth)):
+                if not 0.0 <= value <= size:
+                    raise ValueError(f"elements[{i}].{key} must lie inside the plan, in [0, "
+                                     f"{size:g}] m (got {value:g})")
         if not isinstance(self.damping, DampingModel):
             raise ValueError(f"damping must be a DampingModel such as RayleighDamping or "
                              f"ModalDamping (got {self.damping!r})")

@@ -75,7 +75,8 @@ class MitigationStudy(Section):
     name: str = "mitigation"
     base: str
     out: str | None = None
-    records: list[str] | None = None
+    records: Annotated[list[Annotated[str, Field(min_length=1)]],
+                       Field(min_length=1)] | None = None
     option: Annotated[list[OptionConfig], Field(min_length=1)]
 
 
@@ -99,40 +100,84 @@ def load_mitigation(path: str | os.PathLike[str]) -> tuple[MitigationStudy, Path
     try:
         return MitigationStudy.model_validate(data), p.resolve().parent
     except ValidationError as exc:
-        raise ValueError(format_validation_error(exc, str(p))) from None
+        raise ValueError(format_validation_error(exc, prefix=f"{p}: ",
+                                                 root=MitigationStudy)) from None
 
 
-def _configs(study: MitigationStudy, here: Path) -> list[tuple[str, str, Any]]:
-    """``(option, record, RunConfig)`` of every run, each checked by building it."""
+def _configs(study: MitigationStudy, here: Path, where: str = "study"
+             ) -> list[tuple[str, str, Any]]:
+    """``(option, record, RunConfig)`` of every run, each checked by building it.
+
+    Raises
+    ------
+    ValueError
+        One line naming the study's key (``records[1]``, ``option[2].device[0].c``) or the
+        base model's.
+    """
     from pounding.config import load_config, parse_config
 
+    names = [o.name for o in study.option]
+    for j, name in enumerate(names):
+        if name in names[:j]:
+            raise ValueError(f"{where}: option[{j}].name: two options are called {name!r}; "
+                             "name them apart")
     base_file = (here / study.base).resolve()
     base = load_config(base_file)
     data = base.to_dict(resolve_paths=True)
     records: list[dict[str, Any]] = [data["record"]]
     if study.records:
-        records = []
-        for r in study.records:
-            path = (here / r)
-            records.append({"file": str(path.resolve())} if path.suffix and path.exists()
-                           else {"bundled": r})
         keep = {k: v for k, v in data["record"].items()
                 if k not in ("file", "bundled", "dt", "units")}
-        records = [rec | keep for rec in records]
-    names = [o.name for o in study.option]
-    if len(set(names)) != len(names):
-        raise ValueError(f"option.name: two options are called "
-                         f"{next(n for n in names if names.count(n) > 1)!r}")
+        records = [_record(r, k, here, where) | keep for k, r in enumerate(study.records)]
+    base_devices = len(data.get("device", []))
     runs = []
     for i, opt in enumerate(study.option):
         devices = data.get("device", []) + [d.model_dump(exclude_unset=True)
                                             for d in opt.device]
-        for rec in records:
+        for k, rec in enumerate(records):
             case = dict(data, record=rec, device=devices)
-            cfg = parse_config(case, base_file.parent, where=f"option[{i}] ({opt.name})")
+            try:
+                cfg = parse_config(case, base_file.parent, where=str(base_file))
+            except ValueError as exc:
+                raise ValueError(_case_error(str(exc).removeprefix(f"{base_file}: "), i, k,
+                                             base_devices, bool(study.records), where,
+                                             base_file)) from None
             label = rec.get("bundled") or Path(rec["file"]).stem
             runs.append((opt.name, str(label), cfg))
     return runs
+
+
+def _record(name: str, k: int, here: Path, where: str) -> dict[str, Any]:
+    """``records[k]`` as the ``[record]`` table of a model: a file (relative to the study
+    file) if there is one, else a bundled record."""
+    from pounding.config import EL_CENTRO_ALIASES
+    from pounding.ground_motion import bundled_files
+
+    path = here / Path(name).expanduser()
+    if path.is_file():
+        return {"file": str(path.resolve())}
+    stems = {Path(f).stem for f in bundled_files()}
+    if name.lower() in EL_CENTRO_ALIASES or name in stems or name in bundled_files():
+        return {"bundled": name}
+    what = "a folder" if path.is_dir() else "no such file"
+    raise ValueError(f"{where}: records[{k}]: {name!r} is {what} ({path.resolve()}; relative "
+                     f"paths start at the study file's folder) and no bundled record; bundled "
+                     f"records: {', '.join(['el_centro', *sorted(stems)])}")
+
+
+def _case_error(text: str, option: int, record: int, base_devices: int, own_records: bool,
+                where: str, base_file: Path) -> str:
+    """A run's validation error named by the study's key: its option's device, its record,
+    or (else) the base model's key."""
+    import re
+
+    found = re.match(r"device\[(\d+)\]", text)
+    if found and int(found[1]) >= base_devices:
+        return (f"{where}: option[{option}].device[{int(found[1]) - base_devices}]"
+                + text[found.end():])
+    if own_records and text.startswith("record"):
+        return f"{where}: records[{record}]{text[len('record'):]}"
+    return f"{where}: option[{option}] on the base model {base_file}: {text}"
 
 
 def measure_row(result: "Result") -> dict[str, float]:
@@ -235,7 +280,7 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
     study, here = load_mitigation(path)
     where = str(path)
     out_dir = _out_folder(study, here, out, where)
-    runs = _configs(study, here)
+    runs = _configs(study, here, where=where)
     check_writable(out_dir)
     remove_stale(out_dir.absolute().parent, restore=out_dir.absolute())
     if out_dir.is_dir() and not out_dir.is_symlink():

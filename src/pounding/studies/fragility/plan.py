@@ -153,7 +153,10 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
     ValueError
         One line naming the key: a bad study file, base model or record.
     """
+    import warnings
+
     from pounding.config import load_config
+    from pounding.plausibility import PlausibilityWarning
     from pounding.spectra import fundamental_mode
     from pounding.studies.sweep import parse_sweep
 
@@ -242,7 +245,9 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
             "histories": cfg.run.histories or False}
     if cfg.run.batch_size is not None:
         data["batch_size"] = cfg.run.batch_size
-    plan.sweep = parse_sweep(data, base_dir=model_file.parent, where=where)
+    with warnings.catch_warnings():  # the base model's were issued when it was loaded
+        warnings.simplefilter("ignore", PlausibilityWarning)
+        plan.sweep = parse_sweep(data, base_dir=model_file.parent, where=where)
     plan.sweep.source = source
     plan.rows = rows
     return plan

@@ -13,7 +13,8 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, ValidationError, model_validator
 
-from pounding.config.base import NonNeg, Pos, Section, field_error
+from pounding.config.base import Section, field_error, fmt
+from pounding.config.quantities import Duration, Gap, Intensity, Period, Step
 
 __all__ = ["DEMANDS", "Demand", "IntensitySpec", "LimitStateSpec", "StudyConfig",
            "load_study", "parse_study"]
@@ -30,18 +31,29 @@ class Demand:
     unit: str
     factor: float
     binary: bool = False
+    largest: float = 0.0
+    """The largest limit that means something, in the demand's unit (a limit state beyond
+    it is never reached)."""
 
 
 DEMANDS: dict[str, Demand] = {
     "pounding": Demand("pounding", "pounding (any impact)", "-", 1.0, binary=True),
-    "impacts": Demand("impacts", "number of impacts", "-", 1.0),
-    "impact_force": Demand("impact_force", "peak impact force", "MN", 1e-6),
-    "drift": Demand("drift", "peak storey drift ratio", "%", 100.0),
-    "acceleration": Demand("acceleration", "peak floor acceleration", "g", 1.0 / 9.80665),
-    "ductility": Demand("ductility", "peak storey ductility", "-", 1.0),
+    "impacts": Demand("impacts", "number of impacts", "-", 1.0, largest=1e6),
+    "impact_force": Demand("impact_force", "peak impact force", "MN", 1e-6, largest=1e7),
+    "drift": Demand("drift", "peak storey drift ratio", "%", 100.0, largest=100.0),
+    "acceleration": Demand("acceleration", "peak floor acceleration", "g", 1.0 / 9.80665,
+                           largest=100.0),
+    "ductility": Demand("ductility", "peak storey ductility", "-", 1.0, largest=1000.0),
 }
 """The demands a limit state can be put on. ``limit`` is given in the unit shown: impact
-force in MN, drift ratio in %, floor acceleration in g."""
+force in MN (at most 1e7 MN, the weight of 1e12 kg), drift ratio in % (at most 100: a
+drift of the whole storey height), floor acceleration in g (at most 100), a number of
+impacts (at most a million) or a ductility (at most 1000)."""
+
+MAX_WORKERS = 1024
+"""Most workers of a local cluster (more processes than any one machine runs well)."""
+MAX_BATCH = 1_000_000
+"""Most cases in one batch (a sweep may have no more cases than that)."""
 
 MEASURES = ("pga", "sa", "saavg")
 """Intensity measures: peak ground acceleration, Sa(T1, ζ), average spectral acceleration."""
@@ -52,8 +64,8 @@ class LevelRange(Section):
     equally spaced (``spacing = "linear"``, the default) or in geometric progression
     (``"log"``)."""
 
-    start: Pos
-    stop: Pos
+    start: Intensity
+    stop: Intensity
     n: Annotated[int, Field(ge=2, le=1000)]
     spacing: Literal["linear", "log"] = "linear"
 
@@ -77,11 +89,11 @@ class IntensitySpec(Section):
     ``levels`` [g] each record is scaled to: a list, or ``{ start, stop, n }``."""
 
     measure: Literal["pga", "sa", "saavg"]
-    period: Pos | None = None
-    periods: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = None
+    period: Period | None = None
+    periods: Annotated[list[Period], Field(min_length=2, max_length=2)] | None = None
     n_periods: Annotated[int, Field(ge=2, le=1000)] = 10
     damping: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.05
-    levels: Annotated[list[Pos], Field(min_length=2, max_length=1000)] | LevelRange
+    levels: Annotated[list[Intensity], Field(min_length=2, max_length=1000)] | LevelRange
 
     @model_validator(mode="after")
     def _keys(self) -> IntensitySpec:
@@ -111,7 +123,7 @@ class LimitStateSpec(Section):
 
     demand: Literal["pounding", "impacts", "impact_force", "drift", "acceleration",
                     "ductility"]
-    limit: NonNeg | None = None
+    limit: Annotated[float, Field(ge=0)] | None = None
     name: str | None = None
 
     @model_validator(mode="after")
@@ -125,6 +137,10 @@ class LimitStateSpec(Section):
             raise field_error("limit", f"required for demand \"{self.demand}\": the "
                                        f"{d.label} beyond which the limit state is exceeded "
                                        f"[{d.unit}]")
+        if self.limit is not None and self.limit > d.largest:
+            raise field_error("limit", f"must be in [0, {fmt(d.largest)}] {d.unit} for demand "
+                                       f"\"{self.demand}\" ({d.label}) (got "
+                                       f"{fmt(self.limit)})")
         return self
 
     @property
@@ -151,7 +167,7 @@ class SpectrumScaling(Section):
     study file), ``period`` T1 [s], ``method`` (code, sa, pga, lsq), ``code`` (asce7, ec8)."""
 
     target: str
-    period: Pos
+    period: Period
     method: Literal["code", "sa", "pga", "lsq"] = "code"
     code: Literal["asce7", "ec8"] = "asce7"
 
@@ -166,9 +182,9 @@ class SuiteSpec(Section):
     bundled: bool | None = None
     folder: str | None = None
     files: Annotated[list[str], Field(min_length=1)] | None = None
-    dt: Pos | None = None
+    dt: Step | None = None
     units: str | None = None
-    duration: Pos | None = None
+    duration: Duration | None = None
     scaling: SpectrumScaling | None = None
 
     @model_validator(mode="after")
@@ -190,9 +206,9 @@ class GapSpec(Section):
     (default: the middle level), the gap for the ``target`` probability (default 0.10),
     and gaps ``values`` [m] at which every run is also simulated with contact."""
 
-    at: Pos | None = None
+    at: Intensity | None = None
     target: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.10
-    values: list[NonNeg] = []
+    values: list[Gap] = []
 
 
 class BootstrapSpec(Section):
@@ -200,7 +216,7 @@ class BootstrapSpec(Section):
     two-sided ``confidence`` of the intervals and bands."""
 
     n: Annotated[int, Field(ge=0, le=100_000)] = 1000
-    seed: int = 2015
+    seed: Annotated[int, Field(ge=0)] = 2015
     confidence: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.90
 
 
@@ -208,9 +224,9 @@ class RunSpec(Section):
     """``[run]``: ``workers`` of the local Dask cluster, or ``scheduler`` (an address, or
     ``"synchronous"``), ``batch_size``, and ``histories`` (false, ``"netcdf"``, ``"zarr"``)."""
 
-    workers: Annotated[int, Field(ge=1)] | None = None
+    workers: Annotated[int, Field(ge=1, le=MAX_WORKERS)] | None = None
     scheduler: str | None = None
-    batch_size: Annotated[int, Field(ge=1)] | None = None
+    batch_size: Annotated[int, Field(ge=1, le=MAX_BATCH)] | None = None
     histories: Literal[False, "netcdf", "zarr"] = False
 
 

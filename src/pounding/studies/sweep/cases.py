@@ -72,8 +72,8 @@ def _random_cases(table: dict[str, Any], where: str
     if not isinstance(n, int) or isinstance(n, bool) or n < 1:
         raise ValueError(f"{where}: random.n: the number of samples, an integer >= 1 "
                          f"(got {n!r})")
-    if not isinstance(seed, int) or isinstance(seed, bool):
-        raise ValueError(f"{where}: random.seed: required, an integer (got {seed!r})")
+    if not isinstance(seed, int) or isinstance(seed, bool) or seed < 0:
+        raise ValueError(f"{where}: random.seed: required, an integer >= 0 (got {seed!r})")
     _check_count("random", n, f"n = {n:,}", where)
     if not t:
         raise ValueError(f"{where}: random: give at least one parameter, e.g. "
