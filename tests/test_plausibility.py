@@ -6,6 +6,7 @@ none for the examples and plausible models."""
 
 from __future__ import annotations
 
+import json
 import warnings
 from pathlib import Path
 from typing import Any
@@ -71,4 +72,5 @@ def test_the_command_line_prints_a_warning_line_and_runs(tmp_path: Path,
     err = capsys.readouterr().err.splitlines()
     assert err == [f"warning: {model}: contact.gap: 40 m is wider than 2 m, more than any "
                    "separation of buildings; is it in mm or cm?"]
-    assert (tmp_path / "out" / "summary.json").is_file()
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text(encoding="utf-8"))
+    assert summary["warnings"] == [err[0].removeprefix("warning: ")]

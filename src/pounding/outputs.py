@@ -18,6 +18,7 @@ import io
 import json
 import math
 import os
+from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -41,9 +42,12 @@ IMPACTS_HEADER = ("# units: elevation [m]; start, end [s]; v0 [m/s]; peak_force 
 velocity ratio ``restitution`` and ``energy_dissipated`` mean."""
 
 
-def save_result(result: Result, folder: str | os.PathLike[str]) -> dict[str, Path]:
+def save_result(result: Result, folder: str | os.PathLike[str],
+                warnings: Sequence[str] = ()) -> dict[str, Path]:
     """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``.
 
+    ``warnings`` (one line each: the plausibility warnings of the model file, say) are
+    stored in ``summary.json`` under ``"warnings"`` (an empty list when there are none).
     Returns the paths by key (``timehistories``, ``impacts``, ``summary``).
     """
     folder = Path(folder)
@@ -54,7 +58,8 @@ def save_result(result: Result, folder: str | os.PathLike[str]) -> dict[str, Pat
     write_netcdf(result.history_variables(), buf)
     write_bytes(out["timehistories"], buf.getbuffer())
     write_text(out["impacts"], IMPACTS_HEADER + impacts_csv(result))
-    write_text(out["summary"], json.dumps(json_ready(result.summary()), indent=2))
+    summary = {**result.summary(), "warnings": list(warnings)}
+    write_text(out["summary"], json.dumps(json_ready(summary), indent=2))
     return out
 
 

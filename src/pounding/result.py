@@ -14,6 +14,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from functools import cached_property
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -640,13 +641,15 @@ class Result:
 
         return summarize(self)
 
-    def save(self, folder: str | os.PathLike[str]) -> dict[str, Path]:
+    def save(self, folder: str | os.PathLike[str],
+             warnings: Sequence[str] = ()) -> dict[str, Path]:
         """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``
         (:func:`pounding.outputs.save_result`); each file is written under a temporary name
-        and moved into place when complete."""
+        and moved into place when complete. ``warnings`` (one line each, e.g. the model
+        file's plausibility warnings) are kept in ``summary.json``."""
         from pounding.outputs import save_result
 
-        return save_result(self, folder)
+        return save_result(self, folder, warnings=warnings)
 
 
 class ContactPeak(NamedTuple):

@@ -132,7 +132,7 @@ def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
     with new_output_folder(out, "run", TEMPORARY_HOLDS,
                            check=lambda: _check_target(out, overwrite)) as tmp:
         result = simulate(model, motion, progress=progress, **solver)
-        files = result.save(tmp)
+        files = result.save(tmp, warnings=cfg.plausibility)
         source = str(cfg.source) if cfg.source is not None else "(not read from a file)"
         files["model"] = write_text(
             tmp / OUTPUT_FILES["model"],
