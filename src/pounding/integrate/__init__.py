@@ -31,7 +31,6 @@ from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
     HISTORY_MEMORY_FRACTION,
-    check_contact_periods,
     check_history_size,
     grid_step,
     check_ground_components,
@@ -41,11 +40,17 @@ from pounding.integrate.grid import (
     physical_memory,
 )
 from pounding.integrate.kernel import integrate_chunk
+from pounding.integrate.periods import (
+    check_building_periods,
+    check_contact_periods,
+    check_link_periods,
+)
 from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
 from pounding.integrate.layout import (
     E_DEVICE,
     ENERGY_COLUMNS,
     FAIL_BUDGET,
+    FAIL_NONFINITE,
     I_FAIL_STEP,
     I_FAILED,
     I_NEVENTS,
@@ -88,7 +93,8 @@ from pounding.validation import positive
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
-    "IntegrationError", "KernelModel", "band_storage", "check_contact_periods",
+    "IntegrationError", "KernelModel", "band_storage", "check_building_periods",
+    "check_contact_periods", "check_link_periods",
     "check_ground_components", "check_history_size", "choose_free_stepping",
     "default_step_budget", "floor_below",
     "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
@@ -100,8 +106,10 @@ invalidate_if_stale([sys.modules[name] for name in KERNEL_MODULES])
 
 class IntegrationError(ValueError):
     """A run that cannot be integrated: the adaptive step fell below 10⁻¹⁴ of the grid
-    step, or the run used up its budget of adaptive steps. The message names the time, the
-    contacts closed then, and what to check. (A ``ValueError``: it comes from input the
+    step, the run used up its budget of adaptive steps, or the state stopped being finite
+    numbers (an overflow: no result is returned with NaN or infinity in it). The message
+    names the time, the contacts closed then (or the record's PGA and the fastest DOF), and
+    what to check. (A ``ValueError``: it comes from input the
     solver cannot resolve — masses, stiffnesses or damping far outside a building's range —
     and the command line reports it in one line with exit status 2.)"""
 
@@ -206,16 +214,27 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
 
     Raises
     ------
+    ValueError
+        Input the solver refuses before the run, in one line naming it: among others a
+        building, contact or link that moves millions of times faster than the output step
+        (:mod:`pounding.integrate.periods`).
     IntegrationError
-        The run cannot be integrated (step-size underflow, or the step budget used up); one
-        line says when, at which contacts, and what to check.
+        The run cannot be integrated (step-size underflow, the step budget used up, or the
+        state overflowing to numbers that are not finite); one line says when, at which
+        contacts, and what to check (for an overflow: the record's PGA and the stiffness,
+        mass and damping of the fastest DOF).
     """
     check_ground_components(model, motion)
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
     notes = _model_notes(model)
+    km = kernel_model(model)
     if (step, t_end) not in notes.checked:
         check_history_size(model, t_end, step)
+        if step not in km.periods_checked:  # (the buildings' and links': once for a sweep)
+            check_building_periods(model, step)
+            check_link_periods(model, step)
+            km.periods_checked.add(step)
         check_contact_periods(model, step)
         notes.checked.add((step, t_end))
     rtol = positive("rtol", rtol)
@@ -223,7 +242,6 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     ground = ground_on_grid_memo(motion, step, t_end)  # (nt,) or (nt, G)
     nt = ground.shape[0]
     ag = ground.reshape(nt, -1)  # (nt, G), read-only like ground
-    km = kernel_model(model)
     if km.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g] unchecked)
         raise ValueError(f"motion: {ag.shape[1]} ground components for {km.r.shape[1]}")
     n, nz, bw = km.n, km.nz, km.bw
@@ -237,7 +255,10 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         fs = km.free_steps.get(step)
         if fs is None:
             sys_ = model.system
-            fs = km.free_steps[step] = free_step(sys_.M, sys_.C, km.K, km.r, step)
+            fs = free_step(sys_.M, sys_.C, km.K, km.r, step)
+            if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
+                raise IntegrationError(_nonfinite_text(model, motion, None, step))
+            km.free_steps[step] = fs
     else:
         fs = NO_FREE_STEP
     nc = km.cgap.size
@@ -315,7 +336,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         k1 = min(nt - 1, k0 + chunk)
         integrate_chunk(k0, k1, *args)
         if ws_i[I_FAILED]:
-            raise IntegrationError(_failure_text(model, ws_i, committed, step, rtol))
+            raise IntegrationError(_failure_text(model, motion, ws_i, committed, step, rtol))
         if progress is not None:
             progress(k1 / (nt - 1))
     wall = time.perf_counter() - start
@@ -339,11 +360,13 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   located_peaks=pk)
 
 
-def _failure_text(model: PoundingModel, ws_i: np.ndarray, committed: np.ndarray, step: float,
-                  rtol: float) -> str:
+def _failure_text(model: PoundingModel, motion: GroundMotion | GroundMotionComponents,
+                  ws_i: np.ndarray, committed: np.ndarray, step: float, rtol: float) -> str:
     """One line: why and when the integration stopped, the contacts closed then, and what
     to check."""
     t = int(ws_i[I_FAIL_STEP]) * step
+    if ws_i[I_FAILED] == FAIL_NONFINITE:
+        return _nonfinite_text(model, motion, t, step)
     closed = [c.label for c, st in zip(model.contacts, committed) if st[0] > 0.0]
     where = (f" with contact {', '.join(closed[:4])}{' …' if len(closed) > 4 else ''} closed"
              if closed else "")
@@ -356,3 +379,30 @@ def _failure_text(model: PoundingModel, ws_i: np.ndarray, committed: np.ndarray,
     return (why + ": the model moves millions of times faster than a building does there; "
             "check the masses, storey and contact stiffnesses and the contact damping "
             "(e.g. e far below 0.1), or raise max_rk_steps")
+
+
+def _nonfinite_text(model: PoundingModel, motion: GroundMotion | GroundMotionComponents,
+                    t: float | None, step: float) -> str:
+    """One line for a state (or the exact step's matrices, ``t`` None) that stopped being
+    finite numbers: when, and the inputs most likely to blame — the record's peak, and the
+    building DOF that moves fastest (its stiffness, mass and damping)."""
+    from pounding.integrate.periods import fastest_dofs
+
+    when = (f"the state stopped being finite numbers (an overflow) at t = {t:.4f} s"
+            if t is not None else
+            f"the exact step over {step:g} s overflowed (its matrix exponential is not "
+            "finite)")
+    record = f"the record's PGA is {motion.pga:.3g} m/s² ({motion.pga_g:.3g} g)"
+    suspects = []
+    if model.n_dof:
+        omega, rate = fastest_dofs(model)
+        i = int(np.argmax(np.maximum(omega, rate)))
+        sys_ = model.system
+        b = int(np.searchsorted(sys_.offsets, i, side="right")) - 1
+        suspects.append(f"the fastest DOF, B{b + 1}{model.dof_names()[i]}, has a stiffness "
+                        f"of {sys_.K[i, i]:.3g}, a mass of {sys_.M[i, i]:.3g} and a damping "
+                        f"of {sys_.C[i, i]:.3g} (SI units)")
+    # a record far stronger than any earthquake (PGA above 10 g) first
+    suspects.insert(0 if not motion.pga_g <= 10.0 else len(suspects), record)
+    return (f"solver: {when}: check the stiffness, mass, damping and record values ("
+            + "; ".join(suspects) + ")")

@@ -38,11 +38,14 @@ from __future__ import annotations
 
 from numba import njit
 
-from pounding.integrate.adaptive import adaptive_run, any_closed
+from pounding.integrate.adaptive import LF_GRAZED, adaptive_run, any_closed
 from pounding.integrate.exact_steps import free_run
 from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     EVENT_TOL,
+    FAIL_NONFINITE,
+    I_FAIL_STEP,
+    I_FAILED,
     I_MODE,
     IMP_COLUMNS,
     PK_COLUMNS,
@@ -154,9 +157,17 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
             k = free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
                          m_inv, r, cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, gd, gr,
                          gd1, gr1, wc, ws_f, u_out, v_out, acc_out, pen_out, e_out, pk)
+            if k < 0:
+                ws_i[I_FAILED] = FAIL_NONFINITE
+                ws_i[I_FAIL_STEP] = -k - 1
+                return
             if k >= k1:
                 break
             ws_i[I_MODE] = 1
+            # a gap found not to touch at an earlier peak has receded since (the exact
+            # steps do not clear its flag): search every gap afresh
+            for c in range(cgap.shape[0]):
+                last_f[c, LF_GRAZED] = 0.0
             set_ground(gnd, G_NOW, ag, k)
             deriv_call(x, x, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                        ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,

@@ -49,13 +49,14 @@ and the links' cumulative work [J]."""
  I_STEP_BUDGET, I_ONSET_C) = range(10)
 WS_I_SIZE = 10
 """Counters: mode (0 exact, 1 adaptive), impacts, table overflow, RK steps, rejected steps,
-events, failure kind (:data:`FAIL_UNDERFLOW`, :data:`FAIL_BUDGET`), the grid step it happened
-in, the largest number of RK steps allowed in all, and the contact whose onset ended the
-last accepted step (−1: none)."""
+events, failure kind (:data:`FAIL_UNDERFLOW`, :data:`FAIL_BUDGET`, :data:`FAIL_NONFINITE`),
+the grid step it happened in, the largest number of RK steps allowed in all, and the contact
+whose onset ended the last accepted step (−1: none)."""
 
-FAIL_UNDERFLOW, FAIL_BUDGET = 1, 2
-"""Why an integration stopped: the adaptive step fell below 10⁻¹⁴ of the grid step, or the
-run used up its budget of adaptive steps."""
+FAIL_UNDERFLOW, FAIL_BUDGET, FAIL_NONFINITE = 1, 2, 3
+"""Why an integration stopped: the adaptive step fell below 10⁻¹⁴ of the grid step, the
+run used up its budget of adaptive steps, or the state (or an energy, which sums every
+entry of it) stopped being a finite number."""
 
 # ---------------------------------------------------------------- located peaks, per floor
 PK_U, PK_U_T, PK_D, PK_D_T, PK_A, PK_A_T = range(6)

@@ -214,6 +214,17 @@ class PlanBuilding:
             if centres.shape != (n, 2) or not np.all(np.isfinite(centres)):
                 raise ValueError(f"mass_centres must be finite (x, y) pairs [m], one a floor "
                                  f"({n}) (got shape {centres.shape})")
+            # a rigid floor's centre of mass lies on the floor (its plan is convex)
+            slack = 1e-9 * max(self.width, self.depth)
+            off = ((centres[:, 0] < -slack) | (centres[:, 0] > self.width + slack)
+                   | (centres[:, 1] < -slack) | (centres[:, 1] > self.depth + slack))
+            if off.any():
+                j = int(np.flatnonzero(off)[0])
+                raise ValueError(f"mass_centres: floor {j + 1}'s centre of mass "
+                                 f"({centres[j, 0]:g}, {centres[j, 1]:g}) m lies outside its "
+                                 f"plan [0, {self.width:g}] × [0, {self.depth:g}] m; a floor's "
+                                 "centre of mass is on the floor (plan coordinates, from the "
+                                 "plan's corner)")
         if self.inertias is None:
             inertia = m * (self.width ** 2 + self.depth ** 2) / 12.0
         else:
