@@ -51,6 +51,7 @@ from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     FAIL_BUDGET,
     FAIL_NONFINITE,
+    I_CALL_STEPS,
     I_FAIL_STEP,
     I_FAILED,
     I_NEVENTS,
@@ -59,6 +60,7 @@ from pounding.integrate.layout import (
     I_NSTEPS,
     I_ONSET_C,
     I_OVERFLOW,
+    I_REACHED,
     I_STEP_BUDGET,
     IMP_COLUMNS,
     W_ERR_OLD,
@@ -79,7 +81,7 @@ from pounding.integrate.kernel_model import (
     kernel_scratch,
     peak_margin,
 )
-from pounding.integrate.propagator import free_step
+from pounding.integrate.propagator import FreeStep, free_step
 from pounding.integrate.start import (
     final_peaks,
     initial_peaks,
@@ -93,10 +95,10 @@ from pounding.validation import positive
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
-    "IntegrationError", "KernelModel", "band_storage", "check_building_periods",
+    "CALL_WORK_NS", "IntegrationError", "KernelModel", "band_storage", "check_building_periods",
     "check_contact_periods", "check_link_periods",
     "check_ground_components", "check_history_size", "choose_free_stepping",
-    "default_step_budget", "floor_below",
+    "call_sizes", "default_step_budget", "floor_below",
     "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
     "kernel_model", "kernel_scratch", "peak_margin", "physical_memory", "simulate",
 ]
@@ -112,6 +114,37 @@ class IntegrationError(ValueError):
     what to check. (A ``ValueError``: it comes from input the
     solver cannot resolve — masses, stiffnesses or damping far outside a building's range —
     and the command line reports it in one line with exit status 2.)"""
+
+
+CALL_WORK_NS: float = 1e8
+"""Work of one call of the compiled kernel, as :func:`call_sizes` estimates it [ns]. Python
+handles a signal (Ctrl-C, SIGTERM turned into an interrupt by the command line) only
+between calls, so this bounds how long one is held: 0.1 s estimated, under 0.5 s measured
+on a loaded 2-core machine. A call costs 3–6 µs of its own, so the run is cut into calls
+at no measurable cost (a run shorter than this is one call)."""
+
+
+def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
+    """How much of a run one call of the kernel takes: ``(grid steps, RK steps)``, each
+    estimated to cost :data:`CALL_WORK_NS`. A call returns at the first grid point after
+    either; both are fixed by the model alone, so where a run is cut does not depend on
+    the machine's speed (nor does the answer: the kernel's state carries over).
+
+    Estimated costs (2026-11-28, 2 cores under load; measured 0.5–2× these): an exact grid
+    step ``0.4 Σ_b (2 n_b)² + 300 N + 100`` ns for blocks of ``n_b`` floors, N floors in
+    all (the propagator's sweep, the outputs and peak tests); an RK step
+    ``2000 + 140 N (2 bw + 1) + 100 n_c + 200 n_s`` ns (six right-hand sides of the banded
+    K and C of half-bandwidth bw, n_c contacts, n_s yielding storeys and links).
+    """
+    n, bw, nc, ns = km.n, km.bw, km.cgap.size, km.s_lo.size
+    rk_ns = 2000.0 + 140.0 * n * (2 * bw + 1) + 100.0 * nc + 200.0 * ns
+    rk_per_call = max(1, int(CALL_WORK_NS / rk_ns))
+    if not exact:
+        # every grid step takes an RK step at least: the RK steps bound the call
+        return rk_per_call, rk_per_call
+    blocks = np.diff(fs.blk)
+    exact_ns = 0.4 * float(np.sum((2.0 * blocks) ** 2)) + 300.0 * n + 100.0
+    return max(1, int(CALL_WORK_NS / exact_ns)), rk_per_call
 
 
 def default_step_budget(n_grid: int) -> int:
@@ -206,7 +239,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step); a run that needs more stops with an :class:`IntegrationError`.
     progress : callable, optional
-        Called with the fraction done (0 … 1) after each chunk of steps.
+        Called with the fraction done (0 … 1) after each chunk of steps. With or without it
+        the run is cut into calls of the compiled kernel of about 0.1 s each
+        (:func:`call_sizes`), so Ctrl-C takes effect within about a second.
 
     Returns
     -------
@@ -317,7 +352,11 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     write_initial_row(model, km, x, sstate, u_out, v_out, acc_out, pen_out, vs_out, e_out,
                        at_rest)
 
-    chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
+    # the run in calls of bounded work, so that Ctrl-C and SIGTERM (which Python handles
+    # only between calls) take effect within a fraction of a second, whatever the model
+    grid_per_call, rk_per_call = call_sizes(km, exact, fs)
+    if progress is not None:
+        grid_per_call = min(grid_per_call, max(1000, (nt - 1) // 50))
     pk = initial_peaks(u_out[0], acc_out[0], km.below)
     args = (step, ag, exact, fs.blk, fs.ops, fs.gamma0, fs.gamma1, fs.aa, bw, km.k_band,
             km.c_band, km.m_diag, km.mr, km.r, km.cdof, km.cw, km.cgap, km.ccode, km.cparams,
@@ -329,16 +368,19 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     # call loads it from numba's cache (~0.3 s), which is not integrating and is kept out of
     # stats.wall_time.
     if not _kernel_loaded:
+        ws_i[I_CALL_STEPS] = 0
         integrate_chunk(0, 0, *args)
         _kernel_loaded.append(True)
     start = time.perf_counter()
-    for k0 in range(0, nt - 1, chunk):
-        k1 = min(nt - 1, k0 + chunk)
-        integrate_chunk(k0, k1, *args)
+    k0 = 0
+    while k0 < nt - 1:
+        ws_i[I_CALL_STEPS] = ws_i[I_NSTEPS] + rk_per_call
+        integrate_chunk(k0, min(nt - 1, k0 + grid_per_call), *args)
         if ws_i[I_FAILED]:
             raise IntegrationError(_failure_text(model, motion, ws_i, committed, step, rtol))
+        k0 = int(ws_i[I_REACHED])
         if progress is not None:
-            progress(k1 / (nt - 1))
+            progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
     final_peaks(pk, u_out[-1], acc_out[-1], km.below, (nt - 1) * step)
     n_imp = int(ws_i[I_NIMP])

@@ -45,6 +45,7 @@ from pounding.integrate.layout import (
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
     I_FAIL_STEP,
+    I_CALL_STEPS,
     I_FAILED,
     I_NEVENTS,
     I_NREJECT,
@@ -103,7 +104,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
     ``arel0``, ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
-    says why). One call for a whole contact episode: a call passes some sixty arrays.
+    says why); also returns at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps
+    in all. One call for a whole contact episode: a call passes some sixty arrays.
     """
     n = r.shape[0]
     m = x.shape[0]
@@ -353,6 +355,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
         k += 1
         if exact_free and not any_closed(committed):
             break  # back to exact stepping once every contact is open
+        if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
+            break  # this call's share of RK steps is done: back to the caller
     for c in range(cgap.shape[0]):
         dsum, gr[c] = gap_row(c, x, r.shape[0], cdof, cw)
         gd[c] = dsum - cgap[c]

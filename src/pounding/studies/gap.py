@@ -442,9 +442,11 @@ def critical_gaps(model: PoundingModel, motions: GroundMotion | Sequence[GroundM
     durs = np.zeros(nr)
     step = 0.0
     for i, motion in enumerate(ms):
-        # exact stepping for linear buildings; yielding ones are RK-stepped (not linear)
+        # exact stepping for linear buildings up to EXACT_FREE_MAX_DOF floors (beyond, its
+        # propagator alone takes minutes to build, in calls no signal can stop); yielding
+        # ones are RK-stepped (not linear)
         runs = [simulate(_alone(b), motion, dt=dt, duration=duration,
-                         free_stepping="rk" if b.is_inelastic else "exact")
+                         free_stepping="rk" if b.is_inelastic else "auto")
                 for b in model.buildings]
         step = runs[0].dt
         durs[i] = float(runs[0].time[-1])
