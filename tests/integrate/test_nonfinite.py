@@ -192,3 +192,23 @@ def test_a_sweep_records_the_line_in_the_error_column(bad_models, capsys):
     numbers = table.iloc[0].drop(["status", "error"])
     numeric = pd.to_numeric(numbers, errors="coerce").dropna()
     assert len(numeric) > 5 and np.all(np.isfinite(numeric.to_numpy(dtype=float)))
+
+
+def test_an_exact_step_that_overflows_is_refused_before_the_run(monkeypatch):
+    # the matrix exponential of a building stiff enough to overflow it, yet not refused by
+    # its period: stood in for by a propagator with an infinity in it
+    import pounding.integrate as integrate
+    from pounding.integrate.propagator import free_step
+
+    def overflowing(*args):
+        fs = free_step(*args)
+        ops = fs.ops.copy()
+        ops[0, 0] = np.inf
+        return fs._replace(ops=ops)
+
+    monkeypatch.setattr(integrate, "free_step", overflowing)
+    model = _pair(ShearBuilding.uniform(3, 2.1e5, 2e8))  # (a model no other test has run)
+    with pytest.raises(IntegrationError, match=r"^solver: the exact step over 0\.001 s "
+                                               r"overflowed \(its matrix exponential is not "
+                                               r"finite\): check the stiffness"):
+        simulate(model, SHORT)
