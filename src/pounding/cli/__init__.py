@@ -57,12 +57,18 @@ EXIT_FAILED = 1
 """Exit status of a command its environment stopped (a sweep whose Dask scheduler was lost)."""
 
 
+_LINES_SAID: list[int] = [0]
+"""How many error lines this process printed (so :func:`main` knows whether a command that
+ended interrupted said what was kept)."""
+
+
 def error_line(message: str) -> None:
     """Print an error on standard error, every line starting ``error: `` (a model file with
     three problems gives three such lines)."""
     for line in str(message).splitlines() or [""]:
         text = " ".join(line.split())
         if text:
+            _LINES_SAID[0] += 1
             err_console.print(f"[bold red]error:[/] {escape(text)}", highlight=False,
                               soft_wrap=True)
 
@@ -123,9 +129,15 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
+    said = _LINES_SAID[0]
     try:
-        rv = app(args=argv, prog_name="pounding", standalone_mode=False)
+        # SIGTERM as Ctrl-C in every command (what was kept is said, nothing half-written)
+        with commands_run._sigterm_as_interrupt():
+            rv = app(args=argv, prog_name="pounding", standalone_mode=False)
         code = rv if isinstance(rv, int) else 0
+        if code == EXIT_INTERRUPTED and _LINES_SAID[0] == said:
+            # typer turns an interrupt the command did not handle into 130, silently
+            raise KeyboardInterrupt
     except SystemExit as exc:  # a command that ended itself with a status
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     except typer.Exit as exc:

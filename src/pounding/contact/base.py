@@ -132,7 +132,7 @@ class ContactLaw(ABC):
     def secant_stiffness(self, delta: float) -> float:
         """Secant stiffness ``F/δ`` of the law's elastic backbone (zero rate) at penetration
         ``delta`` [m], in N/m: the scale of the contact's natural period
-        ``2π sqrt(m_eff / k)`` (:func:`pounding.integrate.grid.check_contact_periods`)."""
+        ``2π sqrt(m_eff / k)`` (:func:`pounding.integrate.periods.check_contact_periods`)."""
 
     @abstractmethod
     def params(self) -> NDArray[np.float64]:

@@ -31,7 +31,6 @@ from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
     HISTORY_MEMORY_FRACTION,
-    check_contact_periods,
     check_history_size,
     grid_step,
     check_ground_components,
@@ -41,11 +40,18 @@ from pounding.integrate.grid import (
     physical_memory,
 )
 from pounding.integrate.kernel import integrate_chunk
+from pounding.integrate.periods import (
+    check_building_periods,
+    check_contact_periods,
+    check_link_periods,
+)
 from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
 from pounding.integrate.layout import (
     E_DEVICE,
     ENERGY_COLUMNS,
     FAIL_BUDGET,
+    FAIL_NONFINITE,
+    I_CALL_STEPS,
     I_FAIL_STEP,
     I_FAILED,
     I_NEVENTS,
@@ -54,6 +60,7 @@ from pounding.integrate.layout import (
     I_NSTEPS,
     I_ONSET_C,
     I_OVERFLOW,
+    I_REACHED,
     I_STEP_BUDGET,
     IMP_COLUMNS,
     W_ERR_OLD,
@@ -74,7 +81,7 @@ from pounding.integrate.kernel_model import (
     kernel_scratch,
     peak_margin,
 )
-from pounding.integrate.propagator import free_step
+from pounding.integrate.propagator import FreeStep, free_step
 from pounding.integrate.start import (
     final_peaks,
     initial_peaks,
@@ -88,9 +95,10 @@ from pounding.validation import positive
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
-    "IntegrationError", "KernelModel", "band_storage", "check_contact_periods",
+    "CALL_WORK_NS", "IntegrationError", "KernelModel", "band_storage", "check_building_periods",
+    "check_contact_periods", "check_link_periods",
     "check_ground_components", "check_history_size", "choose_free_stepping",
-    "default_step_budget", "floor_below",
+    "call_sizes", "default_step_budget", "floor_below",
     "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
     "kernel_model", "kernel_scratch", "peak_margin", "physical_memory", "simulate",
 ]
@@ -100,10 +108,45 @@ invalidate_if_stale([sys.modules[name] for name in KERNEL_MODULES])
 
 class IntegrationError(ValueError):
     """A run that cannot be integrated: the adaptive step fell below 10⁻¹⁴ of the grid
-    step, or the run used up its budget of adaptive steps. The message names the time, the
-    contacts closed then, and what to check. (A ``ValueError``: it comes from input the
+    step, the run used up its budget of adaptive steps, or the state stopped being finite
+    numbers (an overflow: no result is returned with NaN or infinity in it). The message
+    names the time, the contacts closed then (or the record's PGA and the fastest DOF), and
+    what to check. (A ``ValueError``: it comes from input the
     solver cannot resolve — masses, stiffnesses or damping far outside a building's range —
     and the command line reports it in one line with exit status 2.)"""
+
+
+CALL_WORK_NS: float = 1e8
+"""Work of one call of the compiled kernel, as :func:`call_sizes` estimates it [ns]. Python
+handles a signal (Ctrl-C, SIGTERM turned into an interrupt by the command line) only
+between calls, so this bounds how long one is held: 0.1 s estimated; measured 80–110 ms a
+call (median) and 0.13–0.18 s at most for 1000 storeys beside an SDOF (RK), 300 + 100
+storeys (exact) and a yielding SDOF at h_max = 10 µs, on a loaded 2-core machine
+(2026-11-27). A call costs 3–6 µs of its own, so the run is cut into calls at no measurable
+cost (a run shorter than this is one call)."""
+
+
+def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
+    """How much of a run one call of the kernel takes: ``(grid steps, RK steps)``, each
+    estimated to cost :data:`CALL_WORK_NS`. A call returns at the first grid point after
+    either; both are fixed by the model alone, so where a run is cut does not depend on
+    the machine's speed (nor does the answer: the kernel's state carries over).
+
+    Estimated costs (2026-11-27, 2 cores under load; measured 0.5–2× these): an exact grid
+    step ``0.4 Σ_b (2 n_b)² + 300 N + 100`` ns for blocks of ``n_b`` floors, N floors in
+    all (the propagator's sweep, the outputs and peak tests); an RK step
+    ``2000 + 140 N (2 bw + 1) + 100 n_c + 200 n_s`` ns (six right-hand sides of the banded
+    K and C of half-bandwidth bw, n_c contacts, n_s yielding storeys and links).
+    """
+    n, bw, nc, ns = km.n, km.bw, km.cgap.size, km.s_lo.size
+    rk_ns = 2000.0 + 140.0 * n * (2 * bw + 1) + 100.0 * nc + 200.0 * ns
+    rk_per_call = max(1, int(CALL_WORK_NS / rk_ns))
+    if not exact:
+        # every grid step takes an RK step at least: the RK steps bound the call
+        return rk_per_call, rk_per_call
+    blocks = np.diff(fs.blk)
+    exact_ns = 0.4 * float(np.sum((2.0 * blocks) ** 2)) + 300.0 * n + 100.0
+    return max(1, int(CALL_WORK_NS / exact_ns)), rk_per_call
 
 
 def default_step_budget(n_grid: int) -> int:
@@ -198,7 +241,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step); a run that needs more stops with an :class:`IntegrationError`.
     progress : callable, optional
-        Called with the fraction done (0 … 1) after each chunk of steps.
+        Called with the fraction done (0 … 1) after each chunk of steps. With or without it
+        the run is cut into calls of the compiled kernel of about 0.1 s each
+        (:func:`call_sizes`), so Ctrl-C takes effect within about a second.
 
     Returns
     -------
@@ -206,16 +251,27 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
 
     Raises
     ------
+    ValueError
+        Input the solver refuses before the run, in one line naming it: among others a
+        building, contact or link that moves millions of times faster than the output step
+        (:mod:`pounding.integrate.periods`).
     IntegrationError
-        The run cannot be integrated (step-size underflow, or the step budget used up); one
-        line says when, at which contacts, and what to check.
+        The run cannot be integrated (step-size underflow, the step budget used up, or the
+        state overflowing to numbers that are not finite); one line says when, at which
+        contacts, and what to check (for an overflow: the record's PGA and the stiffness,
+        mass and damping of the fastest DOF).
     """
     check_ground_components(model, motion)
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
     notes = _model_notes(model)
+    km = kernel_model(model)
     if (step, t_end) not in notes.checked:
         check_history_size(model, t_end, step)
+        if step not in km.periods_checked:  # (the buildings' and links': once for a sweep)
+            check_building_periods(model, step)
+            check_link_periods(model, step)
+            km.periods_checked.add(step)
         check_contact_periods(model, step)
         notes.checked.add((step, t_end))
     rtol = positive("rtol", rtol)
@@ -223,7 +279,6 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     ground = ground_on_grid_memo(motion, step, t_end)  # (nt,) or (nt, G)
     nt = ground.shape[0]
     ag = ground.reshape(nt, -1)  # (nt, G), read-only like ground
-    km = kernel_model(model)
     if km.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g] unchecked)
         raise ValueError(f"motion: {ag.shape[1]} ground components for {km.r.shape[1]}")
     n, nz, bw = km.n, km.nz, km.bw
@@ -237,7 +292,10 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         fs = km.free_steps.get(step)
         if fs is None:
             sys_ = model.system
-            fs = km.free_steps[step] = free_step(sys_.M, sys_.C, km.K, km.r, step)
+            fs = free_step(sys_.M, sys_.C, km.K, km.r, step)
+            if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
+                raise IntegrationError(_nonfinite_text(model, motion, None, step))
+            km.free_steps[step] = fs
     else:
         fs = NO_FREE_STEP
     nc = km.cgap.size
@@ -296,7 +354,11 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     write_initial_row(model, km, x, sstate, u_out, v_out, acc_out, pen_out, vs_out, e_out,
                        at_rest)
 
-    chunk = max(1000, (nt - 1) // 50) if progress is not None else nt
+    # the run in calls of bounded work, so that Ctrl-C and SIGTERM (which Python handles
+    # only between calls) take effect within a fraction of a second, whatever the model
+    grid_per_call, rk_per_call = call_sizes(km, exact, fs)
+    if progress is not None:
+        grid_per_call = min(grid_per_call, max(1000, (nt - 1) // 50))
     pk = initial_peaks(u_out[0], acc_out[0], km.below)
     args = (step, ag, exact, fs.blk, fs.ops, fs.gamma0, fs.gamma1, fs.aa, bw, km.k_band,
             km.c_band, km.m_diag, km.mr, km.r, km.cdof, km.cw, km.cgap, km.ccode, km.cparams,
@@ -308,16 +370,19 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     # call loads it from numba's cache (~0.3 s), which is not integrating and is kept out of
     # stats.wall_time.
     if not _kernel_loaded:
+        ws_i[I_CALL_STEPS] = 0
         integrate_chunk(0, 0, *args)
         _kernel_loaded.append(True)
     start = time.perf_counter()
-    for k0 in range(0, nt - 1, chunk):
-        k1 = min(nt - 1, k0 + chunk)
-        integrate_chunk(k0, k1, *args)
+    k0 = 0
+    while k0 < nt - 1:
+        ws_i[I_CALL_STEPS] = ws_i[I_NSTEPS] + rk_per_call
+        integrate_chunk(k0, min(nt - 1, k0 + grid_per_call), *args)
         if ws_i[I_FAILED]:
-            raise IntegrationError(_failure_text(model, ws_i, committed, step, rtol))
+            raise IntegrationError(_failure_text(model, motion, ws_i, committed, step, rtol))
+        k0 = int(ws_i[I_REACHED])
         if progress is not None:
-            progress(k1 / (nt - 1))
+            progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
     final_peaks(pk, u_out[-1], acc_out[-1], km.below, (nt - 1) * step)
     n_imp = int(ws_i[I_NIMP])
@@ -339,11 +404,13 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   located_peaks=pk)
 
 
-def _failure_text(model: PoundingModel, ws_i: np.ndarray, committed: np.ndarray, step: float,
-                  rtol: float) -> str:
+def _failure_text(model: PoundingModel, motion: GroundMotion | GroundMotionComponents,
+                  ws_i: np.ndarray, committed: np.ndarray, step: float, rtol: float) -> str:
     """One line: why and when the integration stopped, the contacts closed then, and what
     to check."""
     t = int(ws_i[I_FAIL_STEP]) * step
+    if ws_i[I_FAILED] == FAIL_NONFINITE:
+        return _nonfinite_text(model, motion, t, step)
     closed = [c.label for c, st in zip(model.contacts, committed) if st[0] > 0.0]
     where = (f" with contact {', '.join(closed[:4])}{' …' if len(closed) > 4 else ''} closed"
              if closed else "")
@@ -356,3 +423,30 @@ def _failure_text(model: PoundingModel, ws_i: np.ndarray, committed: np.ndarray,
     return (why + ": the model moves millions of times faster than a building does there; "
             "check the masses, storey and contact stiffnesses and the contact damping "
             "(e.g. e far below 0.1), or raise max_rk_steps")
+
+
+def _nonfinite_text(model: PoundingModel, motion: GroundMotion | GroundMotionComponents,
+                    t: float | None, step: float) -> str:
+    """One line for a state (or the exact step's matrices, ``t`` None) that stopped being
+    finite numbers: when, and the inputs most likely to blame — the record's peak, and the
+    building DOF that moves fastest (its stiffness, mass and damping)."""
+    from pounding.integrate.periods import fastest_dofs
+
+    when = (f"the state stopped being finite numbers (an overflow) at t = {t:.4f} s"
+            if t is not None else
+            f"the exact step over {step:g} s overflowed (its matrix exponential is not "
+            "finite)")
+    record = f"the record's PGA is {motion.pga:.3g} m/s² ({motion.pga_g:.3g} g)"
+    suspects = []
+    if model.n_dof:
+        omega, rate = fastest_dofs(model)
+        i = int(np.argmax(np.maximum(omega, rate)))
+        sys_ = model.system
+        b = int(np.searchsorted(sys_.offsets, i, side="right")) - 1
+        suspects.append(f"the fastest DOF, B{b + 1}{model.dof_names()[i]}, has a stiffness "
+                        f"of {sys_.K[i, i]:.3g}, a mass of {sys_.M[i, i]:.3g} and a damping "
+                        f"of {sys_.C[i, i]:.3g} (SI units)")
+    # a record far stronger than any earthquake (PGA above 10 g) first
+    suspects.insert(0 if not motion.pga_g <= 10.0 else len(suspects), record)
+    return (f"solver: {when}: check the stiffness, mass, damping and record values ("
+            + "; ".join(suspects) + ")")

@@ -42,8 +42,10 @@ from pounding.integrate.layout import (
     EV_ONSET,
     EV_SEPARATION,
     FAIL_BUDGET,
+    FAIL_NONFINITE,
     FAIL_UNDERFLOW,
     I_FAIL_STEP,
+    I_CALL_STEPS,
     I_FAILED,
     I_NEVENTS,
     I_NREJECT,
@@ -102,7 +104,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
     ``arel0``, ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
-    says why). One call for a whole contact episode: a call passes some sixty arrays.
+    says why); also returns at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps
+    in all. One call for a whole contact episode: a call passes some sixty arrays.
     """
     n = r.shape[0]
     m = x.shape[0]
@@ -145,7 +148,9 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 h *= max(0.1, fac)
                 ws_f[W_H] = h
                 if h < 1e-14 * dt:
-                    ws_i[I_FAILED] = FAIL_UNDERFLOW
+                    # (a step that is not a finite number however short: the state or the
+                    # forces overflow)
+                    ws_i[I_FAILED] = FAIL_UNDERFLOW if np.isfinite(err) else FAIL_NONFINITE
                     ws_i[I_FAIL_STEP] = k
                     return -1
                 continue
@@ -164,6 +169,7 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             ev_c = -1
             ev_kind = 0
             h_before = h_acc
+            false_events = 0
             while ce >= 0:
                 if ws_i[I_NSTEPS] > ws_i[I_STEP_BUDGET]:
                     ws_i[I_FAILED] = FAIL_BUDGET
@@ -193,7 +199,15 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                         g_hi = g_te
                         found_hi = True
                 if not found_hi:
-                    break  # the interpolant's touch was not real
+                    # the interpolant's crossing was not real: any other event in the step
+                    # (once; after a located event the search already skips that one)
+                    if ev_c >= 0 or false_events > 0:
+                        break
+                    false_events += 1
+                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, ccode,
+                                              cparams, committed, s_lo, s_hi, s_code, s_par,
+                                              ce, kind, graze_tol, last_f[:, LF_GRAZED])
+                    continue
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
                 g_tol = event_tolerance(kind, ce, n, cdof, cparams, s_hi, atol)
                 h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd,
@@ -329,9 +343,20 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
         grid_outputs(k + 1, ag, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap,
                      ccode, cparams, committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f,
                      u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, lin)
+        # every entry of the state, and every work integrated, is in one of the energies:
+        # one test a grid step that none stopped being a finite number
+        e_sum = 0.0
+        for col in range(e_out.shape[1]):
+            e_sum += e_out[k + 1, col]
+        if not abs(e_sum) < np.inf:
+            ws_i[I_FAILED] = FAIL_NONFINITE
+            ws_i[I_FAIL_STEP] = k
+            return -1
         k += 1
         if exact_free and not any_closed(committed):
             break  # back to exact stepping once every contact is open
+        if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
+            break  # this call's share of RK steps is done: back to the caller
     for c in range(cgap.shape[0]):
         dsum, gr[c] = gap_row(c, x, r.shape[0], cdof, cw)
         gd[c] = dsum - cgap[c]

@@ -246,8 +246,14 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
         if committed[c, V0] == 0.0:
             if max(d0, d1) + bound + 0.125 * h * h * (abs(acc0) + abs(acc1)) <= -graze_tol:
                 continue
+            # A gap open at both ends whose rate turns from closing to opening peaks inside
+            # the step: any touch there is a graze, decided at the peak located on real
+            # steps. (The cubic's root is no estimate of it: the real gap may be closed for
+            # far less than the step, and a root estimate outside that window found "no
+            # touch" where there was one.)
+            peak_inside = d0 <= 0.0 and d1 <= 0.0 and r0 > 0.0 and r1 <= 0.0
             if not (c == skip_c and skip_kind == EV_ONSET):
-                t = hermite_root(d0, r0, d1, r1, h, True)
+                t = -1.0 if peak_inside else hermite_root(d0, r0, d1, r1, h, True)
                 if t > 0.0 and t < best_t:
                     best_t, best_c, best_k = t, c, EV_ONSET
                 elif (t <= 0.0 and grazed[c] == 0.0 and r0 > 0.0 and r1 <= 0.0

@@ -19,6 +19,7 @@ real steps. So whether a grazing approach is an impact does not depend on the ou
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from pounding.integrate.events import touch_possible
@@ -102,7 +103,10 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
              u_out, v_out, acc_out, pen_out, e_out, pk):
     """Exact grid steps from grid point ``k`` while every gap stays open, writing the
     outputs and peaks of each; returns the grid point whose step could close a gap (that
-    step not taken: the caller re-takes it with RK) or ``k1``.
+    step not taken: the caller re-takes it with RK) or ``k1``, or ``−(k + 1)`` if the step
+    from grid point k left the state or the input energy not finite (a stiffness, mass or
+    record value far outside any building's: checked once a step, on the viscous work,
+    which sums every entry of the state and the input).
 
     A small function of its own, so that its loop compiles tight. ``gd``, ``gr``: every
     contact's δ and δ̇ at grid point k (updated as the steps go); ``graze_tol`` [m]: how
@@ -285,6 +289,12 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
         # and strain energy, exactly
         e_d += e_step - ((ek + es) - e_prev)
         e_prev = ek + es
+        if not abs(e_d) < np.inf:
+            # the state (every entry of it is in ek + es) or the input stopped being a
+            # finite number: stop here (the caller reports it)
+            ws_f[W_E_INPUT] = e_in
+            ws_f[W_E_DAMP] = e_d
+            return -(k + 1)
         for c in range(nc):
             gd[c] = gd1[c]
             gr[c] = gr1[c]

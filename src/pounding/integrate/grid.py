@@ -58,43 +58,6 @@ def check_history_size(model: PoundingModel, t_end: float, step: float) -> None:
             "or a shorter duration")
 
 
-CONTACT_PERIOD_FLOOR: float = 1e-6
-"""A contact whose natural period is below this fraction of the output step is refused
-before the run: the adaptive steps through its impacts would fall to the solver's floor
-(10⁻¹⁴ of the step) or use up the step budget. Real building contacts are 10⁻⁴–10⁻¹ s long
-against 10⁻³ s steps; a period a million times shorter than the step means masses or a
-stiffness far outside any building (a floor mass of 10⁻³⁰⁰ kg, say)."""
-
-REFERENCE_PENETRATION: float = 1e-3
-"""Penetration [m] at which a contact's secant stiffness sets its natural period."""
-
-
-def check_contact_periods(model: PoundingModel, step: float) -> None:
-    """Refuse, before the run, a contact that would ring far faster than the solver can
-    follow (:data:`CONTACT_PERIOD_FLOOR`): one line naming the contact, the apparent
-    masses of its two points and the law.
-
-    The period is ``2π sqrt(m_eff / k)`` with ``m_eff = m1 m2 / (m1 + m2)`` of the two
-    points' apparent masses and ``k`` the law's secant stiffness at
-    :data:`REFERENCE_PENETRATION` (the natural period of the linearised two-mass impact).
-    """
-    from pounding.contact.base import m_effective
-
-    floor = CONTACT_PERIOD_FLOOR * step
-    for c in model.contacts:
-        m1 = c.left.effective_mass(model.buildings[c.left.building].masses)
-        m2 = c.right.effective_mass(model.buildings[c.right.building].masses)
-        k = c.law.secant_stiffness(REFERENCE_PENETRATION)
-        period = 2.0 * math.pi * math.sqrt(m_effective(m1, m2) / k)
-        if not period >= floor:
-            raise ValueError(
-                f"contact {c.label}: apparent masses {m1:.3g} kg and {m2:.3g} kg against a "
-                f"contact stiffness of {k:.3g} N/m (at {REFERENCE_PENETRATION * 1e3:g} mm) "
-                f"ring with a period of {period:.3g} s, below {CONTACT_PERIOD_FLOOR:g} of the "
-                f"{step:g} s output step: no building moves that fast; check the floor "
-                "masses and the contact stiffness")
-
-
 def grid_step(record_dt: float, dt: float | None = None) -> float:
     """The grid step actually used: the largest ``record_dt / m`` (m integer) ≤ ``dt``.
 

@@ -29,21 +29,28 @@ reassociation (``fastmath`` allows only fused multiply-add), so results do not d
 arrays happen to be aligned in memory — a sweep's cases are bit-identical whichever process
 runs them.
 
-The kernel advances a chunk of grid steps ``[k0, k1)`` and keeps everything it needs between
-chunks in a workspace, so the caller can show progress on long runs; the answer does not
-depend on how the run is cut into chunks.
+The kernel advances a chunk of grid steps ``[k0, k1)`` — returning early once a call's share
+of RK steps is done — and keeps everything it needs between chunks in a workspace, so the
+caller regains control often (Python handles Ctrl-C and SIGTERM only between calls) and can
+show progress; the answer does not depend on how the run is cut into chunks.
 """
 
 from __future__ import annotations
 
 from numba import njit
 
-from pounding.integrate.adaptive import adaptive_run, any_closed
+from pounding.integrate.adaptive import LF_GRAZED, adaptive_run, any_closed
 from pounding.integrate.exact_steps import free_run
 from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     EVENT_TOL,
+    FAIL_NONFINITE,
+    I_CALL_STEPS,
+    I_FAIL_STEP,
+    I_FAILED,
     I_MODE,
+    I_NSTEPS,
+    I_REACHED,
     IMP_COLUMNS,
     PK_COLUMNS,
     WS_F_SIZE,
@@ -69,7 +76,9 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
                     imp, cpeak, cpeak_t, ccount, pk, ks, ps, ks_b, ps_b, kx, px, ytmp, y1, yb,
                     x1, acc, lin, work, gd, gr, gd1, gr1, arel0, arel1, jk, jk1, aabs0, aabs1,
                     m_inv, gnd):
-    """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``.
+    """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``; stop
+    early at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps in all. The grid
+    point reached is left in ``ws_i[I_REACHED]`` (the next call starts there).
 
     Parameters (all arrays are updated in place)
     ----------
@@ -154,9 +163,17 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
             k = free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag,
                          m_inv, r, cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, gd, gr,
                          gd1, gr1, wc, ws_f, u_out, v_out, acc_out, pen_out, e_out, pk)
+            if k < 0:
+                ws_i[I_FAILED] = FAIL_NONFINITE
+                ws_i[I_FAIL_STEP] = -k - 1
+                return
             if k >= k1:
                 break
             ws_i[I_MODE] = 1
+            # a gap found not to touch at an earlier peak has receded since (the exact
+            # steps do not clear its flag): search every gap afresh
+            for c in range(cgap.shape[0]):
+                last_f[c, LF_GRAZED] = 0.0
             set_ground(gnd, G_NOW, ag, k)
             deriv_call(x, x, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
                        ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate,
@@ -174,6 +191,9 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
             return
         if exact_free and not any_closed(committed):
             ws_i[I_MODE] = 0
+        if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
+            break  # the call's share of RK steps is done: return at grid point k
+    ws_i[I_REACHED] = k
 
 
 @njit(**INLINE)

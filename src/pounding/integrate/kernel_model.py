@@ -94,6 +94,9 @@ class KernelModel(NamedTuple):
     #: exact grid steps already built, by step [s] (shared by the models of the same
     #: buildings, :data:`STRUCTURES`)
     free_steps: dict[float, FreeStep]
+    #: output steps [s] whose building and link periods passed their check
+    #: (:mod:`pounding.integrate.periods`; shared like ``free_steps``)
+    periods_checked: set[float]
 
 
 _KERNEL_MODELS: dict[int, KernelModel] = {}
@@ -179,7 +182,7 @@ def _assemble_structure(model: PoundingModel) -> dict:
                 c_band=band_storage(C, bw), m_diag=m_diag, mr=np.ascontiguousarray(M @ r),
                 r=np.ascontiguousarray(r), s_lo=s_lo, s_hi=s_hi, s_code=s_code,
                 s_par=np.ascontiguousarray(s_par), s_zi=s_zi, below=floor_below(model),
-                free_steps={})
+                free_steps={}, periods_checked=set())
 
 
 def influence_matrix(r: np.ndarray) -> np.ndarray:

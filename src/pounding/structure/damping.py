@@ -264,7 +264,10 @@ class RayleighDamping(DampingModel):
         """``C = a₀ M + a₁ K`` [N·s/m] (Chopra §11.4.1), shape (n, n)."""
         Mf, Kf = square_pair(M, K)
         a0, a1 = self.coefficients(Mf, Kf)
-        return a0 * Mf + a1 * Kf
+        with np.errstate(invalid="ignore", over="ignore"):
+            # (a stiffness far outside any building's overflows: the solver refuses the
+            # building in one line, pounding.integrate.periods.check_building_periods)
+            return a0 * Mf + a1 * Kf
 
 
 @dataclass(frozen=True)

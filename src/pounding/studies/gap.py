@@ -537,11 +537,13 @@ def critical_gaps(model: PoundingModel,
     step = 0.0
     for i, motion in enumerate(ms):
         # every building over the same time (the longest component's when two are given);
-        # exact stepping for linear buildings; yielding ones are RK-stepped (not linear)
+        # exact stepping for linear buildings up to EXACT_FREE_MAX_DOF floors (beyond, its
+        # propagator alone takes minutes to build, in calls no signal can stop); yielding
+        # ones are RK-stepped (not linear)
         t_end = motion.duration if duration is None else duration
         runs = [simulate(_alone(b), motion if _in_plan(b) or isinstance(motion, GroundMotion)
                          else motion.components[0], dt=dt, duration=t_end,
-                         free_stepping="rk" if b.is_inelastic else "exact")
+                         free_stepping="rk" if b.is_inelastic else "auto")
                 for b in model.buildings]
         step = runs[0].dt
         durs[i] = float(runs[0].time[-1])

@@ -126,14 +126,17 @@ def run_study(study: str | os.PathLike[str] | StudyPlan, out: str | os.PathLike[
     if out is not None:
         plan.out = Path(out)
     r = plan.config.run
-    res = run_sweep(plan.sweep, plan.out, scheduler=scheduler or r.scheduler,
-                    n_workers=n_workers or r.workers, batch_size=batch_size,
-                    overwrite=overwrite, progress=progress)
+    # the gaps first: a model the solver refuses (one line) is refused before the sweep
+    # writes anything
     t0 = time.perf_counter()
     gaps = needed_gaps(plan)
     t1 = time.perf_counter()
+    res = run_sweep(plan.sweep, plan.out, scheduler=scheduler or r.scheduler,
+                    n_workers=n_workers or r.workers, batch_size=batch_size,
+                    overwrite=overwrite, progress=progress)
+    t2 = time.perf_counter()
     table = load_results(res.results)
     result = analyse(plan, table, gaps)
     files = write_outputs(plan, result, figures=figures)
-    t2 = time.perf_counter()
-    return StudyOutcome(plan, res, result, files, t2 - start, t1 - t0, t2 - t1)
+    t3 = time.perf_counter()
+    return StudyOutcome(plan, res, result, files, t3 - start, t1 - t0, t3 - t2)
