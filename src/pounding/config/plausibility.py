@@ -154,9 +154,9 @@ def _pga(cfg: RunConfig, built: Built) -> list[str]:
     comps = [motion] if isinstance(motion, GroundMotion) else list(motion.components)
     n = max(c.accel.size for c in comps)
     resultant = np.zeros(n)
-    for c in comps:
-        resultant[: c.accel.size] += np.square(c.accel)
-    pga_g = float(math.sqrt(resultant.max())) / G
+    for c in comps:  # the horizontal resultant, by hypot (no overflow for absurd records)
+        resultant[: c.accel.size] = np.hypot(resultant[: c.accel.size], c.accel)
+    pga_g = float(resultant.max()) / G
     if pga_g <= MAX_PLAUSIBLE_PGA_G:
         return []
     rec = cfg.record
