@@ -148,3 +148,23 @@ def test_building_takes_a_law_per_storey():
         b.with_storey_law(Bilinear(yield_force=[1e5, 1e5], hardening=0.0))
     with pytest.raises(ValueError, match="storey_law"):
         ShearBuilding(masses=[1.0], stiffnesses=[1.0], heights=[1.0], storey_law="bilinear")
+
+
+def test_isolator_base_is_abstract():
+    """The isolator base is not a bearing: instantiating it fails (before, it built an
+    object whose stiffness and law raised NotImplementedError when first used), and a
+    subclass that leaves out its stiffness or its law cannot be instantiated either."""
+    from pounding.hysteresis.isolators import BilinearIsolator, Isolator
+
+    with pytest.raises(TypeError, match="abstract"):
+        Isolator()
+
+    class NoLaw(Isolator):
+        @property
+        def stiffness(self) -> float:
+            return 1.0
+
+    with pytest.raises(TypeError, match="law"):
+        NoLaw()
+    iso = BilinearIsolator(2e8, 2e7, yield_force=1e6)
+    assert isinstance(iso, Isolator) and iso.stiffness == 2e8

@@ -36,6 +36,7 @@ from the building (:mod:`pounding.hysteresis.base`, step 2).
 from __future__ import annotations
 
 import math
+from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 from pounding.hysteresis.base import StoreyLaw
@@ -49,19 +50,22 @@ GRAVITY: float = 9.80665
 """Standard gravity [m/s²] (the weight ``W = m g`` a friction pendulum carries)."""
 
 
-class Isolator:
-    """An isolation bearing: the initial stiffness of the isolation storey and its law."""
+class Isolator(ABC):
+    """An isolation bearing: the initial stiffness of the isolation storey and its law.
+
+    An abstract base: use :class:`BilinearIsolator` or :class:`FrictionPendulum` (a new
+    bearing subclasses it and gives :attr:`stiffness` and :meth:`law`)."""
 
     label: str = "isolator"
 
     @property
+    @abstractmethod
     def stiffness(self) -> float:
         """Elastic (initial) stiffness of the isolation storey ``k`` [N/m]."""
-        raise NotImplementedError
 
+    @abstractmethod
     def law(self) -> StoreyLaw:
         """The storey law (its elastic stiffness is :attr:`stiffness`)."""
-        raise NotImplementedError
 
     def carrying(self, mass: float) -> Isolator:
         """The isolator under the weight of ``mass`` [kg] (only laws that depend on the
