@@ -40,12 +40,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
-from pounding.contact.dispatch import PARAMS_SIZE
+from pounding.contact.dispatch import PARAMS_SIZE, check_contact_law
 from pounding.contact.geometry import Contact, ContactPoint, contact_points
 from pounding.contact.spec import CONTACT_LAWS, ContactSpec
 from pounding.devices import Bumper, Link
@@ -201,6 +202,26 @@ class PoundingModel:
         object.__setattr__(self, "walls", tuple(self.walls))
         if self.walls:
             check_walls(self)
+        self._check_law_codes()
+
+    def _check_law_codes(self) -> None:
+        """Every law the model's contacts, bumpers and storeys are built with is one the
+        compiled kernel implements: a law class with a code of its own would otherwise be
+        run as no law at all (NaN); one line naming the field, the law's class and code."""
+        from pounding.hysteresis.dispatch import check_storey_law
+
+        checks: list[tuple[str, Any, Any]] = [("contact", check_contact_law,
+                                               lambda: self.contact.build(1.0, 1.0))]
+        checks += [(f"devices[{i}].rubber", check_contact_law,
+                    lambda dev=dev: dev.rubber.build(1.0, 1.0))
+                   for i, dev in enumerate(self.devices) if isinstance(dev, Bumper)]
+        checks += [(f"buildings[{i}].storey_law", check_storey_law, lambda b=b: b.storey_law)
+                   for i, b in enumerate(self.buildings) if b.storey_law is not None]
+        for where, check, law in checks:
+            try:
+                check(law())
+            except ValueError as exc:
+                raise ValueError(f"{where}: {exc}") from None
 
     def _check_devices(self) -> None:
         """Every device is a Link or a Bumper on floors that exist; a bumper sits in a
@@ -367,6 +388,10 @@ class PoundingModel:
         cs = self.contacts
         params = np.zeros((len(cs), PARAMS_SIZE))  # every law's constants fit, zero-padded
         for c in cs:
+            try:
+                check_contact_law(c.law)
+            except ValueError as exc:
+                raise ValueError(f"contact {c.label}: {exc}") from None
             p = c.law.params()
             params[c.index, : p.size] = p
         dof, w = self.contact_kinematics()
@@ -394,6 +419,8 @@ class PoundingModel:
         z_index : int64 (n_s,)
             Index of the storey's internal variable among the ``z`` states (−1: none).
         """
+        from pounding.hysteresis.dispatch import check_storey_law
+
         offsets = self.system.offsets
         lower, upper, code, zi = [], [], [], []
         rows: list[NDArray[np.float64]] = []
@@ -403,6 +430,7 @@ class PoundingModel:
                 continue
             law = b.storey_law
             assert law is not None
+            check_storey_law(law)
             prm = b.storey_law_params()
             for r, j in enumerate(b.yielding):
                 upper.append(int(offsets[p] + j))

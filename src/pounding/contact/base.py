@@ -151,8 +151,9 @@ class ContactLaw(ABC):
         ``committed=None`` means the open state, so the call starts a new impact at
         ``v0 = δ̇`` when ``δ > 0``.
         """
-        from pounding.contact.dispatch import contact_trial
+        from pounding.contact.dispatch import check_contact_law, contact_trial
 
+        check_contact_law(self)
         state = self.initial_state() if committed is None else np.asarray(committed, float)
         out = np.empty(STATE_SIZE)
         f, kd, kr = contact_trial(self.code, self.params(), float(delta), float(rate), state, out)
@@ -173,8 +174,9 @@ class ContactLaw(ABC):
         numpy.ndarray, shape (n,)
             Contact force at each sample [N].
         """
-        from pounding.contact.dispatch import respond_path
+        from pounding.contact.dispatch import check_contact_law, respond_path
 
+        check_contact_law(self)
         d = np.ascontiguousarray(delta, dtype=float)
         r = np.ascontiguousarray(rate, dtype=float)
         if d.shape != r.shape or d.ndim != 1:

@@ -26,7 +26,7 @@ from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
 from pounding.contact.base import STATE_SIZE, V0, ContactLaw, m_effective
-from pounding.contact.dispatch import contact_trial
+from pounding.contact.dispatch import check_contact_law, contact_trial
 from pounding.validation import positive
 
 RTOL: float = 1e-11
@@ -155,6 +155,7 @@ def simulate_collision(law: ContactLaw, m1: float, m2: float, v0: float, *,
     >>> round(simulate_collision(law, 2e5, 3e5, v0=0.5).e, 6)
     0.65
     """
+    check_contact_law(law)
     m_eff = m_effective(m1, m2)
     v0 = positive("v0", v0)
     params = law.params()

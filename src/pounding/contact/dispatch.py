@@ -4,6 +4,12 @@
 scalar trial function. The time-history kernel calls it directly; :func:`contact_trial`
 wraps it for arrays (used by the Python law objects and the single-collision analysis). So
 there is exactly one implementation of each law.
+
+A code that no branch implements is not run as some other law: the compiled functions
+return NaN (the failure value the kernel reports as an
+:class:`~pounding.integrate.IntegrationError`), and :func:`check_contact_law` refuses such a
+law in Python, in one line naming its class and code, where a model is built and before a
+law object computes anything.
 """
 
 from __future__ import annotations
@@ -35,6 +41,30 @@ from pounding.contact.linear import (
 PARAMS_SIZE: int = 3
 """Every law's constants fit in three numbers (zero-padded)."""
 
+CONTACT_LAW_CODES: dict[int, str] = {
+    LINEAR_SPRING: "linear spring", KELVIN_VOIGT: "Kelvin-Voigt",
+    MODIFIED_KELVIN_VOIGT: "modified Kelvin-Voigt", HERTZ: "Hertz",
+    HUNT_CROSSLEY: "Hunt-Crossley", NONLINEAR_VISCOELASTIC: "nonlinear viscoelastic",
+    BILINEAR_IMPACT: "bilinear impact",
+}
+"""The codes :func:`law_trial` implements, each with its law (a branch apiece)."""
+
+
+def unknown_code_text(kind: str, law: object, code: int, codes: dict[int, str]) -> str:
+    """One line: a law whose code no compiled branch implements, and the codes there are."""
+    known = ", ".join(f"{k} {name}" for k, name in codes.items())
+    return (f"{kind} {type(law).__name__} has code {code}, which no compiled {kind} "
+            f"implements (codes: {known}); a new law needs its own code and branch")
+
+
+def check_contact_law(law: object) -> None:
+    """Refuse a contact law whose :attr:`~pounding.contact.base.ContactLaw.code` the compiled
+    dispatcher does not implement (a subclass with a new code would otherwise compute
+    nothing: NaN): a ``ValueError`` naming the law's class and code."""
+    code = getattr(law, "code", None)
+    if not isinstance(code, (int, np.integer)) or int(code) not in CONTACT_LAW_CODES:
+        raise ValueError(unknown_code_text("contact law", law, code, CONTACT_LAW_CODES))
+
 
 @njit(cache=True, inline="always", error_model="numpy")
 def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
@@ -43,6 +73,8 @@ def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
     Returns
     -------
     (F [N], ∂F/∂δ [N/m], ∂F/∂δ̇ [N·s/m], v0', slip', dmax')
+        For a code not in :data:`CONTACT_LAW_CODES`, F and both tangents are NaN: no law
+        stands in for an unknown one.
     """
     if code == LINEAR_SPRING:
         return linear_spring_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
@@ -56,7 +88,9 @@ def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
         return hunt_crossley_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == NONLINEAR_VISCOELASTIC:
         return nonlinear_viscoelastic_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
-    return bilinear_impact_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
+    if code == BILINEAR_IMPACT:
+        return bilinear_impact_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
+    return np.nan, np.nan, np.nan, v0, slip, dmax
 
 
 @njit(cache=True, inline="always")
@@ -119,7 +153,8 @@ def stored_energy(code, p0, p1, p2, delta, slip):
     """Elastic energy [J] the contact would give back if unloaded now (scalar form).
 
     The work the contact force has done on the bodies, minus this, is the energy the impact
-    has dissipated so far. Zero while the gap is open.
+    has dissipated so far. Zero while the gap is open; NaN for a code not in
+    :data:`CONTACT_LAW_CODES`.
     """
     if delta <= 0.0:
         return 0.0
@@ -129,10 +164,12 @@ def stored_energy(code, p0, p1, p2, delta, slip):
         return p0 * delta ** (p1 + 1.0) / (p1 + 1.0)
     if code == NONLINEAR_VISCOELASTIC:
         return p0 * delta * delta * np.sqrt(delta) / 2.5  # k_h δ^2.5 / 2.5
-    # bilinear: K2 spring plus the elastic part of the elasto-plastic branch
-    kp = p0 - p1
-    fp = min(max(kp * (delta - slip), 0.0), kp * p2)
-    return 0.5 * p1 * delta * delta + 0.5 * fp * fp / kp
+    if code == BILINEAR_IMPACT:
+        # K2 spring plus the elastic part of the elasto-plastic branch
+        kp = p0 - p1
+        fp = min(max(kp * (delta - slip), 0.0), kp * p2)
+        return 0.5 * p1 * delta * delta + 0.5 * fp * fp / kp
+    return np.nan
 
 
 @njit(cache=True)

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 DEVICE_MIN: int = 10
@@ -34,6 +35,10 @@ DEVICE_MIN: int = 10
 VISCOUS: int = 10
 KELVIN: int = 11
 MAXWELL: int = 12
+
+DEVICE_CODES: dict[int, str] = {VISCOUS: "viscous", KELVIN: "Kelvin", MAXWELL: "Maxwell"}
+"""The codes the compiled link laws implement; every function here returns NaN for any
+other code (no law stands in for an unknown one)."""
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -48,15 +53,17 @@ def device_trial(code, p0, p1, p2, d, rate, z):
         return (f if rate > 0.0 else -f), 0.0, 0.0
     if code == KELVIN:
         return p0 * d + p1 * rate, p0, 0.0
-    # MAXWELL: F = k z; the dashpot carries F at the rate (|F| / c)^(1/α)
-    f = p0 * z
-    if p2 == 1.0:
-        v_dash = f / p1
-    else:
-        v_dash = (abs(f) / p1) ** (1.0 / p2)
-        if f < 0.0:
-            v_dash = -v_dash
-    return f, 0.0, rate - v_dash
+    if code == MAXWELL:
+        # F = k z; the dashpot carries F at the rate (|F| / c)^(1/α)
+        f = p0 * z
+        if p2 == 1.0:
+            v_dash = f / p1
+        else:
+            v_dash = (abs(f) / p1) ** (1.0 / p2)
+            if f < 0.0:
+                v_dash = -v_dash
+        return f, 0.0, rate - v_dash
+    return np.nan, np.nan, np.nan
 
 
 SLOPE_RATE_FLOOR: float = 1e-3
@@ -87,7 +94,9 @@ def device_rate_terms(code, p0, p1, p2, rate):
         return p1 * p0 * a ** (p1 - 1.0), 0.0
     if code == KELVIN:
         return p1, 0.0
-    return 0.0, p0
+    if code == MAXWELL:
+        return 0.0, p0
+    return np.nan, np.nan
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -97,7 +106,9 @@ def device_stored(code, p0, p1, p2, d, z):
         return 0.5 * p0 * d * d
     if code == MAXWELL:
         return 0.5 * p0 * z * z
-    return 0.0
+    if code == VISCOUS:
+        return 0.0
+    return np.nan
 
 
 def relaxation_time(k: float, c: float) -> float:

@@ -2,7 +2,9 @@
 
 :func:`storey_trial` switches on the law code; the time-history kernel calls it for every
 yielding storey at every stage, and :func:`respond_drift_path` drives it along a drift
-history (cyclic push tests, plots). One implementation of each law.
+history (cyclic push tests, plots). One implementation of each law; a code no branch
+implements gives NaN (no law stands in for an unknown one), and :func:`check_storey_law`
+refuses such a law in Python, in one line naming its class and code.
 """
 
 from __future__ import annotations
@@ -13,10 +15,34 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.hysteresis.base import BILINEAR, BOUC_WEN, P_FY, P_K, STATE_SIZE, StoreyLaw
+from pounding.devices.laws import DEVICE_MIN, device_stored, device_trial
+from pounding.hysteresis.base import (
+    BILINEAR,
+    BOUC_WEN,
+    ELASTIC,
+    P_FY,
+    P_K,
+    STATE_SIZE,
+    StoreyLaw,
+)
 from pounding.hysteresis.bilinear import bilinear_trial
 from pounding.hysteresis.bouc_wen import bouc_wen_trial
-from pounding.devices.laws import DEVICE_MIN, device_stored, device_trial
+
+STOREY_LAW_CODES: dict[int, str] = {ELASTIC: "elastic", BILINEAR: "bilinear",
+                                    BOUC_WEN: "Bouc-Wen"}
+"""The storey-law codes :func:`storey_trial` implements (links between buildings have
+theirs from :data:`pounding.devices.laws.DEVICE_MIN` up)."""
+
+
+def check_storey_law(law: object) -> None:
+    """Refuse a storey law whose code the compiled dispatcher does not implement: a
+    ``ValueError`` naming the law's class and code."""
+    code = getattr(law, "code", None)
+    if not isinstance(code, (int, np.integer)) or int(code) not in STOREY_LAW_CODES:
+        known = ", ".join(f"{k} {name}" for k, name in STOREY_LAW_CODES.items())
+        raise ValueError(f"storey law {type(law).__name__} has code {code}, which no compiled "
+                         f"storey law implements (codes: {known}); a new law needs its own "
+                         "code and branch")
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -24,7 +50,8 @@ def storey_trial(code, sp, s, d, rate, z, d_c, v_c):
     """Trial of storey ``s`` (constants ``sp[s]``, law ``code``): ``(V, ∂V/∂d, ż)``.
 
     Code 0 (elastic) returns ``(k d, k, 0)``. Codes from ``DEVICE_MIN`` up are the links
-    between buildings (:mod:`pounding.devices.laws`), which use the same element rows.
+    between buildings (:mod:`pounding.devices.laws`), which use the same element rows. Any
+    other code returns NaN.
     """
     if code >= DEVICE_MIN:
         return device_trial(code, sp[s, 0], sp[s, 1], sp[s, 2], d, rate, z)
@@ -34,7 +61,9 @@ def storey_trial(code, sp, s, d, rate, z, d_c, v_c):
     if code == BOUC_WEN:
         return bouc_wen_trial(sp[s, 0], sp[s, 1], sp[s, 2], sp[s, 3], sp[s, 4], sp[s, 5],
                               d, rate, z, d_c, v_c)
-    return sp[s, 0] * d, sp[s, 0], 0.0
+    if code == ELASTIC:
+        return sp[s, 0] * d, sp[s, 0], 0.0
+    return np.nan, np.nan, np.nan
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -49,7 +78,9 @@ def storey_recoverable(code, sp, s, d, z, v):
         alpha = sp[s, 2]
         fy = sp[s, 1]
         return 0.5 * alpha * k * d * d + 0.5 * (1.0 - alpha) * fy * (fy / k) * z * z
-    return 0.5 * k * d * d
+    if code == ELASTIC:
+        return 0.5 * k * d * d
+    return np.nan
 
 
 @njit(cache=True, error_model="numpy")
@@ -115,10 +146,11 @@ def respond_drift_path(law: StoreyLaw | None, stiffness: float, drift: ArrayLike
         raise ValueError(f"stiffness: must be finite and > 0 (got {stiffness!r})")
     if law is None:
         return k * d
+    check_storey_law(law)
     sp = law.params(np.array([k]))
     v, _ = drive_path(law.code, sp, d, int(substeps))
     return v
 
 
-__all__ = ["storey_trial", "storey_recoverable", "respond_drift_path", "drive_path", "STATE_SIZE",
-           "P_K", "P_FY"]
+__all__ = ["STOREY_LAW_CODES", "check_storey_law", "storey_trial", "storey_recoverable",
+           "respond_drift_path", "drive_path", "STATE_SIZE", "P_K", "P_FY"]

@@ -51,7 +51,9 @@ from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     FAIL_BUDGET,
     FAIL_NONFINITE,
+    FAIL_UNKNOWN_LAW,
     I_CALL_STEPS,
+    I_FAIL_ROW,
     I_FAIL_STEP,
     I_FAILED,
     I_NEVENTS,
@@ -379,7 +381,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         ws_i[I_CALL_STEPS] = ws_i[I_NSTEPS] + rk_per_call
         integrate_chunk(k0, min(nt - 1, k0 + grid_per_call), *args)
         if ws_i[I_FAILED]:
-            raise IntegrationError(_failure_text(model, motion, ws_i, committed, step, rtol))
+            raise IntegrationError(_failure_text(model, km, motion, ws_i, committed, step,
+                                                 rtol))
         k0 = int(ws_i[I_REACHED])
         if progress is not None:
             progress(k0 / (nt - 1))
@@ -404,13 +407,16 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   located_peaks=pk)
 
 
-def _failure_text(model: PoundingModel, motion: GroundMotion | GroundMotionComponents,
-                  ws_i: np.ndarray, committed: np.ndarray, step: float, rtol: float) -> str:
+def _failure_text(model: PoundingModel, km: KernelModel,
+                  motion: GroundMotion | GroundMotionComponents, ws_i: np.ndarray,
+                  committed: np.ndarray, step: float, rtol: float) -> str:
     """One line: why and when the integration stopped, the contacts closed then, and what
     to check."""
     t = int(ws_i[I_FAIL_STEP]) * step
     if ws_i[I_FAILED] == FAIL_NONFINITE:
         return _nonfinite_text(model, motion, t, step)
+    if ws_i[I_FAILED] == FAIL_UNKNOWN_LAW:
+        return _unknown_law_text(model, km, int(ws_i[I_FAIL_ROW]))
     closed = [c.label for c, st in zip(model.contacts, committed) if st[0] > 0.0]
     where = (f" with contact {', '.join(closed[:4])}{' …' if len(closed) > 4 else ''} closed"
              if closed else "")
@@ -423,6 +429,28 @@ def _failure_text(model: PoundingModel, motion: GroundMotion | GroundMotionCompo
     return (why + ": the model moves millions of times faster than a building does there; "
             "check the masses, storey and contact stiffnesses and the contact damping "
             "(e.g. e far below 0.1), or raise max_rk_steps")
+
+
+def _unknown_law_text(model: PoundingModel, km: KernelModel, row: int) -> str:
+    """One line for a contact or element row whose law code no compiled law implements."""
+    from pounding.contact.dispatch import CONTACT_LAW_CODES
+    from pounding.devices.laws import DEVICE_CODES, DEVICE_MIN
+    from pounding.hysteresis.dispatch import STOREY_LAW_CODES
+
+    nc = km.cgap.size
+    if row < nc:
+        what, code, codes = f"contact {model.contacts[row].label}", int(km.ccode[row]), \
+            CONTACT_LAW_CODES
+    else:
+        s = row - nc
+        n_storeys = len(model.yielding_storeys)
+        what = (f"yielding storey {s + 1}" if s < n_storeys
+                else f"link {model.links[s - n_storeys].name}")
+        code = int(km.s_code[s])
+        codes = DEVICE_CODES if code >= DEVICE_MIN else STOREY_LAW_CODES
+    known = ", ".join(f"{k} {name}" for k, name in codes.items())
+    return (f"solver: {what} has law code {code}, which no compiled law implements "
+            f"(codes: {known}): refused, not run as another law")
 
 
 def _nonfinite_text(model: PoundingModel, motion: GroundMotion | GroundMotionComponents,

@@ -45,7 +45,9 @@ from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     EVENT_TOL,
     FAIL_NONFINITE,
+    FAIL_UNKNOWN_LAW,
     I_CALL_STEPS,
+    I_FAIL_ROW,
     I_FAIL_STEP,
     I_FAILED,
     I_MODE,
@@ -60,6 +62,7 @@ from pounding.integrate.rhs import (
     G_NOW,
     INLINE,
     deriv_call,
+    first_unknown_law,
     gap_row,
     set_ground,
 )
@@ -147,6 +150,13 @@ def integrate_chunk(k0, k1, dt, ag, exact_free, blk, fops, g0, g1, faa, bw, k_ba
         compile time).
     """
     n = r.shape[0]
+    # a law code no compiled law implements: stop before using it (its trial is NaN)
+    bad = first_unknown_law(ccode, s_code, s_par)
+    if bad >= 0:
+        ws_i[I_FAILED] = FAIL_UNKNOWN_LAW
+        ws_i[I_FAIL_STEP] = k0
+        ws_i[I_FAIL_ROW] = bad
+        return
     graze_tol = EVENT_TOL * atol[0]
     # the state at grid point k0: f, every gap's δ and δ̇, the accelerations
     set_ground(gnd, G_NOW, ag, k0)

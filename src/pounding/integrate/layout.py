@@ -46,19 +46,22 @@ last error norm, and the margin by which an acceleration peak between two exact-
 samples can exceed the larger sample (relative; :func:`pounding.integrate.peak_margin`),
 and the links' cumulative work [J]."""
 (I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED, I_FAIL_STEP,
- I_STEP_BUDGET, I_ONSET_C, I_CALL_STEPS, I_REACHED) = range(12)
-WS_I_SIZE = 12
+ I_STEP_BUDGET, I_ONSET_C, I_CALL_STEPS, I_REACHED, I_FAIL_ROW) = range(13)
+WS_I_SIZE = 13
 """Counters: mode (0 exact, 1 adaptive), impacts, table overflow, RK steps, rejected steps,
-events, failure kind (:data:`FAIL_UNDERFLOW`, :data:`FAIL_BUDGET`, :data:`FAIL_NONFINITE`),
-the grid step it happened in, the largest number of RK steps allowed in all, the contact
-whose onset ended the last accepted step (−1: none), the count of RK steps after which a
-call returns at the next grid point (so that a call holds Python — and with it Ctrl-C and
-SIGTERM — for a bounded time), and the grid point a call reached."""
+events, failure kind (:data:`FAIL_UNDERFLOW`, :data:`FAIL_BUDGET`, :data:`FAIL_NONFINITE`,
+:data:`FAIL_UNKNOWN_LAW`), the grid step it happened in, the largest number of RK steps
+allowed in all, the contact whose onset ended the last accepted step (−1: none), the count
+of RK steps after which a call returns at the next grid point (so that a call holds Python
+— and with it Ctrl-C and SIGTERM — for a bounded time), the grid point a call reached, and
+the row a failure names (a contact c, or an element row n_c + s)."""
 
-FAIL_UNDERFLOW, FAIL_BUDGET, FAIL_NONFINITE = 1, 2, 3
+FAIL_UNDERFLOW, FAIL_BUDGET, FAIL_NONFINITE, FAIL_UNKNOWN_LAW = 1, 2, 3, 4
 """Why an integration stopped: the adaptive step fell below 10⁻¹⁴ of the grid step, the
-run used up its budget of adaptive steps, or the state (or an energy, which sums every
-entry of it) stopped being a finite number."""
+run used up its budget of adaptive steps, the state (or an energy, which sums every
+entry of it) stopped being a finite number, or a contact or element row has a law code
+that no compiled law implements (its trial is the failure value NaN; the row is
+``ws_i[I_FAIL_ROW]``)."""
 
 # ---------------------------------------------------------------- located peaks, per floor
 PK_U, PK_U_T, PK_D, PK_D_T, PK_A, PK_A_T = range(6)

@@ -23,6 +23,7 @@ nothing); see :data:`NRT_FREE`.
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from pounding.contact.base import V0
@@ -170,6 +171,23 @@ def law_call(code, p0, p1, p2, delta, rate, v0, slip, dmax):
 def storey_call(code, par, s, d, dr, z, d_c, v_c):
     """:func:`pounding.hysteresis.dispatch.storey_trial`, called (see :func:`law_call`)."""
     return storey_trial(code, par, s, d, dr, z, d_c, v_c)
+
+
+@njit(**NRT_FREE)
+def first_unknown_law(ccode, s_code, s_par):
+    """The first contact (its index c) or element row (``n_c + s``) whose law code no
+    compiled law implements, or −1: the dispatchers return the failure value NaN for such
+    a code (never another law's force), here tried once at a probe point (contacts at
+    unit constants and state, storeys and links at zero drift, rate and ``z``, where every
+    law is finite)."""
+    nc = ccode.shape[0]
+    for c in range(nc):
+        if np.isnan(law_call(ccode[c], 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 1.0)[0]):
+            return c
+    for s in range(s_code.shape[0]):
+        if np.isnan(storey_call(s_code[s], s_par, s, 0.0, 0.0, 0.0, 0.0, 0.0)[0]):
+            return nc + s
+    return -1
 
 
 @njit(**NRT_FREE)
