@@ -111,13 +111,13 @@ def test_models_of_the_same_buildings_share_their_system_and_kernel_structure():
     assert m1 is not m2 and m1.system is m2.system
     assert not m1.system.M.flags.writeable
     k1, k2 = kernel_model(m1), kernel_model(m2)
-    assert k1.k_band is k2.k_band and k1.free_steps is k2.free_steps
-    assert (k1.cgap[0], k2.cgap[0]) == (0.01, 0.02)
+    assert k1.floors.k_band is k2.floors.k_band and k1.free_steps is k2.free_steps
+    assert (k1.contacts.gap[0], k2.contacts.gap[0]) == (0.01, 0.02)
     # another building: its own system, and its own run
     data["building"][1]["period"] = 0.8
     m3, _, _ = parse_config(data).build()
     assert m3.system is not m1.system
-    assert not np.array_equal(kernel_model(m3).k_band, k1.k_band)
+    assert not np.array_equal(kernel_model(m3).floors.k_band, k1.floors.k_band)
     r2, r3 = simulate(m2, gm, **kw), simulate(m3, gm, **kw)
     assert not np.array_equal(r2.displacement, r3.displacement)
 

@@ -172,13 +172,14 @@ def test_kernel_model_is_assembled_once_per_model_and_forgotten_with_it():
     assert kernel_model(model) is km
     # the arrays are the model's own, assembled independently here
     sys_ = model.system
-    assert np.array_equal(km.k_band, band_storage(sys_.K, km.bw))
-    assert np.array_equal(km.c_band, band_storage(sys_.C, km.bw))
-    assert np.array_equal(km.m_diag, np.diag(sys_.M))
-    assert np.array_equal(km.mr, (sys_.M @ sys_.r)[:, None])  # M R, R of one column
-    assert np.array_equal(km.cgap, [c.gap for c in model.contacts])
+    fl, ct = km.floors, km.contacts
+    assert np.array_equal(fl.k_band, band_storage(sys_.K, fl.bw))
+    assert np.array_equal(fl.c_band, band_storage(sys_.C, fl.bw))
+    assert np.array_equal(fl.m_diag, np.diag(sys_.M))
+    assert np.array_equal(fl.mr, (sys_.M @ sys_.r)[:, None])  # M R, R of one column
+    assert np.array_equal(ct.gap, [c.gap for c in model.contacts])
     # writeable, so numba keeps one compiled signature (the kernel never writes them)
-    assert all(a.flags.writeable for a in (km.k_band, km.c_band, km.m_diag, km.cparams))
+    assert all(a.flags.writeable for a in (fl.k_band, fl.c_band, fl.m_diag, ct.params))
     key = id(model)
     assert key in _KERNEL_MODELS
     del model, km

@@ -106,9 +106,9 @@ def test_the_kernel_stops_at_a_law_code_it_does_not_implement(row):
     link = Link(("B1F1", "B2F1"), "viscous", c=2e5)
     model = PoundingModel([a, b], [0.02], KV, devices=[link])
     km = kernel_model(model)
-    array, i, where = {"contact": (km.ccode, 0, "contact B1F1-B2F1"),
-                       "storey": (km.s_code, 0, "yielding storey 1"),
-                       "link": (km.s_code, 1, "link B1F1-B2F1")}[row]
+    array, i, where = {"contact": (km.contacts.code, 0, "contact B1F1-B2F1"),
+                       "storey": (km.elements.code, 0, "yielding storey 1"),
+                       "link": (km.elements.code, 1, "link B1F1-B2F1")}[row]
     kept = array[i]
     array[i] = 99 if row == "contact" else 13
     try:

@@ -26,7 +26,6 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pounding.contact.base import STATE_SIZE
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
@@ -47,8 +46,6 @@ from pounding.integrate.periods import (
 )
 from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
 from pounding.integrate.layout import (
-    E_DEVICE,
-    ENERGY_COLUMNS,
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNKNOWN_LAW,
@@ -60,16 +57,10 @@ from pounding.integrate.layout import (
     I_NIMP,
     I_NREJECT,
     I_NSTEPS,
-    I_ONSET_C,
     I_OVERFLOW,
     I_REACHED,
     I_STEP_BUDGET,
-    IMP_COLUMNS,
-    W_ERR_OLD,
-    W_H,
-    W_PEAK_MARGIN,
-    WS_F_SIZE,
-    WS_I_SIZE,
+    PK_COLUMNS,
 )
 from pounding.integrate.kernel_model import (
     EXACT_FREE_MAX_DOF,
@@ -80,7 +71,6 @@ from pounding.integrate.kernel_model import (
     floor_below,
     half_bandwidth,
     kernel_model,
-    kernel_scratch,
     peak_margin,
 )
 from pounding.integrate.propagator import FreeStep, free_step
@@ -91,6 +81,7 @@ from pounding.integrate.start import (
     initial_storeys,
     write_initial_row,
 )
+from pounding.integrate.workspace import RunInputs, kernel_scratch, new_outputs, new_state
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
 from pounding.validation import positive
@@ -140,7 +131,7 @@ def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
     ``2000 + 140 N (2 bw + 1) + 100 n_c + 200 n_s`` ns (six right-hand sides of the banded
     K and C of half-bandwidth bw, n_c contacts, n_s yielding storeys and links).
     """
-    n, bw, nc, ns = km.n, km.bw, km.cgap.size, km.s_lo.size
+    n, bw, nc, ns = km.n, km.floors.bw, km.contacts.gap.size, km.elements.lo.size
     rk_ns = 2000.0 + 140.0 * n * (2 * bw + 1) + 100.0 * nc + 200.0 * ns
     rk_per_call = max(1, int(CALL_WORK_NS / rk_ns))
     if not exact:
@@ -281,28 +272,29 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     ground = ground_on_grid_memo(motion, step, t_end)  # (nt,) or (nt, G)
     nt = ground.shape[0]
     ag = ground.reshape(nt, -1)  # (nt, G), read-only like ground
-    if km.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g] unchecked)
-        raise ValueError(f"motion: {ag.shape[1]} ground components for {km.r.shape[1]}")
-    n, nz, bw = km.n, km.nz, km.bw
-    ns = km.s_lo.size
+    if km.floors.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g]
+        raise ValueError(f"motion: {ag.shape[1]} ground components for "  # unchecked)
+                         f"{km.floors.r.shape[1]}")
+    n, nz = km.n, km.nz
+    fl, ct, el = km.arrays
+    ns = el.lo.size
     if ns and free_stepping == "exact":
         raise ValueError("free_stepping: 'exact' needs linear storeys and no links; this "
                          "model has yielding storeys or links between buildings (use 'auto' "
                          "or 'rk')")
-    exact = choose_free_stepping(free_stepping, n, bw) and ns == 0
+    exact = choose_free_stepping(free_stepping, n, fl.bw) and ns == 0
     if exact:
         fs = km.free_steps.get(step)
         if fs is None:
-            sys_ = model.system
-            fs = free_step(sys_.M, sys_.C, km.K, km.r, step)
+            fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step)
             if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
                 raise IntegrationError(_nonfinite_text(model, motion, None, step))
             km.free_steps[step] = fs
     else:
         fs = NO_FREE_STEP
-    nc = km.cgap.size
+    nc = ct.gap.size
     # absolute tolerances: displacement scale from the gaps and the record, velocity from PGV
-    u_scale = max(float(km.cgap.min()) if nc else 0.0, 1e-3)
+    u_scale = max(float(ct.gap.min()) if nc else 0.0, 1e-3)
     v_scale = max(motion.pgv, 1e-3)
     atol = np.empty(2 * n + nz)
     atol[:n] = rtol * 1e-3 * u_scale
@@ -316,58 +308,27 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         sstate = np.zeros((ns, 2))
     else:
         x0 = initial_state(model, initial_displacement, initial_velocity)
-        sstate, z0 = initial_storeys(model, x0[:n], x0[n:])
+        sstate, z0 = initial_storeys(km, x0[:n], x0[n:])
         x = np.concatenate([x0, z0])
-    committed = np.zeros((max(nc, 1), STATE_SIZE))[:nc]
-    wc = np.zeros(nc)
-    w_start = np.zeros(nc)
-    imp_row = np.full(nc, -1, dtype=np.int64)
-    last_f = np.zeros((nc, 5))
-    ws_f = np.zeros(WS_F_SIZE)
-    ws_f[W_ERR_OLD] = 1e-4
-    ws_f[W_H] = step * 0.1
     margin = notes.margin.get(step)
     if margin is None:
         margin = notes.margin[step] = peak_margin(km, step)
-    ws_f[W_PEAK_MARGIN] = margin
-    ws_i = np.zeros(WS_I_SIZE, dtype=np.int64)
-    ws_i[0] = 0 if exact else 1  # I_MODE: 0 exact stepping, 1 adaptive RK
-    ws_i[I_ONSET_C] = -1
-    ws_i[I_STEP_BUDGET] = (default_step_budget(nt) if max_rk_steps is None
-                           else int(positive("max_rk_steps", max_rk_steps)))
+    budget = (default_step_budget(nt) if max_rk_steps is None
+              else int(positive("max_rk_steps", max_rk_steps)))
+    st = new_state(km, x, sstate, step, margin, exact, budget)
+    ws_i = st.ws_i
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
-    # The kernel writes every row after the first of these, so they are not zeroed first
-    # (zeroing ~5 MB costs as much as a tenth of an SDOF pair's run when the memory is
-    # reused); f_out is: exact steps leave its zero rows untouched. Nor is the impact
-    # table: the kernel writes every column of a row when the impact starts, and only the
-    # rows written are kept.
-    u_out = np.empty((nt, n))
-    v_out = np.empty((nt, n))
-    acc_out = np.empty((nt, n))
-    pen_out = np.empty((nt, nc))
-    f_out = np.zeros((nt, nc))
-    vs_out = np.empty((nt, ns))
-    e_out = np.empty((nt, ENERGY_COLUMNS), order="F")  # (each energy's history contiguous)
-    e_out[:, E_DEVICE] = 0.0  # (exact steps leave it: a model with links steps adaptively)
-    imp = np.empty((cap, IMP_COLUMNS))
-    cpeak = np.zeros(nc)
-    cpeak_t = np.zeros(nc)
-    ccount = np.zeros(nc, dtype=np.int64)
-    write_initial_row(model, km, x, sstate, u_out, v_out, acc_out, pen_out, vs_out, e_out,
-                       at_rest)
+    out = new_outputs(km, nt, cap, np.empty((n, PK_COLUMNS)))
+    write_initial_row(model, km, x, sstate, out, at_rest)
+    out.peaks[:] = initial_peaks(out.u[0], out.acc[0], fl.below)
 
     # the run in calls of bounded work, so that Ctrl-C and SIGTERM (which Python handles
     # only between calls) take effect within a fraction of a second, whatever the model
     grid_per_call, rk_per_call = call_sizes(km, exact, fs)
     if progress is not None:
         grid_per_call = min(grid_per_call, max(1000, (nt - 1) // 50))
-    pk = initial_peaks(u_out[0], acc_out[0], km.below)
-    args = (step, ag, exact, fs.blk, fs.ops, fs.gamma0, fs.gamma1, fs.aa, bw, km.k_band,
-            km.c_band, km.m_diag, km.mr, km.r, km.cdof, km.cw, km.cgap, km.ccode, km.cparams,
-            km.s_lo, km.s_hi, km.s_code, km.s_par, km.s_zi, km.below, rtol, atol, h_max, x,
-            committed, sstate, wc, w_start, imp_row, last_f, ws_f, ws_i, u_out, v_out, acc_out,
-            pen_out, f_out, vs_out, e_out, imp, cpeak, cpeak_t, ccount, pk,
-            *kernel_scratch(km, x.size))
+    args = (RunInputs(step, ag, exact, rtol, atol, h_max), km.arrays, fs, st, out,
+            kernel_scratch(km, x.size))
     # An empty chunk first, in a process that has not loaded the compiled kernel yet: that
     # call loads it from numba's cache (~0.3 s), which is not integrating and is kept out of
     # stats.wall_time.
@@ -381,13 +342,14 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         ws_i[I_CALL_STEPS] = ws_i[I_NSTEPS] + rk_per_call
         integrate_chunk(k0, min(nt - 1, k0 + grid_per_call), *args)
         if ws_i[I_FAILED]:
-            raise IntegrationError(_failure_text(model, km, motion, ws_i, committed, step,
+            raise IntegrationError(_failure_text(model, km, motion, ws_i, st.committed, step,
                                                  rtol))
         k0 = int(ws_i[I_REACHED])
         if progress is not None:
             progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
-    final_peaks(pk, u_out[-1], acc_out[-1], km.below, (nt - 1) * step)
+    pk = out.peaks
+    final_peaks(pk, out.u[-1], out.acc[-1], fl.below, (nt - 1) * step)
     n_imp = int(ws_i[I_NIMP])
     if n_imp > cap:
         warnings.warn(f"impact table full: {n_imp} impacts, {cap} rows kept (raise "
@@ -398,13 +360,13 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
     n_storey_rows = len(model.yielding_storeys)
     return Result(model=model, motion=motion, dt=step, ground=ground,
-                  displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
-                  penetration=pen_out, contact_force=f_out, energy=e_out,
-                  yielding_shear=vs_out[:, :n_storey_rows],
-                  link_force=vs_out[:, n_storey_rows:], final_z=x[2 * n:].copy(),
-                  impact_array=imp[: min(n_imp, cap)].copy(), stats=stats,
-                  contact_peak=cpeak, contact_peak_time=cpeak_t, contact_impacts=ccount,
-                  located_peaks=pk)
+                  displacement=out.u, velocity=out.v, abs_acceleration=out.acc,
+                  penetration=out.pen, contact_force=out.force, energy=out.energy,
+                  yielding_shear=out.element_force[:, :n_storey_rows],
+                  link_force=out.element_force[:, n_storey_rows:], final_z=x[2 * n:].copy(),
+                  impact_array=out.impacts[: min(n_imp, cap)].copy(), stats=stats,
+                  contact_peak=out.peak_force, contact_peak_time=out.peak_force_time,
+                  contact_impacts=out.impact_count, located_peaks=pk)
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,
@@ -437,16 +399,16 @@ def _unknown_law_text(model: PoundingModel, km: KernelModel, row: int) -> str:
     from pounding.devices.laws import DEVICE_CODES, DEVICE_MIN
     from pounding.hysteresis.dispatch import STOREY_LAW_CODES
 
-    nc = km.cgap.size
+    nc = km.contacts.gap.size
     if row < nc:
-        what, code, codes = f"contact {model.contacts[row].label}", int(km.ccode[row]), \
-            CONTACT_LAW_CODES
+        what, code, codes = f"contact {model.contacts[row].label}", \
+            int(km.contacts.code[row]), CONTACT_LAW_CODES
     else:
         s = row - nc
         n_storeys = len(model.yielding_storeys)
         what = (f"yielding storey {s + 1}" if s < n_storeys
                 else f"link {model.links[s - n_storeys].name}")
-        code = int(km.s_code[s])
+        code = int(km.elements.code[s])
         codes = DEVICE_CODES if code >= DEVICE_MIN else STOREY_LAW_CODES
     known = ", ".join(f"{k} {name}" for k, name in codes.items())
     return (f"solver: {what} has law code {code}, which no compiled law implements "

@@ -91,26 +91,46 @@ LF_TIME, LF_FORCE, LF_RATE, LF_ONSET_STEP, LF_GRAZED = range(5)
 
 
 @njit(**NRT_FREE)
-def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, mr, r, cdof, cw,
-                 cgap, ccode, cparams, s_lo, s_hi, s_code, s_par, s_zi, below, rtol, atol,
-                 h_max, graze_tol, x, committed, sstate, wc, w_start, imp_row, last_f, ws_f,
-                 ws_i, u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, imp, cpeak,
-                 cpeak_t, ccount, pk, kx, px, ks, ps, ks_b, ps_b, ytmp, y1, yb, lin, work,
-                 arel0, jk, jk1, aabs0, aabs1, gd, gr, gnd):
+def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     """Grid steps from k with adaptive RK steps and events, writing the outputs of each,
-    while a contact is closed (or to ``k1`` if not ``exact_free``). At entry ``kx`` (row 0)
-    holds f(x) at ``ag[k]`` (``ag``: (nt, G), the ground components on the grid; ``gnd``:
-    (G_ROWS, G) scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``,
-    ``arel0``, ``gd`` and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
+    while a contact is closed (or to ``k1`` if not ``run.exact``). The model's arrays
+    ``km``, the run's inputs, state, outputs and scratch as in
+    :func:`pounding.integrate.kernel.integrate_chunk`; ``graze_tol`` [m]: how near zero an
+    open gap's peak must come to be located. At entry ``sc.kx`` (row 0) holds f(x) at
+    ``ag[k]`` (``ag``: (nt, G), the ground components on the grid; ``gnd``: (G_ROWS, G)
+    scratch, :data:`pounding.integrate.rhs.G_A0` …); on return x, ``kx``, ``arel0``, ``gd``
+    and ``gr`` are those of the grid point reached (``jk``, ``jk1``: scratch for jerks).
 
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why); also returns at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps
-    in all. One call for a whole contact episode: a call passes some sixty arrays.
+    in all. One call for a whole contact episode.
     """
+    fl, ct, el = km
+    dt = run.dt
+    ag = run.ag
+    rtol = run.rtol
+    atol = run.atol
+    h_max = run.h_max
+    r = fl.r
+    below = fl.below
+    cdof, cw, cgap, ccode, cparams = ct
+    x = st.x
+    committed = st.committed
+    sstate = st.storeys
+    wc = st.contact_work
+    last_f = st.last_force
+    ws_f = st.ws_f
+    ws_i = st.ws_i
+    pk = out.peaks
+    kx, px, ks, ps, ks_b, ps_b, ytmp, y1, yb = (sc.kx, sc.px, sc.ks, sc.ps, sc.ks_b, sc.ps_b,
+                                                sc.ytmp, sc.y1, sc.yb)
+    lin, work, arel0, jk, jk1, aabs0, aabs1, gd, gr, gnd = (sc.lin, sc.work, sc.arel0, sc.jk,
+                                                            sc.jk1, sc.aabs0, sc.aabs1, sc.gd,
+                                                            sc.gr, sc.gnd)
     n = r.shape[0]
     m = x.shape[0]
     nc = cgap.shape[0]
-    ns = s_lo.shape[0]
+    ns = el.lo.shape[0]
     npw = P_CONTACT + nc
     while k < k1:
         # ---------------- grid step k → k + 1: RK steps landing on t_k + dt
@@ -134,9 +154,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 ground_at_grid_end(gnd, G_END)
             else:
                 ground_at(gnd, G_END, s + h)
-            err = rk_step(x, kx, px, h, gnd, s, n, bw, k_band, c_band, m_inv, mr, r,
-                          cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par,
-                          s_zi, sstate, lin, ks, ps, ytmp, y1, atol, rtol)
+            err = rk_step(x, kx, px, h, gnd, s, fl, ct, el, committed, sstate, lin, ks, ps,
+                          ytmp, y1, atol, rtol)
             ws_i[I_NSTEPS] += 1
             if ws_i[I_NSTEPS] > ws_i[I_STEP_BUDGET]:
                 ws_i[I_FAILED] = FAIL_BUDGET
@@ -163,9 +182,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             for c in range(nc):
                 if last_f[c, LF_GRAZED] != 0.0 and gap_row(c, x, n, cdof, cw)[1] < 0.0:
                     last_f[c, LF_GRAZED] = 0.0
-            te, ce, kind = find_event(x, kx, y1, ks, h, n, cdof, cw, cgap, ccode, cparams,
-                                      committed, s_lo, s_hi, s_code, s_par, -1, 0, graze_tol,
-                                      last_f[:, LF_GRAZED])
+            te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, committed, -1, 0,
+                                      graze_tol, last_f[:, LF_GRAZED])
             ev_c = -1
             ev_kind = 0
             h_before = h_acc
@@ -176,8 +194,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                     ws_i[I_FAIL_STEP] = k
                     return -1
                 # locate on real RK steps by the Illinois method, keeping the 'after' side
-                g_lo = event_value(kind, ce, x, n, cdof, cw, cgap, cparams, s_lo, s_hi)
-                g_hi = event_value(kind, ce, y1, n, cdof, cw, cgap, cparams, s_lo, s_hi)
+                g_lo = event_value(kind, ce, x, n, ct, el)
+                g_hi = event_value(kind, ce, y1, n, ct, el)
                 upward = is_upward(kind)
                 lo = 0.0
                 hi = h_acc
@@ -188,12 +206,10 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 if not side_ok:
                     # grazing: both ends on the 'before' side; test the estimate
                     ground_at(gnd, G_END, s + te)
-                    err = rk_step(x, kx, px, te, gnd, s, n, bw, k_band,
-                                  c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
-                                  s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp,
-                                  yb, atol, rtol)
+                    err = rk_step(x, kx, px, te, gnd, s, fl, ct, el, committed, sstate, lin,
+                                  ks_b, ps_b, ytmp, yb, atol, rtol)
                     ws_i[I_NSTEPS] += 1
-                    g_te = event_value(kind, ce, yb, n, cdof, cw, cgap, cparams, s_lo, s_hi)
+                    g_te = event_value(kind, ce, yb, n, ct, el)
                     if (g_te > 0.0) == upward and g_te != 0.0:
                         hi = te
                         g_hi = g_te
@@ -204,16 +220,14 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                     if ev_c >= 0 or false_events > 0:
                         break
                     false_events += 1
-                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, ccode,
-                                              cparams, committed, s_lo, s_hi, s_code, s_par,
-                                              ce, kind, graze_tol, last_f[:, LF_GRAZED])
+                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, committed, ce,
+                                              kind, graze_tol, last_f[:, LF_GRAZED])
                     continue
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
-                g_tol = event_tolerance(kind, ce, n, cdof, cparams, s_hi, atol)
-                h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd,
-                                    s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap,
-                                    ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi,
-                                    sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i)
+                g_tol = event_tolerance(kind, ce, n, cparams, atol)
+                h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px,
+                                    gnd, s, fl, ct, el, committed, sstate, lin, ks, ps, ks_b,
+                                    ps_b, ytmp, y1, yb, atol, rtol, ws_i)
                 if kind == EV_GRAZE:
                     # the step now ends at the peak of the gap's penetration: closed there?
                     d_peak = gap_row(ce, y1, n, cdof, cw)[0] - cgap[ce]
@@ -221,11 +235,11 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                         # yes: the gap closed before the peak; locate that onset in (0, h_acc]
                         g_lo = gap_row(ce, x, n, cdof, cw)[0] - cgap[ce]
                         h_acc, err = locate(EV_ONSET, ce, 0.0, h_acc, g_lo, d_peak,
-                                            0.5 * h_acc, atol[cdof[ce, 0]], dt, x, kx, px, gnd,
-                                            s, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw,
-                                            cgap, ccode, cparams, committed, s_lo, s_hi, s_code,
-                                            s_par, s_zi, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1,
-                                            yb, atol, rtol, ws_i)
+                                            0.5 * h_acc, event_tolerance(EV_ONSET, ce, n,
+                                                                         cparams, atol),
+                                            dt, x, kx, px, gnd, s, fl, ct, el, committed,
+                                            sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb,
+                                            atol, rtol, ws_i)
                         kind = EV_ONSET
                     else:
                         # no: accept the step to the peak, and do not search this gap again
@@ -243,10 +257,8 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                     break
                 h_before = h_acc
                 # any other event earlier in this shorter step?
-                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, cdof, cw, cgap, ccode,
-                                          cparams, committed, s_lo, s_hi, s_code, s_par, ev_c,
-                                          ev_kind,
-                                          graze_tol, last_f[:, LF_GRAZED])
+                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, committed, ev_c,
+                                          ev_kind, graze_tol, last_f[:, LF_GRAZED])
             if ev_kind == EV_GRAZE:
                 ev_c = -1  # nothing happened at the peak of a gap that stayed open
                 ev_kind = 0
@@ -285,29 +297,23 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
                 if abs(aabs0[i]) >= lim or abs(aabs1[i]) >= lim:
                     near = True
             if near:
-                jerk(x, kx[0], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
-                     committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk)
-                jerk(y1, ks[6], n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams,
-                     committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, work, jk1)
+                jerk(x, kx[0], fl, ct, el, committed, sstate, lin, work, jk)
+                jerk(y1, ks[6], fl, ct, el, committed, sstate, lin, work, jk1)
             track_step(t_k + s, h_acc, n, below, x, kx[0, n:], aabs0, jk, y1, ks[6, n:], aabs1,
                        jk1, pk, near)
             for i in range(m):
                 x[i] = y1[i]
             if ns > 0:
-                commit_storeys(x, n, s_lo, s_hi, s_code, s_par, s_zi, sstate)
+                commit_storeys(x, n, el, sstate)
             was_event = ev_c >= 0
             if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN:
                 ws_i[I_NEVENTS] += 1
                 ev_c = -1  # a storey, not a contact: the contact loop must not see it
                 ev_kind = 0
             # commit contact states at the step end; handle the event
-            state_changed = commit_contacts(x, ks[6], t_now, ev_c, ev_kind, n, cdof, cw, cgap,
-                                            ccode, cparams, committed, wc, w_start, imp_row,
-                                            last_f, ws_i, imp, cpeak, cpeak_t, ccount)
+            state_changed = commit_contacts(x, ks[6], t_now, ev_c, ev_kind, n, ct, st, out)
             if state_changed:
-                deriv_call(x, x, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
-                           cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, kx,
-                           px, 0)
+                deriv_call(x, x, gnd, fl, ct, el, committed, sstate, lin, kx, px, 0)
                 for i in range(n):
                     aabs0[i] = kx[0, n + i] + r[i, 0] * a_now
                 add_ground_rest(aabs0, r, gnd, G_NOW, n)
@@ -340,20 +346,18 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
             s = s_new
         for i in range(n):
             arel0[i] = kx[0, n + i]
-        grid_outputs(k + 1, ag, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap,
-                     ccode, cparams, committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f,
-                     u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out, lin)
+        grid_outputs(k + 1, ag, x, kx, fl, ct, el, st, out, lin)
         # every entry of the state, and every work integrated, is in one of the energies:
         # one test a grid step that none stopped being a finite number
         e_sum = 0.0
-        for col in range(e_out.shape[1]):
-            e_sum += e_out[k + 1, col]
+        for col in range(out.energy.shape[1]):
+            e_sum += out.energy[k + 1, col]
         if not abs(e_sum) < np.inf:
             ws_i[I_FAILED] = FAIL_NONFINITE
             ws_i[I_FAIL_STEP] = k
             return -1
         k += 1
-        if exact_free and not any_closed(committed):
+        if run.exact and not any_closed(committed):
             break  # back to exact stepping once every contact is open
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
             break  # this call's share of RK steps is done: back to the caller
@@ -364,13 +368,21 @@ def adaptive_run(k, k1, dt, ag, exact_free, bw, k_band, c_band, m_diag, m_inv, m
 
 
 @njit(**INLINE)
-def grid_outputs(o, ag, x, kx, bw, k_band, c_band, m_diag, r, cdof, cw, cgap, ccode, cparams,
-                 committed, s_lo, s_code, s_par, s_zi, sstate, wc, ws_f, u_out, v_out, acc_out,
-                 pen_out, f_out, vs_out, e_out, lin):
+def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     """Write the outputs of grid point ``o`` (ground components ``ag[o]``) from the state
-    ``x`` and ``kx = f(x)`` after an adaptive grid step."""
+    ``x`` and ``kx = f(x)`` after an adaptive grid step (the model's floors, contacts and
+    element rows ``fl``, ``ct``, ``el``; the run's state ``st`` and outputs ``out``)."""
+    r = fl.r
+    m_diag = fl.m_diag
+    cdof, cw, cgap, ccode, cparams = ct
+    s_lo, _, s_code, s_par, s_zi = el
+    committed = st.committed
+    sstate = st.storeys
+    wc = st.contact_work
+    ws_f = st.ws_f
+    u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out = out[:7]
     n = r.shape[0]
-    band_mv(k_band, c_band, x, n, bw, lin)
+    band_mv(fl.k_band, fl.c_band, x, n, fl.bw, lin)
     a_o = ag[o, 0]
     for i in range(n):
         u_out[o, i] = x[i]

@@ -41,9 +41,10 @@ from pounding.integrate.rhs import INLINE, drift_of, gap_row, law_call, storey_c
 
 
 @njit(**INLINE)
-def commit_storeys(x, n, s_lo, s_hi, s_code, s_par, s_zi, sstate):
-    """Commit every yielding storey's drift and shear at state x (contract step 3 of
-    :mod:`pounding.hysteresis.base`)."""
+def commit_storeys(x, n, el, sstate):
+    """Commit every element row's (yielding storey's, link's) drift and force at state x
+    (contract step 3 of :mod:`pounding.hysteresis.base`)."""
+    s_lo, s_hi, s_code, s_par, s_zi = el
     for q in range(s_lo.shape[0]):
         d, dr = drift_of(s_lo[q], s_hi[q], x, n)
         zi = s_zi[q]
@@ -54,12 +55,24 @@ def commit_storeys(x, n, s_lo, s_hi, s_code, s_par, s_zi, sstate):
 
 
 @njit(**INLINE)
-def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, cdof, cw, cgap, ccode, cparams, committed,
-                    wc, w_start, imp_row, last_f, ws_i, imp, cpeak, cpeak_t, ccount):
+def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
     """Commit every contact's state at the end of an accepted step (state ``x``, ``dx =
     f(x)`` with the states of the step's start) at time ``t_now`` [s], handling the event
-    ``(ev_c, ev_kind)`` that ended the step, if any. Returns True if a contact opened, closed,
-    or changed the branch of a clipped law (f must then be evaluated again)."""
+    ``(ev_c, ev_kind)`` that ended the step, if any: the contacts ``ct``, the run's state
+    ``st`` and outputs ``out`` (:mod:`pounding.integrate.workspace`). Returns True if a
+    contact opened, closed, or changed the branch of a clipped law (f must then be evaluated
+    again)."""
+    cdof, cw, cgap, ccode, cparams = ct
+    committed = st.committed
+    wc = st.contact_work
+    w_start = st.work_at_onset
+    imp_row = st.impact_row
+    last_f = st.last_force
+    ws_i = st.ws_i
+    imp = out.impacts
+    cpeak = out.peak_force
+    cpeak_t = out.peak_force_time
+    ccount = out.impact_count
     nc = cgap.shape[0]
     cap = imp.shape[0]
     state_changed = False

@@ -38,10 +38,11 @@ DP_C = np.array([0.0, C2, C3, C4, C5, 1.0, 1.0])
 
 
 @njit(**NRT_FREE)
-def rk_step(y0, k1, p1, h, gnd, s0, n, bw, k_band, c_band, m_inv, mr, r, cdof,
-            cw, cgap, ccode, cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin,
-            ks, ps, ytmp, y1, atol, rtol):
-    """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0).
+def rk_step(y0, k1, p1, h, gnd, s0, fl, ct, el, committed, sstate, lin, ks, ps, ytmp, y1,
+            atol, rtol):
+    """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0) of
+    the model's floors, contacts and element rows ``fl``, ``ct``, ``el``
+    (:class:`pounding.integrate.kernel_model.KernelArrays`).
 
     ``gnd[G_A0] + gnd[G_SLOPE] * s`` are the ground components at local time s (from the
     grid point); s0 is the local start; ``gnd[G_END]`` their values at the step's end, set
@@ -89,8 +90,7 @@ def rk_step(y0, k1, p1, h, gnd, s0, n, bw, k_band, c_band, m_inv, mr, r, cdof,
                 gnd[G_NOW, g] = gnd[G_END, g]
         else:
             ground_at(gnd, G_NOW, s0 + DP_C[st] * h)
-        deriv(yt, y0, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
-              cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, st)
+        deriv(yt, y0, gnd, fl, ct, el, committed, sstate, lin, ks, ps, st)
     err = 0.0
     for i in range(m):
         e = h * (E1 * ks[0, i] + E3 * ks[2, i] + E4 * ks[3, i] + E5 * ks[4, i]

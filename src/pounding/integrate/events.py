@@ -167,18 +167,19 @@ def quintic_max(f0, d0, q0, f1, d1, q1, h):
 
 
 @njit(**NRT_FREE)
-def event_value(kind, c, y, n, cdof, cw, cgap, cparams, s_lo, s_hi):
+def event_value(kind, c, y, n, ct, el):
     """Event function: δ of contact c (onset, separation), δ̇ (phase switches, the peak of
     an open gap's penetration), the unclipped force of a releasing law (release, engaging
-    again), or the drift rate of yielding storey c (drift reversals)."""
+    again), or the drift rate of element row c (drift reversals); ``ct``, ``el``: the
+    contacts and element rows."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
-        return drift_of(s_lo[c], s_hi[c], y, n)[1]
-    d, v = gap_row(c, y, n, cdof, cw)
+        return drift_of(el.lo[c], el.hi[c], y, n)[1]
+    d, v = gap_row(c, y, n, ct.dof, ct.weight)
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
         return v
     if kind == EV_RELEASE or kind == EV_REENGAGE:
-        return release_value(cparams[c, 0], cparams[c, 1], d - cgap[c], v)
-    return d - cgap[c]
+        return release_value(ct.params[c, 0], ct.params[c, 1], d - ct.gap[c], v)
+    return d - ct.gap[c]
 
 
 @njit(**NRT_FREE)
@@ -214,8 +215,7 @@ def touch_possible(d0, r0, q0, d1, r1, q1, h, tol):
 
 
 @njit(**NRT_FREE)
-def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi,
-               s_code, s_par, skip_c, skip_kind, graze_tol, grazed):
+def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze_tol, grazed):
     """Earliest event in a step, from Hermite interpolants of every contact's δ and δ̇ and
     every yielding storey's drift rate (``k0``: row 0 is f(y0); ``k1``: row 6 is f(y1)).
 
@@ -226,8 +226,14 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
     ``graze_tol`` [m] of closing (its peak is then located on real steps, :func:`locate`;
     skipped for a contact whose ``grazed`` flag is set: one already found not to touch),
     8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
-    (released before δ = 0 / engaged again); (−1, −1, 0) if none.
+    (released before δ = 0 / engaged again); (−1, −1, 0) if none. ``ct``, ``el``: the
+    contacts and element rows.
     """
+    cdof, cw, cgap, ccode, cparams = ct
+    s_lo = el.lo
+    s_hi = el.hi
+    s_code = el.code
+    s_par = el.params
     best_t = 1e300
     best_c = -1
     best_k = 0
@@ -305,10 +311,8 @@ def find_event(y0, k0, y1, k1, h, n, cdof, cw, cgap, ccode, cparams, committed, 
 
 
 @njit(**NRT_FREE)
-def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n, bw,
-           k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo, s_hi,
-           s_code, s_par, s_zi, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol,
-           ws_i):
+def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl, ct, el,
+           committed, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i):
     """Locate an event bracketed in ``(lo, hi]`` (local times from the step start ``s``;
     event function ``g_lo`` on the 'before' side at lo, ``g_hi`` on the 'after' side at hi)
     on actual RK steps from ``x`` by the Illinois method, starting at ``t_try``.
@@ -318,6 +322,7 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
     (:func:`is_upward`), g ≤ 0 otherwise.
     """
     m = x.shape[0]
+    n = fl.m_diag.shape[0]
     npw = ps.shape[1]
     upward = is_upward(kind)
     side = 0
@@ -325,12 +330,10 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
     err_after = 0.0
     for _ in range(60):
         ground_at(gnd, G_END, s + t_try)
-        err = rk_step(x, kx, px, t_try, gnd, s, n, bw, k_band,
-                      c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo,
-                      s_hi, s_code, s_par, s_zi, sstate, lin, ks_b, ps_b, ytmp, yb, atol,
-                      rtol)
+        err = rk_step(x, kx, px, t_try, gnd, s, fl, ct, el, committed, sstate, lin, ks_b,
+                      ps_b, ytmp, yb, atol, rtol)
         ws_i[I_NSTEPS] += 1
-        g = event_value(kind, ce, yb, n, cdof, cw, cgap, cparams, s_lo, s_hi)
+        g = event_value(kind, ce, yb, n, ct, el)
         after = (g > 0.0) if upward else (g <= 0.0)
         if after:
             hi = t_try
@@ -365,10 +368,8 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, n,
     if not have_after:
         # the bracket's after end is the full step (or the grazing test)
         ground_at(gnd, G_END, s + hi)
-        err_after = rk_step(x, kx, px, hi, gnd, s, n, bw, k_band,
-                            c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed,
-                            s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1,
-                            atol, rtol)
+        err_after = rk_step(x, kx, px, hi, gnd, s, fl, ct, el, committed, sstate, lin, ks, ps,
+                            ytmp, y1, atol, rtol)
         ws_i[I_NSTEPS] += 1
     return hi, err_after
 
@@ -382,13 +383,16 @@ def is_upward(kind):
 
 
 @njit(**NRT_FREE)
-def event_tolerance(kind, ce, n, cdof, cparams, s_hi, atol):
+def event_tolerance(kind, ce, n, cparams, atol):
     """Absolute tolerance of an event function: of a drift rate, a gap's rate, a gap, or
-    an unclipped force ``k δ + c δ̇`` (from the tolerances of δ and δ̇)."""
+    an unclipped force ``k δ + c δ̇`` (from the tolerances of δ and δ̇). Every displacement
+    has one absolute tolerance (``atol[0]``) and every velocity another (``atol[n]``), so
+    these are the tolerances of a DOF's motion, whichever DOFs a contact row or an element
+    row joins."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
-        return atol[n + s_hi[ce]]
+        return atol[n]
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
-        return atol[n + cdof[ce, 0]]
+        return atol[n]
     if kind == EV_RELEASE or kind == EV_REENGAGE:
-        return cparams[ce, 0] * atol[cdof[ce, 0]] + cparams[ce, 1] * atol[n + cdof[ce, 0]]
-    return atol[cdof[ce, 0]]
+        return cparams[ce, 0] * atol[0] + cparams[ce, 1] * atol[n]
+    return atol[0]

@@ -55,16 +55,17 @@ def one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1):
 
 
 @njit(**NRT_FREE)
-def floor_rel_acc(j, y, ag, kg, n, bw, k_band, c_band, m_inv, r):
+def floor_rel_acc(j, y, ag, kg, n, fl):
     """Relative acceleration of floor j at state y (grid point kg of the ground components
     ``ag``) with every gap open and every storey linear: ``−(K u + C u̇)_j / m_j −
-    Σ_g R_jg a_g`` (row j of the banded products)."""
+    Σ_g R_jg a_g`` (row j of the banded products of the floors ``fl``)."""
+    bw = fl.bw
     s = 0.0
     for d in range(2 * bw + 1):
         col = j + d - bw
         if 0 <= col < n:
-            s += k_band[d, j] * y[col] + c_band[d, j] * y[n + col]
-    return -s * m_inv[j] - r[j, 0] * ag[kg, 0] - ground_rest(r, j, ag, kg)
+            s += fl.k_band[d, j] * y[col] + fl.c_band[d, j] * y[n + col]
+    return -s * fl.m_inv[j] - fl.r[j, 0] * ag[kg, 0] - ground_rest(fl.r, j, ag, kg)
 
 
 @njit(**NRT_FREE)
@@ -98,9 +99,7 @@ def ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1):
 
 
 @njit(**NRT_FREE)
-def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, m_inv, r,
-             cdof, cw, cgap, graze_tol, below, x, x1, acc, lin, gd, gr, gd1, gr1, wc, ws_f,
-             u_out, v_out, acc_out, pen_out, e_out, pk):
+def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     """Exact grid steps from grid point ``k`` while every gap stays open, writing the
     outputs and peaks of each; returns the grid point whose step could close a gap (that
     step not taken: the caller re-takes it with RK) or ``k1``, or ``−(k + 1)`` if the step
@@ -108,14 +107,36 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
     record value far outside any building's: checked once a step, on the viscous work,
     which sums every entry of the state and the input).
 
-    A small function of its own, so that its loop compiles tight. ``gd``, ``gr``: every
-    contact's δ and δ̇ at grid point k (updated as the steps go); ``graze_tol`` [m]: how
-    near zero a gap's peak inside a step must come to hand the step over; the other arrays
-    as in :func:`pounding.integrate.kernel.integrate_chunk` (``x1``, ``acc``, ``lin``,
-    ``gd1``, ``gr1``: scratch). Peaks: uncoupled floors compute their jerk with the outputs
-    (two multiplications); coupled floors test the samples of |ü| and compute the jerk
-    only beside a sampled peak (:func:`pounding.integrate.peaks.acc_peak_between`).
+    A small function of its own, so that its loop compiles tight. ``sc.gd``, ``sc.gr``:
+    every contact's δ and δ̇ at grid point k (updated as the steps go); ``graze_tol`` [m]:
+    how near zero a gap's peak inside a step must come to hand the step over; the model's
+    floors ``fl`` and contacts ``ct``, the exact step ``fs``, the run's inputs, state,
+    outputs and scratch as in :func:`pounding.integrate.kernel.integrate_chunk` (``x1``,
+    ``acc``, ``lin``, ``gd1``, ``gr1``: scratch). Peaks: uncoupled floors compute their
+    jerk with the outputs (two multiplications); coupled floors test the samples of |ü|
+    and compute the jerk only beside a sampled peak
+    (:func:`pounding.integrate.peaks.acc_peak_between`).
     """
+    dt = run.dt
+    ag = run.ag
+    blk, fops, g0, g1, faa = fs
+    bw = fl.bw
+    k_band = fl.k_band
+    c_band = fl.c_band
+    m_diag = fl.m_diag
+    m_inv = fl.m_inv
+    r = fl.r
+    below = fl.below
+    cdof = ct.dof
+    cw = ct.weight
+    cgap = ct.gap
+    x = st.x
+    wc = st.contact_work
+    ws_f = st.ws_f
+    x1, acc, lin, gd, gr, gd1, gr1 = sc.x1, sc.acc, sc.lin, sc.gd, sc.gr, sc.gd1, sc.gr1
+    u_out, v_out, acc_out, pen_out = out.u, out.v, out.acc, out.pen
+    e_out = out.energy
+    pk = out.peaks
     n = m_diag.shape[0]
     nc = cgap.shape[0]
     nblk = blk.shape[0] - 1
@@ -188,10 +209,8 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                 for qb in range(0, cdof.shape[1], ROW_BLOCK):
                     for q in range(qb, qb + ROW_BLOCK):
                         j = cdof[c, q]
-                        q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, bw, k_band, c_band,
-                                                       m_inv, r)
-                        q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, bw, k_band,
-                                                       c_band, m_inv, r)
+                        q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, fl)
+                        q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, fl)
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
                     ws_f[W_E_INPUT] = e_in
                     ws_f[W_E_DAMP] = e_d
@@ -200,7 +219,7 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
                         # sample after it
                         for i in range(n):
                             acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out,
-                                             acc_out, n, bw, k_band, c_band, m_inv, r, pk)
+                                             acc_out, fl, pk)
                     return k
         # input energy over the step: an exact quadratic form
         e_step = (a0 * lin_i0 + a1 * lin_i1
@@ -280,8 +299,8 @@ def free_run(k, k1, dt, ag, blk, fops, g0, g1, faa, bw, k_band, c_band, m_diag, 
             if anyhit > 0.0:
                 for i in range(n):
                     if acc[i] != 0.0:
-                        track_exact_step(t0, dt, n, i, k, k_entry, below, x, x1, ag,
-                                         r, v_out, acc_out, bw, k_band, c_band, m_inv, pk)
+                        track_exact_step(t0, dt, i, k, k_entry, fl, x, x1, ag, v_out,
+                                         acc_out, pk)
             for i in range(2 * n):
                 x[i] = x1[i]
         # nothing but the viscous dampers takes energy out (every gap open, linear

@@ -9,9 +9,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pounding.integrate.layout import P_CONTACT, ROW_BLOCK
+from pounding.contact.dispatch import PARAMS_SIZE as P_CONTACT_LAW
+from pounding.integrate.layout import ROW_BLOCK
 from pounding.integrate.propagator import FreeStep
-from pounding.integrate.rhs import G_ROWS
 from pounding.memo import Memo
 from pounding.model import PoundingModel
 
@@ -58,45 +58,93 @@ def choose_free_stepping(mode: str, n_dof: int, bw: int) -> bool:
     return mode == "exact"
 
 
-class KernelModel(NamedTuple):
-    """A :class:`~pounding.model.PoundingModel` as the kernel reads it: every array
-    :func:`simulate` passes that depends on the model alone (see
-    :func:`pounding.integrate.kernel.integrate_chunk` for their meaning).
+class Floors(NamedTuple):
+    """The buildings' linear part as the kernel reads it, floor by floor (N floors)."""
 
-    Assembled once per model by :func:`kernel_model` and reused by every later run of it, so
-    a repeated run (a record sweep, a benchmark) pays only for its own outputs; the part
-    that depends on the buildings alone is assembled once for the same building objects
-    (:data:`STRUCTURES`), so the cases of a sweep over gaps, contacts or records share it. The kernel
-    only reads these arrays; they are left writeable because numba compiles a separate
-    signature for read-only ones. Do not modify them.
+    bw: int  #: half-bandwidth of K and C
+    k_band: np.ndarray  #: K of the linear storeys [N/m] in band storage (2 bw + 1, N)
+    c_band: np.ndarray  #: C [N·s/m] in band storage
+    m_diag: np.ndarray  #: lumped floor masses [kg] (N,)
+    m_inv: np.ndarray  #: 1 / floor mass [1/kg] (N,)
+    mr: np.ndarray  #: M R [kg], (N, G)
+    r: np.ndarray  #: influence matrix R of the G ground components, (N, G)
+    below: np.ndarray  #: DOF of the floor below each floor (−1: the ground), (N,)
+
+
+class ContactRows(NamedTuple):
+    """The contacts as the kernel reads them: ``δ_c = Σ_q weight[c, q] u[dof[c, q]] − gap[c]``
+    (rows padded to a multiple of :data:`~pounding.integrate.layout.ROW_BLOCK`) and the
+    law of each (:mod:`pounding.contact.dispatch`)."""
+
+    dof: np.ndarray  #: contact DOFs (n_c, W)
+    weight: np.ndarray  #: signed weights (n_c, W)
+    gap: np.ndarray  #: gaps [m] (n_c,)
+    code: np.ndarray  #: contact-law codes (n_c,)
+    params: np.ndarray  #: contact-law constants (n_c, 3)
+
+
+class ElementRows(NamedTuple):
+    """The yielding storeys and then the links between buildings, rows of one kind
+    (:meth:`pounding.model.PoundingModel.storey_arrays`): each a force between DOF ``lo``
+    (−1: the ground) and ``hi`` from its law."""
+
+    lo: np.ndarray  #: DOF below (−1: the ground) (n_s,)
+    hi: np.ndarray  #: DOF above (n_s,)
+    code: np.ndarray  #: storey-law or link codes (n_s,)
+    params: np.ndarray  #: their constants (n_s, P)
+    z_index: np.ndarray  #: index of each row's internal variable z among the states (−1: none)
+
+
+class KernelArrays(NamedTuple):
+    """Every array the compiled kernel reads that depends on the model alone, in three
+    groups: a function takes the groups it uses (numba passes a tuple as its members), and a
+    new kind of row adds a field to a group, not a parameter to every signature."""
+
+    floors: Floors
+    contacts: ContactRows
+    elements: ElementRows
+
+
+class KernelModel(NamedTuple):
+    """A :class:`~pounding.model.PoundingModel` as the kernel reads it: the
+    :class:`KernelArrays` :func:`simulate` passes to the kernel, and what the Python around
+    it needs of the model (sizes, the dense K and C for the exact step and the first row).
+
+    Assembled once per model by :func:`kernel_model` — the one place that asks the model for
+    its arrays — and reused by every later run of it, so a repeated run (a record sweep, a
+    benchmark) pays only for its own outputs; the part that depends on the buildings alone
+    is assembled once for the same building objects (:data:`STRUCTURES`), so the cases of a
+    sweep over gaps, contacts or records share it. The kernel only reads these arrays; they
+    are left writeable because numba compiles a separate signature for read-only ones. Do
+    not modify them.
     """
 
     n: int  #: floors (degrees of freedom)
-    nz: int  #: internal variables of the yielding storeys (Bouc–Wen z)
-    bw: int  #: half-bandwidth of K and C
+    nz: int  #: internal variables of the yielding storeys and links (Bouc–Wen, Maxwell z)
     K: np.ndarray  #: stiffness of the linear storeys [N/m], (N, N)
-    k_band: np.ndarray  #: K in band storage
-    c_band: np.ndarray  #: C [N·s/m] in band storage
-    m_diag: np.ndarray  #: lumped floor masses [kg]
-    mr: np.ndarray  #: M R [kg], (N, G)
-    r: np.ndarray  #: influence matrix R of the G ground components, (N, G)
-    cdof: np.ndarray  #: contact DOFs (n_c, W)
-    cw: np.ndarray  #: contact weights (n_c, W)
-    cgap: np.ndarray  #: gaps [m]
-    ccode: np.ndarray  #: contact-law codes
-    cparams: np.ndarray  #: contact-law constants
-    s_lo: np.ndarray  #: yielding storeys: DOF below (−1 ground)
-    s_hi: np.ndarray  #: yielding storeys: DOF above
-    s_code: np.ndarray  #: storey-law codes
-    s_par: np.ndarray  #: storey-law constants
-    s_zi: np.ndarray  #: index of each storey's z (−1 none)
-    below: np.ndarray  #: DOF of the floor below each floor (−1: the ground)
+    C: np.ndarray  #: damping [N·s/m], (N, N)
+    arrays: KernelArrays  #: what the compiled kernel reads
     #: exact grid steps already built, by step [s] (shared by the models of the same
     #: buildings, :data:`STRUCTURES`)
     free_steps: dict[float, FreeStep]
     #: output steps [s] whose building and link periods passed their check
     #: (:mod:`pounding.integrate.periods`; shared like ``free_steps``)
     periods_checked: set[float]
+
+    @property
+    def floors(self) -> Floors:
+        """:attr:`KernelArrays.floors`."""
+        return self.arrays.floors
+
+    @property
+    def contacts(self) -> ContactRows:
+        """:attr:`KernelArrays.contacts`."""
+        return self.arrays.contacts
+
+    @property
+    def elements(self) -> ElementRows:
+        """:attr:`KernelArrays.elements`."""
+        return self.arrays.elements
 
 
 _KERNEL_MODELS: dict[int, KernelModel] = {}
@@ -144,11 +192,11 @@ def _assemble_kernel_model(model: PoundingModel) -> KernelModel:
     key = (tuple(map(id, model.buildings)), tuple(link.describe() for link in model.links),
            r.shape, r.tobytes())
     structure = STRUCTURES.get(key, lambda: _assemble_structure(model),
-                               size=lambda st: 8 * 8 * st["n"] ** 2, keep=model.buildings)
+                               size=lambda st: 8 * 8 * st.n ** 2, keep=model.buildings)
     cdof, cw, cgap, ccode, cparams = model.contact_arrays()
     cdof, cw = padded_rows(cdof, cw)
-    return KernelModel(**structure, cdof=cdof, cw=cw, cgap=cgap, ccode=ccode,
-                       cparams=np.ascontiguousarray(cparams))
+    contacts = ContactRows(cdof, cw, cgap, ccode, np.ascontiguousarray(cparams))
+    return structure._replace(arrays=structure.arrays._replace(contacts=contacts))
 
 
 def padded_rows(cdof: np.ndarray, cw: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -166,9 +214,9 @@ def padded_rows(cdof: np.ndarray, cw: np.ndarray) -> tuple[np.ndarray, np.ndarra
     return np.ascontiguousarray(dof), np.ascontiguousarray(wt)
 
 
-def _assemble_structure(model: PoundingModel) -> dict:
-    """The fields of a :class:`KernelModel` that depend on the buildings (and the links
-    between them) alone."""
+def _assemble_structure(model: PoundingModel) -> KernelModel:
+    """A :class:`KernelModel` of the buildings (and the links between them) alone: its
+    contacts empty, for :func:`_assemble_kernel_model` to fill in."""
     sys_ = model.system
     M, C = sys_.M, sys_.C
     r = influence_matrix(sys_.r)
@@ -178,11 +226,15 @@ def _assemble_structure(model: PoundingModel) -> dict:
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
     bw = half_bandwidth(K, C)
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
-    return dict(n=r.shape[0], nz=int(np.sum(s_zi >= 0)), bw=bw, K=K, k_band=band_storage(K, bw),
-                c_band=band_storage(C, bw), m_diag=m_diag, mr=np.ascontiguousarray(M @ r),
-                r=np.ascontiguousarray(r), s_lo=s_lo, s_hi=s_hi, s_code=s_code,
-                s_par=np.ascontiguousarray(s_par), s_zi=s_zi, below=floor_below(model),
-                free_steps={}, periods_checked=set())
+    floors = Floors(bw, band_storage(K, bw), band_storage(C, bw), m_diag, 1.0 / m_diag,
+                    np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model))
+    elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi)
+    no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
+                              np.zeros((0, ROW_BLOCK)), np.zeros(0),
+                              np.zeros(0, dtype=np.int64), np.zeros((0, P_CONTACT_LAW)))
+    return KernelModel(n=r.shape[0], nz=int(np.sum(s_zi >= 0)), K=K, C=np.asarray(C),
+                       arrays=KernelArrays(floors, no_contacts, elements),
+                       free_steps={}, periods_checked=set())
 
 
 def influence_matrix(r: np.ndarray) -> np.ndarray:
@@ -208,20 +260,5 @@ def peak_margin(km: KernelModel, step: float) -> float:
     (ω h)²/8; the factor 4 covers what a bound on the modes and the ground's linear pieces
     leave). Floors whose sampled peak is further below their peak so far are not searched
     between samples: no peak there can beat it."""
-    w2 = float(np.max(np.sum(np.abs(km.K), axis=1) / km.m_diag)) if km.n else 0.0
+    w2 = float(np.max(np.sum(np.abs(km.K), axis=1) / km.floors.m_diag)) if km.n else 0.0
     return min(1.0, 0.5 * w2 * step * step)
-
-
-def kernel_scratch(km: KernelModel, m: int) -> tuple[np.ndarray, ...]:
-    """The kernel's scratch arrays for a model (see
-    :func:`pounding.integrate.kernel.integrate_chunk`), ``m`` the length of the state."""
-    n, nc = km.n, km.cgap.size
-    npw = P_CONTACT + nc  # the power rows (layout.P_INPUT … P_CONTACT + c)
-    stages = np.zeros((2, 7, m))
-    powers = np.zeros((2, 7, npw))
-    states = np.zeros((4, m))
-    gaps = np.zeros((4, nc))
-    floors = np.zeros((6, n))
-    return (stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)), np.zeros((1, npw)),
-            *states, np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n), *gaps, *floors,
-            1.0 / km.m_diag, np.zeros((G_ROWS, km.r.shape[1])))

@@ -159,28 +159,32 @@ def track_uncoupled_step(t0, h, i, u0, v0, aa0, u1, v1, aa1, ag, j, r, k, c, m_i
 
 
 @njit(**NRT_FREE)
-def track_exact_step(t0, h, n, i, k, k_entry, below, x0, x1, ag, r, v_out, acc_out,
-                     bw, k_band, c_band, m_inv, pk):
+def track_exact_step(t0, h, i, k, k_entry, fl, x0, x1, ag, v_out, acc_out, pk):
     """The peaks of floor i over the exact step from grid point k (time ``t0``) to k + 1,
     where a sign test of :func:`pounding.integrate.exact_steps.free_run` found one may lie:
     displacement and drift from the states, acceleration from the samples k − 1, k, k + 1
-    of the outputs (the step before k only if it was exact too, ``k − 1 ≥ k_entry``)."""
+    of the outputs (the step before k only if it was exact too, ``k − 1 ≥ k_entry``);
+    ``fl`` the floors (:class:`pounding.integrate.kernel_model.Floors`)."""
     o = k + 1
-    track_floor(t0, h, n, i, below, x0, x1, ag, k, r, acc_out[k], acc_out[o], pk)
+    n = fl.m_diag.shape[0]
+    track_floor(t0, h, n, i, fl.below, x0, x1, ag, k, fl.r, acc_out[k], acc_out[o], pk)
     if k >= 1:
         ak = abs(acc_out[k, i])
         if ak >= abs(acc_out[k - 1, i]) and ak >= abs(acc_out[o, i]) and ak > 0.0:
-            acc_peak_between(i, k, o, t0, h, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv,
-                             r, pk)
+            acc_peak_between(i, k, o, t0, h, ag, v_out, acc_out, fl, pk)
             if k - 1 >= k_entry:
-                acc_peak_between(i, k - 1, k, t0 - h, h, ag, v_out, acc_out, n, bw, k_band,
-                                 c_band, m_inv, r, pk)
+                acc_peak_between(i, k - 1, k, t0 - h, h, ag, v_out, acc_out, fl, pk)
 
 
 @njit(**NRT_FREE)
-def row_jerk(i, j, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r):
+def row_jerk(i, j, ag, v_out, acc_out, fl):
     """Jerk of floor i at output row j of an exact step [m/s³]:
     ``−(K u̇ + C ü)_i / m_i`` from the outputs (no contact closed, no yielding storey)."""
+    n = fl.m_diag.shape[0]
+    bw = fl.bw
+    k_band = fl.k_band
+    c_band = fl.c_band
+    r = fl.r
     s = 0.0
     for d in range(2 * bw + 1):
         col = i + d - bw
@@ -188,15 +192,20 @@ def row_jerk(i, j, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r):
             s += k_band[d, i] * v_out[j, col] + c_band[d, i] * (acc_out[j, col]
                                                                  - r[col, 0] * ag[j, 0]
                                                                  - ground_rest(r, col, ag, j))
-    return -s * m_inv[i]
+    return -s * fl.m_inv[i]
 
 
 @njit(**NRT_FREE)
-def row_snap(i, j, j0, j1, h, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r):
+def row_snap(i, j, j0, j1, h, ag, v_out, acc_out, fl):
     """Second time derivative of floor i's absolute acceleration at output row j, the end
     ``j0`` or ``j1`` of an exact step of length h [m/s⁴]: ``−(K ü + C u⃛)_i / m_i`` with the
     relative ``ü`` and ``u⃛ = jerk − R ȧ_g`` (``ȧ_g`` the ground's slope over the step: the
     one-sided value inside it, the ground being linear there)."""
+    n = fl.m_diag.shape[0]
+    bw = fl.bw
+    k_band = fl.k_band
+    c_band = fl.c_band
+    r = fl.r
     s = 0.0
     for d in range(2 * bw + 1):
         col = i + d - bw
@@ -204,28 +213,25 @@ def row_snap(i, j, j0, j1, h, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, 
             rel = acc_out[j, col] - r[col, 0] * ag[j, 0] - ground_rest(r, col, ag, j)
             slope = (r[col, 0] * (ag[j1, 0] - ag[j0, 0])
                      + ground_rest(r, col, ag, j1) - ground_rest(r, col, ag, j0)) / h
-            u3 = row_jerk(col, j, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r) - slope
+            u3 = row_jerk(col, j, ag, v_out, acc_out, fl) - slope
             s += k_band[d, i] * rel + c_band[d, i] * u3
-    return -s * m_inv[i]
+    return -s * fl.m_inv[i]
 
 
 @njit(**NRT_FREE)
-def acc_peak_between(i, j0, j1, t0, h, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r,
-                     pk):
+def acc_peak_between(i, j0, j1, t0, h, ag, v_out, acc_out, fl, pk):
     """The absolute-acceleration peak of floor i inside the exact step from output row
     ``j0`` (time ``t0``) to ``j1``, from the quintic Hermite of the acceleration, its jerk
     and its second derivative (error O(h⁶); the cubic through the acceleration and the
     jerk was 6×10⁻⁵ off at a 10 ms step where higher modes ring after an impact)."""
-    jk0 = row_jerk(i, j0, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r)
-    jk1 = row_jerk(i, j1, ag, v_out, acc_out, n, bw, k_band, c_band, m_inv, r)
+    jk0 = row_jerk(i, j0, ag, v_out, acc_out, fl)
+    jk1 = row_jerk(i, j1, ag, v_out, acc_out, fl)
     if (jk0 > 0.0) == (jk1 > 0.0):
         return  # |a| monotonic over the step (update_quintic's first test, before the snap)
     update_quintic(pk, i, PK_A, t0, h, acc_out[j0, i], jk0,
-                   row_snap(i, j0, j0, j1, h, ag, v_out, acc_out, n, bw, k_band, c_band,
-                            m_inv, r),
+                   row_snap(i, j0, j0, j1, h, ag, v_out, acc_out, fl),
                    acc_out[j1, i], jk1,
-                   row_snap(i, j1, j0, j1, h, ag, v_out, acc_out, n, bw, k_band, c_band,
-                            m_inv, r))
+                   row_snap(i, j1, j0, j1, h, ag, v_out, acc_out, fl))
 
 
 @njit(**NRT_FREE)

@@ -174,18 +174,18 @@ def storey_call(code, par, s, d, dr, z, d_c, v_c):
 
 
 @njit(**NRT_FREE)
-def first_unknown_law(ccode, s_code, s_par):
+def first_unknown_law(ct, el):
     """The first contact (its index c) or element row (``n_c + s``) whose law code no
     compiled law implements, or −1: the dispatchers return the failure value NaN for such
     a code (never another law's force), here tried once at a probe point (contacts at
     unit constants and state, storeys and links at zero drift, rate and ``z``, where every
     law is finite)."""
-    nc = ccode.shape[0]
+    nc = ct.code.shape[0]
     for c in range(nc):
-        if np.isnan(law_call(ccode[c], 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 1.0)[0]):
+        if np.isnan(law_call(ct.code[c], 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 1.0)[0]):
             return c
-    for s in range(s_code.shape[0]):
-        if np.isnan(storey_call(s_code[s], s_par, s, 0.0, 0.0, 0.0, 0.0, 0.0)[0]):
+    for s in range(el.code.shape[0]):
+        if np.isnan(storey_call(el.code[s], el.params, s, 0.0, 0.0, 0.0, 0.0, 0.0)[0]):
             return nc + s
     return -1
 
@@ -204,19 +204,29 @@ def stored_call(code, p0, p1, p2, delta, slip):
 
 
 @njit(**INLINE)
-def deriv(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
-          committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
+def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     """dy = f(y) for the structure with contacts; power = [input, viscous, storey work,
     per-contact F δ̇]; the ground components at ``gnd[G_NOW]``.
 
-    ``y_start``: the state at the start of the step (``y`` itself outside a step). Writes row
-    ``row`` of ``dy`` and ``power`` (2-D arrays: no views in the hot loop); ``m_inv``: 1 /
-    floor mass. Contact forces and yielding storeys use their committed states (read only).
+    ``fl``, ``ct``, ``el``: the floors, contacts and element rows of the model
+    (:class:`pounding.integrate.kernel_model.KernelArrays`). ``y_start``: the state at the
+    start of the step (``y`` itself outside a step). Writes row ``row`` of ``dy`` and
+    ``power`` (2-D arrays: no views in the hot loop). Contact forces and yielding storeys use
+    their committed states (read only).
 
     Inlined at its one call site in the Dormand–Prince step (where a call would pass some
     twenty arrays as flattened structures, 35 ns a call); called through
     :func:`deriv_call` elsewhere.
     """
+    n = fl.m_diag.shape[0]
+    bw = fl.bw
+    k_band = fl.k_band
+    c_band = fl.c_band
+    m_inv = fl.m_inv
+    mr = fl.mr
+    r = fl.r
+    cdof, cw, cgap, ccode, cparams = ct
+    s_lo, s_hi, s_code, s_par, s_zi = el
     nc = cgap.shape[0]
     # linear part: acc = −M⁻¹(K u + C v) − R a_g, K (linear storeys only) and C banded
     # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work; the first ground
@@ -318,16 +328,13 @@ def deriv(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, 
 
 
 @njit(**NRT_FREE)
-def deriv_call(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
-               cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row):
+def deriv_call(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     """:func:`deriv`, called: where the step loop needs f at a grid point or an event."""
-    deriv(y, y_start, gnd, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
-          committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, dy, power, row)
+    deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row)
 
 
 @njit(**NRT_FREE)
-def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, committed, s_lo,
-         s_hi, s_code, s_par, s_zi, sstate, lin, work, out):
+def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     """Rate of the absolute floor accelerations [m/s³] at state ``x`` with ``dx = f(x)``.
 
     Differentiating the equations of motion along the motion (the ground term cancels:
@@ -339,10 +346,14 @@ def jerk(x, dx, n, bw, k_band, c_band, m_inv, cdof, cw, cgap, ccode, cparams, co
     ``Ḟ = (∂F/∂δ) δ̇ + (∂F/∂δ̇) δ̈`` from its law's tangents at the committed state.
     ``work``: scratch of length 2N; ``out``: (N,) written.
     """
+    n = fl.m_diag.shape[0]
+    m_inv = fl.m_inv
+    cdof, cw, cgap, ccode, cparams = ct
+    s_lo, s_hi, s_code, s_par, s_zi = el
     for i in range(n):
         work[i] = x[n + i]
         work[n + i] = dx[n + i]
-    band_mv(k_band, c_band, work, n, bw, lin)
+    band_mv(fl.k_band, fl.c_band, work, n, fl.bw, lin)
     for i in range(n):
         out[i] = lin[0, i] + lin[1, i]
     for s in range(s_lo.shape[0]):

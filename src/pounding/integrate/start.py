@@ -9,6 +9,7 @@ import numpy as np
 from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
 from pounding.integrate.kernel_model import KernelModel
 from pounding.integrate.layout import PK_COLUMNS
+from pounding.integrate.workspace import KernelOutputs
 from pounding.model import PoundingModel
 
 def initial_state(model: PoundingModel, u0: np.ndarray | None,
@@ -32,10 +33,10 @@ def initial_state(model: PoundingModel, u0: np.ndarray | None,
     return x
 
 
-def initial_storeys(model: PoundingModel, u0: np.ndarray,
+def initial_storeys(km: KernelModel, u0: np.ndarray,
                     v0: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Committed ``(drift, shear)`` of every yielding storey and link at t = 0, and their
-    ``z``.
+    ``z`` (the element rows of the model's :class:`KernelModel`).
 
     A storey given an initial drift is taken as loaded monotonically to it from rest (its
     law followed from zero), so a drift beyond yield starts on the yield branch. A link
@@ -45,7 +46,7 @@ def initial_storeys(model: PoundingModel, u0: np.ndarray,
     from pounding.devices.laws import DEVICE_MIN
     from pounding.hysteresis.dispatch import drive_path, storey_trial
 
-    lo, hi, code, par, zi = model.storey_arrays()
+    lo, hi, code, par, zi = km.elements
     state = np.zeros((lo.size, 2))
     z = np.zeros(int(np.sum(zi >= 0)))
     v = np.zeros_like(u0) if v0 is None else v0
@@ -64,32 +65,34 @@ def initial_storeys(model: PoundingModel, u0: np.ndarray,
 
 
 def write_initial_row(model: PoundingModel, km: KernelModel, x: np.ndarray,
-                       sstate: np.ndarray, u_out: np.ndarray, v_out: np.ndarray,
-                       acc_out: np.ndarray, pen_out: np.ndarray, vs_out: np.ndarray,
-                       e_out: np.ndarray, at_rest: bool) -> None:
-    """Row 0 of the histories: the state at t = 0 (the kernel writes the rows after it)."""
-    n, ns = km.n, km.s_lo.size
+                      sstate: np.ndarray, out: KernelOutputs, at_rest: bool) -> None:
+    """Row 0 of the histories ``out``: the state at t = 0 (the kernel writes the rows after
+    it)."""
+    u_out, v_out, acc_out, pen_out, e_out = out.u, out.v, out.acc, out.pen, out.energy
+    vs_out = out.element_force
+    el, m_diag = km.elements, km.floors.m_diag
+    n, ns = km.n, el.lo.size
     e_out[0] = 0.0
     vs_out[0] = sstate[:, 1]
     if at_rest:
         u_out[0] = 0.0
         v_out[0] = 0.0
         acc_out[0] = 0.0
-        pen_out[0] = 0.0 - km.cgap  # (+0.0, not −0.0, for a zero gap)
+        pen_out[0] = 0.0 - km.contacts.gap  # (+0.0, not −0.0, for a zero gap)
         return
     u, v = x[:n], x[n:2 * n]
     u_out[0] = u
     v_out[0] = v
     pen_out[0] = model.contact_penetration(u)
     storey_force = np.zeros(n)
-    np.add.at(storey_force, km.s_hi, sstate[:, 1])
-    lower = km.s_lo >= 0
-    np.add.at(storey_force, km.s_lo[lower], -sstate[lower, 1])
-    acc_out[0] = -(km.K @ u + model.system.C @ v + storey_force) / km.m_diag
-    e_out[0, 1] = 0.5 * v @ (km.m_diag * v)
+    np.add.at(storey_force, el.hi, sstate[:, 1])
+    lower = el.lo >= 0
+    np.add.at(storey_force, el.lo[lower], -sstate[lower, 1])
+    acc_out[0] = -(km.K @ u + km.C @ v + storey_force) / m_diag
+    e_out[0, 1] = 0.5 * v @ (m_diag * v)
     e_out[0, 2] = 0.5 * u @ km.K @ u + sum(
-        _recoverable(int(km.s_code[s]), km.s_par, s, sstate[s, 0],
-                     x[2 * n + km.s_zi[s]] if km.s_zi[s] >= 0 else 0.0, sstate[s, 1])
+        _recoverable(int(el.code[s]), el.params, s, sstate[s, 0],
+                     x[2 * n + el.z_index[s]] if el.z_index[s] >= 0 else 0.0, sstate[s, 1])
         for s in range(ns))
 
 
