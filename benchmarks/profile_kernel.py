@@ -44,7 +44,9 @@ _LOOP = dict(cache=False, error_model="numpy", fastmath={"contract"}, _nrt=False
 
 
 def kernel_arguments(model: Any, duration: float = 2.0) -> dict[str, Any]:
-    """The keyword arguments ``simulate`` passes to ``kernel.integrate_chunk`` for model."""
+    """The arguments ``simulate`` passes to ``kernel.integrate_chunk`` for model, by name
+    (``run``, ``km``, ``fs``, ``st``, ``out``, ``sc``: the named tuples of
+    :mod:`pounding.integrate.workspace` and :mod:`pounding.integrate.kernel_model`)."""
     caught: dict[str, Any] = {}
     real = integrate.integrate_chunk
     names = real.py_func.__code__.co_varnames[:real.py_func.__code__.co_argcount]
@@ -62,39 +64,33 @@ def kernel_arguments(model: Any, duration: float = 2.0) -> dict[str, Any]:
 
 
 @njit(**_LOOP)
-def _loop_rk_step(calls, y, kx, px, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
-                  cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps,
-                  ytmp, y1, atol, rtol):
+def _loop_rk_step(calls, y, kx, px, gnd, fl, ct, el, committed, sstate, lin, ks, ps, ytmp, y1,
+                  atol, rtol):
     total = 0.0
     for i in range(calls):
         h = 1e-4 * (1.0 + 1e-9 * i)  # not loop-invariant: nothing can be hoisted
-        total += dormand_prince.rk_step(y, kx, px, h, 0.1, 0.0, 0.0, 0.1, n, bw, k_band, c_band,
-                                 m_inv, mr, r, cdof, cw, cgap, ccode, cparams, committed, s_lo,
-                                 s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, ytmp, y1,
-                                 atol, rtol)
+        total += dormand_prince.rk_step(y, kx, px, h, gnd, 0.0, fl, ct, el, committed, sstate,
+                                        lin, ks, ps, ytmp, y1, atol, rtol)
     return total
 
 
 @njit(**_LOOP)
-def _loop_deriv(calls, y, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode, cparams,
-                committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps):
+def _loop_deriv(calls, y, gnd, fl, ct, el, committed, sstate, lin, ks, ps):
     total = 0.0
+    n = fl.m_diag.shape[0]
     for _ in range(calls):
         y[0] += 1e-12
-        rhs.deriv(y, y, 0.1, n, bw, k_band, c_band, m_inv, mr, r, cdof, cw, cgap, ccode,
-                      cparams, committed, s_lo, s_hi, s_code, s_par, s_zi, sstate, lin, ks, ps, 1)
+        rhs.deriv(y, y, gnd, fl, ct, el, committed, sstate, lin, ks, ps, 1)
         total += ks[1, n]
     return total
 
 
 @njit(**_LOOP)
-def _loop_find_event(calls, y0, ks, y1, n, cdof, cw, cgap, ccode, cparams, committed, s_lo,
-                     s_hi, grazed):
+def _loop_find_event(calls, y0, ks, y1, n, ct, el, committed, grazed):
     total = 0.0
     for i in range(calls):
-        te, _, _ = events.find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, cdof, cw,
-                                     cgap, ccode, cparams, committed, s_lo, s_hi, -1, 0, 2e-10,
-                                     grazed)
+        te, _, _ = events.find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, ct, el,
+                                     committed, -1, 0, 2e-10, grazed)
         total += te
     return total
 
@@ -125,36 +121,35 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
                             f"{st.rk_steps} RK steps, {st.rejected} rejected, "
                             f"{res.n_impacts} impacts)"))
     a = kernel_arguments(bench.sdof_pair_model(law))
-    n = a["r"].shape[0]
-    m = a["x"].shape[0]
-    npw = layout.P_CONTACT + a["cgap"].shape[0]
-    closed = a["committed"].copy()
+    fl, ct, el = a["km"]
+    st, run = a["st"], a["run"]
+    n = fl.m_diag.shape[0]
+    m = st.x.shape[0]
+    npw = layout.P_CONTACT + ct.gap.shape[0]
+    closed = st.committed.copy()
     closed[0, V0] = 0.3  # a contact closing at 0.3 m/s
     y = np.zeros(m)
     y[0], y[n], y[n + 1] = 0.021, 0.2, -0.1  # 1 mm into the 20 mm gap, closing
     ks, ps = np.zeros((7, m)), np.zeros((7, npw))
     kx, px = np.zeros((1, m)), np.zeros((1, npw))
     lin = np.zeros((2, n))
-    m_inv = 1.0 / a["m_diag"]
-    structure = (a["bw"], a["k_band"], a["c_band"], m_inv, a["mr"], a["r"])
-    contacts = (a["cdof"], a["cw"], a["cgap"], a["ccode"], a["cparams"])
-    storeys = (a["s_lo"], a["s_hi"], a["s_code"], a["s_par"], a["s_zi"], a["sstate"], lin)
-    rhs.deriv(y, y, 0.1, n, *structure, *contacts, closed, *storeys, kx, px, 0)
-    rk = per_call_ns(_loop_rk_step, calls, y, kx, px, n, *structure, *contacts, closed,
-                     *storeys, ks, ps, np.zeros(m), np.zeros(m), a["atol"], a["rtol"])
+    gnd = np.full((rhs.G_ROWS, fl.r.shape[1]), 0.1)
+    sstate = st.storeys
+    rhs.deriv(y, y, gnd, fl, ct, el, closed, sstate, lin, kx, px, 0)
+    rk = per_call_ns(_loop_rk_step, calls, y, kx, px, gnd, fl, ct, el, closed, sstate, lin,
+                     ks, ps, np.zeros(m), np.zeros(m), run.atol, run.rtol)
     rows.append(("one Dormand–Prince step (contact closed)", f"{rk:.0f} ns"))
     for label, state in (("one right-hand side, contact closed", closed),
                          ("one right-hand side, contact open", np.zeros_like(closed))):
-        ns = per_call_ns(_loop_deriv, calls * 5, y, n, *structure, *contacts, state, *storeys,
-                         ks, ps)
+        ns = per_call_ns(_loop_deriv, calls * 5, y, gnd, fl, ct, el, state, sstate, lin, ks,
+                         ps)
         rows.append((label, f"{ns:.1f} ns"))
-    none = tuple(c[:0] for c in contacts)
-    ns = per_call_ns(_loop_deriv, calls * 5, y, n, *structure, *none, closed[:0], *storeys,
+    none = type(ct)(*(np.ascontiguousarray(c[:0]) for c in ct))
+    ns = per_call_ns(_loop_deriv, calls * 5, y, gnd, fl, none, el, closed[:0], sstate, lin,
                      ks, ps)
     rows.append(("one right-hand side, no contact element", f"{ns:.1f} ns"))
-    ns = per_call_ns(_loop_find_event, calls * 5, y, ks, y + 1e-6, n, a["cdof"], a["cw"],
-                     a["cgap"], a["ccode"], a["cparams"], closed, a["s_lo"], a["s_hi"],
-                     np.zeros(a["cgap"].shape[0]))
+    ns = per_call_ns(_loop_find_event, calls * 5, y, ks, y + 1e-6, n, ct, el, closed,
+                     np.zeros(ct.gap.shape[0]))
     rows.append(("one event search (contact closed)", f"{ns:.1f} ns"))
     return rows
 

@@ -142,7 +142,7 @@ class Link:
               z: NDArray[np.float64] | float = 0.0) -> NDArray[np.float64]:
         """Force [N] at relative displacement ``d`` [m] and rate ``ḋ`` [m/s] (Maxwell: at
         spring deformation ``z`` [m]), written out in NumPy (independent of the kernel's
-        compiled law: the reference solver uses it)."""
+        compiled law: tests check the kernel's link forces against it)."""
         d, rate, z = (np.asarray(x, dtype=float) for x in (d, rate, z))
         if self.kind == "viscous":
             return self.c * np.sign(rate) * np.abs(rate) ** self.alpha

@@ -36,8 +36,7 @@ def check_contact_periods(model: PoundingModel, step: float) -> None:
 
     floor = CONTACT_PERIOD_FLOOR * step
     for c in model.contacts:
-        m1 = c.left.effective_mass(model.buildings[c.left.building].masses)
-        m2 = c.right.effective_mass(model.buildings[c.right.building].masses)
+        m1, m2 = (_apparent_mass(model, point) for point in (c.left, c.right))
         k = c.law.secant_stiffness(REFERENCE_PENETRATION)
         period = 2.0 * math.pi * math.sqrt(m_effective(m1, m2) / k)
         if not period >= floor:
@@ -47,6 +46,14 @@ def check_contact_periods(model: PoundingModel, step: float) -> None:
                 f"ring with a period of {period:.3g} s, below {CONTACT_PERIOD_FLOOR:g} of the "
                 f"{step:g} s output step: no building moves that fast; check the floor "
                 "masses and the contact stiffness")
+
+
+def _apparent_mass(model: PoundingModel, point) -> float:  # noqa: ANN001 (a contact point)
+    """The mass a contact point meets [kg]: of its building's floors, or infinite for a
+    point that moves with no building (a moat wall's side, building −1)."""
+    if point.building < 0:
+        return math.inf
+    return point.effective_mass(model.buildings[point.building].masses)
 
 
 def fastest_dofs(model: PoundingModel) -> tuple[np.ndarray, np.ndarray]:

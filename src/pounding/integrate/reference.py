@@ -8,33 +8,52 @@ or opening, the penetration rate changing sign inside a contact, a clipped conta
 returning to zero or rising from it, a storey yielding or unloading — to commit the state there (contract steps 3–4) and restart. Peak forces are
 found on the dense output of each segment and refined with a bounded scalar search.
 
-Yielding storeys are written here independently of :mod:`pounding.hysteresis` (which the
-kernel uses): each has one state ``h`` integrated with the motion. For the bilinear storey
-``h`` is the shear itself, in *rate form* — ``V̇ = k ḋ`` while elastic, ``V̇ = b k ḋ`` on the
-yield branch — switching at located events (the shear reaching ``b k d ± (1 − b) F_y``, and
-the drift rate changing sign on the yield branch), instead of the kernel's return mapping.
-For Bouc–Wen ``h = z`` with the evolution law coded afresh.
+Nothing here comes from the compiled kernel's side: the contact, storey and link laws are
+written out afresh from their equations (:mod:`pounding.integrate.reference_laws`), and so
+are the output grid, the ground acceleration between record samples, the starting state and
+the floors' order (:mod:`pounding.integrate.reference_inputs`); what it shares with the
+kernel is the model (its matrices, contacts and their kinematics) and the record. Yielding
+storeys each have one state ``h`` integrated with the motion: for the bilinear storey ``h``
+is the shear itself, in *rate form* — ``V̇ = k ḋ`` while elastic, ``V̇ = b k ḋ`` on the yield
+branch — switching at located events (the shear reaching ``b k d ± (1 − b) F_y``, and the
+drift rate changing sign on the yield branch), instead of the kernel's return mapping; for
+Bouc–Wen ``h = z``.
 """
 
 from __future__ import annotations
 
 import time
-from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from pounding.contact.base import STATE_SIZE, V0, V0_MIN
-from pounding.contact.dispatch import contact_stored_energy, contact_trial
+from pounding.contact.base import V0_MIN
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
-from pounding.integrate import ground_on_grid, grid_step, initial_state
-from pounding.integrate.grid import check_ground_components
-from pounding.integrate.kernel_model import influence_matrix
-from pounding.integrate.layout import ENERGY_COLUMNS, IMP_COLUMNS, PK_COLUMNS
+from pounding.integrate.reference_inputs import (
+    check_components,
+    floor_below,
+    ground_at,
+    influence,
+    initial_state,
+    knots,
+    output_step,
+    output_times,
+)
+from pounding.integrate.reference_laws import (
+    contact_force,
+    link_force,
+    link_recoverable,
+    maxwell_spring_rate,
+    release_function,
+    storey_recoverable,
+    storey_shear,
+    storeys as yielding_storeys,
+    stored_energy,
+)
 from pounding.model import PoundingModel
-from pounding.result import Result, SolverStats
+from pounding.result import ENERGY_NAMES, IMPACT_COLUMNS, Result, SolverStats
 
 REFERENCE_RTOL: float = 1e-10
 
@@ -48,16 +67,17 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
 
     Slow: minutes for a long record. Outputs at the same grid as :func:`simulate`.
     """
-    check_ground_components(model, motion)
-    step = grid_step(motion.dt, dt)
+    check_components(model, motion)
+    step = output_step(motion.dt, dt)
     t_end = motion.duration if duration is None else float(duration)
-    ground = ground_on_grid(motion, step, t_end)  # (nt,), or (nt, G) for G components
-    nt = ground.shape[0]
-    ag = ground.reshape(nt, -1)
-    t_grid = np.arange(nt) * step
+    t_grid = output_times(step, t_end)
+    nt = t_grid.size
+    rec_dt, ground_knots = knots(motion, float(t_grid[-1]))
+    ag = ground_at(t_grid, rec_dt, ground_knots)  # (nt, G)
+    ground = ag[:, 0].copy() if ag.shape[1] == 1 else ag
     sys_ = model.system
     M, C = sys_.M, sys_.C
-    r = influence_matrix(sys_.r)  # R (N, G): M ü + … = −M R a_g
+    r = influence(model)  # R (N, G): M ü + … = −M R a_g
     K = model.linear_stiffness()
     n = r.shape[0]
     minv = np.linalg.inv(M)
@@ -66,29 +86,28 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     nc = len(contacts)
     cdof, cw = model.contact_kinematics()
     gap = np.array([c.gap for c in contacts])
-    codes = [c.law.code for c in contacts]
-    params = [c.law.params() for c in contacts]
-    committed = np.zeros((nc, STATE_SIZE))
-    scratch = np.zeros(STATE_SIZE)
+    laws = [c.law for c in contacts]
+    v0s = np.zeros(nc)  # closing velocity of each contact's impact (0: open)
+    slips = np.zeros(nc)  # the bilinear element's committed plastic offset
     phase = np.zeros(nc, dtype=int)  # +1 approaching, −1 restitution (closed contacts)
     # laws clipped at F = 0 before δ = 0 (Kelvin–Voigt without tension): where the clip
     # bites, an event; released[c] while the clipped force is zero
-    release = [c.law.release_function() for c in contacts]
+    release = [release_function(law) for law in laws]
     released = np.zeros(nc, dtype=bool)
-    storeys = _storeys(model)
+    storeys = yielding_storeys(model)
     ns = len(storeys)
     yld = np.zeros(ns, dtype=int)  # bilinear: 0 elastic, ±1 on the yield branch
     u_scale = max(min(gap) if nc else 0.0, 1e-3)
     v_scale = max(motion.pgv, 1e-3)
     e_scale = max(float(np.sum(M)) * v_scale**2, 1.0)
-    # links between buildings: force from Link.force (NumPy, not the kernel's compiled law);
-    # a Maxwell link's spring deformation is a state
+    # links between buildings (reference_laws.link_force); a Maxwell link's spring
+    # deformation is a state
     links = model.links
     offs = model.system.offsets
     l_lo = [int(offs[a[0]] + a[1]) for a, _ in (lk.ends for lk in links)]
     l_hi = [int(offs[b[0]] + b[1]) for _, b in (lk.ends for lk in links)]
-    l_zi = list(np.cumsum([lk.has_internal_variable for lk in links]) - 1)
-    nzl = sum(lk.has_internal_variable for lk in links)
+    l_zi = list(np.cumsum([lk.kind == "maxwell" for lk in links]) - 1)
+    nzl = sum(lk.kind == "maxwell" for lk in links)
     i_h = 2 * n                 # hysteretic states
     i_z = 2 * n + ns            # Maxwell links' spring deformations
     i_e = 2 * n + ns + nzl      # E_in, E_visc, W_storey, W_links, W_c...
@@ -105,10 +124,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         f = np.zeros(nc)
         for c in range(nc):
             # between events a contact keeps its committed status (see the kernel)
-            if committed[c, V0] > 0.0:
-                d, rate = kin(y, c)
-                f[c] = contact_trial(codes[c], params[c], max(d, 1e-300), rate,
-                                     committed[c], scratch)[0]
+            if v0s[c] > 0.0:
+                f[c] = contact_force(laws[c], *kin(y, c), v0s[c], slips[c])[0]
         return f
 
     def drift(y: NDArray[np.float64], s: int) -> tuple[float, float]:
@@ -122,16 +139,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         v = np.zeros(ns)
         hdot = np.zeros(ns)
         for s, st in enumerate(storeys):
-            d, dd = drift(y, s)
-            h = y[i_h + s]
-            if st.kind == "bilinear":
-                v[s] = h
-                hdot[s] = (st.b * st.k if yld[s] else st.k) * dd
-            else:
-                v[s] = st.alpha * st.k * d + (1.0 - st.alpha) * st.fy * h
-                # Wen (1976): dy ż = A ḋ − β|ḋ||z|^(n−1) z − γ ḋ|z|^n, A = 1
-                hdot[s] = (dd - st.beta * abs(dd) * abs(h) ** (st.n - 1.0) * h
-                           - st.gamma * dd * abs(h) ** st.n) / (st.fy / st.k)
+            v[s], hdot[s] = storey_shear(st, *drift(y, s), y[i_h + s], yld[s])
         return v, hdot
 
     def link_forces(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64],
@@ -141,10 +149,10 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         for q, lk in enumerate(links):
             d = y[l_hi[q]] - y[l_lo[q]]
             rate[q] = y[n + l_hi[q]] - y[n + l_lo[q]]
-            z = y[i_z + l_zi[q]] if lk.has_internal_variable else 0.0
-            f[q] = float(lk.force(d, rate[q], z))
-            if lk.has_internal_variable:
-                zdot[l_zi[q]] = lk.spring_rate(rate[q], z)
+            z = y[i_z + l_zi[q]] if lk.kind == "maxwell" else 0.0
+            f[q] = link_force(lk, d, rate[q], z)
+            if lk.kind == "maxwell":
+                zdot[l_zi[q]] = maxwell_spring_rate(lk, rate[q], z)
         return f, rate, zdot
 
     def add_link_loads(p: NDArray[np.float64], f: NDArray[np.float64]) -> None:
@@ -185,11 +193,11 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         for c in range(nc):
             def ev(t, y, c=c):
                 return kin(y, c)[0]
-            ev.direction = 1.0 if committed[c, V0] == 0.0 else -1.0
+            ev.direction = 1.0 if v0s[c] == 0.0 else -1.0
             ev.terminal = True
             ev.tag = ("gap", c)
             evs.append(ev)
-            if committed[c, V0] > 0.0:
+            if v0s[c] > 0.0:
                 def evr(t, y, c=c):
                     return kin(y, c)[1]
                 evr.direction = -1.0 if phase[c] > 0 else 1.0
@@ -198,7 +206,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 evs.append(evr)
                 if release[c] is not None:
                     def evc(t, y, c=c):
-                        return release[c](*kin(y, c), committed[c, V0])
+                        return release[c](*kin(y, c))
                     evc.direction = 1.0 if released[c] else -1.0
                     evc.terminal = True
                     evc.tag = ("release", c)
@@ -250,7 +258,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                          "only")
     out = np.zeros((nt, y.size))
     out[0] = y
-    below = np.array(_floor_below(model), dtype=np.int64)
+    below = floor_below(model)
 
     def floor_values(yt: NDArray[np.float64]) -> NDArray[np.float64]:
         """|u|, |drift| and |absolute acceleration| of every floor at the states ``yt``
@@ -271,7 +279,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         a_abs = -minv_k @ u - minv_c @ v + minv @ p
         return np.abs(np.stack([u, u - lower, a_abs]))
 
-    peaks = np.zeros((n, PK_COLUMNS))
+    peaks = np.zeros((n, 6))  # |u|, |drift|, |absolute acceleration|, each with its time
     peaks[:, 0::2] = floor_values(y[:, None])[:, :, 0].T
     f_out = np.zeros((nt, nc))
     vs_out = np.zeros((nt, ns))
@@ -282,14 +290,14 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     w_start = np.zeros(nc)
     events = 0
     start = time.perf_counter()
-    # record intervals on the grid: integrate [t_i, t_{i+1}] where a_g is linear
-    rec_step = motion.dt
-    per = int(round(rec_step / step))
-    for i in range(0, nt - 1, per):
-        j = min(i + per, nt - 1)
-        t0, t1 = t_grid[i], t_grid[j]
-        a0 = ag[i]
-        slope = (ag[j] - ag[i]) / (t1 - t0)
+    # record intervals: integrate [t_i, t_{i+1}] where a_g is linear (its samples at the ends)
+    t_last = float(t_grid[-1])
+    i = 0
+    while i * rec_dt < t_last - 1e-9 * step:
+        t0, t1 = i * rec_dt, min((i + 1) * rec_dt, t_last)
+        a0 = ground_knots[i]
+        slope = (ground_knots[i + 1] - ground_knots[i]) / rec_dt
+        i += 1
         rhs = rhs_factory(t0, a0, slope)
         t = t0
         while True:
@@ -298,20 +306,19 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                             dense_output=True)
             t_stop = float(sol.t[-1])
             # outputs on the grid inside this segment
-            k_lo = int(np.ceil((t - t0) / step - 1e-9)) + i
-            k_hi = int(np.floor((t_stop - t0) / step + 1e-9)) + i
-            for k in range(max(k_lo, i), min(k_hi, j) + 1):
+            k_lo = int(np.ceil(t / step - 1e-9))
+            k_hi = min(int(np.floor(t_stop / step + 1e-9)), nt - 1)
+            for k in range(k_lo, k_hi + 1):
                 yk = sol.sol(t_grid[k])
                 out[k] = yk
                 f_out[k] = forces(yk)
                 vs_out[k] = storey_shears(yk)[0]
                 lf_out[k] = link_forces(yk)[0]
-                stored[k] = sum(contact_stored_energy(codes[c], params[c], kin(yk, c)[0],
-                                                      committed[c])
-                                for c in range(nc) if committed[c, V0] > 0.0)
+                stored[k] = sum(stored_energy(laws[c], kin(yk, c)[0], slips[c])
+                                for c in range(nc) if v0s[c] > 0.0)
             # peak force over the segment for every closed contact
             for c in range(nc):
-                if committed[c, V0] > 0.0 and open_row[c] >= 0 and t_stop > t:
+                if v0s[c] > 0.0 and open_row[c] >= 0 and t_stop > t:
                     def neg_f(s: float, c: int = c) -> float:
                         ys = sol.sol(s)
                         return -forces(ys)[c]
@@ -352,16 +359,15 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 released[c] = not released[c]
                 row = impacts[open_row[c]]
                 row[2] = t if released[c] else np.nan
-                row[7] = max(-kin(y, c)[1], 0.0) / committed[c, V0] if released[c] else np.nan
-            elif tag[0] == "gap" and committed[tag[1], V0] == 0.0:
+                row[7] = max(-kin(y, c)[1], 0.0) / v0s[c] if released[c] else np.nan
+            elif tag[0] == "gap" and v0s[tag[1]] == 0.0:
                 c = tag[1]
                 d, rate = kin(y, c)
-                committed[c] = 0.0
-                committed[c, V0] = max(rate, V0_MIN)
+                v0s[c] = max(rate, V0_MIN)  # contract step 3: the closing velocity
+                slips[c] = 0.0
                 phase[c] = 1
-                f0 = contact_trial(codes[c], params[c], max(d, 1e-300), rate, committed[c],
-                                   scratch)[0]
-                impacts.append([c, t, np.nan, committed[c, V0], f0, t, 0.0, np.nan, np.nan])
+                f0 = contact_force(laws[c], d, rate, v0s[c], 0.0)[0]
+                impacts.append([c, t, np.nan, v0s[c], f0, t, 0.0, np.nan, np.nan])
                 open_row[c] = len(impacts) - 1
                 w_start[c] = y[i_e + 4 + c]
             elif tag[0] == "gap":
@@ -370,27 +376,26 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 row = impacts[open_row[c]]
                 if np.isnan(row[2]):  # (not already ended by a release)
                     row[2] = t
-                    row[7] = max(-rate, 0.0) / committed[c, V0]
+                    row[7] = max(-rate, 0.0) / v0s[c]
                 row[8] = y[i_e + 4 + c] - w_start[c]
                 open_row[c] = -1
-                committed[c] = 0.0
+                v0s[c] = 0.0
+                slips[c] = 0.0
                 phase[c] = 0
                 released[c] = False
             else:
                 c = tag[1]
                 d, rate = kin(y, c)
-                contact_trial(codes[c], params[c], d, rate, committed[c], scratch)
-                committed[c] = scratch
+                slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
                 impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
                 phase[c] = -phase[c]
             if t >= t1:
                 break
         # commit states of closed contacts at the interval end (contract step 4)
         for c in range(nc):
-            if committed[c, V0] > 0.0:
+            if v0s[c] > 0.0:
                 d, rate = kin(y, c)
-                contact_trial(codes[c], params[c], d, rate, committed[c], scratch)
-                committed[c] = scratch
+                slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
                 impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
     wall = time.perf_counter() - start
     u_out = out[:, :n]
@@ -409,18 +414,12 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     recov = np.zeros(nt)
     for s, st in enumerate(storeys):
         d = u_out[:, st.upper] - (u_out[:, st.lower] if st.lower >= 0 else 0.0)
-        if st.kind == "bilinear":
-            recov += vs_out[:, s] ** 2 / (2.0 * st.k)
-        else:
-            z = out[:, i_h + s]
-            recov += 0.5 * st.alpha * st.k * d**2 + 0.5 * (1 - st.alpha) * st.fy**2 / st.k * z**2
+        recov += storey_recoverable(st, d, out[:, i_h + s])
     recov_links = np.zeros(nt)
     for q, lk in enumerate(links):
-        if lk.kind == "kelvin":
-            recov_links += 0.5 * lk.k * (u_out[:, l_hi[q]] - u_out[:, l_lo[q]]) ** 2
-        elif lk.kind == "maxwell":
-            recov_links += 0.5 * lk.k * out[:, i_z + l_zi[q]] ** 2
-    energy = np.zeros((nt, ENERGY_COLUMNS))
+        z = out[:, i_z + l_zi[q]] if lk.kind == "maxwell" else np.zeros(nt)
+        recov_links += link_recoverable(lk, u_out[:, l_hi[q]] - u_out[:, l_lo[q]], z)
+    energy = np.zeros((nt, len(ENERGY_NAMES)))
     energy[:, 0] = out[:, i_e]
     energy[:, 1] = 0.5 * np.einsum("ki,ij,kj->k", v_out, M, v_out)
     energy[:, 2] = 0.5 * np.einsum("ki,ij,kj->k", u_out, K, u_out) + recov + recov_links
@@ -430,7 +429,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     energy[:, 6] = out[:, i_e + 2] - recov
     energy[:, 7] = out[:, i_e + 3] - recov_links
     pen = model.contact_penetration(u_out)
-    imp = np.array(impacts, dtype=float).reshape(-1, IMP_COLUMNS)
+    imp = np.array(impacts, dtype=float).reshape(-1, len(IMPACT_COLUMNS))
     stats = SolverStats(solver="scipy-reference", rtol=rtol, events=events, wall_time=wall)
     return Result(model=model, motion=motion, dt=step, ground=ground, displacement=u_out,
                   velocity=v_out, abs_acceleration=acc, penetration=pen, contact_force=f_out,
@@ -439,15 +438,6 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                                     if st.kind != "bilinear"] + list(out[-1, i_z:i_e])),
                   link_force=lf_out,
                   located_peaks=peaks)
-
-
-def _floor_below(model: PoundingModel) -> list[int]:
-    """The DOF below each floor (−1: the ground), from the building definitions."""
-    out = []
-    for p, b in enumerate(model.buildings):
-        off = int(model.system.offsets[p])
-        out += [off + j - 1 if j > 0 else -1 for j in range(b.n)]
-    return out
 
 
 def _around(ts: NDArray[np.float64], k: int) -> tuple[float, float]:
@@ -477,44 +467,3 @@ def _update_peaks(peaks: NDArray[np.float64], dense, t0: float, t1: float, value
             if best > peaks[i, 2 * q]:
                 peaks[i, 2 * q] = best
                 peaks[i, 2 * q + 1] = t_best
-
-
-class _Storey(NamedTuple):
-    kind: str
-    lower: int
-    upper: int
-    k: float
-    fy: float
-    b: float = 0.0
-    alpha: float = 0.0
-    n: float = 1.0
-    beta: float = 0.5
-    gamma: float = 0.5
-
-
-def _storeys(model: PoundingModel) -> list[_Storey]:
-    """The yielding storeys, read from the building definitions (not the kernel arrays)."""
-    from pounding.hysteresis import Bilinear, BoucWen
-
-    out = []
-    offsets = model.system.offsets
-    for p, b in enumerate(model.buildings):
-        law = b.storey_law
-        if law is None:
-            continue
-        # only the storeys that follow the law (a base-isolated building: the isolation
-        # storey); the others are in the linear stiffness matrix
-        ys = list(b.yielding)
-        fy = law.yield_forces(b.stiffnesses[ys])
-        for r, j in enumerate(ys):
-            lo = int(offsets[p] + j - 1) if j > 0 else -1
-            hi = int(offsets[p] + j)
-            k = float(b.stiffnesses[j])
-            if isinstance(law, Bilinear):
-                out.append(_Storey("bilinear", lo, hi, k, float(fy[r]), b=law.hardening))
-            elif isinstance(law, BoucWen):
-                out.append(_Storey("bouc-wen", lo, hi, k, float(fy[r]), alpha=law.alpha,
-                                   n=law.n, beta=law.beta, gamma=law.gamma))
-            else:
-                raise ValueError(f"reference: no reference for storey law {law!r}")
-    return out

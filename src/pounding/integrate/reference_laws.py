@@ -1,0 +1,211 @@
+"""The SciPy reference's own force laws: every contact law, storey law and link written out
+in plain Python from its published equation and the law object's constants — not the
+compiled trials the kernel runs (:mod:`pounding.contact.dispatch`,
+:mod:`pounding.hysteresis.dispatch`, :mod:`pounding.devices.laws`), so that a
+kernel-versus-reference test checks those too.
+
+Contact laws (δ > 0 the penetration [m], δ̇ its rate [m/s], ``v0`` the closing velocity at
+onset; the contract of :mod:`pounding.contact.base`):
+
+* linear spring ``F = k δ``; Kelvin–Voigt ``F = k δ + c δ̇`` (Anagnostopoulos 1988), clipped
+  at zero unless it may pull (``tension``); modified Kelvin–Voigt ``k δ + c δ̇`` approaching,
+  ``k δ`` separating (Mahmoud & Jankowski 2011);
+* Hertz ``k_h δⁿ`` (Davis 1992); Hunt–Crossley ``k_h δⁿ (1 + χ δ̇ / v0)``, clipped at zero
+  (Hunt & Crossley 1975); Jankowski's ``k_h δ^1.5 + c δ̇`` approaching, ``k_h δ^1.5``
+  separating, ``c = 2 ζ sqrt(k_h sqrt(δ) m_eff)`` (Jankowski 2005, seed eqs 17–18);
+* the bilinear impact element (Muthukumar 2003): a spring ``K2`` beside an elastic–
+  perfectly-plastic spring of stiffness ``K1 − K2`` and yield force ``(K1 − K2) δy`` whose
+  force cannot be negative; its plastic offset is the state carried from one committed
+  instant to the next.
+
+Storey laws: the bilinear storey in rate form (``V̇ = k ḋ`` elastic, ``b k ḋ`` on the yield
+branch, switched at located events) and the Bouc–Wen storey's evolution law (Wen 1976),
+each with its own state integrated with the motion. Links: ``F = c |ḋ|^α sgn ḋ``
+(viscous), ``k d + c ḋ`` (Kelvin), and ``F = k z`` with ``ż = ḋ − sgn F (|F|/c)^(1/α)``
+(Maxwell).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import NamedTuple
+
+import numpy as np
+
+from pounding.contact import (
+    BilinearImpact,
+    Hertz,
+    HuntCrossley,
+    KelvinVoigt,
+    LinearSpring,
+    ModifiedKelvinVoigt,
+    NonlinearViscoelastic,
+)
+from pounding.contact.base import ContactLaw
+from pounding.devices import Link
+from pounding.model import PoundingModel
+
+TINY: float = 1e-300
+"""A penetration just above zero [m], where a closed contact is evaluated at δ ≤ 0."""
+
+
+def contact_force(law: ContactLaw, delta: float, rate: float, v0: float,
+                  slip: float) -> tuple[float, float]:
+    """Force [N] of a closed contact at ``(δ, δ̇)`` (δ ≤ 0 taken as just above zero), its
+    impact's closing velocity ``v0`` [m/s] and the bilinear element's committed plastic
+    offset ``slip`` [m]; and that offset after this trial (the others keep 0).
+
+    Raises
+    ------
+    ValueError
+        A law class with no reference here (one line naming it): no other law stands in.
+    """
+    d = max(delta, TINY)
+    if isinstance(law, LinearSpring):
+        return law.k * d, slip
+    if isinstance(law, KelvinVoigt):
+        f = law.k * d + law.c * rate
+        return (f if law.tension else max(f, 0.0)), slip
+    if isinstance(law, ModifiedKelvinVoigt):
+        return law.k * d + (law.c * rate if rate > 0.0 else 0.0), slip
+    if isinstance(law, Hertz):
+        return law.k_h * d ** law.n, slip
+    if isinstance(law, HuntCrossley):
+        return max(law.k_h * d ** law.n * (1.0 + law.chi * rate / v0), 0.0), slip
+    if isinstance(law, NonlinearViscoelastic):
+        elastic = law.k_h * d ** 1.5
+        if rate > 0.0:
+            return elastic + 2.0 * law.zeta * math.sqrt(law.k_h * math.sqrt(d) * law.m_eff) \
+                * rate, slip
+        return elastic, slip
+    if isinstance(law, BilinearImpact):
+        kp = law.K1 - law.K2
+        plastic = kp * (d - slip)  # the elasto-plastic spring's trial force
+        if plastic > kp * law.delta_y:  # yielding: the offset follows
+            return law.K2 * d + kp * law.delta_y, d - law.delta_y
+        if plastic < 0.0:  # unloaded past zero force: the offset follows the other way
+            return law.K2 * d, d
+        return law.K2 * d + plastic, slip
+    raise ValueError(f"reference: no reference force for contact law {type(law).__name__}")
+
+
+def stored_energy(law: ContactLaw, delta: float, slip: float) -> float:
+    """Elastic energy [J] a closed contact at penetration δ would give back (zero for
+    δ ≤ 0): the area under its elastic spring (for the bilinear element, the ``K2`` spring
+    and the elastic part of the elasto-plastic one)."""
+    if delta <= 0.0:
+        return 0.0
+    if isinstance(law, (LinearSpring, KelvinVoigt, ModifiedKelvinVoigt)):
+        return 0.5 * law.k * delta**2
+    if isinstance(law, (Hertz, HuntCrossley)):
+        return law.k_h * delta ** (law.n + 1.0) / (law.n + 1.0)
+    if isinstance(law, NonlinearViscoelastic):
+        return law.k_h * delta**2.5 / 2.5
+    if isinstance(law, BilinearImpact):
+        kp = law.K1 - law.K2
+        plastic = min(max(kp * (delta - slip), 0.0), kp * law.delta_y)
+        return 0.5 * law.K2 * delta**2 + 0.5 * plastic**2 / kp
+    raise ValueError(f"reference: no reference energy for contact law {type(law).__name__}")
+
+
+def release_function(law: ContactLaw) -> Callable[[float, float], float] | None:
+    """For a Kelvin–Voigt law clipped at zero (no tension, a dashpot): ``g(δ, δ̇) = k δ +
+    c δ̇``, whose downward zero is where the bodies part with the spring still compressed
+    and whose upward zero is where they engage again; None for every other law."""
+    if isinstance(law, KelvinVoigt) and not law.tension and law.c > 0.0:
+        k, c = law.k, law.c
+        return lambda delta, rate: k * delta + c * rate
+    return None
+
+
+class Storey(NamedTuple):
+    """A yielding storey as the reference reads it from its building."""
+
+    kind: str  #: "bilinear" or "bouc-wen"
+    lower: int  #: global DOF below (−1: the ground)
+    upper: int  #: global DOF above
+    k: float  #: elastic stiffness [N/m]
+    fy: float  #: yield force [N]
+    b: float = 0.0  #: bilinear: hardening ratio
+    alpha: float = 0.0  #: Bouc–Wen: post-yield ratio
+    n: float = 1.0  #: Bouc–Wen: smoothness
+    beta: float = 0.5  #: Bouc–Wen: loop shape
+    gamma: float = 0.5  #: Bouc–Wen: loop shape
+
+
+def storeys(model: PoundingModel) -> list[Storey]:
+    """The yielding storeys, read from the building definitions (not the kernel arrays):
+    only the storeys that follow their building's law (a base-isolated building: its
+    isolation storey); the others are in the linear stiffness matrix."""
+    from pounding.hysteresis import Bilinear, BoucWen
+
+    out = []
+    offsets = model.system.offsets
+    for p, b in enumerate(model.buildings):
+        law = b.storey_law
+        if law is None:
+            continue
+        ys = list(b.yielding)
+        fy = law.yield_forces(b.stiffnesses[ys])
+        for r, j in enumerate(ys):
+            lo = int(offsets[p] + j - 1) if j > 0 else -1
+            hi = int(offsets[p] + j)
+            k = float(b.stiffnesses[j])
+            if isinstance(law, Bilinear):
+                out.append(Storey("bilinear", lo, hi, k, float(fy[r]), b=law.hardening))
+            elif isinstance(law, BoucWen):
+                out.append(Storey("bouc-wen", lo, hi, k, float(fy[r]), alpha=law.alpha,
+                                  n=law.n, beta=law.beta, gamma=law.gamma))
+            else:
+                raise ValueError(f"reference: no reference for storey law {law!r}")
+    return out
+
+
+def storey_shear(st: Storey, drift: float, rate: float, h: float,
+                 yielding: int) -> tuple[float, float]:
+    """Shear [N] of a yielding storey at drift ``d`` and rate ``ḋ`` with its state ``h`` (the
+    bilinear storey's shear itself, in rate form; Bouc–Wen's ``z``), and the rate of ``h``.
+    ``yielding``: the bilinear storey's branch (0 elastic, ±1 yielding)."""
+    if st.kind == "bilinear":
+        return h, (st.b * st.k if yielding else st.k) * rate
+    # Wen (1976): d_y ż = A ḋ − β |ḋ| |z|^(n−1) z − γ ḋ |z|^n, A = 1, d_y = F_y / k
+    hdot = (rate - st.beta * abs(rate) * abs(h) ** (st.n - 1.0) * h
+            - st.gamma * rate * abs(h) ** st.n) / (st.fy / st.k)
+    return st.alpha * st.k * drift + (1.0 - st.alpha) * st.fy * h, hdot
+
+
+def storey_recoverable(st: Storey, drift: np.ndarray, h: np.ndarray) -> np.ndarray:
+    """Elastic energy [J] a yielding storey gives back: ``V²/(2k)`` bilinear; the two
+    springs ``½ α k d² + ½ (1 − α) F_y d_y z²`` of Bouc–Wen."""
+    if st.kind == "bilinear":
+        return h**2 / (2.0 * st.k)
+    return 0.5 * st.alpha * st.k * drift**2 + 0.5 * (1.0 - st.alpha) * st.fy**2 / st.k * h**2
+
+
+def link_force(link: Link, d: float, rate: float, z: float) -> float:
+    """Force [N] of a link at relative displacement ``d`` [m] and rate ``ḋ`` [m/s] (a
+    Maxwell link: at its spring's deformation ``z`` [m])."""
+    if link.kind == "viscous":
+        return math.copysign(link.c * abs(rate) ** link.alpha, rate) if rate != 0.0 else 0.0
+    if link.kind == "kelvin":
+        return float(link.k) * d + link.c * rate
+    if link.kind == "maxwell":
+        return float(link.k) * z
+    raise ValueError(f"reference: no reference for link kind {link.kind!r}")
+
+
+def maxwell_spring_rate(link: Link, rate: float, z: float) -> float:
+    """``ż`` [m/s] of a Maxwell link: the relative velocity less the dashpot's,
+    ``sgn F (|F|/c)^(1/α)`` with ``F = k z``."""
+    f = float(link.k) * z
+    return rate - math.copysign((abs(f) / link.c) ** (1.0 / link.alpha), f)
+
+
+def link_recoverable(link: Link, d: np.ndarray, z: np.ndarray) -> np.ndarray:
+    """Elastic energy [J] of a link's spring: ``½ k d²`` (Kelvin), ``½ k z²`` (Maxwell)."""
+    if link.kind == "kelvin":
+        return 0.5 * float(link.k) * d**2
+    if link.kind == "maxwell":
+        return 0.5 * float(link.k) * z**2
+    return np.zeros_like(d)
