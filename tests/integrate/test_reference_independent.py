@@ -28,7 +28,12 @@ from pounding.contact import (
     NonlinearViscoelastic,
 )
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
-from pounding.integrate.reference_inputs import ground_at, knots, output_step, output_times
+from pounding.integrate.reference_inputs import (
+    ground_at,
+    knots,
+    output_step,
+    output_times,
+)
 from pounding.integrate.reference_laws import contact_force, stored_energy
 
 REFERENCE = ("pounding.integrate.reference", "pounding.integrate.reference_laws",

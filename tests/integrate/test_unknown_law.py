@@ -12,22 +12,30 @@ import dataclasses
 import math
 from typing import ClassVar
 
+import numpy as np
 import pytest
 
 from pounding import PoundingModel, simulate
 from pounding.contact import LinearSpring
 from pounding.contact.dispatch import CONTACT_LAW_CODES, law_trial, stored_energy
 from pounding.devices import Link
-from pounding.devices.laws import DEVICE_CODES, device_rate_terms, device_stored, device_trial
+from pounding.devices.laws import (
+    DEVICE_CODES,
+    device_rate_terms,
+    device_stored,
+    device_trial,
+)
 from pounding.ground_motion import el_centro
 from pounding.hysteresis import Bilinear
-from pounding.hysteresis.dispatch import STOREY_LAW_CODES, storey_recoverable, storey_trial
+from pounding.hysteresis.dispatch import (
+    STOREY_LAW_CODES,
+    storey_recoverable,
+    storey_trial,
+)
 from pounding.integrate import IntegrationError
 from pounding.integrate.kernel_model import kernel_model
 from pounding.model import ContactSpec
 from pounding.structure import ShearBuilding
-
-import numpy as np
 
 KV = ContactSpec("kelvin-voigt", k=9.3e8, e=0.65)
 

@@ -31,7 +31,11 @@ from pounding.contact.base import (
     V0,
 )
 from pounding.contact.bilinear import bilinear_impact_trial
-from pounding.contact.hertz import hertz_trial, hunt_crossley_trial, nonlinear_viscoelastic_trial
+from pounding.contact.hertz import (
+    hertz_trial,
+    hunt_crossley_trial,
+    nonlinear_viscoelastic_trial,
+)
 from pounding.contact.linear import (
     kelvin_voigt_trial,
     linear_spring_trial,

@@ -152,5 +152,14 @@ def respond_drift_path(law: StoreyLaw | None, stiffness: float, drift: ArrayLike
     return v
 
 
-__all__ = ["STOREY_LAW_CODES", "check_storey_law", "storey_trial", "storey_recoverable",
-           "respond_drift_path", "drive_path", "STATE_SIZE", "P_K", "P_FY"]
+__all__ = [
+    "P_FY",
+    "P_K",
+    "STATE_SIZE",
+    "STOREY_LAW_CODES",
+    "check_storey_law",
+    "drive_path",
+    "respond_drift_path",
+    "storey_recoverable",
+    "storey_trial",
+]

@@ -30,21 +30,27 @@ from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
     HISTORY_MEMORY_FRACTION,
+    check_ground_components,
     check_history_size,
     grid_step,
-    check_ground_components,
     ground_on_grid,
     ground_on_grid_memo,
     history_bytes,
     physical_memory,
 )
 from pounding.integrate.kernel import integrate_chunk
-from pounding.integrate.periods import (
-    check_building_periods,
-    check_contact_periods,
-    check_link_periods,
-)
 from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
+from pounding.integrate.kernel_model import (
+    EXACT_FREE_MAX_DOF,
+    NO_FREE_STEP,
+    KernelModel,
+    band_storage,
+    choose_free_stepping,
+    floor_below,
+    half_bandwidth,
+    kernel_model,
+    peak_margin,
+)
 from pounding.integrate.layout import (
     FAIL_BUDGET,
     FAIL_NONFINITE,
@@ -62,16 +68,10 @@ from pounding.integrate.layout import (
     I_STEP_BUDGET,
     PK_COLUMNS,
 )
-from pounding.integrate.kernel_model import (
-    EXACT_FREE_MAX_DOF,
-    NO_FREE_STEP,
-    KernelModel,
-    band_storage,
-    choose_free_stepping,
-    floor_below,
-    half_bandwidth,
-    kernel_model,
-    peak_margin,
+from pounding.integrate.periods import (
+    check_building_periods,
+    check_contact_periods,
+    check_link_periods,
 )
 from pounding.integrate.propagator import FreeStep, free_step
 from pounding.integrate.start import (
@@ -81,19 +81,45 @@ from pounding.integrate.start import (
     initial_storeys,
     write_initial_row,
 )
-from pounding.integrate.workspace import RunInputs, kernel_scratch, new_outputs, new_state
+from pounding.integrate.workspace import (
+    RunInputs,
+    kernel_scratch,
+    new_outputs,
+    new_state,
+)
 from pounding.model import PoundingModel
 from pounding.result import Result, SolverStats
 from pounding.validation import positive
 
 __all__ = [
-    "DEFAULT_OUTPUT_STEP", "DEFAULT_RTOL", "EXACT_FREE_MAX_DOF", "HISTORY_MEMORY_FRACTION",
-    "CALL_WORK_NS", "IntegrationError", "KernelModel", "band_storage", "check_building_periods",
-    "check_contact_periods", "check_link_periods",
-    "check_ground_components", "check_history_size", "choose_free_stepping",
-    "call_sizes", "default_step_budget", "floor_below",
-    "grid_step", "ground_on_grid", "half_bandwidth", "history_bytes", "initial_state", "initial_storeys",
-    "kernel_model", "kernel_scratch", "peak_margin", "physical_memory", "simulate",
+    "CALL_WORK_NS",
+    "DEFAULT_OUTPUT_STEP",
+    "DEFAULT_RTOL",
+    "EXACT_FREE_MAX_DOF",
+    "HISTORY_MEMORY_FRACTION",
+    "IntegrationError",
+    "KernelModel",
+    "band_storage",
+    "call_sizes",
+    "check_building_periods",
+    "check_contact_periods",
+    "check_ground_components",
+    "check_history_size",
+    "check_link_periods",
+    "choose_free_stepping",
+    "default_step_budget",
+    "floor_below",
+    "grid_step",
+    "ground_on_grid",
+    "half_bandwidth",
+    "history_bytes",
+    "initial_state",
+    "initial_storeys",
+    "kernel_model",
+    "kernel_scratch",
+    "peak_margin",
+    "physical_memory",
+    "simulate",
 ]
 
 invalidate_if_stale([sys.modules[name] for name in KERNEL_MODULES])

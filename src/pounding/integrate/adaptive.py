@@ -44,8 +44,8 @@ from pounding.integrate.layout import (
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
-    I_FAIL_STEP,
     I_CALL_STEPS,
+    I_FAIL_STEP,
     I_FAILED,
     I_NEVENTS,
     I_NREJECT,
@@ -53,11 +53,11 @@ from pounding.integrate.layout import (
     I_ONSET_C,
     I_STEP_BUDGET,
     P_CONTACT,
-    PK_A,
     P_DAMP,
     P_DEVICE,
     P_INPUT,
     P_STOREY,
+    PK_A,
     W_E_DAMP,
     W_E_DEVICE,
     W_E_INPUT,
@@ -113,7 +113,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     h_max = run.h_max
     r = fl.r
     below = fl.below
-    cdof, cw, cgap, ccode, cparams = ct
+    cdof, cw, cgap, _, cparams = ct
     x = st.x
     committed = st.committed
     sstate = st.storeys
@@ -182,6 +182,9 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             for c in range(nc):
                 if last_f[c, LF_GRAZED] != 0.0 and gap_row(c, x, n, cdof, cw)[1] < 0.0:
                     last_f[c, LF_GRAZED] = 0.0
+            # (the literals −1 and 0 give find_event a compiled version of its own here,
+            # unlike the typed constants of layout; np.int64(−1) and np.int64(0) instead
+            # change the last bits of some runs, through the compiler's fused multiply-adds)
             te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, committed, -1, 0,
                                       graze_tol, last_f[:, LF_GRAZED])
             ev_c = -1

@@ -19,7 +19,6 @@ from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.events import hermite_max
 from pounding.integrate.layout import (
-    ROW_BLOCK,
     EV_ONSET,
     EV_REENGAGE,
     EV_RELEASE,
@@ -36,6 +35,7 @@ from pounding.integrate.layout import (
     IMP_PEAK_TIME,
     IMP_START,
     IMP_V0,
+    ROW_BLOCK,
 )
 from pounding.integrate.rhs import INLINE, drift_of, gap_row, law_call, storey_call
 

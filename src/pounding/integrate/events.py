@@ -36,6 +36,11 @@ from pounding.integrate.layout import (
 )
 from pounding.integrate.rhs import G_END, NRT_FREE, drift_of, gap_row, ground_at
 
+UPWARD, DOWNWARD = np.bool_(True), np.bool_(False)
+"""Directions of a crossing, NumPy booleans: numba would compile :func:`hermite_root` once
+for each literal ``True`` and ``False`` (see the event kinds of
+:mod:`pounding.integrate.layout`)."""
+
 
 @njit(**NRT_FREE)
 def hermite_root(g0, d0, g1, d1, h, upward):
@@ -187,9 +192,9 @@ def rate_event(r0, acc0, r1, acc1, h, best_t):
     """Time of a rate sign change in a step (−1 if none earlier than ``best_t``); the
     crossing direction is read from the end values."""
     if r0 > 0.0 and r1 <= 0.0:
-        t = hermite_root(r0, acc0, r1, acc1, h, False)
+        t = hermite_root(r0, acc0, r1, acc1, h, DOWNWARD)
     elif r0 < 0.0 and r1 >= 0.0:
-        t = hermite_root(r0, acc0, r1, acc1, h, True)
+        t = hermite_root(r0, acc0, r1, acc1, h, UPWARD)
     else:
         return -1.0
     if t < 0.0:
@@ -259,7 +264,7 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
             # touch" where there was one.)
             peak_inside = d0 <= 0.0 and d1 <= 0.0 and r0 > 0.0 and r1 <= 0.0
             if not (c == skip_c and skip_kind == EV_ONSET):
-                t = -1.0 if peak_inside else hermite_root(d0, r0, d1, r1, h, True)
+                t = -1.0 if peak_inside else hermite_root(d0, r0, d1, r1, h, UPWARD)
                 if t > 0.0 and t < best_t:
                     best_t, best_c, best_k = t, c, EV_ONSET
                 elif (t <= 0.0 and grazed[c] == 0.0 and r0 > 0.0 and r1 <= 0.0
@@ -269,7 +274,7 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
                         best_t, best_c, best_k = where * h, c, EV_GRAZE
         else:
             if not (c == skip_c and skip_kind == EV_SEPARATION) and min(d0, d1) - bound <= 0.0:
-                t = hermite_root(d0, r0, d1, r1, h, False)
+                t = hermite_root(d0, r0, d1, r1, h, DOWNWARD)
                 if d1 <= 0.0 and t < 0.0:
                     t = h
                 if t > 0.0 and t < best_t:

@@ -24,8 +24,6 @@ from numba import njit
 
 from pounding.integrate.events import touch_possible
 from pounding.integrate.layout import (
-    PK_A,
-    ROW_BLOCK,
     E_CONTACT_STORED,
     E_CONTACT_WORK,
     E_DAMPING,
@@ -33,12 +31,18 @@ from pounding.integrate.layout import (
     E_INPUT,
     E_KINETIC,
     E_STRAIN,
+    PK_A,
+    ROW_BLOCK,
     W_E_DAMP,
     W_E_INPUT,
     W_E_STOREY,
     W_PEAK_MARGIN,
 )
-from pounding.integrate.peaks import acc_peak_between, track_exact_step, track_uncoupled_step
+from pounding.integrate.peaks import (
+    acc_peak_between,
+    track_exact_step,
+    track_uncoupled_step,
+)
 from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row, ground_rest
 
 

@@ -6,6 +6,8 @@ agree on.
 
 from __future__ import annotations
 
+import numpy as np
+
 # ---------------------------------------------------------------- impact table (one row per impact)
 (IMP_CONTACT, IMP_START, IMP_END, IMP_V0, IMP_PEAK, IMP_PEAK_TIME, IMP_DMAX, IMP_E,
  IMP_ENERGY) = range(9)
@@ -27,12 +29,17 @@ P_INPUT, P_DAMP, P_STOREY, P_DEVICE = range(4)
 P_CONTACT = 4
 
 # ---------------------------------------------------------------- event kinds
-EV_ONSET, EV_SEPARATION, EV_MAX_COMPRESSION, EV_RELOADING = 1, 2, 3, 4
-EV_DRIFT_MAX, EV_DRIFT_MIN = 5, 6
-EV_GRAZE = 7
+# Event kinds and peak columns, which the compiled functions pass as arguments, are NumPy
+# integers, not Python ints: numba types a Python int constant as a literal and compiles a
+# called function once more for every literal value it is given (locate, event_value,
+# is_upward and event_tolerance for EV_ONSET, update_quintic for each peak column), which
+# cost a first compile several seconds.
+EV_ONSET, EV_SEPARATION, EV_MAX_COMPRESSION, EV_RELOADING = (np.int64(k) for k in (1, 2, 3, 4))
+EV_DRIFT_MAX, EV_DRIFT_MIN = np.int64(5), np.int64(6)
+EV_GRAZE = np.int64(7)
 """An open gap whose penetration peaks within the event tolerance of zero inside a step:
 the peak is located on real steps to decide whether the gap closes there."""
-EV_RELEASE, EV_REENGAGE = 8, 9
+EV_RELEASE, EV_REENGAGE = np.int64(8), np.int64(9)
 """A closed contact whose law clips its force at zero (Kelvin–Voigt without tension,
 :func:`pounding.contact.dispatch.law_releases`): the unclipped force ``k δ + c δ̇`` turning
 negative (the bodies released with the spring still compressed) or positive again before
@@ -64,7 +71,7 @@ that no compiled law implements (its trial is the failure value NaN; the row is
 ``ws_i[I_FAIL_ROW]``)."""
 
 # ---------------------------------------------------------------- located peaks, per floor
-PK_U, PK_U_T, PK_D, PK_D_T, PK_A, PK_A_T = range(6)
+PK_U, PK_U_T, PK_D, PK_D_T, PK_A, PK_A_T = (np.int64(k) for k in range(6))
 PK_COLUMNS = 6
 """Largest |displacement| [m], |storey drift| [m] (the storey below each floor) and
 |absolute acceleration| [m/s²] of every floor, each with its time [s]."""

@@ -47,10 +47,12 @@ from pounding.integrate.reference_laws import (
     link_recoverable,
     maxwell_spring_rate,
     release_function,
+    stored_energy,
     storey_recoverable,
     storey_shear,
+)
+from pounding.integrate.reference_laws import (
     storeys as yielding_storeys,
-    stored_energy,
 )
 from pounding.model import PoundingModel
 from pounding.result import ENERGY_NAMES, IMPACT_COLUMNS, Result, SolverStats

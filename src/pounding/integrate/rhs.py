@@ -34,9 +34,9 @@ from pounding.contact.dispatch import (
     release_value,
     stored_energy,
 )
+from pounding.devices.laws import DEVICE_MIN, device_rate_terms
 from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
-from pounding.devices.laws import DEVICE_MIN, device_rate_terms
 from pounding.integrate.layout import (
     DELTA_EPS,
     P_CONTACT,

@@ -12,6 +12,7 @@ from pounding.integrate.layout import PK_COLUMNS
 from pounding.integrate.workspace import KernelOutputs
 from pounding.model import PoundingModel
 
+
 def initial_state(model: PoundingModel, u0: np.ndarray | None,
                   v0: np.ndarray | None) -> np.ndarray:
     """State ``[u, u̇]`` at t = 0, checked: right length, finite, every gap open.
