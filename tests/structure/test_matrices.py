@@ -64,8 +64,9 @@ def test_csv_one_by_one(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("text, message", [
-    ("1,2\n3,x\n", r"k\.csv: line 2: 'x' is not a number \(the file must hold plain numbers"),
-    ("a,b\n1,2\n2,1\n", r"k\.csv: line 1: 'a' is not a number"),
+    ("1,2\n3,x\n", r"k\.csv: line 2: item 2 of 2 on the line is not a number \(the file must hold "
+                    r"plain numbers"),
+    ("a,b\n1,2\n2,1\n", r"k\.csv: line 1: item 1 of 2 on the line is not a number"),
     ("1,,2\n", r"k\.csv: line 1 has an empty field between commas"),
     ("1,2\n", r"k\.csv: K must be square \(got 1×2\)"),
     ("1 2\n3\n", r"k\.csv: line 2 has 1 numbers but line 1 has 2: every row of a matrix"),
@@ -73,7 +74,7 @@ def test_csv_one_by_one(tmp_path: Path) -> None:
     ("", r"k\.csv: holds no numbers"),
     ("1,2\n2,nan\n", r"k\.csv: K\[1,1\] = nan is not finite"),
     ("1,2\n2,inf\n", r"k\.csv: K\[1,1\] = inf is not finite"),
-    ("1;2\n2;1\n", r"k\.csv: line 1: '1;2' is not a number"),
+    ("1;2\n2;1\n", r"k\.csv: line 1: the line is not a number"),
 ])
 def test_csv_errors_name_file_and_line(tmp_path: Path, text: str, message: str) -> None:
     p = _write(tmp_path / "k.csv", text)

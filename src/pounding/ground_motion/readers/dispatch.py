@@ -18,7 +18,7 @@ from pathlib import Path
 
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers import at2, cosmos, knet
-from pounding.ground_motion.readers.files import check_file, read_lines
+from pounding.ground_motion.readers.files import check_file, describe_size, read_lines
 from pounding.ground_motion.readers.numbers import is_numeric_line
 from pounding.ground_motion.readers.units import ASSUMED
 from pounding.ground_motion.readers.text import read_text
@@ -98,7 +98,8 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     ------
     ValueError
         As raised by the reader, naming the file and line; or, for a file in none of the
-        formats, naming the file, its first line and the formats read.
+        formats, naming the file, its size and the formats read. No message shows any of
+        the file's text.
     """
     p = check_file(path)
     fmt = _format_of(p)
@@ -112,16 +113,19 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
 
 
 def _check_plain_text(p: Path) -> None:
-    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either."""
+    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either,
+    naming it, its size and the formats read, and showing none of its text."""
+    size = describe_size(p.stat().st_size)
     with p.open("rb") as f:
         if b"\0" in f.read(4096):
-            raise ValueError(f"{p}: a binary file (miniSEED, SAC or the like), not a record "
-                             f"format pounding reads; it reads {SUPPORTED}")
+            raise ValueError(f"{p}: a binary file ({size}; miniSEED, SAC or the like), not a "
+                             f"record format pounding reads; it reads {SUPPORTED}")
     for i, line in enumerate(read_lines(p)):
         s = line.strip()
         if not s or s.startswith("#"):
             continue
         if not is_numeric_line(s):
-            raise ValueError(f"{p}: not a record format pounding reads (line {i + 1}: "
-                             f"{s[:40]!r}); it reads {SUPPORTED}")
+            raise ValueError(f"{p}: not a record format pounding reads ({size}; line {i + 1}, "
+                             "its first line that is not blank or a '#' comment, is neither "
+                             f"numbers nor a header of a format read); it reads {SUPPORTED}")
         return
