@@ -309,3 +309,38 @@ def test_read_record_picks_reader_by_suffix_and_content(tmp_path: Path) -> None:
     gm_g = read_record(text, dt=0.01, units="g")
     assert gm_g.units_read == "g"
     np.testing.assert_allclose(gm_g.accel, [0.5 * G, -1.5 * G])
+
+
+# ------------------------------------------------------------------ sizes a file declares
+def test_counts_a_header_declares_allocate_nothing(tmp_path: Path) -> None:
+    """NPTS and COSMOS's counts are compared with what was read, never allocated from."""
+    at2 = _write(tmp_path, "n.AT2", PEER_HEADER + "NPTS= 1000000000000, DT= .01 SEC\n"
+                 + _data_lines(VALUES_G))
+    with pytest.raises(ValueError, match=r"n\.AT2: line 4: NPTS = 1000000000000 but 7 values "
+                                         r"were read \(lines 5-6\)$"):
+        read_at2(at2)
+    formats = Path(__file__).parent / "formats"
+    text = (formats / "CE99999_chan1_360.V2c").read_text(encoding="utf-8")
+    cosmos = _write(tmp_path, "n.V2c", text.replace("      20 acceleration pts",
+                                                    "1000000000000 acceleration pts", 1))
+    with pytest.raises(ValueError, match=r"n\.V2c: line 49: states 1000000000000 values but "
+                                         r"20 were read \(lines 50-69\)$"):
+        read_record(cosmos)
+    # the integer header's count: its values run on into the next block, which is refused
+    cosmos = _write(tmp_path, "n.V2c", text.replace("100 Integer-header",
+                                                    "1000000000000 Integer-header", 1))
+    with pytest.raises(ValueError, match=r"n\.V2c: line 25: item 2 of 9 on the line is not a "
+                                         r"number"):
+        read_record(cosmos)
+
+
+def test_a_file_too_large_or_not_a_file_is_refused_before_reading(tmp_path: Path) -> None:
+    big = tmp_path / "big.txt"
+    with big.open("wb") as f:  # sparse: takes no disk space
+        f.truncate(300 * 1024 * 1024)
+    with pytest.raises(ValueError, match=r"big\.txt: 315 MB, larger than any record file "
+                                         r"pounding reads \(at most 268 MB\)$"):
+        read_record(big)
+    with pytest.raises(ValueError, match=r"^/dev/zero: not a regular file \(a device, pipe or "
+                                         r"socket\), not a record file$"):
+        read_record("/dev/zero")
