@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from pounding.ground_motion import read_at2, read_record, read_text
+from pounding.ground_motion.readers import UnitsRequired
 from pounding.units import G
 
 PEER_HEADER = (
@@ -303,8 +304,14 @@ def test_read_record_picks_reader_by_suffix_and_content(tmp_path: Path) -> None:
                            PEER_HEADER + "NPTS=  7, DT= .01 SEC\n" + _data_lines(VALUES_G))
     assert read_record(at2_no_suffix).units_read == "g"
     text = _write(tmp_path, "values.txt", "0.5\n-1.5\n")
-    gm = read_record(text, dt=0.01)
-    assert gm.units_read == "m/s2 (assumed)"
+    with pytest.raises(UnitsRequired, match=r"values\.txt: a plain-text record does not "
+                                            r"state its acceleration unit; give its units: g, "
+                                            r"m/s2, cm/s2, gal, mm/s2, in/s2 or ft/s2$"):
+        read_record(text, dt=0.01)  # none is assumed
+    with pytest.raises(UnitsRequired):
+        read_text(text, dt=0.01)
+    gm = read_record(text, dt=0.01, units="m/s2")
+    assert gm.units_read == "m/s2"
     np.testing.assert_allclose(gm.accel, [0.5, -1.5])
     gm_g = read_record(text, dt=0.01, units="g")
     assert gm_g.units_read == "g"

@@ -19,6 +19,7 @@ from pounding.ground_motion import (
     read_record,
 )
 from pounding.ground_motion.incidence import at_incidence
+from pounding.ground_motion.readers import UNIT_NAMES, needs_units
 from pounding.memo import Memo
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
@@ -51,7 +52,7 @@ class RecordConfig(Section):
 
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
-    them. Then, in this order: ``duration`` [s] keeps the record up to that time, and at
+    them; a plain-text record states no unit, so it needs ``units`` (none is assumed). Then, in this order: ``duration`` [s] keeps the record up to that time, and at
     most one of ``scale`` [-] (multiplies it), ``pga_g`` [g] (scales it to that peak) and
     ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
     period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
@@ -145,8 +146,15 @@ class RecordConfig(Section):
         base = Path((info.context or {}).get("base_dir", "."))
         for key in ("file", "second_file"):
             if getattr(self, key) is not None:
-                setattr(self, f"_{'' if key == 'file' else 'second_'}path",
-                        _record_file(base, key, getattr(self, key)))
+                path = _record_file(base, key, getattr(self, key))
+                setattr(self, f"_{'' if key == 'file' else 'second_'}path", path)
+                if self.units is None and needs_units(path):
+                    # a text record states no unit, and none is assumed: El Centro in g
+                    # read as m/s2 would shake the model ten times too weakly
+                    raise field_error("units", f"{key} = {getattr(self, key)!r} is a plain-"
+                                               "text record, which does not state its "
+                                               "acceleration unit; give units = \"g\" (or "
+                                               f"{UNIT_NAMES.removeprefix('g, ')})")
         return self
 
     @property
