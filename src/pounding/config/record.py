@@ -36,6 +36,12 @@ def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float |
     return read_record(path, dt=dt, units=units)
 
 
+@functools.lru_cache(maxsize=32)
+def _needs_units(path: Path, version: tuple[int, int] | None) -> bool:
+    """:func:`needs_units`, remembered per file version (a sweep validates every case)."""
+    return needs_units(path)
+
+
 @functools.lru_cache(maxsize=1)
 def _bundled_names() -> frozenset[str]:
     """Every name of a bundled record: file names and their stems (read once: the records
@@ -148,7 +154,7 @@ class RecordConfig(Section):
             if getattr(self, key) is not None:
                 path = _record_file(base, key, getattr(self, key))
                 setattr(self, f"_{'' if key == 'file' else 'second_'}path", path)
-                if self.units is None and needs_units(path):
+                if self.units is None and _needs_units(path, _version(path)):
                     # a text record states no unit, and none is assumed: El Centro in g
                     # read as m/s2 would shake the model ten times too weakly
                     raise field_error("units", f"{key} = {getattr(self, key)!r} is a plain-"
