@@ -177,6 +177,17 @@ def test_no_command_shows_a_file(tmp_path: Path, capsys: pytest.CaptureFixture[s
                      ["suite", "--target", str(spectrum), "--period", "1"]):
             code, text = _cli(capsys, *argv)
             assert code == 2 and MARKER not in text, (argv, text)
+    # the second horizontal component of a model with buildings in plan
+    plan = (ROOT / "examples" / "torsional_pair.toml").read_text(encoding="utf-8")
+    second = 'second = "kocaeli_1999_duzce_270_RSN1158"'
+    assert second in plan
+    for name in ("passwd.dat", "sniff_at2.txt", "freq.NS"):
+        m = tmp_path / f"plan_{name}.toml"
+        m.write_text(plan.replace(second, f'second_file = "{name}"\nunits = "gal"\ndt = 0.01'),
+                     encoding="utf-8")
+        code, text = _cli(capsys, "run", str(m), "--out", str(tmp_path / "r"))
+        assert code == 2 and MARKER not in text and name in text, (name, text)
+        assert len(text.strip().splitlines()) == 1
     # a matrix file in a model file
     matrices = _matrix_files(tmp_path)
     for path in matrices.values():
