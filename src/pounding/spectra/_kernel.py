@@ -230,7 +230,8 @@ def _ramp_response(u0: float, v0: float, g0: float, s: float, omega: float, zeta
 
 @njit(cache=True)
 def _search_slow(u0: float, v0: float, g0: float, s: float, pa: float, qa: float,
-                 omega: float, zeta: float, wd: float, h: float, best: float) -> float:
+                 omega: float, zeta: float, wd: float, h: float, v1: float,
+                 best: float) -> float:
     """Largest ``|y|`` at the stationary points of the displacement ``y`` of
     :func:`_ramp_response` inside a step of length ``h`` with ``ω h`` <
     :data:`_SERIES_PHASE` (a slow oscillator: the long periods), or ``best`` if none is
@@ -239,7 +240,9 @@ def _search_slow(u0: float, v0: float, g0: float, s: float, pa: float, qa: float
     ``y'' = e^{−στ}(pa cos ω_d τ + qa sin ω_d τ)`` has at most one zero in the step
     (``ω_d h < 1 < π/2``), at ``τ = atan(−pa/qa)/ω_d`` when that is in ``(0, h)``; on each
     side ``y'`` is monotone, and a sign change of ``y'`` is located by safeguarded Newton
-    iteration on the exact ``y'`` and ``y''``.
+    iteration on the exact ``y'`` and ``y''``. ``v0`` and ``v1`` are ``y'`` at the ends
+    (known from the step): where ``y''`` keeps its sign, a step whose ends have velocities
+    of one sign holds no peak, and nothing is evaluated.
     """
     cut = h
     if qa != 0.0:
@@ -252,7 +255,7 @@ def _search_slow(u0: float, v0: float, g0: float, s: float, pa: float, qa: float
     for b in ends:
         if b <= a:
             continue
-        fb = _ramp_response(u0, v0, g0, s, omega, zeta, b)[1]
+        fb = v1 if b == h else _ramp_response(u0, v0, g0, s, omega, zeta, b)[1]
         if (fa < 0.0) != (fb < 0.0) and fa != 0.0 and fb != 0.0:
             lo, hi, flo = a, b, fa
             t = 0.5 * (lo + hi)
@@ -420,9 +423,9 @@ def peaks(accel: np.ndarray, h: float, omegas: np.ndarray, zetas: np.ndarray,
                             m_step += abs(weights[d, c]) * (abs(pa[c]) + abs(qa[c]) * swing)
                         if max(abs(yu[d]), abs(y1)) + m_step * h * h * 0.125 > pk_u[d]:
                             y0_, v0_, g0_, s_ = _combined(weights[d], u, v, g0c, sc)
-                            p_, q_, _, _ = _combined(weights[d], pa, qa, pa, qa)
+                            p_, q_, v1_, _ = _combined(weights[d], pa, qa, vn, vn)
                             pk_u[d] = _search_slow(y0_, v0_, g0_, s_, p_, q_, w, zeta, wd, h,
-                                                   pk_u[d])
+                                                   v1_, pk_u[d])
                     elif max(abs(yu[d]), abs(y1)) + m * h * h * 0.125 > pk_u[d]:
                         l0, l1, p, q = _combined(weights[d], lu0, lu1, pu, qu)
                         pk_u[d] = _step_peak(yu[d], y1, l0, l1, p, q, m, sig, wd, w, h,
