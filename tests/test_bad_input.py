@@ -81,12 +81,18 @@ def load_config_text(text: str):  # noqa: ANN201
 
 
 @pytest.mark.parametrize("record, content, expected", [
-    ('file = "rec.txt"\ndt = 0.01', "0.1\n0.2\n1e309\n0.3\n",
+    ('file = "rec.txt"\ndt = 0.01\nunits = "m/s2"', "0.1\n0.2\n1e309\n0.3\n",
      "{model}: record: {rec}: line 3: acceleration value 1e309 is not finite: it is "
      "beyond the largest float (1.8e+308) and reads as inf"),
     ('file = "rec.txt"\ndt = 0.01\nunits = "g"', "0.1\n1e308\n",
      "{model}: record: {rec}: line 2: acceleration value 1e+308 g is beyond the largest "
      "float (1.8e+308) in m/s2"),
+    # a text record states no unit, and none is assumed: El Centro in g read as m/s2
+    # would be ten times too weak
+    ('file = "rec.txt"\ndt = 0.01', "0.0064\n0.31\n-0.2\n",
+     "{model}: record.units: file = 'rec.txt' is a plain-text record, which does not state "
+     "its acceleration unit; give units = \"g\" (or m/s2, cm/s2, gal, mm/s2, in/s2 or "
+     "ft/s2)"),
     ('file = "rec.txt"', None,
      "{model}: record.file: '{rec}' is a directory, not a record file (got 'rec.txt'; "
      "relative paths start at the model file's folder)"),

@@ -43,6 +43,9 @@ def _sources_table(path: Path) -> dict[str, dict[str, str]]:
 
 
 SOURCES = _sources_table(RECORDS / "SOURCES.md")
+UNITS = {e["file"]: e["units"] for e in tomllib.loads(
+    (RECORDS / "records.toml").read_text(encoding="utf-8"))["record"] if "units" in e}
+"""The unit records.toml gives a file that states none (a text file needs one)."""
 MANIFEST = tomllib.loads((RECORDS / "records.toml").read_text(encoding="utf-8"))["record"]
 
 
@@ -130,7 +133,7 @@ def test_copy_is_byte_for_byte(name: str) -> None:
 @pytest.mark.parametrize("name", sorted(SOURCES))
 def test_record_matches_sources(name: str) -> None:
     row = SOURCES[name]
-    gm = read_record(RECORDS / name)
+    gm = read_record(RECORDS / name, units=UNITS.get(name))
     assert gm.npts == int(row["NPTS"])
     assert gm.dt == pytest.approx(float(row["DT s"]), rel=1e-9)
     assert gm.pga_g == pytest.approx(float(row["PGA g"]), abs=5e-5)  # its 4 digits
@@ -148,9 +151,14 @@ def test_at2_units_read_from_header(name: str) -> None:
 
 
 def test_sylmar_text_record_units_and_first_sample() -> None:
-    """SOURCES.md: no header, m/s² inferred, first sample 0.061 m/s², PGA 8.27 m/s²."""
-    gm = read_record(RECORDS / "northridge_1994_sylmar_county_2col_mps2.dat")
-    assert gm.units_read == "m/s2 (assumed)"
+    """SOURCES.md: no header, m/s² inferred, first sample 0.061 m/s², PGA 8.27 m/s²; the
+    file states no unit, so it cannot be read without one."""
+    name = "northridge_1994_sylmar_county_2col_mps2.dat"
+    with pytest.raises(ValueError, match=r"a plain-text record does not state its "
+                                         r"acceleration unit; give its units: g, m/s2"):
+        read_record(RECORDS / name)
+    gm = load_bundled(name)
+    assert gm.units_read == "m/s2 (assumed)"  # the manifest's unit, reported as assumed
     assert gm.accel[0] == pytest.approx(0.06113)
     assert gm.pga == pytest.approx(8.27, abs=0.005)
     assert gm.metadata["t0"] == 0.0
@@ -175,8 +183,9 @@ def test_peknold_last_value_without_trailing_newline() -> None:
 # ------------------------------------------------------------------- the bundled suite
 def test_bundled_suite_reads_the_files_checked_above() -> None:
     for name, gm in zip(bundled_records(), bundled_suite(), strict=True):
-        np.testing.assert_array_equal(gm.accel, read_record(RECORDS / name).accel)
-        assert gm.dt == read_record(RECORDS / name).dt
+        read = read_record(RECORDS / name, units=UNITS.get(name))
+        np.testing.assert_array_equal(gm.accel, read.accel)
+        assert gm.dt == read.dt
 
 
 def test_bundled_provenance_agrees_with_sources_md() -> None:

@@ -106,10 +106,10 @@ def test_user_table_in_csv_and_toml(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("name, text, message", [
-    ("a.csv", "period,sa\n0,1\n", "the header must name period_s and one of sa_g, sa_m_s2, "
-                                  "sd_m (got period, sa)"),
-    ("b.csv", "period_s,sa_g\n0,1\n1,x\n", "data line 2: period_s and sa_g must be numbers "
-                                           "(got '1,x')"),
+    ("a.csv", "period,sa\n0,1\n", "the header (line 1) must name the columns period_s and "
+                                  "one of sa_g, sa_m_s2, sd_m"),
+    ("b.csv", "period_s,sa_g\n0,1\n1,x\n", "data line 2: period_s and sa_g must be numbers"),
+    ("h.toml", "root:x:0:0\n", "not a valid TOML spectrum file (at line 1, column 5)"),
     ("c.csv", "period_s,sa_g\n0,1\n", "need at least 2 periods"),
     ("d.csv", "# nothing\n", "no header line"),
     ("e.toml", 'eurocode8 = { agr = 0.2, soil = "B" }\n', "eurocode8 needs agr [g] and "

@@ -186,3 +186,29 @@ def test_the_example_target_is_the_asce7_spectrum_it_says():
     assert spec.sa_g(1.0) == pytest.approx(0.6, rel=1e-12)
     assert spec.sa_g(0.3) == pytest.approx(1.0, rel=1e-12)
     assert {e.name: e.kind for e in examples()}["spectrum_asce7_site.toml"] == "spectrum"
+
+
+def test_period_inputs_of_the_scalings_are_checked():
+    """Periods outside the range a spectrum is computed over, and counts of periods that
+    would allocate without end, are refused in one line naming the argument."""
+    import time
+
+    from pounding.ground_motion import el_centro
+    from pounding.spectra.scaling import saavg_periods, scale_to_sa
+
+    gm = el_centro()
+    with pytest.raises(ValueError, match=r"^sa_period: every period must be from 1e-09 s to "
+                                         r"1e\+09 s \(got 1e\+12\)"):
+        scale_to_sa(gm, 0.3, 1e12)
+    with pytest.raises(ValueError, match=r"^saavg_periods: every period must be from"):
+        saavg_periods([1e-12, 1.0])
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=r"^saavg_n: an integer from 2 to 100000 \(got "
+                                         r"1000000000000\)"):
+        saavg_periods([0.2, 3.0], 10**12)
+    assert time.perf_counter() - start < 1.0
+    with pytest.raises(ValueError, match=r"^n_periods: an integer from 2 to 100000 \(got "
+                                         r"1000000000000\)"):
+        scale_suite([gm], TARGET, T1, n_periods=10**12)
+    with pytest.raises(ValueError, match=r"^period: every period must be from"):
+        scale_suite([gm], TARGET, 1e10)

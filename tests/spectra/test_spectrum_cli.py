@@ -14,6 +14,7 @@ import pytest
 from pounding.cli import main
 from pounding.ground_motion import el_centro
 from pounding.spectra import response_spectrum, rotd_spectrum
+from pounding.units import G
 
 ROOT = Path(__file__).resolve().parents[2]
 # the bundled El Centro file, wherever pounding/data keeps it
@@ -53,8 +54,13 @@ def test_rotd_pairs(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     back = tmp_path / "back.txt"
     back.write_text("\n".join(repr(float(x)) for x in gm.accel[::-1]) + "\n", encoding="utf-8")
     out_csv = tmp_path / "r.csv"
-    assert main(["spectrum", str(ELC), str(back), "--rotd", "--dt", "0.01", "--periods",
-                 "0.2,1", "--csv", str(out_csv)]) == 0  # text records are in m/s2
+    assert main(["spectrum", str(ELC), str(back), "--rotd", "--dt", "0.01", "--units", "m/s2",
+                 "--periods", "0.2,1", "--csv", str(out_csv)]) == 2  # ELC states g
+    assert "the header states units 'g' but units='m/s2' was given" in capsys.readouterr().err
+    back.write_text("\n".join(repr(float(x) / G) for x in gm.accel[::-1]) + "\n",
+                    encoding="utf-8")
+    assert main(["spectrum", str(ELC), str(back), "--rotd", "--dt", "0.01", "--units", "g",
+                 "--periods", "0.2,1", "--csv", str(out_csv)]) == 0
     out = capsys.readouterr().out
     for text in ("H1 ζ=5%", "GeoMean ζ=5%", "RotD50 ζ=5%", "RotD100 ζ=5%", "Boore 2010"):
         assert text in out, text

@@ -17,7 +17,7 @@ def record(
     files: Annotated[list[Path] | None, typer.Argument(
         help="Record files: PEER .AT2 (units from the header, g if none stated), K-NET/"
              "KiK-net ASCII, COSMOS V1/V2, or text with one column (needs --dt) or two "
-             "columns time, acceleration.",
+             "columns time, acceleration (needs --units).",
         show_default=False)] = None,
     bundled: Annotated[bool, typer.Option(
         "--bundled", help="Also the twelve real records shipped with pounding (the ten of "
@@ -27,8 +27,8 @@ def record(
         "--dt", help="Time step \\[s] for files that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
         "--units", help="Acceleration unit for files that do not state one: g, m/s2, "
-                        "cm/s2, gal, ... (text files default to m/s2). An AT2 header "
-                        "stating another unit is an error.")] = None,
+                        "cm/s2, gal, ... (required for text files, which state none). An "
+                        "AT2 header stating another unit is an error.")] = None,
     plot: Annotated[Path | None, typer.Option(
         "--plot", help="Draw each record (acceleration, velocity, displacement). With one "
                        "FILE, PATH is the figure file (format from its suffix: .png, .svg, "
@@ -58,7 +58,12 @@ def record(
     if not files and not bundled:
         raise ValueError("record: give record FILEs, or --bundled for the records shipped "
                          "with pounding")
-    motions = [read_record(f, dt=dt, units=units) for f in files]
+    from pounding.ground_motion.readers import UnitsRequired
+
+    try:
+        motions = [read_record(f, dt=dt, units=units) for f in files]
+    except UnitsRequired as exc:
+        raise exc.named("--units") from None
     if bundled:
         files += [Path(str(bundled_folder().joinpath(f))) for f in bundled_files()]
         motions += [load_bundled(f) for f in bundled_files()]

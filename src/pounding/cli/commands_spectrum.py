@@ -46,7 +46,8 @@ def spectrum_cmd(
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for text records that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
-        "--units", help="Acceleration unit for records that do not state one.")] = None,
+        "--units", help="Acceleration unit for records that do not state one: g, m/s2, "
+        "cm/s2, gal, ... (required for text records, which state none).")] = None,
 ) -> None:
     """Elastic response spectra of records: Sd, PSV, PSA and absolute acceleration.
 
@@ -98,12 +99,17 @@ def _read(files: list[Path], dt: float | None, units: str | None) -> list[Any]:
     import dataclasses
 
     from pounding.ground_motion import read_record
+    from pounding.ground_motion.readers import UnitsRequired
 
     motions = []
     for f in files:
         if f.is_dir():
             raise ValueError(f"{f}: is a directory, not a record file")
-        motions.append(dataclasses.replace(read_record(f, dt=dt, units=units), name=f.name))
+        try:
+            gm = read_record(f, dt=dt, units=units)
+        except UnitsRequired as exc:
+            raise exc.named("--units") from None
+        motions.append(dataclasses.replace(gm, name=f.name))
     return motions
 
 

@@ -52,7 +52,8 @@ def suite_cmd(
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for text records that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
-        "--units", help="Acceleration unit for records that do not state one.")] = None,
+        "--units", help="Acceleration unit for records that do not state one: g, m/s2, "
+        "cm/s2, gal, ... (required for text records, which state none).")] = None,
 ) -> None:
     """Scale a suite of records to a target spectrum: the factors, the mean and dispersion.
 
@@ -79,7 +80,12 @@ def suite_cmd(
     lims = _pair(limits, "--limits")
     spectrum = DesignSpectrum.from_file(target)
     source: Any = BUNDLED if not records else (records[0] if len(records) == 1 else records)
-    suite = read_suite(source, dt=dt, units=units)
+    from pounding.ground_motion.readers import UnitsRequired
+
+    try:
+        suite = read_suite(source, dt=dt, units=units)
+    except UnitsRequired as exc:
+        raise exc.named("--units") from None
     result = scale_suite(list(suite), spectrum, period, method=method, code=code,
                          damping=damping, period_range=lo_hi, limits=lims)
     _print(result, suite)

@@ -20,6 +20,7 @@ from pounding.ground_motion import (
     read_record,
 )
 from pounding.ground_motion.incidence import at_incidence
+from pounding.ground_motion.readers import UNIT_NAMES, needs_units
 from pounding.memo import Memo
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
@@ -34,6 +35,12 @@ def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float |
     """:func:`read_record`, remembered per file version (modification time and size), so a
     sweep reading one record for thousands of cases parses it once per process."""
     return read_record(path, dt=dt, units=units)
+
+
+@functools.lru_cache(maxsize=32)
+def _needs_units(path: Path, version: tuple[int, int] | None) -> bool:
+    """:func:`needs_units`, remembered per file version (a sweep validates every case)."""
+    return needs_units(path)
 
 
 @functools.lru_cache(maxsize=1)
@@ -52,9 +59,10 @@ class RecordConfig(Section):
 
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
-    them. Then, in this order: ``duration`` [s] keeps the record up to that time, and at
-    most one of ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor
-    reversing the record's polarity), ``pga_g`` [g] (scales it to that peak) and
+    them; a plain-text record states no unit, so it needs ``units`` (none is assumed). Then,
+    in this order: ``duration`` [s] keeps the record up to that time, and at most one of
+    ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor reversing
+    the record's polarity), ``pga_g`` [g] (scales it to that peak) and
     ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
     period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
     incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`), or ``saavg_g`` [g]
@@ -151,8 +159,15 @@ class RecordConfig(Section):
         base = Path((info.context or {}).get("base_dir", "."))
         for key in ("file", "second_file"):
             if getattr(self, key) is not None:
-                setattr(self, f"_{'' if key == 'file' else 'second_'}path",
-                        _record_file(base, key, getattr(self, key)))
+                path = _record_file(base, key, getattr(self, key))
+                setattr(self, f"_{'' if key == 'file' else 'second_'}path", path)
+                if self.units is None and _needs_units(path, _version(path)):
+                    # a text record states no unit, and none is assumed: El Centro in g
+                    # read as m/s2 would shake the model ten times too weakly
+                    raise field_error("units", f"{key} = {getattr(self, key)!r} is a plain-"
+                                               "text record, which does not state its "
+                                               "acceleration unit; give units = \"g\" (or "
+                                               f"{UNIT_NAMES.removeprefix('g, ')})")
         return self
 
     @property

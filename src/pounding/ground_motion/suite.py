@@ -20,6 +20,7 @@ from typing import NamedTuple, overload
 from pounding.ground_motion.bundled import bundled_folder, bundled_records, load_bundled
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.dispatch import read_record
+from pounding.ground_motion.readers.units import UnitsRequired
 
 __all__ = ["RecordSuite", "SkippedFile", "bundled_suite", "read_suite"]
 
@@ -143,7 +144,8 @@ class RecordSuite:
 
         Hidden files (names starting with ``.``) are passed over; a file that does not read
         is kept in :attr:`skipped` with the reader's message. ``dt`` and ``units`` apply to
-        every file that does not state them.
+        every file that does not state them; a plain-text record read without ``units`` is
+        an error (:class:`~pounding.ground_motion.readers.UnitsRequired`), not skipped.
 
         Parameters
         ----------
@@ -175,6 +177,8 @@ class RecordSuite:
         for p in files:
             try:
                 motions.append(read_record(p, dt=dt, units=units))
+            except UnitsRequired:
+                raise  # a record, that needs the units of the folder's text files
             except (ValueError, OSError) as exc:
                 skipped.append(SkippedFile(str(p), str(exc)))
                 continue

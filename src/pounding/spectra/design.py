@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -251,8 +252,16 @@ class DesignSpectrum:
             return cls._from_csv(p)
         try:
             data = tomllib.loads(p.read_text(encoding="utf-8"))
-        except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-            raise ValueError(f"{p}: not a valid TOML spectrum file: {exc}") from None
+        except UnicodeDecodeError:
+            raise ValueError(f"{p}: not a TOML spectrum file (not UTF-8 text)") from None
+        except tomllib.TOMLDecodeError as exc:  # its message may quote the file: not shown
+            at = re.search(r"\((at line \d+, column \d+|at end of document)\)\s*$", str(exc))
+            raise ValueError(f"{p}: not a valid TOML spectrum file"
+                             + (f" ({at.group(1)})" if at else "")) from None
+        if not set(data) & {"asce7", "eurocode8", "kind", "periods", "values"}:
+            # none of the keys of a spectrum file: not one (its keys are not listed)
+            raise ValueError(f"{p}: not a spectrum file: it has none of the keys asce7, "
+                             "eurocode8 or kind, periods and values")
         name = str(data.get("name", p.stem))
         try:
             codes = [k for k in ("asce7", "eurocode8") if k in data]
@@ -313,9 +322,9 @@ class DesignSpectrum:
                              f"{', '.join(columns)})")
         head = [h.strip().lower() for h in rows[0]]
         found = [c for c in columns if c in head]
-        if "period_s" not in head or len(found) != 1:
-            raise ValueError(f"{p}: the header must name period_s and one of "
-                             f"{', '.join(columns)} (got {', '.join(rows[0])})")
+        if "period_s" not in head or len(found) != 1:  # the line itself is not shown
+            raise ValueError(f"{p}: the header (line {_first_line(p)}) must name the columns "
+                             f"period_s and one of {', '.join(columns)}")
         it, iv = head.index("period_s"), head.index(found[0])
         t, v = [], []
         for k, row in enumerate(rows[1:], start=2):
@@ -324,12 +333,21 @@ class DesignSpectrum:
                 v.append(float(row[iv]))
             except (ValueError, IndexError):
                 raise ValueError(f"{p}: data line {k - 1}: period_s and {found[0]} must be "
-                                 f"numbers (got {','.join(row)!r})") from None
+                                 "numbers") from None
         kind, units = columns[found[0]]
         try:
             return cls(np.asarray(t), np.asarray(v), kind=kind, units=units, name=p.stem)
         except ValueError as exc:
             raise ValueError(f"{p}: {exc}") from None
+
+
+def _first_line(p: Path) -> int:
+    """The number of the first line of ``p`` that is neither blank nor a ``#`` comment."""
+    with p.open(encoding="utf-8") as f:
+        for number, line in enumerate(f, start=1):
+            if line.strip() and not line.lstrip().startswith("#"):
+                return number
+    return 1
 
 
 def _asce7_sa(t: FloatArray, *, sds: float, sd1: float, tl: float) -> FloatArray:

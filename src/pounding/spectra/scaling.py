@@ -62,7 +62,7 @@ def code_period_range(t1: float, code: str = "asce7") -> tuple[float, float]:
     0.2 T1 to 2 T1 (EN 1998-1 §3.2.3.1.2(4); ASCE 7-22 §16.2.3.1's widest lower bound —
     give a lower one where more modes are needed for 90 % of the mass)."""
     _check_code(code)
-    t1 = _positive("period", t1)
+    t1 = _period("period", t1)
     return 0.2 * t1, 2.0 * t1
 
 
@@ -191,20 +191,21 @@ def scale_suite(motions: Sequence[GroundMotion], target: DesignSpectrum, period:
     if method not in METHODS:
         raise ValueError(f"method: one of {', '.join(METHODS)} (got {method!r})")
     _check_code(code)
-    t1 = _positive("period", period)
+    t1 = _period("period", period)
     zeta = float(check_damping(damping, "damping")[0])
     lo_lim, hi_lim = (_positive("limits", x) for x in limits)
     if lo_lim >= hi_lim:
         raise ValueError(f"limits: the lower limit must be below the upper (got {lo_lim:g}, "
                          f"{hi_lim:g})")
     lo, hi = code_period_range(t1, code) if period_range is None else (
-        _positive("period_range", period_range[0]), _positive("period_range", period_range[1]))
+        _period("period_range", period_range[0]), _period("period_range", period_range[1]))
     if lo >= hi:
         raise ValueError(f"period_range: the lower period must be below the upper (got "
                          f"{lo:g}, {hi:g} s)")
     if not motions:
         raise ValueError("records: the suite has no record")
-    periods = np.unique(np.concatenate([np.geomspace(lo, hi, max(int(n_periods), 2)), [t1]]))
+    periods = np.unique(np.concatenate([np.geomspace(lo, hi, _count("n_periods", n_periods, 2)),
+                                        [t1]]))
     needs_zero = method == "pga" or (method == "code" and code == "ec8")
     target_g = _target_on(target, periods)
     target_pga = _target_on(target, np.array([0.0]))[0] if needs_zero else math.nan
@@ -238,7 +239,7 @@ def scale_to_sa(motion: GroundMotion, sa_g: float, period: float,
     (Vamvatsikos & Cornell 2002) and of the ``"sa"`` method."""
     from pounding.spectra.response import response_spectrum
 
-    t = _positive("sa_period", period)
+    t = _period("sa_period", period)
     target = _positive("sa_g", sa_g)
     own = float(response_spectrum(motion, np.array([t]), damping).psa_g[0, 0])
     if not own > 0.0:
@@ -258,13 +259,11 @@ def saavg_periods(period_range: Sequence[float], n: int = SAAVG_N) -> FloatArray
     if len(period_range) != 2:
         raise ValueError(f"saavg_periods: two periods, the ends of the range [s] (got "
                          f"{list(period_range)!r})")
-    lo, hi = (_positive("saavg_periods", x) for x in period_range)
+    lo, hi = (_period("saavg_periods", x) for x in period_range)
     if not lo < hi:
         raise ValueError(f"saavg_periods: the lower period must be below the upper (got "
                          f"{lo:g}, {hi:g} s)")
-    if isinstance(n, bool) or int(n) != n or n < 2:
-        raise ValueError(f"saavg_n: an integer >= 2 (got {n!r})")
-    return np.linspace(lo, hi, int(n))
+    return np.linspace(lo, hi, _count("saavg_n", n, 2))
 
 
 def sa_avg(motion: GroundMotion, period_range: Sequence[float], damping: float = 0.05,
@@ -311,10 +310,32 @@ def _target_on(target: DesignSpectrum, periods: FloatArray) -> FloatArray:
 
 
 def _positive(name: str, value: float) -> float:
-    x = float(value)
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}: must be a positive number (got {value!r})") from None
     if not (math.isfinite(x) and x > 0.0):
         raise ValueError(f"{name}: must be a positive number (got {value!r})")
     return x
+
+
+def _period(name: str, value: float) -> float:
+    """A period [s]: positive and within :data:`pounding.spectra.response.PERIOD_RANGE`."""
+    from pounding.spectra.response import check_periods
+
+    return float(check_periods([_positive(name, value)], name)[0])
+
+
+_MAX_PERIODS = 100_000
+"""Most periods a scaling computes the spectrum at (``n_periods``, ``saavg_n``)."""
+
+
+def _count(name: str, n: int, low: int) -> int:
+    """A number of periods: an integer from ``low`` to :data:`_MAX_PERIODS`."""
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not \
+            low <= int(n) <= _MAX_PERIODS:
+        raise ValueError(f"{name}: an integer from {low} to {_MAX_PERIODS} (got {n!r})")
+    return int(n)
 
 
 def _check_code(code: str) -> None:

@@ -150,8 +150,9 @@ def read_cosmos(path: str | os.PathLike[str], *, dt: float | None = None,
     unit_file = UNIT_CODES.get(code) if code is not None else units_in(s.units_text)
     if unit_file is None:
         known = ", ".join(f"{c} {u}" for c, u in UNIT_CODES.items())
-        raise ValueError(f"{where}: line {s.data_line}: units {s.units_text!r} (code {code}) "
-                         f"are not an acceleration unit pounding converts ({known})")
+        stated = f"units code {code}" if code is not None else "the units stated"
+        raise ValueError(f"{where}: line {s.data_line}: {stated} on the data line are not "
+                         f"an acceleration unit pounding converts (codes {known})")
     unit, units_read = resolve_unit(unit_file, units, where, default=unit_file)
 
     msec = _known(s.reals, 61, no_value)
@@ -197,7 +198,7 @@ def _read_series(lines: list[str], where: str) -> list[_Series]:
         if title is None:
             raise ValueError(f"{where}: line {i + 1}: expected the first text header line of a "
                              "COSMOS series, such as 'Corrected acceleration (Format v01.20 "
-                             f"with 13 text lines)', got {lines[i].strip()[:40]!r}")
+                             "with 13 text lines)'; this line is not one")
         first = i
         n_text = int(title.group(2))
         if i + n_text > n:
@@ -210,7 +211,7 @@ def _read_series(lines: list[str], where: str) -> list[_Series]:
         m = _RE_COMMENTS.match(lines[i]) if i < n else None
         if m is None:
             raise ValueError(f"{where}: line {i + 1}: expected the line 'N Comment line(s) "
-                             f"follow, ...', got {_at(lines, i)!r}")
+                             f"follow, ...'; {_at(lines, i)}")
         n_comments = int(m.group(1))
         comments = tuple(lines[i + 1:i + 1 + n_comments])
         i += 1 + n_comments
@@ -218,7 +219,7 @@ def _read_series(lines: list[str], where: str) -> list[_Series]:
         if m is None:
             raise ValueError(f"{where}: line {i + 1}: expected the data line such as '8000 "
                              "acceleration pts, approx 40 secs, units=cm/sec2 (04), "
-                             f"Format=(8F10.5)', got {_at(lines, i)!r}")
+                             f"Format=(8F10.5)'; {_at(lines, i)}")
         npts, kind, rest = int(m.group(1)), m.group(2).strip().lower(), m.group(3)
         data_line = i + 1
         u = _RE_DATA_UNITS.search(rest)
@@ -239,7 +240,7 @@ def _block(lines: list[str], i: int, where: str,
     m = _RE_BLOCK.match(lines[i]) if i < len(lines) else None
     if m is None or m.group(2).lower() != which:
         raise ValueError(f"{where}: line {i + 1}: expected the line 'N {which.title()}-header "
-                         f"values follow on M lines, ...', got {_at(lines, i)!r}")
+                         f"values follow on M lines, ...'; {_at(lines, i)}")
     values, line_numbers, starts, end = _values(lines, i + 1, where, int(m.group(1)), i + 1)
     return values, tuple(_line_of(line_numbers, starts, j) for j in range(len(values))), end
 
@@ -305,5 +306,6 @@ def _component(s: _Series) -> str:
 
 
 def _at(lines: list[str], i: int) -> str:
-    """Line index ``i`` for a message, or that the file ends there."""
-    return lines[i].strip()[:40] if i < len(lines) else "the end of the file"
+    """What is at line index ``i``, for a message, without its text (the file may be
+    anything)."""
+    return "this line is not it" if i < len(lines) else "the file ends there"

@@ -10,7 +10,6 @@ a new format adds its entry there.
 
 from __future__ import annotations
 
-import dataclasses
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -18,12 +17,11 @@ from pathlib import Path
 
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers import at2, cosmos, knet
-from pounding.ground_motion.readers.files import check_file, read_lines
+from pounding.ground_motion.readers.files import check_file, describe_size, read_lines
 from pounding.ground_motion.readers.numbers import is_numeric_line
-from pounding.ground_motion.readers.units import ASSUMED
 from pounding.ground_motion.readers.text import read_text
 
-__all__ = ["FORMATS", "SUPPORTED", "RecordFormat", "read_record"]
+__all__ = ["FORMATS", "SUPPORTED", "RecordFormat", "needs_units", "read_record"]
 
 
 @dataclass(frozen=True)
@@ -80,9 +78,9 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     ``.V2c``...) selects its reader; so does a first line ``Origin Time`` (K-NET/KiK-net),
     ``(Format v01.20 with 13 text lines)`` (COSMOS), or a header with ``NPTS``/``DT``
     (AT2). A file whose first line that is not blank or a ``#`` comment holds numbers alone
-    is plain text (:func:`~pounding.ground_motion.readers.text.read_text`); read without
-    ``units`` its values are taken as m/s² and ``units_read`` says ``"m/s2 (assumed)"``.
-    Any other file is refused: the message names it and the formats read.
+    is plain text (:func:`~pounding.ground_motion.readers.text.read_text`), which states
+    no unit: it needs ``units`` (none is assumed). Any other file is refused: the message
+    names it, its size and the formats read.
 
     Parameters
     ----------
@@ -91,37 +89,54 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     dt : float, optional
         Time step [s], for files that do not give one (see the readers).
     units : str, optional
-        Acceleration unit for files that do not state one. For an AT2 header that states a
-        different unit this is an error.
+        Acceleration unit for files that do not state one; required for plain text. For an
+        AT2 header that states a different unit this is an error.
 
     Raises
     ------
+    UnitsRequired
+        (a ValueError) For a plain-text file read without ``units``.
     ValueError
         As raised by the reader, naming the file and line; or, for a file in none of the
-        formats, naming the file, its first line and the formats read.
+        formats, naming the file, its size and the formats read. No message shows any of
+        the file's text.
     """
     p = check_file(path)
     fmt = _format_of(p)
     if fmt is not None:
         return fmt.read(p, dt=dt, units=units)
     _check_plain_text(p)
-    if units is None:
-        gm = read_text(p, dt=dt, units="m/s2")
-        return dataclasses.replace(gm, units_read="m/s2" + ASSUMED)
     return read_text(p, dt=dt, units=units)
 
 
+def needs_units(path: str | os.PathLike[str]) -> bool:
+    """True if ``path`` is a record that :func:`read_record` reads as plain text, which
+    does not state its unit: it needs ``units``. False for any other file, including one
+    that is not a record at all (reading it says why)."""
+    try:
+        p = check_file(path)
+        if _format_of(p) is not None:
+            return False
+        _check_plain_text(p)
+    except (ValueError, OSError):
+        return False
+    return True
+
+
 def _check_plain_text(p: Path) -> None:
-    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either."""
+    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either,
+    naming it, its size and the formats read, and showing none of its text."""
+    size = describe_size(p.stat().st_size)
     with p.open("rb") as f:
         if b"\0" in f.read(4096):
-            raise ValueError(f"{p}: a binary file (miniSEED, SAC or the like), not a record "
-                             f"format pounding reads; it reads {SUPPORTED}")
+            raise ValueError(f"{p}: a binary file ({size}; miniSEED, SAC or the like), not a "
+                             f"record format pounding reads; it reads {SUPPORTED}")
     for i, line in enumerate(read_lines(p)):
         s = line.strip()
         if not s or s.startswith("#"):
             continue
         if not is_numeric_line(s):
-            raise ValueError(f"{p}: not a record format pounding reads (line {i + 1}: "
-                             f"{s[:40]!r}); it reads {SUPPORTED}")
+            raise ValueError(f"{p}: not a record format pounding reads ({size}; line {i + 1}, "
+                             "its first line that is not blank or a '#' comment, is neither "
+                             f"numbers nor a header of a format read); it reads {SUPPORTED}")
         return

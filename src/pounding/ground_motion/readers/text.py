@@ -11,7 +11,7 @@ import numpy as np
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.files import check_file, read_lines
 from pounding.ground_motion.readers.numbers import parse_values
-from pounding.ground_motion.readers.units import canonical_unit, to_si
+from pounding.ground_motion.readers.units import UnitsRequired, canonical_unit, to_si
 from pounding.validation import positive
 
 __all__ = ["read_text"]
@@ -21,7 +21,7 @@ _COLUMNS = {1: ("acceleration",), 2: ("time", "acceleration")}
 
 
 def read_text(path: str | os.PathLike[str], dt: float | None = None,
-              units: str = "m/s2") -> GroundMotion:
+              units: str | None = None) -> GroundMotion:
     """Read a plain-text record: one column of accelerations, or two columns time, accel.
 
     Blank lines and lines starting with ``#`` are skipped; values may be separated by
@@ -36,8 +36,10 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
         time column, which must be uniform (every step within 1e-6 relative of the mean);
         a ``dt`` given as well must agree with it.
     units : str
-        Unit of the acceleration column (default ``"m/s2"``; any of
-        :data:`pounding.units.ACCELERATION_UNITS`).
+        Unit of the acceleration column (any of :data:`pounding.units.ACCELERATION_UNITS`:
+        ``"g"``, ``"m/s2"``, ``"cm/s2"``, ``"gal"``...). Required: a text file does not
+        state its unit, and none is assumed (El Centro in g read as m/s² would be a record
+        ten times too weak).
 
     Returns
     -------
@@ -47,6 +49,8 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
 
     Raises
     ------
+    UnitsRequired
+        (a ValueError) If ``units`` is not given, once the file has read as a record.
     ValueError
         Naming the file and line: a token that is not a number, a non-finite value, a row
         with a different number of columns, more than two columns, no data, one column
@@ -54,7 +58,7 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
     """
     p = check_file(path)
     where = str(p)
-    unit = canonical_unit(units, f"{where}: units")
+    unit = None if units is None else canonical_unit(units, f"{where}: units")
     rows: list[list[float]] = []
     linenos: list[int] = []
     for i, line in enumerate(read_lines(p)):
@@ -104,5 +108,7 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
         step = float(f"{step:.12g}")  # 59.98 / 2999 -> 0.02, not 0.019999999999999997
         metadata["t0"] = float(t[0])
         accel = data[:, 1]
+    if unit is None:  # the file read as a record: it needs only its unit
+        raise UnitsRequired(where)
     return GroundMotion(dt=step, accel=to_si(accel, unit, where, linenos.__getitem__),
                         name=p.stem, source=where, units_read=unit, metadata=metadata)
