@@ -37,6 +37,7 @@ from pydantic import Field, ValidationError
 
 from pounding.config.base import Section
 from pounding.config.device import DeviceConfig
+from pounding.config.quantities import Step
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -77,6 +78,11 @@ class MitigationStudy(Section):
     out: str | None = None
     records: Annotated[list[Annotated[str, Field(min_length=1)]],
                        Field(min_length=1)] | None = None
+    dt: Step | None = None
+    """Time step [s] of the ``records`` files that do not state one (plain text)."""
+    units: str | None = None
+    """Acceleration unit of the ``records`` files that do not state one (a plain-text record
+    needs it: ``"g"``, ``"m/s2"``, ``"cm/s2"``, ...)."""
     option: Annotated[list[OptionConfig], Field(min_length=1)]
 
 
@@ -128,7 +134,11 @@ def _configs(study: MitigationStudy, here: Path, where: str = "study"
     if study.records:
         keep = {k: v for k, v in data["record"].items()
                 if k not in ("file", "bundled", "dt", "units")}
-        records = [_record(r, k, here, where) | keep for k, r in enumerate(study.records)]
+        own = {k: v for k, v in (("dt", study.dt), ("units", study.units)) if v is not None}
+        records = []
+        for k, name in enumerate(study.records):
+            rec = _record(name, k, here, where) | keep
+            records.append(rec | own if "file" in rec else rec)
     base_devices = len(data.get("device", []))
     runs = []
     for i, opt in enumerate(study.option):
