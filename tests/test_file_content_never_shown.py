@@ -238,3 +238,18 @@ def test_studies_never_store_or_show_a_file(tmp_path: Path,
     for path in (tmp_path / "s").rglob("*"):
         if path.is_file():
             assert MARKER.encode() not in path.read_bytes(), path
+
+
+def test_a_broken_toml_file_is_named_with_its_position_not_its_keys(tmp_path: Path,
+                                                                    capsys) -> None:
+    """tomllib quotes a key declared twice (``Cannot declare ('k',) twice``): a model file,
+    a study file and a spectrum file say where the file is broken, not what it holds."""
+    broken = tmp_path / "m.toml"
+    broken.write_text(f"[{MARKER}]\nx = 1\n[{MARKER}]\ny = 2\n")
+    for argv in (["run", str(broken), "--out", str(tmp_path / "o")],
+                 ["mitigate", str(broken), "--out", str(tmp_path / "o")],
+                 ["suite", "--target", str(broken), "--period", "1.0"]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert MARKER not in err and "(at line 3, column" in err, (argv, err)
+    assert not (tmp_path / "o").exists()

@@ -83,7 +83,9 @@ def read_run(folder: Path) -> RunFolder:
         try:
             toml = tomllib.loads(toml_text)
         except tomllib.TOMLDecodeError as exc:
-            build_error = f"model.toml is not valid TOML ({exc})"
+            from pounding.io import toml_error_text
+
+            build_error = f"model.toml is not valid TOML ({toml_error_text(exc)})"
         if build_error is None:
             from pounding.config import load_config
 
