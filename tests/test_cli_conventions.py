@@ -133,6 +133,18 @@ def test_every_choice_is_in_the_help(capsys: pytest.CaptureFixture[str]) -> None
         assert not missing, (argv, missing)
 
 
+def test_the_command_line_starts_without_numpy() -> None:
+    """Command modules import only typer, rich and the CLI's helpers: ``pounding --help``
+    does not wait for NumPy (``pounding ellipse`` imported it at module level)."""
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-c", "import sys, pounding.cli; "
+                          "print('numpy' in sys.modules)"], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "False"
+
+
 # ============================================================================ runners
 RUNNERS = ("pounding.run:run", "pounding.studies.sweep:run_sweep",
            "pounding.studies.fragility:run_study",

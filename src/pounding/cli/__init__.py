@@ -15,8 +15,11 @@ An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of
 :mod:`pounding.config.plausibility`) is one line on standard error that starts
 ``warning:``; the command goes on.
 
-Command modules import only typer and rich at module level; everything else is imported by
-the command that uses it, so ``pounding --help`` and ``pounding --version`` start at once.
+Command modules import only typer, rich and the CLI's own helpers (``app``, ``options``: the
+options shared by several commands, ``running``: progress bars and SIGTERM, ``messages``,
+``tables``) at module level; everything else is imported by the command that uses it, so
+``pounding --help`` and ``pounding --version`` start at once (no NumPy;
+``tests/test_startup.py``).
 """
 
 from __future__ import annotations

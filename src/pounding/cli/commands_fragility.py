@@ -58,7 +58,7 @@ def _print(res: Any) -> None:
     a, plan = res.analysis, res.plan
     rows = []
     for r in a.limit_states:
-        gap = "base" if r.gap is None else number(1000 * r.gap)
+        gap = "base" if r.gap is None else f"{1000 * r.gap:g}"
         for name, e in (("stripes, MLE", r.msa), ("IDA", r.ida)):
             rows.append((literal(r.spec.label), gap, name, number(e.median),
                          f"{number(e.median_ci[0], 3)} – {number(e.median_ci[1], 3)}",
