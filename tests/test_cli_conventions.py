@@ -62,11 +62,12 @@ def test_help_text_is_shown_as_written() -> None:
     from rich.text import Text
 
     for name, command in _commands().items():
-        for param in command.params:
-            raw = param.help or ""
+        texts = [(param.name, param.help or "") for param in command.params]
+        for what, raw in [("(command)", command.help or ""), *texts]:
             shown = Text.from_markup(raw).plain
-            assert shown == raw.replace("\\[", "["), (name, param.name, raw, shown)
-            assert "  " not in shown, (name, param.name, shown)
+            assert shown == raw.replace("\\[", "["), (name, what, raw, shown)
+            for line in shown.splitlines():  # (the command's examples are indented)
+                assert "  " not in line.strip(), (name, what, line)
 
 
 def _first_sentence(text: str) -> str:
@@ -359,3 +360,30 @@ def test_no_table_cuts_a_number_at_80_columns(tmp_path: Path,
         assert "…" not in narrow, argv[0]
         lost = set(NUMBER.findall(wide)) - set(NUMBER.findall(narrow))
         assert not lost, (argv[0], sorted(lost)[:10], narrow)
+
+
+def test_forces_and_energies_read_in_one_unit_without_exponents(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """collide, fit's residual, mitigate: every force of a table in kN (or MN), every
+    energy in kJ (or MJ), no ``7.858e+06 N``; durations in ms, penetrations in mm."""
+    model = _short_seed(tmp_path, duration=3.0)
+    study = tmp_path / "m.toml"
+    study.write_text(MITIGATION.replace(str(SEED), str(model)))
+    exponent = re.compile(r"\d[eE][-+]?\d")
+    for argv, units in (
+            (["collide", "--law", "hunt-crossley", "--e", "0.5"],
+             ("contact duration [ms]", "max penetration [mm]", "peak force [kN]",
+              "energy dissipated ∫F dδ [kJ]")),
+            (["mitigate", str(study), "--out", str(tmp_path / "o"), "--no-figures"],
+             ("[kN]|[MN]", "[kJ]|[MJ]"))):
+        text = _printed(argv, 200, capsys, monkeypatch)
+        rows = [line for line in text.splitlines() if "│" in line]
+        assert rows and not any(exponent.search(line) for line in rows), (argv[0], rows)
+        flat = " ".join(text.split())
+        for unit in units:
+            assert any(u in flat for u in unit.split("|")), (argv[0], unit)
+        assert "[N]" not in text and "[J]" not in text, argv[0]
+        # one unit per quantity on the screen
+        assert not ("[kN]" in text and "[MN]" in text), argv[0]
+        assert not ("[kJ]" in text and "[MJ]" in text), argv[0]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 from rich.text import Text
@@ -222,20 +222,17 @@ def collide_cmd(
     e_scale, e_unit = energy_scale(max(max(r.energy_dissipated, r.energy_expected)
                                        for *_, r in impacts))
 
-    def column(target: float | None, used: str | None, r: object) -> list[str]:
-        rr: object = r
-        return [
-            f"{target:.6g}" if target is not None else "–",
-            "–" if used is None else used + (" (exact for this law)"
-                                             if is_exact(name, form, tension)
-                                             else " (published; not exact for this law)"),
-            f"{rr.e:.6f}" if rr.separated else "0 (stuck: the bodies never separate)",  # type: ignore[attr-defined]
-            number(1e3 * rr.duration, 6) if rr.separated else "stuck",  # type: ignore[attr-defined]
-            number(1e3 * rr.time_to_max, 6),  # type: ignore[attr-defined]
-            number(1e3 * rr.delta_max, 6),  # type: ignore[attr-defined]
-            number(rr.peak_force * f_scale, 6),  # type: ignore[attr-defined]
-            number(rr.energy_dissipated * e_scale, 6),  # type: ignore[attr-defined]
-            number(rr.energy_expected * e_scale, 6)]  # type: ignore[attr-defined]
+    def column(target: float | None, used: str | None, r: Any) -> list[str]:
+        """One impact's cells, in the order of ``quantities``."""
+        exact = (" (exact for this law)" if is_exact(name, form, tension)
+                 else " (published; not exact for this law)")
+        return [f"{target:.6g}" if target is not None else "–",
+                "–" if used is None else used + exact,
+                f"{r.e:.6f}" if r.separated else "0 (stuck: the bodies never separate)",
+                number(1e3 * r.duration, 6) if r.separated else "stuck",
+                number(1e3 * r.time_to_max, 6), number(1e3 * r.delta_max, 6),
+                number(r.peak_force * f_scale, 6), number(r.energy_dissipated * e_scale, 6),
+                number(r.energy_expected * e_scale, 6)]
 
     quantities = ["target e", "damping formula for e", "achieved e", "contact duration [ms]",
                   "time to max compression [ms]", "max penetration [mm]",
