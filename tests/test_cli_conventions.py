@@ -387,3 +387,23 @@ def test_forces_and_energies_read_in_one_unit_without_exponents(
         # one unit per quantity on the screen
         assert not ("[kN]" in text and "[MN]" in text), argv[0]
         assert not ("[kJ]" in text and "[MJ]" in text), argv[0]
+
+
+def test_many_runs_go_where_workers_and_scheduler_say() -> None:
+    """mitigate and gap run their runs through run_tasks: in this process by default, on a
+    local Dask cluster with n_workers (the sweep's client), results in the order of the
+    tasks and progress as each finishes."""
+    import operator
+
+    from pounding.studies.sweep.tasks import run_tasks
+
+    tasks = [(3, 4), (5, 12), (8, 15)]
+    calls: list[tuple[float, float]] = []
+    assert run_tasks(operator.mul, tasks) == [12, 60, 120]
+    assert run_tasks(operator.mul, tasks, scheduler="synchronous",
+                     progress=lambda d, t: calls.append((d, t))) == [12, 60, 120]
+    assert calls == [(0, 3), (1, 3), (2, 3), (3, 3)]
+    calls.clear()
+    assert run_tasks(operator.mul, tasks, n_workers=1,
+                     progress=lambda d, t: calls.append((d, t))) == [12, 60, 120]
+    assert calls[0] == (0, 3) and calls[-1] == (3, 3) and len(calls) == 4
