@@ -124,7 +124,7 @@ def test_gap_records_folder_is_named_a_folder(tmp_path, capsys):
 @pytest.mark.parametrize("argv, kind", [
     (["run", "{d}", "--out", "{d}/out"], "model file"),
     (["sweep", "{d}"], "sweep file"),
-    (["gap", "{model}", "--spectrum", "{d}"], "spectrum file"),
+    (["gap", "{model}", "--design", "{d}"], "spectrum file"),
 ])
 def test_a_folder_given_for_an_input_file_is_named_a_folder(tmp_path, capsys, argv, kind):
     folder = tmp_path / "inputs"
@@ -206,6 +206,6 @@ def test_the_echoed_model_file_states_every_default_and_runs_the_same(tmp_path, 
     again = tmp_path / "again"
     assert main(["run", str(tmp_path / "out" / "model.toml"), "--out", str(again),
                  "--no-figures"]) == 0
-    a = np.loadtxt(tmp_path / "out" / "impacts.csv", delimiter=",", skiprows=2, usecols=(1, 2, 5))
-    b = np.loadtxt(again / "impacts.csv", delimiter=",", skiprows=2, usecols=(1, 2, 5))
+    a = np.loadtxt(tmp_path / "out" / "impacts.csv", delimiter=",", skiprows=1, usecols=(1, 2, 5))
+    b = np.loadtxt(again / "impacts.csv", delimiter=",", skiprows=1, usecols=(1, 2, 5))
     assert np.array_equal(a, b)

@@ -106,7 +106,7 @@ def test_pounding_run_on_a_building_given_as_npz(tmp_path, capsys):
         assert np.isfinite(ds["storey_shear"].values[:, 2]).all()
         np.testing.assert_allclose(ds["storey_height"].values, [3.0, 3.0, 3.0])
     # and the report reads the folder
-    assert main(["report", str(out), "--out", str(tmp_path / "report.html")]) == 0
+    assert main(["report", str(out), "--html", str(tmp_path / "report.html")]) == 0
     assert (tmp_path / "report.html").stat().st_size > 10_000
 
 

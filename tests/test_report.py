@@ -246,10 +246,10 @@ def test_text_from_the_files_is_escaped(run_dir: Path, tmp_path: Path) -> None:
 def test_report_out_option_and_atomic_write(run_dir: Path, tmp_path: Path,
                                             capsys: pytest.CaptureFixture[str]) -> None:
     target = tmp_path / "sub" / "page.html"
-    assert main(["report", str(run_dir), "--out", str(target)]) == 0
+    assert main(["report", str(run_dir), "--html", str(target)]) == 0
     assert target.is_file() and str(target) in capsys.readouterr().out
     assert [p.name for p in target.parent.iterdir()] == ["page.html"]  # no temporary left
-    assert main(["report", str(run_dir), "--out", str(tmp_path)]) == 2  # a folder
+    assert main(["report", str(run_dir), "--html", str(tmp_path)]) == 2  # a folder
     assert "is a folder" in capsys.readouterr().err
 
 

@@ -97,7 +97,7 @@ def test_stuck_impacts_have_no_duration():
 
 def test_collide_says_stuck_instead_of_a_duration(capsys):
     # Jankowski's ζ at e = 0.01 overdamps Kelvin–Voigt with tension: the bodies stick
-    code = main(["collide", "kelvin-voigt", "--e", "0.01", "--formula", "jankowski",
+    code = main(["collide", "--law", "kelvin-voigt", "--e", "0.01", "--formula", "jankowski",
                  "--tension"])
     out = capsys.readouterr().out
     assert code == 0
@@ -106,7 +106,7 @@ def test_collide_says_stuck_instead_of_a_duration(capsys):
 
 @pytest.mark.parametrize("law, key", [("hertz", "e"), ("linear-spring", "e")])
 def test_elastic_laws_refuse_a_restitution(law, key, capsys):
-    code = main(["collide", law, "--e", "0.5"])
+    code = main(["collide", "--law", law, "--e", "0.5"])
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(err) == 1
     assert err[0].startswith(f"error: {key}:") and "elastic" in err[0]

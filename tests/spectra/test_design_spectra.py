@@ -1,6 +1,6 @@
 """Design spectra (``pounding.spectra.design``): Eurocode 8 (EN 1998-1:2004 §3.2.2.2)
 against values worked by hand at the corner periods and inside every branch, and a user's
-table read from CSV or TOML; every kind works in ``pounding gap --spectrum``."""
+table read from CSV or TOML; every kind works in ``pounding gap --design``."""
 
 from __future__ import annotations
 
@@ -136,10 +136,10 @@ def test_every_kind_works_in_pounding_gap(tmp_path: Path, capsys: pytest.Capture
                                           name: str, text: str) -> None:
     spec = tmp_path / name
     spec.write_text(text, encoding="utf-8")
-    assert main(["gap", str(SEED), "--duration", "2", "--spectrum", str(spec)]) == 0
+    assert main(["gap", str(SEED), "--duration", "2", "--design", str(spec)]) == 0
     out = capsys.readouterr().out
     s = DesignSpectrum.from_file(spec)
-    assert "u1 [m]" in out and f"B1 {float(s.sd(0.5)):.4f}" in out
+    assert "u1 [mm]" in out and f"B1 {1000 * float(s.sd(0.5)):.1f}" in out
 
 
 def test_asce7_is_evaluated_exactly_off_the_table() -> None:

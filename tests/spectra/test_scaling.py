@@ -138,12 +138,11 @@ def test_suite_command_prints_writes_and_draws(tmp_path, capsys):
     target = tmp_path / "site.toml"
     target.write_text('asce7 = { sds = 1.0, sd1 = 0.6 }\n')
     out_csv, out_png = tmp_path / "f.csv", tmp_path / "s.png"
-    assert main(["suite", "--target", str(target), "--period", "1.0", "--csv", str(out_csv),
+    assert main(["suite", "--design", str(target), "--t1", "1.0", "--csv", str(out_csv),
                  "--plot", str(out_png)]) == 0
     text = capsys.readouterr().out
     assert "mean / target over the range: lowest 0.900" in text
-    rows = list(csv.reader(line for line in out_csv.read_text().splitlines()
-                           if not line.startswith("#")))
+    rows = list(csv.reader(out_csv.read_text().splitlines()))  # no comment line
     assert rows[0] == ["record", "factor", "flagged", "pga_g", "scaled_pga_g", "sa_t1_g",
                        "scaled_sa_t1_g"]
     assert len(rows) == 1 + len(bundled_suite())
@@ -153,16 +152,17 @@ def test_suite_command_prints_writes_and_draws(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["--period", "0"], "period: must be a positive number (got 0.0)"),
-    (["--period", "1", "--method", "mean"], "method: one of code, sa, pga, lsq"),
-    (["--period", "1", "--range", "2,1"], "period_range: the lower period must be below"),
-    (["--period", "3"], "target: spectrum"),  # the table below ends at 2 s
+    (["--t1", "0"], "--t1 must be > 0 (got 0)"),
+    (["--t1", "1", "--method", "mean"], "Invalid value for '--method'"),
+    (["--t1", "1", "--damping", "0.05,0.02"], "--damping: suite scaling uses one damping"),
+    (["--t1", "1", "--range", "2,1"], "period_range: the lower period must be below"),
+    (["--t1", "3"], "target: spectrum"),  # the table below ends at 2 s
 ])
 def test_suite_bad_input_is_one_line(tmp_path, capsys, args, message):
     target = tmp_path / "site.csv"
     target.write_text("period_s,sa_g\n0.0,0.4\n0.5,1.0\n2.0,0.3\n")
     capsys.readouterr()
-    assert main(["suite", "--target", str(target), *args, "--csv",
+    assert main(["suite", "--design", str(target), *args, "--csv",
                  str(tmp_path / "f.csv")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0], err
@@ -174,7 +174,7 @@ def test_a_folder_with_no_record_is_one_line(tmp_path, capsys):
     target = tmp_path / "site.toml"
     target.write_text('asce7 = { sds = 1.0, sd1 = 0.6 }\n')
     capsys.readouterr()
-    assert main(["suite", str(tmp_path), "--target", str(target), "--period", "1"]) == 2
+    assert main(["suite", str(tmp_path), "--design", str(target), "--t1", "1"]) == 2
     assert len(capsys.readouterr().err.strip().splitlines()) == 1
 
 

@@ -75,6 +75,24 @@ def test_the_runs_are_a_sweep_of_records_by_levels_by_gaps(small):
             "pounding_vs_gap.png", "pounding_surface.png"} <= names
 
 
+def test_every_csv_reads_with_plain_read_csv(small):
+    """One header row, no comment line, the unit in each column's name: every table of the
+    folder reads with ``pandas.read_csv(path)`` alone, numbers as numbers."""
+    import pandas as pd
+
+    _, res = small
+    text = {"limit_state", "demand", "unit", "method", "intensity_measure", "status",
+            "record", "gap"}
+    for name in ("fragility.csv", "counts.csv", "ida.csv", "gap.csv", "needed_gaps.csv"):
+        df = pd.read_csv(res.out_dir / name)
+        assert len(df) > 0 and not str(df.columns[0]).startswith("#"), name
+        for column in set(df.columns) - text:
+            assert pd.api.types.is_numeric_dtype(df[column]), (name, column)
+    levels = pd.read_csv(res.out_dir / "needed_gaps.csv").columns[1:]
+    assert list(levels) == ["gap_m_at_0.1_g", "gap_m_at_0.3_g", "gap_m_at_0.6_g",
+                            "gap_m_at_1_g"]
+
+
 def test_needed_gaps_agree_with_every_run_with_contact(small):
     _, res = small
     check = res.analysis.gap.check

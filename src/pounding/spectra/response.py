@@ -194,10 +194,11 @@ class ResponseSpectrum:
         return out
 
 
-def csv_text(comment: str, columns: tuple[str, ...], rows: list[tuple[Any, ...]]) -> str:
-    """CSV text: ``# comment``, the column names, then the rows (numbers to 10 digits)."""
+def csv_text(columns: tuple[str, ...], rows: list[tuple[Any, ...]]) -> str:
+    """CSV text: the column names (each with its unit: ``period_s``, ``psa_g``), then the
+    rows (numbers to 10 digits); no comment line, so pandas, Excel and R read it with
+    their defaults."""
     buf = io.StringIO()
-    buf.write(f"# {comment}\n")
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(columns)
     for row in rows:
@@ -206,10 +207,10 @@ def csv_text(comment: str, columns: tuple[str, ...], rows: list[tuple[Any, ...]]
 
 
 def to_csv(spectra: list[ResponseSpectrum]) -> str:
-    """CSV text of several spectra: a ``#`` line with the units, then :data:`CSV_COLUMNS`."""
-    return csv_text("damping as a fraction of critical; period_s [s]; sd_m [m]; psv_m_s "
-                    "[m/s]; psa_g, sa_abs_g [g = 9.80665 m/s2]", CSV_COLUMNS,
-                    [row for spec in spectra for row in spec.rows()])
+    """CSV text of several spectra, :data:`CSV_COLUMNS`: damping as a fraction of critical,
+    ``period_s`` [s], ``sd_m`` [m], ``psv_m_s`` [m/s], ``psa_g``, ``sa_abs_g`` [g =
+    9.80665 m/s²]."""
+    return csv_text(CSV_COLUMNS, [row for spec in spectra for row in spec.rows()])
 
 
 def response_spectrum(motion: GroundMotion, periods: ArrayLike | None = None,

@@ -127,11 +127,10 @@ class RotDSpectrum:
 
 
 def to_csv(spectra: list[RotDSpectrum]) -> str:
-    """CSV text of several pairs: a ``#`` line with the units, then :data:`CSV_COLUMNS`."""
-    return csv_text("measure: H1, H2 as recorded, GeoMean = sqrt(H1 H2), RotD50/RotD100 "
-                    "(Boore 2010); damping as a fraction of critical; period_s [s]; sd_m [m]; "
-                    "psv_m_s [m/s]; psa_g [g = 9.80665 m/s2]", CSV_COLUMNS,
-                    [row for spec in spectra for row in spec.rows()])
+    """CSV text of several pairs, :data:`CSV_COLUMNS`: ``measure`` H1, H2 as recorded,
+    GeoMean = sqrt(H1 H2), RotD50/RotD100 (Boore 2010); damping as a fraction of critical,
+    ``period_s`` [s], ``sd_m`` [m], ``psv_m_s`` [m/s], ``psa_g`` [g = 9.80665 m/s²]."""
+    return csv_text(CSV_COLUMNS, [row for spec in spectra for row in spec.rows()])
 
 
 def rotd_spectrum(motion1: GroundMotion, motion2: GroundMotion,

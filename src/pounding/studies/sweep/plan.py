@@ -35,8 +35,9 @@ class Sweep:
     params: tuple[str, ...]
     cases: list[Case]
     out: Path
-    """The output folder: ``out`` of the file (relative to it), else ``<name>-results`` in
-    the current folder."""
+    """The output folder: ``out`` of the file (relative to it), else ``<file
+    stem>-results`` in the current folder (:func:`pounding.output_folder.default_out_dir`;
+    ``<name>-results`` for a sweep not read from a file)."""
     histories: str | None = None
     batch_size: int | None = None
     source: Path | None = None
@@ -136,6 +137,10 @@ def load_sweep(path: str | os.PathLike[str]) -> Sweep:
     data = read_toml(p, "sweep file")
     sweep = parse_sweep(data, base_dir=p.resolve().parent, where=str(p))
     sweep.source = p.resolve()
+    if data.get("out") is None:
+        from pounding.output_folder import default_out_dir
+
+        sweep.out = default_out_dir(p)
     return sweep
 
 
