@@ -162,7 +162,7 @@ def test_no_command_shows_a_file(tmp_path: Path, capsys: pytest.CaptureFixture[s
         path = files[name]
         for argv in (["record", str(path), "--units", "gal", "--dt", "0.01"],
                      ["spectrum", str(path), "--units", "gal", "--dt", "0.01"],
-                     ["suite", str(path), "--target", str(TARGET), "--period", "1",
+                     ["suite", str(path), "--design", str(TARGET), "--t1", "1",
                       "--units", "gal", "--dt", "0.01"],
                      ["gap", str(model), "--records", str(path), "--units", "gal", "--dt",
                       "0.01"],
@@ -174,7 +174,7 @@ def test_no_command_shows_a_file(tmp_path: Path, capsys: pytest.CaptureFixture[s
     for spectrum in _spectrum_files(tmp_path):
         for argv in (["spectrum", str(files["passwd.dat"]), "--design", str(spectrum),
                       "--plot", str(tmp_path / "p.png")],
-                     ["suite", "--target", str(spectrum), "--period", "1"]):
+                     ["suite", "--design", str(spectrum), "--t1", "1"]):
             code, text = _cli(capsys, *argv)
             assert code == 2 and MARKER not in text, (argv, text)
     # the second horizontal component of a model with buildings in plan
@@ -248,7 +248,7 @@ def test_a_broken_toml_file_is_named_with_its_position_not_its_keys(tmp_path: Pa
     broken.write_text(f"[{MARKER}]\nx = 1\n[{MARKER}]\ny = 2\n")
     for argv in (["run", str(broken), "--out", str(tmp_path / "o")],
                  ["mitigate", str(broken), "--out", str(tmp_path / "o")],
-                 ["suite", "--target", str(broken), "--period", "1.0"]):
+                 ["suite", "--design", str(broken), "--t1", "1.0"]):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert MARKER not in err and "(at line 3, column" in err, (argv, err)

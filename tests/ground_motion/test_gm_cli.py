@@ -33,7 +33,7 @@ def test_a_text_record_needs_units(capsys: pytest.CaptureFixture[str]) -> None:
 
     target = Path(__file__).resolve().parents[2] / "examples" / "spectrum_asce7_site.toml"
     for argv in (["record", str(SYLMAR)], ["spectrum", str(SYLMAR)],
-                 ["suite", str(SYLMAR), "--target", str(target), "--period", "1"]):
+                 ["suite", str(SYLMAR), "--design", str(target), "--t1", "1"]):
         capsys.readouterr()
         assert cli(argv) == 2
         err = capsys.readouterr().err.strip().splitlines()
