@@ -15,8 +15,10 @@ An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of
 :mod:`pounding.config.plausibility`) is one line on standard error that starts
 ``warning:``; the command goes on.
 
-Command modules import only typer and rich at module level; everything else is imported by
-the command that uses it, so ``pounding --help`` and ``pounding --version`` start at once.
+Command modules import nothing heavier than typer, rich and NumPy at module level (none of
+numba, SciPy, pandas, xarray, matplotlib, Dask or pydantic: ``tests/test_startup.py``);
+everything else is imported by the command that uses it, so ``pounding --help`` and
+``pounding --version`` start at once.
 """
 
 from __future__ import annotations
