@@ -24,15 +24,15 @@ BUNDLED = Path(str(bundled_folder()))
 
 
 # ------------------------------------------------------------------- the bundled suite
-def test_bundled_suite_is_the_ten_records_in_manifest_order() -> None:
+def test_bundled_suite_is_the_nine_records_in_manifest_order() -> None:
     suite = bundled_suite()
-    assert suite.name == "bundled" and len(suite) == 10
+    assert suite.name == "bundled" and len(suite) == 9
     assert [Path(p).name for p in suite.paths] == bundled_records()
     for gm, path in zip(suite, suite.paths, strict=True):
         assert Path(path).is_file()  # a real file inside the installed package
         assert gm.name == Path(path).stem
     assert suite[0] is load_bundled("elcentro_1940_IV_ELC9_180_PEER")
-    assert suite["tabas_1978_TAB_L1_RSN143.AT2"] is suite[6]
+    assert suite["tabas_1978_TAB_L1_RSN143.AT2"] is suite[5]
 
 
 # ------------------------------------------------------------------- folders and lists

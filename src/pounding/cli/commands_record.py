@@ -20,8 +20,9 @@ def record(
              "columns time, acceleration (needs --units).",
         show_default=False)] = None,
     bundled: Annotated[bool, typer.Option(
-        "--bundled", help="Also the twelve real records shipped with pounding (the ten of "
-                          "the bundled suite, then the Düzce pair of orthogonal components; "
+        "--bundled", help="Also the twelve real records shipped with pounding (the nine of "
+                          "the bundled suite, a second digitisation of El Centro N-S kept "
+                          "out of it, then the Düzce pair of orthogonal components; "
                           "provenance in pounding/data/records/SOURCES.md).")] = False,
     dt: Annotated[float | None, typer.Option(
         "--dt", help="Time step \\[s] for files that do not give one.")] = None,

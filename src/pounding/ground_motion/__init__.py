@@ -19,9 +19,10 @@ concept a module:
   refused in one line naming it, its size and the formats read);
 * :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
   :func:`bundled_files`, :func:`bundled_records`, :func:`bundled_companion`: the twelve
-  records shipped in ``pounding/data/records``, ten of them the bundled suite and two a pair
-  of orthogonal horizontal components of one station (see its ``SOURCES.md`` for their
-  provenance);
+  records shipped in ``pounding/data/records``, nine of them the bundled suite (nine
+  stations, eight earthquakes), a second digitisation of El Centro N–S kept out of it, and
+  two a pair of orthogonal horizontal components of one station (see its ``SOURCES.md`` for
+  their provenance);
 * :mod:`~pounding.ground_motion.suite` -- :class:`RecordSuite`, an ordered, named
   collection of records (from a folder, a list of files or :func:`bundled_suite`), and
   :func:`read_suite`;

@@ -193,8 +193,9 @@ class RecordSuite:
 
 
 def bundled_suite() -> RecordSuite:
-    """The bundled suite: the ten real records of :func:`bundled_records` (every record
-    shipped with pounding but the Düzce pair of orthogonal components), named
+    """The bundled suite: the nine real records of :func:`bundled_records` (every record
+    shipped with pounding but the Düzce pair of orthogonal components and the Peknold
+    digitisation of El Centro N–S, a second copy of the first record's motion), named
     ``"bundled"``, in the order of ``pounding/data/records/records.toml`` (provenance in
     SOURCES.md beside it and in each record's ``metadata["provenance"]``).
 
