@@ -18,17 +18,19 @@ def _ratio_cell(value: float, reference: float) -> str:
     return f"{value:.4f} (-)"
 
 
-def _read_file(f: Path, option: str, dt: float | None, units: str | None) -> Any:
+def _read_file(f: Path, option: str, dt: float | None, units: str | None,
+               choice: dict[str, int | None] | None = None) -> Any:
     from pounding.ground_motion import read_record
 
     if not f.is_file():
         raise ValueError(f"{option}: {f}: " + ("is a directory, not a record file"
                                                if f.is_dir() else "no such file"))
-    return read_record(f, dt=dt, units=units)
+    return read_record(f, dt=dt, units=units, **(choice or {}))
 
 
 def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | None,
-                  units: str | None, unscaled: bool) -> tuple[list[Any], str]:
+                  units: str | None, unscaled: bool,
+                  choice: dict[str, int | None] | None = None) -> tuple[list[Any], str]:
     """The ground motions and a sentence saying how they were obtained: for a model with
     buildings in plan, each record's x and y site components (its second component, if
     given, orthogonal to it; both turned to the model's ``[record] incidence``)."""
@@ -56,7 +58,7 @@ def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | 
         return [motion], how
     motions = []
     for k, f in enumerate(files):
-        pair = [_read_file(f, "--records", dt, units)]
+        pair = [_read_file(f, "--records", dt, units, choice)]
         if seconds:
             pair.append(_read_file(seconds[k], "--second", dt, units))
         if rec.duration is not None:
@@ -121,6 +123,16 @@ def gap_cmd(
         "--dt", help="Time step \\[s] for record files that do not give one.")] = None,
     units: Annotated[str | None, typer.Option(
         "--units", help="Acceleration unit for record files that do not state one.")] = None,
+    column: Annotated[int | None, typer.Option(
+        "--column", min=1, help="--records text files of several columns (t, NS, EW, V): "
+                                "the acceleration's column, from 1.")] = None,
+    time_column: Annotated[int | None, typer.Option(
+        "--time-column", min=0, help="--records text files: the time's column, from 1; 0 "
+                                     "for none (then give --dt). Default: 1 with --column 2 "
+                                     "or more.")] = None,
+    channel: Annotated[int | None, typer.Option(
+        "--channel", min=1, help="--records COSMOS files of several channels: the "
+                                 "acceleration channel to read, from 1.")] = None,
     second: Annotated[list[Path] | None, typer.Option(
         "--second", metavar="FILE", help="For a model with buildings in plan: the second "
         "horizontal component of each --records file, in the same order (orthogonal to it; "
@@ -192,7 +204,9 @@ def gap_cmd(
     if spec is not None:  # fail before simulating if a fundamental period is off the table
         for bl in model.buildings:
             spec.sd(bl.fundamental_period)
-    motions, how = _load_records(cfg, files, list(second or []), dt, units, unscaled)
+    motions, how = _load_records(cfg, files, list(second or []), dt, units, unscaled,
+                                 {"column": column, "time_column": time_column,
+                                  "channel": channel})
     sim_duration = duration if duration is not None else solver.get("duration")
     with console.status(f"simulating {len(model.buildings)} buildings alone under "
                         f"{len(motions)} record(s) ..."):

@@ -16,8 +16,8 @@ from pounding.cli.app import app, console  # noqa: F401
 def record(
     files: Annotated[list[Path] | None, typer.Argument(
         help="Record files: PEER .AT2 (units from the header, g if none stated), K-NET/"
-             "KiK-net ASCII, COSMOS V1/V2, or text with one column (needs --dt) or two "
-             "columns time, acceleration (needs --units).",
+             "KiK-net ASCII, COSMOS V1/V2, or text (needs --units) with one column (needs "
+             "--dt), two columns time, acceleration, or several (needs --column).",
         show_default=False)] = None,
     bundled: Annotated[bool, typer.Option(
         "--bundled", help="Also the twelve real records shipped with pounding (the nine of "
@@ -30,6 +30,16 @@ def record(
         "--units", help="Acceleration unit for files that do not state one: g, m/s2, "
                         "cm/s2, gal, ... (required for text files, which state none). An "
                         "AT2 header stating another unit is an error.")] = None,
+    column: Annotated[int | None, typer.Option(
+        "--column", min=1, help="Text files of several columns (t, NS, EW, V): the "
+                                "acceleration's column, from 1.")] = None,
+    time_column: Annotated[int | None, typer.Option(
+        "--time-column", min=0, help="Text files: the time's column, from 1; 0 for none "
+                                     "(then give --dt). Default: 1 with --column 2 or "
+                                     "more.")] = None,
+    channel: Annotated[int | None, typer.Option(
+        "--channel", min=1, help="COSMOS files of several channels: the acceleration "
+                                 "channel to read, from 1.")] = None,
     plot: Annotated[Path | None, typer.Option(
         "--plot", help="Draw each record (acceleration, velocity, displacement). With one "
                        "FILE, PATH is the figure file (format from its suffix: .png, .svg, "
@@ -48,6 +58,10 @@ def record(
 
       pounding record accel.txt --dt 0.01 --units g
 
+      pounding record station.txt --units g --column 2
+
+      pounding record CE12345.V2 --channel 3
+
       pounding record MYG0041103111446.NS CE12345.V2c
 
       pounding record --bundled
@@ -62,7 +76,8 @@ def record(
     from pounding.ground_motion.readers import UnitsRequired
 
     try:
-        motions = [read_record(f, dt=dt, units=units) for f in files]
+        motions = [read_record(f, dt=dt, units=units, column=column,
+                               time_column=time_column, channel=channel) for f in files]
     except UnitsRequired as exc:
         raise exc.named("--units") from None
     if bundled:

@@ -48,6 +48,16 @@ def spectrum_cmd(
     units: Annotated[str | None, typer.Option(
         "--units", help="Acceleration unit for records that do not state one: g, m/s2, "
         "cm/s2, gal, ... (required for text records, which state none).")] = None,
+    column: Annotated[int | None, typer.Option(
+        "--column", min=1, help="Text records of several columns (t, NS, EW, V): the "
+                                "acceleration's column, from 1.")] = None,
+    time_column: Annotated[int | None, typer.Option(
+        "--time-column", min=0, help="Text records: the time's column, from 1; 0 for none "
+                                     "(then give --dt). Default: 1 with --column 2 or "
+                                     "more.")] = None,
+    channel: Annotated[int | None, typer.Option(
+        "--channel", min=1, help="COSMOS records of several channels: the acceleration "
+                                 "channel to read, from 1.")] = None,
 ) -> None:
     """Elastic response spectra of records: Sd, PSV, PSA and absolute acceleration.
 
@@ -76,7 +86,8 @@ def spectrum_cmd(
     from pounding.spectra import DesignSpectrum
 
     designs = [DesignSpectrum.from_file(f) for f in design or []]
-    motions = _read(records, dt, units)
+    motions = _read(records, dt, units, column=column, time_column=time_column,
+                    channel=channel)
     if rotd:
         curves, text = _rotd(motions, t, zetas)
     else:
@@ -95,7 +106,9 @@ def spectrum_cmd(
         console.print(f"figure: {save_figure(fig, plot)}", highlight=False)
 
 
-def _read(files: list[Path], dt: float | None, units: str | None) -> list[Any]:
+def _read(files: list[Path], dt: float | None, units: str | None, *,
+          column: int | None = None, time_column: int | None = None,
+          channel: int | None = None) -> list[Any]:
     import dataclasses
 
     from pounding.ground_motion import read_record
@@ -106,10 +119,13 @@ def _read(files: list[Path], dt: float | None, units: str | None) -> list[Any]:
         if f.is_dir():
             raise ValueError(f"{f}: is a directory, not a record file")
         try:
-            gm = read_record(f, dt=dt, units=units)
+            gm = read_record(f, dt=dt, units=units, column=column, time_column=time_column,
+                             channel=channel)
         except UnitsRequired as exc:
             raise exc.named("--units") from None
-        motions.append(dataclasses.replace(gm, name=f.name))
+        # the file's name, and the column or channel read where the reader named one
+        chosen = gm.name[len(f.stem):] if gm.name.startswith(f.stem) else ""
+        motions.append(dataclasses.replace(gm, name=f.name + chosen))
     return motions
 
 

@@ -54,6 +54,16 @@ def suite_cmd(
     units: Annotated[str | None, typer.Option(
         "--units", help="Acceleration unit for records that do not state one: g, m/s2, "
         "cm/s2, gal, ... (required for text records, which state none).")] = None,
+    column: Annotated[int | None, typer.Option(
+        "--column", min=1, help="Text records of several columns (t, NS, EW, V): the "
+                                "acceleration's column, from 1.")] = None,
+    time_column: Annotated[int | None, typer.Option(
+        "--time-column", min=0, help="Text records: the time's column, from 1; 0 for none "
+                                     "(then give --dt). Default: 1 with --column 2 or "
+                                     "more.")] = None,
+    channel: Annotated[int | None, typer.Option(
+        "--channel", min=1, help="COSMOS records of several channels: the acceleration "
+                                 "channel to read, from 1.")] = None,
 ) -> None:
     """Scale a suite of records to a target spectrum: the factors, the mean and dispersion.
 
@@ -83,7 +93,8 @@ def suite_cmd(
     from pounding.ground_motion.readers import UnitsRequired
 
     try:
-        suite = read_suite(source, dt=dt, units=units)
+        suite = read_suite(source, dt=dt, units=units, column=column,
+                           time_column=time_column, channel=channel)
     except UnitsRequired as exc:
         raise exc.named("--units") from None
     result = scale_suite(list(suite), spectrum, period, method=method, code=code,

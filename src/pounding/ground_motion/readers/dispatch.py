@@ -127,8 +127,8 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     _check_plain_text(p)
     if channel is not None:
         raise ValueError(f"{p}: channel is for COSMOS files of several channels; this is a "
-                         f"plain-text file: choose its column with column (got channel = "
-                         f"{channel!r})")
+                         f"plain-text file: choose its column with column (--column on the command "
+                         f"line) (got channel = {channel!r})")
     return read_text(p, dt=dt, units=units, column=column, time_column=time_column)
 
 

@@ -117,9 +117,9 @@ def read_text(path: str | os.PathLike[str], dt: float | None = None,
                              f"{linenos[0]} has {len(rows[0])}")
         if not rows and len(vals) > 2 and column is None:
             raise ValueError(f"{where}: line {i + 1}: {len(vals)} columns; say which is the "
-                             "acceleration with column (from 1; --column on the command "
-                             "line) and, if not the first, which is the time with "
-                             "time_column (0: none, then give dt)")
+                             "acceleration with column (from 1: [record] column in a model "
+                             "file, --column on the command line) and, if the time is not "
+                             "the first, which is with time_column (0: none, then give dt)")
         rows.append(vals)
         linenos.append(i + 1)
     if not rows:
