@@ -51,3 +51,16 @@ def test_the_step_budget_is_the_one_the_docs_give() -> None:
     assert "`100 · n_grid + 100,000`" in engine
     assert default_step_budget(39_991) == 4_099_100 and "4,099,100" in engine
     assert default_step_budget(3_001) == 400_100 and "400,100" in engine
+
+
+def test_the_readme_points_only_at_files_that_exist() -> None:
+    root = DOCS.parent
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    named = set(re.findall(r"(?<![\w/])((?:docs|examples|benchmarks)/[\w./-]+\.(?:md|toml|py))",
+                           readme))
+    assert "docs/performance.md" in named and (root / "LICENSE").is_file()
+    missing = sorted(n for n in named if not (root / n).is_file())
+    assert not missing, missing
+    # a guide, not a log: the dated measurements live in docs/performance.md
+    assert len(readme.splitlines()) <= 200
+    assert len(re.findall(r"2026-\d\d-\d\d", readme)) == 0
