@@ -13,8 +13,9 @@ concept a module:
 * :mod:`~pounding.ground_motion.readers` -- the file readers, one module a format:
   :func:`read_at2` (PEER strong-motion ``.AT2`` files, every header variant in common use),
   :func:`read_knet` (NIED's K-NET and KiK-net ASCII files), :func:`read_cosmos` (COSMOS
-  Volume 1 and 2 files), :func:`read_text` (plain one-column, with ``dt``, or two-column
-  time/acceleration text, which states no unit: ``units`` is required) and
+  Volume 1 and 2 files), :func:`read_text` (plain one-column, with ``dt``, two-column
+  time/acceleration, or several-column text read for its ``column``, which states no unit:
+  ``units`` is required) and
   :func:`read_record` (any of the above, chosen by suffix and content; any other file is
   refused in one line naming it, its size and the formats read);
 * :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
