@@ -253,3 +253,54 @@ def test_a_broken_toml_file_is_named_with_its_position_not_its_keys(tmp_path: Pa
         err = capsys.readouterr().err
         assert MARKER not in err and "(at line 3, column" in err, (argv, err)
     assert not (tmp_path / "o").exists()
+
+
+def test_a_column_or_channel_chosen_never_shows_the_file(tmp_path: Path,
+                                                         capsys: pytest.CaptureFixture[str]
+                                                         ) -> None:
+    """The paths that choose a column of a text file or a channel of a COSMOS file: the
+    marker in the column read, in a column not read, in a file of no format, in a COSMOS
+    channel's orientation — never shown, from Python, a model file or a command."""
+    from pounding.ground_motion import read_record, read_text
+
+    files = {
+        "read.txt": f"0 0.1 0.2\n0.01 {MARKER} 0.3\n",          # in the column read
+        "other.txt": f"0 0.1 0.2\n0.01 0.2 {MARKER}\n",         # in a column not read
+        "many.txt": f"0 0.1 0.2 0.3\n0.01 0.2 {MARKER} 0.4\n",  # several columns, no column
+        "passwd.dat": PASSWD,
+    }
+    cosmos = (FORMATS / "CE99999_all.V2C").read_text(encoding="utf-8")
+    assert "360 deg" in cosmos
+    files["orient.V2C"] = cosmos.replace("360 deg", MARKER, 1)   # two channels, no choice
+    paths = {}
+    for name, text in files.items():
+        paths[name] = tmp_path / name
+        paths[name].write_text(text, encoding="utf-8")
+    for name, path in paths.items():
+        for kwargs in ({"column": 2}, {"column": 2, "time_column": 0, "dt": 0.01},
+                       {"channel": 1}, {}):
+            for read in (read_record, read_text):
+                if read is read_text and "channel" in kwargs:
+                    continue
+                try:
+                    read(path, units="g", **kwargs)
+                except ValueError as exc:
+                    _assert_hidden(exc)
+                    assert str(path) in str(exc)
+        for argv in (["record", str(path), "--units", "g", "--column", "2"],
+                     ["record", str(path), "--units", "g", "--channel", "1"],
+                     ["spectrum", str(path), "--units", "g", "--column", "2"],
+                     ["suite", str(path), "--target", str(TARGET), "--period", "1", "--units",
+                      "g", "--column", "2"],
+                     ["record", str(path), "--units", "g"]):
+            code, text = _cli(capsys, *argv)
+            assert MARKER not in text, (argv, text)
+            if code != 0:
+                assert code == 2 and len(text.strip().splitlines()) == 1, (argv, text)
+        model = _model(tmp_path, f'file = "{name}"\nunits = "g"\ncolumn = 2', f"c_{name}.toml")
+        code, text = _cli(capsys, "run", str(model), "--out", str(tmp_path / "r"))
+        assert code == 2 and MARKER not in text and name in text, (name, text)
+    # the COSMOS file's orientation is not shown where it is not an orientation
+    code, text = _cli(capsys, "record", str(paths["orient.V2C"]))
+    assert code == 2 and "holds 2 acceleration channels (1 ?; 2 90 deg)" in text, text
+    assert not (tmp_path / "r").exists()

@@ -45,7 +45,8 @@ def test_a_text_record_needs_units(capsys: pytest.CaptureFixture[str]) -> None:
 def test_record_bundled_lists_the_twelve_records(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["record", "--bundled"]) == 0
     out = capsys.readouterr().out
-    # PGA [g] of each as in SOURCES.md: the ten of the suite, then the Düzce pair
+    # PGA [g] of each as in SOURCES.md: the nine of the suite, the Peknold El Centro (out of
+    # the suite), then the Düzce pair
     for expected in ("0.3129", "0.3188", "0.5904", "0.8431", "0.5700", "0.4190", "0.8540",
                      "0.7252", "0.2302", "0.4783", "0.3119", "0.3642", "m/s2 (assumed)",
                      "18000", "kocaeli_1999_duzce_180_RSN1158.AT2",

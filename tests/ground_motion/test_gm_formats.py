@@ -147,7 +147,8 @@ def test_cosmos_cgs_file_of_two_channels_with_velocity_and_displacement() -> Non
     channel 2 acceleration in g at 5 ms. Only acceleration series count as channels."""
     with pytest.raises(ValueError, match=r"CE99999_all\.V2C: holds 2 acceleration channels "
                                          r"\(1 360 deg; 2 90 deg\); read one with "
-                                         r"read_cosmos\(path, channel=N\)"):
+                                         r"channel = N \(read_cosmos\(path, channel=N\), "
+                                         r"--channel N on the command line"):
         read_record(COSMOS_CGS)
     one = read_cosmos(COSMOS_CGS, channel=1)
     np.testing.assert_array_equal(one.accel, read_cosmos(COSMOS_ONE).accel)
@@ -242,7 +243,7 @@ def _write(path: Path, lines: list[str]) -> Path:
 
 # ------------------------------------------------------------------- no format read
 SUPPORTED = ("it reads K-NET/KiK-net ASCII, COSMOS V1/V2, PEER AT2, plain text (one "
-             "column, or two: time, acceleration)")
+             "column, two: time, acceleration, or several with a column chosen)")
 
 
 def test_file_in_no_format_is_refused_naming_the_formats(tmp_path: Path) -> None:

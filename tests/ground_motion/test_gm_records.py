@@ -5,6 +5,7 @@ ten of the bundled suite and the Düzce pair of orthogonal components kept out o
 from __future__ import annotations
 
 import hashlib
+import re
 import tomllib
 from pathlib import Path
 
@@ -70,14 +71,23 @@ def test_sources_table_lists_every_record_file() -> None:
     assert len(files) == 12
 
 
-def test_the_suite_is_the_ten_single_components() -> None:
-    """The Düzce pair ships but is marked out of the bundled suite, which keeps its ten
-    records in their order."""
+PEKNOLD = "elcentro_1940_NS_peknold_8F10.5.AT2"
+
+
+def test_the_suite_is_nine_single_components_one_a_motion() -> None:
+    """The Düzce pair and the Peknold El Centro (a second digitisation of the first
+    record's motion) ship but are marked out of the bundled suite: nine records, no motion
+    twice (no two of one earthquake and station), in their order."""
     assert bundled_records() == [e["file"] for e in MANIFEST if e.get("suite", True)]
-    assert len(bundled_records()) == 10
-    assert bundled_files() == [*bundled_records(), *PAIR]
-    assert [e.get("suite") for e in MANIFEST if e["file"] in PAIR] == [False, False]
+    assert len(bundled_records()) == 9
+    assert bundled_files() == [*bundled_records(), PEKNOLD, *PAIR]
+    assert [e.get("suite") for e in MANIFEST if e["file"] in (PEKNOLD, *PAIR)] == [False] * 3
     assert [Path(p).name for p in bundled_suite().paths] == bundled_records()
+    in_suite = [e for e in MANIFEST if e.get("suite", True)]
+    motions = {(re.split(r"[ ,]+\d{4}", e["earthquake"])[0], e["station"].split()[0])
+               for e in in_suite}
+    assert len(motions) == len(in_suite)
+    assert len({re.split(r"[ ,]+\d{4}", e["earthquake"])[0] for e in in_suite}) == 8
 
 
 def test_pair_components_are_companions_on_one_time_base() -> None:

@@ -26,17 +26,19 @@ def _ratio_cell(value: float, reference: float) -> str:
     return f"{_mm(value)} (-)"
 
 
-def _read_file(f: Path, option: str, dt: float | None, units: str | None) -> Any:
+def _read_file(f: Path, option: str, dt: float | None, units: str | None,
+               choice: dict[str, int | None] | None = None) -> Any:
     from pounding.ground_motion import read_record
 
     if not f.is_file():
         raise ValueError(f"{option}: {f}: " + ("is a directory, not a record file"
                                                if f.is_dir() else "no such file"))
-    return read_record(f, dt=dt, units=units)
+    return read_record(f, dt=dt, units=units, **(choice or {}))
 
 
 def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | None,
-                  units: str | None, unscaled: bool) -> tuple[list[Any], str]:
+                  units: str | None, unscaled: bool,
+                  choice: dict[str, int | None] | None = None) -> tuple[list[Any], str]:
     """The ground motions and a sentence saying how they were obtained: for a model with
     buildings in plan, each record's x and y site components (its second component, if
     given, orthogonal to it; both turned to the model's ``[record] incidence``)."""
@@ -64,7 +66,7 @@ def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | 
         return [motion], how
     motions = []
     for k, f in enumerate(files):
-        pair = [_read_file(f, "--records", dt, units)]
+        pair = [_read_file(f, "--records", dt, units, choice)]
         if seconds:
             pair.append(_read_file(seconds[k], "--second", dt, units))
         if rec.duration is not None:
@@ -127,6 +129,9 @@ def gap_cmd(
         "applied to every file given here (see --unscaled).", show_default=False)] = None,
     dt: opt.Dt = None,
     units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
     second: Annotated[list[Path] | None, typer.Option(
         "--second", metavar="FILE", help="For a model with buildings in plan: the second "
         "horizontal component of each --records file, in the same order (orthogonal to it; "
@@ -203,7 +208,9 @@ def gap_cmd(
         for bl in model.buildings:
             spec.sd(bl.fundamental_period)
     motions, how = _load_records(cfg, files, list(second or []), dt,
-                                 None if units is None else str(units), unscaled)
+                                 None if units is None else str(units), unscaled,
+                                 {"column": column, "time_column": time_column,
+                                  "channel": channel})
     sim_duration = duration if duration is not None else solver.get("duration")
     with progress_bar(f"{len(model.buildings)} buildings alone under {len(motions)} "
                       "record(s)", "runs") as progress:

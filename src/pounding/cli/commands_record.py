@@ -16,15 +16,19 @@ from pounding.cli.tables import Col, literal, print_table
 def record(
     files: Annotated[list[Path] | None, typer.Argument(
         help="Record files: PEER .AT2 (units from the header, g if none stated), K-NET/"
-             "KiK-net ASCII, COSMOS V1/V2, or text with one column (needs --dt) or two "
-             "columns time, acceleration (needs --units).",
+             "KiK-net ASCII, COSMOS V1/V2, or text (needs --units) with one column (needs "
+             "--dt), two columns time, acceleration, or several (needs --column).",
         show_default=False)] = None,
     bundled: Annotated[bool, typer.Option(
-        "--bundled", help="Also the twelve real records shipped with pounding (the ten of "
-                          "the bundled suite, then the Düzce pair of orthogonal components; "
+        "--bundled", help="Also the twelve real records shipped with pounding (the nine of "
+                          "the bundled suite, a second digitisation of El Centro N-S kept "
+                          "out of it, then the Düzce pair of orthogonal components; "
                           "provenance in pounding/data/records/SOURCES.md).")] = False,
     dt: opt.Dt = None,
     units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
     plot: Annotated[Path | None, typer.Option(
         "--plot", metavar="FILE", help=opt.PLOT_HELP + " The figure: each record's "
         "acceleration, velocity and displacement. With several record files, or a FILE that "
@@ -41,6 +45,10 @@ def record(
 
       pounding record accel.txt --dt 0.01 --units g
 
+      pounding record station.txt --units g --column 2
+
+      pounding record CE12345.V2 --channel 3
+
       pounding record MYG0041103111446.NS CE12345.V2c
 
       pounding record --bundled
@@ -55,7 +63,9 @@ def record(
     from pounding.ground_motion.readers import UnitsRequired
 
     try:
-        motions = [read_record(f, dt=dt, units=None if units is None else str(units)) for f in files]
+        motions = [read_record(f, dt=dt, units=None if units is None else str(units),
+                               column=column, time_column=time_column, channel=channel)
+                   for f in files]
     except UnitsRequired as exc:
         raise exc.named("--units") from None
     if bundled:

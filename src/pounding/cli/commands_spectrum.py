@@ -43,6 +43,9 @@ def spectrum_cmd(
         "period \\[s].", show_default=False)] = None,
     dt: opt.Dt = None,
     units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
 ) -> None:
     """Elastic response spectra of records: Sd, PSV, PSA and absolute acceleration.
 
@@ -71,7 +74,8 @@ def spectrum_cmd(
     from pounding.spectra import DesignSpectrum
 
     designs = [DesignSpectrum.from_file(f) for f in design or []]
-    motions = _read(records, dt, None if units is None else str(units))
+    motions = _read(records, dt, None if units is None else str(units), column=column,
+                    time_column=time_column, channel=channel)
     if rotd:
         curves, text = _rotd(motions, t, zetas)
     else:
@@ -90,7 +94,9 @@ def spectrum_cmd(
         console.print(f"figure: {save_figure(fig, plot)}", highlight=False)
 
 
-def _read(files: list[Path], dt: float | None, units: str | None) -> list[Any]:
+def _read(files: list[Path], dt: float | None, units: str | None, *,
+          column: int | None = None, time_column: int | None = None,
+          channel: int | None = None) -> list[Any]:
     import dataclasses
 
     from pounding.ground_motion import read_record
@@ -101,10 +107,13 @@ def _read(files: list[Path], dt: float | None, units: str | None) -> list[Any]:
         if f.is_dir():
             raise ValueError(f"{f}: is a directory, not a record file")
         try:
-            gm = read_record(f, dt=dt, units=units)
+            gm = read_record(f, dt=dt, units=units, column=column, time_column=time_column,
+                             channel=channel)
         except UnitsRequired as exc:
             raise exc.named("--units") from None
-        motions.append(dataclasses.replace(gm, name=f.name))
+        # the file's name, and the column or channel read where the reader named one
+        chosen = gm.name[len(f.stem):] if gm.name.startswith(f.stem) else ""
+        motions.append(dataclasses.replace(gm, name=f.name + chosen))
     return motions
 
 

@@ -53,6 +53,9 @@ def suite_cmd(
         "the mean, the target and the range.", show_default=False)] = None,
     dt: opt.Dt = None,
     units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
 ) -> None:
     """Scale a suite of records to a target spectrum: the factors, the mean and dispersion.
 
@@ -89,7 +92,8 @@ def suite_cmd(
     from pounding.ground_motion.readers import UnitsRequired
 
     try:
-        suite = read_suite(source, dt=dt, units=None if units is None else str(units))
+        suite = read_suite(source, dt=dt, units=None if units is None else str(units),
+                           column=column, time_column=time_column, channel=channel)
     except UnitsRequired as exc:
         raise exc.named("--units") from None
     result = scale_suite(list(suite), spectrum, period, method=str(method), code=str(code),

@@ -275,6 +275,21 @@ RecordUnits = Annotated[Units | None, typer.Option(
     "files, which state none. An AT2 file stating another is refused.", show_default=False)]
 """``--units`` of every command that reads record files."""
 
+Column = Annotated[int | None, typer.Option(
+    "--column", min=1, help="Text record files of several columns (t, NS, EW, V): the "
+    "acceleration's column, from 1.", show_default=False)]
+"""``--column`` of every command that reads record files."""
+
+TimeColumn = Annotated[int | None, typer.Option(
+    "--time-column", min=0, help="Text record files: the time's column, from 1; 0 for none "
+    "(then give --dt). Default: 1 with --column 2 or more.", show_default=False)]
+"""``--time-column`` of every command that reads record files."""
+
+Channel = Annotated[int | None, typer.Option(
+    "--channel", min=1, help="COSMOS record files of several channels: the acceleration "
+    "channel to read, from 1.", show_default=False)]
+"""``--channel`` of every command that reads record files."""
+
 DESIGN_HELP = escape("Design spectrum FILE: TOML (asce7 = {sds, sd1, tl}; eurocode8 = {agr, "
                      "ground_type, type, importance, damping}; or a table: kind, units, "
                      "periods, values) or CSV (period_s and sa_g, sa_m_s2 or sd_m); see "

@@ -31,10 +31,13 @@ SA_DAMPING = 0.05
 
 @functools.lru_cache(maxsize=32)
 def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float | None,
-                        units: str | None) -> GroundMotion:
+                        units: str | None, column: int | None = None,
+                        time_column: int | None = None,
+                        channel: int | None = None) -> GroundMotion:
     """:func:`read_record`, remembered per file version (modification time and size), so a
     sweep reading one record for thousands of cases parses it once per process."""
-    return read_record(path, dt=dt, units=units)
+    return read_record(path, dt=dt, units=units, column=column, time_column=time_column,
+                       channel=channel)
 
 
 @functools.lru_cache(maxsize=32)
@@ -59,7 +62,11 @@ class RecordConfig(Section):
 
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
-    them; a plain-text record states no unit, so it needs ``units`` (none is assumed). Then,
+    them; a plain-text record states no unit, so it needs ``units`` (none is assumed).
+    ``column`` and ``time_column`` (from 1; ``time_column = 0``: none) choose the columns of
+    a plain-text ``file`` of several (``t, NS, EW, V``), and ``channel`` (from 1) the
+    acceleration channel of a COSMOS ``file`` of several
+    (:func:`pounding.ground_motion.read_record`). Then,
     in this order: ``duration`` [s] keeps the record up to that time, and at most one of
     ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor reversing
     the record's polarity), ``pga_g`` [g] (scales it to that peak) and
@@ -88,6 +95,9 @@ class RecordConfig(Section):
     file: str | None = None
     dt: Step | None = None
     units: str | None = None
+    column: Annotated[int, Field(ge=1, le=10_000, strict=True)] | None = None
+    time_column: Annotated[int, Field(ge=0, le=10_000, strict=True)] | None = None
+    channel: Annotated[int, Field(ge=1, le=10_000, strict=True)] | None = None
     duration: Duration | None = None
     scale: Scale | None = None
     pga_g: Intensity | None = None
@@ -156,6 +166,12 @@ class RecordConfig(Section):
                 if getattr(self, key) is not None:
                     raise field_error(key, f"only for record files; a bundled record states "
                                             f"its own (got {fmt(getattr(self, key))})")
+        if self.bundled is not None:
+            for key in ("column", "time_column", "channel"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"only with file = ...: it chooses what a record "
+                                            f"file of several series is read for (got "
+                                            f"{fmt(getattr(self, key))})")
         base = Path((info.context or {}).get("base_dir", "."))
         for key in ("file", "second_file"):
             if getattr(self, key) is not None:
@@ -247,7 +263,8 @@ class RecordConfig(Section):
         if self.bundled is not None:
             gm = _bundled(self.bundled)
         else:
-            gm = _read_record_cached(path, version, self.dt, self.units)
+            gm = _read_record_cached(path, version, self.dt, self.units, self.column,
+                                     self.time_column, self.channel)
         if self.duration is not None:
             gm = gm.trimmed(self.duration)
         unscaled = gm

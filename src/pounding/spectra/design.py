@@ -62,6 +62,10 @@ class DesignSpectrum:
         ``Sa(T)`` in ``units`` for an array of periods, where the spectrum is a code's
         closed form (:meth:`asce7`, :meth:`eurocode8`): then :meth:`sd` evaluates it
         exactly instead of interpolating the table (which is kept for plots and files).
+    corner_periods : array_like, optional
+        The periods [s] where the spectrum changes branch (a code's ``T0, T_S, T_L`` or
+        ``T_B, T_C, T_D``), given with a ``formula``. Default: every period of the table,
+        where a linearly interpolated table bends. See :attr:`corners`.
 
     Notes
     -----
@@ -76,6 +80,7 @@ class DesignSpectrum:
     units: str = "g"
     name: str = "design spectrum"
     formula: Callable[[FloatArray], FloatArray] | None = field(default=None, repr=False)
+    corner_periods: FloatArray | None = field(default=None, repr=False)
     _sd: FloatArray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -107,6 +112,17 @@ class DesignSpectrum:
         object.__setattr__(self, "values", v)
         object.__setattr__(self, "kind", kind)
         object.__setattr__(self, "_sd", sd)
+        if self.corner_periods is not None:
+            c = np.asarray(self.corner_periods, dtype=float).ravel()
+            object.__setattr__(self, "corner_periods", np.unique(c[(c >= t[0]) & (c <= t[-1])]))
+
+    @property
+    def corners(self) -> FloatArray:
+        """Periods [s] where the spectrum is not smooth: the corner periods of a code's
+        closed form, else every period of the table (linear interpolation bends there). A
+        minimum of a ratio to the spectrum can sit exactly there, between any two periods of
+        a grid that misses them."""
+        return self.periods if self.corner_periods is None else self.corner_periods
 
     def sd(self, period: ArrayLike) -> FloatArray | float:
         """Spectral displacement [m] at ``period`` [s].
@@ -166,6 +182,7 @@ class DesignSpectrum:
         t = t[t <= top]
         formula = functools.partial(_asce7_sa, sds=sds, sd1=sd1, tl=tl)
         return cls(t, formula(t), kind="Sa", units="g", formula=formula,
+                   corner_periods=np.array([t0, ts, tl]),
                    name=name or f"ASCE 7-16 (SDS={sds:g} g, SD1={sd1:g} g, TL={tl:g} s)")
 
     @classmethod
@@ -222,6 +239,7 @@ class DesignSpectrum:
         formula = functools.partial(_ec8_sa, ag=gi * agr, soil=soil, tb=tb, tc=tc, td=td,
                                     eta=eta)
         return cls(t, formula(t), kind="Sa", units="g", formula=formula,
+                   corner_periods=np.array([tb, tc, td]),
                    name=name or f"EN 1998-1 Type {kind}, ground {ground} (agR={agr:g} g, "
                                 f"γI={gi:g}, ζ={100 * zeta:g} %)")
 

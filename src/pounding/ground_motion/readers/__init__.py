@@ -7,8 +7,9 @@ reading (:func:`pounding.units.acceleration_factor`):
   (:func:`read_knet`: counts times the scale factor, less the record's mean);
 * :mod:`~pounding.ground_motion.readers.cosmos` -- COSMOS Volume 1 and 2 files, format
   v1.20 (:func:`read_cosmos`);
-* :mod:`~pounding.ground_motion.readers.text` -- plain one-column (with ``dt``) or
-  two-column time/acceleration text (:func:`read_text`), which states no unit: ``units``
+* :mod:`~pounding.ground_motion.readers.text` -- plain one-column (with ``dt``),
+  two-column time/acceleration or several-column text with the acceleration's ``column``
+  chosen (:func:`read_text`), which states no unit: ``units``
   is required (:class:`UnitsRequired` otherwise; :func:`needs_units` tells such a file);
 * :mod:`~pounding.ground_motion.readers.dispatch` -- :func:`read_record`, any of the
   above, chosen by suffix and content; any other file is refused in one line naming the

@@ -132,10 +132,12 @@ def read_cosmos(path: str | os.PathLike[str], *, dt: float | None = None,
         raise ValueError(f"{where}: no acceleration series in this COSMOS file (only "
                          "velocity, displacement or spectra)")
     if channel is None and len(acceleration) > 1:
-        listing = "; ".join(f"{k} {_component(s) or '?'}"
+        listing = "; ".join(f"{k} {_orientation(_component(s))}"
                             for k, s in enumerate(acceleration, start=1))
         raise ValueError(f"{where}: holds {len(acceleration)} acceleration channels "
-                         f"({listing}); read one with read_cosmos(path, channel=N)")
+                         f"({listing}); read one with channel = N (read_cosmos(path, "
+                         "channel=N), --channel N on the command line, channel = N in a "
+                         "model file's [record])")
     k = 1 if channel is None else channel
     if not 1 <= k <= len(acceleration):
         raise ValueError(f"{where}: channel must be 1 to {len(acceleration)} (got {channel})")
@@ -298,6 +300,17 @@ def _known(values: tuple[float, ...], index: int, no_value: float) -> float | No
 def _station(s: _Series) -> str:
     m = _RE_STATION.search(s.text[4]) if len(s.text) > 4 else None
     return m.group(1) if m else ""
+
+
+_RE_ORIENTATION = re.compile(r"\d{1,3}(?:\.\d{1,2})?\s*deg|up|down|vertical|[NSEW]\d{0,2}[NSEW]?",
+                             re.IGNORECASE)
+"""What an orientation looks like: only such a text of the file is shown in a message."""
+
+
+def _orientation(component: str) -> str:
+    """The channel's orientation for a message ("360 deg", "Up"), or "?" for any other
+    text (a message never shows what a file holds beyond what it was read for)."""
+    return component if _RE_ORIENTATION.fullmatch(component) else "?"
 
 
 def _component(s: _Series) -> str:

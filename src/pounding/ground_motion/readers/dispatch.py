@@ -56,7 +56,8 @@ FORMATS: tuple[RecordFormat, ...] = (
 the first two are told by their first line alone)."""
 
 SUPPORTED: str = ", ".join(
-    [fmt.name for fmt in FORMATS] + ["plain text (one column, or two: time, acceleration)"])
+    [fmt.name for fmt in FORMATS]
+    + ["plain text (one column, two: time, acceleration, or several with a column chosen)"])
 """The formats :func:`read_record` reads, for the message that refuses any other."""
 
 
@@ -71,7 +72,8 @@ def _format_of(p: Path) -> RecordFormat | None:
 
 
 def read_record(path: str | os.PathLike[str], dt: float | None = None,
-                units: str | None = None) -> GroundMotion:
+                units: str | None = None, *, column: int | None = None,
+                time_column: int | None = None, channel: int | None = None) -> GroundMotion:
     """Read an acceleration record, choosing the reader from the suffix and content.
 
     A suffix of one of :data:`FORMATS` (any case: ``.AT2``; ``.NS``, ``.EW2``...; ``.V2``,
@@ -91,6 +93,14 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     units : str, optional
         Acceleration unit for files that do not state one; required for plain text. For an
         AT2 header that states a different unit this is an error.
+    column, time_column : int, optional
+        For plain text only: the column of the acceleration and of the time, from 1
+        (:func:`~pounding.ground_motion.readers.text.read_text`); a file of another format
+        given either is refused.
+    channel : int, optional
+        For COSMOS only: which acceleration channel of a file that holds several, from 1
+        (:func:`~pounding.ground_motion.readers.cosmos.read_cosmos`); a file of another
+        format given one is refused.
 
     Raises
     ------
@@ -104,9 +114,22 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     p = check_file(path)
     fmt = _format_of(p)
     if fmt is not None:
+        for key, value in (("column", column), ("time_column", time_column)):
+            if value is not None:
+                raise ValueError(f"{p}: {key} is for plain-text records; this is a "
+                                 f"{fmt.name} file (got {key} = {value!r})")
+        if fmt.read is cosmos.read_cosmos:
+            return cosmos.read_cosmos(p, dt=dt, units=units, channel=channel)
+        if channel is not None:
+            raise ValueError(f"{p}: channel is for COSMOS files of several channels; this is "
+                             f"a {fmt.name} file (got channel = {channel!r})")
         return fmt.read(p, dt=dt, units=units)
     _check_plain_text(p)
-    return read_text(p, dt=dt, units=units)
+    if channel is not None:
+        raise ValueError(f"{p}: channel is for COSMOS files of several channels; this is a "
+                         f"plain-text file: choose its column with column (--column on the command "
+                         f"line) (got channel = {channel!r})")
+    return read_text(p, dt=dt, units=units, column=column, time_column=time_column)
 
 
 def needs_units(path: str | os.PathLike[str]) -> bool:
