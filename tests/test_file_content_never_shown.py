@@ -290,7 +290,7 @@ def test_a_column_or_channel_chosen_never_shows_the_file(tmp_path: Path,
         for argv in (["record", str(path), "--units", "g", "--column", "2"],
                      ["record", str(path), "--units", "g", "--channel", "1"],
                      ["spectrum", str(path), "--units", "g", "--column", "2"],
-                     ["suite", str(path), "--target", str(TARGET), "--period", "1", "--units",
+                     ["suite", str(path), "--design", str(TARGET), "--t1", "1", "--units",
                       "g", "--column", "2"],
                      ["record", str(path), "--units", "g"]):
             code, text = _cli(capsys, *argv)

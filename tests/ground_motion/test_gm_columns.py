@@ -158,8 +158,8 @@ def test_the_commands_take_column_time_column_and_channel(station: Path, capsys)
                  "0.5,1", "--csv", str(folder / "s.csv")]) == 0
     capsys.readouterr()
     assert "station.txt (column 4)" in (folder / "s.csv").read_text(encoding="utf-8")
-    assert main(["suite", str(station), "--units", "g", "--column", "3", "--target",
-                 str(TARGET), "--period", "1"]) == 0
+    assert main(["suite", str(station), "--units", "g", "--column", "3", "--design",
+                 str(TARGET), "--t1", "1"]) == 0
     assert "station (column 3)" in capsys.readouterr().out
     assert main(["gap", str(ROOT / "examples" / "seed_sdof_pair.toml"), "--records",
                  str(station), "--units", "g", "--column", "2", "--time-column", "1"]) == 0
