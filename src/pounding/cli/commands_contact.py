@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
 from rich import box
 from rich.table import Table
 from rich.text import Text
 
 from pounding.cli.app import app, console
+
+if TYPE_CHECKING:
+    import numpy as np
 
 SHORT = {"anagnostopoulos": "ζ Anag.", "schwager-poschel": "ζ S&P", "jankowski": "ζ Jank.(19)", "mahmoud": "ζ Mahm.(20)",
          "naderpour": "ζ eq 39", "hunt-crossley": "χ H-C", "lankarani-nikravesh": "χ L-N",
@@ -24,6 +26,8 @@ E_HELP = "Coefficients of restitution, comma-separated (default: the seed's Tabl
 
 
 def _parse_floats(text: str | None, name: str, default: tuple[float, ...]) -> np.ndarray:
+    import numpy as np
+
     if text is None:
         return np.asarray(default, dtype=float)
     try:
@@ -279,6 +283,8 @@ def fit_cmd(
       pounding fit force.csv --m1 2e5 --m2 3e5 --v0 0.5 --law hunt-crossley
     """
     from dataclasses import fields
+
+    import numpy as np
 
     from pounding.contact.base import SYMBOLS
     from pounding.contact.calibration import fit_impact

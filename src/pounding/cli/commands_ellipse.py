@@ -3,7 +3,6 @@
 from pathlib import Path
 from typing import Optional
 
-import numpy as np
 import typer
 from rich.table import Table
 
@@ -37,6 +36,8 @@ def ellipse(
     from pounding.io import check_output_file
 
     check_output_file(plot, "--plot", figure=True)
+    import numpy as np
+
     from pounding.link_element import (
         damping_coefficient_viscous,
         dissipated_energy,
