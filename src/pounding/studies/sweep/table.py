@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pounding.studies.sweep.cases import _canon
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
-from pounding.studies.sweep.plan import Sweep
 from pounding.studies.sweep.store import RESULTS_FILE
+
+if TYPE_CHECKING:
+    from pounding.studies.sweep.plan import Sweep
 
 __all__ = ["NONDETERMINISTIC_COLUMNS", "load_results"]
 
