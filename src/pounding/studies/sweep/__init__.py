@@ -23,6 +23,7 @@ column except ``wall_time_s`` (:data:`NONDETERMINISTIC_COLUMNS`).
 The modules, one concept each:
 
 * planning — :mod:`~pounding.studies.sweep.plan` (the sweep file, :class:`Sweep`),
+  :mod:`~pounding.studies.sweep.sections` (its keys and tables, validated as a model file's),
   :mod:`~pounding.studies.sweep.cases` (the case tables, case ids),
   :mod:`~pounding.studies.sweep.overrides` (a case applied to the base model),
   :mod:`~pounding.studies.sweep.checks` (what is checked before anything runs);
