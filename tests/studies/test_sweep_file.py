@@ -97,3 +97,24 @@ def test_a_good_random_table_still_draws_the_same_cases():
         n = int(gen.integers(1, 3, endpoint=True))
         expected.append((gap, e, scale, n))
     assert [c.values for c in sweep.cases] == expected
+
+
+@pytest.mark.parametrize("missing, scheduler, words", [
+    ({"distributed"}, [], "a sweep needs distributed (Dask), which comes"),
+    ({"pyarrow", "distributed"}, [], "a sweep needs pyarrow and distributed (Dask), which come"),
+    ({"pyarrow"}, ["--scheduler", "synchronous"], "a sweep needs pyarrow, which comes"),
+])
+def test_without_the_sweep_extra_a_sweep_is_one_line_naming_it(tmp_path, capsys, monkeypatch,
+                                                                missing, scheduler, words):
+    import importlib.util
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name in missing else real(name, *a))
+    path = tmp_path / "sweep.toml"
+    path.write_text(f'base = "{BASE}"\nout = "out"\n' + GRID, encoding="utf-8")
+    capsys.readouterr()
+    assert main(["sweep", str(path), *scheduler]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f'error: {words} with the sweep extra: pip install "pounding[sweep]"']
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sweep.toml"]

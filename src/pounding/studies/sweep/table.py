@@ -109,6 +109,9 @@ def load_results(path: str | os.PathLike[str], deterministic: bool = False) -> A
     With ``deterministic`` the columns that vary between runs are left out
     (:data:`NONDETERMINISTIC_COLUMNS`): what remains is bit-identical between two runs.
     """
+    from pounding.studies.sweep.extra import require_sweep_packages
+
+    require_sweep_packages("reading a sweep's table", dask=False)
     import pyarrow.parquet as pq
 
     p = Path(path)
