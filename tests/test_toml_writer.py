@@ -121,7 +121,7 @@ _values = st.recursive(
     max_leaves=20)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(st.dictionaries(st.text(), _values, max_size=6))
 def test_any_toml_document_reads_back_equal(data: dict[str, Any]) -> None:
     assert same(tomllib.loads(dump_toml(data)), data)

@@ -7,6 +7,7 @@ can be, not from the sweep's own bookkeeping."""
 from __future__ import annotations
 
 import os
+import platform
 import re
 import signal
 import subprocess
@@ -68,7 +69,7 @@ def test_a_local_clusters_workers_are_forked_from_the_preloaded_server():
     assert len(answers) == 2
     for parent, preloaded, sigint_held, allocator in answers:
         assert parent == pid and preloaded and sigint_held
-        if os.confstr("CS_GNU_LIBC_VERSION"):  # glibc: mallopt took both settings
+        if platform.libc_ver()[0] == "glibc":  # mallopt took both settings
             assert allocator == dict.fromkeys(WORKER_MALLOC_ENV, True)
 
 
@@ -82,7 +83,7 @@ def test_the_server_stops_when_no_sweep_comes(monkeypatch):
 
 
 _PROBE = textwrap.dedent("""
-    import json, multiprocessing, os, sys
+    import json, multiprocessing, os, signal, sys
     from multiprocessing import forkserver
     from pathlib import Path
 
@@ -93,37 +94,43 @@ _PROBE = textwrap.dedent("""
         return {"environ": dict(os.environ), "umask": umask,
                 "start": multiprocessing.get_start_method(allow_none=True),
                 "preload": list(fs._preload_modules), "server": fs._forkserver_pid,
-                "sigmask": sorted(map(int, __import__("signal").pthread_sigmask(0, set())))}
+                "sigmask": sorted(map(int, signal.pthread_sigmask(signal.SIG_BLOCK, set())))}
+
+    def sweep(out, workers):
+        from pounding.studies.sweep import load_results, run_sweep
+        res = run_sweep(sys.argv[1], out, scheduler=None, n_workers=workers)
+        assert load_results(res.results)["status"].eq("ok").all()
 
     if __name__ == "__main__":
         os.umask(0o027)
-        mode = sys.argv[2]
-        if mode == "own-server":  # the caller runs a fork server of its own
-            multiprocessing.set_start_method("forkserver")
-            multiprocessing.set_forkserver_preload(["json"])
-            forkserver.ensure_running()
+        states = {}
+        # a process that never used multiprocessing: its first sweep
         before = state()
-        from pounding.studies.sweep import load_results, run_sweep
-        res = run_sweep(sys.argv[1], scheduler=None, n_workers=1)
-        assert load_results(res.results)["status"].eq("ok").all()
-        after = state()
-        if mode == "own-server":  # and it still serves it after the sweep
-            ctx = multiprocessing.get_context("forkserver")
-            p = ctx.Process(target=os.getpid)
-            p.start(); p.join()
-            assert p.exitcode == 0
-        print(json.dumps({"before": before, "after": after}))
+        sweep("out1", 2)
+        states["fresh"] = (before, state())
+        # a process with a fork server of its own, and its own preload list
+        multiprocessing.set_start_method("forkserver")
+        multiprocessing.set_forkserver_preload(["json"])
+        forkserver.ensure_running()
+        before = state()
+        sweep("out2", 1)
+        states["own-server"] = (before, state())
+        ctx = multiprocessing.get_context("forkserver")  # which still serves it
+        p = ctx.Process(target=os.getpid)
+        p.start(); p.join()
+        assert p.exitcode == 0
+        print(json.dumps(states))
 """)
 
 
-@pytest.mark.parametrize("mode", ["fresh", "own-server"])
-def test_a_sweep_leaves_the_calling_process_as_it_was(tmp_path, mode):
+def test_a_sweep_leaves_the_calling_process_as_it_was(tmp_path):
     """After a sweep on a local cluster: the caller's environment, umask, start method,
-    signal mask, fork server (none, or its own) and preload list are as before."""
+    signal mask, fork server (none, or its own) and preload list are as before — for a
+    process's first sweep, and for a process that runs a fork server of its own."""
     import json
 
     sweep = tmp_path / "sweep.toml"
-    sweep.write_text(f'base = "{ROOT / "examples" / "seed_sdof_pair.toml"}"\nout = "out"\n'
+    sweep.write_text(f'base = "{ROOT / "examples" / "seed_sdof_pair.toml"}"\n'
                      '[grid]\n"contact.gap" = [0.01, 0.02]\n"record.duration" = [2.0]\n',
                      encoding="utf-8")
     probe = tmp_path / "probe.py"
@@ -135,12 +142,13 @@ def test_a_sweep_leaves_the_calling_process_as_it_was(tmp_path, mode):
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(
         [src, *(str(Path(p).resolve()) for p in os.environ.get("PYTHONPATH", "").split(
             os.pathsep) if p)])}
-    proc = subprocess.run([sys.executable, str(probe), str(sweep), mode], capture_output=True,
+    proc = subprocess.run([sys.executable, str(probe), str(sweep)], capture_output=True,
                           text=True, timeout=300, cwd=tmp_path, env=env)
     assert proc.returncode == 0, proc.stderr[-3000:]
     states = json.loads(proc.stdout.strip().splitlines()[-1])
-    assert states["after"] == states["before"]
-    assert states["before"]["umask"] == ["Umask:\t0027"]
-    if mode == "own-server":
-        assert states["before"]["server"] is not None
-        assert states["before"]["preload"] == ["json"]
+    for mode, (before, after) in states.items():
+        assert after == before, mode
+        assert before["umask"] == ["Umask:\t0027"]
+    assert states["fresh"][0]["server"] is None and states["fresh"][0]["start"] is None
+    assert states["own-server"][0]["server"] is not None
+    assert states["own-server"][0]["preload"] == ["json"]
