@@ -45,3 +45,20 @@ def test_help_loads_no_numpy(argv: list[str]) -> None:
             "import sys; sys.stdout.flush()")
     # the help goes to stdout before the probe's line: take the last line only
     assert loaded_by(code) == set(), argv
+
+
+@pytest.mark.parametrize("package", ["pounding.config", "pounding.studies",
+                                     "pounding.studies.sweep"])
+def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
+    """Each name a package lists is what its module defines (imported on first use), and
+    a name it does not have is an AttributeError naming the package."""
+    import importlib
+
+    module = importlib.import_module(package)
+    for name in module.__all__:
+        value = getattr(module, name)
+        source = importlib.import_module(module._EXPORTS[name])
+        assert value is getattr(source, name), name
+        assert name in dir(module)
+    with pytest.raises(AttributeError, match=f"module '{package}' has no attribute 'nope'"):
+        getattr(module, "nope")

@@ -90,17 +90,22 @@ def __dir__() -> list[str]:
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
     from pounding.studies.sweep.cases import MAX_CASES, Case, case_id
-    from pounding.studies.sweep.execute import run_case, warm_up
+    from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
     from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
     from pounding.studies.sweep.overrides import apply_overrides
-    from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep, parse_sweep
+    from pounding.studies.sweep.plan import (  # noqa: F401
+        HISTORY_FORMATS,
+        Sweep,
+        load_sweep,
+        parse_sweep,
+    )
     from pounding.studies.sweep.runner import (
         SweepInterrupted,
         SweepOutcome,
         SweepStopped,
         run_sweep,
     )
-    from pounding.studies.sweep.store import (
+    from pounding.studies.sweep.store import (  # noqa: F401  (names of the output folder)
         HISTORIES_DIR,
         MANIFEST_FILE,
         PARTS_DIR,
