@@ -11,11 +11,14 @@ from pounding.studies.sweep.cases import Case, _canon
 from pounding.studies.sweep.overrides import apply_overrides
 
 
-def _check_path(path: str, base: dict[str, Any], where: str) -> None:
-    """Fail fast on a parameter path that names no key of a model file."""
+def _check_path(path: str, base: dict[str, Any], where: str, table: str = "") -> None:
+    """Fail fast on a parameter path that names no key of a model file (the message names
+    it under its ``table``: ``grid.contact.gapp: unknown key 'gapp'; …``)."""
     from pydantic import BaseModel
 
     from pounding.config import RunConfig
+
+    named = f"{table}.{path}" if table else path
 
     model: Any = RunConfig
     node: Any = base
@@ -27,25 +30,25 @@ def _check_path(path: str, base: dict[str, Any], where: str) -> None:
                 node = node[0] if node else None
                 continue
             if not part.isdigit() or int(part) >= len(node):
-                raise ValueError(f"{where}: {path}: {at}: need an index 0 … {len(node) - 1} "
+                raise ValueError(f"{where}: {named}: {at}: need an index 0 … {len(node) - 1} "
                                  "or * (every one)")
             node = node[int(part)]
             continue
         if not (isinstance(model, type) and issubclass(model, BaseModel)):
-            raise ValueError(f"{where}: {path}: {'.'.join(parts[:i])} has no keys")
+            raise ValueError(f"{where}: {named}: {'.'.join(parts[:i])} has no keys")
         fields = model.model_fields
         if part not in fields:
             import difflib
             close = difflib.get_close_matches(part, list(fields), n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
-            raise ValueError(f"{where}: {path}: unknown key {part!r}{hint} (keys here: "
+            raise ValueError(f"{where}: {named}: unknown key {part!r}{hint} (keys here: "
                              f"{', '.join(sorted(fields))})")
         model = _unwrap(fields[part].annotation)
         node = node.get(part) if isinstance(node, dict) else None
         if isinstance(node, list) and i == len(parts) - 1:
             continue
         if node is None and i < len(parts) - 1 and isinstance(model, list):
-            raise ValueError(f"{where}: {path}: the base model has no {at}")
+            raise ValueError(f"{where}: {named}: the base model has no {at}")
         if isinstance(model, list):
             model = model[0]
             if i < len(parts) - 1 and not isinstance(node, list):

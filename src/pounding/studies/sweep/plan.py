@@ -95,7 +95,7 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     kind = spec.kind
     params, rows, samples = case_rows(kind, getattr(spec, kind), where)
     for p in params:
-        _check_path(p, base_data, where)
+        _check_path(p, base_data, where, kind)
     # record files in the cases are relative to the sweep file: make them absolute
     if any(_is_record_file(p) for p in params):
         rows = [tuple(_resolve_value(p, v, here) for p, v in zip(params, r)) for r in rows]
