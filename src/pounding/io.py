@@ -166,14 +166,23 @@ def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
 
 
 def umask() -> int:
-    """The process umask (from /proc where possible, so it is not changed even briefly)."""
+    """The process umask, read without setting it (``os.umask`` can only be read by
+    setting it, for a moment, for every thread of the process): from ``/proc`` where
+    there is one (Linux), else from the mode a new file is given."""
     with contextlib.suppress(OSError, ValueError):
         for line in Path("/proc/self/status").read_text().splitlines():
             if line.startswith("Umask:"):
                 return int(line.split()[1], 8)
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
+    return _umask_of_a_new_file()
+
+
+def _umask_of_a_new_file() -> int:
+    """The umask, from the permissions of a file made with mode 0777 in a private
+    temporary folder (then removed)."""
+    with tempfile.TemporaryDirectory(prefix=".pounding-umask-") as folder:
+        probe = os.path.join(folder, "probe")
+        os.close(os.open(probe, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o777))
+        return 0o777 & ~os.stat(probe).st_mode
 
 
 def write_text(target: str | os.PathLike[str], text: str) -> Path:

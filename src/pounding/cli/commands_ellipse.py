@@ -49,6 +49,7 @@ def ellipse(
     from pounding.io import check_output_file
 
     check_output_file(plot, "--plot", figure=True)
+
     from pounding.link_element import (
         damping_coefficient_viscous,
         dissipated_energy,

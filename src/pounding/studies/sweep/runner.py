@@ -26,6 +26,7 @@ from pounding.studies.sweep.cluster import (
     _start_worker_server,
 )
 from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
+from pounding.studies.sweep.extra import require_sweep_packages
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
     PARTS_DIR,
@@ -168,6 +169,7 @@ def run_sweep(input: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     """
     sweep = input
     start = time.perf_counter()
+    require_sweep_packages("a sweep", dask=scheduler not in ("synchronous", "sync", "none"))
     if not isinstance(sweep, Sweep):
         sweep = load_sweep(sweep)
     if out is None and sweep.out_refused is not None:
