@@ -1,0 +1,184 @@
+"""Run a model file end to end: load, simulate, write every output into one folder.
+
+:func:`run` never leaves a half-written output folder. Everything is written into a hidden
+temporary folder beside the target (``.<name>.tmp-<pid>-XXXXXXXX``, marked as pounding's,
+:func:`pounding.output_folder.make_temporary_folder`) with a manifest of the files written
+(:mod:`pounding.manifest`), and moved into place only when complete; if anything fails (a
+full disk, an error, Ctrl-C or SIGTERM) the temporary folder is removed and a previous
+output folder is left untouched. A run killed outright (SIGKILL) cannot clean up after
+itself: the next run into the same folder removes what it left (and puts back an earlier
+output it was replacing) — only folders marked as made by a process no longer running.
+
+An existing output folder is replaced only with ``overwrite=True``, and only if it is empty
+or holds nothing but the files its manifest lists, unchanged (an earlier run's output):
+the new folder is complete before the old one is removed, file by file.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+
+from pounding.config import RunConfig, load_config
+from pounding.integrate import simulate
+from pounding.io import check_writable, write_text
+from pounding.manifest import check_replaceable
+from pounding.output_folder import new_output_folder, remove_stale
+from pounding.plot.registry import RUN_FIGURES
+from pounding.result import Result
+
+__all__ = ["OUTPUT_FILES", "FIGURE_FILES", "RunOutput", "default_out_dir", "run", "run_config"]
+
+OUTPUT_FILES: dict[str, str] = {
+    "timehistories": "timehistories.nc",
+    "impacts": "impacts.csv",
+    "summary": "summary.json",
+    "model": "model.toml",
+}
+"""Data files of every run (key → file name)."""
+
+
+FIGURE_FILES: dict[str, str] = {key: fig.file for key, fig in RUN_FIGURES.items()}
+"""Every figure a run can write (key → file name); a run writes those of its model
+(:func:`pounding.plot.registry.figures_for`)."""
+
+TEMPORARY_HOLDS: tuple[str, ...] = (*OUTPUT_FILES.values(), *FIGURE_FILES.values())
+"""What a run's temporary folder may hold: what a run killed outright leaves is removed by
+these names (:func:`pounding.manifest.remove_temporary_folder`)."""
+
+
+@dataclass(frozen=True)
+class RunOutput:
+    """What :func:`run` produced.
+
+    Attributes
+    ----------
+    out_dir : Path
+        The output folder (complete).
+    files : dict[str, Path]
+        Every file written, by key (:data:`OUTPUT_FILES`, :data:`FIGURE_FILES`).
+    result : Result
+        The simulation.
+    config : RunConfig
+        The configuration that was run.
+    wall_time : float
+        Seconds from start to finish (loading, integrating, writing) [s].
+    """
+
+    out_dir: Path
+    files: dict[str, Path]
+    result: Result
+    config: RunConfig
+    wall_time: float
+
+
+def default_out_dir(config_path: str | os.PathLike[str]) -> Path:
+    """``<model file stem>-results`` in the current folder."""
+    return Path(f"{Path(config_path).stem}-results")
+
+
+def _check_target(out_dir: Path, overwrite: bool) -> None:
+    if out_dir.exists() or out_dir.is_symlink():
+        if not out_dir.is_dir() or out_dir.is_symlink():
+            raise ValueError(f"out: {out_dir} exists and is not a folder; choose another --out")
+        if not overwrite:
+            raise ValueError(f"out: {out_dir} already exists; give --overwrite to replace it "
+                             "or choose another --out")
+        check_replaceable(out_dir, "run")
+
+
+def _remove_stale(out_dir: Path) -> None:
+    """Remove what a run into ``out_dir`` killed outright (SIGKILL, power loss) left behind
+    (:func:`pounding.output_folder.remove_stale`): its temporary folder beside ``out_dir``, and
+    if it was killed while replacing an earlier output, put that output back. Temporaries
+    in ``out_dir`` itself (of a killed ``pounding report``) go too. Only what pounding
+    marked, of processes no longer running, is touched."""
+    remove_stale(out_dir.absolute().parent, restore=out_dir.absolute())
+    if out_dir.is_dir() and not out_dir.is_symlink():
+        remove_stale(out_dir)
+
+
+def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
+    from pounding.plot import save_figure
+    from pounding.plot.registry import figures_for
+
+    out = {}
+    for key, fig in figures_for(result).items():
+        out[key] = save_figure(fig.make(result), folder / fig.file, dpi=dpi)
+    return out
+
+
+def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
+               progress: Callable[[float], None] | None = None, overwrite: bool = False,
+               figures: bool | None = None) -> RunOutput:
+    """Simulate an already-loaded configuration and write its outputs into ``out_dir``.
+
+    See :func:`run`.
+    """
+    start = time.perf_counter()
+    out = Path(out_dir)
+    if out.name in ("", ".", ".."):
+        raise ValueError(f"out: {out_dir!s} is not a folder name; give e.g. --out results")
+    check_writable(out)
+    _remove_stale(out)
+    _check_target(out, overwrite)
+    model, motion, solver = cfg.build()
+    want_figures = cfg.output.figures if figures is None else figures
+
+    with new_output_folder(out, "run", TEMPORARY_HOLDS,
+                           check=lambda: _check_target(out, overwrite)) as tmp:
+        result = simulate(model, motion, progress=progress, **solver)
+        files = result.save(tmp, warnings=cfg.plausibility)
+        source = str(cfg.source) if cfg.source is not None else "(not read from a file)"
+        files["model"] = write_text(
+            tmp / OUTPUT_FILES["model"],
+            cfg.to_toml(resolve_paths=True, defaults=True,
+                        header=f"The model file of this run, as pounding read it, with every "
+                               f"default it took written out.\n"
+                               f"Source: {source}\nRe-run: pounding run model.toml"))
+        if want_figures:
+            files.update(_write_figures(result, tmp, cfg.output.dpi))
+    files = {k: out / Path(v).name for k, v in files.items()}
+    return RunOutput(out_dir=out, files=files, result=result, config=cfg,
+                     wall_time=time.perf_counter() - start)
+
+
+def run(config_path: str | os.PathLike[str], out_dir: str | os.PathLike[str] | None = None,
+        progress: Callable[[float], None] | None = None, *, overwrite: bool = False,
+        figures: bool | None = None) -> RunOutput:
+    """Load a model file, simulate it and write every output into ``out_dir``.
+
+    Parameters
+    ----------
+    config_path : path-like
+        The TOML model file (``docs/running.md``).
+    out_dir : path-like, optional
+        Output folder; default :func:`default_out_dir`. It receives ``timehistories.nc``,
+        ``impacts.csv``, ``summary.json`` (:meth:`pounding.result.Result.save`),
+        ``model.toml`` (the configuration as read, record path made absolute) and, unless
+        turned off, the PNG figures of the model
+        (:func:`pounding.plot.registry.figures_for`: five, six with yielding storeys).
+    progress : callable, optional
+        Called with the fraction done (0 … 1) during the integration.
+    overwrite : bool
+        Replace an existing output folder (else it is an error).
+    figures : bool, optional
+        Write the figures; default ``[output] figures`` of the model file.
+
+    Returns
+    -------
+    RunOutput
+
+    Raises
+    ------
+    ValueError
+        A bad model file (one line per problem), or an output folder that exists.
+        Nothing is written then.
+    """
+    cfg = load_config(config_path)
+    target = default_out_dir(config_path) if out_dir is None else Path(out_dir)
+    return run_config(cfg, target, progress=progress, overwrite=overwrite, figures=figures)
