@@ -96,7 +96,7 @@ def _sigterm_as_interrupt() -> Iterator[None]:
 def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | None,
          label: str) -> None:
     from pounding.config import load_config
-    from pounding.run import default_out_dir, run_config
+    from pounding.run_file import default_out_dir, run_config
 
     from pounding.cli import EXIT_INTERRUPTED, error_line
 

@@ -260,7 +260,7 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
     record), ``summary.csv`` (mean per option), ``study.toml`` (the file as read) and
     ``mitigation.png`` (the trade-off figure).
 
-    The folder is written whole or not at all, as a run's (:func:`pounding.run.run`): built
+    The folder is written whole or not at all, as a run's (:func:`pounding.run`): built
     beside the target and moved into place when complete; an earlier study's folder is
     replaced (``overwrite``) only if it holds nothing but the files its manifest lists.
 
