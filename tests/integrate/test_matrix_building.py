@@ -284,11 +284,11 @@ def test_dense_building_runs_with_rayleigh_damping_from_its_own_modes():
     assert model.dof_names()[:2] == ["F1", "F2"]
 
 
-def test_frame_helper_against_opensees():
+def test_frame_helper_against_opensees(opensees):
     """The frame of the tests and of ``examples/matrix_building.toml``, built in OpenSeesPy
     (elasticBeamColumn, columns and beams axially rigid by fixity and equalDOF) and condensed
-    by :func:`matrices_from_opensees`: the same lateral ``K`` (skipped without openseespy)."""
-    ops = pytest.importorskip("openseespy.opensees")
+    by :func:`matrices_from_opensees`: the same lateral ``K`` (the peers extra; conftest.py)."""
+    ops = opensees
     from pounding.structure.opensees_matrices import matrices_from_opensees
 
     n, h, span, E = 4, 3.2, 6.0, 2.0e11
