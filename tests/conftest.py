@@ -52,8 +52,10 @@ def import_peer(module: str) -> Any:
     except (ImportError, RuntimeError, OSError) as exc:
         # openseespy installed but its compiled library does not load: on Linux it needs
         # the system's BLAS and LAPACK (libblas.so.3, liblapack.so.3)
-        cause = exc.__cause__ or exc.__context__
-        detail = f"{exc}" + (f" ({cause})" if cause is not None else "")
+        root: BaseException = exc
+        while root.__context__ is not None:  # openseespy re-raises: show the first error
+            root = root.__context__
+        detail = str(exc) if root is exc else f"{exc} ({root})"
         reason = (f"{module} is installed but does not load: {detail}; install the system "
                   "BLAS/LAPACK it links to (Debian/Ubuntu: bash ci/install_peers.sh, which "
                   "runs apt-get install libblas3 liblapack3)")
