@@ -143,18 +143,3 @@ def test_peak_forces_come_with_their_contact_labels() -> None:
     assert p.time == imp.loc[imp["peak_force"].idxmax(), "peak_force_time"]
     assert p.impacts == len(imp) == 26
     assert p.dissipated == pytest.approx(imp["energy_dissipated"].sum(), rel=1e-12)
-
-
-@pytest.mark.parametrize("doc", ["README.md", "docs/engine.md"])
-def test_python_blocks_of_the_readme_and_engine_doc_run(doc: str) -> None:
-    import re
-
-    text = (ROOT / doc).read_text(encoding="utf-8")
-    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
-    assert blocks
-    for i, block in enumerate(blocks):
-        ns: dict[str, object] = {}
-        exec(compile(block, f"{doc}[block {i}]", "exec"), ns)  # noqa: S102
-        if doc == "README.md" and "result" in ns:
-            peaks = ns["result"].contact_peaks  # type: ignore[attr-defined]
-            assert peaks["B1F1-B2F1"].impacts == 26
