@@ -169,6 +169,7 @@ def test_sdof_pair_as_matrices_reduces_to_the_shear_pair():
 
 
 # ------------------------------------------------------------------ a frame: not a shear building
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 @pytest.mark.parametrize("height", [3.2, 4.0], ids=["floors-aligned", "floors-to-columns"])
 def test_frame_pounding_a_shear_building_matches_the_reference(height):
     frame = frame_building()
@@ -204,6 +205,7 @@ def test_frame_pounding_a_shear_building_matches_the_reference(height):
                               atol=0)) <= 2
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_frame_with_rotations_kept_as_dofs_matches_the_reference():
     """Rotations stay DOFs (``floors`` = the lateral ones): they take no contact, have no
     drift and no ground forcing (r = 0 there)."""
@@ -232,6 +234,7 @@ def test_frame_with_rotations_kept_as_dofs_matches_the_reference():
     np.testing.assert_allclose(u_full, np.linalg.solve(kc, f), rtol=1e-10)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_links_join_matrix_buildings_too():
     frame = frame_building(n=3)
     shear = ShearBuilding.uniform(3, 3e5, 4e8, 3.2)

@@ -73,6 +73,7 @@ def test_bad_wall_input(kwargs, match):
         MoatWall(**kwargs)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_isolated_building_striking_a_rigid_wall_matches_reference(elc):
     """The base slab of a building on bilinear isolators strikes a wall 6 cm away on each
     side under El Centro × 1.5: three impacts in 4.6 s, one on the left wall and two on the
