@@ -152,15 +152,9 @@ def test_out_inside_a_file_is_one_line(tmp_path, capsys):
                       f"{tmp_path / 'afile'} is a file, not a folder; choose another --out")
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root may write in a read-only folder")
-def test_out_in_a_read_only_folder_is_one_line(tmp_path, capsys):
-    ro = tmp_path / "ro"
-    ro.mkdir()
-    ro.chmod(0o555)
-    try:
-        code, err = run_file(tmp_path, BASE, capsys, "--out", str(ro / "out"))
-    finally:
-        ro.chmod(0o755)
+def test_out_in_a_read_only_folder_is_one_line(tmp_path, capsys, read_only_folder):
+    ro = read_only_folder  # (as root: /proc/sys; see conftest.py)
+    code, err = run_file(tmp_path, BASE, capsys, "--out", str(ro / "out"))
     assert code == 2 and len(err) == 1 and err[0].startswith(f"error: out: cannot write in {ro}")
 
 

@@ -267,7 +267,7 @@ def test_an_isolation_bearing_is_reported_as_a_bearing(tmp_path: Path,
 
     from pounding.config import load_config
     from pounding.plot.envelope import plot_envelopes
-    from pounding.run import run_config  # noqa: F401  (the same run as the CLI's)
+    from pounding.run_file import run_config  # noqa: F401  (the same run as the CLI's)
     from pounding import simulate
 
     out = tmp_path / "out"

@@ -151,7 +151,7 @@ def test_run_report_renders_in_headless_chromium(report: Path, tmp_path: Path) -
     table = table[: table.index("</table>")]
     assert len(re.findall(r"<tr><td[^>]*>\d+</td><td>B1F1-B2F1</td>", table)) == 7
     for header in ("start [s]", "impact velocity v0 [m/s]", "peak force [N]",
-                   "max penetration [m]", "energy dissipated [J]"):
+                   "max penetration [m]", "energy dissipated by the contact [J]"):
         assert f"<th>{header}</th>" in table
     check_images(dom, expected=1 + len(FIGURE_TITLES))  # ground motion + 4 figures
 

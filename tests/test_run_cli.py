@@ -1,4 +1,4 @@
-"""`pounding run` / `pounding demo` and :func:`pounding.run.run`: outputs, and never a
+"""`pounding run` / `pounding demo` and :func:`pounding.run`: outputs, and never a
 half-written output folder."""
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import pytest
 import xarray as xr
 from matplotlib.figure import Figure
 
-import pounding.run as run_mod
+import pounding.run_file as run_mod
 from pounding.cli import main
 from pounding.config import dump_toml, parse_config
 from pounding.integrate import simulate
@@ -23,7 +23,7 @@ from pounding.plot.loops import plot_hysteresis
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
 from pounding.outputs import IMPACTS_CSV_COLUMNS
 from pounding.result import IMPACT_COLUMNS
-from pounding.run import FIGURE_FILES, OUTPUT_FILES, run, run_config
+from pounding.run_file import FIGURE_FILES, OUTPUT_FILES, run, run_config
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"

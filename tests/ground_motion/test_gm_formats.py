@@ -112,9 +112,8 @@ def test_knet_dt_and_units_must_agree_with_the_file() -> None:
     assert read_knet(KNET, dt=0.01, units="cm/s2").npts == 20  # agreeing values are fine
 
 
-def test_knet_matches_obspy() -> None:
-    """ObsPy's reader (obspy.io.nied.knet), where installed: calib x counts, less the mean."""
-    obspy = pytest.importorskip("obspy")
+def test_knet_matches_obspy(obspy) -> None:  # noqa: ANN001 (conftest.py)
+    """ObsPy's reader (obspy.io.nied.knet; the peers extra): calib x counts, less the mean."""
     tr = obspy.read(str(KNET))[0]
     theirs = tr.data * tr.stats.calib
     np.testing.assert_allclose(read_knet(KNET).accel, theirs - theirs.mean(), rtol=0,

@@ -106,15 +106,3 @@ def test_missing_and_folder_records(tmp_path: Path, capsys: pytest.CaptureFixtur
     assert main(["spectrum", str(tmp_path)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"error: {tmp_path}: is a directory, not a record file"]
-
-
-def test_the_python_block_of_the_spectra_doc_runs() -> None:
-    import re
-
-    text = (ROOT / "docs" / "spectra.md").read_text(encoding="utf-8")
-    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
-    assert len(blocks) == 1
-    ns: dict[str, object] = {}
-    exec(compile(blocks[0], "docs/spectra.md", "exec"), ns)  # noqa: S102
-    assert ns["ec8"].sa_g(0.6) == pytest.approx(0.71875)  # type: ignore[attr-defined]
-    assert "ec8.sa_g(0.6), ec8.sd(1.0)        # 0.71875 g, m" in blocks[0]
