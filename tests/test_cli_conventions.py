@@ -204,7 +204,7 @@ def test_every_runner_writes_into_input_stem_results_in_the_current_folder(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The one default: ``<input file stem>-results`` in the current folder, never beside
     the input file (a bundled example is only read)."""
-    from pounding.run import run
+    from pounding import run
     from pounding.studies.fragility import plan_study
     from pounding.studies.mitigation import run_mitigation
     from pounding.studies.sweep import load_sweep
