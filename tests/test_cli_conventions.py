@@ -147,7 +147,7 @@ def test_the_command_line_starts_without_numpy() -> None:
 
 
 # ============================================================================ runners
-RUNNERS = ("pounding.run:run", "pounding.studies.sweep:run_sweep",
+RUNNERS = ("pounding.run_file:run", "pounding.studies.sweep:run_sweep",
            "pounding.studies.fragility:run_study",
            "pounding.studies.mitigation:run_mitigation")
 
