@@ -117,12 +117,12 @@ def cpu_seconds() -> float:
 
 
 def worker_server_cpu() -> float:
-    """CPU seconds of the fork server the sweep's workers come from
+    """CPU seconds of the server the sweep's workers are forked from
     (``pounding.studies.sweep.cluster._start_worker_server``) and of its children that
     have ended, read from ``/proc``; 0 if there is none (yet)."""
-    from multiprocessing import forkserver
+    from pounding.studies.sweep.cluster import worker_server_pid
 
-    pid = getattr(getattr(forkserver, "_forkserver", None), "_forkserver_pid", None)
+    pid = worker_server_pid()
     if pid is None:
         return 0.0
     try:

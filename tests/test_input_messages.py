@@ -369,7 +369,7 @@ def test_the_library_refuses_the_same_angles_and_plans() -> None:
                   'levels = [0.1, 0.2]\n[bootstrap]\nseed = -5\n',
      "bootstrap.seed: must be >= 0 (got -5)"),
     ("sweep", 'base = "{base}"\n[random]\nn = 2\nseed = -1\n"contact.gap" = [0.0, 0.05]\n',
-     "random.seed: required, an integer >= 0 (got -1)"),
+     "random.seed: must be >= 0 (got -1)"),
     ("mitigate", 'base = "{base}"\nrecords = []\n[[option]]\nname = "bare"\n',
      "records: must hold at least 1 value(s) (got 0: [])"),
 ])

@@ -207,7 +207,8 @@ def test_cli_ellipse_writes_figure(tmp_path, capsys):
     assert main(["ellipse", "--plot", str(out)]) == 0
     assert out.exists() and out.stat().st_size > 1000
     text = capsys.readouterr().out
-    assert "3141.59" in text  # π · (2·1e8·0.05/10) · 10 · 0.01² = π·1e6·1e-3 J
+    # π · (2·1e8·0.05/10) · 10 · 0.01² = π·1e6·1e-3 J, every energy of the table in kJ
+    assert "value [kJ]" in text and "3.14159" in text
 
 
 def test_cli_ellipse_bad_input_exits_2(tmp_path):

@@ -32,9 +32,9 @@ def test_figure_suffixes_are_formats_matplotlib_writes():
     (["ellipse", "--plot", "{d}/e.xyz"], "--plot"),
     (["spectrum", str(ELC), "--csv", "{f}/x.csv"], "--csv"),
     (["spectrum", str(ELC), "--plot", "{d}"], "--plot"),
-    (["suite", "--target", str(TARGET), "--period", "1", "--csv", "{f}/x.csv"], "--csv"),
+    (["suite", "--design", str(TARGET), "--t1", "1", "--csv", "{f}/x.csv"], "--csv"),
     (["gap", str(SEED), "--plot", "{d}/g.txt"], "--plot"),
-    (["report", "{d}", "--out", "{d}"], "--out"),
+    (["report", "{d}", "--html", "{d}"], "--html"),
 ])
 def test_a_bad_output_file_is_one_line_before_any_work(tmp_path, capsys, args, option):
     afile = tmp_path / "afile"

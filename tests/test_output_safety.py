@@ -19,11 +19,11 @@ from pathlib import Path
 
 import pytest
 
-import pounding.run as run_mod
+import pounding.run_file as run_mod
 from pounding.cli import main
 from pounding.config import dump_toml
 from pounding.manifest import MANIFEST_FILE, Manifest
-from pounding.run import run
+from pounding.run_file import run
 
 ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "src"
@@ -248,7 +248,7 @@ def test_mitigate_on_a_full_disk_keeps_the_earlier_study_whole(tmp_path, capsys,
 # ------------------------------------------------------------------ a process killed outright
 KILL_WHEN = """
 import os, signal, sys
-import pounding.run as run_mod
+import pounding.run_file as run_mod
 real = os.replace
 def replace(src, dst):
     if os.path.basename(str(src)).startswith(".out.tmp-"):

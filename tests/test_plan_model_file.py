@@ -75,7 +75,7 @@ def test_the_example_through_the_cli_is_the_api_run(tmp_path, capsys) -> None:
     assert {"displacements.png", "envelopes.png", "contact_forces.png"} <= {
         p.name for p in out.iterdir()}
     # the report reads the folder (the record section: both components, x and y)
-    assert main(["report", str(out), "--out", str(tmp_path / "report.html")]) == 0
+    assert main(["report", str(out), "--html", str(tmp_path / "report.html")]) == 0
     html = (tmp_path / "report.html").read_text()
     assert "PGA of x, y [g]" in html and "record.incidence in model.toml" in html
     copy = load_config(out / "model.toml")

@@ -151,7 +151,7 @@ def test_run_report_renders_in_headless_chromium(report: Path, tmp_path: Path) -
     table = table[: table.index("</table>")]
     assert len(re.findall(r"<tr><td[^>]*>\d+</td><td>B1F1-B2F1</td>", table)) == 7
     for header in ("start [s]", "impact velocity v0 [m/s]", "peak force [N]",
-                   "max penetration [m]", "energy dissipated [J]"):
+                   "max penetration [m]", "energy dissipated by the contact [J]"):
         assert f"<th>{header}</th>" in table
     check_images(dom, expected=1 + len(FIGURE_TITLES))  # ground motion + 4 figures
 
@@ -246,10 +246,10 @@ def test_text_from_the_files_is_escaped(run_dir: Path, tmp_path: Path) -> None:
 def test_report_out_option_and_atomic_write(run_dir: Path, tmp_path: Path,
                                             capsys: pytest.CaptureFixture[str]) -> None:
     target = tmp_path / "sub" / "page.html"
-    assert main(["report", str(run_dir), "--out", str(target)]) == 0
+    assert main(["report", str(run_dir), "--html", str(target)]) == 0
     assert target.is_file() and str(target) in capsys.readouterr().out
     assert [p.name for p in target.parent.iterdir()] == ["page.html"]  # no temporary left
-    assert main(["report", str(run_dir), "--out", str(tmp_path)]) == 2  # a folder
+    assert main(["report", str(run_dir), "--html", str(tmp_path)]) == 2  # a folder
     assert "is a folder" in capsys.readouterr().err
 
 

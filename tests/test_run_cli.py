@@ -1,4 +1,4 @@
-"""`pounding run` / `pounding demo` and :func:`pounding.run.run`: outputs, and never a
+"""`pounding run` / `pounding demo` and :func:`pounding.run`: outputs, and never a
 half-written output folder."""
 
 from __future__ import annotations
@@ -14,15 +14,16 @@ import pytest
 import xarray as xr
 from matplotlib.figure import Figure
 
-import pounding.run as run_mod
+import pounding.run_file as run_mod
 from pounding.cli import main
 from pounding.config import dump_toml, parse_config
 from pounding.integrate import simulate
 from pounding.manifest import MANIFEST_FILE
 from pounding.plot.loops import plot_hysteresis
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
+from pounding.outputs import IMPACTS_CSV_COLUMNS
 from pounding.result import IMPACT_COLUMNS
-from pounding.run import FIGURE_FILES, OUTPUT_FILES, run, run_config
+from pounding.run_file import FIGURE_FILES, OUTPUT_FILES, run, run_config
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"
@@ -73,8 +74,9 @@ def test_run_seed_example_writes_everything(tmp_path: Path,
         assert ds["time"].attrs["units"] == "s"
         assert ds.sizes["floor"] == 2 and ds.sizes["contact"] == 1
         assert float(ds["time"][-1]) == pytest.approx(39.99)
-    imp = pd.read_csv(out / "impacts.csv", comment="#")
-    assert list(imp.columns) == ["contact", "elevation", *IMPACT_COLUMNS[1:]]
+    imp = pd.read_csv(out / "impacts.csv")
+    assert list(imp.columns) == [IMPACTS_CSV_COLUMNS[c] for c in ("contact", "elevation",
+                                                                  *IMPACT_COLUMNS[1:])]
     assert len(imp) == 26 and (imp["contact"] == "B1F1-B2F1").all()
     summary = json.loads((out / "summary.json").read_text())
     assert summary["n_impacts"] == 26 and summary["model"] == "seed SDOF pair"
@@ -175,7 +177,7 @@ def test_failure_mid_run_leaves_nothing(tmp_path: Path, monkeypatch: pytest.Monk
     monkeypatch.setattr(run_mod, "simulate", failing)
     out = tmp_path / "new" / "out"
     with pytest.raises(RuntimeError, match="integration failed"):
-        run(short_model(tmp_path), out, progress=lambda f: None)
+        run(short_model(tmp_path), out, progress=lambda done, total: None)
     assert not (tmp_path / "new").exists()
     assert leftovers(tmp_path) == []
 
@@ -206,13 +208,17 @@ def test_failure_while_writing_keeps_the_previous_output(tmp_path: Path,
 
 
 def test_run_returns_its_outputs(tmp_path: Path) -> None:
-    fractions: list[float] = []
-    res = run(short_model(tmp_path), tmp_path / "o", progress=fractions.append)
+    calls: list[tuple[float, float]] = []
+    res = run(short_model(tmp_path), tmp_path / "o",
+              progress=lambda done, total: calls.append((done, total)))
     assert res.out_dir == tmp_path / "o"
     assert sorted(p.name for p in res.files.values()) == ALL_FILES
     assert all(p.is_file() for p in res.files.values())
     assert res.result.n_impacts >= 1 and res.wall_time > 0
-    assert fractions and fractions[-1] == pytest.approx(1.0)
+    # seconds of ground motion simulated, of the run's duration; the last call: all done
+    duration = float(res.result.time[-1])
+    assert calls and calls[-1] == pytest.approx((duration, duration))
+    assert all(0.0 <= d <= t == calls[-1][1] for d, t in calls)
     mode = (tmp_path / "o" / "summary.json").stat().st_mode & 0o777
     assert mode & 0o044  # readable by others as with an ordinary write (umask 022)
 
@@ -318,7 +324,7 @@ def test_floor_to_column_example_runs_from_the_cli(tmp_path: Path,
 def test_a_bar_stuck_at_zero_says_the_solver_is_compiling() -> None:
     from rich.progress import Progress
 
-    from pounding.cli.commands_run import COMPILE_NOTE_AFTER, _CompilingNote
+    from pounding.cli.running import COMPILE_NOTE_AFTER, _CompilingNote
 
     clock = [0.0]
     bar = Progress(get_time=lambda: clock[0])

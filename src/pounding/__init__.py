@@ -56,8 +56,8 @@ _EXPORTS: dict[str, str] = {
     "Result": "pounding.result",
     "SolverStats": "pounding.result",
     # model files
-    "run": "pounding.run",
-    "RunOutput": "pounding.run",
+    "run": "pounding.run_file",
+    "RunOutput": "pounding.run_file",
     "load_config": "pounding.config",
     "PlausibilityWarning": "pounding.plausibility",
     # contact laws and damping
@@ -128,5 +128,5 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.model import ContactSpec, PoundingModel
     from pounding.plausibility import PlausibilityWarning
     from pounding.result import Result, SolverStats
-    from pounding.run import RunOutput, run
+    from pounding.run_file import RunOutput, run
     from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding, modes

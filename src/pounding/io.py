@@ -130,6 +130,23 @@ def pid_alive(pid: int) -> bool:
     return True
 
 
+_TOML_SYNTAX = {"=", "[", "]", "{", "}", ",", ".", "#", '"', "'", "\\n"}
+
+
+def toml_error_text(exc: Exception) -> str:
+    """tomllib's message without anything it quotes from the file: a key it cannot declare
+    twice (``('a',)``) or a character it did not expect becomes ``…``; its own syntax
+    characters (``'='``) and the position ``(at line 3, column 5)`` are kept."""
+    import re
+
+    def quoted(m: re.Match[str]) -> str:
+        return m.group(0) if m.group(1) in _TOML_SYNTAX else "…"
+
+    text = re.sub(r"'((?:[^'\\]|\\.)*)'", quoted, str(exc))
+    text = re.sub(r"\((?!at line \d+, column \d+\)|at end of document\))[^()]*\)", "…", text)
+    return text
+
+
 def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
     """Read a TOML file, raising one-line ``ValueError``s naming the file: missing, a
     directory, not UTF-8, or not valid TOML. ``kind`` names what the file should be
@@ -143,20 +160,29 @@ def read_toml(path: str | os.PathLike[str], kind: str) -> dict:
     try:
         return tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{p}: not valid TOML: {exc}") from None
+        raise ValueError(f"{p}: not valid TOML: {toml_error_text(exc)}") from None
     except UnicodeDecodeError as exc:
         raise ValueError(f"{p}: not a UTF-8 text file ({exc.reason})") from None
 
 
 def umask() -> int:
-    """The process umask (from /proc where possible, so it is not changed even briefly)."""
+    """The process umask, read without setting it (``os.umask`` can only be read by
+    setting it, for a moment, for every thread of the process): from ``/proc`` where
+    there is one (Linux), else from the mode a new file is given."""
     with contextlib.suppress(OSError, ValueError):
         for line in Path("/proc/self/status").read_text().splitlines():
             if line.startswith("Umask:"):
                 return int(line.split()[1], 8)
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
+    return _umask_of_a_new_file()
+
+
+def _umask_of_a_new_file() -> int:
+    """The umask, from the permissions of a file made with mode 0777 in a private
+    temporary folder (then removed)."""
+    with tempfile.TemporaryDirectory(prefix=".pounding-umask-") as folder:
+        probe = os.path.join(folder, "probe")
+        os.close(os.open(probe, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o777))
+        return 0o777 & ~os.stat(probe).st_mode
 
 
 def write_text(target: str | os.PathLike[str], text: str) -> Path:

@@ -32,8 +32,26 @@ from pounding.manifest import (
     remove_outputs,
 )
 
-__all__ = ["make_temporary_folder", "new_output_folder", "normal_permissions",
-           "publish_folder", "remove_stale", "remove_temporary_folder"]
+__all__ = ["DEFAULT_OUT_SUFFIX", "default_out_dir", "make_temporary_folder",
+           "new_output_folder", "normal_permissions", "publish_folder", "remove_stale",
+           "remove_temporary_folder"]
+
+DEFAULT_OUT_SUFFIX = "-results"
+"""What the default output folder adds to the input file's stem (:func:`default_out_dir`)."""
+
+
+def default_out_dir(input: str | os.PathLike[str]) -> Path:
+    """The output folder of a command given no ``--out``: ``<input file stem>-results`` in
+    the current folder — ``pounding run model.toml`` writes ``model-results``, ``pounding
+    sweep gaps.toml`` ``gaps-results`` — for every command that reads an input file (run,
+    sweep, fragility, mitigate). A sweep, fragility or mitigation file may name its own
+    folder with ``out`` (relative to the file, inside its folder:
+    :func:`pounding.io.study_out`); that is asked for, not a default.
+
+    The folder is never beside the input file: a bundled example (in the installed
+    package) or a shared folder of models is only read.
+    """
+    return Path(f"{Path(input).stem}{DEFAULT_OUT_SUFFIX}")
 
 
 def make_temporary_folder(parent: Path, name: str, kind: str, holds: Iterable[str]

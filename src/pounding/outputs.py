@@ -29,17 +29,28 @@ from pounding.io import write_bytes, write_text
 if TYPE_CHECKING:
     from pounding.result import HistoryVariables, Result
 
-__all__ = ["IMPACTS_HEADER", "impacts_csv", "save_result", "write_netcdf"]
+__all__ = ["IMPACTS_CSV_COLUMNS", "impacts_csv", "save_result", "write_netcdf"]
 
-IMPACTS_HEADER = ("# units: elevation [m]; start, end [s]; v0 [m/s]; peak_force [N]; "
-                  "peak_force_time [s]; max_penetration [m]; restitution [-]; "
-                  "energy_dissipated [J]. restitution = separation speed / approach speed v0 "
-                  "of the two contact points: between buildings the ground and the storeys "
-                  "push the floors during the impact, so it is not an energy ratio and may "
-                  "exceed 1; energy_dissipated = energy the contact element dissipated in "
-                  "that impact (>= 0), the impact's own loss\n")
-"""The comment line that opens ``impacts.csv``: the unit of every column and what the
-velocity ratio ``restitution`` and ``energy_dissipated`` mean."""
+IMPACTS_CSV_COLUMNS: dict[str, str] = {
+    "contact": "contact",
+    "elevation": "elevation_m",
+    "start": "start_s",
+    "end": "end_s",
+    "v0": "v0_m_s",
+    "peak_force": "peak_force_N",
+    "peak_force_time": "peak_force_time_s",
+    "max_penetration": "max_penetration_m",
+    "restitution": "restitution",
+    "energy_dissipated": "energy_dissipated_J",
+}
+"""The columns of ``impacts.csv``: each column of :attr:`pounding.result.Result.impacts` (and
+the contact's elevation) → its name in the file, which ends in its unit (``_m``, ``_s``,
+``_m_s``, ``_N``, ``_J``; ``restitution`` is a ratio). The file is plain CSV, one header
+row and no comment line, so ``pandas.read_csv(path)``, Excel and R's ``read.csv`` read it
+as it is. ``restitution`` is separation speed / approach speed ``v0`` of the two contact
+points (between buildings the ground and the storeys push the floors during the impact,
+so it is no energy ratio and may exceed 1); ``energy_dissipated_J`` is the energy the
+contact element dissipated in that impact (≥ 0). ``docs/running.md`` says the same."""
 
 
 def save_result(result: Result, folder: str | os.PathLike[str],
@@ -57,7 +68,7 @@ def save_result(result: Result, folder: str | os.PathLike[str],
     buf = io.BytesIO()
     write_netcdf(result.history_variables(), buf)
     write_bytes(out["timehistories"], buf.getbuffer())
-    write_text(out["impacts"], IMPACTS_HEADER + impacts_csv(result))
+    write_text(out["impacts"], impacts_csv(result))
     summary = {**result.summary(), "warnings": list(warnings)}
     write_text(out["summary"], json.dumps(json_ready(summary), indent=2))
     return out
@@ -109,15 +120,15 @@ def _create(f: Any, name: str, dims: tuple[str, ...], values: np.ndarray,
 
 
 def impacts_csv(result: Result) -> str:
-    """The impact table as CSV text (no unit line): one row per impact, columns
-    ``contact, elevation`` and :data:`pounding.result.IMPACT_COLUMNS` after ``contact``;
-    a missing value (an impact still open at the end) is an empty field."""
+    """The impact table as CSV text: one header row (:data:`IMPACTS_CSV_COLUMNS`, units in
+    the names), then one row per impact; a missing value (an impact still open at the end)
+    is an empty field."""
     from pounding.result import IMPACT_COLUMNS, rounded_length
 
     contacts = result.model.contacts
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["contact", "elevation", *IMPACT_COLUMNS[1:]])
+    w.writerow([IMPACTS_CSV_COLUMNS[c] for c in ("contact", "elevation", *IMPACT_COLUMNS[1:])])
     for row in result.impact_array:
         c = contacts[int(row[0])]
         w.writerow([c.label, _number(rounded_length(c.elevation)), *(_number(x) for x in row[1:])])

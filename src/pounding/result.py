@@ -39,9 +39,10 @@ ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "conta
 energy of the yielding ones), viscous damping ``∫u̇ᵀCu̇ dt``, total work of the contact forces
 ``∫ΣF δ̇ dt``, the elastic energy still stored in closed contacts, and the hysteretic energy
 of the yielding storeys (their work ``∫ΣV ḋ dt`` minus their recoverable energy; see
-:mod:`pounding.hysteresis.base`). Contact-dissipated energy is
-``contact_work − contact_stored``. The balance: ``E_0 + input = kinetic + strain + damping
-+ hysteretic + contact_work``."""
+:mod:`pounding.hysteresis.base`), and the energy dissipated by the links between buildings
+(their work less their springs' energy, which is in ``strain``; 0 without links).
+Contact-dissipated energy is ``contact_work − contact_stored``. The balance: ``E_0 + input =
+kinetic + strain + damping + hysteretic + contact_work + links``."""
 
 ELEVATION_DECIMALS = 6
 """Decimals [m] of an elevation or storey height written to the outputs (1 µm): floor

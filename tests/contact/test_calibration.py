@@ -285,13 +285,13 @@ def test_cli_prints_laws_and_fits_with_units(tmp_path, capsys):
 
     from pounding.cli import main
 
-    assert main(["collide", "nonlinear-viscoelastic", "--e", "0.65"]) == 0
+    assert main(["collide", "--law", "nonlinear-viscoelastic", "--e", "0.65"]) == 0
     out = " ".join(capsys.readouterr().out.split())  # (rich wraps the title)
     # ζ = 0.368: the exact ζ of e = 0.65, the default since issue 24 (test_default_restitution
     # checks by an independent integration that it gives 0.65; Jankowski's eq 19 gave 0.373)
     assert "nonlinear viscoelastic (Jankowski): k_h = 2.75e9 N/m^1.5, ζ = 0.368" in out
     assert "NonlinearViscoelastic(" not in out and "k_h=" not in out
-    assert main(["calibrate", "kelvin-voigt", "--e", "0.6"]) == 0
+    assert main(["calibrate", "--law", "kelvin-voigt", "--e", "0.6"]) == 0
     out = capsys.readouterr().out
     assert out.startswith("Kelvin-Voigt (Anagnostopoulos): k = 9.30e8 N/m, c = ")
     assert re.search(r"\nc = [0-9.]+ N·s/m \(closed form\)", out)
@@ -301,7 +301,8 @@ def test_cli_prints_laws_and_fits_with_units(tmp_path, capsys):
     f, _ = hc_history(kh, chi, t)
     path = tmp_path / "force.csv"
     np.savetxt(path, np.column_stack([t, f]), delimiter=",")
-    assert main(["fit", str(path), "--m1", str(M1), "--m2", str(M2), "--v0", str(V0)]) == 0
+    assert main(["fit", str(path), "--law", "hunt-crossley", "--m1", str(M1), "--m2", str(M2),
+                 "--v0", str(V0)]) == 0
     rows = [ln.split("│")[1].strip() for ln in capsys.readouterr().out.splitlines()
             if ln.count("│") == 3]
     assert rows[:2] == ["stiffness k_h [N/m^1.5]", "damping χ [-]"]

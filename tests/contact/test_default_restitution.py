@@ -196,7 +196,7 @@ def test_formula_exact_names_the_default() -> None:
 def test_collide_prints_the_formula_and_achieves_e() -> None:
     from pounding.cli import app
 
-    out = CliRunner().invoke(app, ["collide", "hunt-crossley", "--e", "0.65"])
+    out = CliRunner().invoke(app, ["collide", "--law", "hunt-crossley", "--e", "0.65"])
     assert out.exit_code == 0, out.output
     assert "exact-hunt-crossley (exact for this law)" in out.output
     assert "0.650000" in out.output  # was 0.774819 with Lankarani-Nikravesh's χ

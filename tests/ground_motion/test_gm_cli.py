@@ -14,20 +14,39 @@ from pounding.plot.record import plot_record
 RECORDS = Path(str(bundled_folder()))
 ELC = RECORDS / "elcentro_1940_IV_ELC9_180_PEER.AT2"
 SYLMAR = RECORDS / "northridge_1994_sylmar_county_2col_mps2.dat"
+PEKNOLD = RECORDS / "elcentro_1940_NS_peknold_8F10.5.AT2"
 
 
 def test_record_prints_table(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["record", str(ELC), str(SYLMAR)]) == 0
+    assert main(["record", str(ELC)]) == 0
+    assert main(["record", str(SYLMAR), "--units", "m/s2"]) == 0
     out = capsys.readouterr().out
     # PGA [g] and points as in SOURCES.md; PGV [m/s] ≈ 30 and 129 cm/s
     for expected in ("0.3129", "4000", "0.8431", "3000", "0.297", "1.289"):
         assert expected in out
 
 
+def test_a_text_record_needs_units(capsys: pytest.CaptureFixture[str]) -> None:
+    """A text file states no unit and none is assumed (El Centro in g read as m/s2 would
+    be ten times too weak): each command that reads records refuses it in one line."""
+    from pounding.cli import main as cli
+
+    target = Path(__file__).resolve().parents[2] / "examples" / "spectrum_asce7_site.toml"
+    for argv in (["record", str(SYLMAR)], ["spectrum", str(SYLMAR)],
+                 ["suite", str(SYLMAR), "--design", str(target), "--t1", "1"]):
+        capsys.readouterr()
+        assert cli(argv) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert err == [f"error: --units: {SYLMAR} is a plain-text record, which does not "
+                       "state its acceleration unit; give --units g, m/s2, cm/s2, gal, mm/s2, "
+                       "in/s2 or ft/s2"], argv
+
+
 def test_record_bundled_lists_the_twelve_records(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["record", "--bundled"]) == 0
     out = capsys.readouterr().out
-    # PGA [g] of each as in SOURCES.md: the ten of the suite, then the Düzce pair
+    # PGA [g] of each as in SOURCES.md: the nine of the suite, the Peknold El Centro (out of
+    # the suite), then the Düzce pair
     for expected in ("0.3129", "0.3188", "0.5904", "0.8431", "0.5700", "0.4190", "0.8540",
                      "0.7252", "0.2302", "0.4783", "0.3119", "0.3642", "m/s2 (assumed)",
                      "18000", "kocaeli_1999_duzce_180_RSN1158.AT2",
@@ -48,10 +67,9 @@ def test_record_plot_one_file_and_several(tmp_path: Path,
     assert main(["record", str(ELC), "--plot", str(one)]) == 0
     assert one.read_text(encoding="utf-8").lstrip().startswith("<?xml")
     folder = tmp_path / "figs"
-    assert main(["record", str(ELC), str(SYLMAR), "--plot", str(folder)]) == 0
+    assert main(["record", str(ELC), str(PEKNOLD), "--plot", str(folder)]) == 0
     pngs = sorted(p.name for p in folder.iterdir())
-    assert pngs == ["elcentro_1940_IV_ELC9_180_PEER.png",
-                    "northridge_1994_sylmar_county_2col_mps2.png"]
+    assert pngs == ["elcentro_1940_IV_ELC9_180_PEER.png", "elcentro_1940_NS_peknold_8F10.5.png"]
     assert all((folder / p).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" for p in pngs)
 
 

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from pounding.ground_motion import read_at2, read_record, read_text
+from pounding.ground_motion.readers import UnitsRequired
 from pounding.units import G
 
 PEER_HEADER = (
@@ -64,7 +65,7 @@ def test_crlf_and_no_trailing_newline(tmp_path: Path) -> None:
 def test_cr_cr_lf_line_ends_keep_line_numbers(tmp_path: Path) -> None:
     text = PEER_HEADER + "NPTS= 7, DT= .01 SEC\n" + _data_lines(VALUES_G)
     bad = (text + "   oops\n").replace("\n", "\r\r\n")
-    with pytest.raises(ValueError, match=r"crcrlf\.AT2: line 7: 'oops'"):
+    with pytest.raises(ValueError, match=r"crcrlf\.AT2: line 7: the line is not a number"):
         read_at2(_write(tmp_path, "crcrlf.AT2", bad))
     ok = (PEER_HEADER + "NPTS= 7, DT= .01 SEC\n" + _data_lines(VALUES_G)).replace("\n", "\r\r\n")
     assert read_at2(_write(tmp_path, "ok.AT2", ok)).npts == 7
@@ -174,7 +175,8 @@ def test_dt_given_must_agree_with_header(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize(("npts_line", "message"), [
-    ("NPTS=  7, DT= abc SEC", r"bad\.AT2: line 4: DT must be a number \(got 'abc'\)"),
+    ("NPTS=  7, DT= abc SEC",
+     r"bad\.AT2: line 4: DT is not a number; it must be the time step in seconds$"),
     ("NPTS=  7, DT= -0.01 SEC", r"bad\.AT2: line 4: DT \[s\] must be > 0 \(got -0\.01\)"),
     ("NPTS=  7, DT= 0 SEC", r"bad\.AT2: line 4: DT \[s\] must be > 0 \(got 0\)"),
     ("NPTS=  7.5, DT= .01 SEC", r"bad\.AT2: line 4: NPTS must be a whole number"),
@@ -185,12 +187,13 @@ def test_bad_header_values(tmp_path: Path, npts_line: str, message: str) -> None
         read_at2(path)
 
 
-def test_non_number_token_names_line_and_token(tmp_path: Path) -> None:
+def test_non_number_token_names_line_and_place(tmp_path: Path) -> None:
     data = _data_lines(VALUES_G).splitlines()
     data[1] = data[1] + "   0.1x3"
     path = _write(tmp_path, "token.AT2",
                   PEER_HEADER + "NPTS=  8, DT= .01 SEC\n" + "\n".join(data) + "\n")
-    with pytest.raises(ValueError, match=r"token\.AT2: line 6: '0\.1x3' is not a number"):
+    with pytest.raises(ValueError, match=r"token\.AT2: line 6: item 3 of 3 on the line is not a "
+                                         r"number"):
         read_at2(path)
 
 
@@ -276,11 +279,12 @@ def test_text_non_uniform_time_names_line(tmp_path: Path) -> None:
 def test_text_bad_rows(tmp_path: Path) -> None:
     with pytest.raises(ValueError, match=r"cols\.dat: line 2: 1 column\(s\) but line 1 has 2"):
         read_text(_write(tmp_path, "cols.dat", "0.0 1.0\n2.0\n"))
-    with pytest.raises(ValueError, match=r"three\.dat: line 1: expected 1 column"):
+    with pytest.raises(ValueError, match=r"three\.dat: line 1: 3 columns; say which is the "
+                                         r"acceleration with column"):
         read_text(_write(tmp_path, "three.dat", "0.0 1.0 2.0\n"))
     with pytest.raises(ValueError, match=r"nan\.dat: line 3: acceleration value nan"):
         read_text(_write(tmp_path, "nan.dat", "0.0 1.0\n0.1 2.0\n0.2 nan\n"), dt=None)
-    with pytest.raises(ValueError, match=r"word\.dat: line 2: 'time' is not a number"):
+    with pytest.raises(ValueError, match=r"word\.dat: line 2: item 1 of 2 on the line is not a number"):
         read_text(_write(tmp_path, "word.dat", "# header\ntime accel\n0 1\n"))
     with pytest.raises(ValueError, match=r"blank\.dat: no data values"):
         read_text(_write(tmp_path, "blank.dat", "# only a comment\n\n"))
@@ -301,9 +305,50 @@ def test_read_record_picks_reader_by_suffix_and_content(tmp_path: Path) -> None:
                            PEER_HEADER + "NPTS=  7, DT= .01 SEC\n" + _data_lines(VALUES_G))
     assert read_record(at2_no_suffix).units_read == "g"
     text = _write(tmp_path, "values.txt", "0.5\n-1.5\n")
-    gm = read_record(text, dt=0.01)
-    assert gm.units_read == "m/s2 (assumed)"
+    with pytest.raises(UnitsRequired, match=r"values\.txt: a plain-text record does not "
+                                            r"state its acceleration unit; give its units: g, "
+                                            r"m/s2, cm/s2, gal, mm/s2, in/s2 or ft/s2$"):
+        read_record(text, dt=0.01)  # none is assumed
+    with pytest.raises(UnitsRequired):
+        read_text(text, dt=0.01)
+    gm = read_record(text, dt=0.01, units="m/s2")
+    assert gm.units_read == "m/s2"
     np.testing.assert_allclose(gm.accel, [0.5, -1.5])
     gm_g = read_record(text, dt=0.01, units="g")
     assert gm_g.units_read == "g"
     np.testing.assert_allclose(gm_g.accel, [0.5 * G, -1.5 * G])
+
+
+# ------------------------------------------------------------------ sizes a file declares
+def test_counts_a_header_declares_allocate_nothing(tmp_path: Path) -> None:
+    """NPTS and COSMOS's counts are compared with what was read, never allocated from."""
+    at2 = _write(tmp_path, "n.AT2", PEER_HEADER + "NPTS= 1000000000000, DT= .01 SEC\n"
+                 + _data_lines(VALUES_G))
+    with pytest.raises(ValueError, match=r"n\.AT2: line 4: NPTS = 1000000000000 but 7 values "
+                                         r"were read \(lines 5-6\)$"):
+        read_at2(at2)
+    formats = Path(__file__).parent / "formats"
+    text = (formats / "CE99999_chan1_360.V2c").read_text(encoding="utf-8")
+    cosmos = _write(tmp_path, "n.V2c", text.replace("      20 acceleration pts",
+                                                    "1000000000000 acceleration pts", 1))
+    with pytest.raises(ValueError, match=r"n\.V2c: line 49: states 1000000000000 values but "
+                                         r"20 were read \(lines 50-69\)$"):
+        read_record(cosmos)
+    # the integer header's count: its values run on into the next block, which is refused
+    cosmos = _write(tmp_path, "n.V2c", text.replace("100 Integer-header",
+                                                    "1000000000000 Integer-header", 1))
+    with pytest.raises(ValueError, match=r"n\.V2c: line 25: item 2 of 9 on the line is not a "
+                                         r"number"):
+        read_record(cosmos)
+
+
+def test_a_file_too_large_or_not_a_file_is_refused_before_reading(tmp_path: Path) -> None:
+    big = tmp_path / "big.txt"
+    with big.open("wb") as f:  # sparse: takes no disk space
+        f.truncate(300 * 1024 * 1024)
+    with pytest.raises(ValueError, match=r"big\.txt: 315 MB, larger than any record file "
+                                         r"pounding reads \(at most 268 MB\)$"):
+        read_record(big)
+    with pytest.raises(ValueError, match=r"^/dev/zero: not a regular file \(a device, pipe or "
+                                         r"socket\), not a record file$"):
+        read_record("/dev/zero")

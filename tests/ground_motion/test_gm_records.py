@@ -5,6 +5,7 @@ ten of the bundled suite and the Düzce pair of orthogonal components kept out o
 from __future__ import annotations
 
 import hashlib
+import re
 import tomllib
 from pathlib import Path
 
@@ -43,6 +44,9 @@ def _sources_table(path: Path) -> dict[str, dict[str, str]]:
 
 
 SOURCES = _sources_table(RECORDS / "SOURCES.md")
+UNITS = {e["file"]: e["units"] for e in tomllib.loads(
+    (RECORDS / "records.toml").read_text(encoding="utf-8"))["record"] if "units" in e}
+"""The unit records.toml gives a file that states none (a text file needs one)."""
 MANIFEST = tomllib.loads((RECORDS / "records.toml").read_text(encoding="utf-8"))["record"]
 
 
@@ -67,14 +71,23 @@ def test_sources_table_lists_every_record_file() -> None:
     assert len(files) == 12
 
 
-def test_the_suite_is_the_ten_single_components() -> None:
-    """The Düzce pair ships but is marked out of the bundled suite, which keeps its ten
-    records in their order."""
+PEKNOLD = "elcentro_1940_NS_peknold_8F10.5.AT2"
+
+
+def test_the_suite_is_nine_single_components_one_a_motion() -> None:
+    """The Düzce pair and the Peknold El Centro (a second digitisation of the first
+    record's motion) ship but are marked out of the bundled suite: nine records, no motion
+    twice (no two of one earthquake and station), in their order."""
     assert bundled_records() == [e["file"] for e in MANIFEST if e.get("suite", True)]
-    assert len(bundled_records()) == 10
-    assert bundled_files() == [*bundled_records(), *PAIR]
-    assert [e.get("suite") for e in MANIFEST if e["file"] in PAIR] == [False, False]
+    assert len(bundled_records()) == 9
+    assert bundled_files() == [*bundled_records(), PEKNOLD, *PAIR]
+    assert [e.get("suite") for e in MANIFEST if e["file"] in (PEKNOLD, *PAIR)] == [False] * 3
     assert [Path(p).name for p in bundled_suite().paths] == bundled_records()
+    in_suite = [e for e in MANIFEST if e.get("suite", True)]
+    motions = {(re.split(r"[ ,]+\d{4}", e["earthquake"])[0], e["station"].split()[0])
+               for e in in_suite}
+    assert len(motions) == len(in_suite)
+    assert len({re.split(r"[ ,]+\d{4}", e["earthquake"])[0] for e in in_suite}) == 8
 
 
 def test_pair_components_are_companions_on_one_time_base() -> None:
@@ -130,7 +143,7 @@ def test_copy_is_byte_for_byte(name: str) -> None:
 @pytest.mark.parametrize("name", sorted(SOURCES))
 def test_record_matches_sources(name: str) -> None:
     row = SOURCES[name]
-    gm = read_record(RECORDS / name)
+    gm = read_record(RECORDS / name, units=UNITS.get(name))
     assert gm.npts == int(row["NPTS"])
     assert gm.dt == pytest.approx(float(row["DT s"]), rel=1e-9)
     assert gm.pga_g == pytest.approx(float(row["PGA g"]), abs=5e-5)  # its 4 digits
@@ -148,9 +161,14 @@ def test_at2_units_read_from_header(name: str) -> None:
 
 
 def test_sylmar_text_record_units_and_first_sample() -> None:
-    """SOURCES.md: no header, m/s² inferred, first sample 0.061 m/s², PGA 8.27 m/s²."""
-    gm = read_record(RECORDS / "northridge_1994_sylmar_county_2col_mps2.dat")
-    assert gm.units_read == "m/s2 (assumed)"
+    """SOURCES.md: no header, m/s² inferred, first sample 0.061 m/s², PGA 8.27 m/s²; the
+    file states no unit, so it cannot be read without one."""
+    name = "northridge_1994_sylmar_county_2col_mps2.dat"
+    with pytest.raises(ValueError, match=r"a plain-text record does not state its "
+                                         r"acceleration unit; give its units: g, m/s2"):
+        read_record(RECORDS / name)
+    gm = load_bundled(name)
+    assert gm.units_read == "m/s2 (assumed)"  # the manifest's unit, reported as assumed
     assert gm.accel[0] == pytest.approx(0.06113)
     assert gm.pga == pytest.approx(8.27, abs=0.005)
     assert gm.metadata["t0"] == 0.0
@@ -175,8 +193,9 @@ def test_peknold_last_value_without_trailing_newline() -> None:
 # ------------------------------------------------------------------- the bundled suite
 def test_bundled_suite_reads_the_files_checked_above() -> None:
     for name, gm in zip(bundled_records(), bundled_suite(), strict=True):
-        np.testing.assert_array_equal(gm.accel, read_record(RECORDS / name).accel)
-        assert gm.dt == read_record(RECORDS / name).dt
+        read = read_record(RECORDS / name, units=UNITS.get(name))
+        np.testing.assert_array_equal(gm.accel, read.accel)
+        assert gm.dt == read.dt
 
 
 def test_bundled_provenance_agrees_with_sources_md() -> None:

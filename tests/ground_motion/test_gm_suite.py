@@ -24,15 +24,15 @@ BUNDLED = Path(str(bundled_folder()))
 
 
 # ------------------------------------------------------------------- the bundled suite
-def test_bundled_suite_is_the_ten_records_in_manifest_order() -> None:
+def test_bundled_suite_is_the_nine_records_in_manifest_order() -> None:
     suite = bundled_suite()
-    assert suite.name == "bundled" and len(suite) == 10
+    assert suite.name == "bundled" and len(suite) == 9
     assert [Path(p).name for p in suite.paths] == bundled_records()
     for gm, path in zip(suite, suite.paths, strict=True):
         assert Path(path).is_file()  # a real file inside the installed package
         assert gm.name == Path(path).stem
     assert suite[0] is load_bundled("elcentro_1940_IV_ELC9_180_PEER")
-    assert suite["tabas_1978_TAB_L1_RSN143.AT2"] is suite[6]
+    assert suite["tabas_1978_TAB_L1_RSN143.AT2"] is suite[5]
 
 
 # ------------------------------------------------------------------- folders and lists
@@ -61,7 +61,8 @@ def test_suite_from_folder_reads_every_record_and_reports_the_rest(tmp_path: Pat
     assert sorted(skipped) == ["CE99999_all.V2C", "README.md"]  # not hidden files, folders
     assert "holds 2 acceleration channels" in skipped["CE99999_all.V2C"]
     assert skipped["README.md"].startswith(f"{folder / 'README.md'}: not a record format "
-                                           "pounding reads (line 2: 'from the network')")
+                                           "pounding reads (")
+    assert "from the network" not in skipped["README.md"]  # the file's text is never shown
     assert all("\n" not in s.reason for s in suite.skipped)
 
 
@@ -75,9 +76,11 @@ def test_suite_from_folder_with_no_record_is_one_line(tmp_path: Path) -> None:
         RecordSuite.from_folder(empty)
     assert str(info.value) == (f"{empty}: none of its 1 files is a record pounding reads "
                                f"(first: {empty / 'notes.txt'}: not a record format pounding "
-                               "reads (line 1: 'to do'); it reads K-NET/KiK-net ASCII, "
-                               "COSMOS V1/V2, PEER AT2, plain text (one column, or two: "
-                               "time, acceleration))")
+                               "reads (6 bytes; line 1, its first line that is not blank or a "
+                               "'#' comment, is neither numbers nor a header of a format "
+                               "read); it reads K-NET/KiK-net ASCII, "
+                               "COSMOS V1/V2, PEER AT2, plain text (one column, two: "
+                               "time, acceleration, or several with a column chosen))")
     with pytest.raises(FileNotFoundError, match="nowhere: no such folder"):
         RecordSuite.from_folder(tmp_path / "nowhere")
     with pytest.raises(NotADirectoryError, match="notes.txt: is a file, not a folder"):
@@ -119,8 +122,10 @@ def test_read_suite_takes_bundled_a_folder_a_file_or_a_list(tmp_path: Path) -> N
     assert one.name == "TST0010101010000" and len(one) == 1
     assert len(read_suite([FORMATS / "TST0010101010000.NS",
                            FORMATS / "CE99999_chan1_360.V2c"])) == 2
-    with pytest.raises(ValueError, match=r"'bundled': dt and units are for record files"):
+    with pytest.raises(ValueError, match=r"'bundled': dt is for record files"):
         read_suite("bundled", dt=0.01)
+    with pytest.raises(ValueError, match=r"'bundled': units and column are for record files"):
+        read_suite("bundled", units="g", column=2)
     text = tmp_path / "one.txt"
     text.write_text("0.1\n0.2\n", encoding="utf-8")
     gm = read_suite([text], dt=0.01, units="g")[0]

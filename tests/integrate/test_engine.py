@@ -90,6 +90,7 @@ def test_uncoupled_floors_without_contact_match_reference(free_stepping):
     assert res.energy_balance_error < 1e-6
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_mdof_without_contact_matches_reference():
     b1 = ShearBuilding.uniform(5, 3e5, 4e8)
     b2 = ShearBuilding.uniform(3, 2e5, 2e8, damping=ModalDamping(0.03))
@@ -146,6 +147,7 @@ def test_steps_are_not_rejected_at_separation_or_maximum_compression(spec):
     assert res.stats.rejected <= 3 * res.n_impacts
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_ten_storey_pair_matches_reference():
     b1 = ShearBuilding.uniform(10, 4e5, 6e8)
     b2 = ShearBuilding.uniform(10, 3e5, 3e8)
@@ -284,6 +286,7 @@ def test_energy_balance_counts_the_initial_energy():
     assert end[1] + end[2] + end[3] + end[4] == pytest.approx(e0, rel=1e-6)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_row_of_three_with_different_heights_matches_reference():
     # seed cases 2B and 2C together: short impacts between the upper floors too
     left = ShearBuilding.uniform(4, 3e5, 4e8)

@@ -63,6 +63,7 @@ def test_force_sharing_is_equal_and_opposite_and_consistent():
     assert pt.effective_mass(np.array([1e5, 1e5])) == pytest.approx(1e5 / (0.75**2 + 0.25**2))
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_mismatched_pair_matches_reference_and_balances_energy(elc):
     m = mismatched()
     res = simulate(m, elc, duration=6.0)

@@ -74,6 +74,7 @@ def test_residual_drift_is_where_the_building_comes_to_rest(elc):
     assert short.residual_drift[0] == pytest.approx(long.drift[-1, 0], rel=0.2)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_inelastic_pair_with_pounding_matches_reference_and_balances(elc):
     """Two 3-storey buildings, one bilinear, one Bouc–Wen, pounding at every floor."""
     a = ShearBuilding.uniform(3, 3e5, 3.5e8, height=3.2).with_storey_law(

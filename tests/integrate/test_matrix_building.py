@@ -188,6 +188,7 @@ def test_reference_drifts_are_between_floors_in_elevation_order():
 
 
 # ------------------------------------------------------------------ a frame: not a shear building
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 @pytest.mark.parametrize("height", [3.2, 4.0], ids=["floors-aligned", "floors-to-columns"])
 def test_frame_pounding_a_shear_building_matches_the_reference(height):
     frame = frame_building()
@@ -223,6 +224,7 @@ def test_frame_pounding_a_shear_building_matches_the_reference(height):
                               atol=0)) <= 2
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_frame_with_rotations_kept_as_dofs_matches_the_reference():
     """Rotations stay DOFs (``floors`` = the lateral ones): they take no contact, have no
     drift and no ground forcing (r = 0 there)."""
@@ -251,6 +253,7 @@ def test_frame_with_rotations_kept_as_dofs_matches_the_reference():
     np.testing.assert_allclose(u_full, np.linalg.solve(kc, f), rtol=1e-10)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_links_join_matrix_buildings_too():
     frame = frame_building(n=3)
     shear = ShearBuilding.uniform(3, 3e5, 4e8, 3.2)
@@ -303,11 +306,11 @@ def test_dense_building_runs_with_rayleigh_damping_from_its_own_modes():
     assert model.dof_names()[:2] == ["F1", "F2"]
 
 
-def test_frame_helper_against_opensees():
+def test_frame_helper_against_opensees(opensees):
     """The frame of the tests and of ``examples/matrix_building.toml``, built in OpenSeesPy
     (elasticBeamColumn, columns and beams axially rigid by fixity and equalDOF) and condensed
-    by :func:`matrices_from_opensees`: the same lateral ``K`` (skipped without openseespy)."""
-    ops = pytest.importorskip("openseespy.opensees")
+    by :func:`matrices_from_opensees`: the same lateral ``K`` (the peers extra; conftest.py)."""
+    ops = opensees
     from pounding.structure.opensees_matrices import matrices_from_opensees
 
     n, h, span, E = 4, 3.2, 6.0, 2.0e11

@@ -166,6 +166,7 @@ def test_the_step_budget_is_an_option():
         simulate(sdof_pair(KV), el_centro(), duration=3.0, max_rk_steps=0)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_a_zero_gap_between_buildings_at_rest_is_integrated_and_matches_the_reference():
     # Two 10-storey buildings touching at rest (gap 0): their floors come into contact at
     # once, several closer together than the time resolution. Locating one such onset no

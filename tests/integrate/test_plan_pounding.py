@@ -95,6 +95,7 @@ def test_a_symmetric_pair_shaken_along_x_is_the_planar_pair(law: dict) -> None:
             assert twin.force == pytest.approx(ps.force / 2, rel=1e-8)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_a_torsional_pair_strikes_at_its_corners_as_the_reference_does() -> None:
     """The eccentric building twists and strikes at corners under both horizontal
     components of the Düzce record (Kocaeli 1999) at 60°: the compiled kernel against the

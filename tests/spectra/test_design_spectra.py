@@ -1,6 +1,6 @@
 """Design spectra (``pounding.spectra.design``): Eurocode 8 (EN 1998-1:2004 §3.2.2.2)
 against values worked by hand at the corner periods and inside every branch, and a user's
-table read from CSV or TOML; every kind works in ``pounding gap --spectrum``."""
+table read from CSV or TOML; every kind works in ``pounding gap --design``."""
 
 from __future__ import annotations
 
@@ -106,10 +106,10 @@ def test_user_table_in_csv_and_toml(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("name, text, message", [
-    ("a.csv", "period,sa\n0,1\n", "the header must name period_s and one of sa_g, sa_m_s2, "
-                                  "sd_m (got period, sa)"),
-    ("b.csv", "period_s,sa_g\n0,1\n1,x\n", "data line 2: period_s and sa_g must be numbers "
-                                           "(got '1,x')"),
+    ("a.csv", "period,sa\n0,1\n", "the header (line 1) must name the columns period_s and "
+                                  "one of sa_g, sa_m_s2, sd_m"),
+    ("b.csv", "period_s,sa_g\n0,1\n1,x\n", "data line 2: period_s and sa_g must be numbers"),
+    ("h.toml", "root:x:0:0\n", "not a valid TOML spectrum file (at line 1, column 5)"),
     ("c.csv", "period_s,sa_g\n0,1\n", "need at least 2 periods"),
     ("d.csv", "# nothing\n", "no header line"),
     ("e.toml", 'eurocode8 = { agr = 0.2, soil = "B" }\n', "eurocode8 needs agr [g] and "
@@ -136,10 +136,10 @@ def test_every_kind_works_in_pounding_gap(tmp_path: Path, capsys: pytest.Capture
                                           name: str, text: str) -> None:
     spec = tmp_path / name
     spec.write_text(text, encoding="utf-8")
-    assert main(["gap", str(SEED), "--duration", "2", "--spectrum", str(spec)]) == 0
+    assert main(["gap", str(SEED), "--duration", "2", "--design", str(spec)]) == 0
     out = capsys.readouterr().out
     s = DesignSpectrum.from_file(spec)
-    assert "u1 [m]" in out and f"B1 {float(s.sd(0.5)):.4f}" in out
+    assert "u1 [mm]" in out and f"B1 {1000 * float(s.sd(0.5)):.1f}" in out
 
 
 def test_asce7_is_evaluated_exactly_off_the_table() -> None:

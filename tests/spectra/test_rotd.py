@@ -91,5 +91,8 @@ def test_bad_angle_step() -> None:
     with pytest.raises(ValueError, match=r"angle_step: 180 must be a whole multiple of it "
                                          r"\(got 7\)"):
         rotd_spectrum(gm, gm, [1.0], angle_step=7.0)
-    with pytest.raises(ValueError, match=r"angle_step must be in \(0, 90\] \(got 0\)"):
+    with pytest.raises(ValueError, match=r"angle_step must be in \[0\.01, 90\] \(got 0\)"):
         rotd_spectrum(gm, gm, [1.0], angle_step=0.0)
+    # a whole divisor of 180 that would be 1.8e11 azimuths a period: refused, not allocated
+    with pytest.raises(ValueError, match=r"angle_step must be in \[0\.01, 90\] \(got 1e-09\)"):
+        rotd_spectrum(gm, gm, [1.0], angle_step=1e-9)

@@ -138,12 +138,11 @@ def test_suite_command_prints_writes_and_draws(tmp_path, capsys):
     target = tmp_path / "site.toml"
     target.write_text('asce7 = { sds = 1.0, sd1 = 0.6 }\n')
     out_csv, out_png = tmp_path / "f.csv", tmp_path / "s.png"
-    assert main(["suite", "--target", str(target), "--period", "1.0", "--csv", str(out_csv),
+    assert main(["suite", "--design", str(target), "--t1", "1.0", "--csv", str(out_csv),
                  "--plot", str(out_png)]) == 0
     text = capsys.readouterr().out
     assert "mean / target over the range: lowest 0.900" in text
-    rows = list(csv.reader(line for line in out_csv.read_text().splitlines()
-                           if not line.startswith("#")))
+    rows = list(csv.reader(out_csv.read_text().splitlines()))  # no comment line
     assert rows[0] == ["record", "factor", "flagged", "pga_g", "scaled_pga_g", "sa_t1_g",
                        "scaled_sa_t1_g"]
     assert len(rows) == 1 + len(bundled_suite())
@@ -153,16 +152,17 @@ def test_suite_command_prints_writes_and_draws(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["--period", "0"], "period: must be a positive number (got 0.0)"),
-    (["--period", "1", "--method", "mean"], "method: one of code, sa, pga, lsq"),
-    (["--period", "1", "--range", "2,1"], "period_range: the lower period must be below"),
-    (["--period", "3"], "target: spectrum"),  # the table below ends at 2 s
+    (["--t1", "0"], "--t1 must be > 0 (got 0)"),
+    (["--t1", "1", "--method", "mean"], "Invalid value for '--method'"),
+    (["--t1", "1", "--damping", "0.05,0.02"], "--damping: suite scaling uses one damping"),
+    (["--t1", "1", "--range", "2,1"], "period_range: the lower period must be below"),
+    (["--t1", "3"], "target: spectrum"),  # the table below ends at 2 s
 ])
 def test_suite_bad_input_is_one_line(tmp_path, capsys, args, message):
     target = tmp_path / "site.csv"
     target.write_text("period_s,sa_g\n0.0,0.4\n0.5,1.0\n2.0,0.3\n")
     capsys.readouterr()
-    assert main(["suite", "--target", str(target), *args, "--csv",
+    assert main(["suite", "--design", str(target), *args, "--csv",
                  str(tmp_path / "f.csv")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0], err
@@ -174,7 +174,7 @@ def test_a_folder_with_no_record_is_one_line(tmp_path, capsys):
     target = tmp_path / "site.toml"
     target.write_text('asce7 = { sds = 1.0, sd1 = 0.6 }\n')
     capsys.readouterr()
-    assert main(["suite", str(tmp_path), "--target", str(target), "--period", "1"]) == 2
+    assert main(["suite", str(tmp_path), "--design", str(target), "--t1", "1"]) == 2
     assert len(capsys.readouterr().err.strip().splitlines()) == 1
 
 
@@ -186,3 +186,29 @@ def test_the_example_target_is_the_asce7_spectrum_it_says():
     assert spec.sa_g(1.0) == pytest.approx(0.6, rel=1e-12)
     assert spec.sa_g(0.3) == pytest.approx(1.0, rel=1e-12)
     assert {e.name: e.kind for e in examples()}["spectrum_asce7_site.toml"] == "spectrum"
+
+
+def test_period_inputs_of_the_scalings_are_checked():
+    """Periods outside the range a spectrum is computed over, and counts of periods that
+    would allocate without end, are refused in one line naming the argument."""
+    import time
+
+    from pounding.ground_motion import el_centro
+    from pounding.spectra.scaling import saavg_periods, scale_to_sa
+
+    gm = el_centro()
+    with pytest.raises(ValueError, match=r"^sa_period: every period must be from 1e-09 s to "
+                                         r"1e\+09 s \(got 1e\+12\)"):
+        scale_to_sa(gm, 0.3, 1e12)
+    with pytest.raises(ValueError, match=r"^saavg_periods: every period must be from"):
+        saavg_periods([1e-12, 1.0])
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=r"^saavg_n: an integer from 2 to 100000 \(got "
+                                         r"1000000000000\)"):
+        saavg_periods([0.2, 3.0], 10**12)
+    assert time.perf_counter() - start < 1.0
+    with pytest.raises(ValueError, match=r"^n_periods: an integer from 2 to 100000 \(got "
+                                         r"1000000000000\)"):
+        scale_suite([gm], TARGET, T1, n_periods=10**12)
+    with pytest.raises(ValueError, match=r"^period: every period must be from"):
+        scale_suite([gm], TARGET, 1e10)

@@ -172,6 +172,7 @@ def test_isolated_rigid_superstructure_is_the_friction_pendulum_sdof(elc):
     assert np.abs(res.drift[:, 1:]).max() < 1e-3 * scale
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_isolated_building_matches_reference_bilinear(elc):
     """The kernel with one isolator row and the superstructure in K against the SciPy
     reference on the same building, and on the building whose superstructure storeys are
@@ -198,6 +199,7 @@ def test_isolated_building_matches_reference_bilinear(elc):
     assert res.energy_balance_error < 1e-6
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_isolated_building_matches_reference_friction_pendulum(elc):
     """As above with the friction pendulum (Bouc–Wen); the reference's superstructure
     storeys are Bouc–Wen storeys of a yield force 10⁴ × their peak shear: their z stays

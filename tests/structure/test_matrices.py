@@ -64,8 +64,9 @@ def test_csv_one_by_one(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("text, message", [
-    ("1,2\n3,x\n", r"k\.csv: line 2: 'x' is not a number \(the file must hold plain numbers"),
-    ("a,b\n1,2\n2,1\n", r"k\.csv: line 1: 'a' is not a number"),
+    ("1,2\n3,x\n", r"k\.csv: line 2: item 2 of 2 on the line is not a number \(the file must hold "
+                    r"plain numbers"),
+    ("a,b\n1,2\n2,1\n", r"k\.csv: line 1: item 1 of 2 on the line is not a number"),
     ("1,,2\n", r"k\.csv: line 1 has an empty field between commas"),
     ("1,2\n", r"k\.csv: K must be square \(got 1×2\)"),
     ("1 2\n3\n", r"k\.csv: line 2 has 1 numbers but line 1 has 2: every row of a matrix"),
@@ -73,7 +74,7 @@ def test_csv_one_by_one(tmp_path: Path) -> None:
     ("", r"k\.csv: holds no numbers"),
     ("1,2\n2,nan\n", r"k\.csv: K\[1,1\] = nan is not finite"),
     ("1,2\n2,inf\n", r"k\.csv: K\[1,1\] = inf is not finite"),
-    ("1;2\n2;1\n", r"k\.csv: line 1: '1;2' is not a number"),
+    ("1;2\n2;1\n", r"k\.csv: line 1: the line is not a number"),
 ])
 def test_csv_errors_name_file_and_line(tmp_path: Path, text: str, message: str) -> None:
     p = _write(tmp_path / "k.csv", text)
@@ -519,3 +520,87 @@ def test_equality() -> None:
     assert _building(C=0.01 * K3) == _building(C=0.01 * K3)
     assert _building(C=0.01 * K3) != _building()
     assert _building().__eq__(3) is NotImplemented
+
+
+# ------------------------------------------------------------------ sizes declared by a header
+def _npy_header_only(path: Path, shape: tuple[int, ...]) -> Path:
+    """An .npy file whose header declares ``shape`` (float64) and that holds no data."""
+    from numpy.lib import format as npy_format
+
+    with path.open("wb") as f:
+        npy_format.write_array_header_1_0(f, {"descr": "<f8", "fortran_order": False,
+                                              "shape": shape})
+    return path
+
+
+@pytest.mark.parametrize("shape, message", [
+    ((10**6, 10**6), r"big\.npy: the file's \.npy header declares a 1000000×1000000 array; a "
+                     r"building's matrix is at most 10000×10000 \(one row and column per "
+                     r"degree of freedom\)$"),
+    ((10**12,), r"big\.npy: the file's \.npy header declares a 1000000000000 array"),
+    ((3, 3), r"big\.npy: the file is cut short: its header declares a 3×3 float64 array "
+             r"\(72 bytes\) but 0 bytes follow it$"),
+])
+def test_npy_sizes_are_checked_from_the_header(tmp_path: Path, shape, message) -> None:
+    path = _npy_header_only(tmp_path / "big.npy", shape)
+    with pytest.raises(ValueError, match=message):
+        read_matrix(path, "K")
+
+
+def test_npz_member_sizes_are_checked_from_their_headers(tmp_path: Path) -> None:
+    import zipfile
+
+    header = _npy_header_only(tmp_path / "h.npy", (10**6, 10**6)).read_bytes()
+    with zipfile.ZipFile(tmp_path / "b.npz", "w") as z:
+        z.writestr("M.npy", header)
+    with pytest.raises(ValueError, match=r"b\.npz: array 'M''s \.npy header declares a "
+                                         r"1000000×1000000 array; a building's matrix is at "
+                                         r"most 10000×10000"):
+        read_matrix(tmp_path / "b.npz", "M")
+
+
+@pytest.mark.parametrize("text, message", [
+    ("%%MatrixMarket matrix array real general\n1000000000 1000000000\n1\n",
+     r"big\.mtx: its Matrix Market size line declares a 1000000000×1000000000 array; a "
+     r"building's matrix is at most 10000×10000"),
+    ("%%MatrixMarket matrix coordinate real general\n1000000000 1000000000 3\n1 1 1\n",
+     r"big\.mtx: its Matrix Market size line declares a 1000000000×1000000000 array"),
+    ("%%MatrixMarket matrix coordinate real general\n3 3 1000000000000\n1 1 1\n",
+     r"big\.mtx: its Matrix Market size line declares 1000000000000 entries, more than a "
+     r"3×3 matrix has"),
+    ("%%MatrixMarket matrix coordinate real general\n3000 3000 9000000\n1 1 1\n",
+     r"big\.mtx: its Matrix Market size line declares 9000000 entries but the file is only "
+     r"\d+ bytes long"),
+])
+def test_matrix_market_sizes_are_checked_from_the_size_line(tmp_path: Path, text,
+                                                            message) -> None:
+    with pytest.raises(ValueError, match=message):
+        read_matrix(_write(tmp_path / "big.mtx", text), "K")
+
+
+def test_a_text_matrix_too_large_for_a_building_is_refused_while_reading(tmp_path) -> None:
+    rows = _write(tmp_path / "rows.csv", "1\n" * 10_001)
+    with pytest.raises(ValueError, match=r"rows\.csv: more than 10000 rows \(line 10001\); a "
+                                         r"building's matrix is at most 10000×10000"):
+        read_matrix(rows, "K")
+    line = _write(tmp_path / "line.csv", "1," * 400_000 + "1\n")
+    with pytest.raises(ValueError, match=r"line\.csv: line 1 is longer than 640000 characters"):
+        read_matrix(line, "K")
+
+
+def test_a_header_declaring_a_huge_matrix_is_one_line_from_the_command_line(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from pounding.cli import main
+
+    _npy_header_only(tmp_path / "K.npy", (10**6, 10**6))
+    np.save(tmp_path / "M.npy", np.eye(2))
+    model = _write(tmp_path / "m.toml",
+                   '[record]\nbundled = "el_centro"\n[[building]]\nmatrices = { M = "M.npy", '
+                   'K = "K.npy" }\nelevations = [3.0, 6.0]\n[[building]]\nmass = 2e5\n'
+                   'period = 0.5\n[contact]\nlaw = "kelvin-voigt"\nk = 9.3e8\ne = 0.65\n'
+                   'gap = 0.02\n')
+    capsys.readouterr()
+    assert main(["run", str(model), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "1000000×1000000" in err[0] and "K.npy" in err[0], err
+    assert not (tmp_path / "out").exists()

@@ -73,13 +73,19 @@ def test_bad_wall_input(kwargs, match):
         MoatWall(**kwargs)
 
 
+@pytest.mark.slow  # a long reference comparison (pyproject.toml: markers)
 def test_isolated_building_striking_a_rigid_wall_matches_reference(elc):
     """The base slab of a building on bilinear isolators strikes a wall 6 cm away on each
-    side under El Centro × 1.5: the first two impacts, one on each wall (the third, at
-    4.48 s, the reference computes differently at its default and at a tighter rtol while
-    the kernel does not change; see the report of the branch). The reference reads every
-    storey of a building with a law as yielding: it gets the same building with bilinear
-    superstructure storeys that never yield, as in test_isolation."""
+    side under El Centro × 1.5: three impacts in 4.6 s, one on the left wall and two on the
+    right. The reference reads every storey of a building with a law as yielding: it gets
+    the same building with bilinear superstructure storeys that never yield, as in
+    test_isolation.
+
+    The reference is trusted only once converged: the same impacts, to 1e-9 s and 1e-8 in
+    force, at rtol 1e-9 and 1e-11. (At maximum compression against a wall the contact's
+    rate and the isolator's drift rate are one velocity; before the reference handled
+    coincident events it missed the isolator's unloading at some tolerances and gave 2, 3
+    or shifted impacts as rtol went 1e-9 → 1e-11.)"""
     iso = BilinearIsolator(1.2e8, 1.2e7, characteristic_strength=5.0e5)
     sup = ShearBuilding.uniform(3, 3.0e5, 4.0e8, height=3.2)
     b = ShearBuilding.base_isolated(sup, 4.0e5, iso, base_height=1.0)
@@ -88,13 +94,18 @@ def test_isolated_building_striking_a_rigid_wall_matches_reference(elc):
     walls = [MoatWall(1.0, 0.06, side="left"), MoatWall(1.0, 0.06)]
     model = PoundingModel([b], [], KV, walls=walls)
     motion = elc.scaled(1.5)
-    res = simulate(model, motion, duration=4.2)
-    ref = simulate_reference(PoundingModel([every], [], KV, walls=walls), motion, duration=4.2)
-    assert list(res.impacts_per_contact) == [1, 1]
-    np.testing.assert_array_equal(res.impacts_per_contact, ref.impacts_per_contact)
+    res = simulate(model, motion, duration=4.6)
+    loose, ref = (simulate_reference(PoundingModel([every], [], KV, walls=walls), motion,
+                                     duration=4.6, rtol=rtol) for rtol in (1e-9, 1e-11))
+    for a in (loose, ref):  # converged: one answer at both tolerances
+        assert list(a.impacts_per_contact) == [1, 2]
+    for col, tol in (("start", 1e-9), ("end", 1e-9), ("peak_force", 1e-8 * 7e6)):
+        np.testing.assert_allclose(loose.impacts[col], ref.impacts[col], rtol=0, atol=tol)
+    assert list(res.impacts_per_contact) == [1, 2]
+    np.testing.assert_allclose(res.impacts["start"], ref.impacts["start"], rtol=0, atol=1e-6)
     np.testing.assert_allclose(res.peak_contact_force, ref.peak_contact_force, rtol=1e-6)
     scale = np.abs(ref.displacement).max()
-    assert np.max(np.abs(res.displacement - ref.displacement)) < 1e-4 * scale
+    assert np.max(np.abs(res.displacement - ref.displacement)) < 1e-6 * scale
     assert res.energy_balance_error < 1e-6
     assert np.abs(res.displacement[:, 0]).max() < 0.06 + 0.01     # held back by the walls
 

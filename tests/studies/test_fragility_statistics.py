@@ -47,7 +47,8 @@ BAKER_Z = [0, 0, 0, 4, 6, 13, 12, 16]
 
 
 def _statsmodels_probit(im, n, z):
-    sm = pytest.importorskip("statsmodels.api")
+    import statsmodels.api as sm  # the test extra installs it: a missing one is a failure
+
     x = sm.add_constant(np.log(np.asarray(im, dtype=float)))
     n = np.broadcast_to(np.asarray(n, dtype=float), np.shape(z))
     y = np.column_stack([z, n - np.asarray(z, dtype=float)])
@@ -79,19 +80,47 @@ def test_baker_example_against_statsmodels_and_scipy():
     assert (round(theta, 4), round(beta, 4)) == (1.0761, 0.4292)
 
 
-@pytest.mark.parametrize("seed", range(6))
-def test_random_stripes_against_statsmodels(seed):
+def _random_stripes(seed: int):
     rng = np.random.default_rng(seed)
     k = int(rng.integers(4, 12))
     im = np.sort(rng.uniform(0.05, 2.0, k))
     n = rng.integers(5, 50, k)
     z = rng.binomial(n, stats.norm.cdf(np.log(im / rng.uniform(0.3, 1.5)) / rng.uniform(0.2,
                                                                                           0.8)))
+    return im, n, z
+
+
+def _overlap(im, n, z) -> bool:
+    """A finite MLE exists iff the data overlap: some level with an exceedance lies strictly
+    below some level with a run that does not exceed; otherwise the data are (quasi-)
+    completely separated and the likelihood grows without bound as β → 0 (Albert & Anderson
+    1984)."""
+    return bool(np.min(im[z > 0]) < np.max(im[n - z > 0]))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_random_stripes_against_statsmodels(seed):
+    im, n, z = _random_stripes(seed)
+    assert _overlap(im, n, z)  # these draws were chosen to have a finite MLE
     med, beta, status = probit_mle(im, n, z)
-    if status[0] != fitting.FIT_OK:
-        pytest.skip("this draw has no finite MLE")
+    assert status[0] == fitting.FIT_OK
     t_sm, b_sm = _statsmodels_probit(im, n, z)
     assert med[0] == pytest.approx(t_sm, rel=1e-6) and beta[0] == pytest.approx(b_sm, rel=1e-6)
+
+
+def test_a_random_draw_without_a_finite_mle_is_reported_as_separated():
+    """Seed 9 draws 7 stripes where every run exceeds but one of the 44 at the lowest level:
+    no level with an exceedance lies below one with a run that does not (quasi-complete
+    separation), so there is no finite MLE: status FIT_SEPARATED, β = 0 and θ at that level,
+    and fit_lognormal_mle refuses the data in one line."""
+    im, n, z = _random_stripes(9)
+    assert not _overlap(im, n, z)
+    assert list(n - z) == [1, 0, 0, 0, 0, 0, 0]
+    med, beta, status = probit_mle(im, n, z)
+    assert status[0] == fitting.FIT_SEPARATED and beta[0] == 0.0
+    assert med[0] == pytest.approx(im[0], rel=1e-12)
+    with pytest.raises(ValueError, match="separated"):
+        fit_lognormal_mle(im, n, z)
 
 
 def test_mle_recovers_a_known_lognormal_within_sampling_error():

@@ -289,14 +289,14 @@ def test_cli_seed_pair_two_records(tmp_path: Path, capsys: pytest.CaptureFixture
                  "--plot", str(png), "--csv", str(csv)])
     out = capsys.readouterr().out
     assert code == 0, out
-    for text in ("critical separation gap [m]", "R1", "R2", "mean", "max", "ABS", "SRSS",
+    for text in ("critical separation gap [mm]", "R1", "R2", "mean", "max", "ABS", "SRSS",
                  "DDC", "as recorded, not scaled", "governing critical gap"):
         assert text in out, text
     motions = [read_record(ELC), read_record(NWH)]
     study = critical_gaps(seed, motions, duration=5.0)
     for v in (*study.critical[:, 0], study.mean_critical[0], study.max_critical[0]):
-        assert f"{v:.4f}" in out
-    assert png.stat().st_size > 1000 and csv.read_text().count("\n") == 3
+        assert f"{1000 * v:.1f}" in out  # every gap of the screen in mm
+    assert png.stat().st_size > 1000 and csv.read_text().count("\n") == 2  # header, one level
 
 
 def test_cli_ten_storey_spectrum_and_default_record(tmp_path: Path,
@@ -305,9 +305,9 @@ def test_cli_ten_storey_spectrum_and_default_record(tmp_path: Path,
     spec.write_text("asce7 = { sds = 1.0, sd1 = 0.6, tl = 8.0 }\n", encoding="utf-8")
     png = tmp_path / "g.png"
     assert main(["gap", str(TEN), "--records", str(ELC), "--records", str(NWH),
-                 "--duration", "4", "--spectrum", str(spec), "--plot", str(png)]) == 0
+                 "--duration", "4", "--design", str(spec), "--plot", str(png)]) == 0
     out = capsys.readouterr().out
-    assert "design spectrum" in out and "u1 [m]" in out and out.count("B1-B2") >= 20
+    assert "design spectrum" in out and "u1 [mm]" in out and out.count("B1-B2") >= 20
     assert png.is_file()
     # no --records: the model file's [record]
     assert main(["gap", str(TEN), "--duration", "3"]) == 0
@@ -345,5 +345,5 @@ def test_cli_bad_inputs(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> N
     assert "no such model file" in capsys.readouterr().err
     bad = tmp_path / "bad.toml"
     bad.write_text("kind = \"Sa\"\nperiods = [0.6, 1.0]\nvalues = [1.0, 1.0]\n", encoding="utf-8")
-    assert main(["gap", str(SEED), "--duration", "2", "--spectrum", str(bad)]) == 2
+    assert main(["gap", str(SEED), "--duration", "2", "--design", str(bad)]) == 2
     assert "outside the table" in capsys.readouterr().err

@@ -92,3 +92,33 @@ def test_bad_records_are_named_as_the_study_gives_them(tmp_path: Path, capsys, r
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith(f"error: {tmp_path}/{line}"), err
     assert not (tmp_path / "o").exists()
+
+
+def test_text_records_take_the_study_units_and_dt(tmp_path: Path, capsys):
+    """A plain-text record states neither its unit nor (as one column) its step: the study's
+    ``units`` and ``dt`` give them, and the run is the bundled El Centro's (the same samples
+    written as text in g); without ``units`` the study is refused naming the key."""
+    from pounding.ground_motion import el_centro
+    from pounding.units import G
+
+    elc = el_centro().trimmed(4.0)
+    (tmp_path / "elc.txt").write_text("\n".join(f"{a / G:.17g}" for a in elc.accel) + "\n")
+    one = STUDY.replace("[[option]]\nname = \"dashpots\"", "[[option]]\nname = \"unused\"")
+    study = tmp_path / "s.toml"
+    study.write_text(one.replace('records = ["el_centro"]',
+                                 f'records = ["elc.txt"]\nunits = "g"\ndt = {elc.dt!r}'))
+    assert main(["mitigate", str(study), "--out", str(tmp_path / "o")]) == 0
+    runs = pd.read_csv(tmp_path / "o" / "runs.csv").set_index("option")
+    model, _, kw = load_config(BASE).build()
+    kw["duration"] = 4.0
+    direct = simulate(model, elc, **kw)
+    assert runs.loc["bare gap", "n_impacts"] == direct.n_impacts
+    assert runs.loc["bare gap", "peak_drift_ratio"] == pytest.approx(
+        np.max(direct.peak_drift_ratio), rel=1e-9)
+    study.write_text(one.replace('records = ["el_centro"]',
+                                 f'records = ["elc.txt"]\ndt = {elc.dt!r}'))
+    capsys.readouterr()
+    assert main(["mitigate", str(study), "--out", str(tmp_path / "p")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "records[0].units" in err[0], err
+    assert not (tmp_path / "p").exists()

@@ -129,10 +129,10 @@ def test_cli_plot(tmp_path: Path) -> None:
     sweep = load_sweep(_write(tmp_path, GRID))
     run_sweep(sweep, scheduler="synchronous")
     assert main(["plot", str(sweep.out), "--x", "contact.gap", "--y", "contact.e",
-                 "-o", str(tmp_path / "h.png")]) == 0
+                 "--plot", str(tmp_path / "h.png")]) == 0
     assert main(["plot", str(sweep.out / "results.parquet"), "--x", "contact.gap", "--y",
                  "record.duration", "--kind", "lines", "-m", "n_impacts",
-                 "-o", str(tmp_path / "l.png")]) == 0
+                 "--plot", str(tmp_path / "l.png")]) == 0
     assert (tmp_path / "h.png").stat().st_size > 0 and (tmp_path / "l.png").stat().st_size > 0
     assert main(["plot", str(sweep.out), "--x", "nope"]) == 2
 

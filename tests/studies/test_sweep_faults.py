@@ -115,25 +115,11 @@ def test_out_under_a_file_is_one_line_as_for_pounding_run(tmp_path, capsys):
                                  "a file, not a folder; choose another --out"]
 
 
-def _read_only_folder(tmp_path: Path) -> Path:
-    if os.geteuid() != 0:
-        ro = tmp_path / "ro"
-        ro.mkdir()
-        ro.chmod(0o555)
-        return ro
-    if Path("/proc/sys").is_dir() and not os.access("/proc/sys", os.W_OK):
-        return Path("/proc/sys")  # read-only even for root in a container
-    pytest.skip("root may write in a read-only folder, and no read-only file system here")
-
-
-def test_out_in_a_read_only_folder_is_one_line_as_for_pounding_run(tmp_path, capsys):
-    ro = _read_only_folder(tmp_path)
-    try:
-        code, err = sweep_cli(capsys, str(_write(tmp_path, '[grid]\n"contact.gap" = [0.01]\n')),
-                              "--out", str(ro / "out"), "--scheduler", "synchronous")
-    finally:
-        if ro.is_relative_to(tmp_path):
-            ro.chmod(0o755)
+def test_out_in_a_read_only_folder_is_one_line_as_for_pounding_run(tmp_path, capsys,
+                                                                   read_only_folder):
+    ro = read_only_folder  # (as root: /proc/sys; see conftest.py)
+    code, err = sweep_cli(capsys, str(_write(tmp_path, '[grid]\n"contact.gap" = [0.01]\n')),
+                          "--out", str(ro / "out"), "--scheduler", "synchronous")
     assert code == 2 and len(err) == 1 and err[0].startswith(f"error: out: cannot write in {ro}")
 
 

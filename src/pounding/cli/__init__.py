@@ -15,8 +15,11 @@ An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of
 :mod:`pounding.config.plausibility`) is one line on standard error that starts
 ``warning:``; the command goes on.
 
-Command modules import only typer and rich at module level; everything else is imported by
-the command that uses it, so ``pounding --help`` and ``pounding --version`` start at once.
+Command modules import only typer, rich and the CLI's own helpers (``app``, ``options``: the
+options shared by several commands, ``running``: progress bars and SIGTERM, ``messages``,
+``tables``) at module level; everything else is imported by the command that uses it, so
+``pounding --help`` and ``pounding --version`` start at once (no NumPy;
+``tests/test_startup.py``).
 """
 
 from __future__ import annotations
@@ -28,7 +31,6 @@ from collections.abc import Iterator
 from typing import Any
 
 import typer
-from rich.markup import escape
 
 from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
     commands_contact,
@@ -43,35 +45,21 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_suite,
     commands_sweep,
 )
-from pounding.cli.app import app, err_console
+from pounding.cli.app import app, use_pounding_commands
+from pounding.cli.messages import (
+    EXIT_BAD_INPUT,
+    EXIT_FAILED,
+    EXIT_INTERRUPTED,
+    error_line,
+    lines_said,
+    warning_line,
+)
+from pounding.cli.running import sigterm_as_interrupt
 
-__all__ = ["app", "main", "error_line", "warning_line"]
+use_pounding_commands()
 
-EXIT_BAD_INPUT = 2
-"""Exit status of bad input and usage errors."""
-
-EXIT_INTERRUPTED = 130
-"""Exit status of a command stopped by Ctrl-C (128 + SIGINT), as shells report it."""
-
-EXIT_FAILED = 1
-"""Exit status of a command its environment stopped (a sweep whose Dask scheduler was lost)."""
-
-
-_LINES_SAID: list[int] = [0]
-"""How many error lines this process printed (so :func:`main` knows whether a command that
-ended interrupted said what was kept)."""
-
-
-def error_line(message: str) -> None:
-    """Print an error on standard error, every line starting ``error: `` (a model file with
-    three problems gives three such lines)."""
-    for line in str(message).splitlines() or [""]:
-        text = " ".join(line.split())
-        if text:
-            _LINES_SAID[0] += 1
-            err_console.print(f"[bold red]error:[/] {escape(text)}", highlight=False,
-                              soft_wrap=True)
-
+__all__ = ["EXIT_BAD_INPUT", "EXIT_FAILED", "EXIT_INTERRUPTED", "app", "main", "error_line",
+           "warning_line"]
 
 def _usage_error(exc: typer.TyperException) -> int:
     """One line for a usage error (unknown option, bad value): what, and where to look."""
@@ -84,13 +72,6 @@ def _usage_error(exc: typer.TyperException) -> int:
     message = exc.format_message() if hasattr(exc, "format_message") else str(exc)
     error_line(f"{where}: {message} (see '{where} --help')")
     return int(getattr(exc, "exit_code", EXIT_BAD_INPUT) or EXIT_BAD_INPUT)
-
-
-def warning_line(message: str) -> None:
-    """Print a warning on standard error as one line starting ``warning: ``."""
-    text = " ".join(str(message).split())
-    err_console.print(f"[bold yellow]warning:[/] {escape(text)}", highlight=False,
-                      soft_wrap=True)
 
 
 @contextlib.contextmanager
@@ -129,13 +110,13 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
-    said = _LINES_SAID[0]
+    said = lines_said()
     try:
         # SIGTERM as Ctrl-C in every command (what was kept is said, nothing half-written)
-        with commands_run._sigterm_as_interrupt():
+        with sigterm_as_interrupt():
             rv = app(args=argv, prog_name="pounding", standalone_mode=False)
         code = rv if isinstance(rv, int) else 0
-        if code == EXIT_INTERRUPTED and _LINES_SAID[0] == said:
+        if code == EXIT_INTERRUPTED and lines_said() == said:
             # typer turns an interrupt the command did not handle into 130, silently
             raise KeyboardInterrupt
     except SystemExit as exc:  # a command that ended itself with a status

@@ -7,10 +7,36 @@ public API and print; they hold no computation.
 from __future__ import annotations
 
 import sys
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 from rich.console import Console
+from typer.core import TyperCommand, TyperGroup
+
+
+def _flags_without_type(command: Any, ctx: Any) -> None:
+    """Show no type for an on/off flag (``--overwrite``, ``--help``): typer would print
+    ``<bool>`` beside it, though a flag takes no value."""
+    for param in command.get_params(ctx):
+        if getattr(param, "is_flag", False) and param.metavar is None:
+            param.metavar = ""
+
+
+class PoundingCommand(TyperCommand):
+    """A command of pounding: its ``--help`` shows no ``<bool>`` beside a flag."""
+
+    def format_help(self, ctx: Any, formatter: Any) -> None:
+        _flags_without_type(self, ctx)
+        super().format_help(ctx, formatter)
+
+
+class PoundingGroup(TyperGroup):
+    """The ``pounding`` group: its ``--help`` shows no ``<bool>`` beside a flag."""
+
+    def format_help(self, ctx: Any, formatter: Any) -> None:
+        _flags_without_type(self, ctx)
+        super().format_help(ctx, formatter)
+
 
 app = typer.Typer(
     name="pounding",
@@ -18,8 +44,16 @@ app = typer.Typer(
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    cls=PoundingGroup,
 )
 
+
+def use_pounding_commands() -> None:
+    """Make every command registered on :data:`app` a :class:`PoundingCommand` (called once
+    the command modules are imported, :mod:`pounding.cli`)."""
+    for info in app.registered_commands:
+        if info.cls is None or info.cls is TyperCommand:
+            info.cls = PoundingCommand
 
 
 def _print_version(value: bool) -> None:

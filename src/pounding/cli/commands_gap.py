@@ -8,27 +8,37 @@ from typing import Annotated, Any
 import typer
 from rich.text import Text
 
-from pounding.cli.app import app, console  # noqa: F401
+from pounding.cli import options as opt
+from pounding.cli.app import app, console
+from pounding.cli.running import progress_bar
 from pounding.cli.tables import Col, building_label, print_table
 
 
+def _mm(value: float) -> str:
+    """A gap [m] in mm, to 0.1 mm (every gap of the screen in one unit)."""
+    return f"{1000.0 * value:.1f}"
+
+
 def _ratio_cell(value: float, reference: float) -> str:
+    """A rule's gap [m] in mm, and its ratio to the simulated one."""
     if reference > 0.0:
-        return f"{value:.4f} (×{value / reference:.2f})"
-    return f"{value:.4f} (-)"
+        return f"{_mm(value)} (×{value / reference:.2f})"
+    return f"{_mm(value)} (-)"
 
 
-def _read_file(f: Path, option: str, dt: float | None, units: str | None) -> Any:
+def _read_file(f: Path, option: str, dt: float | None, units: str | None,
+               choice: dict[str, int | None] | None = None) -> Any:
     from pounding.ground_motion import read_record
 
     if not f.is_file():
         raise ValueError(f"{option}: {f}: " + ("is a directory, not a record file"
                                                if f.is_dir() else "no such file"))
-    return read_record(f, dt=dt, units=units)
+    return read_record(f, dt=dt, units=units, **(choice or {}))
 
 
 def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | None,
-                  units: str | None, unscaled: bool) -> tuple[list[Any], str]:
+                  units: str | None, unscaled: bool,
+                  choice: dict[str, int | None] | None = None) -> tuple[list[Any], str]:
     """The ground motions and a sentence saying how they were obtained: for a model with
     buildings in plan, each record's x and y site components (its second component, if
     given, orthogonal to it; both turned to the model's ``[record] incidence``)."""
@@ -56,7 +66,7 @@ def _load_records(cfg: Any, files: list[Path], seconds: list[Path], dt: float | 
         return [motion], how
     motions = []
     for k, f in enumerate(files):
-        pair = [_read_file(f, "--records", dt, units)]
+        pair = [_read_file(f, "--records", dt, units, choice)]
         if seconds:
             pair.append(_read_file(seconds[k], "--second", dt, units))
         if rec.duration is not None:
@@ -117,10 +127,11 @@ def gap_cmd(
         "`pounding record`): --records A.AT2 B.AT2 ... or --records A --records B. "
         "Default: the model file's \\[record], whose duration, scale and pga_g are also "
         "applied to every file given here (see --unscaled).", show_default=False)] = None,
-    dt: Annotated[float | None, typer.Option(
-        "--dt", help="Time step \\[s] for record files that do not give one.")] = None,
-    units: Annotated[str | None, typer.Option(
-        "--units", help="Acceleration unit for record files that do not state one.")] = None,
+    dt: opt.Dt = None,
+    units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
     second: Annotated[list[Path] | None, typer.Option(
         "--second", metavar="FILE", help="For a model with buildings in plan: the second "
         "horizontal component of each --records file, in the same order (orthogonal to it; "
@@ -130,19 +141,21 @@ def gap_cmd(
         "--unscaled", help="Use the --records files as recorded: ignore the model file's "
                            "\\[record] scale / pga_g.")] = False,
     duration: Annotated[float | None, typer.Option(
-        "--duration", help="Time simulated \\[s] for every record (default: \\[solver] "
-                           "duration of the model file, else each record's duration).")] = None,
-    spectrum: Annotated[Path | None, typer.Option(
-        "--spectrum", metavar="FILE", help="Design spectrum (TOML: kind, units, periods, "
-        "values; or asce7 = {sds, sd1, tl}; or eurocode8 = {agr, ground_type, type, "
-        "importance, damping}; or CSV: period_s and sa_g, sa_m_s2 or sd_m); adds the rules "
-        "from fundamental-mode spectral displacements. See docs/gap.md, docs/spectra.md.")
-    ] = None,
+        "--duration", metavar="SECONDS", help="Time simulated \\[s] for every record. "
+        "Default: \\[solver] duration of the model file, else each record's duration.",
+        show_default=False)] = None,
+    design: Annotated[Path | None, typer.Option(
+        "--design", metavar="FILE", help=opt.DESIGN_HELP + " Adds the code rules from "
+        "fundamental-mode spectral displacements (docs/gap.md).", show_default=False)] = None,
     plot: Annotated[Path | None, typer.Option(
-        "--plot", metavar="FILE", help="Draw gap against elevation to FILE (.png, .svg, .pdf).")
-    ] = None,
+        "--plot", metavar="FILE", help=opt.PLOT_HELP + " The figure: the critical gap "
+        "against elevation.", show_default=False)] = None,
     csv: Annotated[Path | None, typer.Option(
-        "--csv", metavar="FILE", help="Write the table (all numbers) to FILE.")] = None,
+        "--csv", metavar="FILE", help=opt.CSV_HELP + " One row per contact level: pair, "
+        "contact, elevation_m, critical_m\\[record] of each record, mean_m, max_m, the rules "
+        "\\[m] and their ratios to the simulated max and mean.", show_default=False)] = None,
+    workers: opt.WorkersFew = None,
+    scheduler: opt.SchedulerFew = None,
 ) -> None:
     """Critical separation gap per floor level by simulation, beside ABS, SRSS and DDC.
 
@@ -158,7 +171,9 @@ def gap_cmd(
 
       pounding gap examples/isolated_moat_wall.toml
 
-      pounding gap model.toml A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
+      pounding gap model.toml --records A.AT2 B.AT2 --csv gaps.csv --plot gaps.png
+
+      pounding gap model.toml --design examples/spectrum_asce7_site.toml
     """
     from pounding.config import load_config
     from pounding.io import check_output_file
@@ -183,20 +198,24 @@ def gap_cmd(
         raise ValueError(f"{model_path}: pounding gap simulates each building alone, and "
                          f"the model's {len(model.links)} link(s) ([[device]]) tie them "
                          "together; remove the links, or use pounding run at several gaps")
-    spec = DesignSpectrum.from_file(spectrum) if spectrum is not None else None
+    spec = DesignSpectrum.from_file(design) if design is not None else None
     if spec is not None and cfg.in_plan:
-        raise ValueError("--spectrum: the code rules from a design spectrum take each "
+        raise ValueError("--design: the code rules from a design spectrum take each "
                          "building's fundamental mode along the row, and a building in plan "
-                         "sways and twists in modes of its own; leave out --spectrum (the "
+                         "sways and twists in modes of its own; leave out --design (the "
                          "rules from the simulated peaks are in the table)")
     if spec is not None:  # fail before simulating if a fundamental period is off the table
         for bl in model.buildings:
             spec.sd(bl.fundamental_period)
-    motions, how = _load_records(cfg, files, list(second or []), dt, units, unscaled)
+    motions, how = _load_records(cfg, files, list(second or []), dt,
+                                 None if units is None else str(units), unscaled,
+                                 {"column": column, "time_column": time_column,
+                                  "channel": channel})
     sim_duration = duration if duration is not None else solver.get("duration")
-    with console.status(f"simulating {len(model.buildings)} buildings alone under "
-                        f"{len(motions)} record(s) ..."):
-        study = critical_gaps(model, motions, dt=solver.get("dt"), duration=sim_duration)
+    with progress_bar(f"{len(model.buildings)} buildings alone under {len(motions)} "
+                      "record(s)", "runs") as progress:
+        study = critical_gaps(model, motions, dt=solver.get("dt"), duration=sim_duration,
+                              scheduler=scheduler, n_workers=workers, progress=progress)
     if spec is not None:
         spec_peaks = study.spectral_peaks(spec)
         spec_rules = study.rules_from_spectrum(spec)
@@ -224,11 +243,11 @@ def gap_cmd(
     mean, top = study.mean_critical, study.max_critical
     rows = [[study.gap_names[k], f"{study.elevation[k]:g}",
              *([study.labels[k]] if plan_points else []),
-             *(f"{study.critical[i, k]:.4f}" for i in range(len(names))),
-             f"{mean[k]:.4f}", f"{top[k]:.4f}",
+             *(_mm(study.critical[i, k]) for i in range(len(names))),
+             _mm(mean[k]), _mm(top[k]),
              *(_ratio_cell(float(v[k]), float(top[k])) for v in rules.values())]
             for k in range(study.n_levels)]
-    print_table(console, f"{model.name}: critical separation gap [m] by simulation and code "
+    print_table(console, f"{model.name}: critical separation gap [mm] by simulation and code "
                 "rules", cols, rows, keys=2,
                 caption="R1, R2, ...: critical gap = max over time of u_left − u_right from "
                         "each building simulated alone (no contact), 0 if never positive"
@@ -241,34 +260,33 @@ def gap_cmd(
                         "simulated peak |u| at that level; (×r) = rule / max simulated.")
 
     if spec is not None:
-        cols = [Col("pair", "left"), Col("level [m]"), Col("u1 [m]"), Col("u2 [m]"),
+        cols = [Col("pair", "left"), Col("level [m]"), Col("u1 [mm]"), Col("u2 [mm]"),
                 *(Col(rule, wrap=True) for rule in spec_rules)]
         rows = [[study.gap_names[k], f"{study.elevation[k]:g}",
-                 f"{spec_peaks[0][k]:.4f}", f"{spec_peaks[1][k]:.4f}",
+                 _mm(spec_peaks[0][k]), _mm(spec_peaks[1][k]),
                  *(_ratio_cell(float(v[k]), float(top[k])) for v in spec_rules.values())]
                 for k in range(study.n_levels)]
-        print_table(console, f"Code rules from the design spectrum {spec.name!r} [m] "
+        print_table(console, f"Code rules from the design spectrum {spec.name!r} [mm] "
                     "(fundamental mode: u = |Γ1 φ1| Sd(T1))", cols, rows, keys=2,
-                    caption="Sd(T1) [m]: " + ", ".join(
-                        f"B{b + 1} {float(spec.sd(study.period[b])):.4f}"
+                    caption="Sd(T1) [mm]: " + ", ".join(
+                        f"B{b + 1} {_mm(float(spec.sd(study.period[b])))}"
                         for b in range(len(model.buildings))) + "; (×r) = rule / max simulated")
 
     gov = study.governing_gaps()
     between = {f"B{p + 1}-B{p + 2}" for p in range(len(model.buildings) - 1)}
     if between:
         console.print(Text("governing critical gap per pair (max over levels and records): "
-                           + ", ".join(f"{name} {g:.4f} m" for name, g in gov.items()
+                           + ", ".join(f"{name} {_mm(g)} mm" for name, g in gov.items()
                                        if name in between)))
     if model.walls:
         console.print(Text("moat width needed (the building's largest displacement toward "
                             "each wall, max over records): " + ", ".join(
-                                f"{name} {g:.4f} m" for name, g in gov.items()
+                                f"{name} {_mm(g)} mm" for name, g in gov.items()
                                 if name not in between)))
     if csv is not None:
         from pounding.io import write_text
 
-        write_text(csv, "# lengths in m, elevation in m; */max, */mean = rule / simulated max, mean\n"
-                   + study.to_frame(spec).to_csv(index=False))
+        write_text(csv, study.to_frame(spec).to_csv(index=False))
         console.print(f"table: {csv}", highlight=False)
     if plot is not None:
         from pounding.plot import save_figure

@@ -1,13 +1,17 @@
 """`pounding mitigate`."""
 
-from pounding.cli.app import app, console  # noqa: F401
+from __future__ import annotations
 
-from pathlib import Path  # noqa: E402
-from typing import Annotated, Any  # noqa: E402
+from pathlib import Path
+from typing import Annotated, Any
 
-import typer  # noqa: E402
-from rich.table import Table  # noqa: E402
-from rich.text import Text  # noqa: E402
+import typer
+from rich.text import Text
+
+from pounding.cli import options as opt
+from pounding.cli.app import app, console
+from pounding.cli.running import progress_bar, sigterm_as_interrupt
+from pounding.cli.tables import Col, energy_scale, force_scale, literal, number, print_table
 
 
 @app.command("mitigate")
@@ -15,14 +19,11 @@ def mitigate_cmd(
     study_file: Annotated[Path, typer.Argument(
         help="TOML study file: base model, records, options (see docs/mitigation.md).",
         show_default=False)],
-    out: Annotated[Path | None, typer.Option(
-        "--out", "-o", help="Output folder (default: out of the study file, else "
-                            "<name>-results beside it).", show_default=False)] = None,
-    overwrite: Annotated[bool, typer.Option(
-        "--overwrite", help="Replace the output folder of an earlier study (only one holding "
-                            "nothing but the files of its manifest).")] = False,
-    figures: Annotated[bool, typer.Option(
-        "--figures/--no-figures", help="Draw the trade-off figure.")] = True,
+    out: opt.Out = None,
+    overwrite: opt.Overwrite = False,
+    figures: opt.FiguresStudy = None,
+    workers: opt.WorkersFew = None,
+    scheduler: opt.SchedulerFew = None,
 ) -> None:
     """Compare retrofit options for a pair of buildings: bare gap, bumpers, links.
 
@@ -34,32 +35,44 @@ def mitigate_cmd(
 
       pounding mitigate examples/mitigation_two_10_storey.toml
 
-      pounding mitigate study.toml --out retrofit --overwrite --no-figures
+      pounding mitigate study.toml --out retrofit --overwrite --no-figures -j 2
     """
-    from pounding.cli.commands_run import _progress_bar, _sigterm_as_interrupt
     from pounding.studies.mitigation import run_mitigation
 
-    with _sigterm_as_interrupt(), _progress_bar("mitigation runs") as progress:
-        res = run_mitigation(study_file, out=out, overwrite=overwrite, figures=figures,
-                             progress=progress)
+    with sigterm_as_interrupt(), progress_bar("mitigation", "runs") as progress:
+        res = run_mitigation(study_file, out, overwrite=overwrite, figures=figures,
+                             progress=progress, scheduler=scheduler, n_workers=workers)
     _print(res)
 
 
 def _print(res: Any) -> None:
+    """The summary per option: forces and shears in one unit (kN or MN), energies in one
+    (kJ or MJ)."""
+    from pounding.units import G
+
     s = res.summary
-    t = Table(title=f"retrofit options (mean over {int(s['records'].iloc[0])} record(s))")
-    heads = ("option", "impacts", "peak impact force [MN]", "pad impacts",
-             "peak pad force [MN]", "peak drift ratio [%]", "peak storey shear [MN]",
-             "peak floor accel. [g]", "dissipated: contacts / pads / links [MJ]")
-    for h in heads:
-        t.add_column(Text(h), justify="left" if h == "option" else "right")
-    for name, r in s.iterrows():
-        t.add_row(str(name), f"{r['n_impacts']:.1f}", f"{r['peak_impact_force_N'] / 1e6:.3g}",
-                  f"{r['n_pad_impacts']:.1f}", f"{r['peak_pad_force_N'] / 1e6:.3g}",
-                  f"{100 * r['peak_drift_ratio']:.3g}", f"{r['peak_storey_shear_N'] / 1e6:.3g}",
-                  f"{r['peak_abs_accel_m_s2'] / 9.80665:.3g}",
-                  f"{r['contact_dissipated_J'] / 1e6:.3g} / {r['pads_dissipated_J'] / 1e6:.3g}"
-                  f" / {r['links_dissipated_J'] / 1e6:.3g}")
-    console.print(t)
+    forces = [s[c].abs().max() for c in ("peak_impact_force_N", "peak_pad_force_N",
+                                         "peak_storey_shear_N")]
+    f_scale, f_unit = force_scale(max(forces))
+    energies = [s[c].abs().max() for c in ("contact_dissipated_J", "pads_dissipated_J",
+                                           "links_dissipated_J")]
+    e_scale, e_unit = energy_scale(max(energies))
+    cols = [Col("option", "left", wrap=True), Col("impacts"),
+            Col(f"peak impact force [{f_unit}]"), Col("pad impacts"),
+            Col(f"peak pad force [{f_unit}]"), Col("peak drift ratio [%]"),
+            Col(f"peak storey shear [{f_unit}]"), Col("peak floor accel. [g]"),
+            Col(f"dissipated in contacts [{e_unit}]"), Col(f"dissipated by pads [{e_unit}]"),
+            Col(f"dissipated by links [{e_unit}]")]
+    rows = [(literal(name), f"{r['n_impacts']:.1f}",
+             number(r["peak_impact_force_N"] * f_scale), f"{r['n_pad_impacts']:.1f}",
+             number(r["peak_pad_force_N"] * f_scale), number(100 * r["peak_drift_ratio"], 3),
+             number(r["peak_storey_shear_N"] * f_scale),
+             number(r["peak_abs_accel_m_s2"] / G, 3),
+             number(r["contact_dissipated_J"] * e_scale),
+             number(r["pads_dissipated_J"] * e_scale),
+             number(r["links_dissipated_J"] * e_scale))
+            for name, r in s.iterrows()]
+    print_table(console, f"retrofit options (mean over {int(s['records'].iloc[0])} "
+                         "record(s))", cols, rows)
     console.print(Text.assemble("results in ", (str(res.out_dir), "bold"), ": "
                                 + ", ".join(sorted(p.name for p in res.files.values()))))

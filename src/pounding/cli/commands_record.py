@@ -6,36 +6,34 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.table import Table
-from rich.text import Text
 
-from pounding.cli.app import app, console  # noqa: F401
+from pounding.cli import options as opt
+from pounding.cli.app import app, console
+from pounding.cli.tables import Col, literal, print_table
 
 
 @app.command("record")
 def record(
     files: Annotated[list[Path] | None, typer.Argument(
         help="Record files: PEER .AT2 (units from the header, g if none stated), K-NET/"
-             "KiK-net ASCII, COSMOS V1/V2, or text with one column (needs --dt) or two "
-             "columns time, acceleration.",
+             "KiK-net ASCII, COSMOS V1/V2, or text (needs --units) with one column (needs "
+             "--dt), two columns time, acceleration, or several (needs --column).",
         show_default=False)] = None,
     bundled: Annotated[bool, typer.Option(
-        "--bundled", help="Also the twelve real records shipped with pounding (the ten of "
-                          "the bundled suite, then the Düzce pair of orthogonal components; "
+        "--bundled", help="Also the twelve real records shipped with pounding (the nine of "
+                          "the bundled suite, a second digitisation of El Centro N-S kept "
+                          "out of it, then the Düzce pair of orthogonal components; "
                           "provenance in pounding/data/records/SOURCES.md).")] = False,
-    dt: Annotated[float | None, typer.Option(
-        "--dt", help="Time step \\[s] for files that do not give one.")] = None,
-    units: Annotated[str | None, typer.Option(
-        "--units", help="Acceleration unit for files that do not state one: g, m/s2, "
-                        "cm/s2, gal, ... (text files default to m/s2). An AT2 header "
-                        "stating another unit is an error.")] = None,
+    dt: opt.Dt = None,
+    units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
     plot: Annotated[Path | None, typer.Option(
-        "--plot", help="Draw each record (acceleration, velocity, displacement). With one "
-                       "FILE, PATH is the figure file (format from its suffix: .png, .svg, "
-                       ".pdf; none means .png). With several FILEs, or if PATH is an "
-                       "existing folder, PATH is a folder that gets one PNG per file, named "
-                       "FILE-STEM.png.",
-        metavar="PATH")] = None,
+        "--plot", metavar="FILE", help=opt.PLOT_HELP + " The figure: each record's "
+        "acceleration, velocity and displacement. With several record files, or a FILE that "
+        "is an existing folder, FILE is a folder that gets one PNG per record, named "
+        "RECORD-STEM.png.", show_default=False)] = None,
 ) -> None:
     """Read ground-motion records and print their step, duration, PGA and PGV.
 
@@ -46,6 +44,10 @@ def record(
       pounding record elcentro.AT2 --plot elcentro.png
 
       pounding record accel.txt --dt 0.01 --units g
+
+      pounding record station.txt --units g --column 2
+
+      pounding record CE12345.V2 --channel 3
 
       pounding record MYG0041103111446.NS CE12345.V2c
 
@@ -58,23 +60,25 @@ def record(
     if not files and not bundled:
         raise ValueError("record: give record FILEs, or --bundled for the records shipped "
                          "with pounding")
-    motions = [read_record(f, dt=dt, units=units) for f in files]
+    from pounding.ground_motion.readers import UnitsRequired
+
+    try:
+        motions = [read_record(f, dt=dt, units=None if units is None else str(units),
+                               column=column, time_column=time_column, channel=channel)
+                   for f in files]
+    except UnitsRequired as exc:
+        raise exc.named("--units") from None
     if bundled:
         files += [Path(str(bundled_folder().joinpath(f))) for f in bundled_files()]
         motions += [load_bundled(f) for f in bundled_files()]
 
-    table = Table(title="Ground-motion records")
-    table.add_column("file", overflow="fold")
-    table.add_column("points", justify="right")
-    table.add_column(Text("step [s]"), justify="right")
-    table.add_column(Text("duration [s]"), justify="right")
-    table.add_column("units read")
-    table.add_column(Text("PGA [g]"), justify="right")
-    table.add_column(Text("PGV [m/s]"), justify="right")
-    for f, gm in zip(files, motions, strict=True):
-        table.add_row(f.name, str(gm.npts), f"{gm.dt:g}", f"{gm.duration:.6g}", gm.units_read,
-                      f"{gm.pga_g:.4f}", f"{gm.pgv:.3f}")
-    console.print(table)
+    print_table(console, "Ground-motion records",
+                [Col("file", "left", wrap=True), Col("points"), Col("step [s]"),
+                 Col("duration [s]"), Col("units read", "left"), Col("PGA [g]"),
+                 Col("PGV [m/s]")],
+                [(literal(f.name), str(gm.npts), f"{gm.dt:g}", f"{gm.duration:.6g}",
+                  gm.units_read, f"{gm.pga_g:.4f}", f"{gm.pgv:.3f}")
+                 for f, gm in zip(files, motions, strict=True)])
 
     if plot is None:
         return

@@ -17,9 +17,10 @@ def report_cmd(
         help="Output folder of `pounding run` (summary.json, timehistories.nc), of "
              "`pounding sweep` (results.parquet) or of `pounding fragility` "
              "(fragility.json).", show_default=False)],
-    out: Annotated[Path | None, typer.Option(
-        "--out", "-o", help="HTML file to write (default: RESULTS_DIR/report.html). Written "
-                            "complete or not at all.", show_default=False)] = None,
+    html: Annotated[Path | None, typer.Option(
+        "--html", metavar="FILE", help="Write the page to FILE. Default: report.html in "
+                                       "RESULTS_DIR (in its manifest).",
+        show_default=False)] = None,
 ) -> None:
     """Write one self-contained HTML page (figures embedded) for a run, a sweep or a
     fragility study.
@@ -28,15 +29,15 @@ def report_cmd(
 
       pounding report pounding-demo
 
-      pounding report sweep_gap_e-results --out study.html
+      pounding report sweep_gap_e-results --html study.html
 
       pounding report fragility_two_10_storey-results
     """
     from pounding.io import check_output_file
     from pounding.report import write_report
 
-    check_output_file(out, "--out")
-    path = write_report(results_dir, out)
+    check_output_file(html, "--html")
+    path = write_report(results_dir, html)
     size = path.stat().st_size
     console.print(Text.assemble("report written: ", (str(path), "bold"),
                                 f" ({size / 1024:.0f} kB, self-contained)"))

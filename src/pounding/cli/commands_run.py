@@ -2,110 +2,31 @@
 
 from __future__ import annotations
 
-import contextlib
-import signal
-import threading
-import time
-from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated
 
 import typer
-from rich.progress import (
-    BarColumn,
-    Progress,
-    ProgressColumn,
-    Task,
-    TaskProgressColumn,
-    TextColumn,
-    TimeElapsedColumn,
-    TimeRemainingColumn,
-)
-from rich.table import Table
 from rich.text import Text
 
+from pounding.cli import options as opt
 from pounding.cli.app import app, console
-
-PROGRESS_DELAY = 1.0
-"""Seconds before the progress bar appears: quick runs print no bar."""
-
-
-class _DelayedProgress(Progress):
-    """A rich progress display that renders nothing until ``delay`` seconds have passed."""
-
-    def __init__(self, *columns: Any, delay: float = PROGRESS_DELAY, **kw: Any) -> None:
-        self._t0 = time.monotonic()
-        self._delay = delay
-        super().__init__(*columns, **kw)
-
-    def get_renderables(self) -> Iterator[Any]:  # type: ignore[override]
-        if time.monotonic() - self._t0 >= self._delay:
-            yield from super().get_renderables()
-
-
-COMPILE_NOTE_AFTER = 5.0
-"""Seconds at 0 % after which the bar says why: the first run compiles the solver."""
-
-
-class _CompilingNote(ProgressColumn):
-    """Says what a bar stuck at 0 % is waiting for: on the first run after an install (or
-    after the kernel's source changed) numba compiles the solver, about 20–30 s on a
-    2-core machine; the compiled code is cached, and later runs start at once."""
-
-    def render(self, task: Task) -> Text:
-        if task.completed == 0 and (task.elapsed or 0.0) >= COMPILE_NOTE_AFTER:
-            return Text("probably compiling the solver: first run only, about 20–30 s "
-                        "(cached after)", style="dim")
-        return Text("")
-
-
-@contextlib.contextmanager
-def _progress_bar(label: str) -> Iterator[Callable[[float], None]]:
-    bar = _DelayedProgress(TextColumn("{task.description}", style="bold", markup=False),
-                           BarColumn(),
-                           TaskProgressColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-                           _CompilingNote(), console=console, transient=True,
-                           disable=not console.is_terminal)  # (a log gets no bar)
-    task = bar.add_task(label, total=1.0)
-
-    def update(fraction: float) -> None:
-        bar.update(task, completed=fraction)
-
-    with bar:
-        yield update
-
-
-@contextlib.contextmanager
-def _sigterm_as_interrupt() -> Iterator[None]:
-    """Turn SIGTERM into KeyboardInterrupt while running, so the temporary output folder is
-    removed on ``kill`` as on Ctrl-C."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def handler(signum: int, frame: Any) -> None:
-        raise KeyboardInterrupt(f"signal {signum}")
-
-    previous = signal.signal(signal.SIGTERM, handler)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
+from pounding.cli.running import progress_bar, sigterm_as_interrupt
+from pounding.cli.tables import Col, literal, print_table
 
 
 def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | None,
          label: str) -> None:
+    from pounding.cli.messages import EXIT_INTERRUPTED, error_line
     from pounding.config import load_config
-    from pounding.run import default_out_dir, run_config
-
-    from pounding.cli import EXIT_INTERRUPTED, error_line
+    from pounding.output_folder import default_out_dir
+    from pounding.run_file import run_config
 
     cfg = load_config(model_file)
     target = out if out is not None else default_out_dir(model_file)
     try:
-        with _sigterm_as_interrupt(), _progress_bar(label) as progress:
-            result = run_config(cfg, target, progress=progress, overwrite=overwrite,
-                                figures=figures)
+        with sigterm_as_interrupt(), progress_bar(label) as progress:
+            result = run_config(cfg, target, overwrite=overwrite, figures=figures,
+                                progress=progress)
     except KeyboardInterrupt:
         error_line(f"stopped: the run was interrupted, so nothing was written to {target} "
                    "(an earlier output there is as it was); run the same command again")
@@ -115,25 +36,13 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
     print_run_summary(result)
 
 
-OutOpt = Annotated[Path | None, typer.Option(
-    "--out", "-o", help="Output folder (default: MODEL-STEM-results in the current folder). "
-                        "Written complete or not at all.", show_default=False)]
-OverwriteOpt = Annotated[bool, typer.Option(
-    "--overwrite", help="Replace the output folder if it exists: only an empty folder or an "
-                        "earlier run's, holding nothing but the files of its manifest; the old "
-                        "one goes, file by file, once the new is complete.")]
-FiguresOpt = Annotated[bool | None, typer.Option(
-    "--figures/--no-figures", help="Write the PNG figures (default: [output] figures of the "
-                                   "model file, true if not given).", show_default=False)]
-
-
 @app.command("run")
 def run_cmd(
     model: Annotated[Path, typer.Argument(help="TOML model file (see docs/running.md).",
                                           show_default=False)],
-    out: OutOpt = None,
-    overwrite: OverwriteOpt = False,
-    figures: FiguresOpt = None,
+    out: opt.Out = None,
+    overwrite: opt.Overwrite = False,
+    figures: opt.Figures = None,
 ) -> None:
     """Simulate a model file and write time histories, impacts, summary and figures.
 
@@ -148,14 +57,9 @@ def run_cmd(
 
 @app.command("demo")
 def demo_cmd(
-    out: Annotated[Path, typer.Option(
-        "--out", "-o", help="Output folder.")] = Path("pounding-demo"),
-    overwrite: Annotated[bool, typer.Option(
-        "--overwrite/--no-overwrite",
-        help="Replace an earlier output in the folder (default: yes, so the demo can be run "
-             "again; a folder holding anything pounding did not write is never replaced).")
-] = True,
-    figures: FiguresOpt = None,
+    out: opt.DemoOut = Path("pounding-demo"),
+    overwrite: opt.OverwriteDemo = True,
+    figures: opt.Figures = None,
 ) -> None:
     """Two 10-storey buildings pounding under El Centro 1940: the bundled example
     two_10_storey.toml (see it with `pounding examples`).
@@ -176,8 +80,7 @@ def examples_cmd(
     copy: Annotated[Path | None, typer.Option(
         "--copy", metavar="DIR", help="Copy every example (and its README) into the folder "
                                       "DIR, made if missing.", show_default=False)] = None,
-    overwrite: Annotated[bool, typer.Option(
-        "--overwrite", help="With --copy: replace files of the same names.")] = False,
+    overwrite: opt.OverwriteCopy = False,
 ) -> None:
     """List the example model, sweep, spectrum and fragility files of pounding, or copy them.
 
@@ -194,13 +97,9 @@ def examples_cmd(
         console.print(Text.assemble(f"copied {len(files)} files into ", (str(copy), "bold"),
                                     ": " + ", ".join(p.name for p in files)))
         return
-    table = Table(title=f"Examples (in {example_path('seed_sdof_pair').parent})")
-    table.add_column("file")
-    table.add_column("kind")
-    table.add_column("what it shows", overflow="fold")
-    for e in examples():
-        table.add_row(e.name, e.kind, e.description)
-    console.print(table)
+    print_table(console, f"Examples (in {example_path('seed_sdof_pair').parent})",
+                [Col("file", "left"), Col("kind", "left"), Col("what it shows", "left", wrap=True)],
+                [(literal(e.name), e.kind, literal(e.description)) for e in examples()])
     console.print("Run one with `pounding run FILE` (a sweep: `pounding sweep FILE`, a fragility "
                   "study: `pounding fragility FILE`); copy them with `pounding examples --copy "
                   "DIR`.", highlight=False)

@@ -6,10 +6,10 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from rich.table import Table
-from rich.text import Text
 
+from pounding.cli import options as opt
 from pounding.cli.app import app, console
+from pounding.cli.tables import Col, print_table
 
 
 def _pct(zeta: float) -> str:
@@ -22,8 +22,7 @@ def spectrum_cmd(
         help="Record files (any format `pounding record` reads: PEER .AT2, K-NET, "
         "COSMOS, text).", show_default=False)],
     damping: Annotated[str, typer.Option(
-        "--damping", metavar="LIST", help="Damping ratios, fractions of critical, each in "
-        "\\[0, 1): 0.05,0.02.")] = "0.05",
+        "--damping", metavar="LIST", help=opt.DAMPING_HELP)] = "0.05",
     periods: Annotated[str, typer.Option(
         "--periods", metavar="SPEC", help="Periods \\[s]: a comma list (0.1,0.5,1) or "
         "FIRST:LAST:N, N periods log-spaced from FIRST to LAST (0.05:4:300).")]
@@ -33,20 +32,20 @@ def spectrum_cmd(
         "one motion (same step and length): RotD50, RotD100 (Boore 2010) and the geometric "
         "mean.")] = False,
     design: Annotated[list[Path] | None, typer.Option(
-        "--design", metavar="FILE", help="A design spectrum to draw with --plot (TOML: "
-        "asce7, eurocode8 or a table; or CSV period_s,sa_g), as for `pounding gap "
-        "--spectrum`; repeat for more.")] = None,
+        "--design", metavar="FILE", help=opt.DESIGN_HELP + " Drawn with --plot; repeat for "
+        "more.", show_default=False)] = None,
     csv: Annotated[Path | None, typer.Option(
-        "--csv", metavar="FILE", help="Write every value to FILE: record, damping, "
-        "period_s, sd_m, psv_m_s, psa_g, sa_abs_g (with --rotd: a measure column "
-        "instead of sa_abs_g).")] = None,
+        "--csv", metavar="FILE", help=opt.CSV_HELP + " One row per record, damping and "
+        "period: record, damping, period_s, sd_m, psv_m_s, psa_g, sa_abs_g (with --rotd: a "
+        "measure column instead of sa_abs_g).", show_default=False)] = None,
     plot: Annotated[Path | None, typer.Option(
-        "--plot", metavar="FILE", help="Draw PSA \\[g] against period \\[s] to FILE (.png, "
-        ".svg, .pdf).")] = None,
-    dt: Annotated[float | None, typer.Option(
-        "--dt", help="Time step \\[s] for text records that do not give one.")] = None,
-    units: Annotated[str | None, typer.Option(
-        "--units", help="Acceleration unit for records that do not state one.")] = None,
+        "--plot", metavar="FILE", help=opt.PLOT_HELP + " The figure: PSA \\[g] against "
+        "period \\[s].", show_default=False)] = None,
+    dt: opt.Dt = None,
+    units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
 ) -> None:
     """Elastic response spectra of records: Sd, PSV, PSA and absolute acceleration.
 
@@ -75,7 +74,8 @@ def spectrum_cmd(
     from pounding.spectra import DesignSpectrum
 
     designs = [DesignSpectrum.from_file(f) for f in design or []]
-    motions = _read(records, dt, units)
+    motions = _read(records, dt, None if units is None else str(units), column=column,
+                    time_column=time_column, channel=channel)
     if rotd:
         curves, text = _rotd(motions, t, zetas)
     else:
@@ -94,16 +94,26 @@ def spectrum_cmd(
         console.print(f"figure: {save_figure(fig, plot)}", highlight=False)
 
 
-def _read(files: list[Path], dt: float | None, units: str | None) -> list[Any]:
+def _read(files: list[Path], dt: float | None, units: str | None, *,
+          column: int | None = None, time_column: int | None = None,
+          channel: int | None = None) -> list[Any]:
     import dataclasses
 
     from pounding.ground_motion import read_record
+    from pounding.ground_motion.readers import UnitsRequired
 
     motions = []
     for f in files:
         if f.is_dir():
             raise ValueError(f"{f}: is a directory, not a record file")
-        motions.append(dataclasses.replace(read_record(f, dt=dt, units=units), name=f.name))
+        try:
+            gm = read_record(f, dt=dt, units=units, column=column, time_column=time_column,
+                             channel=channel)
+        except UnitsRequired as exc:
+            raise exc.named("--units") from None
+        # the file's name, and the column or channel read where the reader named one
+        chosen = gm.name[len(f.stem):] if gm.name.startswith(f.stem) else ""
+        motions.append(dataclasses.replace(gm, name=f.name + chosen))
     return motions
 
 
@@ -112,20 +122,17 @@ def _single(motions: list[Any], t: Any, zetas: Any) -> tuple[list[Any], str]:
 
     spectra = [response_spectrum(m, t, zetas) for m in motions]
     for m, s in zip(motions, spectra, strict=True):
-        table = Table(title=Text(f"{m.name}: PGA {m.pga_g:.4f} g, {m.npts} points at "
-                                 f"{m.dt:g} s", style="italic"))
-        table.add_column(Text("T [s]"), justify="right")
-        for z in s.damping:
-            for what in ("Sd [m]", "PSA [g]", "Sa,abs [g]"):
-                table.add_column(Text(f"{what} {_pct(z)}"), justify="right")
+        cols = [Col("T [s]")] + [Col(f"{what} {_pct(z)}") for z in s.damping
+                                 for what in ("Sd [m]", "PSA [g]", "Sa,abs [g]")]
+        rows = []
         for j, period in enumerate(s.periods):
             cells = [f"{period:.4g}"]
             for k in range(s.damping.size):
                 cells += [f"{s.sd[k, j]:.5g}", f"{s.psa_g[k, j]:.4f}", f"{s.sa_abs_g[k, j]:.4f}"]
-            table.add_row(*cells)
-        table.caption = Text("Sd: peak relative displacement; PSA = (2π/T)² Sd; Sa,abs: peak "
-                             "absolute acceleration; g = 9.80665 m/s²")
-        console.print(table)
+            rows.append(cells)
+        print_table(console, f"{m.name}: PGA {m.pga_g:.4f} g, {m.npts} points at {m.dt:g} s",
+                    cols, rows, caption="Sd: peak relative displacement; PSA = (2π/T)² Sd; "
+                    "Sa,abs: peak absolute acceleration; g = 9.80665 m/s²")
     curves = [(f"{s.record}, {_pct(z)}", s.psa_g[k]) for s in spectra
               for k, z in enumerate(s.damping)]
     return curves, to_csv(spectra)
@@ -139,19 +146,16 @@ def _rotd(motions: list[Any], t: Any, zetas: Any) -> tuple[list[Any], str]:
     curves = []
     for r in pairs:
         measures = r.measures()
-        table = Table(title=Text(f"{r.label}: PSA [g]", style="italic"))
-        table.add_column(Text("T [s]"), justify="right")
-        for z in r.damping:
-            for what in measures:
-                table.add_column(Text(f"{what} {_pct(z)}"), justify="right")
         psa = {k: r.psa_g(v) for k, v in measures.items()}
-        for j, period in enumerate(r.periods):
-            table.add_row(f"{period:.4g}", *(f"{psa[what][k, j]:.4f}"
-                                             for k in range(r.damping.size) for what in psa))
-        table.caption = Text("H1, H2: the components as recorded; GeoMean = sqrt(H1 H2); "
-                             "RotD50, RotD100: median and largest over azimuths 0-179° "
-                             "(Boore 2010); PSA = (2π/T)² Sd")
-        console.print(table)
+        print_table(console, f"{r.label}: PSA [g]",
+                    [Col("T [s]")] + [Col(f"{what} {_pct(z)}") for z in r.damping
+                                      for what in measures],
+                    [[f"{period:.4g}", *(f"{psa[what][k, j]:.4f}"
+                                         for k in range(r.damping.size) for what in psa)]
+                     for j, period in enumerate(r.periods)],
+                    caption="H1, H2: the components as recorded; GeoMean = sqrt(H1 H2); "
+                            "RotD50, RotD100: median and largest over azimuths 0-179° "
+                            "(Boore 2010); PSA = (2π/T)² Sd")
         curves += [(f"{r.label} {what}, {_pct(z)}", psa[what][k])
                    for k, z in enumerate(r.damping) for what in ("GeoMean", "RotD50",
                                                                   "RotD100")]

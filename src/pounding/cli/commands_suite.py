@@ -6,10 +6,11 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from rich.table import Table
 from rich.text import Text
 
+from pounding.cli import options as opt
 from pounding.cli.app import app, console
+from pounding.cli.tables import Col, literal, print_table
 
 CSV_COLUMNS = ("record", "factor", "flagged", "pga_g", "scaled_pga_g", "sa_t1_g",
                "scaled_sa_t1_g")
@@ -22,37 +23,39 @@ def suite_cmd(
         help="Record files or a folder of them (any format `pounding record` reads). "
         "Default: the suite bundled with pounding.", show_default=False)] = None,
     target: Annotated[Path, typer.Option(
-        "--target", metavar="FILE", help="Target spectrum (TOML: asce7, eurocode8 or a "
-        "table; or CSV period_s,sa_g), as for `pounding gap --spectrum`.",
-        show_default=False)] = ...,  # type: ignore[assignment]
+        "--design", metavar="FILE", help=opt.DESIGN_HELP + " The target the records are "
+        "scaled to.", show_default=False)] = ...,  # type: ignore[assignment]
     period: Annotated[float, typer.Option(
-        "--period", help="Fundamental period T1 of the structure \\[s].",
+        "--t1", metavar="SECONDS", help="Fundamental period T1 of the structure \\[s].",
         show_default=False)] = ...,  # type: ignore[assignment]
-    method: Annotated[str, typer.Option(
+    method: Annotated[opt.Method, typer.Option(
         "--method", help="code: one factor for the suite, its mean >= 90 % of the target "
         "over the range (ASCE 7-22 §16.2.3 / EN 1998-1 §3.2.3.1.2); sa: each record to "
         "Sa(T1); pga: each to the target's PGA; lsq: each by least squares on its "
-        "log-spectrum over the range.")] = "code",
-    code: Annotated[str, typer.Option(
-        "--code", help="The code of --method code: asce7 or ec8 (which also keeps the mean "
-        "PGA at the target's).")] = "asce7",
+        "log-spectrum over the range.")] = opt.Method.code,
+    code: Annotated[opt.Code, typer.Option(
+        "--code", help="The code of --method code (ec8 also keeps the mean PGA at the "
+        "target's).")] = opt.Code.asce7,
     period_range: Annotated[str | None, typer.Option(
-        "--range", metavar="LO,HI", help="Periods checked \\[s] (default 0.2 T1 to 2 T1; "
-        "ASCE 7-22 wants a lower bound low enough for 90 % of the modal mass).")] = None,
+        "--range", metavar="LO,HI", help="Periods checked \\[s]. Default: 0.2 T1 to 2 T1 "
+        "(ASCE 7-22 wants a lower bound low enough for 90 % of the modal mass).",
+        show_default=False)] = None,
     limits: Annotated[str, typer.Option(
         "--limits", metavar="LO,HI", help="Flag factors outside this range.")] = "0.25,4",
-    damping: Annotated[float, typer.Option(
-        "--damping", help="Damping ratio of the records' spectra (the target's).")] = 0.05,
+    damping: Annotated[str, typer.Option(
+        "--damping", metavar="LIST", help=opt.DAMPING_HELP + " Scaling uses one: the "
+        "design spectrum's.")] = "0.05",
     csv: Annotated[Path | None, typer.Option(
-        "--csv", metavar="FILE", help="Write the factors to FILE: " + ", ".join(CSV_COLUMNS)
-        + ".")] = None,
+        "--csv", metavar="FILE", help=opt.CSV_HELP + " One row per record: "
+        + ", ".join(CSV_COLUMNS) + ".", show_default=False)] = None,
     plot: Annotated[Path | None, typer.Option(
-        "--plot", metavar="FILE", help="Draw each scaled spectrum, the mean, the target and "
-        "the range to FILE (.png, .svg, .pdf).")] = None,
-    dt: Annotated[float | None, typer.Option(
-        "--dt", help="Time step \\[s] for text records that do not give one.")] = None,
-    units: Annotated[str | None, typer.Option(
-        "--units", help="Acceleration unit for records that do not state one.")] = None,
+        "--plot", metavar="FILE", help=opt.PLOT_HELP + " The figure: each scaled spectrum, "
+        "the mean, the target and the range.", show_default=False)] = None,
+    dt: opt.Dt = None,
+    units: opt.RecordUnits = None,
+    column: opt.Column = None,
+    time_column: opt.TimeColumn = None,
+    channel: opt.Channel = None,
 ) -> None:
     """Scale a suite of records to a target spectrum: the factors, the mean and dispersion.
 
@@ -60,11 +63,11 @@ def suite_cmd(
 
     Examples:
 
-      pounding suite --target examples/spectrum_asce7_site.toml --period 1.0
+      pounding suite --design examples/spectrum_asce7_site.toml --t1 1.0
 
-      pounding suite records/ --target ec8.toml --period 0.8 --code ec8 --plot suite.png
+      pounding suite records/ --design ec8.toml --t1 0.8 --code ec8 --plot suite.png
 
-      pounding suite A.AT2 B.AT2 C.AT2 --target site.csv --period 1.2 --method lsq --csv f.csv
+      pounding suite A.AT2 B.AT2 C.AT2 --design site.csv --t1 1.2 --method lsq --csv f.csv
     """
     import numpy as np
 
@@ -77,19 +80,30 @@ def suite_cmd(
     check_output_file(plot, "--plot", figure=True)
     lo_hi = _pair(period_range, "--range") if period_range is not None else None
     lims = _pair(limits, "--limits")
+    from pounding.validation import positive
+
+    period = positive("--t1", period)
+    zetas = opt.split_floats(damping, "--damping") or []
+    if len(zetas) != 1:
+        raise ValueError(f"--damping: suite scaling uses one damping ratio, the design "
+                         f"spectrum's (got {damping!r})")
     spectrum = DesignSpectrum.from_file(target)
     source: Any = BUNDLED if not records else (records[0] if len(records) == 1 else records)
-    suite = read_suite(source, dt=dt, units=units)
-    result = scale_suite(list(suite), spectrum, period, method=method, code=code,
-                         damping=damping, period_range=lo_hi, limits=lims)
+    from pounding.ground_motion.readers import UnitsRequired
+
+    try:
+        suite = read_suite(source, dt=dt, units=None if units is None else str(units),
+                           column=column, time_column=time_column, channel=channel)
+    except UnitsRequired as exc:
+        raise exc.named("--units") from None
+    result = scale_suite(list(suite), spectrum, period, method=str(method), code=str(code),
+                         damping=zetas[0], period_range=lo_hi, limits=lims)
     _print(result, suite)
     if csv is not None:
         from pounding.io import write_text
         from pounding.spectra.response import csv_text
 
-        write_text(csv, csv_text("factor [-]; pga_g, sa_t1_g [g = 9.80665 m/s2], Sa at T1 "
-                                 f"= {result.period:g} s and {100 * result.damping:g} % "
-                                 "damping", CSV_COLUMNS, _rows(result)))
+        write_text(csv, csv_text(CSV_COLUMNS, _rows(result)))
         console.print(f"table: {csv}", highlight=False)
     if plot is not None:
         from pounding.plot import save_figure
@@ -139,27 +153,26 @@ def _print(r: Any, suite: Any) -> None:
     import numpy as np
 
     lo, hi = r.period_range
-    table = Table(title=Text(f"{suite.name}: {len(r.records)} records scaled to "
-                             f"{r.target.name}", style="italic"))
-    for head in ("record", "PGA [g]", "Sa(T1) [g]", "factor", "scaled PGA [g]",
-                 "scaled Sa(T1) [g]"):
-        table.add_column(Text(head), justify="left" if head == "record" else "right")
+    rows = []
     for name, f, flag, pga, _, sa, ssa in _rows(r):
         factor = Text(f"{f:.4f}")
         if flag:
             factor.append(" (outside limits)", style="red")
-        table.add_row(Text(str(name)), f"{pga:.4f}", f"{sa:.4f}", factor, f"{f * pga:.4f}",
-                      f"{ssa:.4f}")
+        rows.append((literal(name), f"{pga:.4f}", f"{sa:.4f}", factor, f"{f * pga:.4f}",
+                     f"{ssa:.4f}"))
     j = r.at_period
     ratio = r.mean_over_target
     inside = (r.periods >= lo) & (r.periods <= hi)
     k = int(np.argmin(np.where(inside, ratio, np.inf)))
-    table.caption = Text(
-        f"{_method_text(r)}; T1 = {r.period:g} s, range {lo:.3g}–{hi:.3g} s, "
-        f"{100 * r.damping:g} % damping. Target Sa(T1) = {r.target_g[j]:.4f} g; mean "
-        f"scaled Sa(T1) = {r.mean[j]:.4f} g, dispersion (σ ln Sa) {r.dispersion[j]:.3f}; "
-        f"mean / target over the range: lowest {ratio[k]:.3f} at {r.periods[k]:.3g} s. "
-        f"Factors outside {r.limits[0]:g}–{r.limits[1]:g}: {int(r.flagged.sum())}.")
-    console.print(table)
+    print_table(console, f"{suite.name}: {len(r.records)} records scaled to {r.target.name}",
+                [Col("record", "left", wrap=True), Col("PGA [g]"), Col("Sa(T1) [g]"),
+                 Col("factor", wrap=True), Col("scaled PGA [g]"), Col("scaled Sa(T1) [g]")],
+                rows, caption=(
+                    f"{_method_text(r)}; T1 = {r.period:g} s, range {lo:.3g}–{hi:.3g} s, "
+                    f"{100 * r.damping:g} % damping. Target Sa(T1) = {r.target_g[j]:.4f} g; "
+                    f"mean scaled Sa(T1) = {r.mean[j]:.4f} g, dispersion (σ ln Sa) "
+                    f"{r.dispersion[j]:.3f}; mean / target over the range: lowest "
+                    f"{ratio[k]:.3f} at {r.periods[k]:.3g} s. Factors outside "
+                    f"{r.limits[0]:g}–{r.limits[1]:g}: {int(r.flagged.sum())}."))
     for s in suite.skipped:
         console.print(f"skipped: {s.reason}", highlight=False, markup=False)

@@ -40,7 +40,7 @@ def _mm(value: float) -> str:
 
 
 def print_run_summary(out: Any) -> None:
-    """Print the tables of a finished run (``out``: :class:`pounding.run.RunOutput`)."""
+    """Print the tables of a finished run (``out``: :class:`pounding.RunOutput`)."""
     r = out.result
     model = r.model
     s = r.summary()

@@ -27,22 +27,68 @@ One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.bui
 number its unit and range, :mod:`~pounding.config.errors` turns validation errors into those
 lines, :mod:`~pounding.config.plausibility` finds inputs probably in the wrong unit, and
 :mod:`~pounding.config.toml` writes a model file back.
+
+Names are imported on first use (PEP 562): importing one module of the package (say
+:mod:`pounding.config.base`, for a study file's sections) loads only what that module
+needs.
 """
 
-from pounding.config.building import BuildingConfig, DampingConfig, StoreyLawConfig
-from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
-from pounding.config.errors import format_validation_error
-from pounding.config.record import EL_CENTRO_ALIASES, RecordConfig
-from pounding.config.run import (
-    SWEEP_CASE_TABLES,
-    Built,
-    OutputConfig,
-    RunConfig,
-    SolverConfig,
-    load_config,
-    parse_config,
-)
-from pounding.config.toml import dump_toml
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+_EXPORTS: dict[str, str] = {
+    "BuildingConfig": "pounding.config.building",
+    "DampingConfig": "pounding.config.building",
+    "StoreyLawConfig": "pounding.config.building",
+    "CONTACT_COMMON": "pounding.config.contact",
+    "LAW_FIELDS": "pounding.config.contact",
+    "ContactConfig": "pounding.config.contact",
+    "format_validation_error": "pounding.config.errors",
+    "EL_CENTRO_ALIASES": "pounding.config.record",
+    "RecordConfig": "pounding.config.record",
+    "SWEEP_CASE_TABLES": "pounding.config.run",
+    "Built": "pounding.config.run",
+    "OutputConfig": "pounding.config.run",
+    "RunConfig": "pounding.config.run",
+    "SolverConfig": "pounding.config.run",
+    "load_config": "pounding.config.run",
+    "parse_config": "pounding.config.run",
+    "dump_toml": "pounding.config.toml",
+}
+"""Public name → the module that defines it."""
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name from its module on first use (PEP 562)."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pounding.config' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # later look-ups do not come back here
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))
+
+
+if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.config.building import BuildingConfig, DampingConfig, StoreyLawConfig
+    from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
+    from pounding.config.errors import format_validation_error
+    from pounding.config.record import EL_CENTRO_ALIASES, RecordConfig
+    from pounding.config.run import (
+        SWEEP_CASE_TABLES,
+        Built,
+        OutputConfig,
+        RunConfig,
+        SolverConfig,
+        load_config,
+        parse_config,
+    )
+    from pounding.config.toml import dump_toml
 
 __all__ = [
     "BuildingConfig",

@@ -20,6 +20,7 @@ from pounding.ground_motion import (
     read_record,
 )
 from pounding.ground_motion.incidence import at_incidence
+from pounding.ground_motion.readers import UNIT_NAMES, needs_units
 from pounding.memo import Memo
 
 EL_CENTRO_ALIASES: tuple[str, ...] = ("el_centro", "elcentro", "el-centro")
@@ -30,10 +31,19 @@ SA_DAMPING = 0.05
 
 @functools.lru_cache(maxsize=32)
 def _read_record_cached(path: Path, version: tuple[int, int] | None, dt: float | None,
-                        units: str | None) -> GroundMotion:
+                        units: str | None, column: int | None = None,
+                        time_column: int | None = None,
+                        channel: int | None = None) -> GroundMotion:
     """:func:`read_record`, remembered per file version (modification time and size), so a
     sweep reading one record for thousands of cases parses it once per process."""
-    return read_record(path, dt=dt, units=units)
+    return read_record(path, dt=dt, units=units, column=column, time_column=time_column,
+                       channel=channel)
+
+
+@functools.lru_cache(maxsize=32)
+def _needs_units(path: Path, version: tuple[int, int] | None) -> bool:
+    """:func:`needs_units`, remembered per file version (a sweep validates every case)."""
+    return needs_units(path)
 
 
 @functools.lru_cache(maxsize=1)
@@ -52,9 +62,14 @@ class RecordConfig(Section):
 
     Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
     relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
-    them. Then, in this order: ``duration`` [s] keeps the record up to that time, and at
-    most one of ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor
-    reversing the record's polarity), ``pga_g`` [g] (scales it to that peak) and
+    them; a plain-text record states no unit, so it needs ``units`` (none is assumed).
+    ``column`` and ``time_column`` (from 1; ``time_column = 0``: none) choose the columns of
+    a plain-text ``file`` of several (``t, NS, EW, V``), and ``channel`` (from 1) the
+    acceleration channel of a COSMOS ``file`` of several
+    (:func:`pounding.ground_motion.read_record`). Then,
+    in this order: ``duration`` [s] keeps the record up to that time, and at most one of
+    ``scale`` [-] (multiplies it: in [-1000, 1000] and not 0, a negative factor reversing
+    the record's polarity), ``pga_g`` [g] (scales it to that peak) and
     ``sa_g`` [g] with ``sa_period`` [s] (scales it so that its pseudo-acceleration at that
     period and ``sa_damping``, default 0.05, is ``sa_g``: the intensity measure Sa(T1) of an
     incremental dynamic analysis; :func:`pounding.spectra.scale_to_sa`), or ``saavg_g`` [g]
@@ -80,6 +95,9 @@ class RecordConfig(Section):
     file: str | None = None
     dt: Step | None = None
     units: str | None = None
+    column: Annotated[int, Field(ge=1, le=10_000, strict=True)] | None = None
+    time_column: Annotated[int, Field(ge=0, le=10_000, strict=True)] | None = None
+    channel: Annotated[int, Field(ge=1, le=10_000, strict=True)] | None = None
     duration: Duration | None = None
     scale: Scale | None = None
     pga_g: Intensity | None = None
@@ -148,11 +166,24 @@ class RecordConfig(Section):
                 if getattr(self, key) is not None:
                     raise field_error(key, f"only for record files; a bundled record states "
                                             f"its own (got {fmt(getattr(self, key))})")
+        if self.bundled is not None:
+            for key in ("column", "time_column", "channel"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"only with file = ...: it chooses what a record "
+                                            f"file of several series is read for (got "
+                                            f"{fmt(getattr(self, key))})")
         base = Path((info.context or {}).get("base_dir", "."))
         for key in ("file", "second_file"):
             if getattr(self, key) is not None:
-                setattr(self, f"_{'' if key == 'file' else 'second_'}path",
-                        _record_file(base, key, getattr(self, key)))
+                path = _record_file(base, key, getattr(self, key))
+                setattr(self, f"_{'' if key == 'file' else 'second_'}path", path)
+                if self.units is None and _needs_units(path, _version(path)):
+                    # a text record states no unit, and none is assumed: El Centro in g
+                    # read as m/s2 would shake the model ten times too weakly
+                    raise field_error("units", f"{key} = {getattr(self, key)!r} is a plain-"
+                                               "text record, which does not state its "
+                                               "acceleration unit; give units = \"g\" (or "
+                                               f"{UNIT_NAMES.removeprefix('g, ')})")
         return self
 
     @property
@@ -232,7 +263,8 @@ class RecordConfig(Section):
         if self.bundled is not None:
             gm = _bundled(self.bundled)
         else:
-            gm = _read_record_cached(path, version, self.dt, self.units)
+            gm = _read_record_cached(path, version, self.dt, self.units, self.column,
+                                     self.time_column, self.channel)
         if self.duration is not None:
             gm = gm.trimmed(self.duration)
         unscaled = gm

@@ -13,21 +13,25 @@ concept a module:
 * :mod:`~pounding.ground_motion.readers` -- the file readers, one module a format:
   :func:`read_at2` (PEER strong-motion ``.AT2`` files, every header variant in common use),
   :func:`read_knet` (NIED's K-NET and KiK-net ASCII files), :func:`read_cosmos` (COSMOS
-  Volume 1 and 2 files), :func:`read_text` (plain one-column, with ``dt``, or two-column
-  time/acceleration text) and :func:`read_record` (any of the above, chosen by suffix and
-  content; any other file is refused in one line naming the formats read);
+  Volume 1 and 2 files), :func:`read_text` (plain one-column, with ``dt``, two-column
+  time/acceleration, or several-column text read for its ``column``, which states no unit:
+  ``units`` is required) and
+  :func:`read_record` (any of the above, chosen by suffix and content; any other file is
+  refused in one line naming it, its size and the formats read);
 * :mod:`~pounding.ground_motion.bundled` -- :func:`el_centro`, :func:`load_bundled`,
   :func:`bundled_files`, :func:`bundled_records`, :func:`bundled_companion`: the twelve
-  records shipped in ``pounding/data/records``, ten of them the bundled suite and two a pair
-  of orthogonal horizontal components of one station (see its ``SOURCES.md`` for their
-  provenance);
+  records shipped in ``pounding/data/records``, nine of them the bundled suite (nine
+  stations, eight earthquakes), a second digitisation of El Centro N–S kept out of it, and
+  two a pair of orthogonal horizontal components of one station (see its ``SOURCES.md`` for
+  their provenance);
 * :mod:`~pounding.ground_motion.suite` -- :class:`RecordSuite`, an ordered, named
   collection of records (from a folder, a list of files or :func:`bundled_suite`), and
   :func:`read_suite`;
 * :mod:`~pounding.ground_motion.synthetic` -- :func:`harmonic`, :func:`sine_pulse`,
   :func:`ricker`: closed-form inputs for tests.
 
-Every reader raises :class:`ValueError` naming the file, the line and the bad value. See
+Every reader raises :class:`ValueError` naming the file, the line and the problem, never
+showing the file's text (a file given as a record may be anything). See
 ``docs/ground_motion.md``.
 """
 

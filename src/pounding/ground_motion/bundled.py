@@ -55,8 +55,9 @@ def _manifest() -> tuple[dict[str, Any], ...]:
 
 def bundled_files() -> list[str]:
     """File names of every bundled record, in manifest order: the bundled suite's
-    (:func:`bundled_records`), then those kept out of it (the Düzce pair of orthogonal
-    components). Provenance in ``pounding/data/records/SOURCES.md``."""
+    (:func:`bundled_records`), then those kept out of it (the Peknold digitisation of El
+    Centro N–S, a second copy of the first record's motion, and the Düzce pair of
+    orthogonal components). Provenance in ``pounding/data/records/SOURCES.md``."""
     return [entry["file"] for entry in _manifest()]
 
 

@@ -20,6 +20,7 @@ from typing import NamedTuple, overload
 from pounding.ground_motion.bundled import bundled_folder, bundled_records, load_bundled
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.dispatch import read_record
+from pounding.ground_motion.readers.units import UnitsRequired
 
 __all__ = ["RecordSuite", "SkippedFile", "bundled_suite", "read_suite"]
 
@@ -116,11 +117,14 @@ class RecordSuite:
     # ------------------------------------------------------------------ construction
     @classmethod
     def from_paths(cls, paths: Sequence[str | os.PathLike[str]], *, dt: float | None = None,
-                   units: str | None = None, name: str = "records") -> RecordSuite:
+                   units: str | None = None, name: str = "records",
+                   column: int | None = None, time_column: int | None = None,
+                   channel: int | None = None) -> RecordSuite:
         """The records of ``paths``, in that order; each must read.
 
-        ``dt`` and ``units`` are for files that do not state them, as in
-        :func:`~pounding.ground_motion.readers.read_record`.
+        ``dt`` and ``units`` are for files that do not state them, and ``column``,
+        ``time_column`` (plain text) and ``channel`` (COSMOS) choose what a file of several
+        series is read for, as in :func:`~pounding.ground_motion.readers.read_record`.
 
         Raises
         ------
@@ -133,17 +137,22 @@ class RecordSuite:
             paths = [paths]
         if not paths:
             raise ValueError(f"record suite {name!r}: no record files given")
-        return cls(name, tuple(read_record(p, dt=dt, units=units) for p in paths),
+        return cls(name, tuple(read_record(p, dt=dt, units=units, column=column,
+                                           time_column=time_column, channel=channel)
+                               for p in paths),
                    tuple(str(p) for p in paths))
 
     @classmethod
     def from_folder(cls, folder: str | os.PathLike[str], *, dt: float | None = None,
-                    units: str | None = None, name: str | None = None) -> RecordSuite:
+                    units: str | None = None, name: str | None = None,
+                    column: int | None = None, time_column: int | None = None,
+                    channel: int | None = None) -> RecordSuite:
         """Every readable record file in ``folder`` (not its subfolders), by file name.
 
         Hidden files (names starting with ``.``) are passed over; a file that does not read
         is kept in :attr:`skipped` with the reader's message. ``dt`` and ``units`` apply to
-        every file that does not state them.
+        every file that does not state them; a plain-text record read without ``units`` is
+        an error (:class:`~pounding.ground_motion.readers.UnitsRequired`), not skipped.
 
         Parameters
         ----------
@@ -151,6 +160,9 @@ class RecordSuite:
             The folder.
         dt, units : optional
             As in :func:`~pounding.ground_motion.readers.read_record`.
+        column, time_column, channel : int, optional
+            As in :func:`~pounding.ground_motion.readers.read_record`, for every file: a file
+            of a format they are not for is skipped, with the reason.
         name : str, optional
             The suite's name; default the folder's name.
 
@@ -174,7 +186,10 @@ class RecordSuite:
         skipped: list[SkippedFile] = []
         for p in files:
             try:
-                motions.append(read_record(p, dt=dt, units=units))
+                motions.append(read_record(p, dt=dt, units=units, column=column,
+                                           time_column=time_column, channel=channel))
+            except UnitsRequired:
+                raise  # a record, that needs the units of the folder's text files
             except (ValueError, OSError) as exc:
                 skipped.append(SkippedFile(str(p), str(exc)))
                 continue
@@ -189,8 +204,9 @@ class RecordSuite:
 
 
 def bundled_suite() -> RecordSuite:
-    """The bundled suite: the ten real records of :func:`bundled_records` (every record
-    shipped with pounding but the Düzce pair of orthogonal components), named
+    """The bundled suite: the nine real records of :func:`bundled_records` (every record
+    shipped with pounding but the Düzce pair of orthogonal components and the Peknold
+    digitisation of El Centro N–S, a second copy of the first record's motion), named
     ``"bundled"``, in the order of ``pounding/data/records/records.toml`` (provenance in
     SOURCES.md beside it and in each record's ``metadata["provenance"]``).
 
@@ -202,7 +218,9 @@ def bundled_suite() -> RecordSuite:
 
 
 def read_suite(source: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], *,
-               dt: float | None = None, units: str | None = None) -> RecordSuite:
+               dt: float | None = None, units: str | None = None,
+               column: int | None = None, time_column: int | None = None,
+               channel: int | None = None) -> RecordSuite:
     """A record suite from ``"bundled"`` (:func:`bundled_suite`), a folder
     (:meth:`RecordSuite.from_folder`), a record file or a list of them
     (:meth:`RecordSuite.from_paths`).
@@ -210,17 +228,24 @@ def read_suite(source: str | os.PathLike[str] | Sequence[str | os.PathLike[str]]
     Raises
     ------
     ValueError
-        As the constructor it calls; also for ``dt``/``units`` with the bundled suite, whose
-        files state their own.
+        As the constructor it calls; also for ``dt``, ``units``, ``column``,
+        ``time_column`` or ``channel`` with the bundled suite, whose files state their own.
     """
     if isinstance(source, str) and source == BUNDLED:
-        if dt is not None or units is not None:
-            raise ValueError("record suite 'bundled': dt and units are for record files; the "
+        given = [k for k, v in {"dt": dt, "units": units, "column": column,
+                                "time_column": time_column, "channel": channel}.items()
+                 if v is not None]
+        if given:
+            raise ValueError(f"record suite 'bundled': {' and '.join(given)} "
+                             f"{'is' if len(given) == 1 else 'are'} for record files; the "
                              "bundled records state their own")
         return bundled_suite()
     if isinstance(source, (str, os.PathLike)):
         path = Path(source)
         if path.is_dir():
-            return RecordSuite.from_folder(path, dt=dt, units=units)
-        return RecordSuite.from_paths([path], dt=dt, units=units, name=path.stem)
-    return RecordSuite.from_paths(source, dt=dt, units=units)
+            return RecordSuite.from_folder(path, dt=dt, units=units, column=column,
+                                           time_column=time_column, channel=channel)
+        return RecordSuite.from_paths([path], dt=dt, units=units, name=path.stem,
+                                      column=column, time_column=time_column, channel=channel)
+    return RecordSuite.from_paths(source, dt=dt, units=units, column=column,
+                                  time_column=time_column, channel=channel)

@@ -344,53 +344,67 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 break
             # which event fired first?
             fired = [(float(te[0]), k) for k, te in enumerate(sol.t_events) if len(te)]
-            _, kev = min(fired)
-            y = sol.y_events[kev][0].copy()
-            events += 1
-            tag = evs[kev].tag
-            if tag[0] == "link":
-                pass  # (a fluid damper's rate changed sign: the step restarts there)
-            elif tag[0] == "yield":
-                yld[tag[1]] = tag[2]
-            elif tag[0] == "unload":
-                yld[tag[1]] = 0
-            elif tag[0] == "release":
-                # the clipped force reaches zero (the impact ends there: end time and
-                # restitution) or rises from it again (the impact goes on)
-                c = tag[1]
-                released[c] = not released[c]
-                row = impacts[open_row[c]]
-                row[2] = t if released[c] else np.nan
-                row[7] = max(-kin(y, c)[1], 0.0) / v0s[c] if released[c] else np.nan
-            elif tag[0] == "gap" and v0s[tag[1]] == 0.0:
-                c = tag[1]
-                d, rate = kin(y, c)
-                v0s[c] = max(rate, V0_MIN)  # contract step 3: the closing velocity
-                slips[c] = 0.0
-                phase[c] = 1
-                f0 = contact_force(laws[c], d, rate, v0s[c], 0.0)[0]
-                impacts.append([c, t, np.nan, v0s[c], f0, t, 0.0, np.nan, np.nan])
-                open_row[c] = len(impacts) - 1
-                w_start[c] = y[i_e + 4 + c]
-            elif tag[0] == "gap":
-                c = tag[1]
-                d, rate = kin(y, c)
-                row = impacts[open_row[c]]
-                if np.isnan(row[2]):  # (not already ended by a release)
-                    row[2] = t
-                    row[7] = max(-rate, 0.0) / v0s[c]
-                row[8] = y[i_e + 4 + c] - w_start[c]
-                open_row[c] = -1
-                v0s[c] = 0.0
-                slips[c] = 0.0
-                phase[c] = 0
-                released[c] = False
-            else:
-                c = tag[1]
-                d, rate = kin(y, c)
-                slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
-                impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
-                phase[c] = -phase[c]
+            _, first = min(fired)
+            y_before = sol.y[:, 0]
+            y = sol.y_events[first][0].copy()
+            # A velocity that changes sign can end two things at one instant: the rate of a
+            # contact with a wall and the drift rate of the storey below the floor that
+            # strikes it are one velocity. solve_ivp stops at the first of two coincident
+            # events only, and at the restart the other's function is 0 ± round-off: on the
+            # wrong side of 0 its crossing would be missed (an isolator left on its yield
+            # branch while it unloads). So every rate event that was on its way to 0 and is
+            # there now (to 1e-12 of the velocity scale) is handled here too.
+            handled = [first] + [
+                k for k, ev in enumerate(evs)
+                if k != first and ev.tag[0] in ("rate", "unload", "link")
+                and abs(ev(t, y)) <= 1e-12 * v_scale
+                and np.sign(ev(t, y_before)) == -ev.direction]
+            for kev in handled:
+                events += 1
+                tag = evs[kev].tag
+                if tag[0] == "link":
+                    pass  # (a fluid damper's rate changed sign: the step restarts there)
+                elif tag[0] == "yield":
+                    yld[tag[1]] = tag[2]
+                elif tag[0] == "unload":
+                    yld[tag[1]] = 0
+                elif tag[0] == "release":
+                    # the clipped force reaches zero (the impact ends there: end time and
+                    # restitution) or rises from it again (the impact goes on)
+                    c = tag[1]
+                    released[c] = not released[c]
+                    row = impacts[open_row[c]]
+                    row[2] = t if released[c] else np.nan
+                    row[7] = max(-kin(y, c)[1], 0.0) / v0s[c] if released[c] else np.nan
+                elif tag[0] == "gap" and v0s[tag[1]] == 0.0:
+                    c = tag[1]
+                    d, rate = kin(y, c)
+                    v0s[c] = max(rate, V0_MIN)  # contract step 3: the closing velocity
+                    slips[c] = 0.0
+                    phase[c] = 1
+                    f0 = contact_force(laws[c], d, rate, v0s[c], 0.0)[0]
+                    impacts.append([c, t, np.nan, v0s[c], f0, t, 0.0, np.nan, np.nan])
+                    open_row[c] = len(impacts) - 1
+                    w_start[c] = y[i_e + 4 + c]
+                elif tag[0] == "gap":
+                    c = tag[1]
+                    d, rate = kin(y, c)
+                    row = impacts[open_row[c]]
+                    if np.isnan(row[2]):  # (not already ended by a release)
+                        row[2] = t
+                        row[7] = max(-rate, 0.0) / v0s[c]
+                    row[8] = y[i_e + 4 + c] - w_start[c]
+                    open_row[c] = -1
+                    v0s[c] = 0.0
+                    slips[c] = 0.0
+                    phase[c] = 0
+                    released[c] = False
+                else:
+                    c = tag[1]
+                    d, rate = kin(y, c)
+                    slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
+                    impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
+                    phase[c] = -phase[c]
             if t >= t1:
                 break
         # commit states of closed contacts at the interval end (contract step 4)

@@ -117,7 +117,7 @@ def write_report(results_dir: str | os.PathLike[str],
     folder = Path(results_dir)
     target = Path(out) if out is not None else folder / DEFAULT_NAME
     if target.is_dir():
-        raise ValueError(f"report: --out {target} is a folder; give a file name such as "
+        raise ValueError(f"report: --html {target} is a folder; give a file name such as "
                          f"{target / DEFAULT_NAME}")
     # pounding's own file in its folder: listed in the manifest, so replaceable by
     # --overwrite; a file of that name pounding did not write is refused before any work

@@ -18,7 +18,7 @@ import numpy as np
 
 from pounding.units import unit_of  # re-exported: the unit of a results column
 
-__all__ = ["Block", "Cards", "Figure", "Note", "Pre", "Section", "Table", "kv_table", "num",
+__all__ = ["Block", "Cards", "Figure", "Note", "Pre", "PageSection", "Table", "kv_table", "num",
            "png_bytes", "unit_of", "with_unit"]
 
 
@@ -144,7 +144,7 @@ Block = Table | Note | Figure | Cards | Pre
 
 
 @dataclass
-class Section:
+class PageSection:
     """A section of a page: its anchor ``id``, its heading, and its blocks in order."""
 
     id: str

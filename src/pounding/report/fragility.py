@@ -8,7 +8,7 @@ import json
 from pathlib import Path
 from typing import Any
 
-from pounding.report.format import Block, Cards, Figure, Note, Pre, Section, Table, kv_table
+from pounding.report.format import Block, Cards, Figure, Note, Pre, PageSection, Table, kv_table
 from pounding.report.page import render_page
 
 __all__ = ["FRAGILITY_FILE", "render_fragility"]
@@ -57,16 +57,16 @@ def render_fragility(folder: Path) -> str:
         raise ValueError(f"report: {path}: unreadable ({exc})") from None
     im = data["intensity"]["label"]
     gap = data["gap"]
-    sections = [Section("overview", "Study", _overview(data)),
-                Section("fragility", "Fragility of each limit state", _fragility(data, im)),
-                Section("gap", "Probability of pounding and the gap", _gap(data, im)),
-                Section("counts", "Counts at every stripe", _counts(data)),
-                Section("figures", "Figures", _figures(folder))]
+    sections = [PageSection("overview", "Study", _overview(data)),
+                PageSection("fragility", "Fragility of each limit state", _fragility(data, im)),
+                PageSection("gap", "Probability of pounding and the gap", _gap(data, im)),
+                PageSection("counts", "Counts at every stripe", _counts(data)),
+                PageSection("figures", "Figures", _figures(folder))]
     if data["runs"]["failed"]:
-        sections.insert(1, Section("failures", "Failed runs", [
+        sections.insert(1, PageSection("failures", "Failed runs", [
             Note(f"{data['runs']['failed']} run(s) failed; they are left out of the counts "
                  "and the fits.", "warn"), Pre("\n".join(data["runs"]["failures"]))]))
-    sections.append(Section("metadata", "fragility.json",
+    sections.append(PageSection("metadata", "fragility.json",
                             [Pre(json.dumps(data, indent=2), "the whole file")]))
     return render_page(f"{data['name']}: pounding fragility report",
                        f"{len(data['records'])} records × {len(data['levels_g'])} levels of "

@@ -15,7 +15,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pounding.report.format import Section, num
+from pounding.report.format import PageSection, num
 
 if TYPE_CHECKING:
     import jinja2
@@ -44,14 +44,14 @@ def _environment() -> jinja2.Environment:
     return env
 
 
-def render_page(title: str, subtitle: str, sections: Sequence[Section], folder: Path) -> str:
+def render_page(title: str, subtitle: str, sections: Sequence[PageSection], folder: Path) -> str:
     """The whole page: heading, a link to each section, the sections, and a footer.
 
     Parameters
     ----------
     title, subtitle : str
         The page's title (also its heading) and the line under it.
-    sections : sequence of Section
+    sections : sequence of PageSection
         The sections in order, each with its anchor, heading and blocks.
     folder : Path
         The results folder the page describes (named in the footer).

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pounding.report.format import Block, Cards, Note, Section, Table, kv_table, num
+from pounding.report.format import Block, Cards, Note, PageSection, Table, kv_table, num
 from pounding.report.page import render_page
 from pounding.report.run_checks import energy_section, gap_check_section
 from pounding.report.run_figures import figures_section
@@ -51,13 +51,13 @@ def render_run(folder: Path) -> str:
            + (f", PGA {pga:.3f} g" if isinstance(pga, (int, float)) else "")
            + f"; folder {folder.resolve().name}")
     sections = [
-        Section("summary", "Headline numbers", _headline_section(r)),
-        Section("model", "Model", model_section(r)),
-        Section("record", "Record", record_section(r)),
-        Section("figures", "Figures", figures_section(r)),
-        Section("impacts", "Impact table", _impacts_section(r)),
-        Section("energy", "Energy balance", energy_section(r)),
-        Section("gap-check", "Gap check", gap_check_section(r)),
+        PageSection("summary", "Headline numbers", _headline_section(r)),
+        PageSection("model", "Model", model_section(r)),
+        PageSection("record", "Record", record_section(r)),
+        PageSection("figures", "Figures", figures_section(r)),
+        PageSection("impacts", "Impact table", _impacts_section(r)),
+        PageSection("energy", "Energy balance", energy_section(r)),
+        PageSection("gap-check", "Gap check", gap_check_section(r)),
     ]
     return render_page(f"{name}: pounding run report", sub, sections, folder)
 

@@ -25,7 +25,11 @@ class RunFolder:
     summary: dict[str, Any]
     ds: Any  # xarray.Dataset, loaded into memory
     impacts: pd.DataFrame
+    """The impact table, columns named as :attr:`pounding.result.Result.impacts` (and
+    ``elevation``)."""
     impacts_units: str
+    """The ``#`` line of units of an older ``impacts.csv`` ("" for one whose column names
+    carry the units)."""
     toml_text: str | None
     toml: dict[str, Any]
     built: Any = None  # pounding.config.Built or None
@@ -61,10 +65,14 @@ def read_run(folder: Path) -> RunFolder:
     except (OSError, ValueError) as exc:
         raise ValueError(f"report: {folder / 'timehistories.nc'}: unreadable ({exc})") from None
 
+    from pounding.outputs import IMPACTS_CSV_COLUMNS
+
     impacts = pd.DataFrame()
     units = ""
     csv = folder / "impacts.csv"
     if csv.is_file():
+        # a folder written before the units went into the column names opens with a
+        # ``#`` line of units, and names its columns without them
         with csv.open(encoding="utf-8") as fh:
             first = fh.readline()
         skip = 1 if first.startswith("#") else 0
@@ -73,6 +81,7 @@ def read_run(folder: Path) -> RunFolder:
             impacts = pd.read_csv(csv, skiprows=skip)
         except pd.errors.EmptyDataError:
             impacts = pd.DataFrame()
+        impacts = impacts.rename(columns={v: k for k, v in IMPACTS_CSV_COLUMNS.items()})
     toml_text = None
     toml: dict[str, Any] = {}
     built = None
@@ -83,7 +92,9 @@ def read_run(folder: Path) -> RunFolder:
         try:
             toml = tomllib.loads(toml_text)
         except tomllib.TOMLDecodeError as exc:
-            build_error = f"model.toml is not valid TOML ({exc})"
+            from pounding.io import toml_error_text
+
+            build_error = f"model.toml is not valid TOML ({toml_error_text(exc)})"
         if build_error is None:
             from pounding.config import load_config
 

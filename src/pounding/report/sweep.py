@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from pounding.report.format import (Block, Figure, Note, Pre, Section, Table, kv_table, num,
+from pounding.report.format import (Block, Figure, Note, Pre, PageSection, Table, kv_table, num,
                                     png_bytes, unit_of)
 from pounding.report.page import render_page
 from pounding.report.sweep_folder import SweepFolder, is_numeric, read_sweep
@@ -41,13 +41,13 @@ def render_sweep(folder: Path) -> str:
                                       if isinstance(v, dict)]
     title = str(next((x for x in names if x), folder.resolve().name))
     sections = [
-        Section("overview", "Overview", _overview_section(sw)),
-        Section("grid", "Parameter grid", _grid_section(sw)),
-        Section("results", "Results", _results_section(sw)),
-        Section("plots", "Main measure against each parameter", _plots_section(sw)),
+        PageSection("overview", "Overview", _overview_section(sw)),
+        PageSection("grid", "Parameter grid", _grid_section(sw)),
+        PageSection("results", "Results", _results_section(sw)),
+        PageSection("plots", "Main measure against each parameter", _plots_section(sw)),
     ]
     if sw.meta:
-        sections.append(Section("metadata", "Sweep metadata",
+        sections.append(PageSection("metadata", "Sweep metadata",
                                 [Pre(json.dumps(sw.meta, indent=2, default=str))]))
     return render_page(f"{title}: pounding sweep report",
                        f"Sweep report — {n} case(s), {len(sw.parameters)} swept parameter(s); "

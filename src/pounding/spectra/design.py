@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -61,6 +62,10 @@ class DesignSpectrum:
         ``Sa(T)`` in ``units`` for an array of periods, where the spectrum is a code's
         closed form (:meth:`asce7`, :meth:`eurocode8`): then :meth:`sd` evaluates it
         exactly instead of interpolating the table (which is kept for plots and files).
+    corner_periods : array_like, optional
+        The periods [s] where the spectrum changes branch (a code's ``T0, T_S, T_L`` or
+        ``T_B, T_C, T_D``), given with a ``formula``. Default: every period of the table,
+        where a linearly interpolated table bends. See :attr:`corners`.
 
     Notes
     -----
@@ -75,6 +80,7 @@ class DesignSpectrum:
     units: str = "g"
     name: str = "design spectrum"
     formula: Callable[[FloatArray], FloatArray] | None = field(default=None, repr=False)
+    corner_periods: FloatArray | None = field(default=None, repr=False)
     _sd: FloatArray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -106,6 +112,17 @@ class DesignSpectrum:
         object.__setattr__(self, "values", v)
         object.__setattr__(self, "kind", kind)
         object.__setattr__(self, "_sd", sd)
+        if self.corner_periods is not None:
+            c = np.asarray(self.corner_periods, dtype=float).ravel()
+            object.__setattr__(self, "corner_periods", np.unique(c[(c >= t[0]) & (c <= t[-1])]))
+
+    @property
+    def corners(self) -> FloatArray:
+        """Periods [s] where the spectrum is not smooth: the corner periods of a code's
+        closed form, else every period of the table (linear interpolation bends there). A
+        minimum of a ratio to the spectrum can sit exactly there, between any two periods of
+        a grid that misses them."""
+        return self.periods if self.corner_periods is None else self.corner_periods
 
     def sd(self, period: ArrayLike) -> FloatArray | float:
         """Spectral displacement [m] at ``period`` [s].
@@ -165,6 +182,7 @@ class DesignSpectrum:
         t = t[t <= top]
         formula = functools.partial(_asce7_sa, sds=sds, sd1=sd1, tl=tl)
         return cls(t, formula(t), kind="Sa", units="g", formula=formula,
+                   corner_periods=np.array([t0, ts, tl]),
                    name=name or f"ASCE 7-16 (SDS={sds:g} g, SD1={sd1:g} g, TL={tl:g} s)")
 
     @classmethod
@@ -221,6 +239,7 @@ class DesignSpectrum:
         formula = functools.partial(_ec8_sa, ag=gi * agr, soil=soil, tb=tb, tc=tc, td=td,
                                     eta=eta)
         return cls(t, formula(t), kind="Sa", units="g", formula=formula,
+                   corner_periods=np.array([tb, tc, td]),
                    name=name or f"EN 1998-1 Type {kind}, ground {ground} (agR={agr:g} g, "
                                 f"γI={gi:g}, ζ={100 * zeta:g} %)")
 
@@ -251,8 +270,16 @@ class DesignSpectrum:
             return cls._from_csv(p)
         try:
             data = tomllib.loads(p.read_text(encoding="utf-8"))
-        except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-            raise ValueError(f"{p}: not a valid TOML spectrum file: {exc}") from None
+        except UnicodeDecodeError:
+            raise ValueError(f"{p}: not a TOML spectrum file (not UTF-8 text)") from None
+        except tomllib.TOMLDecodeError as exc:  # its message may quote the file: not shown
+            at = re.search(r"\((at line \d+, column \d+|at end of document)\)\s*$", str(exc))
+            raise ValueError(f"{p}: not a valid TOML spectrum file"
+                             + (f" ({at.group(1)})" if at else "")) from None
+        if not set(data) & {"asce7", "eurocode8", "kind", "periods", "values"}:
+            # none of the keys of a spectrum file: not one (its keys are not listed)
+            raise ValueError(f"{p}: not a spectrum file: it has none of the keys asce7, "
+                             "eurocode8 or kind, periods and values")
         name = str(data.get("name", p.stem))
         try:
             codes = [k for k in ("asce7", "eurocode8") if k in data]
@@ -313,9 +340,9 @@ class DesignSpectrum:
                              f"{', '.join(columns)})")
         head = [h.strip().lower() for h in rows[0]]
         found = [c for c in columns if c in head]
-        if "period_s" not in head or len(found) != 1:
-            raise ValueError(f"{p}: the header must name period_s and one of "
-                             f"{', '.join(columns)} (got {', '.join(rows[0])})")
+        if "period_s" not in head or len(found) != 1:  # the line itself is not shown
+            raise ValueError(f"{p}: the header (line {_first_line(p)}) must name the columns "
+                             f"period_s and one of {', '.join(columns)}")
         it, iv = head.index("period_s"), head.index(found[0])
         t, v = [], []
         for k, row in enumerate(rows[1:], start=2):
@@ -324,12 +351,21 @@ class DesignSpectrum:
                 v.append(float(row[iv]))
             except (ValueError, IndexError):
                 raise ValueError(f"{p}: data line {k - 1}: period_s and {found[0]} must be "
-                                 f"numbers (got {','.join(row)!r})") from None
+                                 "numbers") from None
         kind, units = columns[found[0]]
         try:
             return cls(np.asarray(t), np.asarray(v), kind=kind, units=units, name=p.stem)
         except ValueError as exc:
             raise ValueError(f"{p}: {exc}") from None
+
+
+def _first_line(p: Path) -> int:
+    """The number of the first line of ``p`` that is neither blank nor a ``#`` comment."""
+    with p.open(encoding="utf-8") as f:
+        for number, line in enumerate(f, start=1):
+            if line.strip() and not line.lstrip().startswith("#"):
+                return number
+    return 1
 
 
 def _asce7_sa(t: FloatArray, *, sds: float, sd1: float, tl: float) -> FloatArray:

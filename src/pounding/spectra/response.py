@@ -26,7 +26,7 @@ from numpy.typing import ArrayLike, NDArray
 from pounding.ground_motion.motion import GroundMotion
 from pounding.units import G
 
-__all__ = ["CSV_COLUMNS", "ResponseSpectrum", "check_damping", "check_periods",
+__all__ = ["CSV_COLUMNS", "PERIOD_RANGE", "ResponseSpectrum", "check_damping", "check_periods",
            "default_periods", "parse_damping", "parse_periods", "response_spectrum", "to_csv"]
 
 FloatArray = NDArray[np.float64]
@@ -55,16 +55,32 @@ def _checked(values: ArrayLike, name: str, what: str, ok: Any, rule: str) -> Flo
     return x
 
 
+PERIOD_RANGE: tuple[float, float] = (1e-9, 1e9)
+"""Periods [s] a spectrum is computed at, both ends included. The kernel is exact to
+round-off over all of it (:mod:`pounding.spectra._kernel`): at the short end the oscillator
+follows the ground (PSA → PGA with damping), at the long end it stays put while the ground
+moves (Sd → the peak ground displacement of the record linear between samples); beyond,
+nothing changes but the risk of a period typed in the wrong unit."""
+
+
 def check_periods(periods: ArrayLike, name: str = "periods") -> FloatArray:
-    """Periods [s] as a 1-D float array, each finite and > 0.
+    """Periods [s] as a 1-D float array, each finite and > 0, and within
+    :data:`PERIOD_RANGE`.
 
     Raises
     ------
     ValueError
         ``"<name>: every period must be finite and > 0 s (got <value>)"`` for the first bad
-        one.
+        one, or naming the first outside :data:`PERIOD_RANGE`.
     """
-    return _checked(periods, name, "period", lambda t: t > 0.0, "finite and > 0 s")
+    t = _checked(periods, name, "period", lambda t: t > 0.0, "finite and > 0 s")
+    lo, hi = PERIOD_RANGE
+    out = (t < lo) | (t > hi)
+    if np.any(out):
+        raise ValueError(f"{name}: every period must be from {lo:g} s to {hi:g} s (got "
+                         f"{t[out][0]:g}): beyond, the oscillator follows the ground or "
+                         "stays put and its response no longer changes")
+    return t
 
 
 def check_damping(damping: ArrayLike, name: str = "damping") -> FloatArray:
@@ -178,10 +194,11 @@ class ResponseSpectrum:
         return out
 
 
-def csv_text(comment: str, columns: tuple[str, ...], rows: list[tuple[Any, ...]]) -> str:
-    """CSV text: ``# comment``, the column names, then the rows (numbers to 10 digits)."""
+def csv_text(columns: tuple[str, ...], rows: list[tuple[Any, ...]]) -> str:
+    """CSV text: the column names (each with its unit: ``period_s``, ``psa_g``), then the
+    rows (numbers to 10 digits); no comment line, so pandas, Excel and R read it with
+    their defaults."""
     buf = io.StringIO()
-    buf.write(f"# {comment}\n")
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(columns)
     for row in rows:
@@ -190,10 +207,10 @@ def csv_text(comment: str, columns: tuple[str, ...], rows: list[tuple[Any, ...]]
 
 
 def to_csv(spectra: list[ResponseSpectrum]) -> str:
-    """CSV text of several spectra: a ``#`` line with the units, then :data:`CSV_COLUMNS`."""
-    return csv_text("damping as a fraction of critical; period_s [s]; sd_m [m]; psv_m_s "
-                    "[m/s]; psa_g, sa_abs_g [g = 9.80665 m/s2]", CSV_COLUMNS,
-                    [row for spec in spectra for row in spec.rows()])
+    """CSV text of several spectra, :data:`CSV_COLUMNS`: damping as a fraction of critical,
+    ``period_s`` [s], ``sd_m`` [m], ``psv_m_s`` [m/s], ``psa_g``, ``sa_abs_g`` [g =
+    9.80665 m/s²]."""
+    return csv_text(CSV_COLUMNS, [row for spec in spectra for row in spec.rows()])
 
 
 def response_spectrum(motion: GroundMotion, periods: ArrayLike | None = None,
@@ -202,7 +219,9 @@ def response_spectrum(motion: GroundMotion, periods: ArrayLike | None = None,
 
     Exact for a record that is linear between samples (Nigam & Jennings 1969), with the
     oscillator at rest at the first sample and the peaks located inside the steps
-    (``docs/spectra.md``); the response is followed over the record's duration only.
+    (``docs/spectra.md``); the response is followed over the record's duration only. Exact
+    at every period of :data:`PERIOD_RANGE`, far below the step (PSA → PGA) and far above
+    the duration (Sd → the peak ground displacement).
 
     Parameters
     ----------
@@ -222,7 +241,8 @@ def response_spectrum(motion: GroundMotion, periods: ArrayLike | None = None,
     Raises
     ------
     ValueError
-        For a period ≤ 0 or a damping ratio outside [0, 1), naming it.
+        For a period ≤ 0 or outside :data:`PERIOD_RANGE`, or a damping ratio outside
+        [0, 1), naming it.
     """
     t = default_periods() if periods is None else check_periods(periods)
     z = check_damping(damping)

@@ -32,9 +32,13 @@ from pounding.spectra.response import (
 from pounding.units import G
 from pounding.validation import in_range
 
-__all__ = ["CSV_COLUMNS", "RotDSpectrum", "rotd_spectrum", "to_csv"]
+__all__ = ["CSV_COLUMNS", "MIN_ANGLE_STEP", "RotDSpectrum", "rotd_spectrum", "to_csv"]
 
 FloatArray = NDArray[np.float64]
+
+MIN_ANGLE_STEP = 0.01
+"""Smallest azimuth increment [°]: 18,000 azimuths, a hundred times Boore's (2010) 1°; a
+finer one only allocates (an increment of 1e-9° would be 1.8e11 azimuths a period)."""
 
 CSV_COLUMNS = ("record", "measure", "damping", "period_s", "sd_m", "psv_m_s", "psa_g")
 """Columns of :func:`to_csv`; ``measure`` is H1, H2, GeoMean, RotD50 or RotD100."""
@@ -123,11 +127,10 @@ class RotDSpectrum:
 
 
 def to_csv(spectra: list[RotDSpectrum]) -> str:
-    """CSV text of several pairs: a ``#`` line with the units, then :data:`CSV_COLUMNS`."""
-    return csv_text("measure: H1, H2 as recorded, GeoMean = sqrt(H1 H2), RotD50/RotD100 "
-                    "(Boore 2010); damping as a fraction of critical; period_s [s]; sd_m [m]; "
-                    "psv_m_s [m/s]; psa_g [g = 9.80665 m/s2]", CSV_COLUMNS,
-                    [row for spec in spectra for row in spec.rows()])
+    """CSV text of several pairs, :data:`CSV_COLUMNS`: ``measure`` H1, H2 as recorded,
+    GeoMean = sqrt(H1 H2), RotD50/RotD100 (Boore 2010); damping as a fraction of critical,
+    ``period_s`` [s], ``sd_m`` [m], ``psv_m_s`` [m/s], ``psa_g`` [g = 9.80665 m/s²]."""
+    return csv_text(CSV_COLUMNS, [row for spec in spectra for row in spec.rows()])
 
 
 def rotd_spectrum(motion1: GroundMotion, motion2: GroundMotion,
@@ -145,8 +148,8 @@ def rotd_spectrum(motion1: GroundMotion, motion2: GroundMotion,
     damping : float or array_like
         Damping ratio(s), each in [0, 1) (default 0.05).
     angle_step : float
-        Azimuth increment [°]; 180 must be a whole multiple of it (default 1°, as Boore
-        2010).
+        Azimuth increment [°], from :data:`MIN_ANGLE_STEP` to 90; 180 must be a whole
+        multiple of it (default 1°, as Boore 2010).
 
     Returns
     -------
@@ -166,7 +169,7 @@ def rotd_spectrum(motion1: GroundMotion, motion2: GroundMotion,
                          f"of samples (got {motion1.npts} × {motion1.dt:g} s for "
                          f"{motion1.name!r}, {motion2.npts} × {motion2.dt:g} s for "
                          f"{motion2.name!r})")
-    step = in_range("angle_step", angle_step, 0.0, 90.0, low_open=True)
+    step = in_range("angle_step", angle_step, MIN_ANGLE_STEP, 90.0)
     n_angles = round(180.0 / step)
     if not math.isclose(n_angles * step, 180.0, rel_tol=1e-12):
         raise ValueError(f"angle_step: 180 must be a whole multiple of it (got {step:g})")

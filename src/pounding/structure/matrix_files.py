@@ -53,37 +53,83 @@ def _shape(A: NDArray[Any]) -> str:
 
 
 # --------------------------------------------------------------------------- readers
+# No message here shows a file's text, nor an exception of the library that read it (which
+# may quote the file): a file given as a matrix may be anything. Sizes are checked from a
+# file's header before anything is allocated from them.
+MAX_TEXT_LINE: int = 64 * MAX_FLOORS
+"""Longest line of a text matrix file [characters]: a row of :data:`MAX_FLOORS` numbers
+written to 17 significant digits with their separators fits well within it."""
+
+
+def _too_large(path: Path, what: str, shape: tuple[int, ...]) -> ValueError:
+    dims = "×".join(str(int(d)) for d in shape)
+    return ValueError(f"{path}: {what} declares a {dims} array; a building's matrix is at most "
+                      f"{MAX_FLOORS}×{MAX_FLOORS} (one row and column per degree of freedom)")
+
+
+def _check_declared(path: Path, what: str, shape: tuple[int, ...]) -> None:
+    """Refuse a shape declared by a file's header that no building matrix can have, before
+    anything is allocated from it."""
+    dims = [int(d) for d in shape]
+    total = 1
+    for d in dims:
+        total *= d
+    if any(d > MAX_FLOORS for d in dims) or total > MAX_FLOORS * MAX_FLOORS:
+        raise _too_large(path, what, shape)
+
+
 def _read_text(path: Path) -> NDArray[np.float64]:
-    """Plain numbers, one matrix row a line, comma- or whitespace-separated; ``#`` comments."""
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except UnicodeDecodeError:
-        raise ValueError(f"{path}: not a text file (expected plain numbers, comma or "
-                         "whitespace separated)") from None
-    rows: list[list[float]] = []
+    """Plain numbers, one matrix row a line, comma- or whitespace-separated; ``#`` comments.
+
+    Read a line at a time: a line longer than :data:`MAX_TEXT_LINE` characters, or more
+    than :data:`MAX_FLOORS` rows, is refused before it is held whole.
+    """
+    rows: list[NDArray[np.float64]] = []
     first_line = 0
-    for lineno, line in enumerate(text.splitlines(), start=1):
-        body = line.split("#", 1)[0].strip()
-        if not body:
-            continue
-        fields = [f.strip() for f in body.split(",")] if "," in body else body.split()
-        row = []
-        for f in fields:
-            if not f:
-                raise ValueError(f"{path}: line {lineno} has an empty field between commas")
+    with path.open("rb") as f:
+        lineno = 0
+        while True:
+            raw = f.readline(MAX_TEXT_LINE + 1)
+            if not raw:
+                break
+            lineno += 1
+            if len(raw) > MAX_TEXT_LINE and not raw.endswith(b"\n"):
+                raise ValueError(f"{path}: line {lineno} is longer than {MAX_TEXT_LINE} "
+                                 "characters, more than a row of any building matrix holds")
             try:
-                row.append(float(f))
-            except ValueError:
-                raise ValueError(f"{path}: line {lineno}: {f!r} is not a number (the file "
-                                 "must hold plain numbers, comma or whitespace separated, "
-                                 "no header)") from None
-        if rows and len(row) != len(rows[0]):
-            raise ValueError(f"{path}: line {lineno} has {len(row)} numbers but line "
-                             f"{first_line} has {len(rows[0])}: every row of a matrix needs "
-                             "as many")
-        if not rows:
-            first_line = lineno
-        rows.append(row)
+                line = raw.decode("utf-8")
+            except UnicodeDecodeError:
+                raise ValueError(f"{path}: not a text file (expected plain numbers, comma or "
+                                 "whitespace separated)") from None
+            if lineno == 1:
+                line = line.removeprefix("\ufeff")
+            body = line.split("#", 1)[0].strip()
+            if not body:
+                continue
+            fields = [x.strip() for x in body.split(",")] if "," in body else body.split()
+            row = np.empty(len(fields))
+            for k, x in enumerate(fields):
+                if not x:
+                    raise ValueError(f"{path}: line {lineno} has an empty field between commas")
+                try:
+                    row[k] = float(x)
+                except ValueError:  # the text is never shown: the file may be anything
+                    place = "the line" if len(fields) == 1 else \
+                        f"item {k + 1} of {len(fields)} on the line"
+                    raise ValueError(f"{path}: line {lineno}: {place} is not a number (the "
+                                     "file must hold plain numbers, comma or whitespace "
+                                     "separated, no header)") from None
+            if rows and row.size != rows[0].size:
+                raise ValueError(f"{path}: line {lineno} has {row.size} numbers but line "
+                                 f"{first_line} has {rows[0].size}: every row of a matrix "
+                                 "needs as many")
+            if not rows:
+                first_line = lineno
+            rows.append(row)
+            if len(rows) > MAX_FLOORS:
+                raise ValueError(f"{path}: more than {MAX_FLOORS} rows (line {lineno}); a "
+                                 f"building's matrix is at most {MAX_FLOORS}×{MAX_FLOORS} (one "
+                                 "row and column per degree of freedom)")
     if not rows:
         raise ValueError(f"{path}: holds no numbers")
     return np.array(rows, dtype=np.float64)
@@ -97,50 +143,119 @@ def _numeric(arr: Any, path: Path, what: str) -> NDArray[np.float64]:
     return np.array(a, dtype=np.float64)
 
 
+def _npy_header(f: Any, path: Path, what: str, available: int) -> None:
+    """Read the ``.npy`` header at the start of the open binary stream ``f`` and refuse, in
+    one line, an array no building matrix can be or one the stream is too short to hold
+    (``available``: the bytes in the stream, header included)."""
+    from numpy.lib import format as npy_format
+
+    try:
+        version = npy_format.read_magic(f)
+        if version == (1, 0):
+            shape, _, dtype = npy_format.read_array_header_1_0(f)
+        else:  # 2.0, and 3.0, whose header differs only in its text encoding
+            shape, _, dtype = npy_format.read_array_header_2_0(f)
+    except (ValueError, OSError, EOFError, SyntaxError, TypeError):
+        raise ValueError(f"{path}: not a NumPy .npy file ({what} has no valid .npy header)"
+                         if what == "the file" else
+                         f"{path}: {what} is not a NumPy .npy array (no valid .npy header)"
+                         ) from None
+    _check_declared(path, f"{what}'s .npy header", tuple(shape))
+    count = 1
+    for d in shape:
+        count *= int(d)
+    need = count * dtype.itemsize
+    have = available - f.tell()
+    if dtype.hasobject:
+        raise ValueError(f"{path}: not a NumPy .npy file of numbers ({what} holds Python "
+                         "objects, which pounding does not load)")
+    if have < need:
+        dims = "×".join(str(int(d)) for d in shape) or "scalar"
+        raise ValueError(f"{path}: {what} is cut short: its header declares a {dims} "
+                         f"{dtype} array ({need} bytes) but {max(have, 0)} bytes follow it")
+
+
 def _read_npy(path: Path) -> NDArray[np.float64]:
+    import zipfile
+
+    if zipfile.is_zipfile(path):
+        raise ValueError(f"{path}: is an .npz archive, not an .npy array; name it .npz")
+    with path.open("rb") as f:
+        _npy_header(f, path, "the file", path.stat().st_size)
     try:
         arr = np.load(path, allow_pickle=False)
-    except (OSError, ValueError, EOFError) as exc:
-        raise ValueError(f"{path}: not a NumPy .npy file ({exc})") from None
-    if isinstance(arr, np.lib.npyio.NpzFile):
-        arr.close()
-        raise ValueError(f"{path}: is an .npz archive, not an .npy array; name it .npz")
+    except (OSError, ValueError, EOFError):
+        raise ValueError(f"{path}: not a NumPy .npy file (its array cannot be read)") from None
     return _numeric(arr, path, "the array")
 
 
 def _read_npz(path: Path, name: str) -> NDArray[np.float64]:
+    import zipfile
+
+    if not zipfile.is_zipfile(path):
+        with path.open("rb") as f:
+            if f.read(6) == b"\x93NUMPY":
+                raise ValueError(f"{path}: is a single .npy array, not an .npz archive; name "
+                                 "it .npy")
+        raise ValueError(f"{path}: not a NumPy .npz archive (not a zip archive)")
     try:
         archive = np.load(path, allow_pickle=False)
-    except (OSError, ValueError, EOFError) as exc:
-        raise ValueError(f"{path}: not a NumPy .npz archive ({exc})") from None
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile):
+        raise ValueError(f"{path}: not a NumPy .npz archive (it cannot be opened)") from None
     if not isinstance(archive, np.lib.npyio.NpzFile):
         raise ValueError(f"{path}: is a single .npy array, not an .npz archive; name it .npy")
     with archive:
+        members = archive.zip.namelist()
+        if not all(m.endswith(".npy") for m in members):
+            # a zip archive of other files: its member names are not shown either
+            raise ValueError(f"{path}: a zip archive that is not a NumPy .npz archive (not "
+                             "every member is an .npy array)")
         if name not in archive.files:
             held = ", ".join(archive.files) or "nothing"
             raise ValueError(f"{path}: has no array {name!r} (it holds {held}); a building's "
                              ".npz holds M, K and optionally C")
+        info = archive.zip.getinfo(name + ".npy")
+        with archive.zip.open(info) as member:
+            _npy_header(member, path, f"array {name!r}", info.file_size)
         try:
             arr = archive[name]
-        except (OSError, ValueError) as exc:
-            raise ValueError(f"{path}: array {name!r} cannot be read ({exc})") from None
+        except (OSError, ValueError, EOFError, zipfile.BadZipFile):
+            raise ValueError(f"{path}: array {name!r} cannot be read") from None
         return _numeric(arr, path, f"array {name!r}")
+
+
+_MTX_SMALLEST_ENTRY = 6
+"""Fewest bytes an entry line of a coordinate Matrix Market file takes (``1 1 1`` and its
+line end); an array entry takes at least 2."""
 
 
 def _read_mtx(path: Path) -> NDArray[np.float64]:
     import scipy.io  # only when a Matrix Market file is read
 
     try:
-        info = scipy.io.mminfo(path)
-    except (OSError, ValueError, IndexError) as exc:
-        raise ValueError(f"{path}: not a Matrix Market file ({exc})") from None
-    fld = str(info[4]).lower()
+        rows, cols, entries, layout, fld, _ = scipy.io.mminfo(path)
+    except (OSError, ValueError, IndexError, TypeError):  # scipy's message quotes the file
+        raise ValueError(f"{path}: not a Matrix Market file (no valid '%%MatrixMarket' "
+                         "banner and size line)") from None
+    fld = str(fld).lower()
     if fld not in ("real", "integer", "double"):
         raise ValueError(f"{path}: Matrix Market field is {fld!r}; expected real or integer")
+    _check_declared(path, "its Matrix Market size line", (int(rows), int(cols)))
+    size = path.stat().st_size
+    coordinate = str(layout).lower() == "coordinate"
+    declared = int(entries) if coordinate else int(rows) * int(cols)
+    if coordinate and declared > int(rows) * int(cols):
+        raise ValueError(f"{path}: its Matrix Market size line declares {declared} entries, "
+                         f"more than a {rows}×{cols} matrix has")
+    smallest = _MTX_SMALLEST_ENTRY if coordinate else 2
+    if declared * smallest > size:
+        raise ValueError(f"{path}: its Matrix Market size line declares {declared} entries but "
+                         f"the file is only {size} bytes long")
     try:
         arr = scipy.io.mmread(path)
-    except (OSError, ValueError, IndexError) as exc:
-        raise ValueError(f"{path}: cannot be read as Matrix Market ({exc})") from None
+    except (OSError, ValueError, IndexError, TypeError):
+        raise ValueError(f"{path}: cannot be read as Matrix Market (its entries do not match "
+                         "its header)") from None
     if hasattr(arr, "toarray"):
         arr = arr.toarray()
     return _numeric(arr, path, "the matrix")
@@ -169,7 +284,10 @@ def read_matrix(path: StrPath, name: str = "M") -> NDArray[np.float64]:
     ------
     ValueError
         One line naming the file and the problem: missing file, unknown suffix, a line that is
-        not numbers, ragged rows, not 2-D, not square, not finite, not symmetric.
+        not numbers, ragged rows, a size declared in the header beyond
+        :data:`~pounding.structure.shear_building.MAX_FLOORS` degrees of freedom (refused
+        before anything is allocated), not 2-D, not square, not finite, not symmetric. No
+        message shows the file's text.
     """
     p = Path(path)
     fmt = MATRIX_FORMATS.get(p.suffix.lower())
@@ -177,7 +295,9 @@ def read_matrix(path: StrPath, name: str = "M") -> NDArray[np.float64]:
         known = ", ".join(MATRIX_FORMATS)
         raise ValueError(f"{p}: unknown matrix file type {p.suffix!r}; read are {known}")
     if not p.is_file():
-        raise ValueError(f"{p}: no such file")
+        raise ValueError(f"{p}: " + ("is a directory, not a matrix file" if p.is_dir() else
+                                     "not a regular file (a device, pipe or socket)"
+                                     if p.exists() else "no such file"))
     if fmt == "text":
         A = _read_text(p)
     elif fmt == "npy":

@@ -5,20 +5,30 @@
   (:func:`abs_sum`, :func:`srss`, :func:`ddc`, :func:`cqc_correlation`), from simulated
   peaks or a :class:`DesignSpectrum` (from :mod:`pounding.spectra`, re-exported here). See
   ``docs/gap.md``.
+* :mod:`pounding.studies.sweep` — parameter sweeps on Dask (``docs/sweep.md``).
+* :mod:`pounding.studies.fragility` — fragility curves from a record suite
+  (``docs/fragility.md``).
+* :mod:`pounding.studies.mitigation` — retrofit options compared (``docs/mitigation.md``).
+
+Names are imported on first use (PEP 562): importing a sub-package (say
+:mod:`pounding.studies.sweep.table`, to read a sweep's table) loads neither the gap study
+nor the model, SciPy or numba.
 """
 
-from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
-from pounding.studies.gap import (
-    RULES,
-    GapStudy,
-    abs_sum,
-    code_gaps,
-    cqc_correlation,
-    critical_gaps,
-    ddc,
-    hermite_max,
-    srss,
-)
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+_EXPORTS: dict[str, str] = {
+    "DesignSpectrum": "pounding.spectra",
+    "fundamental_mode": "pounding.spectra",
+    "spectral_displacements": "pounding.spectra",
+    **{name: "pounding.studies.gap" for name in (
+        "RULES", "GapStudy", "abs_sum", "code_gaps", "cqc_correlation", "critical_gaps", "ddc",
+        "hermite_max", "srss")},
+}
+"""Public name → the module that defines it."""
 
 __all__ = [
     "RULES",
@@ -34,3 +44,32 @@ __all__ = [
     "spectral_displacements",
     "srss",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name from its module on first use (PEP 562)."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pounding.studies' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # later look-ups do not come back here
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))
+
+
+if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
+    from pounding.studies.gap import (
+        RULES,
+        GapStudy,
+        abs_sum,
+        code_gaps,
+        cqc_correlation,
+        critical_gaps,
+        ddc,
+        hermite_max,
+        srss,
+    )

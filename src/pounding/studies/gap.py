@@ -37,6 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 from pounding.contact.geometry import Contact, ContactPoint
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.model import ContactSpec, PoundingModel
+from pounding.progress import Progress
 from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
 from pounding.structure import ShearBuilding
 from pounding.structure.wall import WallPoint
@@ -423,6 +424,36 @@ def _unique(names: Sequence[str]) -> list[str]:
     return out
 
 
+@dataclass(frozen=True)
+class _AloneRun:
+    """What the gap study keeps of a building simulated alone: its output step [s], the
+    time of its last output [s], its displacements and velocities (steps × DOFs)."""
+
+    dt: float
+    end: float
+    displacement: FloatArray
+    velocity: FloatArray
+
+    @property
+    def n(self) -> int:
+        """Output steps."""
+        return int(self.displacement.shape[0])
+
+
+def _run_alone(building: ShearBuilding, motion: GroundMotion | GroundMotionComponents,
+               dt: float | None, duration: float) -> _AloneRun:
+    """Simulate one building alone under one record (a task of
+    :func:`~pounding.studies.sweep.tasks.run_tasks`: what goes back is only what the gap
+    study reads)."""
+    from pounding.integrate import simulate
+
+    run = simulate(_alone(building), motion, dt=dt, duration=duration,
+                   free_stepping="rk" if building.is_inelastic else "auto")
+    return _AloneRun(dt=float(run.dt), end=float(run.time[-1]),
+                     displacement=np.asarray(run.displacement),
+                     velocity=np.asarray(run.velocity))
+
+
 def _alone(building: ShearBuilding) -> PoundingModel:
     return PoundingModel([building], [], ContactSpec("linear-spring", k=1.0),
                          name=building.name or "building")
@@ -473,7 +504,9 @@ def _check_motions(model: PoundingModel, motions: object
 def critical_gaps(model: PoundingModel,
                   motions: GroundMotion | GroundMotionComponents
                   | Sequence[GroundMotion | GroundMotionComponents], *,
-                  dt: float | None = None, duration: float | None = None) -> GapStudy:
+                  dt: float | None = None, duration: float | None = None,
+                  scheduler: str | None = None, n_workers: int | None = None,
+                  progress: Progress | None = None) -> GapStudy:
     """Critical separation gap at every contact, by simulation, per record.
 
     Each building is simulated alone (exact stepping: no contact, so the propagator is exact
@@ -505,12 +538,18 @@ def critical_gaps(model: PoundingModel,
         Output step [s] (default 1 ms, rounded to a divisor of each record's step).
     duration : float, optional
         Time simulated [s] (default each record's duration; longer adds free vibration).
+    scheduler, n_workers : optional
+        Where the runs (one per building and record) go: by default one after another in
+        this process; ``n_workers`` processes of a local Dask cluster; or the Dask
+        scheduler at ``scheduler`` (:func:`pounding.studies.sweep.tasks.run_tasks`).
+    progress : Progress, optional
+        Called as ``progress(done, total)``: runs finished, and in all.
 
     Returns
     -------
     GapStudy
     """
-    from pounding.integrate import simulate
+    from pounding.studies.sweep.tasks import run_tasks
 
     if not isinstance(model, PoundingModel):
         raise ValueError(f"model: expected a PoundingModel (got {type(model).__name__})")
@@ -535,22 +574,24 @@ def critical_gaps(model: PoundingModel,
     pr = np.zeros((nr, nc))
     durs = np.zeros(nr)
     step = 0.0
-    for i, motion in enumerate(ms):
-        # every building over the same time (the longest component's when two are given);
-        # exact stepping for linear buildings up to EXACT_FREE_MAX_DOF floors (beyond, its
-        # propagator alone takes minutes to build, in calls no signal can stop); yielding
-        # ones are RK-stepped (not linear)
-        t_end = motion.duration if duration is None else duration
-        runs = [simulate(_alone(b), motion if _in_plan(b) or isinstance(motion, GroundMotion)
-                         else motion.components[0], dt=dt, duration=t_end,
-                         free_stepping="rk" if b.is_inelastic else "auto")
-                for b in model.buildings]
+    # every building over the same time (the longest component's when two are given);
+    # exact stepping for linear buildings up to EXACT_FREE_MAX_DOF floors (beyond, its
+    # propagator alone takes minutes to build, in calls no signal can stop); yielding
+    # ones are RK-stepped (not linear)
+    tasks = [(b, motion if _in_plan(b) or isinstance(motion, GroundMotion)
+              else motion.components[0], dt, motion.duration if duration is None else duration)
+             for motion in ms for b in model.buildings]
+    alone = run_tasks(_run_alone, tasks, scheduler=scheduler, n_workers=n_workers,
+                      progress=progress)
+    nb = len(model.buildings)
+    for i in range(nr):
+        runs = alone[i * nb:(i + 1) * nb]
         step = runs[0].dt
-        durs[i] = float(runs[0].time[-1])
+        durs[i] = runs[0].end
 
         def point(p: ContactPoint) -> tuple[FloatArray, FloatArray]:
             if isinstance(p, WallPoint):  # fixed to the ground
-                return np.zeros(runs[0].time.size), np.zeros(runs[0].time.size)
+                return np.zeros(runs[0].n), np.zeros(runs[0].n)
             run = runs[p.building]
             return p.of(run.displacement), p.of(run.velocity)
 

@@ -37,14 +37,16 @@ from pydantic import Field, ValidationError
 
 from pounding.config.base import Section
 from pounding.config.device import DeviceConfig
+from pounding.config.quantities import Step
+from pounding.progress import Progress
 
 if TYPE_CHECKING:
     import pandas as pd
 
     from pounding.result import Result
 
-__all__ = ["MEASURES", "MitigationStudy", "OptionConfig", "StudyOutcome", "load_mitigation",
-           "measure_row", "run_mitigation", "summarise"]
+__all__ = ["MEASURES", "MitigationOutcome", "MitigationStudy", "OptionConfig",
+           "load_mitigation", "measure_row", "run_mitigation", "summarise"]
 
 MEASURES: dict[str, str] = {
     "n_impacts": "impacts of the buildings' own contacts",
@@ -77,12 +79,18 @@ class MitigationStudy(Section):
     out: str | None = None
     records: Annotated[list[Annotated[str, Field(min_length=1)]],
                        Field(min_length=1)] | None = None
+    dt: Step | None = None
+    """Time step [s] of the ``records`` files that do not state one (plain text)."""
+    units: str | None = None
+    """Acceleration unit of the ``records`` files that do not state one (a plain-text record
+    needs it: ``"g"``, ``"m/s2"``, ``"cm/s2"``, ...)."""
     option: Annotated[list[OptionConfig], Field(min_length=1)]
 
 
 @dataclass
-class StudyOutcome:
-    """The table of every run, its summary per option, and where they were written."""
+class MitigationOutcome:
+    """What :func:`run_mitigation` did: the table of every run, its summary per option, and
+    where they were written."""
 
     table: "pd.DataFrame"
     summary: "pd.DataFrame"
@@ -128,7 +136,11 @@ def _configs(study: MitigationStudy, here: Path, where: str = "study"
     if study.records:
         keep = {k: v for k, v in data["record"].items()
                 if k not in ("file", "bundled", "dt", "units")}
-        records = [_record(r, k, here, where) | keep for k, r in enumerate(study.records)]
+        own = {k: v for k, v in (("dt", study.dt), ("units", study.units)) if v is not None}
+        records = []
+        for k, name in enumerate(study.records):
+            rec = _record(name, k, here, where) | keep
+            records.append(rec | own if "file" in rec else rec)
     base_devices = len(data.get("device", []))
     runs = []
     for i, opt in enumerate(study.option):
@@ -217,17 +229,19 @@ MITIGATION_FILES: tuple[str, ...] = ("runs.csv", "summary.csv", "study.toml", "m
 
 
 def _out_folder(study: MitigationStudy, here: Path, out: str | os.PathLike[str] | None,
-                where: str) -> Path:
+                where: str, file: Path) -> Path:
     """The output folder: ``out`` given (``--out``), else ``out`` of the study file —
-    inside the file's folder (:func:`pounding.io.study_out`) — else ``<name>-results``
-    beside the file; the name is a label (:func:`pounding.io.check_label`)."""
+    inside the file's folder (:func:`pounding.io.study_out`) — else ``<file stem>-results``
+    in the current folder (:func:`pounding.output_folder.default_out_dir`); the name is a
+    label (:func:`pounding.io.check_label`)."""
     from pounding.io import check_label, study_out
+    from pounding.output_folder import default_out_dir
 
-    name = check_label(study.name, where)
+    check_label(study.name, where)
     if out is not None:
         folder = Path(out)
     elif study.out is None:
-        folder = here / f"{name}-results"
+        folder = default_out_dir(file)
     else:
         folder, refused = study_out(here, study.out, where)
         if refused is not None:
@@ -253,16 +267,47 @@ def _check_target(out_dir: Path, overwrite: bool) -> None:
             check_replaceable(out_dir, "mitigation")
 
 
-def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
-                   overwrite: bool = False, figures: bool = True,
-                   progress: Any = None) -> StudyOutcome:
+def _measure_run(option: str, record: str, config: Any) -> dict[str, Any]:
+    """One run of a study: its option, record and :data:`MEASURES` (a task of
+    :func:`~pounding.studies.sweep.tasks.run_tasks`)."""
+    from pounding.integrate import simulate
+
+    model, motion, solver = config.build()
+    return {"option": option, "record": record, **measure_row(simulate(model, motion,
+                                                                         **solver))}
+
+
+def run_mitigation(input: str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
+                   *, overwrite: bool = False, figures: bool | None = None,
+                   progress: Progress | None = None, scheduler: str | None = None,
+                   n_workers: int | None = None) -> MitigationOutcome:
     """Run a study file and write its folder: ``runs.csv`` (every option under every
     record), ``summary.csv`` (mean per option), ``study.toml`` (the file as read) and
     ``mitigation.png`` (the trade-off figure).
 
-    The folder is written whole or not at all, as a run's (:func:`pounding.run.run`): built
-    beside the target and moved into place when complete; an earlier study's folder is
-    replaced (``overwrite``) only if it holds nothing but the files its manifest lists.
+    The first arguments are those of every runner, in the same order (:func:`pounding.run`).
+    The folder is written whole or not at all, as a run's: built beside the target and
+    moved into place when complete; an earlier study's folder is replaced (``overwrite``)
+    only if it holds nothing but the files its manifest lists.
+
+    Parameters
+    ----------
+    input : path-like
+        The study file (module docstring, ``docs/mitigation.md``).
+    out : path-like, optional
+        Output folder (default: ``out`` of the study file, relative to it, else ``<study
+        file stem>-results`` in the current folder).
+    overwrite : bool
+        Replace an earlier study's output folder.
+    figures : bool, optional
+        Draw the trade-off figure; default yes.
+    progress : Progress, optional
+        Called as ``progress(done, total)``: runs finished, and runs in all
+        (:class:`pounding.progress.Progress`).
+    scheduler, n_workers : optional
+        Where the runs go (:func:`pounding.studies.sweep.tasks.run_tasks`): by default one
+        after another in this process; ``n_workers`` processes of a local Dask cluster; or
+        the Dask scheduler at ``scheduler`` (``"synchronous"``: this process).
 
     Raises
     ------
@@ -272,28 +317,25 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
     """
     import pandas as pd
 
-    from pounding.integrate import simulate
     from pounding.io import atomic_path, check_writable, write_text
     from pounding.output_folder import new_output_folder, remove_stale
     from pounding.plot import save_figure
+    from pounding.studies.sweep.tasks import run_tasks
 
+    path = Path(input)
     study, here = load_mitigation(path)
     where = str(path)
-    out_dir = _out_folder(study, here, out, where)
+    out_dir = _out_folder(study, here, out, where, path)
     runs = _configs(study, here, where=where)
     check_writable(out_dir)
     remove_stale(out_dir.absolute().parent, restore=out_dir.absolute())
     if out_dir.is_dir() and not out_dir.is_symlink():
         remove_stale(out_dir)
     _check_target(out_dir, overwrite)
-    study_text = Path(path).read_text(encoding="utf-8")
-    rows = []
-    for k, (option, record, cfg) in enumerate(runs):
-        model, motion, solver = cfg.build()
-        res = simulate(model, motion, **solver)
-        rows.append({"option": option, "record": record, **measure_row(res)})
-        if progress is not None:
-            progress((k + 1) / len(runs))
+    study_text = path.read_text(encoding="utf-8")
+    drawn = True if figures is None else figures
+    rows = run_tasks(_measure_run, runs, scheduler=scheduler, n_workers=n_workers,
+                     progress=progress)
     table = pd.DataFrame(rows)
     summary = summarise(table)
     names = {"runs": "runs.csv", "summary": "summary.csv", "study": "study.toml",
@@ -305,9 +347,9 @@ def run_mitigation(path: str | os.PathLike[str], out: str | os.PathLike[str] | N
         with atomic_path(tmp / names["summary"]) as f:
             summary.to_csv(f)
         write_text(tmp / names["study"], study_text)
-        if figures:
+        if drawn:
             from pounding.plot.mitigation import plot_mitigation
 
             save_figure(plot_mitigation(summary, title=study.name), tmp / names["figure"])
-    files = {k: out_dir / v for k, v in names.items() if k != "figure" or figures}
-    return StudyOutcome(table=table, summary=summary, out_dir=out_dir, files=files)
+    files = {k: out_dir / v for k, v in names.items() if k != "figure" or drawn}
+    return MitigationOutcome(table=table, summary=summary, out_dir=out_dir, files=files)

@@ -7,8 +7,10 @@ reading (:func:`pounding.units.acceleration_factor`):
   (:func:`read_knet`: counts times the scale factor, less the record's mean);
 * :mod:`~pounding.ground_motion.readers.cosmos` -- COSMOS Volume 1 and 2 files, format
   v1.20 (:func:`read_cosmos`);
-* :mod:`~pounding.ground_motion.readers.text` -- plain one-column (with ``dt``) or
-  two-column time/acceleration text (:func:`read_text`);
+* :mod:`~pounding.ground_motion.readers.text` -- plain one-column (with ``dt``),
+  two-column time/acceleration or several-column text with the acceleration's ``column``
+  chosen (:func:`read_text`), which states no unit: ``units``
+  is required (:class:`UnitsRequired` otherwise; :func:`needs_units` tells such a file);
 * :mod:`~pounding.ground_motion.readers.dispatch` -- :func:`read_record`, any of the
   above, chosen by suffix and content; any other file is refused in one line naming the
   formats read.
@@ -22,10 +24,16 @@ Every reader raises :class:`ValueError` naming the file, the line and the bad va
 
 from pounding.ground_motion.readers.at2 import read_at2
 from pounding.ground_motion.readers.cosmos import read_cosmos
-from pounding.ground_motion.readers.dispatch import FORMATS, SUPPORTED, RecordFormat, read_record
+from pounding.ground_motion.readers.dispatch import (
+    FORMATS,
+    SUPPORTED,
+    RecordFormat,
+    needs_units,
+    read_record,
+)
 from pounding.ground_motion.readers.knet import read_knet
-from pounding.ground_motion.readers.units import ASSUMED
+from pounding.ground_motion.readers.units import ASSUMED, UNIT_NAMES, UnitsRequired
 from pounding.ground_motion.readers.text import read_text
 
-__all__ = ["ASSUMED", "FORMATS", "SUPPORTED", "RecordFormat", "read_at2", "read_cosmos",
-           "read_knet", "read_record", "read_text"]
+__all__ = ["ASSUMED", "FORMATS", "SUPPORTED", "UNIT_NAMES", "RecordFormat", "UnitsRequired",
+           "needs_units", "read_at2", "read_cosmos", "read_knet", "read_record", "read_text"]

@@ -35,20 +35,23 @@ _RE_AT2_LINE = re.compile(r"^\s*(?:NPTS|DT)\s*[=:]", re.IGNORECASE)
 
 
 def _header_int(token: str, where: str, lineno: int) -> int:
-    try:
-        value = float(token)
-    except ValueError:
-        value = math.nan
+    value = to_float(token)
+    if value is None:  # the text is not shown: the file may be anything
+        raise ValueError(f"{where}: line {lineno}: NPTS "
+                         f"{'has no value' if not token else 'is not a number'}; it must be "
+                         "a whole number >= 1")
     if not (math.isfinite(value) and value == int(value) and value >= 1):
         raise ValueError(f"{where}: line {lineno}: NPTS must be a whole number >= 1 "
-                         f"(got {token!r})")
+                         f"(got {value:g})")
     return int(value)
 
 
 def _header_dt(token: str, where: str, lineno: int) -> float:
     value = to_float(token)
     if value is None:
-        raise ValueError(f"{where}: line {lineno}: DT must be a number (got {token!r})")
+        raise ValueError(f"{where}: line {lineno}: DT "
+                         f"{'has no value' if not token else 'is not a number'}; it must be "
+                         "the time step in seconds")
     return positive(f"{where}: line {lineno}: DT [s]", value)
 
 

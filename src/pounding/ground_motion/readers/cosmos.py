@@ -132,10 +132,12 @@ def read_cosmos(path: str | os.PathLike[str], *, dt: float | None = None,
         raise ValueError(f"{where}: no acceleration series in this COSMOS file (only "
                          "velocity, displacement or spectra)")
     if channel is None and len(acceleration) > 1:
-        listing = "; ".join(f"{k} {_component(s) or '?'}"
+        listing = "; ".join(f"{k} {_orientation(_component(s))}"
                             for k, s in enumerate(acceleration, start=1))
         raise ValueError(f"{where}: holds {len(acceleration)} acceleration channels "
-                         f"({listing}); read one with read_cosmos(path, channel=N)")
+                         f"({listing}); read one with channel = N (read_cosmos(path, "
+                         "channel=N), --channel N on the command line, channel = N in a "
+                         "model file's [record])")
     k = 1 if channel is None else channel
     if not 1 <= k <= len(acceleration):
         raise ValueError(f"{where}: channel must be 1 to {len(acceleration)} (got {channel})")
@@ -150,8 +152,9 @@ def read_cosmos(path: str | os.PathLike[str], *, dt: float | None = None,
     unit_file = UNIT_CODES.get(code) if code is not None else units_in(s.units_text)
     if unit_file is None:
         known = ", ".join(f"{c} {u}" for c, u in UNIT_CODES.items())
-        raise ValueError(f"{where}: line {s.data_line}: units {s.units_text!r} (code {code}) "
-                         f"are not an acceleration unit pounding converts ({known})")
+        stated = f"units code {code}" if code is not None else "the units stated"
+        raise ValueError(f"{where}: line {s.data_line}: {stated} on the data line are not "
+                         f"an acceleration unit pounding converts (codes {known})")
     unit, units_read = resolve_unit(unit_file, units, where, default=unit_file)
 
     msec = _known(s.reals, 61, no_value)
@@ -197,7 +200,7 @@ def _read_series(lines: list[str], where: str) -> list[_Series]:
         if title is None:
             raise ValueError(f"{where}: line {i + 1}: expected the first text header line of a "
                              "COSMOS series, such as 'Corrected acceleration (Format v01.20 "
-                             f"with 13 text lines)', got {lines[i].strip()[:40]!r}")
+                             "with 13 text lines)'; this line is not one")
         first = i
         n_text = int(title.group(2))
         if i + n_text > n:
@@ -210,7 +213,7 @@ def _read_series(lines: list[str], where: str) -> list[_Series]:
         m = _RE_COMMENTS.match(lines[i]) if i < n else None
         if m is None:
             raise ValueError(f"{where}: line {i + 1}: expected the line 'N Comment line(s) "
-                             f"follow, ...', got {_at(lines, i)!r}")
+                             f"follow, ...'; {_at(lines, i)}")
         n_comments = int(m.group(1))
         comments = tuple(lines[i + 1:i + 1 + n_comments])
         i += 1 + n_comments
@@ -218,7 +221,7 @@ def _read_series(lines: list[str], where: str) -> list[_Series]:
         if m is None:
             raise ValueError(f"{where}: line {i + 1}: expected the data line such as '8000 "
                              "acceleration pts, approx 40 secs, units=cm/sec2 (04), "
-                             f"Format=(8F10.5)', got {_at(lines, i)!r}")
+                             f"Format=(8F10.5)'; {_at(lines, i)}")
         npts, kind, rest = int(m.group(1)), m.group(2).strip().lower(), m.group(3)
         data_line = i + 1
         u = _RE_DATA_UNITS.search(rest)
@@ -239,7 +242,7 @@ def _block(lines: list[str], i: int, where: str,
     m = _RE_BLOCK.match(lines[i]) if i < len(lines) else None
     if m is None or m.group(2).lower() != which:
         raise ValueError(f"{where}: line {i + 1}: expected the line 'N {which.title()}-header "
-                         f"values follow on M lines, ...', got {_at(lines, i)!r}")
+                         f"values follow on M lines, ...'; {_at(lines, i)}")
     values, line_numbers, starts, end = _values(lines, i + 1, where, int(m.group(1)), i + 1)
     return values, tuple(_line_of(line_numbers, starts, j) for j in range(len(values))), end
 
@@ -299,11 +302,23 @@ def _station(s: _Series) -> str:
     return m.group(1) if m else ""
 
 
+_RE_ORIENTATION = re.compile(r"\d{1,3}(?:\.\d{1,2})?\s*deg|up|down|vertical|[NSEW]\d{0,2}[NSEW]?",
+                             re.IGNORECASE)
+"""What an orientation looks like: only such a text of the file is shown in a message."""
+
+
+def _orientation(component: str) -> str:
+    """The channel's orientation for a message ("360 deg", "Up"), or "?" for any other
+    text (a message never shows what a file holds beyond what it was read for)."""
+    return component if _RE_ORIENTATION.fullmatch(component) else "?"
+
+
 def _component(s: _Series) -> str:
     m = _RE_COMPONENT.search(s.text[8]) if len(s.text) > 8 else None
     return m.group(1) if m else ""
 
 
 def _at(lines: list[str], i: int) -> str:
-    """Line index ``i`` for a message, or that the file ends there."""
-    return lines[i].strip()[:40] if i < len(lines) else "the end of the file"
+    """What is at line index ``i``, for a message, without its text (the file may be
+    anything)."""
+    return "this line is not it" if i < len(lines) else "the file ends there"

@@ -10,7 +10,6 @@ a new format adds its entry there.
 
 from __future__ import annotations
 
-import dataclasses
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -18,12 +17,11 @@ from pathlib import Path
 
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers import at2, cosmos, knet
-from pounding.ground_motion.readers.files import check_file, read_lines
+from pounding.ground_motion.readers.files import check_file, describe_size, read_lines
 from pounding.ground_motion.readers.numbers import is_numeric_line
-from pounding.ground_motion.readers.units import ASSUMED
 from pounding.ground_motion.readers.text import read_text
 
-__all__ = ["FORMATS", "SUPPORTED", "RecordFormat", "read_record"]
+__all__ = ["FORMATS", "SUPPORTED", "RecordFormat", "needs_units", "read_record"]
 
 
 @dataclass(frozen=True)
@@ -58,7 +56,8 @@ FORMATS: tuple[RecordFormat, ...] = (
 the first two are told by their first line alone)."""
 
 SUPPORTED: str = ", ".join(
-    [fmt.name for fmt in FORMATS] + ["plain text (one column, or two: time, acceleration)"])
+    [fmt.name for fmt in FORMATS]
+    + ["plain text (one column, two: time, acceleration, or several with a column chosen)"])
 """The formats :func:`read_record` reads, for the message that refuses any other."""
 
 
@@ -73,16 +72,17 @@ def _format_of(p: Path) -> RecordFormat | None:
 
 
 def read_record(path: str | os.PathLike[str], dt: float | None = None,
-                units: str | None = None) -> GroundMotion:
+                units: str | None = None, *, column: int | None = None,
+                time_column: int | None = None, channel: int | None = None) -> GroundMotion:
     """Read an acceleration record, choosing the reader from the suffix and content.
 
     A suffix of one of :data:`FORMATS` (any case: ``.AT2``; ``.NS``, ``.EW2``...; ``.V2``,
     ``.V2c``...) selects its reader; so does a first line ``Origin Time`` (K-NET/KiK-net),
     ``(Format v01.20 with 13 text lines)`` (COSMOS), or a header with ``NPTS``/``DT``
     (AT2). A file whose first line that is not blank or a ``#`` comment holds numbers alone
-    is plain text (:func:`~pounding.ground_motion.readers.text.read_text`); read without
-    ``units`` its values are taken as m/s² and ``units_read`` says ``"m/s2 (assumed)"``.
-    Any other file is refused: the message names it and the formats read.
+    is plain text (:func:`~pounding.ground_motion.readers.text.read_text`), which states
+    no unit: it needs ``units`` (none is assumed). Any other file is refused: the message
+    names it, its size and the formats read.
 
     Parameters
     ----------
@@ -91,37 +91,75 @@ def read_record(path: str | os.PathLike[str], dt: float | None = None,
     dt : float, optional
         Time step [s], for files that do not give one (see the readers).
     units : str, optional
-        Acceleration unit for files that do not state one. For an AT2 header that states a
-        different unit this is an error.
+        Acceleration unit for files that do not state one; required for plain text. For an
+        AT2 header that states a different unit this is an error.
+    column, time_column : int, optional
+        For plain text only: the column of the acceleration and of the time, from 1
+        (:func:`~pounding.ground_motion.readers.text.read_text`); a file of another format
+        given either is refused.
+    channel : int, optional
+        For COSMOS only: which acceleration channel of a file that holds several, from 1
+        (:func:`~pounding.ground_motion.readers.cosmos.read_cosmos`); a file of another
+        format given one is refused.
 
     Raises
     ------
+    UnitsRequired
+        (a ValueError) For a plain-text file read without ``units``.
     ValueError
         As raised by the reader, naming the file and line; or, for a file in none of the
-        formats, naming the file, its first line and the formats read.
+        formats, naming the file, its size and the formats read. No message shows any of
+        the file's text.
     """
     p = check_file(path)
     fmt = _format_of(p)
     if fmt is not None:
+        for key, value in (("column", column), ("time_column", time_column)):
+            if value is not None:
+                raise ValueError(f"{p}: {key} is for plain-text records; this is a "
+                                 f"{fmt.name} file (got {key} = {value!r})")
+        if fmt.read is cosmos.read_cosmos:
+            return cosmos.read_cosmos(p, dt=dt, units=units, channel=channel)
+        if channel is not None:
+            raise ValueError(f"{p}: channel is for COSMOS files of several channels; this is "
+                             f"a {fmt.name} file (got channel = {channel!r})")
         return fmt.read(p, dt=dt, units=units)
     _check_plain_text(p)
-    if units is None:
-        gm = read_text(p, dt=dt, units="m/s2")
-        return dataclasses.replace(gm, units_read="m/s2" + ASSUMED)
-    return read_text(p, dt=dt, units=units)
+    if channel is not None:
+        raise ValueError(f"{p}: channel is for COSMOS files of several channels; this is a "
+                         f"plain-text file: choose its column with column (--column on the command "
+                         f"line) (got channel = {channel!r})")
+    return read_text(p, dt=dt, units=units, column=column, time_column=time_column)
+
+
+def needs_units(path: str | os.PathLike[str]) -> bool:
+    """True if ``path`` is a record that :func:`read_record` reads as plain text, which
+    does not state its unit: it needs ``units``. False for any other file, including one
+    that is not a record at all (reading it says why)."""
+    try:
+        p = check_file(path)
+        if _format_of(p) is not None:
+            return False
+        _check_plain_text(p)
+    except (ValueError, OSError):
+        return False
+    return True
 
 
 def _check_plain_text(p: Path) -> None:
-    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either."""
+    """Refuse a file that is in none of :data:`FORMATS` and is not plain numbers either,
+    naming it, its size and the formats read, and showing none of its text."""
+    size = describe_size(p.stat().st_size)
     with p.open("rb") as f:
         if b"\0" in f.read(4096):
-            raise ValueError(f"{p}: a binary file (miniSEED, SAC or the like), not a record "
-                             f"format pounding reads; it reads {SUPPORTED}")
+            raise ValueError(f"{p}: a binary file ({size}; miniSEED, SAC or the like), not a "
+                             f"record format pounding reads; it reads {SUPPORTED}")
     for i, line in enumerate(read_lines(p)):
         s = line.strip()
         if not s or s.startswith("#"):
             continue
         if not is_numeric_line(s):
-            raise ValueError(f"{p}: not a record format pounding reads (line {i + 1}: "
-                             f"{s[:40]!r}); it reads {SUPPORTED}")
+            raise ValueError(f"{p}: not a record format pounding reads ({size}; line {i + 1}, "
+                             "its first line that is not blank or a '#' comment, is neither "
+                             f"numbers nor a header of a format read); it reads {SUPPORTED}")
         return

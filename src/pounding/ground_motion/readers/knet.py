@@ -27,6 +27,7 @@ from pounding.ground_motion.readers.files import check_file, read_lines
 from pounding.ground_motion.readers.numbers import parse_values, to_float
 from pounding.ground_motion.readers.step import resolve_dt
 from pounding.ground_motion.readers.units import canonical_unit, resolve_unit, to_si
+from pounding.units import ACCELERATION_UNITS
 
 __all__ = ["SUFFIXES", "looks_like_knet", "read_knet"]
 
@@ -123,15 +124,16 @@ def read_knet(path: str | os.PathLike[str], *, dt: float | None = None,
         m = regex.match(lines[i])
         if m is None:
             raise ValueError(f"{where}: line {i + 1}: expected the K-NET header label "
-                             f"{label!r}, got {lines[i].strip()[:40]!r}")
+                             f"{label!r} there (line {i + 1} does not start with it)")
         fields[key] = m.group(1).strip()
 
     freq_line = _LINE["sampling_freq"]
     m_freq = _RE_FREQ.match(fields["sampling_freq"])
     freq = to_float(m_freq.group(1)) if m_freq else None
     if freq is None or not 0.0 < freq < float("inf"):
+        got = "not a number" if freq is None else f"got {freq:g} Hz"
         raise ValueError(f"{where}: line {freq_line}: Sampling Freq(Hz) must be a positive "
-                         f"number such as '100Hz' (got {fields['sampling_freq']!r})")
+                         f"number such as '100Hz' ({got})")
     step = resolve_dt(1.0 / freq, dt, where, stated_at=f"line {freq_line}: 1/Sampling Freq",
                       missing="")
 
@@ -141,9 +143,11 @@ def read_knet(path: str | os.PathLike[str], *, dt: float | None = None,
     den = to_float(m_scale.group(3)) if m_scale else None
     if (m_scale is None or num is None or den is None
             or not (0.0 < num < float("inf") and 0.0 < den < float("inf"))):
+        got = (f"got {num:g}/{den:g}" if num is not None and den is not None
+               else "not in that form")
         raise ValueError(f"{where}: line {scale_line}: Scale Factor must read like "
-                         f"'7845(gal)/8223790' (got {fields['scale_factor']!r})")
-    unit_file = canonical_unit(m_scale.group(2), f"{where}: line {scale_line}: Scale Factor")
+                         f"'7845(gal)/8223790', two positive numbers ({got})")
+    unit_file = _scale_unit(m_scale.group(2), where, scale_line)
     unit, units_read = resolve_unit(unit_file, units, where, default=unit_file)
 
     counts: list[float] = []
@@ -163,7 +167,7 @@ def read_knet(path: str | os.PathLike[str], *, dt: float | None = None,
         mean = float(np.mean(scaled))
     if not np.isfinite(mean):
         raise ValueError(f"{where}: line {scale_line}: the counts times the scale factor "
-                         f"{fields['scale_factor']} go beyond the largest float")
+                         f"{num:g}/{den:g} go beyond the largest float")
     accel = to_si(scaled - mean, unit, where,
                   lambda k: linenos[bisect.bisect_right(starts, k) - 1])
 
@@ -185,3 +189,14 @@ def read_knet(path: str | os.PathLike[str], *, dt: float | None = None,
     return GroundMotion(dt=step, accel=accel, name=p.name, source=where,
                         units_read=units_read, metadata=metadata)
 
+
+
+def _scale_unit(text: str, where: str, line: int) -> str:
+    """The unit of the Scale Factor (``gal`` in ``7845(gal)/8223790``), a key of
+    :data:`pounding.units.ACCELERATION_UNITS`; refused without showing the file's text."""
+    try:
+        return canonical_unit(text, "")
+    except ValueError:
+        raise ValueError(f"{where}: line {line}: the Scale Factor's unit (in parentheses) is "
+                         "not an acceleration unit pounding converts (one of "
+                         f"{', '.join(ACCELERATION_UNITS)})") from None

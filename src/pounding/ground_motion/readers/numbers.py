@@ -13,7 +13,7 @@ import re
 import sys
 from collections.abc import Mapping, Sequence
 
-__all__ = ["is_numeric_line", "parse_values", "split_fused", "to_float"]
+__all__ = ["is_numeric_line", "not_a_number", "parse_values", "split_fused", "to_float"]
 
 _NUM = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][+-]?\d+)?"
 _FUSED_PIECE = re.compile(_NUM)
@@ -67,7 +67,8 @@ def parse_values(line: str, lineno: int, where: str,
     Raises
     ------
     ValueError
-        Naming the file, the line and the token: a token that is not a number, or a value
+        Naming the file, the line and the token's place on it (never its text): a token that
+        is not a number, or a value
         that is not finite (NaN, infinite, or written finite but beyond the largest float,
         such as ``1e309``, which overflows to infinity when read).
     """
@@ -76,14 +77,15 @@ def parse_values(line: str, lineno: int, where: str,
         values = [float(t) for t in tokens]
     except ValueError:
         values = []
-        for tok in tokens:
+        for k, tok in enumerate(tokens, start=1):
             v = to_float(tok)
             if v is not None:
                 values.append(v)
                 continue
             fused = split_fused(tok)
-            if fused is None:
-                raise ValueError(f"{where}: line {lineno}: {tok!r} is not a number") from None
+            if fused is None:  # the token itself is never shown: the file may be anything
+                raise ValueError(f"{where}: line {lineno}: {not_a_number(k, len(tokens))}"
+                                 ) from None
             values.extend(fused)
     for i, v in enumerate(values):
         if not math.isfinite(v):
@@ -92,6 +94,13 @@ def parse_values(line: str, lineno: int, where: str,
             raise ValueError(f"{where}: line {lineno}: {what} value "
                              f"{_not_finite(_pieces(tokens)[i], v)}")
     return values
+
+
+def not_a_number(k: int, n: int) -> str:
+    """The message for token ``k`` (from 1) of ``n`` on a line that is not a number,
+    without the token itself."""
+    where = "the line" if n == 1 else f"item {k} of {n} on the line"
+    return f"{where} is not a number (expected numbers separated by spaces, tabs or commas)"
 
 
 def _pieces(tokens: list[str]) -> list[str]:

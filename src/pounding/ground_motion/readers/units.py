@@ -19,7 +19,29 @@ from numpy.typing import NDArray
 
 from pounding.units import ACCELERATION_UNITS, acceleration_factor
 
-__all__ = ["ASSUMED", "canonical_unit", "resolve_unit", "same_unit", "to_si", "units_in"]
+__all__ = ["ASSUMED", "UNIT_NAMES", "UnitsRequired", "canonical_unit", "resolve_unit",
+           "same_unit", "to_si", "units_in"]
+
+UNIT_NAMES = "g, m/s2, cm/s2, gal, mm/s2, in/s2 or ft/s2"
+"""The acceleration units a record may be in, for a message (each also written with ``^2``
+or ``²``: :data:`pounding.units.ACCELERATION_UNITS`)."""
+
+
+class UnitsRequired(ValueError):
+    """A record file that does not state its acceleration unit (plain text) was read without
+    one. ``path`` is the file; callers that know the name of the setting (``record.units``
+    of a model file, ``--units`` of a command) may say it."""
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        super().__init__(f"{path}: a plain-text record does not state its acceleration unit; "
+                         f"give its units: {UNIT_NAMES}")
+
+    def named(self, setting: str) -> ValueError:
+        """The same refusal naming the setting that gives the unit (``"--units"``)."""
+        return ValueError(f"{setting}: {self.path} is a plain-text record, which does not "
+                          f"state its acceleration unit; give {setting} {UNIT_NAMES}")
+
 
 ASSUMED = " (assumed)"
 """Suffix added to :attr:`GroundMotion.units_read` when the file did not state its units."""

@@ -36,14 +36,14 @@ from pounding.studies.fragility.gap_probability import (
 )
 from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
 from pounding.studies.fragility.plan import StudyPlan, plan_study
-from pounding.studies.fragility.runner import NeededGaps, StudyOutcome, needed_gaps, run_study
+from pounding.studies.fragility.runner import FragilityOutcome, NeededGaps, needed_gaps, run_study
 from pounding.studies.fragility.study import DEMANDS, StudyConfig, load_study, parse_study
 
 __all__ = [
     "DEMANDS",
+    "FragilityOutcome",
     "NeededGaps",
     "StudyConfig",
-    "StudyOutcome",
     "StudyPlan",
     "capacities",
     "censored_lognormal_mle",

@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 
 from pounding.studies.fragility.bootstrap import (
     FragilityEstimate,
+    expanded_confidence,
     fit_from_capacities,
     fit_from_stripes,
     percentile_interval,
@@ -214,8 +215,8 @@ def _gap_analysis(plan: StudyPlan, ng: NeededGaps, demands: dict[str, FloatArray
                   boot: NDArray[np.int64], has_run: NDArray[np.bool_]) -> GapAnalysis:
     cfg = plan.config
     p = cfg.gap.target
-    conf = cfg.bootstrap.confidence
     at_needed = ng.needed_at[has_run]
+    conf = expanded_confidence(cfg.bootstrap.confidence, at_needed.size)
     med, beta = gap_lognormal(at_needed)
     gap_fit = lognormal_gap(med, beta, p)
     gap_emp = empirical_gap(at_needed, p)

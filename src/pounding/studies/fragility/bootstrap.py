@@ -8,6 +8,18 @@ Statist.* 7(1), 1–26; Efron & Tibshirani (1993), *An Introduction to the Boots
 the percentile interval). Resampling records, not runs, keeps each record's runs at every
 level together, as they are correlated (the same record scaled).
 
+With the few records of a suite the plain percentile interval is too narrow: its spread is
+that of a sample of n divided by n rather than n − 1, and it takes normal quantiles where
+Student's t applies. Measured by simulation (records drawn from a known lognormal, 300 suites,
+1000 resamples), a nominal 90 % interval of the median covered the truth in 85 % of suites
+of 9 or 10 records (capacities) and in 78–86 % (the MLE on stripes). The intervals are
+therefore *expanded percentile intervals* (Hesterberg, T. C. (2015). What teachers should
+know about the bootstrap: resampling in the undergraduate statistics curriculum. *The
+American Statistician* 69(4), 371–386): the percentiles of a wider nominal confidence
+``c' = 2 Φ(sqrt(n/(n − 1)) t_{n−1}((1 + c)/2)) − 1`` (:func:`expanded_confidence`; 95.1 %
+for 90 % at n = 9), which covered the truth in 91 % (capacities) and 84–91 % (stripes) of
+the same suites; at 20 records 89 % and 88–90 %.
+
 The resamples are drawn from ``numpy.random.Generator(PCG64(seed))``: the same seed gives
 the same intervals, on any machine.
 """
@@ -29,7 +41,8 @@ from pounding.studies.fragility.fitting import (
 from pounding.studies.fragility.ida import exceedance_counts
 
 __all__ = ["DEFAULT_BOOT", "DEFAULT_CONFIDENCE", "DEFAULT_SEED", "FragilityEstimate",
-           "fit_from_capacities", "fit_from_stripes", "percentile_interval", "resample"]
+           "expanded_confidence", "fit_from_capacities", "fit_from_stripes",
+           "percentile_interval", "resample"]
 
 FloatArray = NDArray[np.float64]
 
@@ -50,6 +63,27 @@ def resample(n_records: int, n_boot: int = DEFAULT_BOOT, seed: int = DEFAULT_SEE
     shape (n_boot, n_records), from PCG64 seeded with ``seed``."""
     gen = np.random.Generator(np.random.PCG64(int(seed)))
     return gen.integers(0, int(n_records), size=(int(n_boot), int(n_records)))
+
+
+def expanded_confidence(confidence: float, n_records: int) -> float:
+    """The nominal confidence whose percentile interval has about ``confidence`` coverage
+    with ``n_records`` records: ``2 Φ(sqrt(n/(n − 1)) t_{n−1}((1 + c)/2)) − 1`` (Hesterberg
+    2015, the expanded percentile interval; module docstring). ``confidence`` itself for
+    fewer than 2 records (no t quantile).
+
+    Examples
+    --------
+    >>> round(expanded_confidence(0.90, 9), 4)
+    0.9514
+    """
+    from scipy import stats
+
+    c = float(confidence)
+    n = int(n_records)
+    if n < 2:
+        return c
+    z = np.sqrt(n / (n - 1.0)) * stats.t.ppf((1.0 + c) / 2.0, n - 1)
+    return float(2.0 * stats.norm.cdf(z) - 1.0)
 
 
 def percentile_interval(values: ArrayLike, confidence: float = DEFAULT_CONFIDENCE,
@@ -84,7 +118,8 @@ class FragilityEstimate:
     status : int
         :data:`~pounding.studies.fragility.fitting.FIT_OK` and the others.
     median_ci, beta_ci : (float, float)
-        Percentile intervals over the bootstrap resamples.
+        Expanded percentile intervals over the bootstrap resamples (percentiles at
+        :func:`expanded_confidence` of ``confidence`` and ``n_records``).
     medians, betas : ndarray, shape (n_boot,)
         The bootstrap estimates (for bands).
     n_records : int
@@ -92,6 +127,8 @@ class FragilityEstimate:
     n_failed_boot : int
         Resamples whose fit failed (left out of the intervals).
     confidence : float
+        The coverage asked for (the percentiles taken are those of
+        :func:`expanded_confidence`).
     """
 
     median: float
@@ -110,11 +147,12 @@ class FragilityEstimate:
         return lognormal_cdf(im, self.median, self.beta)
 
     def band(self, im: ArrayLike) -> tuple[FloatArray, FloatArray]:
-        """Pointwise percentile band of the bootstrap fragilities at ``im`` (the curves of
-        every resample evaluated there)."""
+        """Pointwise expanded percentile band of the bootstrap fragilities at ``im`` (the
+        curves of every resample evaluated there)."""
         x = np.atleast_1d(np.asarray(im, dtype=float))
         curves = lognormal_cdf(x[None, :], self.medians[:, None], self.betas[:, None])
-        return percentile_interval(curves, self.confidence, axis=0)
+        return percentile_interval(curves, expanded_confidence(self.confidence,
+                                                               self.n_records), axis=0)
 
 
 def _estimate(med: FloatArray, beta: FloatArray, status: NDArray[np.int64], n_records: int,
@@ -122,8 +160,9 @@ def _estimate(med: FloatArray, beta: FloatArray, status: NDArray[np.int64], n_re
     """Row 0 is the fit to all records, the others the resamples."""
     bm, bb, bs = med[1:], beta[1:], status[1:]
     failed = ~np.isin(bs, (FIT_OK, FIT_SEPARATED)) & np.isnan(bm)
-    m_lo, m_hi = percentile_interval(np.where(failed, np.nan, bm), confidence)
-    b_lo, b_hi = percentile_interval(np.where(failed | np.isnan(bb), np.nan, bb), confidence)
+    wide = expanded_confidence(confidence, n_records)
+    m_lo, m_hi = percentile_interval(np.where(failed, np.nan, bm), wide)
+    b_lo, b_hi = percentile_interval(np.where(failed | np.isnan(bb), np.nan, bb), wide)
     return FragilityEstimate(float(med[0]), float(beta[0]), int(status[0]),
                              (float(m_lo), float(m_hi)), (float(b_lo), float(b_hi)),
                              np.where(failed, np.nan, bm), bb, n_records, int(failed.sum()),

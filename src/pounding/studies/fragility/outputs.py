@@ -8,7 +8,8 @@
 * ``ida.csv`` — every run in readable units (record, level, gap, demands);
 * ``gap.csv`` — the gaps for the target probability and the code gaps at the gap level,
   each with its probability of pounding;
-* ``needed_gaps.csv`` — the gap each record needs at each level [m];
+* ``needed_gaps.csv`` — the gap each record needs at each level [m]: a column
+  ``gap_m_at_<level>_g`` per level;
 * figures (:mod:`pounding.plot.fragility`): ``ida.png``, ``fragility.png``,
   ``pounding_vs_gap.png``, ``pounding_surface.png``.
 
@@ -151,7 +152,7 @@ def _gap_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
         (f"P = {ga.target:g}: records", ga.gap_empirical, math.nan, math.nan)]
     rows += [(f"{k} (mean simulated peaks)", v, math.nan, math.nan)
              for k, v in ga.needed.code.items()]
-    rows += [(f"simulated with contact: {g:g} m", float(g), math.nan, math.nan)
+    rows += [(f"simulated with contact: {1000 * g:g} mm", float(g), math.nan, math.nan)
              for g in plan.gaps if g is not None]
     out = []
     for name, g, lo, hi in rows:
@@ -226,7 +227,7 @@ def _write_all(plan: StudyPlan, a: FragilityAnalysis, out: Path, figures: bool,
     ng = a.gap.needed
     write_text(out / "needed_gaps.csv", _csv(
         [[name] + list(row) for name, row in zip(plan.records, ng.needed)],
-        ["record"] + [f"{x:g}" for x in plan.levels]))
+        ["record"] + [f"gap_m_at_{x:g}_g" for x in plan.levels]))
     write_text(out / STUDY_FILE, json.dumps(summary(plan, a), indent=2, allow_nan=False) + "\n")
     if figures:
         from pounding.plot import save_figure

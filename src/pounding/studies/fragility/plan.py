@@ -145,8 +145,10 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
         The study file, or a validated one (then ``folder`` is where its relative paths
         start).
     out : path, optional
-        The output folder (default ``out`` of the file, else ``<name>-results``, relative
-        to the study file).
+        The output folder (default ``out`` of the file, relative to it, else ``<study file
+        stem>-results`` in the current folder,
+        :func:`pounding.output_folder.default_out_dir`; ``<name>-results`` in the current
+        folder for a study not read from a file).
 
     Raises
     ------
@@ -221,7 +223,8 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
                    f"{'second' if base_cfg.record.second else 'second_file'}) is not used"
                    if base_cfg.record.two_components else ""))
     base["record"] = rec
-    plan = StudyPlan(config=cfg, source=source, out=_out_folder(cfg, here, out, where),
+    plan = StudyPlan(config=cfg, source=source,
+                     out=_out_folder(cfg, here, out, where, Path(study) if source else None),
                      records=names, source_key=key,
                      sources=sources, levels=levels,
                      gaps=list(cfg.gap.values) if cfg.gap.values else [None],
@@ -254,18 +257,21 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
 
 
 def _out_folder(cfg: StudyConfig, here: Path, out: str | os.PathLike[str] | None,
-                where: str) -> Path:
+                where: str, file: Path | None) -> Path:
     """The output folder: ``out`` given (the command line's ``--out``), else ``out`` of the
     study file — inside the file's folder (:func:`pounding.io.study_out`) — else
-    ``<name>-results`` beside the file; the name is a label (:func:`pounding.io.check_label`).
+    ``<file stem>-results`` in the current folder
+    (:func:`pounding.output_folder.default_out_dir`; ``<name>-results`` for a study not read
+    from a file); the name is a label (:func:`pounding.io.check_label`).
     """
     from pounding.io import check_label, study_out
+    from pounding.output_folder import default_out_dir
 
     name = check_label(cfg.name, where)
     if out is not None:
         return Path(out)
     if cfg.out is None:
-        return here / f"{name}-results"
+        return default_out_dir(file if file is not None else f"{name}.toml")
     folder, refused = study_out(here, cfg.out, where)
     if refused is not None:
         raise ValueError(refused)

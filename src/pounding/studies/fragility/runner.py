@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -14,9 +13,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from pounding.progress import Progress
 from pounding.studies.fragility.plan import StudyPlan, plan_study
 
-__all__ = ["NeededGaps", "StudyOutcome", "needed_gaps", "run_study"]
+__all__ = ["FragilityOutcome", "NeededGaps", "needed_gaps", "run_study"]
 
 FloatArray = NDArray[np.float64]
 
@@ -87,7 +87,7 @@ def needed_gaps(plan: StudyPlan) -> NeededGaps:
 
 
 @dataclass(frozen=True)
-class StudyOutcome:
+class FragilityOutcome:
     """What :func:`run_study` did: the plan, the sweep's outcome, the analysis, the files
     written and the seconds taken (whole study; the sweep; gaps; analysis and outputs)."""
 
@@ -99,16 +99,40 @@ class StudyOutcome:
     gap_time: float
     analysis_time: float
 
+    @property
+    def out_dir(self) -> Path:
+        """The output folder."""
+        return self.plan.out
 
-def run_study(study: str | os.PathLike[str] | StudyPlan, out: str | os.PathLike[str] | None
-              = None, *, scheduler: str | None = None, n_workers: int | None = None,
-              batch_size: int | None = None, overwrite: bool = False, figures: bool = True,
-              progress: Callable[[int, int], None] | None = None) -> StudyOutcome:
-    """Run a study and write its folder.
 
+def run_study(input: str | os.PathLike[str] | StudyPlan,
+              out: str | os.PathLike[str] | None = None, *, overwrite: bool = False,
+              figures: bool | None = None, progress: Progress | None = None,
+              scheduler: str | None = None, n_workers: int | None = None,
+              batch_size: int | None = None) -> FragilityOutcome:
+    """Run a fragility study and write its folder.
+
+    The first arguments are those of every runner, in the same order (:func:`pounding.run`).
     Its runs are a sweep (:func:`pounding.studies.sweep.run_sweep`): a second run of the
     same study does only the runs missing and redoes the analysis; ``overwrite`` starts
     afresh. Options not given are taken from the study's ``[run]`` table.
+
+    Parameters
+    ----------
+    input : path-like or StudyPlan
+        The study file (``docs/fragility.md``), or its plan (:func:`plan_study`).
+    out : path-like, optional
+        Output folder (default: ``out`` of the study file, relative to it, else ``<study
+        file stem>-results`` in the current folder).
+    overwrite : bool
+        Start afresh: discard the runs saved in the folder (only files pounding wrote).
+    figures : bool, optional
+        Draw the figures (IDA, fragility, gap); default yes.
+    progress : Progress, optional
+        Called as ``progress(done, total)``: runs finished (before and during this call)
+        and runs in all (:class:`pounding.progress.Progress`).
+    scheduler, n_workers, batch_size
+        As :func:`~pounding.studies.sweep.run_sweep` (defaults from ``[run]``).
 
     Raises
     ------
@@ -122,7 +146,7 @@ def run_study(study: str | os.PathLike[str] | StudyPlan, out: str | os.PathLike[
     from pounding.studies.sweep import load_results, run_sweep
 
     start = time.perf_counter()
-    plan = study if isinstance(study, StudyPlan) else plan_study(study, out=out)
+    plan = input if isinstance(input, StudyPlan) else plan_study(input, out=out)
     if out is not None:
         plan.out = Path(out)
     r = plan.config.run
@@ -131,12 +155,12 @@ def run_study(study: str | os.PathLike[str] | StudyPlan, out: str | os.PathLike[
     t0 = time.perf_counter()
     gaps = needed_gaps(plan)
     t1 = time.perf_counter()
-    res = run_sweep(plan.sweep, plan.out, scheduler=scheduler or r.scheduler,
-                    n_workers=n_workers or r.workers, batch_size=batch_size,
-                    overwrite=overwrite, progress=progress)
+    res = run_sweep(plan.sweep, plan.out, overwrite=overwrite, progress=progress,
+                    scheduler=scheduler or r.scheduler, n_workers=n_workers or r.workers,
+                    batch_size=batch_size)
     t2 = time.perf_counter()
     table = load_results(res.results)
     result = analyse(plan, table, gaps)
-    files = write_outputs(plan, result, figures=figures)
+    files = write_outputs(plan, result, figures=True if figures is None else figures)
     t3 = time.perf_counter()
-    return StudyOutcome(plan, res, result, files, t3 - start, t1 - t0, t3 - t2)
+    return FragilityOutcome(plan, res, result, files, t3 - start, t1 - t0, t3 - t2)

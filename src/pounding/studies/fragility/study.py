@@ -173,7 +173,7 @@ class SpectrumScaling(Section):
 
 
 class SuiteSpec(Section):
-    """``[suite]``: exactly one of ``bundled = true`` (the bundled suite: the ten records
+    """``[suite]``: exactly one of ``bundled = true`` (the bundled suite: the nine records
     of :func:`~pounding.ground_motion.bundled_records`), ``folder`` and ``files`` (relative
     to the study file; ``dt``, ``units`` for files that do not state them); ``duration``
     [s] keeps each record up to that time; ``scaling`` scales the suite to a target

@@ -23,6 +23,7 @@ column except ``wall_time_s`` (:data:`NONDETERMINISTIC_COLUMNS`).
 The modules, one concept each:
 
 * planning — :mod:`~pounding.studies.sweep.plan` (the sweep file, :class:`Sweep`),
+  :mod:`~pounding.studies.sweep.sections` (its keys and tables, validated as a model file's),
   :mod:`~pounding.studies.sweep.cases` (the case tables, case ids),
   :mod:`~pounding.studies.sweep.overrides` (a case applied to the base model),
   :mod:`~pounding.studies.sweep.checks` (what is checked before anything runs);
@@ -35,21 +36,82 @@ The modules, one concept each:
 * storage — :mod:`~pounding.studies.sweep.store` (the output folder: manifest, parts,
   histories), :mod:`~pounding.studies.sweep.table` (``results.parquet``,
   :func:`load_results`).
+
+Names are imported on first use (PEP 562): ``import pounding.studies.sweep.table`` (to read
+a sweep's table) loads neither Dask nor the model, SciPy or numba.
 """
 
-from pounding.studies.sweep.cases import MAX_CASES, Case, case_id
-from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
-from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
-from pounding.studies.sweep.overrides import apply_overrides
-from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep, parse_sweep  # noqa: F401
-from pounding.studies.sweep.runner import SweepInterrupted, SweepOutcome, SweepStopped, run_sweep
-from pounding.studies.sweep.store import (  # noqa: F401  (names of the output folder)
-    HISTORIES_DIR,
-    MANIFEST_FILE,
-    PARTS_DIR,
-    RESULTS_FILE,
-)
-from pounding.studies.sweep.table import NONDETERMINISTIC_COLUMNS, load_results
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+_EXPORTS: dict[str, str] = {
+    "MAX_CASES": "pounding.studies.sweep.cases",
+    "Case": "pounding.studies.sweep.cases",
+    "case_id": "pounding.studies.sweep.cases",
+    "run_case": "pounding.studies.sweep.execute",
+    "warm_up": "pounding.studies.sweep.execute",
+    "FLOOR_MEASURES": "pounding.studies.sweep.measures",
+    "MEASURES": "pounding.studies.sweep.measures",
+    "apply_overrides": "pounding.studies.sweep.overrides",
+    "HISTORY_FORMATS": "pounding.studies.sweep.plan",
+    "Sweep": "pounding.studies.sweep.plan",
+    "load_sweep": "pounding.studies.sweep.plan",
+    "parse_sweep": "pounding.studies.sweep.plan",
+    "SweepInterrupted": "pounding.studies.sweep.runner",
+    "SweepOutcome": "pounding.studies.sweep.runner",
+    "SweepStopped": "pounding.studies.sweep.runner",
+    "run_sweep": "pounding.studies.sweep.runner",
+    # names of the output folder
+    "HISTORIES_DIR": "pounding.studies.sweep.store",
+    "MANIFEST_FILE": "pounding.studies.sweep.store",
+    "PARTS_DIR": "pounding.studies.sweep.store",
+    "RESULTS_FILE": "pounding.studies.sweep.store",
+    "NONDETERMINISTIC_COLUMNS": "pounding.studies.sweep.table",
+    "load_results": "pounding.studies.sweep.table",
+}
+"""Public name → the module that defines it."""
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name from its module on first use (PEP 562)."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pounding.studies.sweep' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # later look-ups do not come back here
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))
+
+
+if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.studies.sweep.cases import MAX_CASES, Case, case_id
+    from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
+    from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
+    from pounding.studies.sweep.overrides import apply_overrides
+    from pounding.studies.sweep.plan import (  # noqa: F401
+        HISTORY_FORMATS,
+        Sweep,
+        load_sweep,
+        parse_sweep,
+    )
+    from pounding.studies.sweep.runner import (
+        SweepInterrupted,
+        SweepOutcome,
+        SweepStopped,
+        run_sweep,
+    )
+    from pounding.studies.sweep.store import (  # noqa: F401  (names of the output folder)
+        HISTORIES_DIR,
+        MANIFEST_FILE,
+        PARTS_DIR,
+        RESULTS_FILE,
+    )
+    from pounding.studies.sweep.table import NONDETERMINISTIC_COLUMNS, load_results
 
 __all__ = [
     "FLOOR_MEASURES",

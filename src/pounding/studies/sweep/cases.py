@@ -62,61 +62,34 @@ def _norm(value: Any, where: str) -> Any:
     return value
 
 
-def _random_cases(table: dict[str, Any], where: str
+def _random_cases(table: Any, where: str
                   ) -> tuple[tuple[str, ...], list[tuple], list[list[Any]]]:
     """The parameters, rows and samples (see :func:`case_rows`) of a ``[random]`` table
-    (``n`` samples drawn with ``seed``)."""
-    t = dict(table)
-    n = t.pop("n", None)
-    seed = t.pop("seed", None)
-    if not isinstance(n, int) or isinstance(n, bool) or n < 1:
-        raise ValueError(f"{where}: random.n: the number of samples, an integer >= 1 "
-                         f"(got {n!r})")
-    if not isinstance(seed, int) or isinstance(seed, bool) or seed < 0:
-        raise ValueError(f"{where}: random.seed: required, an integer >= 0 (got {seed!r})")
+    (:class:`~pounding.studies.sweep.sections.RandomTable`: ``n`` samples drawn with
+    ``seed``)."""
+    n = table.n
     _check_count("random", n, f"n = {n:,}", where)
-    if not t:
-        raise ValueError(f"{where}: random: give at least one parameter, e.g. "
-                         "\"contact.gap\" = [0.0, 0.05]")
     draws: list[Callable[[np.random.Generator], Any]] = []
     choices: dict[int, list[Any]] = {}
-    for key, spec in t.items():
-        w = f"{where}: random.{key}"
-        if isinstance(spec, list):
-            spec = {"uniform": spec}
-        if not isinstance(spec, dict) or len(spec) != 1:
-            raise ValueError(f"{w}: give [low, high] (uniform) or one of {{ uniform = [a, b] }}"
-                             f", {{ log = [a, b] }}, {{ int = [a, b] }}, {{ choice = [...] }} "
-                             f"(got {spec!r})")
-        (kind, arg), = spec.items()
+    for key, dist in table.parameters.items():
+        kind, arg = dist.kind, dist.argument
         if kind == "choice":
-            if not isinstance(arg, list) or not arg:
-                raise ValueError(f"{w}: choice needs a non-empty list (got {arg!r})")
-            choices[len(draws)] = [_norm(v, w) for v in arg]
+            choices[len(draws)] = [_norm(v, f"{where}: random.{key}") for v in arg]
             draws.append(lambda g, a=arg: a[int(g.integers(len(a)))])
-            continue
-        if (not isinstance(arg, list) or len(arg) != 2
-                or not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in arg)
-                or not arg[0] < arg[1]):
-            raise ValueError(f"{w}: {kind} needs [low, high] with low < high (got {arg!r})")
-        lo, hi = arg
-        if kind == "uniform":
-            draws.append(lambda g, a=float(lo), b=float(hi): float(g.uniform(a, b)))
+        elif kind == "uniform":
+            draws.append(lambda g, a=float(arg[0]), b=float(arg[1]): float(g.uniform(a, b)))
         elif kind == "log":
-            if lo <= 0:
-                raise ValueError(f"{w}: log needs low > 0 (got {arg!r})")
-            draws.append(lambda g, a=math.log(lo), b=math.log(hi): float(math.exp(g.uniform(a, b))))
-        elif kind == "int":
-            draws.append(lambda g, a=int(lo), b=int(hi): int(g.integers(a, b, endpoint=True)))
-        else:
-            raise ValueError(f"{w}: unknown distribution {kind!r}; use uniform, log, int or "
-                             "choice")
-    gen = np.random.Generator(np.random.PCG64(seed))
+            draws.append(lambda g, a=math.log(arg[0]), b=math.log(arg[1]):
+                         float(math.exp(g.uniform(a, b))))
+        else:  # int
+            draws.append(lambda g, a=int(arg[0]), b=int(arg[1]):
+                         int(g.integers(a, b, endpoint=True)))
+    gen = np.random.Generator(np.random.PCG64(table.seed))
     rows = [tuple(d(gen) for d in draws) for _ in range(n)]
     # the values to check: every choice, and the smallest and largest number drawn
     samples = [choices[j] if j in choices else [min(r[j] for r in rows), max(r[j] for r in rows)]
                for j in range(len(draws))]
-    return tuple(t), rows, samples
+    return tuple(table.parameters), rows, samples
 
 
 def _check_count(kind: str, n: int, how: str, where: str) -> None:
@@ -127,7 +100,7 @@ def _check_count(kind: str, n: int, how: str, where: str) -> None:
                          "sample it with [random]")
 
 
-def case_rows(kind: str, table: dict[str, Any], where: str
+def case_rows(kind: str, table: Any, where: str
               ) -> tuple[tuple[str, ...], list[tuple], list[list[Any]]]:
     """The parameters, the rows of values and the values to check of a case table.
 
@@ -138,8 +111,10 @@ def case_rows(kind: str, table: dict[str, Any], where: str
     ----------
     kind : {"grid", "list", "random"}
         Which table: every combination, columns zipped, or random samples.
-    table : dict
-        The table as read from the sweep file.
+    table : dict or RandomTable
+        The table, validated (:mod:`~pounding.studies.sweep.sections`): for ``grid`` and
+        ``list`` each parameter's non-empty list of values, for ``random`` a
+        :class:`~pounding.studies.sweep.sections.RandomTable`.
     where : str
         Prefix of error messages (the sweep file).
 
@@ -156,20 +131,13 @@ def case_rows(kind: str, table: dict[str, Any], where: str
     Raises
     ------
     ValueError
-        A malformed table or one of too many cases, one line naming the key.
+        A table of too many cases, or a ``[list]`` whose columns differ in length: one
+        line naming the table.
     """
     if kind == "random":
         return _random_cases(table, where)
     params = tuple(table)
-    if not params:
-        raise ValueError(f"{where}: [{kind}] is empty; give e.g. \"contact.gap\" = [0.01, "
-                         "0.02]")
-    cols = []
-    for key, vals in table.items():
-        if not isinstance(vals, list) or not vals:
-            raise ValueError(f"{where}: {kind}.{key}: a non-empty list of values "
-                             f"(got {vals!r})")
-        cols.append([_norm(v, f"{where}: {kind}.{key}") for v in vals])
+    cols = [[_norm(v, f"{where}: {kind}.{key}") for v in vals] for key, vals in table.items()]
     if kind == "grid":
         _check_count(kind, math.prod(len(c) for c in cols),
                      " × ".join(f"{len(c):,}" for c in cols) + " values", where)

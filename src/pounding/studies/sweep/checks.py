@@ -3,20 +3,22 @@ value of every parameter has the right type, and no case is too large for memory
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
 
-from pounding.studies.sweep.cases import _canon
+from pounding.studies.sweep.cases import Case, _canon
 from pounding.studies.sweep.overrides import apply_overrides
 
-if TYPE_CHECKING:
-    from pounding.studies.sweep.plan import Sweep
 
-
-def _check_path(path: str, base: dict[str, Any], where: str) -> None:
-    """Fail fast on a parameter path that names no key of a model file."""
+def _check_path(path: str, base: dict[str, Any], where: str, table: str = "") -> None:
+    """Fail fast on a parameter path that names no key of a model file (the message names
+    it under its ``table``: ``grid.contact.gapp: unknown key 'gapp'; …``)."""
     from pydantic import BaseModel
 
     from pounding.config import RunConfig
+
+    named = f"{table}.{path}" if table else path
 
     model: Any = RunConfig
     node: Any = base
@@ -28,25 +30,25 @@ def _check_path(path: str, base: dict[str, Any], where: str) -> None:
                 node = node[0] if node else None
                 continue
             if not part.isdigit() or int(part) >= len(node):
-                raise ValueError(f"{where}: {path}: {at}: need an index 0 … {len(node) - 1} "
+                raise ValueError(f"{where}: {named}: {at}: need an index 0 … {len(node) - 1} "
                                  "or * (every one)")
             node = node[int(part)]
             continue
         if not (isinstance(model, type) and issubclass(model, BaseModel)):
-            raise ValueError(f"{where}: {path}: {'.'.join(parts[:i])} has no keys")
+            raise ValueError(f"{where}: {named}: {'.'.join(parts[:i])} has no keys")
         fields = model.model_fields
         if part not in fields:
             import difflib
             close = difflib.get_close_matches(part, list(fields), n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
-            raise ValueError(f"{where}: {path}: unknown key {part!r}{hint} (keys here: "
+            raise ValueError(f"{where}: {named}: unknown key {part!r}{hint} (keys here: "
                              f"{', '.join(sorted(fields))})")
         model = _unwrap(fields[part].annotation)
         node = node.get(part) if isinstance(node, dict) else None
         if isinstance(node, list) and i == len(parts) - 1:
             continue
         if node is None and i < len(parts) - 1 and isinstance(model, list):
-            raise ValueError(f"{where}: {path}: the base model has no {at}")
+            raise ValueError(f"{where}: {named}: the base model has no {at}")
         if isinstance(model, list):
             model = model[0]
             if i < len(parts) - 1 and not isinstance(node, list):
@@ -102,15 +104,16 @@ def _errors_text(exc: Any, errors: list[Any]) -> str:
     return format_validation_error(sub).replace("\n", "; ")
 
 
-def _validate(sweep: Sweep, values: tuple[Any, ...]) -> tuple[Any, Any]:
+def _validate(base: dict[str, Any], base_dir: Path, params: Sequence[str],
+              values: tuple[Any, ...]) -> tuple[Any, Any]:
     """``(config, None)`` for a case that validates, else ``(None, the ValidationError)``."""
     from pydantic import ValidationError
 
     from pounding.config import RunConfig
 
-    data = apply_overrides(sweep.base, sweep.params, values)
+    data = apply_overrides(base, params, values)
     try:
-        return RunConfig.model_validate(data, context={"base_dir": sweep.base_dir}), None
+        return RunConfig.model_validate(data, context={"base_dir": base_dir}), None
     except ValidationError as exc:
         return None, exc
 
@@ -147,7 +150,9 @@ def _check_size(cfg: Any, label: str, seen: set[str]) -> None:
         raise ValueError(f"{label}: {exc}") from None
 
 
-def check_cases(sweep: Sweep, samples: list[list[Any]], where: str, kind: str) -> None:
+def check_cases(base: dict[str, Any], base_dir: Path, params: Sequence[str],
+                cases: Sequence[Case], samples: list[list[Any]], where: str,
+                kind: str) -> None:
     """Check the cases of a sweep before any runs, without making every case.
 
     Every value of every parameter (``samples``, see :func:`.cases.case_rows`) is put,
@@ -160,8 +165,14 @@ def check_cases(sweep: Sweep, samples: list[list[Any]], where: str, kind: str) -
 
     Parameters
     ----------
-    sweep : Sweep
-        The sweep, its cases made.
+    base : dict
+        The base model configuration as plain data (validated).
+    base_dir : Path
+        Where relative paths of the base model start.
+    params : sequence of str
+        The swept parameters (dotted paths).
+    cases : sequence of Case
+        The cases, in order.
     samples : list of list
         Per parameter, the values to check.
     where : str
@@ -176,18 +187,18 @@ def check_cases(sweep: Sweep, samples: list[list[Any]], where: str, kind: str) -
     """
     from pounding.config import format_validation_error
 
-    if not sweep.cases:
+    if not cases:
         raise ValueError(f"{where}: the sweep has no cases")
-    first = sweep.cases[0].values
+    first = cases[0].values
     sized: set[str] = set()
-    for j, p in enumerate(sweep.params):
+    for j, p in enumerate(params):
         done: set[str] = set()
         for v in samples[j]:
             key = _canon(v)
             if key in done:
                 continue
             done.add(key)
-            cfg, exc = _validate(sweep, first[:j] + (v,) + first[j + 1:])
+            cfg, exc = _validate(base, base_dir, params, first[:j] + (v,) + first[j + 1:])
             label = f"{where}: {kind}.{p} = {_canon(v)}"
             if exc is not None:
                 from pounding.config.errors import meant_elsewhere
@@ -201,7 +212,7 @@ def check_cases(sweep: Sweep, samples: list[list[Any]], where: str, kind: str) -
                     raise ValueError(f"{label}: {_errors_text(exc, bad)}")
             else:
                 _check_size(cfg, label, sized)
-    _, exc = _validate(sweep, first)  # unknown keys elsewhere than under a parameter
+    _, exc = _validate(base, base_dir, params, first)  # unknown keys not under a parameter
     if exc is not None and any(e.get("type") == "extra_forbidden"
                                for e in exc.errors(include_url=False)):
         raise ValueError(f"{where}: case 0: "

@@ -18,7 +18,7 @@ import multiprocessing
 import os
 import signal
 import threading
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator
 from typing import Any
 
 __all__ = ["QUIET_INTERVALS", "SCHEDULER_TIMEOUT", "WORKER_MALLOC_ENV", "WORKER_PRELOAD"]
@@ -31,7 +31,10 @@ also how long a client tries to reconnect to a scheduler it lost."""
 WORKER_MALLOC_ENV: dict[str, int] = {"MALLOC_TRIM_THRESHOLD_": 1 << 30,
                                      "MALLOC_MMAP_THRESHOLD_": 1 << 27}
 """glibc's settings in the local cluster's workers (see :func:`_local_config`): freed
-memory is kept for reuse, so a case's output arrays do not fault in afresh."""
+memory is kept for reuse, so a case's output arrays do not fault in afresh. The worker
+server makes them with ``mallopt`` (:mod:`~pounding.studies.sweep.worker_preload`, the same
+parameters as these environment variables; its workers inherit them), and the workers'
+environment names them."""
 
 
 WORKER_PRELOAD = "pounding.studies.sweep.worker_preload"
@@ -148,44 +151,143 @@ def _forks_workers() -> bool:
     return "forkserver" in multiprocessing.get_all_start_methods()
 
 
+SERVER_IDLE = 120.0
+"""Seconds the worker server (:func:`_start_worker_server`) waits for another sweep of this
+process before it stops."""
+
+_SERVER_LOCK = threading.Lock()
+_server: Any = None
+"""The sweep's own fork server (a ``multiprocessing.forkserver.ForkServer``), not the
+process's: None until the first local cluster."""
+_idle_timer: threading.Timer | None = None
+
+
 @contextlib.contextmanager
-def _environ(values: Mapping[str, object]) -> Iterator[None]:
-    """These environment variables set while the block runs (for the processes it starts)."""
-    old = {k: os.environ.get(k) for k in values}
-    os.environ.update({k: str(v) for k, v in values.items()})
+def _start_method_kept() -> Iterator[None]:
+    """The start method of ``multiprocessing`` in this process as it was, after the block:
+    not chosen if it was not (``multiprocessing`` fixes it the first time it prepares a
+    child process, ``spawn.get_preparation_data``; it is chosen again at its next use)."""
+    method = multiprocessing.get_start_method(allow_none=True)
     try:
         yield
     finally:
-        for k, v in old.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
+        if method is None:
+            with contextlib.suppress(AttributeError):
+                multiprocessing.context._default_context._actual_context = None  # type: ignore[attr-defined]
 
 
 def _start_worker_server() -> None:
     """Start the process the local cluster's workers will be forked from, if it is not
     running yet: it imports :data:`WORKER_PRELOAD` (Dask's worker, the sweep's worker
-    side, the compiled kernel) while this process goes on, and lives as long as this
-    process, for its later sweeps.
+    side, the compiled kernel; glibc's settings :data:`WORKER_MALLOC_ENV`) while this
+    process goes on, and serves the later sweeps of this process that start within
+    :data:`SERVER_IDLE` seconds of the last one's end; then it stops.
 
     Each worker then starts with its imports done and the kernel loaded, instead of
     spawning a fresh Python that imports Dask and pounding and loads the kernel on its own
     (0.35 s and 0.47 s a worker on the project's machine at a quiet moment, 2026-11-25):
-    the work is done once, beside the client's own start (its ``import distributed``), and
-    not again for a later sweep of this process.
-    The server starts with :data:`WORKER_MALLOC_ENV` (glibc reads it when a process starts,
-    and the workers inherit the server's allocator) and with SIGINT held back, as the
-    workers must be (:func:`_sigint_held`). Nothing happens where Python has no fork server
-    (:func:`_forks_workers`).
+    the work is done once, beside the client's own start (its ``import distributed``).
+
+    The server is the sweep's own, not the fork server of ``multiprocessing`` in this
+    process: that one is lent to Dask only while a local cluster runs
+    (:func:`_lend_worker_server`), then given back as it was — its preload list, and its
+    server if it had one. Nothing else of this process changes: the allocator's settings
+    are made inside the server (this process's environment is not touched), and SIGINT is
+    held back only in the thread that starts it, while it starts (the server and the
+    workers forked from it keep it held, :func:`_sigint_held`). Nothing happens where
+    Python has no fork server (:func:`_forks_workers`).
     """
+    global _server, _idle_timer
     if not _forks_workers():
         return
     from multiprocessing import forkserver
 
-    multiprocessing.get_context("forkserver").set_forkserver_preload([WORKER_PRELOAD])
-    with _environ(WORKER_MALLOC_ENV), _sigint_held():
-        forkserver.ensure_running()
+    with _SERVER_LOCK:
+        if _idle_timer is not None:
+            _idle_timer.cancel()
+            _idle_timer = None
+        if _lent:  # running, lent to a local cluster of another thread
+            return
+        if _server is None:
+            _server = forkserver.ForkServer()
+        _server.set_forkserver_preload([WORKER_PRELOAD])
+        with _sigint_held(), _start_method_kept():
+            _server.ensure_running()
+
+
+def worker_server_pid() -> int | None:
+    """The process id of the worker server (:func:`_start_worker_server`); None if none
+    runs."""
+    from multiprocessing import forkserver
+
+    with _SERVER_LOCK:
+        # while a local cluster runs, multiprocessing's fork server holds its state
+        server = forkserver._forkserver if _lent else _server  # type: ignore[attr-defined]
+        return None if server is None else server._forkserver_pid
+
+
+def stop_worker_server() -> None:
+    """Stop the worker server now, if it runs and no local cluster uses it (it also stops
+    by itself, :data:`SERVER_IDLE` seconds after a sweep, and with this process)."""
+    global _idle_timer
+    with _SERVER_LOCK:
+        if _idle_timer is not None:
+            _idle_timer.cancel()
+            _idle_timer = None
+        if _server is not None and _lent == 0:
+            _server._stop()
+
+
+def _swap_servers(a: Any, b: Any) -> None:
+    """Exchange the state of two fork servers (their process, address and preload list);
+    each keeps its own lock."""
+    for key in (set(vars(a)) | set(vars(b))) - {"_lock"}:
+        va, vb = vars(a).get(key), vars(b).get(key)
+        setattr(a, key, vb)
+        setattr(b, key, va)
+
+
+_lent = 0
+"""How many local clusters of this process have the worker server lent (sweeps in several
+threads at once share it)."""
+
+
+@contextlib.contextmanager
+def _lend_worker_server() -> Iterator[None]:
+    """The fork server of ``multiprocessing`` is the worker server while the block runs.
+
+    Dask's nanny forks its worker from ``multiprocessing.get_context("forkserver")``, whose
+    server is one per process: the worker server's state takes its place while a local
+    cluster runs, and the process's own (its preload list, its server if any) is back
+    after it. Dask names its own preload list on the server it is lent; the worker server
+    keeps :data:`WORKER_PRELOAD`. It stops :data:`SERVER_IDLE` seconds after the last
+    cluster unless another sweep starts.
+    """
+    global _idle_timer, _lent
+    if not _forks_workers():
+        yield
+        return
+    from multiprocessing import forkserver
+
+    _start_worker_server()  # (at once if the sweep started it already)
+    own = forkserver._forkserver  # type: ignore[attr-defined]
+    with own._lock, _SERVER_LOCK:
+        if _lent == 0:
+            _swap_servers(own, _server)
+        _lent += 1
+    try:
+        yield
+    finally:
+        with own._lock, _SERVER_LOCK:
+            _lent -= 1
+            if _lent == 0:
+                _swap_servers(own, _server)
+                _server.set_forkserver_preload([WORKER_PRELOAD])
+                if _idle_timer is not None:
+                    _idle_timer.cancel()
+                _idle_timer = threading.Timer(SERVER_IDLE, stop_worker_server)
+                _idle_timer.daemon = True
+                _idle_timer.start()
 
 
 def _connect(scheduler: str) -> Any:
@@ -215,7 +317,8 @@ def _local_config() -> Any:
     # thread each 10 ms, is measurable on ms-long cases: off. So is the housekeeping of an
     # idle cluster, about 5 % of a core (QUIET_INTERVALS). The workers are forked from the
     # server of _start_worker_server where there is one (the nanny's MALLOC_* settings then
-    # do not reach glibc, which reads them when a process starts: the server's do).
+    # do not reach glibc, which reads them when a process starts: the server sets them
+    # with mallopt, and its workers inherit them).
     environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}))
     environ.update(WORKER_MALLOC_ENV)
     method = "forkserver" if _forks_workers() else "spawn"
@@ -223,6 +326,36 @@ def _local_config() -> Any:
                             "distributed.worker.multiprocessing-method": method,
                             "distributed.nanny.pre-spawn-environ": environ,
                             **QUIET_INTERVALS})
+
+
+_DASK_ENVIRON = ("PYTHONHASHSEED", "__DASK_PARENT_PID")
+"""Environment variables Dask's nanny sets in the process that starts its workers, beside
+those of ``distributed.nanny.pre-spawn-environ``."""
+
+
+@contextlib.contextmanager
+def _process_state_kept() -> Iterator[None]:
+    """Put back, after the block, what a local cluster changes in this process.
+
+    Dask's nanny sets its ``distributed.nanny.pre-spawn-environ`` (one BLAS/OpenMP thread,
+    glibc's settings), ``PYTHONHASHSEED`` and ``__DASK_PARENT_PID`` in ``os.environ`` before
+    it starts a worker, for the worker to inherit; and ``multiprocessing`` fixes the start
+    method of this process the first time it prepares a child process
+    (:func:`_start_method_kept`). Both are as they were after the block (while it runs,
+    they are Dask's and multiprocessing's)."""
+    import dask
+
+    keys = {*dask.config.get("distributed.nanny.pre-spawn-environ", {}), *_DASK_ENVIRON}
+    environ = {k: os.environ.get(k) for k in keys}
+    try:
+        with _start_method_kept():
+            yield
+    finally:
+        for key, value in environ.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
 
 
 _CLIENT_LOGGERS = ("distributed", "distributed.client", "tornado", "tornado.application")
@@ -265,12 +398,13 @@ def _client(scheduler: str | None, n_workers: int | None) -> Iterator[Any]:
         lg.setLevel(logging.CRITICAL)
     cluster = client = None
     try:
-        with contextlib.nullcontext() if scheduler else _local_config():
+        with (contextlib.nullcontext() if scheduler else _local_config(),
+              contextlib.nullcontext() if scheduler else _process_state_kept(),
+              contextlib.nullcontext() if scheduler else _lend_worker_server()):
             try:
                 if scheduler:
                     client = _connect(scheduler)
                 else:
-                    _start_worker_server()  # (at once if the sweep started it already)
                     # the workers log nothing below CRITICAL: a sweep reports its own
                     # failures, and a worker stopped with its cluster may log an error.
                     # The scheduler's HTTP server (None would still mean 0.0.0.0:8787, and

@@ -1,7 +1,9 @@
 """The sweep file: read, validated and turned into a :class:`Sweep` (base model and cases).
 
-Nothing runs here: :func:`parse_sweep` validates and builds the base model, reads the case
-table (:mod:`~pounding.studies.sweep.cases`), checks every parameter path and the cases
+Nothing runs here: :func:`parse_sweep` validates the file's keys and tables
+(:mod:`~pounding.studies.sweep.sections`, one line per problem as for a model file),
+validates and builds the base model, makes the cases
+(:mod:`~pounding.studies.sweep.cases`), checks every parameter path and the cases
 (:mod:`~pounding.studies.sweep.checks`), and fixes the output folder and options.
 """
 
@@ -16,6 +18,7 @@ from typing import Any
 from pounding.io import check_label, read_toml, study_out
 from pounding.studies.sweep.cases import Case, _canon, case_rows, unique_cases
 from pounding.studies.sweep.checks import _check_path, check_cases
+from pounding.studies.sweep.sections import SweepFile
 
 __all__ = ["HISTORY_FORMATS", "Sweep", "load_sweep", "parse_sweep"]
 
@@ -35,8 +38,9 @@ class Sweep:
     params: tuple[str, ...]
     cases: list[Case]
     out: Path
-    """The output folder: ``out`` of the file (relative to it), else ``<name>-results`` in
-    the current folder."""
+    """The output folder: ``out`` of the file (relative to it), else ``<file
+    stem>-results`` in the current folder (:func:`pounding.output_folder.default_out_dir`;
+    ``<name>-results`` for a sweep not read from a file)."""
     histories: str | None = None
     batch_size: int | None = None
     source: Path | None = None
@@ -62,71 +66,55 @@ def parse_sweep(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
     Raises
     ------
     ValueError
-        One message naming the key at fault: a bad sweep table, an unknown parameter
-        path, or an invalid base model (its own validation message).
+        One line per problem naming the key at fault: a bad key or table of the sweep file
+        (:class:`~pounding.studies.sweep.sections.SweepFile`), an unknown parameter path, a
+        value of the wrong type for its key, or an invalid base model (its own validation
+        message).
     """
-    from pounding.config import SWEEP_CASE_TABLES, load_config, parse_config
+    from pydantic import ValidationError
+
+    from pounding.config import load_config, parse_config
+    from pounding.config.errors import format_validation_error
 
     here = Path(base_dir).resolve()
-    known = {"name", "base", "out", "histories", "batch_size", *SWEEP_CASE_TABLES}
-    extra = sorted(set(data) - known)
-    if extra:
-        raise ValueError(f"{where}: unknown key(s) {', '.join(extra)}; keys of a sweep file: "
-                         f"{', '.join(sorted(known))}")
-    base = data.get("base")
-    if isinstance(base, str):
-        cfg = load_config(here / base)
-        model_dir = (here / base).resolve().parent
-    elif isinstance(base, dict):
-        cfg = parse_config(base, base_dir=here, where=f"{where}: base")
-        model_dir = here
+    try:
+        spec = SweepFile.model_validate(data)
+    except ValidationError as exc:
+        raise ValueError(format_validation_error(exc, prefix=f"{where}: ",
+                                                 root=SweepFile)) from None
+    # a name is a label: it never leads the default folder elsewhere
+    name = check_label(spec.name, where)
+    if isinstance(spec.base, str):
+        cfg = load_config(here / spec.base)
+        model_dir = (here / spec.base).resolve().parent
     else:
-        raise ValueError(f"{where}: base: required, the model file (base = \"model.toml\", "
-                         f"relative to the sweep file) or an inline [base] table (got {base!r})")
+        cfg = parse_config(spec.base, base_dir=here, where=f"{where}: base")
+        model_dir = here
     base_data = cfg.to_dict(resolve_paths=True)
     base_data.setdefault("output", {})["figures"] = False
 
-    kinds = [k for k in SWEEP_CASE_TABLES if k in data]
-    if len(kinds) != 1:
-        raise ValueError(f"{where}: give exactly one of [grid], [list] and [random] "
-                         f"(got {', '.join(kinds) or 'none'})")
-    kind = kinds[0]
-    table = data[kind]
-    if not isinstance(table, dict):
-        raise ValueError(f"{where}: {kind} must be a table (got {table!r})")
-    params, rows, samples = case_rows(kind, table, where)
+    kind = spec.kind
+    params, rows, samples = case_rows(kind, getattr(spec, kind), where)
     for p in params:
-        _check_path(p, base_data, where)
+        _check_path(p, base_data, where, kind)
     # record files in the cases are relative to the sweep file: make them absolute
     if any(_is_record_file(p) for p in params):
         rows = [tuple(_resolve_value(p, v, here) for p, v in zip(params, r)) for r in rows]
         samples = [[_resolve_value(p, v, here) for v in vals]
                    for p, vals in zip(params, samples)]
     cases = unique_cases(params, rows)
-    hist = data.get("histories", False)
-    if hist is False or hist is None or hist == "none":
-        hist = None
-    elif hist not in HISTORY_FORMATS:
-        raise ValueError(f"{where}: histories: false, \"netcdf\" or \"zarr\" (got {hist!r})")
-    batch = data.get("batch_size")
-    if batch is not None and (not isinstance(batch, int) or isinstance(batch, bool) or batch < 1):
-        raise ValueError(f"{where}: batch_size: an integer >= 1 (got {batch!r})")
     # an ``out`` the file names is relative to the file; by default, as for ``pounding run``,
     # NAME-results in the current folder (never inside a folder of examples one ran)
-    # a name is a label: it never leads the default folder elsewhere
-    name = check_label(data.get("name", "sweep"), where)
-    out = data.get("out")
-    if out is not None and (not isinstance(out, str) or not out or "\0" in out):
-        raise ValueError(f"{where}: out: a folder name (got {out!r})")
     refused = None
-    if out is not None:
-        out_dir, refused = study_out(here, out, where)
+    if spec.out is not None:
+        out_dir, refused = study_out(here, spec.out, where)
     else:
         out_dir = Path.cwd() / f"{name}-results"
     sweep = Sweep(name=name, base=base_data, base_dir=model_dir,
-                  params=params, cases=cases, out=out_dir, histories=hist,
-                  batch_size=batch, duplicates=len(rows) - len(cases), out_refused=refused)
-    check_cases(sweep, samples, where, kind)
+                  params=params, cases=cases, out=out_dir, histories=spec.history_format,
+                  batch_size=spec.batch_size, duplicates=len(rows) - len(cases),
+                  out_refused=refused)
+    check_cases(base_data, model_dir, params, cases, samples, where, kind)
     return sweep
 
 
@@ -136,6 +124,10 @@ def load_sweep(path: str | os.PathLike[str]) -> Sweep:
     data = read_toml(p, "sweep file")
     sweep = parse_sweep(data, base_dir=p.resolve().parent, where=str(p))
     sweep.source = p.resolve()
+    if data.get("out") is None:
+        from pounding.output_folder import default_out_dir
+
+        sweep.out = default_out_dir(p)
     return sweep
 
 

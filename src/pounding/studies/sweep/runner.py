@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from pounding.io import WriteFailed
+from pounding.progress import Progress
 from pounding.studies.sweep.cluster import (
     _auto_batch,
     _batch_sizes,
@@ -25,6 +26,7 @@ from pounding.studies.sweep.cluster import (
     _start_worker_server,
 )
 from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
+from pounding.studies.sweep.extra import require_sweep_packages
 from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
     PARTS_DIR,
@@ -103,6 +105,8 @@ class SweepOutcome:
     """Seconds spent running cases (after the cluster was up) [s]."""
     n_workers: int
     batch_size: int
+    figure: Path | None = None
+    """The figure drawn (``figures=True``), else None."""
 
     @property
     def rate(self) -> float:
@@ -110,19 +114,35 @@ class SweepOutcome:
         return self.n_run / self.run_time if self.run_time > 0 else float("nan")
 
 
-def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
-              *, scheduler: str | None = None, n_workers: int | None = None,
-              batch_size: int | None = None, overwrite: bool = False,
-              histories: str | None | bool = None,
-              progress: Callable[[int, int], None] | None = None) -> SweepOutcome:
+def run_sweep(input: Sweep | str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
+              *, overwrite: bool = False, figures: bool | None = None,
+              progress: Progress | None = None, scheduler: str | None = None,
+              n_workers: int | None = None, batch_size: int | None = None,
+              histories: str | None | bool = None) -> SweepOutcome:
     """Run the missing cases of a sweep and write ``results.parquet``.
+
+    The first arguments are those of every runner, in the same order (:func:`pounding.run`).
 
     Parameters
     ----------
-    sweep : Sweep or path
+    input : Sweep or path
         A sweep (:func:`load_sweep`) or its file.
     out : path-like, optional
-        Output folder (default: ``out`` of the sweep file, relative to it).
+        Output folder (default: ``out`` of the sweep file, relative to it, else
+        ``<sweep file stem>-results`` in the current folder,
+        :func:`pounding.output_folder.default_out_dir`).
+    overwrite : bool
+        Start afresh even if ``out`` holds this sweep (partly) done, or another sweep
+        (only files pounding wrote there are removed).
+    figures : bool, optional
+        Draw the measure against the swept parameters into the folder, as ``pounding plot``
+        does with its defaults: ``peak_contact_force_N`` against the first parameter, the
+        mean over the others (:func:`pounding.plot.sweep.plot_sweep`), in
+        :attr:`SweepOutcome.figure`. Default: no figure (a sweep is drawn as wanted with
+        ``pounding plot`` and ``pounding report``).
+    progress : Progress, optional
+        Called as ``progress(done, total)``: cases finished (before and during this run)
+        and cases in all, as batches finish (:class:`pounding.progress.Progress`).
     scheduler : str, optional
         None: a local Dask cluster (``n_workers`` processes, one thread each);
         ``"tcp://host:8786"``: that Dask scheduler; ``"synchronous"``: in this process.
@@ -130,12 +150,8 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
         Workers of the local cluster (default: the CPU count).
     batch_size : int, optional
         Cases per task (default from the sweep file, else automatic).
-    overwrite : bool
-        Start afresh even if ``out`` holds this sweep (partly) done, or another sweep.
     histories : {"netcdf", "zarr"} or False, optional
         Write every case's time histories (default from the sweep file).
-    progress : callable, optional
-        Called with ``(cases done, cases in all)`` as batches finish.
 
     Returns
     -------
@@ -151,7 +167,9 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     SweepStopped
         The scheduler was lost or a worker failed: the cases finished are saved.
     """
+    sweep = input
     start = time.perf_counter()
+    require_sweep_packages("a sweep", dask=scheduler not in ("synchronous", "sync", "none"))
     if not isinstance(sweep, Sweep):
         sweep = load_sweep(sweep)
     if out is None and sweep.out_refused is not None:
@@ -241,10 +259,29 @@ def run_sweep(sweep: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     except WriteFailed as exc:
         raise WriteFailed(exc.target, f"{exc.reason}; {_saved_text(n_total, n_total, out_dir)}; "
                           "run the sweep again to write the table", exc.errno) from None
+    figure = _draw(out_dir, results) if figures else None
     return SweepOutcome(out_dir=out_dir, results=results, n_cases=n_total,
                         n_run=len(pending), n_errors=n_err,
                         wall_time=time.perf_counter() - start, run_time=run_time,
-                        n_workers=workers, batch_size=bsize)
+                        n_workers=workers, batch_size=bsize, figure=figure)
+
+
+def _draw(out_dir: Path, results: Path) -> Path | None:
+    """The default figure of ``pounding plot`` beside the table, in the folder's manifest;
+    None when no case finished (nothing to draw)."""
+    from pounding.manifest import Manifest
+    from pounding.plot import save_figure
+    from pounding.plot.sweep import default_figure_name, plot_sweep
+    from pounding.studies.sweep.table import load_results
+
+    table = load_results(results)
+    if not (table["status"] == "ok").any():
+        return None
+    fig, x, y = plot_sweep(table)
+    target = out_dir / default_figure_name("peak_contact_force_N", x, y)
+    with Manifest(out_dir).write(target) as tmp:
+        save_figure(fig, tmp)
+    return target
 
 
 def _run_on(client: Any, scheduler: str | None, payload: dict[str, Any],

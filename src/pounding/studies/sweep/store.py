@@ -23,10 +23,12 @@ import json
 import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pounding.manifest import Manifest
-from pounding.studies.sweep.plan import Sweep
+
+if TYPE_CHECKING:
+    from pounding.studies.sweep.plan import Sweep
 
 __all__ = ["HISTORIES_DIR", "MANIFEST_FILE", "PARTS_DIR", "RESULTS_FILE"]
 

@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pounding.studies.sweep.cases import _canon
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
-from pounding.studies.sweep.plan import Sweep
 from pounding.studies.sweep.store import RESULTS_FILE
+
+if TYPE_CHECKING:
+    from pounding.studies.sweep.plan import Sweep
 
 __all__ = ["NONDETERMINISTIC_COLUMNS", "load_results"]
 
@@ -107,6 +109,9 @@ def load_results(path: str | os.PathLike[str], deterministic: bool = False) -> A
     With ``deterministic`` the columns that vary between runs are left out
     (:data:`NONDETERMINISTIC_COLUMNS`): what remains is bit-identical between two runs.
     """
+    from pounding.studies.sweep.extra import require_sweep_packages
+
+    require_sweep_packages("reading a sweep's table", dask=False)
     import pyarrow.parquet as pq
 
     p = Path(path)

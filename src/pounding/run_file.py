@@ -18,17 +18,16 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-
 
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
 from pounding.io import check_writable, write_text
 from pounding.manifest import check_replaceable
-from pounding.output_folder import new_output_folder, remove_stale
+from pounding.output_folder import default_out_dir, new_output_folder, remove_stale
 from pounding.plot.registry import RUN_FIGURES
+from pounding.progress import Progress
 from pounding.result import Result
 
 __all__ = ["OUTPUT_FILES", "FIGURE_FILES", "RunOutput", "default_out_dir", "run", "run_config"]
@@ -76,11 +75,6 @@ class RunOutput:
     wall_time: float
 
 
-def default_out_dir(config_path: str | os.PathLike[str]) -> Path:
-    """``<model file stem>-results`` in the current folder."""
-    return Path(f"{Path(config_path).stem}-results")
-
-
 def _check_target(out_dir: Path, overwrite: bool) -> None:
     if out_dir.exists() or out_dir.is_symlink():
         if not out_dir.is_dir() or out_dir.is_symlink():
@@ -112,62 +106,76 @@ def _write_figures(result: Result, folder: Path, dpi: int) -> dict[str, Path]:
     return out
 
 
-def run_config(cfg: RunConfig, out_dir: str | os.PathLike[str], *,
-               progress: Callable[[float], None] | None = None, overwrite: bool = False,
-               figures: bool | None = None) -> RunOutput:
-    """Simulate an already-loaded configuration and write its outputs into ``out_dir``.
+def run_config(config: RunConfig, out: str | os.PathLike[str], *, overwrite: bool = False,
+               figures: bool | None = None, progress: Progress | None = None) -> RunOutput:
+    """Simulate an already-loaded configuration and write its outputs into ``out``.
 
-    See :func:`run`.
+    See :func:`run` (the same arguments, ``config`` in place of the model file).
     """
     start = time.perf_counter()
-    out = Path(out_dir)
-    if out.name in ("", ".", ".."):
-        raise ValueError(f"out: {out_dir!s} is not a folder name; give e.g. --out results")
-    check_writable(out)
-    _remove_stale(out)
-    _check_target(out, overwrite)
-    model, motion, solver = cfg.build()
-    want_figures = cfg.output.figures if figures is None else figures
+    target = Path(out)
+    if target.name in ("", ".", ".."):
+        raise ValueError(f"out: {out!s} is not a folder name; give e.g. --out results")
+    check_writable(target)
+    _remove_stale(target)
+    _check_target(target, overwrite)
+    model, motion, solver = config.build()
+    want_figures = config.output.figures if figures is None else figures
+    fraction = None
+    if progress is not None:
+        seconds = float(solver["duration"] if solver.get("duration") is not None
+                        else motion.duration)
 
-    with new_output_folder(out, "run", TEMPORARY_HOLDS,
-                           check=lambda: _check_target(out, overwrite)) as tmp:
-        result = simulate(model, motion, progress=progress, **solver)
-        files = result.save(tmp, warnings=cfg.plausibility)
-        source = str(cfg.source) if cfg.source is not None else "(not read from a file)"
+        def fraction(f: float) -> None:
+            progress(f * seconds, seconds)
+
+    with new_output_folder(target, "run", TEMPORARY_HOLDS,
+                           check=lambda: _check_target(target, overwrite)) as tmp:
+        result = simulate(model, motion, progress=fraction, **solver)
+        files = result.save(tmp, warnings=config.plausibility)
+        source = str(config.source) if config.source is not None else "(not read from a file)"
         files["model"] = write_text(
             tmp / OUTPUT_FILES["model"],
-            cfg.to_toml(resolve_paths=True, defaults=True,
-                        header=f"The model file of this run, as pounding read it, with every "
-                               f"default it took written out.\n"
-                               f"Source: {source}\nRe-run: pounding run model.toml"))
+            config.to_toml(resolve_paths=True, defaults=True,
+                           header=f"The model file of this run, as pounding read it, with "
+                                  f"every default it took written out.\n"
+                                  f"Source: {source}\nRe-run: pounding run model.toml"))
         if want_figures:
-            files.update(_write_figures(result, tmp, cfg.output.dpi))
-    files = {k: out / Path(v).name for k, v in files.items()}
-    return RunOutput(out_dir=out, files=files, result=result, config=cfg,
+            files.update(_write_figures(result, tmp, config.output.dpi))
+    files = {k: target / Path(v).name for k, v in files.items()}
+    return RunOutput(out_dir=target, files=files, result=result, config=config,
                      wall_time=time.perf_counter() - start)
 
 
-def run(config_path: str | os.PathLike[str], out_dir: str | os.PathLike[str] | None = None,
-        progress: Callable[[float], None] | None = None, *, overwrite: bool = False,
-        figures: bool | None = None) -> RunOutput:
-    """Load a model file, simulate it and write every output into ``out_dir``.
+def run(input: str | os.PathLike[str], out: str | os.PathLike[str] | None = None, *,
+        overwrite: bool = False, figures: bool | None = None,
+        progress: Progress | None = None) -> RunOutput:
+    """Load a model file, simulate it and write every output into one folder.
+
+    Every runner takes the same first arguments, in this order: :func:`run`,
+    :func:`pounding.studies.sweep.run_sweep`, :func:`pounding.studies.fragility.run_study`,
+    :func:`pounding.studies.mitigation.run_mitigation` (``docs/running.md``).
 
     Parameters
     ----------
-    config_path : path-like
+    input : path-like
         The TOML model file (``docs/running.md``).
-    out_dir : path-like, optional
-        Output folder; default :func:`default_out_dir`. It receives ``timehistories.nc``,
+    out : path-like, optional
+        Output folder; default ``<model file stem>-results`` in the current folder
+        (:func:`pounding.output_folder.default_out_dir`). It receives ``timehistories.nc``,
         ``impacts.csv``, ``summary.json`` (:meth:`pounding.result.Result.save`),
         ``model.toml`` (the configuration as read, record path made absolute) and, unless
         turned off, the PNG figures of the model
         (:func:`pounding.plot.registry.figures_for`: five, six with yielding storeys).
-    progress : callable, optional
-        Called with the fraction done (0 … 1) during the integration.
     overwrite : bool
-        Replace an existing output folder (else it is an error).
+        Replace an existing output folder (else it is an error): only an empty one or an
+        earlier output of pounding, holding nothing but the files its manifest lists.
     figures : bool, optional
-        Write the figures; default ``[output] figures`` of the model file.
+        Write the figures; default ``[output] figures`` of the model file (true if not
+        given).
+    progress : Progress, optional
+        Called as ``progress(done, total)`` during the integration: seconds of ground
+        motion simulated, and in all [s] (:class:`pounding.progress.Progress`).
 
     Returns
     -------
@@ -179,6 +187,6 @@ def run(config_path: str | os.PathLike[str], out_dir: str | os.PathLike[str] | N
         A bad model file (one line per problem), or an output folder that exists.
         Nothing is written then.
     """
-    cfg = load_config(config_path)
-    target = default_out_dir(config_path) if out_dir is None else Path(out_dir)
-    return run_config(cfg, target, progress=progress, overwrite=overwrite, figures=figures)
+    config = load_config(input)
+    target = default_out_dir(input) if out is None else Path(out)
+    return run_config(config, target, overwrite=overwrite, figures=figures, progress=progress)

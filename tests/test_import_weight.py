@@ -1,0 +1,64 @@
+"""What an import or a command's help loads: reading a sweep's table loads neither the model
+nor SciPy nor numba, and ``pounding --help`` / ``pounding run --help`` load no NumPy (each
+checked in a fresh interpreter, so nothing another test imported counts)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+HEAVY = ("numpy", "scipy", "numba", "pandas", "xarray", "matplotlib", "dask", "distributed",
+         "pyarrow", "pounding.model", "pounding.integrate", "pounding.studies.gap")
+
+
+def loaded_by(code: str) -> set[str]:
+    """The modules of :data:`HEAVY` that a fresh interpreter has loaded after ``code``."""
+    probe = (f"{code}\nimport json, sys\n"
+             f"print(json.dumps([m for m in {list(HEAVY)!r} if m in sys.modules]))")
+    proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    return set(json.loads(proc.stdout.strip().splitlines()[-1]))
+
+
+def test_reading_a_sweep_table_loads_no_model_scipy_or_numba() -> None:
+    loaded = loaded_by("import pounding.studies.sweep.table")
+    assert not loaded & {"scipy", "numba", "pounding.model", "pounding.integrate",
+                         "pounding.studies.gap", "dask", "distributed"}, loaded
+
+
+def test_the_studies_package_loads_a_study_only_when_named() -> None:
+    assert not loaded_by("import pounding.studies") & {"numpy", "scipy", "numba"}
+    loaded = loaded_by("from pounding.studies import srss")
+    assert "pounding.studies.gap" in loaded
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["run", "--help"],
+                                  ["sweep", "--help"], ["ellipse", "--help"],
+                                  ["collide", "--help"]])
+def test_help_loads_no_numpy(argv: list[str]) -> None:
+    code = ("from pounding.cli import main\n"
+            f"try:\n    main({argv!r})\nexcept SystemExit:\n    pass\n"
+            "import sys; sys.stdout.flush()")
+    # the help goes to stdout before the probe's line: take the last line only
+    assert loaded_by(code) == set(), argv
+
+
+@pytest.mark.parametrize("package", ["pounding.config", "pounding.studies",
+                                     "pounding.studies.sweep"])
+def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
+    """Each name a package lists is what its module defines (imported on first use), and
+    a name it does not have is an AttributeError naming the package."""
+    import importlib
+
+    module = importlib.import_module(package)
+    for name in module.__all__:
+        value = getattr(module, name)
+        source = importlib.import_module(module._EXPORTS[name])
+        assert value is getattr(source, name), name
+        assert name in dir(module)
+    with pytest.raises(AttributeError, match=f"module '{package}' has no attribute 'nope'"):
+        getattr(module, "nope")
