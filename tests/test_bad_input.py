@@ -203,3 +203,15 @@ def test_the_echoed_model_file_states_every_default_and_runs_the_same(tmp_path, 
     a = np.loadtxt(tmp_path / "out" / "impacts.csv", delimiter=",", skiprows=1, usecols=(1, 2, 5))
     b = np.loadtxt(again / "impacts.csv", delimiter=",", skiprows=1, usecols=(1, 2, 5))
     assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("argv", [
+    ["collide", "hunt-crossley", "--e", "0.65"],   # the law given as a positional
+    ["collide", "--law", "hertz-ish"],             # a choice that is not one
+])
+def test_usage_errors_listing_choices_are_one_line(capsys, argv):
+    capsys.readouterr()
+    code = main(argv)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and err[0].startswith("error: pounding collide: "), err
+    assert "hunt-crossley" in err[0] and "(see 'pounding collide --help')" in err[0]

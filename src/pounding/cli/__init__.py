@@ -70,6 +70,7 @@ def _usage_error(exc: typer.TyperException) -> int:
         return 0
     where = ctx.command_path if ctx is not None else "pounding"
     message = exc.format_message() if hasattr(exc, "format_message") else str(exc)
+    message = " ".join(message.split())  # click lists choices one a line: one line here
     error_line(f"{where}: {message} (see '{where} --help')")
     return int(getattr(exc, "exit_code", EXIT_BAD_INPUT) or EXIT_BAD_INPUT)
 
