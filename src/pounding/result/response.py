@@ -22,6 +22,7 @@ from pounding.result.columns import IMPACT_COLUMNS
 from pounding.result.peaks import peak_abs, sampled_peak
 from pounding.result.storeys import (
     bearing_mask,
+    plan_of,
     plan_storey_forces,
     residual_storey_drift,
     struck_column_shear,
@@ -122,7 +123,7 @@ class Response:
     @property
     def time(self) -> NDArray[np.float64]:
         """Output times [s]."""
-        return np.arange(self.displacement.shape[0]) * self.dt
+        return np.asarray(np.arange(self.displacement.shape[0]) * self.dt, dtype=np.float64)
 
     @property
     def wall_time(self) -> float:
@@ -152,9 +153,9 @@ class Response:
     @cached_property
     def _plan_blocks(self) -> list[tuple[int, int]]:
         """``(first DOF, floors)`` of every building in plan."""
-        return [(int(off), bl.plan.n_floors)
+        return [(int(off), plan.n_floors)
                 for off, bl in zip(self.model.system.offsets, self.model.buildings)
-                if getattr(bl, "plan", None) is not None]
+                if (plan := plan_of(bl)) is not None]
 
     def _storey_stiffness(self) -> NDArray[np.float64]:
         """Storey stiffness [N/m] under every DOF: a shear building's ``k_j``; NaN for a
@@ -194,7 +195,7 @@ class Response:
     @cached_property
     def _plan_forces(self) -> list[tuple[NDArray[np.float64], ...]]:
         """``(V_x, V_y, T)`` histories of every building in plan, (nt, floors) each."""
-        plans = [bl.plan for bl in self.model.buildings if getattr(bl, "plan", None) is not None]
+        plans = [plan for bl in self.model.buildings if (plan := plan_of(bl)) is not None]
         return [plan_storey_forces(plan, self.displacement[:, off: off + 3 * n])
                 for plan, (off, n) in zip(plans, self._plan_blocks)]
 
@@ -215,11 +216,13 @@ class Response:
         storeys (no yield point) and for an isolation bearing (not a storey: its
         displacement is in :attr:`Result.bearings`). The peak drift is :attr:`peak_drift`
         (located inside steps)."""
+        from pounding.structure import MatrixBuilding
+
         out = np.full(self.model.n_dof, np.nan)
         peak = self.peak_drift
         for off, b in zip(self.model.system.offsets, self.model.buildings):
             fy = b.yield_forces
-            if fy is not None:
+            if fy is not None and not isinstance(b, MatrixBuilding):  # (a matrix building's: None)
                 out[off: off + b.n] = peak[off: off + b.n] / (fy / b.stiffnesses)
         out[self.is_bearing] = np.nan
         return out
@@ -260,17 +263,16 @@ class Response:
         NaN: floor to floor, or a column of a building given as matrices, which has no
         storey shear)."""
         out = np.full(len(self.model.contacts), np.nan)
-        struck = [c for c in self.model.contacts if c.struck is not None]
+        struck = [(c.index, c.struck) for c in self.model.contacts if c.struck is not None]
         if not struck:
             return out  # floor to floor only: no storey-shear history needed
         peak_v = peak_abs(self.storey_shear)
         offsets = self.model.system.offsets
-        for c in struck:
-            pt = c.struck
+        for index, pt in struck:
             v = peak_v[offsets[pt.building] + pt.upper]
             if np.isnan(v):
                 continue  # a matrix building's column: no storey shear to compare with
-            out[c.index] = self.peak_column_shear[c.index] / v if v > 0 else np.inf
+            out[index] = self.peak_column_shear[index] / v if v > 0 else np.inf
         return out
 
     # ----------------------------------------------------------------- impacts and peaks

@@ -143,14 +143,15 @@ def building_summary(r: Response) -> list[dict[str, Any]]:
     bearing = r.is_bearing
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
         storeys = []
-        matrices = isinstance(bl, MatrixBuilding)
+        matrices = isinstance(bl, MatrixBuilding)  # (a building in plan too)
+        labels = bl.labels if isinstance(bl, MatrixBuilding) else ()
         ps = plans.get(b)
         for k, j in enumerate(j for j in floor_dofs(bl) if not bearing[off + j]):
             row: dict[str, Any] = {"storey": k + 1}
             if ps is not None:
-                row.update(floor=f"F{j // 3 + 1}", label=bl.labels[j])
+                row.update(floor=f"F{j // 3 + 1}", label=labels[j])
             elif matrices:
-                row.update(floor=f"F{j + 1}", label=bl.labels[j])
+                row.update(floor=f"F{j + 1}", label=labels[j])
             elif bearing[off]:
                 row["floor"] = f"F{j + 1}"  # floor 1 is the base slab
             row.update({"floor_elevation_m": rounded_length(bl.floor_levels[j]),
