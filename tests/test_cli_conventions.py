@@ -290,7 +290,7 @@ def _numeric_except(path: Path, text: set[str]) -> pd.DataFrame:
 def test_every_csv_reads_with_plain_read_csv(tmp_path: Path, capsys: pytest.CaptureFixture[str],
                                              quick_audit: None) -> None:
     """No comment line: pandas (and Excel, R's read.csv) read the header and the numbers."""
-    from pounding.outputs import IMPACTS_CSV_COLUMNS
+    from pounding.result import IMPACTS_CSV_COLUMNS
 
     model = _short_seed(tmp_path, duration=4.0)
     assert main(["run", str(model), "--out", str(tmp_path / "r"), "--no-figures"]) == 0

@@ -47,7 +47,7 @@ def test_help_loads_no_numpy(argv: list[str]) -> None:
     assert loaded_by(code) == set(), argv
 
 
-@pytest.mark.parametrize("package", ["pounding.config", "pounding.studies",
+@pytest.mark.parametrize("package", ["pounding.config", "pounding.result", "pounding.studies",
                                      "pounding.studies.sweep"])
 def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
     """Each name a package lists is what its module defines (imported on first use), and

@@ -332,7 +332,7 @@ def test_plan_storey_forces_by_hand() -> None:
     from rigid-floor kinematics, k (u_x − (y_e − y_c) θ) along x and k (u_y + (x_e − x_c) θ)
     along y, summed into V_x, V_y and their moment about the centre of mass T — which is
     also K q, the restoring force of the one floor."""
-    from pounding.result_storeys import plan_storey_forces
+    from pounding.result import plan_storey_forces
     from pounding.structure.plan import LateralElement, PlanBuilding
 
     kx, ky = 5e7, 5e7

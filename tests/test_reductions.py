@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pounding.reductions import abs_max_columns, abs_max_drift, energy_residual_max
+from pounding.result import abs_max_columns, abs_max_drift, energy_residual_max
 
 
 def _bits(x) -> bytes:

@@ -21,8 +21,7 @@ from pounding.integrate import simulate
 from pounding.manifest import MANIFEST_FILE
 from pounding.plot.loops import plot_hysteresis
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
-from pounding.outputs import IMPACTS_CSV_COLUMNS
-from pounding.result import IMPACT_COLUMNS
+from pounding.result import IMPACT_COLUMNS, IMPACTS_CSV_COLUMNS
 from pounding.run_file import FIGURE_FILES, OUTPUT_FILES, run, run_config
 
 ROOT = Path(__file__).resolve().parents[1]

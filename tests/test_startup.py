@@ -17,7 +17,7 @@ import pounding
 from pounding.cli import main
 from pounding.config import load_config
 from pounding.integrate import simulate
-from pounding.outputs import IMPACTS_CSV_COLUMNS, save_result
+from pounding.result import IMPACTS_CSV_COLUMNS, save_result
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"

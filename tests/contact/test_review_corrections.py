@@ -177,7 +177,7 @@ def test_one_impact_in_the_engine_achieves_the_default_kelvin_voigt_target():
 
 
 def test_outputs_say_which_end_of_contact_kelvin_voigt_used():
-    from pounding.summary import summarize
+    from pounding.result import summarize
 
     quiet = GroundMotion(0.01, np.zeros(11), name="no shaking")
     pair = [ShearBuilding.sdof(2e5, period=0.5), ShearBuilding.sdof(3e5, period=1.0)]

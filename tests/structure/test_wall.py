@@ -150,9 +150,8 @@ def test_outputs_of_a_model_with_walls(elc, tmp_path):
     """A wall on the left of an isolated building, a fixed-base neighbour on its right: the
     histories, the output folder, the summary and every figure are made; the contact-force
     figure has a panel for the gap and one for the wall; the wall has no floors."""
-    from pounding.outputs import save_result
     from pounding.plot.registry import figures_for
-    from pounding.summary import summarize
+    from pounding.result import save_result, summarize
 
     model = PoundingModel([isolated(), ShearBuilding.uniform(4, 3e5, 4e8)], [0.05], KV,
                           walls=[MoatWall(1.0, 0.06, side="left")], name="walls")

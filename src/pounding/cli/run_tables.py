@@ -184,7 +184,7 @@ def _print_bearings(r: Any, units: tuple[float, str, float, str]) -> None:
 def _print_storeys(r: Any, units: tuple[float, str, float, str]) -> None:
     """Every storey's peaks with their times (the envelope figure, as numbers); a building
     of more than :data:`STOREY_ROWS` storeys shows the ten with the largest drift ratio."""
-    from pounding.result_storeys import floor_name
+    from pounding.result import floor_name
 
     ff, fu, _, _ = units
     model = r.model

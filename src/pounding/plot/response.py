@@ -111,7 +111,7 @@ def plot_displacements(result: Result) -> Figure:
     ``F3 x``, its floor 3 along x; of a matrix building its DOF label) with its elevation
     [m].
     """
-    from pounding.result_storeys import floor_name
+    from pounding.result import floor_name
     from pounding.structure.assembly import floor_dofs
 
     model = result.model

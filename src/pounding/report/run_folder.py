@@ -65,7 +65,7 @@ def read_run(folder: Path) -> RunFolder:
     except (OSError, ValueError) as exc:
         raise ValueError(f"report: {folder / 'timehistories.nc'}: unreadable ({exc})") from None
 
-    from pounding.outputs import IMPACTS_CSV_COLUMNS
+    from pounding.result import IMPACTS_CSV_COLUMNS
 
     impacts = pd.DataFrame()
     units = ""

@@ -55,7 +55,7 @@ def model_section(r: RunFolder) -> list[Block]:
                              if plan.elements else "K given (3 DOFs a floor)")
                 damping = plan.damping.readable()
             elif iso is not None:  # a base-isolated building: superstructure on a bearing
-                from pounding.result_storeys import bearing_law
+                from pounding.result import bearing_law
 
                 storeys = bl.n - 1
                 masses = (f"base slab {num(float(bl.masses[0]))} kg; floors "

@@ -73,8 +73,8 @@ def _layout(model: Any) -> _Layout:
         below[own] = np.flatnonzero(own)  # drift u − u = 0, over a NaN height: left out
         heights = np.concatenate([b.heights for b in model.buildings]).astype(float)
         # an isolation bearing under a base slab is no storey: no drift ratio
-        # (pounding.result_storeys.bearing_mask)
-        from pounding.result_storeys import bearing_mask
+        # (pounding.result.bearing_mask)
+        from pounding.result import bearing_mask
 
         heights[bearing_mask(model)] = np.nan
         layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
@@ -94,7 +94,7 @@ def result_row(result: Any) -> dict[str, Any]:
     """One row of :data:`MEASURES` and :data:`FLOOR_MEASURES` from a Result.
 
     The sampled peaks (storey drift and absolute acceleration at the output steps) are
-    read in one pass over each history (:mod:`pounding.reductions`).
+    read in one pass over each history (:mod:`pounding.result.reductions`).
 
     Parameters
     ----------
@@ -106,7 +106,7 @@ def result_row(result: Any) -> dict[str, Any]:
     dict
         Column name → value (plain Python numbers; None where a measure does not apply).
     """
-    from pounding.reductions import abs_max_columns, abs_max_drift
+    from pounding.result import abs_max_columns, abs_max_drift
 
     layout = _layout(result.model)
     e = result.energy

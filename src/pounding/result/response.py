@@ -1,83 +1,38 @@
-"""What a simulation returns: time histories, the impact table, the energy balance.
+"""What a simulation computed: its arrays, and every quantity derived from them.
 
-:class:`Result` holds plain arrays (SI units) and derives everything else from them:
-storey drifts and shears, peaks, the impact table as a DataFrame, an xarray Dataset with
-units in its attributes, and a JSON summary. :meth:`Result.save` writes the files of a run
-into a folder (:mod:`pounding.outputs`), each file atomically.
-
-pandas and xarray are imported only by the methods that return their objects
-(:attr:`Result.impacts`, :meth:`Result.to_dataset`): writing a run's files needs neither.
+:class:`Response` holds plain arrays (SI units) — time histories, the impact table, the
+cumulative energies — and derives from them the storey drifts and shears, the peaks with
+their times, the impacts and peak force of every contact, the links' forces and energies,
+and the energy balance, all as NumPy arrays. :class:`pounding.result.Result` (what
+:func:`pounding.simulate` returns) is a response with its tables and files: the impact table
+as a DataFrame, the bearing and plan tables, the xarray Dataset, the summary, the saved
+files.
 """
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, field
 from functools import cached_property
-from collections.abc import Sequence
-from pathlib import Path
-from typing import Any, NamedTuple
-
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.result_variables import HistoryVariables, Variable
+from pounding.result.columns import IMPACT_COLUMNS
+from pounding.result.peaks import peak_abs, sampled_peak
+from pounding.result.storeys import (
+    bearing_mask,
+    plan_of,
+    plan_storey_forces,
+    residual_storey_drift,
+    struck_column_shear,
+)
 
 if TYPE_CHECKING:
-    import pandas as pd
-    import xarray as xr
-
     from pounding.ground_motion import GroundMotion, GroundMotionComponents
     from pounding.model import PoundingModel
 
-ENERGY_NAMES: tuple[str, ...] = ("input", "kinetic", "strain", "damping", "contact_work",
-                                 "contact_stored", "hysteretic", "links")
-"""Columns of :attr:`Result.energy` [J]: input energy ``−∫u̇ᵀMR a_g dt``, kinetic
-``½u̇ᵀMu̇`` (relative), elastic strain (``½uᵀKu`` of the linear storeys plus the recoverable
-energy of the yielding ones), viscous damping ``∫u̇ᵀCu̇ dt``, total work of the contact forces
-``∫ΣF δ̇ dt``, the elastic energy still stored in closed contacts, and the hysteretic energy
-of the yielding storeys (their work ``∫ΣV ḋ dt`` minus their recoverable energy; see
-:mod:`pounding.hysteresis.base`), and the energy dissipated by the links between buildings
-(their work less their springs' energy, which is in ``strain``; 0 without links).
-Contact-dissipated energy is ``contact_work − contact_stored``. The balance: ``E_0 + input =
-kinetic + strain + damping + hysteretic + contact_work + links``."""
-
-ELEVATION_DECIMALS = 6
-"""Decimals [m] of an elevation or storey height written to the outputs (1 µm): floor
-elevations are sums of storey heights, ``3.2 × 10`` adds up to ``31.999999999999996``."""
-
-
-def rounded_length(value: Any) -> Any:
-    """An elevation or storey height [m] (a float or an array) rounded to
-    :data:`ELEVATION_DECIMALS` for the outputs, so that it reads as given (``32.0``, not
-    ``31.999999999999996``)."""
-    if np.ndim(value) == 0:
-        return round(float(value), ELEVATION_DECIMALS)
-    return np.round(np.asarray(value, dtype=float), ELEVATION_DECIMALS)
-
-
-def peak_abs(a: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Largest absolute value of each column of a (time, item) history.
-
-    Column by column: NumPy's ``np.abs(a).max(axis=0)`` is about 30 times slower on the
-    tall, narrow arrays of a time history."""
-    a = np.asarray(a, dtype=float)
-    if a.ndim == 1:
-        return np.asarray(np.abs(a).max() if a.size else 0.0)
-    return np.array([np.abs(a[:, j]).max() if a.shape[0] else 0.0 for j in range(a.shape[1])])
-
-
-IMPACT_COLUMNS: tuple[str, ...] = ("contact", "start", "end", "v0", "peak_force",
-                                   "peak_force_time", "max_penetration", "restitution",
-                                   "energy_dissipated")
-"""Columns of :attr:`Result.impact_array` (the contact as its index) and of
-:attr:`Result.impacts` (the contact as its label): start and end [s], closing velocity v0
-[m/s], peak force [N] and its time [s], largest penetration [m], the velocity ratio
-``restitution`` (separation over approach speed of the two contact points [-]; the law's
-restitution only for free bodies: see :attr:`Result.impacts`), and the energy the contact
-element dissipated in the impact [J] (≥ 0)."""
+__all__ = ["ContactPeak", "Response", "SolverStats"]
 
 
 @dataclass(frozen=True)
@@ -96,8 +51,9 @@ class SolverStats:
 
 
 @dataclass(frozen=True, eq=False)
-class Result:
-    """Time histories and impacts of one simulation (SI units).
+class Response:
+    """Time histories and impacts of one simulation (SI units), and the quantities derived
+    from them; :class:`pounding.result.Result` adds its tables and files.
 
     Attributes
     ----------
@@ -116,10 +72,11 @@ class Result:
     penetration, contact_force : ndarray (nt, n_c)
         ``δ`` [m] (negative: open gap) and contact force [N] of every contact.
     energy : ndarray (nt, 8)
-        Cumulative energies [J], columns :data:`ENERGY_NAMES` (``links``: dissipated by the
-        links between buildings, their springs' energy being in ``strain``).
+        Cumulative energies [J], columns :data:`~pounding.result.ENERGY_NAMES` (``links``:
+        dissipated by the links between buildings, their springs' energy being in
+        ``strain``).
     impact_array : ndarray (n_impacts, 8)
-        Rows of the impact table, columns :data:`IMPACT_COLUMNS`.
+        Rows of the impact table, columns :data:`~pounding.result.IMPACT_COLUMNS`.
     stats : SolverStats
     contact_peak, contact_impacts : ndarray (n_c,), optional
         Peak force [N] and number of impacts of each contact, kept by the solver even when
@@ -166,7 +123,7 @@ class Result:
     @property
     def time(self) -> NDArray[np.float64]:
         """Output times [s]."""
-        return np.arange(self.displacement.shape[0]) * self.dt
+        return np.asarray(np.arange(self.displacement.shape[0]) * self.dt, dtype=np.float64)
 
     @property
     def wall_time(self) -> float:
@@ -180,7 +137,7 @@ class Result:
         elevation in a matrix building); NaN for a DOF that is not a floor — except the
         ``u_y`` DOFs of a building in plan, which hold the drift of the floors' centres of
         mass along y (its ``u_x`` DOFs are its floors, their drift along x). A base slab's
-        drift is its isolation bearing's displacement (:attr:`bearings`)."""
+        drift is its isolation bearing's displacement (:attr:`Result.bearings`)."""
         u = self.displacement
         below = self.model.floor_below()
         out = u.copy()
@@ -196,9 +153,9 @@ class Result:
     @cached_property
     def _plan_blocks(self) -> list[tuple[int, int]]:
         """``(first DOF, floors)`` of every building in plan."""
-        return [(int(off), bl.plan.n_floors)
+        return [(int(off), plan.n_floors)
                 for off, bl in zip(self.model.system.offsets, self.model.buildings)
-                if getattr(bl, "plan", None) is not None]
+                if (plan := plan_of(bl)) is not None]
 
     def _storey_stiffness(self) -> NDArray[np.float64]:
         """Storey stiffness [N/m] under every DOF: a shear building's ``k_j``; NaN for a
@@ -211,7 +168,7 @@ class Result:
         """Storey shear [N] (nt, N): ``k_j × drift_j`` for linear storeys, the storey law's
         shear for yielding ones (a base slab's: its bearing's force); for a building in plan
         with lateral elements, ``V_x`` under its ``u_x`` DOFs and ``V_y`` under its ``u_y``
-        DOFs (:func:`pounding.result_storeys.plan_storey_forces`; the torque is
+        DOFs (:func:`pounding.result.storeys.plan_storey_forces`; the torque is
         :attr:`storey_torque`); NaN for another matrix building (no storey stiffness)."""
         k = self._storey_stiffness()
         out = self.drift * k
@@ -229,7 +186,7 @@ class Result:
     def storey_torque(self) -> NDArray[np.float64]:
         """Storey torque [N·m] (nt, N) under the ``θ`` DOFs of a building in plan with
         lateral elements, about the centre of mass of the floor above
-        (:func:`pounding.result_storeys.plan_storey_forces`); NaN elsewhere."""
+        (:func:`pounding.result.storeys.plan_storey_forces`); NaN elsewhere."""
         out = np.full(self.displacement.shape, np.nan)
         for (off, n), (_, _, tq) in zip(self._plan_blocks, self._plan_forces):
             out[:, off + 2 + 3 * np.arange(n)] = tq
@@ -238,37 +195,15 @@ class Result:
     @cached_property
     def _plan_forces(self) -> list[tuple[NDArray[np.float64], ...]]:
         """``(V_x, V_y, T)`` histories of every building in plan, (nt, floors) each."""
-        from pounding.result_storeys import plan_storey_forces
-
-        plans = [bl.plan for bl in self.model.buildings if getattr(bl, "plan", None) is not None]
+        plans = [plan for bl in self.model.buildings if (plan := plan_of(bl)) is not None]
         return [plan_storey_forces(plan, self.displacement[:, off: off + 3 * n])
                 for plan, (off, n) in zip(plans, self._plan_blocks)]
 
     @cached_property
-    def plan_storeys(self) -> list[Any]:
-        """Floor-by-floor peaks of every building in plan (x, y, rotation, drifts, storey
-        shears and torque: :class:`pounding.result_storeys.PlanStoreys`); empty without
-        one."""
-        from pounding.result_storeys import plan_storeys
-
-        return plan_storeys(self)
-
-    @cached_property
-    def bearings(self) -> list[Any]:
-        """The isolation bearing of every base-isolated building: its law, peak displacement
-        and force with their times, residual displacement
-        (:class:`pounding.result_storeys.BearingPeaks`); empty without one."""
-        from pounding.result_storeys import bearing_peaks
-
-        return bearing_peaks(self)
-
-    @cached_property
     def is_bearing(self) -> NDArray[np.bool_]:
         """True at every base slab (N,): its "storey" is an isolation bearing, reported by
-        :attr:`bearings` and left out of the storey measures (:attr:`peak_drift_ratio`,
-        :attr:`ductility`)."""
-        from pounding.result_storeys import bearing_mask
-
+        :attr:`Result.bearings` and left out of the storey measures
+        (:attr:`peak_drift_ratio`, :attr:`ductility`)."""
         return bearing_mask(self.model)
 
     def _yielding_columns(self) -> NDArray[np.int64]:
@@ -279,13 +214,15 @@ class Result:
     def ductility(self) -> NDArray[np.float64]:
         """Storey ductility demand ``max|drift| / (F_y / k)`` [-] (N,); NaN for linear
         storeys (no yield point) and for an isolation bearing (not a storey: its
-        displacement is in :attr:`bearings`). The peak drift is :attr:`peak_drift` (located
-        inside steps)."""
+        displacement is in :attr:`Result.bearings`). The peak drift is :attr:`peak_drift`
+        (located inside steps)."""
+        from pounding.structure import MatrixBuilding
+
         out = np.full(self.model.n_dof, np.nan)
         peak = self.peak_drift
         for off, b in zip(self.model.system.offsets, self.model.buildings):
             fy = b.yield_forces
-            if fy is not None:
+            if fy is not None and not isinstance(b, MatrixBuilding):  # (a matrix building's: None)
                 out[off: off + b.n] = peak[off: off + b.n] / (fy / b.stiffnesses)
         out[self.is_bearing] = np.nan
         return out
@@ -293,55 +230,24 @@ class Result:
     @cached_property
     def residual_drift(self) -> NDArray[np.float64]:
         """Residual storey drift [m] (N,): the drift left when the storey, from its state at
-        the end of the run, is unloaded to zero shear along its unloading stiffness,
-        ``d_end − V_end / k_unload`` (for the bilinear law: its plastic drift). 0 for linear
-        storeys. Run on past the record (``duration``) to let the motion die out first."""
-        out = np.zeros(self.model.n_dof)
+        the end of the run, is unloaded to zero shear along its unloading stiffness
+        (:func:`pounding.result.storeys.residual_storey_drift`; for the bilinear law: its
+        plastic drift). 0 for linear storeys. Run on past the record (``duration``) to let
+        the motion die out first."""
         if not self.model.is_inelastic:
-            return out
-        d_end = self.drift[-1]
-        v_end = self.storey_shear[-1]
-        z_end = self.final_z if self.final_z is not None else np.zeros(0)
-        zk = 0
-        for off, b in zip(self.model.system.offsets, self.model.buildings):
-            law = b.storey_law
-            if law is None:
-                continue
-            prm = b.storey_law_params()
-            for r, j in enumerate(b.yielding):
-                col = off + j
-                z = 0.0
-                if law.has_internal_variable:
-                    z = float(z_end[zk]) if zk < z_end.size else 0.0
-                    zk += 1
-                out[col] = d_end[col] - v_end[col] / law.unloading_stiffness(prm[r], z)
-        return out
+            return np.zeros(self.model.n_dof)
+        return residual_storey_drift(self.model, self.drift[-1], self.storey_shear[-1],
+                                     self.final_z)
 
     @cached_property
     def column_shear(self) -> NDArray[np.float64]:
-        """Shear demand on each struck column [N] (nt, n_c): NaN for floor-to-floor contacts
-        and for a column of a building given as matrices (no storey shear).
-
-        A floor-to-column contact at position ξ of storey j of the struck building loads
-        its column with a point force ``P`` (the contact force, signed in the direction it
-        pushes the struck building), shared to the floors as ``(1 − ξ)P`` and ``ξP``
-        (:class:`pounding.model.ContactPoint`). With the storey shear ``V`` (from the
-        drift), equilibrium of the column gives the local shear ``V + (1 − ξ)P`` below the
-        point and ``V − ξP`` above it; the demand is the larger in magnitude. Read at the
-        output steps (the contact force peak itself is located inside steps:
+        """Shear demand on each struck column [N] (nt, n_c), the larger in magnitude of the
+        local shears below and above the contact point
+        (:func:`pounding.result.storeys.struck_column_shear`): NaN for floor-to-floor
+        contacts and for a column of a building given as matrices (no storey shear). Read
+        at the output steps (the contact force peak itself is located inside steps:
         :attr:`peak_contact_force`)."""
-        nt = self.displacement.shape[0]
-        out = np.full((nt, len(self.model.contacts)), np.nan)
-        offsets = self.model.system.offsets
-        shear = self.storey_shear
-        for c in self.model.contacts:
-            pt = c.struck
-            if pt is None:
-                continue
-            p = self.contact_force[:, c.index] * (1.0 if pt is c.right else -1.0)
-            v = shear[:, offsets[pt.building] + pt.upper]
-            out[:, c.index] = np.maximum(np.abs(v + (1.0 - pt.xi) * p), np.abs(v - pt.xi * p))
-        return out
+        return struck_column_shear(self.model, self.contact_force, self.storey_shear)
 
     @cached_property
     def peak_column_shear(self) -> NDArray[np.float64]:
@@ -357,50 +263,19 @@ class Result:
         NaN: floor to floor, or a column of a building given as matrices, which has no
         storey shear)."""
         out = np.full(len(self.model.contacts), np.nan)
-        struck = [c for c in self.model.contacts if c.struck is not None]
+        struck = [(c.index, c.struck) for c in self.model.contacts if c.struck is not None]
         if not struck:
             return out  # floor to floor only: no storey-shear history needed
         peak_v = peak_abs(self.storey_shear)
         offsets = self.model.system.offsets
-        for c in struck:
-            pt = c.struck
+        for index, pt in struck:
             v = peak_v[offsets[pt.building] + pt.upper]
             if np.isnan(v):
                 continue  # a matrix building's column: no storey shear to compare with
-            out[c.index] = self.peak_column_shear[c.index] / v if v > 0 else np.inf
+            out[index] = self.peak_column_shear[index] / v if v > 0 else np.inf
         return out
 
     # ----------------------------------------------------------------- impacts and peaks
-    @cached_property
-    def impacts(self) -> pd.DataFrame:
-        """One row per impact: contact label, elevation [m], start/end [s], impact velocity
-        v0 [m/s], peak force [N] and its time [s], maximum penetration [m], the velocity
-        ratio ``restitution`` [-], the energy dissipated by the contact in the impact [J].
-
-        An impact ends when the penetration returns to zero (``end``); for laws that cannot
-        pull (clipped Kelvin–Voigt, Hunt–Crossley) the force may have returned to zero a
-        little earlier, which is where :func:`pounding.contact.collision.simulate_collision`
-        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``, the ratio of
-        the speeds at which the two contact points part and met. For two free bodies it is
-        the law's coefficient of restitution (the kinetic energy of the relative motion
-        keeps the fraction e² of itself); between buildings it is not: the ground and the
-        storeys keep pushing the floors during the impact, so the ratio says nothing of
-        the energy and may exceed 1 (the rest of each building pushing the floors apart
-        faster than they met) — no energy is created. The impact's own loss is
-        ``energy_dissipated``, the work of the contact force over the impact
-        ``∫ F δ̇ dt`` (δ = 0 at both ends, so none of it is still stored), ≥ 0 for every
-        passive law. Impacts still open at the end have NaN end, restitution and
-        energy."""
-        import pandas as pd
-
-        df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
-        labels = [c.label for c in self.model.contacts]
-        df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
-        df.insert(1, "elevation", [rounded_length(self.model.contacts[labels.index(lb)]
-                                                  .elevation)
-                                   for lb in df["contact"]] if len(df) else [])
-        return df
-
     @cached_property
     def impacts_per_contact(self) -> NDArray[np.int64]:
         """Number of impacts of every contact (n_c,), complete even when the impact table
@@ -498,7 +373,8 @@ class Result:
     @property
     def peak_drift_ratio(self) -> NDArray[np.float64]:
         """:attr:`peak_drift` over the storey height [-] (N,); NaN for a DOF that is not a
-        floor and under a base slab (its isolation bearing is no storey: :attr:`bearings`)."""
+        floor and under a base slab (its isolation bearing is no storey:
+        :attr:`Result.bearings`)."""
         ratio = self.peak_drift / np.concatenate([b.heights for b in self.model.buildings])
         return np.where(self.is_bearing, np.nan, ratio)
 
@@ -523,9 +399,10 @@ class Result:
         cols = self._yielding_columns()
         if cols.size:
             out[cols] = np.abs(self.storey_shear[:, cols]).max(axis=0)
-        for ps in self.plan_storeys:
-            ix = ps.offset + 3 * np.arange(ps.elevation.size)
-            out[ix], out[ix + 1] = ps.shear_x, ps.shear_y
+        for off, n in self._plan_blocks:  # V_x, V_y at the output steps
+            ix = off + 3 * np.arange(n)
+            out[ix] = sampled_peak(self.storey_shear[:, ix], self.time)[0]
+            out[ix + 1] = sampled_peak(self.storey_shear[:, ix + 1], self.time)[0]
         return out
 
     @cached_property
@@ -536,9 +413,10 @@ class Result:
         cols = self._yielding_columns()
         if cols.size:
             out[cols] = self.time[np.argmax(np.abs(self.storey_shear[:, cols]), axis=0)]
-        for ps in self.plan_storeys:
-            ix = ps.offset + 3 * np.arange(ps.elevation.size)
-            out[ix], out[ix + 1] = ps.shear_x_time, ps.shear_y_time
+        for off, n in self._plan_blocks:
+            ix = off + 3 * np.arange(n)
+            out[ix] = sampled_peak(self.storey_shear[:, ix], self.time)[1]
+            out[ix + 1] = sampled_peak(self.storey_shear[:, ix + 1], self.time)[1]
         return out
 
     @property
@@ -600,9 +478,11 @@ class Result:
     @cached_property
     def energy_balance_error(self) -> float:
         """Largest ``|E_0 + E_input − (E_kin + E_strain + E_damping + E_hyst + W_contact +
-        E_links)|`` over the run (``E_0`` the kinetic and strain energy at t = 0), relative to the larger of the
-        largest input energy and ``E_0`` (dimensionless; 0 for a run with no energy)."""
-        from pounding.reductions import energy_residual_max  # (one pass over the history)
+        E_links)|`` over the run (``E_0`` the kinetic and strain energy at t = 0), relative
+        to the larger of the largest input energy and ``E_0`` (dimensionless; 0 for a run
+        with no energy)."""
+        # one pass over the history (imported here: importing it imports numba)
+        from pounding.result.reductions import energy_residual_max
 
         e = np.asarray(self.energy, dtype=float)
         e0 = e[0, 1] + e[0, 2]
@@ -612,49 +492,9 @@ class Result:
             return 0.0
         return float(worst / scale)
 
-    # ----------------------------------------------------------------- exports
-    def history_variables(self) -> HistoryVariables:
-        """Every time history and per-floor result as named variables with dimensions, units
-        and descriptions: what :meth:`to_dataset` and the NetCDF file hold
-        (:func:`pounding.result_variables.history_variables`)."""
-        from pounding.result_variables import history_variables
-
-        return history_variables(self)
-
-    def to_dataset(self) -> xr.Dataset:
-        """All time histories as an xarray Dataset with units and descriptions
-        (:meth:`history_variables`)."""
-        import xarray as xr
-
-        hv = self.history_variables()
-
-        def da(v: Variable) -> xr.DataArray:
-            return xr.DataArray(v.values, dims=v.dims, attrs=dict(v.attrs))
-
-        return xr.Dataset({k: da(v) for k, v in hv.data.items()},
-                          coords={k: da(v) for k, v in hv.coords.items()},
-                          attrs=dict(hv.attrs))
-
-    def summary(self) -> dict[str, Any]:
-        """Headline numbers (JSON-ready), each key naming its unit
-        (:func:`pounding.summary.summarize`)."""
-        from pounding.summary import summarize
-
-        return summarize(self)
-
-    def save(self, folder: str | os.PathLike[str],
-             warnings: Sequence[str] = ()) -> dict[str, Path]:
-        """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``
-        (:func:`pounding.outputs.save_result`); each file is written under a temporary name
-        and moved into place when complete. ``warnings`` (one line each, e.g. the model
-        file's plausibility warnings) are kept in ``summary.json``."""
-        from pounding.outputs import save_result
-
-        return save_result(self, folder, warnings=warnings)
-
 
 class ContactPeak(NamedTuple):
-    """One contact's peak (:attr:`Result.contact_peaks`)."""
+    """One contact's peak (:attr:`Response.contact_peaks`)."""
 
     force: float
     """Largest contact force [N], located inside solver steps."""

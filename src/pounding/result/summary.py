@@ -9,15 +9,16 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.result import ENERGY_NAMES, rounded_length
+from pounding.result.columns import ENERGY_NAMES, rounded_length
+from pounding.result.storey_peaks import bearing_peaks, plan_storeys
 
 if TYPE_CHECKING:
-    from pounding.result import Result
+    from pounding.result.response import Response
 
 __all__ = ["bearing_summary", "building_summary", "inelastic_summary", "summarize"]
 
 
-def summarize(r: Result) -> dict[str, Any]:
+def summarize(r: Response) -> dict[str, Any]:
     """Headline numbers (JSON-ready), each key naming its unit.
 
     Per-floor peaks are keyed by floor label (``B1F3``: building 1, floor 3 — of a matrix
@@ -36,7 +37,7 @@ def summarize(r: Result) -> dict[str, Any]:
     pcf = r.peak_contact_force
     labels = r.model.dof_labels()
     floor = r.model.is_floor
-    storey = floor & ~r.is_bearing  # a base slab's "storey" is its bearing: r.bearings
+    storey = floor & ~r.is_bearing  # a base slab's "storey" is its bearing: bearing_summary
     contacts = r.model.contacts
 
     def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
@@ -86,7 +87,7 @@ def summarize(r: Result) -> dict[str, Any]:
                              else "read at the output steps")},
     }
 
-def floor_rotations(r: Result) -> list[tuple[int, int, str, float, float]]:
+def floor_rotations(r: Response) -> list[tuple[int, int, str, float, float]]:
     """The peak rotation of every floor of the buildings in plan: ``(building, floor,
     label, peak |θ| [rad], time [s])``, building and floor 0-based, ``label`` the floor's θ
     DOF as ``B2F3θ`` (building 2, floor 3); located inside solver steps as the other peaks
@@ -107,7 +108,7 @@ def floor_rotations(r: Result) -> list[tuple[int, int, str, float, float]]:
     return out
 
 
-def rotation_summary(r: Result) -> dict[str, Any]:
+def rotation_summary(r: Response) -> dict[str, Any]:
     """``peak_floor_rotation_mrad`` and ``peak_floor_rotation_time_s`` by floor
     (:func:`floor_rotations`), if some building is in plan."""
     rows = floor_rotations(r)
@@ -117,7 +118,7 @@ def rotation_summary(r: Result) -> dict[str, Any]:
             "peak_floor_rotation_time_s": {lb: t for _, _, lb, _, t in rows}}
 
 
-def building_summary(r: Result) -> list[dict[str, Any]]:
+def building_summary(r: Response) -> list[dict[str, Any]]:
     """Per building: its natural periods and, storey by storey (floors by elevation; a
     matrix building's DOF label as ``label``), the peaks and times. A base-isolated
     building lists its superstructure's storeys (storey 1 above the base slab; the bearing
@@ -137,18 +138,20 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
                   ("peak_storey_shear_time_s", r.peak_storey_shear_time),
                   ("peak_abs_acceleration_m_s2", r.peak_abs_acceleration),
                   ("peak_abs_acceleration_time_s", r.peak_abs_acceleration_time))
-    plans = {ps.building: ps for ps in r.plan_storeys}
+    plans = {ps.building: ps for ps in plan_storeys(r)}
+    bearings = bearing_peaks(r)
     bearing = r.is_bearing
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
         storeys = []
-        matrices = isinstance(bl, MatrixBuilding)
+        matrices = isinstance(bl, MatrixBuilding)  # (a building in plan too)
+        labels = bl.labels if isinstance(bl, MatrixBuilding) else ()
         ps = plans.get(b)
         for k, j in enumerate(j for j in floor_dofs(bl) if not bearing[off + j]):
             row: dict[str, Any] = {"storey": k + 1}
             if ps is not None:
-                row.update(floor=f"F{j // 3 + 1}", label=bl.labels[j])
+                row.update(floor=f"F{j // 3 + 1}", label=labels[j])
             elif matrices:
-                row.update(floor=f"F{j + 1}", label=bl.labels[j])
+                row.update(floor=f"F{j + 1}", label=labels[j])
             elif bearing[off]:
                 row["floor"] = f"F{j + 1}"  # floor 1 is the base slab
             row.update({"floor_elevation_m": rounded_length(bl.floor_levels[j]),
@@ -177,7 +180,7 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
                                 "of the floor above"} if ps is not None
                  else {"given_as": "matrices", "n_dof": bl.n} if matrices else {})
         if bearing[off]:
-            given = {"isolated_on": next(x.law for x in r.bearings if x.building == b),
+            given = {"isolated_on": next(x.law for x in bearings if x.building == b),
                      "base_slab_elevation_m": rounded_length(bl.floor_levels[0])}
         out.append({"building": f"B{b + 1}", "name": bl.name, "n_storeys": len(storeys),
                     **given,
@@ -186,12 +189,13 @@ def building_summary(r: Result) -> list[dict[str, Any]]:
     return out
 
 
-def bearing_summary(r: Result) -> dict[str, Any]:
+def bearing_summary(r: Response) -> dict[str, Any]:
     """``bearings``: the isolation bearing of every base-isolated building — its law in
     words, the base slab it carries, its peak displacement [m] (located inside solver
     steps) and force [N] with their times, and its residual displacement [m]; reported
     here, apart from the storeys above it."""
-    if not r.bearings:
+    bearings = bearing_peaks(r)
+    if not bearings:
         return {}
     labels = r.model.dof_labels()
     return {"bearings": [{"building": f"B{x.building + 1}", "base_slab": labels[x.dof],
@@ -202,9 +206,9 @@ def bearing_summary(r: Result) -> dict[str, Any]:
                           "peak_force_N": x.peak_force,
                           "peak_force_time_s": x.peak_force_time,
                           "residual_displacement_m": x.residual_displacement}
-                         for x in r.bearings]}
+                         for x in bearings]}
 
-def inelastic_summary(r: Result) -> dict[str, Any]:
+def inelastic_summary(r: Response) -> dict[str, Any]:
     out: dict[str, Any] = {}
     labels = r.model.dof_labels()
     if r.model.is_inelastic:
@@ -223,7 +227,7 @@ def inelastic_summary(r: Result) -> dict[str, Any]:
     return out
 
 
-def device_summary(r: Result) -> dict[str, Any]:
+def device_summary(r: Response) -> dict[str, Any]:
     """The devices: each link's law, peak force and energy dissipated; each bumper."""
     out: dict[str, Any] = {}
     links = r.model.links

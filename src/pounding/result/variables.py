@@ -1,6 +1,6 @@
 """A result's histories as named variables with dimensions, units and descriptions: what
-:meth:`pounding.result.Result.to_dataset` and the NetCDF file hold (one description, two
-writers)."""
+:meth:`pounding.result.Result.to_dataset` and the NetCDF file
+(:func:`pounding.result.files.write_netcdf`) hold (one description, two writers)."""
 
 from __future__ import annotations
 
@@ -9,8 +9,11 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from pounding.result.columns import ENERGY_NAMES, rounded_length
+from pounding.result.storey_peaks import bearing_peaks, plan_storeys
+
 if TYPE_CHECKING:
-    from pounding.result import Result
+    from pounding.result.response import Response
 
 __all__ = ["HistoryVariables", "Variable", "history_variables"]
 
@@ -26,21 +29,20 @@ class Variable(NamedTuple):
 
 class HistoryVariables(NamedTuple):
     """A result's data variables, coordinates and global attributes
-    (:meth:`Result.history_variables`)."""
+    (:meth:`pounding.result.Result.history_variables`)."""
 
     data: dict[str, Variable]
     coords: dict[str, Variable]
     attrs: dict[str, Any]
 
 
-def history_variables(result: "Result") -> HistoryVariables:
+def history_variables(result: Response) -> HistoryVariables:
     """Every time history and per-floor result as named variables with dimensions, units
-    and descriptions: what :meth:`Result.to_dataset` and the NetCDF file hold (one description,
-    two writers)."""
-    from pounding.result import ENERGY_NAMES, rounded_length
-
+    and descriptions: what :meth:`pounding.result.Result.to_dataset` and the NetCDF file
+    hold (one description, two writers)."""
     model = result.model
     contacts = model.contacts
+    bearings = bearing_peaks(result)
 
     def var(values: Any, dims: tuple[str, ...], units: str, desc: str) -> Variable:
         return Variable(dims, np.asarray(values), {"units": units, "long_name": desc})
@@ -72,13 +74,13 @@ def history_variables(result: "Result") -> HistoryVariables:
                              "contact force (compression positive)"),
         "energy": var(result.energy, ("time", "energy_term"), "J", "cumulative energies"),
     }
-    if any(ps.has_elements for ps in result.plan_storeys):
+    if any(ps.has_elements for ps in plan_storeys(result)):
         data["storey_torque"] = var(result.storey_torque, ("time", "floor"), "N m",
                                     "storey torque of a building in plan from its lateral "
                                     "elements, about the centre of mass of the floor above, "
                                     "under its θ DOFs (NaN elsewhere)")
-    if result.bearings:
-        dofs = [x.dof for x in result.bearings]
+    if bearings:
+        dofs = [x.dof for x in bearings]
         data["bearing_displacement"] = var(result.drift[:, dofs], ("time", "bearing"), "m",
                                            "displacement of each isolation bearing (its "
                                            "base slab relative to the ground)")
@@ -133,12 +135,12 @@ def history_variables(result: "Result") -> HistoryVariables:
     coords["storey_kind"] = Variable(("floor",), np.array(kind, dtype=object), {
         "long_name": "what lies under the floor: 'storey', 'bearing' (an isolation bearing "
                      "under a base slab, not a storey) or '' (not a floor)"})
-    if result.bearings:
+    if bearings:
         coords["bearing"] = Variable(("bearing",), np.array(
-            [f"B{x.building + 1}" for x in result.bearings], dtype=object),
+            [f"B{x.building + 1}" for x in bearings], dtype=object),
             {"long_name": "building whose isolation bearing it is"})
         coords["bearing_law"] = Variable(("bearing",), np.array(
-            [x.law for x in result.bearings], dtype=object),
+            [x.law for x in bearings], dtype=object),
             {"long_name": "the bearing's law"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],

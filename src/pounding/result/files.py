@@ -4,8 +4,8 @@ Each is written atomically (:mod:`pounding.io`). The NetCDF file is serialised i
 and then written with plain file I/O, so that HDF5 never meets a full disk or a file-size
 limit (it crashes the process there); a failed write is one :class:`pounding.io.WriteFailed`
 naming the file, costing about 0.03 s more for the demo's 42 MB. It is built with h5netcdf
-directly from :meth:`pounding.result.Result.history_variables` — the same variables, units
-and coordinates :meth:`~pounding.result.Result.to_dataset` gives as an xarray Dataset, which
+directly from :func:`pounding.result.variables.history_variables` — the same variables,
+units and coordinates :meth:`~pounding.result.Result.to_dataset` gives as an xarray Dataset, which
 is also how to read the file back (``xarray.open_dataset(path, engine="h5netcdf")``). Going
 without xarray and pandas here keeps a run's start-up short: importing them costs about a
 second, more than the whole simulation of a small model.
@@ -25,9 +25,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from pounding.io import write_bytes, write_text
+from pounding.result.columns import IMPACT_COLUMNS, rounded_length
+from pounding.result.summary import summarize
+from pounding.result.variables import HistoryVariables, history_variables
 
 if TYPE_CHECKING:
-    from pounding.result import HistoryVariables, Result
+    from pounding.result.response import Response
 
 __all__ = ["IMPACTS_CSV_COLUMNS", "impacts_csv", "save_result", "write_netcdf"]
 
@@ -53,7 +56,7 @@ so it is no energy ratio and may exceed 1); ``energy_dissipated_J`` is the energ
 contact element dissipated in that impact (≥ 0). ``docs/running.md`` says the same."""
 
 
-def save_result(result: Result, folder: str | os.PathLike[str],
+def save_result(result: Response, folder: str | os.PathLike[str],
                 warnings: Sequence[str] = ()) -> dict[str, Path]:
     """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``.
 
@@ -66,10 +69,10 @@ def save_result(result: Result, folder: str | os.PathLike[str],
     out = {"timehistories": folder / "timehistories.nc", "impacts": folder / "impacts.csv",
            "summary": folder / "summary.json"}
     buf = io.BytesIO()
-    write_netcdf(result.history_variables(), buf)
+    write_netcdf(history_variables(result), buf)
     write_bytes(out["timehistories"], buf.getbuffer())
     write_text(out["impacts"], impacts_csv(result))
-    summary = {**result.summary(), "warnings": list(warnings)}
+    summary = {**summarize(result), "warnings": list(warnings)}
     write_text(out["summary"], json.dumps(json_ready(summary), indent=2))
     return out
 
@@ -119,12 +122,10 @@ def _create(f: Any, name: str, dims: tuple[str, ...], values: np.ndarray,
         var.attrs[key] = value
 
 
-def impacts_csv(result: Result) -> str:
+def impacts_csv(result: Response) -> str:
     """The impact table as CSV text: one header row (:data:`IMPACTS_CSV_COLUMNS`, units in
     the names), then one row per impact; a missing value (an impact still open at the end)
     is an empty field."""
-    from pounding.result import IMPACT_COLUMNS, rounded_length
-
     contacts = result.model.contacts
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")

@@ -1,0 +1,125 @@
+"""What a simulation returns: its response, with the tables and files made of it.
+
+:class:`Result` is a :class:`~pounding.result.response.Response` (the time histories, the
+impact table, the energies, and the drifts, shears and peaks derived from them) with its
+tables and files as methods: the impact table as a DataFrame, the bearing and plan tables,
+the histories as named variables and as an xarray Dataset, the JSON summary, and
+:meth:`Result.save`, which writes the files of a run into a folder
+(:mod:`pounding.result.files`), each file atomically.
+
+pandas and xarray are imported only by the methods that return their objects
+(:attr:`Result.impacts`, :meth:`Result.to_dataset`): writing a run's files needs neither.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from pounding.result.columns import IMPACT_COLUMNS, rounded_length
+from pounding.result.files import save_result
+from pounding.result.response import Response
+from pounding.result.storey_peaks import (
+    BearingPeaks,
+    PlanStoreys,
+    bearing_peaks,
+    plan_storeys,
+)
+from pounding.result.summary import summarize
+from pounding.result.variables import HistoryVariables, Variable, history_variables
+
+if TYPE_CHECKING:
+    import pandas as pd
+    import xarray as xr
+
+__all__ = ["Result"]
+
+
+class Result(Response):
+    """Time histories and impacts of one simulation (SI units), with their tables and
+    files: what :func:`pounding.simulate` returns.
+
+    Its data and derived quantities are those of :class:`~pounding.result.response.Response`
+    (same fields, same constructor); a result adds :attr:`impacts`, :attr:`bearings`,
+    :attr:`plan_storeys`, :meth:`history_variables`, :meth:`to_dataset`, :meth:`summary` and
+    :meth:`save`.
+    """
+
+    @cached_property
+    def impacts(self) -> pd.DataFrame:
+        """One row per impact: contact label, elevation [m], start/end [s], impact velocity
+        v0 [m/s], peak force [N] and its time [s], maximum penetration [m], the velocity
+        ratio ``restitution`` [-], the energy dissipated by the contact in the impact [J].
+
+        An impact ends when the penetration returns to zero (``end``); for laws that cannot
+        pull (clipped Kelvin–Voigt, Hunt–Crossley) the force may have returned to zero a
+        little earlier, which is where :func:`pounding.contact.collision.simulate_collision`
+        ends a free-body impact. ``restitution`` is ``−δ̇_separation / v0``, the ratio of
+        the speeds at which the two contact points part and met. For two free bodies it is
+        the law's coefficient of restitution (the kinetic energy of the relative motion
+        keeps the fraction e² of itself); between buildings it is not: the ground and the
+        storeys keep pushing the floors during the impact, so the ratio says nothing of
+        the energy and may exceed 1 (the rest of each building pushing the floors apart
+        faster than they met) — no energy is created. The impact's own loss is
+        ``energy_dissipated``, the work of the contact force over the impact
+        ``∫ F δ̇ dt`` (δ = 0 at both ends, so none of it is still stored), ≥ 0 for every
+        passive law. Impacts still open at the end have NaN end, restitution and
+        energy."""
+        import pandas as pd
+
+        df = pd.DataFrame(self.impact_array, columns=list(IMPACT_COLUMNS))
+        labels = [c.label for c in self.model.contacts]
+        df["contact"] = [labels[int(i)] for i in df["contact"]] if len(df) else []
+        df.insert(1, "elevation", [rounded_length(self.model.contacts[labels.index(lb)]
+                                                  .elevation)
+                                   for lb in df["contact"]] if len(df) else [])
+        return df
+
+    @cached_property
+    def plan_storeys(self) -> list[PlanStoreys]:
+        """Floor-by-floor peaks of every building in plan (x, y, rotation, drifts, storey
+        shears and torque: :class:`pounding.result.PlanStoreys`); empty without one."""
+        return plan_storeys(self)
+
+    @cached_property
+    def bearings(self) -> list[BearingPeaks]:
+        """The isolation bearing of every base-isolated building: its law, peak displacement
+        and force with their times, residual displacement
+        (:class:`pounding.result.BearingPeaks`); empty without one."""
+        return bearing_peaks(self)
+
+    def history_variables(self) -> HistoryVariables:
+        """Every time history and per-floor result as named variables with dimensions, units
+        and descriptions: what :meth:`to_dataset` and the NetCDF file hold
+        (:func:`pounding.result.history_variables`)."""
+        return history_variables(self)
+
+    def to_dataset(self) -> xr.Dataset:
+        """All time histories as an xarray Dataset with units and descriptions
+        (:meth:`history_variables`)."""
+        import xarray as xr
+
+        hv = self.history_variables()
+
+        def da(v: Variable) -> xr.DataArray:
+            return xr.DataArray(v.values, dims=v.dims, attrs=dict(v.attrs))
+
+        return xr.Dataset({k: da(v) for k, v in hv.data.items()},
+                          coords={k: da(v) for k, v in hv.coords.items()},
+                          attrs=dict(hv.attrs))
+
+    def summary(self) -> dict[str, Any]:
+        """Headline numbers (JSON-ready), each key naming its unit
+        (:func:`pounding.result.summarize`)."""
+        return summarize(self)
+
+    def save(self, folder: str | os.PathLike[str],
+             warnings: Sequence[str] = ()) -> dict[str, Path]:
+        """Write ``timehistories.nc``, ``impacts.csv`` and ``summary.json`` into ``folder``
+        (:func:`pounding.result.save_result`); each file is written under a temporary name
+        and moved into place when complete. ``warnings`` (one line each, e.g. the model
+        file's plausibility warnings) are kept in ``summary.json``."""
+        return save_result(self, folder, warnings=warnings)
