@@ -16,7 +16,7 @@ import pytest
 from pounding.integrate import simulate
 from pounding.structure.plan_row import point_history
 from pounding.studies.fragility import plan_study
-from pounding.studies.fragility.runner import needed_gaps
+from pounding.studies.fragility.gaps import needed_gaps
 
 ROOT = Path(__file__).resolve().parents[2]
 

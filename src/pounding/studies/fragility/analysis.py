@@ -27,9 +27,9 @@ from pounding.studies.fragility.gap_probability import (
     pounding_probability,
     pounding_probability_fit,
 )
+from pounding.studies.fragility.gaps import NeededGaps
 from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
 from pounding.studies.fragility.plan import StudyPlan
-from pounding.studies.fragility.runner import NeededGaps
 from pounding.studies.fragility.study import DEMANDS, LimitStateSpec
 
 __all__ = ["FragilityAnalysis", "GapAnalysis", "LimitStateResult", "analyse",
@@ -175,7 +175,7 @@ def analyse(plan: StudyPlan, table: Any, gaps: NeededGaps) -> FragilityAnalysis:
     table : pandas.DataFrame
         The sweep's ``results.parquet``.
     gaps : NeededGaps
-        From :func:`pounding.studies.fragility.runner.needed_gaps`.
+        From :func:`pounding.studies.fragility.gaps.needed_gaps`.
     """
     cfg = plan.config
     levels = np.asarray(plan.levels, dtype=float)
