@@ -52,7 +52,7 @@ def test_a_fragility_module_loads_only_what_it_needs() -> None:
     """Fitting a fragility curve loads neither the study's runner nor what it runs (the
     sweep machinery, the model, the time stepper, Dask); the package names it all."""
     runner_side = ("pounding.studies.fragility.runner", "pounding.studies.fragility.analysis",
-                   "pounding.studies.fragility.plan", "pounding.studies.fragility.study",
+                   "pounding.studies.fragility.cases", "pounding.studies.fragility.study",
                    "pounding.studies.sweep", "pounding.config", "pydantic")
     watched = HEAVY + runner_side
     loaded = loaded_by("import pounding.studies.fragility.fitting", watched)
@@ -78,3 +78,10 @@ def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
         assert name in dir(module)
     with pytest.raises(AttributeError, match=f"module '{package}' has no attribute 'nope'"):
         getattr(module, "nope")
+    # a public name that is also a submodule's would become the module once anything
+    # imports that submodule (``pounding.run`` was the function until ``pounding.run`` the
+    # module was imported)
+    import pkgutil
+
+    submodules = {m.name for m in pkgutil.iter_modules(module.__path__)}
+    assert not submodules & set(module.__all__)

@@ -16,9 +16,9 @@ machinery (:mod:`pounding.studies.sweep`: on Dask, resumable, bit-identical) and
 The modules, one concept each: :mod:`.fitting` (the fits: :func:`fit_lognormal_mle`),
 :mod:`.ida` (IDA curves, capacities, fractiles), :mod:`.bootstrap` (intervals),
 :mod:`.gap_probability` (P(pounding | gap) and the gap for a probability), :mod:`.study`
-(the study file), :mod:`.plan` (the study as a sweep), :mod:`.gaps` (the gaps the records
-need), :mod:`.analysis` (the answers), :mod:`.outputs` (the folder) and :mod:`.runner`
-(running it all).
+(the study file), :mod:`.cases` (the study's runs as a sweep), :mod:`.gaps` (the gaps the
+records need), :mod:`.analysis` (the answers), :mod:`.outputs` (the folder) and
+:mod:`.runner` (running it all).
 
 Names are imported on first use (PEP 562): ``import pounding.studies.fragility.fitting``
 (to fit a fragility curve) loads neither the sweep machinery nor the model, SciPy's
@@ -31,6 +31,8 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 _EXPORTS: dict[str, str] = {
+    "StudyCases": "pounding.studies.fragility.cases",
+    "study_cases": "pounding.studies.fragility.cases",
     "censored_lognormal_mle": "pounding.studies.fragility.fitting",
     "fit_lognormal_mle": "pounding.studies.fragility.fitting",
     "ida_moments": "pounding.studies.fragility.fitting",
@@ -46,8 +48,6 @@ _EXPORTS: dict[str, str] = {
     "capacities": "pounding.studies.fragility.ida",
     "exceedance_counts": "pounding.studies.fragility.ida",
     "ida_fractiles": "pounding.studies.fragility.ida",
-    "StudyPlan": "pounding.studies.fragility.plan",
-    "plan_study": "pounding.studies.fragility.plan",
     "FragilityOutcome": "pounding.studies.fragility.runner",
     "run_study": "pounding.studies.fragility.runner",
     "DEMANDS": "pounding.studies.fragility.study",
@@ -73,6 +73,7 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.studies.fragility.cases import StudyCases, study_cases
     from pounding.studies.fragility.fitting import (
         censored_lognormal_mle,
         fit_lognormal_mle,
@@ -89,7 +90,6 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     )
     from pounding.studies.fragility.gaps import NeededGaps, needed_gaps
     from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
-    from pounding.studies.fragility.plan import StudyPlan, plan_study
     from pounding.studies.fragility.runner import FragilityOutcome, run_study
     from pounding.studies.fragility.study import DEMANDS, StudyConfig, load_study, parse_study
 
@@ -98,7 +98,7 @@ __all__ = [
     "FragilityOutcome",
     "NeededGaps",
     "StudyConfig",
-    "StudyPlan",
+    "StudyCases",
     "capacities",
     "censored_lognormal_mle",
     "empirical_gap",
@@ -112,9 +112,9 @@ __all__ = [
     "lognormal_gap",
     "needed_gaps",
     "parse_study",
-    "plan_study",
     "pounding_probability",
     "pounding_probability_fit",
     "probit_mle",
     "run_study",
+    "study_cases",
 ]

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.studies.fragility.plan import StudyPlan
+from pounding.studies.fragility.cases import StudyCases
 
 __all__ = ["NeededGaps", "needed_gaps"]
 
@@ -51,7 +51,7 @@ class NeededGaps:
     scaled: bool
 
 
-def needed_gaps(plan: StudyPlan) -> NeededGaps:
+def needed_gaps(cases: StudyCases) -> NeededGaps:
     """The gaps the records need, by simulation without contact
     (:func:`pounding.studies.gap.critical_gaps`), each record scaled exactly as its runs.
 
@@ -62,11 +62,11 @@ def needed_gaps(plan: StudyPlan) -> NeededGaps:
     """
     from pounding.studies.gap import critical_gaps
 
-    at = float(plan.config.gap_at())
-    levels = np.asarray(plan.levels, dtype=float)
+    at = float(cases.config.gap_at())
+    levels = np.asarray(cases.levels, dtype=float)
 
     def study_at(level: float) -> Any:
-        built = [plan.build(r, level) for r in range(len(plan.records))]
+        built = [cases.build(r, level) for r in range(len(cases.records))]
         model, _, solver = built[0]
         return critical_gaps(model, [b.motion for b in built], dt=solver["dt"],
                              duration=solver["duration"])

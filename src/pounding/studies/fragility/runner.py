@@ -13,17 +13,17 @@ from typing import Any
 
 from pounding.progress import Progress
 from pounding.studies.fragility.gaps import needed_gaps
-from pounding.studies.fragility.plan import StudyPlan, plan_study
+from pounding.studies.fragility.cases import StudyCases, study_cases
 
 __all__ = ["FragilityOutcome", "run_study"]
 
 
 @dataclass(frozen=True)
 class FragilityOutcome:
-    """What :func:`run_study` did: the plan, the sweep's outcome, the analysis, the files
+    """What :func:`run_study` did: the cases, the sweep's outcome, the analysis, the files
     written and the seconds taken (whole study; the sweep; gaps; analysis and outputs)."""
 
-    plan: StudyPlan
+    cases: StudyCases
     sweep: Any
     analysis: Any
     files: list[Path]
@@ -34,10 +34,10 @@ class FragilityOutcome:
     @property
     def out_dir(self) -> Path:
         """The output folder."""
-        return self.plan.out
+        return self.cases.out
 
 
-def run_study(input: str | os.PathLike[str] | StudyPlan,
+def run_study(input: str | os.PathLike[str] | StudyCases,
               out: str | os.PathLike[str] | None = None, *, overwrite: bool = False,
               figures: bool | None = None, progress: Progress | None = None,
               scheduler: str | None = None, n_workers: int | None = None,
@@ -51,8 +51,8 @@ def run_study(input: str | os.PathLike[str] | StudyPlan,
 
     Parameters
     ----------
-    input : path-like or StudyPlan
-        The study file (``docs/fragility.md``), or its plan (:func:`plan_study`).
+    input : path-like or StudyCases
+        The study file (``docs/fragility.md``), or its cases (:func:`study_cases`).
     out : path-like, optional
         Output folder (default: ``out`` of the study file, relative to it, else ``<study
         file stem>-results`` in the current folder).
@@ -78,21 +78,21 @@ def run_study(input: str | os.PathLike[str] | StudyPlan,
     from pounding.studies.sweep import load_results, run_sweep
 
     start = time.perf_counter()
-    plan = input if isinstance(input, StudyPlan) else plan_study(input, out=out)
+    cases = input if isinstance(input, StudyCases) else study_cases(input, out=out)
     if out is not None:
-        plan.out = Path(out)
-    r = plan.config.run
+        cases.out = Path(out)
+    r = cases.config.run
     # the gaps first: a model the solver refuses (one line) is refused before the sweep
     # writes anything
     t0 = time.perf_counter()
-    gaps = needed_gaps(plan)
+    gaps = needed_gaps(cases)
     t1 = time.perf_counter()
-    res = run_sweep(plan.sweep, plan.out, overwrite=overwrite, progress=progress,
+    res = run_sweep(cases.sweep, cases.out, overwrite=overwrite, progress=progress,
                     scheduler=scheduler or r.scheduler, n_workers=n_workers or r.workers,
                     batch_size=batch_size)
     t2 = time.perf_counter()
     table = load_results(res.results)
-    result = analyse(plan, table, gaps)
-    files = write_outputs(plan, result, figures=True if figures is None else figures)
+    result = analyse(cases, table, gaps)
+    files = write_outputs(cases, result, figures=True if figures is None else figures)
     t3 = time.perf_counter()
-    return FragilityOutcome(plan, res, result, files, t3 - start, t1 - t0, t3 - t2)
+    return FragilityOutcome(cases, res, result, files, t3 - start, t1 - t0, t3 - t2)

@@ -27,7 +27,6 @@ from pounding.studies.sweep.cluster import (
 )
 from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
 from pounding.studies.sweep.extra import require_sweep_packages
-from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
     PARTS_DIR,
     _check_out,
@@ -39,6 +38,7 @@ from pounding.studies.sweep.store import (
     _write_history,
     _write_part,
 )
+from pounding.studies.sweep.sweep_file import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.table import _write_results
 
 __all__ = ["SweepInterrupted", "SweepOutcome", "SweepStopped", "run_sweep"]

@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 from pounding.manifest import Manifest
 
 if TYPE_CHECKING:
-    from pounding.studies.sweep.plan import Sweep
+    from pounding.studies.sweep.sweep_file import Sweep
 
 __all__ = ["HISTORIES_DIR", "MANIFEST_FILE", "PARTS_DIR", "RESULTS_FILE"]
 

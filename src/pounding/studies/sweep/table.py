@@ -12,7 +12,7 @@ from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
 from pounding.studies.sweep.store import RESULTS_FILE
 
 if TYPE_CHECKING:
-    from pounding.studies.sweep.plan import Sweep
+    from pounding.studies.sweep.sweep_file import Sweep
 
 __all__ = ["NONDETERMINISTIC_COLUMNS", "load_results"]
 
