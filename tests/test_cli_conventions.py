@@ -253,7 +253,7 @@ def test_progress_is_done_of_total_in_every_runner(tmp_path: Path) -> None:
 
 
 def test_a_sweep_draws_its_figure_when_asked(tmp_path: Path) -> None:
-    from pounding.manifest import Manifest
+    from pounding.io.manifest import Manifest
     from pounding.studies.sweep import load_sweep, run_sweep
 
     model = _short_seed(tmp_path)

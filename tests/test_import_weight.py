@@ -48,6 +48,13 @@ def test_help_loads_no_numpy(argv: list[str]) -> None:
     assert loaded_by(code) == set(), argv
 
 
+def test_the_output_foundations_load_nothing_heavy() -> None:
+    """Writing files and keeping output folders (``pounding.io``) is needed by every command
+    at start-up: it loads nothing of :data:`HEAVY`, NumPy included."""
+    assert loaded_by("import pounding.io.files, pounding.io.manifest, "
+                     "pounding.io.output_folder") == set()
+
+
 def test_a_fragility_module_loads_only_what_it_needs() -> None:
     """Fitting a fragility curve loads neither the study's runner nor what it runs (the
     sweep machinery, the model, the time stepper, Dask); the package names it all."""

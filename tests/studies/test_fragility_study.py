@@ -181,7 +181,7 @@ def test_a_full_disk_while_writing_the_analysis_keeps_the_earlier_files(small, t
 
     from matplotlib.figure import Figure
 
-    from pounding.io import WriteFailed
+    from pounding.io.files import WriteFailed
     from pounding.studies.fragility.outputs import write_outputs
 
     study, res = small

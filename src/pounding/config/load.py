@@ -18,7 +18,7 @@ from pydantic import ValidationError
 from pounding.config.errors import format_validation_error
 from pounding.config.plausibility import plausibility_warnings
 from pounding.config.run import RunConfig
-from pounding.io import read_toml
+from pounding.io.files import read_toml
 from pounding.plausibility import warn_plausibility
 
 __all__ = ["SWEEP_CASE_TABLES", "load_config", "parse_config"]

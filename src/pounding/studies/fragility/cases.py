@@ -148,7 +148,7 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     out : path, optional
         The output folder (default ``out`` of the file, relative to it, else ``<study file
         stem>-results`` in the current folder,
-        :func:`pounding.output_folder.default_out_dir`; ``<name>-results`` in the current
+        :func:`pounding.io.output_folder.default_out_dir`; ``<name>-results`` in the current
         folder for a study not read from a file).
 
     Raises
@@ -260,13 +260,13 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
 def _out_folder(cfg: StudyConfig, here: Path, out: str | os.PathLike[str] | None,
                 where: str, file: Path | None) -> Path:
     """The output folder: ``out`` given (the command line's ``--out``), else ``out`` of the
-    study file — inside the file's folder (:func:`pounding.io.study_out`) — else
+    study file — inside the file's folder (:func:`pounding.io.files.study_out`) — else
     ``<file stem>-results`` in the current folder
-    (:func:`pounding.output_folder.default_out_dir`; ``<name>-results`` for a study not read
-    from a file); the name is a label (:func:`pounding.io.check_label`).
+    (:func:`pounding.io.output_folder.default_out_dir`; ``<name>-results`` for a study not read
+    from a file); the name is a label (:func:`pounding.io.files.check_label`).
     """
-    from pounding.io import check_label, study_out
-    from pounding.output_folder import default_out_dir
+    from pounding.io.files import check_label, study_out
+    from pounding.io.output_folder import default_out_dir
 
     name = check_label(cfg.name, where)
     if out is not None:

@@ -169,13 +169,13 @@ def write_outputs(cases: StudyCases, a: FragilityAnalysis, figures: bool = True)
 
     All are written first into a temporary folder inside ``cases.out`` and moved into place
     together once complete, each recorded in the folder's manifest
-    (:mod:`pounding.manifest`): a full disk leaves the files of an earlier analysis as
+    (:mod:`pounding.io.manifest`): a full disk leaves the files of an earlier analysis as
     they were. A file of the same name that pounding did not write is not replaced (one
     line, before any is moved).
     """
-    from pounding.io import WriteFailed, write_text
-    from pounding.manifest import Manifest
-    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
+    from pounding.io.files import WriteFailed, write_text
+    from pounding.io.manifest import Manifest
+    from pounding.io.output_folder import make_temporary_folder, remove_temporary_folder
 
     out = cases.out
     man = Manifest(out)

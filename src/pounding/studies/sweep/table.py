@@ -93,7 +93,7 @@ def _write_results(sweep: Sweep, rows: dict[str, dict[str, Any]], out: Path
     """
     import pyarrow.parquet as pq
 
-    from pounding.manifest import Manifest
+    from pounding.io.manifest import Manifest
 
     table = _consolidate(sweep, rows)
     results = out / RESULTS_FILE
