@@ -14,7 +14,7 @@ runs    For a subset of the study's 200 runs (``--records`` records spread over 
         ``--levels`` intensity levels spread over the range, first and last included), each
         run with pounding and with OpenSees on the same model. The model is the study's
         base model (``two_10_storey.toml``) built by pounding's own config loading, and each
-        run's ground motion is the one the study runs: ``StudyPlan.build(record, level)``
+        run's ground motion is the one the study runs: ``StudyCases.build(record, level)``
         (the record trimmed to 30 s and scaled to Sa(1.15 s, 5 %) = level by the study's
         own scaling). OpenSees gets the same floor masses, storey stiffnesses, Rayleigh
         coefficients (pounding's own ``RayleighDamping.coefficients``), Jankowski law
@@ -28,7 +28,7 @@ runs    For a subset of the study's 200 runs (``--records`` records spread over 
         work where OpenSees' three span seconds), each a whole run:
 
         * pounding: what a study run does — the run's model and motion from the study
-          (``StudyPlan.build``: config validation, the record's trimming and Sa scaling,
+          (``StudyCases.build``: config validation, the record's trimming and Sa scaling,
           redone every repeat), ``pounding.simulate`` and the study's measures of the run
           (``result_row``: also energies and floor accelerations, ~6 ms, which OpenSees is
           not asked for);
@@ -88,7 +88,7 @@ from bench_opensees import header, pct, table  # noqa: E402
 import pounding  # noqa: E402
 from pounding.integrate import simulate  # noqa: E402
 from pounding.integrate.reference import simulate_reference  # noqa: E402
-from pounding.studies.fragility import plan_study  # noqa: E402
+from pounding.studies.fragility import study_cases  # noqa: E402
 from pounding.studies.sweep.measures import result_row  # noqa: E402
 
 STUDY = ROOT / "examples" / "fragility_two_10_storey.toml"
@@ -238,8 +238,8 @@ def _clear_scaled_records() -> None:
     RECORDS.clear()
 
 
-def run_pounding(plan: Any, record: int, level: float) -> tuple[dict[str, Any], Any]:
-    model, motion, solver = plan.build(record, level)
+def run_pounding(cases: Any, record: int, level: float) -> tuple[dict[str, Any], Any]:
+    model, motion, solver = cases.build(record, level)
     res = simulate(model, motion, **solver)
     return result_row(res), (model, motion, solver)
 
@@ -265,7 +265,7 @@ def pick(n_total: int, n: int) -> list[int]:
 # ===================================================================== sections
 @dataclass
 class Ctx:
-    plan: Any
+    cases: Any
     mapping: Mapping
     repeat: int
     n_records: int
@@ -282,28 +282,28 @@ class Ctx:
 
 
 def section_runs(ctx: Ctx) -> None:
-    plan = ctx.plan
-    recs, levs = pick(len(plan.records), ctx.n_records), pick(len(plan.levels), ctx.n_levels)
+    cases = ctx.cases
+    recs, levs = pick(len(cases.records), ctx.n_records), pick(len(cases.levels), ctx.n_levels)
     header(f"Runs of the study: {len(recs)} records x {len(levs)} levels (best of "
            f"{ctx.repeat}, pounding of at least {ctx.repeat} spread over {ctx.window:g} s; "
            f"the worst repeat in brackets)")
-    model0, _, solver0 = plan.build(0, plan.levels[0])
+    model0, _, solver0 = cases.build(0, cases.levels[0])
     heights = tuple(np.asarray(b.heights, dtype=float) for b in model0.buildings)
     dt = float(solver0["dt"])
     if solver0.get("duration") is not None:
         raise SystemExit("the base model sets [solver] duration: not handled here")
     # warm-up, untimed: numba's kernel (compiled, or loaded from its cache), OpenSees' import
     t0 = time.perf_counter()
-    _, (_, motion, _) = run_pounding(plan, recs[0], plan.levels[levs[-1]])
+    _, (_, motion, _) = run_pounding(cases, recs[0], cases.levels[levs[-1]])
     warm = time.perf_counter() - t0
     run_opensees(ctx.mapping, motion, dt, 1.0, heights)
     print(f"(warm-up, untimed: pounding's first run {warm:.2f} s — numba's kernel "
           f"{'compiled' if warm > 5 else 'loaded from its cache'})")
     for ri in recs:
         for li in levs:
-            x = plan.levels[li]
-            _, motion, _ = plan.build(ri, x)
-            run = Run(ri, x, plan.records[ri], motion.duration,
+            x = cases.levels[li]
+            _, motion, _ = cases.build(ri, x)
+            run = Run(ri, x, cases.records[ri], motion.duration,
                       float(motion.metadata.get("scale_factor", float("nan"))),
                       int(round(motion.duration / dt)))
             # at least --repeat runs, and as many more as fit in --pounding-window seconds
@@ -314,7 +314,7 @@ def section_runs(ctx: Ctx) -> None:
                                                   and len(run.ours) < MAX_REPEAT)):
                 _clear_scaled_records()
                 t0 = time.perf_counter()
-                row, (_, motion, _) = run_pounding(plan, ri, x)
+                row, (_, motion, _) = run_pounding(cases, ri, x)
                 run.ours.append(time.perf_counter() - t0)
             run.row = row
             for _ in range(ctx.repeat):
@@ -359,7 +359,7 @@ def section_runs(ctx: Ctx) -> None:
     print(f"agreement: impacts equal in {same} of {len(ctx.runs)} runs; |ΔFmax| ≤ "
           f"{max(dF) if dF else float('nan'):.3f} % ({len(dF)} runs with contact); "
           f"|Δdrift| ≤ {max(dD):.4f} %")
-    print("pounding = StudyPlan.build + simulate + result_row (what a study run does, its "
+    print("pounding = StudyCases.build + simulate + result_row (what a study run does, its "
           "record scaled afresh each repeat); OpenSees = model build + analyze(1, dt) loop "
           "reading 20 displacements and 10 forces a step + the measures; 'analysis alone' = "
           "model build + one analyze(n, dt), nothing read. Fmax: pounding's located peak, "
@@ -369,11 +369,11 @@ def section_runs(ctx: Ctx) -> None:
 
     # the serial cost of the whole study, from the subset
     steps = 0
-    for ri in range(len(plan.records)):
-        _, m, _ = plan.build(ri, plan.levels[0])
-        steps += int(round(m.duration / dt)) * len(plan.levels) * len(plan.gaps)
+    for ri in range(len(cases.records)):
+        _, m, _ = cases.build(ri, cases.levels[0])
+        steps += int(round(m.duration / dt)) * len(cases.levels) * len(cases.gaps)
     ctx.all_steps = steps
-    n_all = len(plan.sweep.cases)
+    n_all = len(cases.sweep.cases)
     print()
     print(f"The whole study serially: {n_all} runs, {steps:,} output steps in all; from the "
           f"subset's mean µs per output step (best / worst repeat):")
@@ -392,7 +392,7 @@ def section_runs(ctx: Ctx) -> None:
     # pounding's side measured rather than extrapolated: every run of the study, serially
     from pounding.studies.sweep.execute import run_case
 
-    sw = plan.sweep
+    sw = cases.sweep
     t0 = time.perf_counter()
     bad = 0
     for case in sw.cases:
@@ -411,7 +411,7 @@ def section_reference(ctx: Ctx) -> None:
         return
     run = ctx.runs[len(ctx.runs) // 2]
     header(f"Against simulate_reference: {run.name}, Sa {run.level:.4g} g")
-    model, motion, solver = ctx.plan.build(run.record, run.level)
+    model, motion, solver = ctx.cases.build(run.record, run.level)
     t0 = time.perf_counter()
     ref = result_row(simulate_reference(model, motion, dt=solver["dt"],
                                         duration=solver["duration"]))
@@ -483,7 +483,7 @@ def section_study(ctx: Ctx) -> None:
           "core held by the other worker or other jobs).")
     ext = ctx.extrapolated
     if walls and ext:
-        ours = (f"; its {len(ctx.plan.sweep.cases)} runs serially in one process "
+        ours = (f"; its {len(ctx.cases.sweep.cases)} runs serially in one process "
                 f"{ctx.serial_ours:.1f} s" if ctx.serial_ours == ctx.serial_ours else "")
         print(f"end to end {min(walls):.1f}–{max(walls):.1f} s with pounding (goal ≤ 20 s"
               f"{ours}); the 200 runs alone with OpenSees, serially, extrapolated: "
@@ -525,17 +525,17 @@ def main(argv: list[str] | None = None) -> int:
     kept = False if args.fresh_memory else keep_freed_memory()
     print_environment(kept)
 
-    plan = plan_study(args.study, out=tempfile.gettempdir())
-    model, motion, solver = plan.build(0, plan.levels[0])
+    cases = study_cases(args.study, out=tempfile.gettempdir())
+    model, motion, solver = cases.build(0, cases.levels[0])
     mapping = opensees_mapping(model)
-    print(f"study: {args.study}, base {plan.config.base}: {len(plan.records)} records x "
-          f"{len(plan.levels)} levels of {plan.im_label} ({plan.levels[0]:g} … "
-          f"{plan.levels[-1]:g}) = {len(plan.sweep.cases)} runs; step {1e3 * solver['dt']:g} "
-          f"ms, rtol {solver['rtol']:g}; records trimmed to {plan.config.suite.duration} s")
+    print(f"study: {args.study}, base {cases.config.base}: {len(cases.records)} records x "
+          f"{len(cases.levels)} levels of {cases.im_label} ({cases.levels[0]:g} … "
+          f"{cases.levels[-1]:g}) = {len(cases.sweep.cases)} runs; step {1e3 * solver['dt']:g} "
+          f"ms, rtol {solver['rtol']:g}; records trimmed to {cases.config.suite.duration} s")
     header("The model in both tools")
     table(mapping.rows, ["", "pounding (the study's base model)", "OpenSees"])
 
-    ctx = Ctx(plan, mapping, args.repeat, args.records, args.levels, args.study_repeat,
+    ctx = Ctx(cases, mapping, args.repeat, args.records, args.levels, args.study_repeat,
               args.study, args.pounding_window)
     for s in wanted:
         SECTIONS[s](ctx)

@@ -160,10 +160,10 @@ def test_out_in_a_read_only_folder_is_one_line(tmp_path, capsys, read_only_folde
 
 def test_a_killed_runs_leftovers_are_cleaned_by_the_next_run(tmp_path, capsys):
     # what `kill -9` during a run leaves: its temporary folder, named with its (dead) pid
-    # and marked as pounding's (pounding.output_folder.make_temporary_folder)
+    # and marked as pounding's (pounding.io.output_folder.make_temporary_folder)
     import json
 
-    from pounding.manifest import TEMPORARY_MARKER
+    from pounding.io.manifest import TEMPORARY_MARKER
 
     def marked(name: str, pid: int, holds: list[str]) -> Path:
         folder = tmp_path / name

@@ -205,7 +205,7 @@ def test_every_runner_writes_into_input_stem_results_in_the_current_folder(
     """The one default: ``<input file stem>-results`` in the current folder, never beside
     the input file (a bundled example is only read)."""
     from pounding import run
-    from pounding.studies.fragility import plan_study
+    from pounding.studies.fragility import study_cases
     from pounding.studies.mitigation import run_mitigation
     from pounding.studies.sweep import load_sweep
 
@@ -228,7 +228,7 @@ def test_every_runner_writes_into_input_stem_results_in_the_current_folder(
     (inputs / "frag.toml").write_text(f'name = "x"\nbase = "{model}"\n'
                                       f'[suite]\nfiles = ["{ELC}", "{NWH}"]\n'
                                       '[intensity]\nmeasure = "pga"\nlevels = [0.1, 0.2]\n')
-    assert plan_study(inputs / "frag.toml").out == Path("frag-results")
+    assert study_cases(inputs / "frag.toml").out == Path("frag-results")
     assert sorted(p.name for p in inputs.iterdir()) == ["frag.toml", "gaps.toml", "pair.toml",
                                                        "retrofit.toml"]
 
@@ -253,7 +253,7 @@ def test_progress_is_done_of_total_in_every_runner(tmp_path: Path) -> None:
 
 
 def test_a_sweep_draws_its_figure_when_asked(tmp_path: Path) -> None:
-    from pounding.manifest import Manifest
+    from pounding.io.manifest import Manifest
     from pounding.studies.sweep import load_sweep, run_sweep
 
     model = _short_seed(tmp_path)

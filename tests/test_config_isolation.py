@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from pounding.config import parse_config
-from pounding.config.run import load_config
+from pounding.config.load import load_config
 from pounding.hysteresis import BoucWen
 from pounding.hysteresis.isolators import GRAVITY
 from pounding.structure.isolation import SuperstructureDamping

@@ -14,10 +14,11 @@ HEAVY = ("numpy", "scipy", "numba", "pandas", "xarray", "matplotlib", "dask", "d
          "pyarrow", "pounding.model", "pounding.integrate", "pounding.studies.gap")
 
 
-def loaded_by(code: str) -> set[str]:
-    """The modules of :data:`HEAVY` that a fresh interpreter has loaded after ``code``."""
+def loaded_by(code: str, watched: tuple[str, ...] = HEAVY) -> set[str]:
+    """The modules of ``watched`` (default :data:`HEAVY`) that a fresh interpreter has
+    loaded after ``code``."""
     probe = (f"{code}\nimport json, sys\n"
-             f"print(json.dumps([m for m in {list(HEAVY)!r} if m in sys.modules]))")
+             f"print(json.dumps([m for m in {list(watched)!r} if m in sys.modules]))")
     proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
                           timeout=120)
     assert proc.returncode == 0, proc.stderr
@@ -47,8 +48,30 @@ def test_help_loads_no_numpy(argv: list[str]) -> None:
     assert loaded_by(code) == set(), argv
 
 
+def test_the_output_foundations_load_nothing_heavy() -> None:
+    """Writing files and keeping output folders (``pounding.io``) is needed by every command
+    at start-up: it loads nothing of :data:`HEAVY`, NumPy included."""
+    assert loaded_by("import pounding.io.files, pounding.io.manifest, "
+                     "pounding.io.output_folder") == set()
+
+
+def test_a_fragility_module_loads_only_what_it_needs() -> None:
+    """Fitting a fragility curve loads neither the study's runner nor what it runs (the
+    sweep machinery, the model, the time stepper, Dask); the package names it all."""
+    runner_side = ("pounding.studies.fragility.runner", "pounding.studies.fragility.analysis",
+                   "pounding.studies.fragility.cases", "pounding.studies.fragility.study",
+                   "pounding.studies.sweep", "pounding.config", "pydantic")
+    watched = HEAVY + runner_side
+    loaded = loaded_by("import pounding.studies.fragility.fitting", watched)
+    assert not loaded & {"scipy", "numba", "dask", "pounding.model", "pounding.integrate",
+                         *runner_side}, loaded
+    assert not loaded_by("import pounding.studies.fragility", watched) - {"numpy"}
+    loaded = loaded_by("from pounding.studies.fragility import run_study", watched)
+    assert "pounding.studies.fragility.runner" in loaded
+
+
 @pytest.mark.parametrize("package", ["pounding.config", "pounding.result", "pounding.studies",
-                                     "pounding.studies.sweep"])
+                                     "pounding.studies.sweep", "pounding.studies.fragility"])
 def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
     """Each name a package lists is what its module defines (imported on first use), and
     a name it does not have is an AttributeError naming the package."""
@@ -62,3 +85,10 @@ def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
         assert name in dir(module)
     with pytest.raises(AttributeError, match=f"module '{package}' has no attribute 'nope'"):
         getattr(module, "nope")
+    # a public name that is also a submodule's would become the module once anything
+    # imports that submodule (``pounding.run`` was the function until ``pounding.run`` the
+    # module was imported)
+    import pkgutil
+
+    submodules = {m.name for m in pkgutil.iter_modules(module.__path__)}
+    assert not submodules & set(module.__all__)

@@ -404,5 +404,5 @@ def test_a_sweep_value_out_of_range_of_a_union_fails_in_its_row_not_as_a_wrong_t
     data = apply_overrides(sweep.base, sweep.params, sweep.cases[0].values)
     with pytest.raises(ValidationError) as info:
         RunConfig.model_validate(data, context={"base_dir": sweep.base_dir})
-    assert format_validation_error(info.value) == (
+    assert format_validation_error(info.value, root=RunConfig) == (
         "building[0].storey_law.yield_force: must be in (0, 1e+13] N (got -1)")

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-import pounding.io as pio
+import pounding.io.files as pio
 
 
 @pytest.fixture

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from pounding.cli import main
-from pounding.io import FIGURE_SUFFIXES
+from pounding.io.files import FIGURE_SUFFIXES
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"

@@ -22,7 +22,7 @@ import pytest
 import pounding.run_file as run_mod
 from pounding.cli import main
 from pounding.config import dump_toml
-from pounding.manifest import MANIFEST_FILE, Manifest
+from pounding.io.manifest import MANIFEST_FILE, Manifest
 from pounding.run_file import run
 
 ROOT = Path(__file__).resolve().parents[1]

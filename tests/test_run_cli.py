@@ -18,7 +18,7 @@ import pounding.run_file as run_mod
 from pounding.cli import main
 from pounding.config import dump_toml, parse_config
 from pounding.integrate import simulate
-from pounding.manifest import MANIFEST_FILE
+from pounding.io.manifest import MANIFEST_FILE
 from pounding.plot.loops import plot_hysteresis
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
 from pounding.result import IMPACT_COLUMNS, IMPACTS_CSV_COLUMNS

@@ -2,8 +2,8 @@
 
 :func:`run` never leaves a half-written output folder. Everything is written into a hidden
 temporary folder beside the target (``.<name>.tmp-<pid>-XXXXXXXX``, marked as pounding's,
-:func:`pounding.output_folder.make_temporary_folder`) with a manifest of the files written
-(:mod:`pounding.manifest`), and moved into place only when complete; if anything fails (a
+:func:`pounding.io.output_folder.make_temporary_folder`) with a manifest of the files written
+(:mod:`pounding.io.manifest`), and moved into place only when complete; if anything fails (a
 full disk, an error, Ctrl-C or SIGTERM) the temporary folder is removed and a previous
 output folder is left untouched. A run killed outright (SIGKILL) cannot clean up after
 itself: the next run into the same folder removes what it left (and puts back an earlier
@@ -23,9 +23,9 @@ from pathlib import Path
 
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
-from pounding.io import check_writable, write_text
-from pounding.manifest import check_replaceable
-from pounding.output_folder import default_out_dir, new_output_folder, remove_stale
+from pounding.io.files import check_writable, write_text
+from pounding.io.manifest import check_replaceable
+from pounding.io.output_folder import default_out_dir, new_output_folder, remove_stale
 from pounding.plot.registry import RUN_FIGURES
 from pounding.progress import Progress
 from pounding.result import Result
@@ -47,7 +47,7 @@ FIGURE_FILES: dict[str, str] = {key: fig.file for key, fig in RUN_FIGURES.items(
 
 TEMPORARY_HOLDS: tuple[str, ...] = (*OUTPUT_FILES.values(), *FIGURE_FILES.values())
 """What a run's temporary folder may hold: what a run killed outright leaves is removed by
-these names (:func:`pounding.manifest.remove_temporary_folder`)."""
+these names (:func:`pounding.io.output_folder.remove_temporary_folder`)."""
 
 
 @dataclass(frozen=True)
@@ -87,7 +87,7 @@ def _check_target(out_dir: Path, overwrite: bool) -> None:
 
 def _remove_stale(out_dir: Path) -> None:
     """Remove what a run into ``out_dir`` killed outright (SIGKILL, power loss) left behind
-    (:func:`pounding.output_folder.remove_stale`): its temporary folder beside ``out_dir``, and
+    (:func:`pounding.io.output_folder.remove_stale`): its temporary folder beside ``out_dir``, and
     if it was killed while replacing an earlier output, put that output back. Temporaries
     in ``out_dir`` itself (of a killed ``pounding report``) go too. Only what pounding
     marked, of processes no longer running, is touched."""
@@ -162,7 +162,7 @@ def run(input: str | os.PathLike[str], out: str | os.PathLike[str] | None = None
         The TOML model file (``docs/running.md``).
     out : path-like, optional
         Output folder; default ``<model file stem>-results`` in the current folder
-        (:func:`pounding.output_folder.default_out_dir`). It receives ``timehistories.nc``,
+        (:func:`pounding.io.output_folder.default_out_dir`). It receives ``timehistories.nc``,
         ``impacts.csv``, ``summary.json`` (:meth:`pounding.result.Result.save`),
         ``model.toml`` (the configuration as read, record path made absolute) and, unless
         turned off, the PNG figures of the model

@@ -15,8 +15,8 @@ import pytest
 
 from pounding.integrate import simulate
 from pounding.structure.plan_row import point_history
-from pounding.studies.fragility import plan_study
-from pounding.studies.fragility.runner import needed_gaps
+from pounding.studies.fragility import study_cases
+from pounding.studies.fragility.gaps import needed_gaps
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -37,7 +37,7 @@ target = 0.1
 
 
 @pytest.fixture(scope="module")
-def plan(tmp_path_factory):
+def cases(tmp_path_factory):
     from pounding.ground_motion.bundled import bundled_folder
 
     folder = tmp_path_factory.mktemp("plan")
@@ -49,12 +49,12 @@ def plan(tmp_path_factory):
     b = records / "northridge_1994_newhall_360_RSN1044.AT2"
     study = folder / "study.toml"
     study.write_text(STUDY.format(a=a.as_posix(), b=b.as_posix()), encoding="utf-8")
-    return plan_study(study)
+    return study_cases(study)
 
 
-def test_records_shake_along_the_base_models_incidence(plan) -> None:
-    assert "incidence 60°" in plan.record_note and "is not used" in plan.record_note
-    built = plan.build(0, 0.4)
+def test_records_shake_along_the_base_models_incidence(cases) -> None:
+    assert "incidence 60°" in cases.record_note and "is not used" in cases.record_note
+    built = cases.build(0, 0.4)
     x, y = (c.accel for c in built.motion.components)
     # the record scaled to PGA 0.4 g, then turned: |a| = sqrt(a_x² + a_y²)
     assert np.hypot(x, y).max() / 9.80665 == pytest.approx(0.4, rel=1e-9)
@@ -62,10 +62,10 @@ def test_records_shake_along_the_base_models_incidence(plan) -> None:
     np.testing.assert_allclose(y[moving] / x[moving], math.tan(math.radians(60.0)), rtol=1e-9)
 
 
-def test_needed_gap_is_the_peak_approach_of_the_facing_corners(plan) -> None:
-    gaps = needed_gaps(plan)  # refused before
-    for r in range(len(plan.records)):
-        model, motion, solver = plan.build(r, gaps.at)
+def test_needed_gap_is_the_peak_approach_of_the_facing_corners(cases) -> None:
+    gaps = needed_gaps(cases)  # refused before
+    for r in range(len(cases.records)):
+        model, motion, solver = cases.build(r, gaps.at)
         run = simulate(dataclasses.replace(model, gaps=(10.0,)), motion, dt=solver["dt"],
                        duration=solver["duration"])
         assert run.impacts.shape[0] == 0

@@ -15,7 +15,7 @@ from pounding.cli import main
 from pounding.ground_motion import bundled_records, load_bundled
 from pounding.spectra import DesignSpectrum, response_spectrum, sa_avg, scale_suite
 from pounding.spectra.scaling import saavg_periods, scale_to_saavg
-from pounding.studies.fragility import plan_study, run_study
+from pounding.studies.fragility import run_study, study_cases
 from pounding.studies.gap import critical_gaps
 from pounding.studies.sweep import load_results
 
@@ -59,17 +59,17 @@ def small(tmp_path_factory):
 
 def test_the_runs_are_a_sweep_of_records_by_levels_by_gaps(small):
     study, res = small
-    plan = res.plan
+    cases = res.cases
     assert res.sweep.n_cases == 9 * 4 * 2 and res.sweep.n_errors == 0  # the bundled suite: 9
     table = load_results(res.sweep.results)
     assert list(table.columns[2:5]) == ["record.bundled", "record.sa_g", "contact.gap"]
-    for (r, li, g), (_, row) in zip(plan.rows, table.iterrows()):
-        assert row["record.sa_g"] == plan.levels[li] and row["contact.gap"] == plan.gaps[g]
-        assert row["record.bundled"] == plan.records[r]
+    for (r, li, g), (_, row) in zip(cases.rows, table.iterrows()):
+        assert row["record.sa_g"] == cases.levels[li] and row["contact.gap"] == cases.gaps[g]
+        assert row["record.bundled"] == cases.records[r]
     # a record as the runs scale it has Sa(1.0 s, 5 %) equal to the level
-    _, motion, _ = plan.build(3, 0.6)
+    _, motion, _ = cases.build(3, 0.6)
     assert response_spectrum(motion, [1.0], 0.05).psa_g[0, 0] == pytest.approx(0.6, rel=1e-9)
-    names = {p.name for p in plan.out.iterdir()}
+    names = {p.name for p in cases.out.iterdir()}
     assert {"results.parquet", "sweep.json", "fragility.json", "fragility.csv", "gap.csv",
             "counts.csv", "ida.csv", "needed_gaps.csv", "ida.png", "fragility.png",
             "pounding_vs_gap.png", "pounding_surface.png"} <= names
@@ -104,9 +104,9 @@ def test_needed_gaps_agree_with_every_run_with_contact(small):
 
 def test_needed_gaps_scale_with_the_level_for_linear_buildings(small):
     _, res = small
-    plan, ng = res.plan, res.analysis.gap.needed
+    cases, ng = res.cases, res.analysis.gap.needed
     assert ng.scaled
-    built = [plan.build(r, 0.3) for r in range(len(plan.records))]
+    built = [cases.build(r, 0.3) for r in range(len(cases.records))]
     direct = critical_gaps(built[0].model, [b.motion for b in built],
                            dt=built[0].solver["dt"]).critical.max(axis=1)
     assert ng.needed[:, 1] == pytest.approx(direct, rel=1e-9)
@@ -121,20 +121,20 @@ def test_the_gap_for_the_target_probability_by_hand(small):
     from scipy.stats import norm
 
     assert ga.gap_fit == pytest.approx(math.exp(lg.mean() + lg.std(ddof=1) * norm.ppf(0.8)))
-    data = json.loads((res.plan.out / "fragility.json").read_text())
+    data = json.loads((res.cases.out / "fragility.json").read_text())
     assert data["gap"]["gap_for_target_records_m"] == pytest.approx(g[7])
     assert set(data["gap"]["code_gaps_m"]) == {"ABS", "SRSS", "DDC"}
 
 
 def test_a_second_run_does_no_run_and_writes_the_same_files(small):
     study, res = small
-    before = {n: (res.plan.out / n).read_bytes() for n in ("fragility.json", "fragility.csv",
+    before = {n: (res.cases.out / n).read_bytes() for n in ("fragility.json", "fragility.csv",
                                                           "gap.csv", "ida.csv")}
     again = run_study(study, figures=False)
     assert again.sweep.n_run == 0
     for n, b in before.items():
-        assert (res.plan.out / n).read_bytes() == b, n
-    assert not (res.plan.out / "ida.png").exists()
+        assert (res.cases.out / n).read_bytes() == b, n
+    assert not (res.cases.out / "ida.png").exists()
 
 
 def test_cli_runs_resumes_and_reports(small, tmp_path, capsys):
@@ -145,8 +145,8 @@ def test_cli_runs_resumes_and_reports(small, tmp_path, capsys):
     assert "stripes, MLE" in text and "DDC" in text
     assert main(["fragility", str(study), "--out", str(out), "--no-figures"]) == 0
     assert "0 run now" in capsys.readouterr().out
-    assert main(["report", str(res.plan.out)]) == 0
-    html = (res.plan.out / "report.html").read_text()
+    assert main(["report", str(res.cases.out)]) == 0
+    html = (res.cases.out / "report.html").read_text()
     assert "small &lt;study&gt;: pounding fragility report" in html
     assert "<study>" not in html and "Probability of pounding" in html
 
@@ -158,7 +158,7 @@ def _snapshot(folder: Path) -> dict[str, bytes | None]:
 
 def test_overwrite_refuses_a_study_folder_holding_a_file_of_the_users(small, capsys):
     study, res = small
-    out = res.plan.out
+    out = res.cases.out
     mine = out / "notes.txt"
     mine.write_text("mine")
     try:
@@ -181,15 +181,15 @@ def test_a_full_disk_while_writing_the_analysis_keeps_the_earlier_files(small, t
 
     from matplotlib.figure import Figure
 
-    from pounding.io import WriteFailed
+    from pounding.io.files import WriteFailed
     from pounding.studies.fragility.outputs import write_outputs
 
     study, res = small
-    plan = copy.copy(res.plan)
-    plan.out = Path(shutil.copytree(res.plan.out, tmp_path / "out"))
+    cases = copy.copy(res.cases)
+    cases.out = Path(shutil.copytree(res.cases.out, tmp_path / "out"))
     for name in ("ida.png", "fragility.png", "pounding_vs_gap.png", "pounding_surface.png"):
-        (plan.out / name).unlink(missing_ok=True)
-    before = _snapshot(plan.out)
+        (cases.out / name).unlink(missing_ok=True)
+    before = _snapshot(cases.out)
     calls = []
 
     def full(self, fname, **kw):
@@ -200,10 +200,10 @@ def test_a_full_disk_while_writing_the_analysis_keeps_the_earlier_files(small, t
 
     monkeypatch.setattr(Figure, "savefig", full)
     with pytest.raises(WriteFailed) as info:
-        write_outputs(plan, res.analysis, figures=True)
-    assert str(info.value) == (f"cannot write {plan.out / 'fragility.png'}: no space left on "
+        write_outputs(cases, res.analysis, figures=True)
+    assert str(info.value) == (f"cannot write {cases.out / 'fragility.png'}: no space left on "
                                "device")
-    assert _snapshot(plan.out) == before  # not one file of the new analysis, nothing left
+    assert _snapshot(cases.out) == before  # not one file of the new analysis, nothing left
 
 
 @pytest.mark.parametrize("old, new, message", [
@@ -262,15 +262,15 @@ def test_saavg_and_pga_studies_scale_each_record_to_the_level(tmp_path):
         text = STUDY.replace('measure = "sa"\nperiod = 1.0', f'measure = "{measure}"{extra}')
         study = tmp_path / f"{measure}.toml"
         study.write_text(text)
-        plan = plan_study(study)
-        assert plan.sweep.params[1] == key
-        _, motion, _ = plan.build(2, 0.3)
+        cases = study_cases(study)
+        assert cases.sweep.params[1] == key
+        _, motion, _ = cases.build(2, 0.3)
         if measure == "pga":
             assert motion.pga_g == pytest.approx(0.3, rel=1e-12)
         else:
             # default range: 0.2 T1 of the stiffer to 3 T1 of the more flexible building
-            assert plan.saavg_range == pytest.approx((0.1, 3.0), rel=1e-6)
-            assert sa_avg(motion, plan.saavg_range) == pytest.approx(0.3, rel=1e-9)
+            assert cases.saavg_range == pytest.approx((0.1, 3.0), rel=1e-6)
+            assert sa_avg(motion, cases.saavg_range) == pytest.approx(0.3, rel=1e-9)
 
 
 def test_a_code_scaled_suite_keeps_its_spread_about_the_target(tmp_path):
@@ -278,13 +278,13 @@ def test_a_code_scaled_suite_keeps_its_spread_about_the_target(tmp_path):
                          f'"{TARGET}", period = 1.0, method = "code" }}')
     study = tmp_path / "scaled.toml"
     study.write_text(text)
-    plan = plan_study(study)
+    cases = study_cases(study)
     motions = [load_bundled(f).trimmed(4.0) for f in bundled_records()]
     target = DesignSpectrum.from_file(TARGET)
     factors = scale_suite(motions, target, 1.0, method="code").factors
-    assert list(plan.factors) == pytest.approx(list(factors), rel=1e-12)
-    assert plan.im_target == pytest.approx(float(target.sa_g(1.0)), rel=1e-12)
-    assert plan.sweep.params[:2] == ("record.bundled", "record.scale")
-    _, motion, _ = plan.build(4, 0.6)
-    expected = motions[4].scaled(factors[4] * 0.6 / plan.im_target)
+    assert list(cases.factors) == pytest.approx(list(factors), rel=1e-12)
+    assert cases.im_target == pytest.approx(float(target.sa_g(1.0)), rel=1e-12)
+    assert cases.sweep.params[:2] == ("record.bundled", "record.scale")
+    _, motion, _ = cases.build(4, 0.6)
+    expected = motions[4].scaled(factors[4] * 0.6 / cases.im_target)
     assert np.array_equal(motion.accel, expected.accel)

@@ -13,7 +13,7 @@ from pounding import simulate
 from pounding.cli import main
 from pounding.config import load_config
 from pounding.devices import Link
-from pounding.manifest import MANIFEST_FILE
+from pounding.io.manifest import MANIFEST_FILE
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = ROOT / "examples" / "two_10_storey.toml"

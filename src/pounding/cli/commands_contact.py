@@ -71,7 +71,7 @@ def zeta_cmd(
       pounding zeta --e 0.3,0.5,0.7 --plot fig4.png
     """
     from pounding.contact.restitution import FORMULAS, PUBLISHED, TABLE1_E, TABLE1_ZETA
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
 
     check_output_file(plot, "--plot", figure=True)
 
@@ -132,7 +132,7 @@ def audit_cmd(
     """
     from pounding.contact.audit import PAIRINGS, AuditCase, restitution_audit
     from pounding.contact.restitution import TABLE1_E
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
 
     check_output_file(plot, "--plot", figure=True)
     check_output_file(csv, "--csv")
@@ -155,7 +155,7 @@ def audit_cmd(
                        "separate (e = 0). Energy check: max |W - ½m(1-e²)v0²| / ½mv0² = "
                        f"{df['energy_error'].max():.1e}."))
     if csv is not None:
-        from pounding.io import write_text
+        from pounding.io.files import write_text
 
         write_text(csv, df.rename(columns={"peak_force": "peak_force_N",
                                            "duration": "duration_s"}).to_csv(index=False))

@@ -46,7 +46,7 @@ def ellipse(
     """
     import numpy as np
 
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
 
     check_output_file(plot, "--plot", figure=True)
 

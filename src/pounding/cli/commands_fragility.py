@@ -36,16 +36,16 @@ def fragility_cmd(
 
       pounding fragility study.toml --out study-results --overwrite
     """
-    from pounding.studies.fragility import plan_study, run_study
+    from pounding.studies.fragility import run_study, study_cases
     from pounding.studies.sweep import SweepInterrupted, SweepStopped
 
-    plan = plan_study(study_file, out=out)
-    if plan.record_note:
-        console.print(Text(plan.record_note))
+    cases = study_cases(study_file, out=out)
+    if cases.record_note:
+        console.print(Text(cases.record_note))
     try:
         with sigterm_as_interrupt(), \
-                progress_bar(f"fragility {plan.config.name}", "runs") as progress:
-            res = run_study(plan, overwrite=overwrite, figures=figures, progress=progress,
+                progress_bar(f"fragility {cases.config.name}", "runs") as progress:
+            res = run_study(cases, overwrite=overwrite, figures=figures, progress=progress,
                             scheduler=scheduler, n_workers=workers)
     except (SweepInterrupted, SweepStopped) as exc:
         stopped(exc, again(study_file, "fragility", out=out, workers=workers,
@@ -55,7 +55,7 @@ def fragility_cmd(
 
 def _print(res: Any) -> None:
     """The tables printed after a study: intensities in g, gaps in mm."""
-    a, plan = res.analysis, res.plan
+    a, cases = res.analysis, res.cases
     rows = []
     for r in a.limit_states:
         gap = "base" if r.gap is None else f"{1000 * r.gap:g}"
@@ -64,8 +64,8 @@ def _print(res: Any) -> None:
                          f"{number(e.median_ci[0], 3)} – {number(e.median_ci[1], 3)}",
                          f"{e.beta:.3f}", f"{e.beta_ci[0]:.3f} – {e.beta_ci[1]:.3f}",
                          f"{int((~r.censored).sum())}/{r.capacity.size}"))
-    print_table(console, f"{plan.config.name}: fragility ({len(plan.records)} records × "
-                         f"{len(plan.levels)} levels × {len(plan.gaps)} gap(s) = "
+    print_table(console, f"{cases.config.name}: fragility ({len(cases.records)} records × "
+                         f"{len(cases.levels)} levels × {len(cases.gaps)} gap(s) = "
                          f"{res.sweep.n_cases} runs; {res.sweep.n_run} run now)",
                 [Col("limit state", "left", wrap=True), Col("gap [mm]"),
                  Col("method", "left"), Col("median [g]"), Col("interval [g]"), Col("β [-]"),
@@ -74,10 +74,10 @@ def _print(res: Any) -> None:
     from pounding.studies.fragility.outputs import _gap_rows
 
     rows = []
-    for name, _, gm, lo, hi, pe, pf in _gap_rows(plan, a):
+    for name, _, gm, lo, hi, pe, pf in _gap_rows(cases, a):
         ci = f" ({1000 * lo:.0f} – {1000 * hi:.0f})" if lo == lo else ""
         rows.append((literal(name), f"{1000 * gm:.1f}{ci}", f"{pe:.2f}", f"{pf:.3f}"))
-    print_table(console, f"gap at {plan.im_label.replace(' [g]', '')} = {ga.needed.at:g} g "
+    print_table(console, f"gap at {cases.im_label.replace(' [g]', '')} = {ga.needed.at:g} g "
                          f"(needed gaps: lognormal θ = {1000 * ga.median:.1f} mm, β = "
                          f"{ga.beta:.3f})",
                 [Col("gap from", "left", wrap=True), Col("gap [mm]"), Col("P(pounding), records"),
@@ -87,4 +87,4 @@ def _print(res: Any) -> None:
                                     f": see results.parquet (first: {a.failures[0]})"))
     console.print(Text(f"{res.wall_time:.1f} s (runs {res.sweep.run_time:.1f} s, gaps "
                        f"{res.gap_time:.1f} s, analysis and files {res.analysis_time:.1f} s); "
-                       f"results in {plan.out}"))
+                       f"results in {cases.out}"))

@@ -176,7 +176,7 @@ def gap_cmd(
       pounding gap model.toml --design examples/spectrum_asce7_site.toml
     """
     from pounding.config import load_config
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
     from pounding.spectra import DesignSpectrum
 
     check_output_file(csv, "--csv")
@@ -284,7 +284,7 @@ def gap_cmd(
                                 f"{name} {_mm(g)} mm" for name, g in gov.items()
                                 if name not in between)))
     if csv is not None:
-        from pounding.io import write_text
+        from pounding.io.files import write_text
 
         write_text(csv, study.to_frame(spec).to_csv(index=False))
         console.print(f"table: {csv}", highlight=False)

@@ -33,7 +33,7 @@ def report_cmd(
 
       pounding report fragility_two_10_storey-results
     """
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
     from pounding.report import write_report
 
     check_output_file(html, "--html")

@@ -18,7 +18,7 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
          label: str) -> None:
     from pounding.cli.messages import EXIT_INTERRUPTED, error_line
     from pounding.config import load_config
-    from pounding.output_folder import default_out_dir
+    from pounding.io.output_folder import default_out_dir
     from pounding.run_file import run_config
 
     cfg = load_config(model_file)

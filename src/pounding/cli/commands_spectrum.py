@@ -61,7 +61,7 @@ def spectrum_cmd(
 
       pounding spectrum H1.AT2 H2.AT2 --rotd --design ec8.toml --plot rotd.png
     """
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
     from pounding.spectra.response import parse_damping, parse_periods
 
     check_output_file(csv, "--csv")
@@ -81,7 +81,7 @@ def spectrum_cmd(
     else:
         curves, text = _single(motions, t, zetas)
     if csv is not None:
-        from pounding.io import write_text
+        from pounding.io.files import write_text
 
         write_text(csv, text)
         console.print(f"table: {csv}", highlight=False)

@@ -72,7 +72,7 @@ def suite_cmd(
     import numpy as np
 
     from pounding.ground_motion.suite import BUNDLED, read_suite
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
     from pounding.spectra import DesignSpectrum
     from pounding.spectra.scaling import CODE_RATIO, scale_suite
 
@@ -100,7 +100,7 @@ def suite_cmd(
                          damping=zetas[0], period_range=lo_hi, limits=lims)
     _print(result, suite)
     if csv is not None:
-        from pounding.io import write_text
+        from pounding.io.files import write_text
         from pounding.spectra.response import csv_text
 
         write_text(csv, csv_text(CSV_COLUMNS, _rows(result)))

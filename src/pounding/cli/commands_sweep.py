@@ -102,7 +102,7 @@ def plot_cmd(
 
       pounding plot sweep_gap_e-results --x contact.gap --measure peak_contact_force_N --plot force.png
     """
-    from pounding.io import check_output_file
+    from pounding.io.files import check_output_file
     from pounding.plot import save_figure
     from pounding.plot.sweep import default_figure_name, plot_sweep
     from pounding.studies.sweep import load_results
@@ -115,7 +115,7 @@ def plot_cmd(
         target = plot
         save_figure(fig, target, dpi=dpi)
     else:  # beside the table: pounding's own file, in the folder's manifest
-        from pounding.manifest import Manifest
+        from pounding.io.manifest import Manifest
 
         target = folder / default_figure_name(measure, xs, ys)
         manifest = Manifest(folder)

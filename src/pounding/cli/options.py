@@ -161,7 +161,7 @@ OUT_HELP = "Output folder."
 OUT_RULE = escape("Default: `out` of the input file if it names one (relative to the file), "
                   "else INPUT-STEM-results in the current folder.")
 """Where every command that reads an input file writes without ``--out``
-(:func:`pounding.output_folder.default_out_dir`)."""
+(:func:`pounding.io.output_folder.default_out_dir`)."""
 
 Out = Annotated[Path | None, typer.Option(
     "--out", "-o", metavar="DIR", help=f"{OUT_HELP} {OUT_RULE}", show_default=False)]

@@ -23,7 +23,8 @@ One section a module: :mod:`~pounding.config.record`, :mod:`~pounding.config.bui
 (its damping and storey laws in :mod:`~pounding.config.storeys`, plans in
 :mod:`~pounding.config.plan`, isolators and walls in :mod:`~pounding.config.isolation`),
 :mod:`~pounding.config.contact`, :mod:`~pounding.config.device`, :mod:`~pounding.config.run`
-(solver, output, the whole file, loading it); :mod:`~pounding.config.quantities` gives every
+(solver, output, the whole file), :mod:`~pounding.config.load` (reading a file: validating,
+building, checking); :mod:`~pounding.config.quantities` gives every
 number its unit and range, :mod:`~pounding.config.errors` turns validation errors into those
 lines, :mod:`~pounding.config.plausibility` finds inputs probably in the wrong unit, and
 :mod:`~pounding.config.toml` writes a model file back.
@@ -48,13 +49,13 @@ _EXPORTS: dict[str, str] = {
     "format_validation_error": "pounding.config.errors",
     "EL_CENTRO_ALIASES": "pounding.config.record",
     "RecordConfig": "pounding.config.record",
-    "SWEEP_CASE_TABLES": "pounding.config.run",
+    "SWEEP_CASE_TABLES": "pounding.config.load",
     "Built": "pounding.config.run",
     "OutputConfig": "pounding.config.run",
     "RunConfig": "pounding.config.run",
     "SolverConfig": "pounding.config.run",
-    "load_config": "pounding.config.run",
-    "parse_config": "pounding.config.run",
+    "load_config": "pounding.config.load",
+    "parse_config": "pounding.config.load",
     "dump_toml": "pounding.config.toml",
 }
 """Public name → the module that defines it."""
@@ -78,16 +79,9 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.config.building import BuildingConfig, DampingConfig, StoreyLawConfig
     from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
     from pounding.config.errors import format_validation_error
+    from pounding.config.load import SWEEP_CASE_TABLES, load_config, parse_config
     from pounding.config.record import EL_CENTRO_ALIASES, RecordConfig
-    from pounding.config.run import (
-        SWEEP_CASE_TABLES,
-        Built,
-        OutputConfig,
-        RunConfig,
-        SolverConfig,
-        load_config,
-        parse_config,
-    )
+    from pounding.config.run import Built, OutputConfig, RunConfig, SolverConfig
     from pounding.config.toml import dump_toml
 
 __all__ = [

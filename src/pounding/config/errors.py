@@ -357,16 +357,12 @@ def _resolve(items: list[tuple[dict[str, Any], _Located]], root: Any) -> list[st
     return lines
 
 
-def meant_elsewhere(exc: ValidationError, root: type[BaseModel] | None = None
-                    ) -> list[bool]:
+def meant_elsewhere(exc: ValidationError, root: type[BaseModel]) -> list[bool]:
     """For each error of ``exc`` (in order): True if it is the error of a union member the
     value was not meant for, because another member of the same union took the value's
     kind and failed otherwise (``yield_force = -1``: the list member's "must be a list" is
-    beside the point, the number member's "must be > 0" is the problem)."""
-    if root is None:
-        from pounding.config.run import RunConfig
-
-        root = RunConfig
+    beside the point, the number member's "must be > 0" is the problem). ``root`` is the
+    model ``exc`` came from (e.g. :class:`~pounding.config.RunConfig`)."""
     located = [(dict(e), _locate(tuple(e.get("loc", ())), root))
                for e in exc.errors(include_url=False)]
     groups: dict[tuple[Any, ...], dict[str, list[tuple[dict[str, Any], _Located]]]] = {}
@@ -386,15 +382,12 @@ def meant_elsewhere(exc: ValidationError, root: type[BaseModel] | None = None
     return out
 
 
-def format_validation_error(exc: ValidationError, prefix: str = "",
-                            root: type[BaseModel] | None = None) -> str:
+def format_validation_error(exc: ValidationError, prefix: str = "", *,
+                            root: type[BaseModel]) -> str:
     """One line per problem: ``<prefix><key path>: <problem> (got <value>)``; ``root`` is
-    the file's model (default :class:`~pounding.config.RunConfig`): the key paths and
-    ranges are read along it, and an unknown key is compared with the keys of its table."""
-    if root is None:
-        from pounding.config.run import RunConfig
-
-        root = RunConfig
+    the model ``exc`` came from, the file's model (:class:`~pounding.config.RunConfig` for
+    a model file): the key paths and ranges are read along it, and an unknown key is
+    compared with the keys of its table."""
     items = [(dict(e), _locate(tuple(e.get("loc", ())), root))
              for e in exc.errors(include_url=False)]
     lines: list[str] = []

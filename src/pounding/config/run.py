@@ -1,27 +1,25 @@
-"""A whole model file: ``[solver]``, ``[output]``, the run they make, and loading it."""
+"""A whole model file: ``[solver]``, ``[output]`` and the run they make (reading one from a
+file is :mod:`pounding.config.load`)."""
 
 from __future__ import annotations
 
-import os
 import re
 from pathlib import Path
 from typing import Annotated, Any, NamedTuple
 
-from pydantic import Field, PrivateAttr, ValidationError, model_validator
+from pydantic import Field, PrivateAttr, model_validator
 
 from pounding.config.base import Section, field_error, fmt, prefixed
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
 from pounding.config.device import DeviceConfig
 from pounding.config.isolation import WallConfig
-from pounding.config.errors import format_validation_error
 from pounding.config.quantities import Duration, Step
 from pounding.config.record import RecordConfig
 from pounding.config.toml import dump_toml
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
-from pounding.io import read_toml
 from pounding.model import ContactSpec, PoundingModel
-from pounding.plausibility import warn_plausibility
+
 
 class SolverConfig(Section):
     """``[solver]``: options of :func:`pounding.integrate.simulate`.
@@ -280,63 +278,3 @@ def _npz_has_c(path: str | None) -> bool:
 
     with np.load(path, allow_pickle=False) as archive:
         return "C" in archive.files
-
-
-def parse_config(data: dict[str, Any], base_dir: str | os.PathLike[str] = ".",
-                 where: str = "config") -> RunConfig:
-    """Validate already-parsed TOML data; ``base_dir`` is where relative paths start.
-
-    An input that is valid but probably in the wrong unit (a gap of 40 m, a floor of 600
-    kg, T1 below 0.05 s or above 10 s, a PGA above 3 g) is issued as a
-    :class:`~pounding.plausibility.PlausibilityWarning`, ``<where>: <key>: …``, and kept in
-    :attr:`RunConfig.plausibility`.
-
-    Raises
-    ------
-    ValueError
-        One line per problem, each ``<where>: <key path>: <problem> (got <value>)``.
-    """
-    cfg = _parse(data, base_dir, where)
-    warn_plausibility(cfg.plausibility)
-    return cfg
-
-
-def _parse(data: dict[str, Any], base_dir: str | os.PathLike[str], where: str) -> RunConfig:
-    """:func:`parse_config` without issuing its warnings."""
-    try:
-        cfg = RunConfig.model_validate(data, context={"base_dir": Path(base_dir)})
-    except ValidationError as exc:
-        raise ValueError(format_validation_error(exc, prefix=f"{where}: ")) from None
-    try:
-        built = cfg.build()
-    except ValueError as exc:
-        raise ValueError(f"{where}: {exc}") from None
-    from pounding.config.plausibility import plausibility_warnings
-
-    cfg._plausibility = tuple(f"{where}: {line}" for line in plausibility_warnings(cfg, built))
-    return cfg
-
-
-SWEEP_CASE_TABLES = ("grid", "list", "random")
-"""The tables of a sweep file that give its cases (:mod:`pounding.studies.sweep`); a file
-with ``base`` and one of them is a sweep file, not a model file."""
-
-
-def load_config(path: str | os.PathLike[str]) -> RunConfig:
-    """Read and validate a TOML model file (and check it builds).
-
-    Raises
-    ------
-    ValueError
-        If the file is missing or not TOML, or any key is unknown or has a bad value:
-        one line per problem naming the key path and the value.
-    """
-    p = Path(path)
-    data = read_toml(p, "model file")
-    if "base" in data and any(k in data for k in SWEEP_CASE_TABLES):
-        raise ValueError(f"{p}: this is a sweep file (it has 'base' and a [grid], [list] or "
-                         f"[random] table), not a model file: run it with `pounding sweep {p}`")
-    cfg = _parse(data, base_dir=p.resolve().parent, where=str(p))
-    cfg._source = p.resolve()
-    warn_plausibility(cfg.plausibility)
-    return cfg

@@ -17,7 +17,7 @@ import weakref
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pounding.io import atomic_path
+from pounding.io.files import atomic_path
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

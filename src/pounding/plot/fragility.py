@@ -49,13 +49,13 @@ def plot_ida(a: Any, gap_index: int = 0) -> Figure:
             ax.plot(np.r_[0.0, row], np.r_[0.0, x], color="k", ls=ls,
                     lw=2.2 if name == "50 %" else 1.4, label=f"{name} fractile")
         ax.set_xlabel(f"{d.label} [{d.unit}]")
-        ax.set_ylabel(a.plan.im_label)
+        ax.set_ylabel(a.cases.im_label)
         ax.set_xlim(left=0.0)
         ax.set_ylim(0.0, x.max() * 1.03)
         ax.grid(True, alpha=0.3)
         if i == 0:
             ax.legend(fontsize=7, loc="lower right")
-    fig.suptitle(f"{a.plan.config.name}: IDA curves of {len(a.records)} records "
+    fig.suptitle(f"{a.cases.config.name}: IDA curves of {len(a.records)} records "
                  f"({_gap_text(a.gaps[gap_index])})", fontsize=10)
     fig.tight_layout()
     return fig
@@ -69,7 +69,7 @@ def plot_fragility(a: Any) -> Figure:
     fig, axes = _panels(len(specs), 4.2, 3.4)
     x = a.levels
     grid = np.linspace(0.0, x.max() * 1.05, 300)[1:]
-    conf = a.plan.config.bootstrap.confidence
+    conf = a.cases.config.bootstrap.confidence
     for name, ax in zip(specs, axes):
         for gi, r in enumerate([r for r in a.limit_states if r.spec.label == name]):
             c = f"C{gi}"
@@ -85,13 +85,13 @@ def plot_fragility(a: Any) -> Figure:
             ax.plot(grid, r.ida.probability(grid), color=c, lw=1.3, ls="--",
                     label=f"IDA capacities: θ = {r.ida.median:.3g} g, β = {r.ida.beta:.2f}")
         ax.set_title(name, fontsize=9, loc="left")
-        ax.set_xlabel(a.plan.im_label)
+        ax.set_xlabel(a.cases.im_label)
         ax.set_ylabel("P(exceeded)")
         ax.set_ylim(-0.02, 1.02)
         ax.set_xlim(0.0, grid[-1])
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=6.5, loc="lower right")
-    fig.suptitle(f"{a.plan.config.name}: fragility curves ({len(a.records)} records × "
+    fig.suptitle(f"{a.cases.config.name}: fragility curves ({len(a.records)} records × "
                  f"{x.size} levels)", fontsize=10)
     fig.tight_layout()
     return fig
@@ -109,7 +109,7 @@ def plot_gap_probability(a: Any) -> Figure:
     ax.step(g, ga.p_empirical, where="post", color="k", lw=1.4,
             label=f"records ({len(a.records)}): fraction whose needed gap is larger")
     ax.fill_between(g, *ga.p_band, color="C0", alpha=0.18, lw=0,
-                    label=f"{100 * a.plan.config.bootstrap.confidence:g} % band (bootstrap)")
+                    label=f"{100 * a.cases.config.bootstrap.confidence:g} % band (bootstrap)")
     ax.plot(g, ga.p_fit, color="C0", lw=1.8,
             label=f"lognormal: θ = {ga.median * mm:.3g} mm, β = {ga.beta:.2f}")
     ax.axhline(ga.target, color="0.4", lw=0.9, ls=":")
@@ -125,8 +125,8 @@ def plot_gap_probability(a: Any) -> Figure:
     ax.set_ylim(-0.02, 1.02)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, loc="upper right")
-    ax.set_title(f"{a.plan.config.name}: probability of pounding at "
-                 f"{a.plan.im_label.replace(' [g]', '')} = {ga.needed.at:g} g", fontsize=9,
+    ax.set_title(f"{a.cases.config.name}: probability of pounding at "
+                 f"{a.cases.im_label.replace(' [g]', '')} = {ga.needed.at:g} g", fontsize=9,
                  loc="left")
     fig.tight_layout()
     return fig
@@ -149,8 +149,8 @@ def plot_gap_surface(a: Any) -> Figure:
     ax.clabel(lines, fmt=lambda v: f"{100 * v:.0f} % (records)", fontsize=7)
     ax.axhline(ga.needed.at, color="w", lw=0.8, ls=":")
     ax.set_xlabel("gap [mm]")
-    ax.set_ylabel(a.plan.im_label)
-    ax.set_title(f"{a.plan.config.name}: probability of pounding over gap × intensity",
+    ax.set_ylabel(a.cases.im_label)
+    ax.set_title(f"{a.cases.config.name}: probability of pounding over gap × intensity",
                  fontsize=9, loc="left")
     fig.tight_layout()
     return fig

@@ -18,8 +18,8 @@ Every text taken from the files is HTML-escaped; every quantity carries its unit
   and the main measure plotted against each swept parameter.
 
 The report only reads the folder; it writes nothing there but the report itself (written
-atomically, :func:`pounding.io.write_text`; ``report.html`` is added to the folder's manifest,
-:mod:`pounding.manifest`, so that ``--overwrite`` may replace it, and an existing
+atomically, :func:`pounding.io.files.write_text`; ``report.html`` is added to the folder's manifest,
+:mod:`pounding.io.manifest`, so that ``--overwrite`` may replace it, and an existing
 ``report.html`` pounding did not write is not replaced). See ``docs/report.md``.
 
 The package, by concept: this module (what a folder is, writing the page);
@@ -37,7 +37,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from pounding.io import write_text
+from pounding.io.files import write_text
 from pounding.report.fragility import FRAGILITY_FILE, render_fragility
 from pounding.report.run import MAX_IMPACT_ROWS, render_run
 from pounding.report.run_folder import RUN_FILES
@@ -112,7 +112,7 @@ def write_report(results_dir: str | os.PathLike[str],
     ValueError
         ``results_dir`` is neither a run nor a sweep output, or a file in it is unreadable.
     """
-    from pounding.manifest import Manifest
+    from pounding.io.manifest import Manifest
 
     folder = Path(results_dir)
     target = Path(out) if out is not None else folder / DEFAULT_NAME

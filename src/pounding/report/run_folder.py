@@ -92,7 +92,7 @@ def read_run(folder: Path) -> RunFolder:
         try:
             toml = tomllib.loads(toml_text)
         except tomllib.TOMLDecodeError as exc:
-            from pounding.io import toml_error_text
+            from pounding.io.files import toml_error_text
 
             build_error = f"model.toml is not valid TOML ({toml_error_text(exc)})"
         if build_error is None:

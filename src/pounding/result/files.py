@@ -1,8 +1,8 @@
 """The files of a run: ``timehistories.nc``, ``impacts.csv`` and ``summary.json``.
 
-Each is written atomically (:mod:`pounding.io`). The NetCDF file is serialised in memory
+Each is written atomically (:mod:`pounding.io.files`). The NetCDF file is serialised in memory
 and then written with plain file I/O, so that HDF5 never meets a full disk or a file-size
-limit (it crashes the process there); a failed write is one :class:`pounding.io.WriteFailed`
+limit (it crashes the process there); a failed write is one :class:`pounding.io.files.WriteFailed`
 naming the file, costing about 0.03 s more for the demo's 42 MB. It is built with h5netcdf
 directly from :func:`pounding.result.variables.history_variables` — the same variables,
 units and coordinates :meth:`~pounding.result.Result.to_dataset` gives as an xarray Dataset, which
@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from pounding.io import write_bytes, write_text
+from pounding.io.files import write_bytes, write_text
 from pounding.result.columns import IMPACT_COLUMNS, rounded_length
 from pounding.result.summary import summarize
 from pounding.result.variables import HistoryVariables, history_variables

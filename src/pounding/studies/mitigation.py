@@ -101,7 +101,7 @@ class MitigationOutcome:
 def load_mitigation(path: str | os.PathLike[str]) -> tuple[MitigationStudy, Path]:
     """Read and check a study file; the folder its paths are relative to."""
     from pounding.config.errors import format_validation_error
-    from pounding.io import read_toml
+    from pounding.io.files import read_toml
 
     p = Path(path)
     data = read_toml(p, "mitigation study file")
@@ -225,17 +225,17 @@ def summarise(table: "pd.DataFrame") -> "pd.DataFrame":
 
 
 MITIGATION_FILES: tuple[str, ...] = ("runs.csv", "summary.csv", "study.toml", "mitigation.png")
-"""The files of a study's output folder (and its manifest, :mod:`pounding.manifest`)."""
+"""The files of a study's output folder (and its manifest, :mod:`pounding.io.manifest`)."""
 
 
 def _out_folder(study: MitigationStudy, here: Path, out: str | os.PathLike[str] | None,
                 where: str, file: Path) -> Path:
     """The output folder: ``out`` given (``--out``), else ``out`` of the study file —
-    inside the file's folder (:func:`pounding.io.study_out`) — else ``<file stem>-results``
-    in the current folder (:func:`pounding.output_folder.default_out_dir`); the name is a
-    label (:func:`pounding.io.check_label`)."""
-    from pounding.io import check_label, study_out
-    from pounding.output_folder import default_out_dir
+    inside the file's folder (:func:`pounding.io.files.study_out`) — else ``<file stem>-results``
+    in the current folder (:func:`pounding.io.output_folder.default_out_dir`); the name is a
+    label (:func:`pounding.io.files.check_label`)."""
+    from pounding.io.files import check_label, study_out
+    from pounding.io.output_folder import default_out_dir
 
     check_label(study.name, where)
     if out is not None:
@@ -254,7 +254,7 @@ def _out_folder(study: MitigationStudy, here: Path, out: str | os.PathLike[str] 
 def _check_target(out_dir: Path, overwrite: bool) -> None:
     """Refuse an output folder that is a file, or one that holds anything unless
     ``overwrite`` and it holds only an earlier study's files (its manifest)."""
-    from pounding.manifest import check_replaceable
+    from pounding.io.manifest import check_replaceable
 
     if out_dir.exists() or out_dir.is_symlink():
         if not out_dir.is_dir() or out_dir.is_symlink():
@@ -317,8 +317,8 @@ def run_mitigation(input: str | os.PathLike[str], out: str | os.PathLike[str] | 
     """
     import pandas as pd
 
-    from pounding.io import atomic_path, check_writable, write_text
-    from pounding.output_folder import new_output_folder, remove_stale
+    from pounding.io.files import atomic_path, check_writable, write_text
+    from pounding.io.output_folder import new_output_folder, remove_stale
     from pounding.plot import save_figure
     from pounding.studies.sweep.tasks import run_tasks
 

@@ -16,35 +16,89 @@ machinery (:mod:`pounding.studies.sweep`: on Dask, resumable, bit-identical) and
 The modules, one concept each: :mod:`.fitting` (the fits: :func:`fit_lognormal_mle`),
 :mod:`.ida` (IDA curves, capacities, fractiles), :mod:`.bootstrap` (intervals),
 :mod:`.gap_probability` (P(pounding | gap) and the gap for a probability), :mod:`.study`
-(the study file), :mod:`.plan` (the study as a sweep), :mod:`.runner` (running it; the gaps
-the records need), :mod:`.analysis` (the answers) and :mod:`.outputs` (the folder).
+(the study file), :mod:`.cases` (the study's runs as a sweep), :mod:`.gaps` (the gaps the
+records need), :mod:`.analysis` (the answers), :mod:`.outputs` (the folder) and
+:mod:`.runner` (running it all).
+
+Names are imported on first use (PEP 562): ``import pounding.studies.fragility.fitting``
+(to fit a fragility curve) loads neither the sweep machinery nor the model, SciPy's
+integrators or numba.
 """
 
-from pounding.studies.fragility.fitting import (
-    censored_lognormal_mle,
-    fit_lognormal_mle,
-    ida_moments,
-    lognormal_cdf,
-    probit_mle,
-)
-from pounding.studies.fragility.gap_probability import (
-    empirical_gap,
-    gap_lognormal,
-    lognormal_gap,
-    pounding_probability,
-    pounding_probability_fit,
-)
-from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
-from pounding.studies.fragility.plan import StudyPlan, plan_study
-from pounding.studies.fragility.runner import FragilityOutcome, NeededGaps, needed_gaps, run_study
-from pounding.studies.fragility.study import DEMANDS, StudyConfig, load_study, parse_study
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+_EXPORTS: dict[str, str] = {
+    "StudyCases": "pounding.studies.fragility.cases",
+    "study_cases": "pounding.studies.fragility.cases",
+    "censored_lognormal_mle": "pounding.studies.fragility.fitting",
+    "fit_lognormal_mle": "pounding.studies.fragility.fitting",
+    "ida_moments": "pounding.studies.fragility.fitting",
+    "lognormal_cdf": "pounding.studies.fragility.fitting",
+    "probit_mle": "pounding.studies.fragility.fitting",
+    "empirical_gap": "pounding.studies.fragility.gap_probability",
+    "gap_lognormal": "pounding.studies.fragility.gap_probability",
+    "lognormal_gap": "pounding.studies.fragility.gap_probability",
+    "pounding_probability": "pounding.studies.fragility.gap_probability",
+    "pounding_probability_fit": "pounding.studies.fragility.gap_probability",
+    "NeededGaps": "pounding.studies.fragility.gaps",
+    "needed_gaps": "pounding.studies.fragility.gaps",
+    "capacities": "pounding.studies.fragility.ida",
+    "exceedance_counts": "pounding.studies.fragility.ida",
+    "ida_fractiles": "pounding.studies.fragility.ida",
+    "FragilityOutcome": "pounding.studies.fragility.runner",
+    "run_study": "pounding.studies.fragility.runner",
+    "DEMANDS": "pounding.studies.fragility.study",
+    "StudyConfig": "pounding.studies.fragility.study",
+    "load_study": "pounding.studies.fragility.study",
+    "parse_study": "pounding.studies.fragility.study",
+}
+"""Public name → the module that defines it."""
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name from its module on first use (PEP 562)."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pounding.studies.fragility' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # later look-ups do not come back here
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))
+
+
+if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.studies.fragility.cases import StudyCases, study_cases
+    from pounding.studies.fragility.fitting import (
+        censored_lognormal_mle,
+        fit_lognormal_mle,
+        ida_moments,
+        lognormal_cdf,
+        probit_mle,
+    )
+    from pounding.studies.fragility.gap_probability import (
+        empirical_gap,
+        gap_lognormal,
+        lognormal_gap,
+        pounding_probability,
+        pounding_probability_fit,
+    )
+    from pounding.studies.fragility.gaps import NeededGaps, needed_gaps
+    from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
+    from pounding.studies.fragility.runner import FragilityOutcome, run_study
+    from pounding.studies.fragility.study import DEMANDS, StudyConfig, load_study, parse_study
 
 __all__ = [
     "DEMANDS",
     "FragilityOutcome",
     "NeededGaps",
     "StudyConfig",
-    "StudyPlan",
+    "StudyCases",
     "capacities",
     "censored_lognormal_mle",
     "empirical_gap",
@@ -58,9 +112,9 @@ __all__ = [
     "lognormal_gap",
     "needed_gaps",
     "parse_study",
-    "plan_study",
     "pounding_probability",
     "pounding_probability_fit",
     "probit_mle",
     "run_study",
+    "study_cases",
 ]

@@ -27,9 +27,9 @@ from pounding.studies.fragility.gap_probability import (
     pounding_probability,
     pounding_probability_fit,
 )
+from pounding.studies.fragility.gaps import NeededGaps
 from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
-from pounding.studies.fragility.plan import StudyPlan
-from pounding.studies.fragility.runner import NeededGaps
+from pounding.studies.fragility.cases import StudyCases
 from pounding.studies.fragility.study import DEMANDS, LimitStateSpec
 
 __all__ = ["FragilityAnalysis", "GapAnalysis", "LimitStateResult", "analyse",
@@ -122,7 +122,7 @@ class GapAnalysis:
 class FragilityAnalysis:
     """Everything a study computed from its runs (:func:`analyse`)."""
 
-    plan: StudyPlan
+    cases: StudyCases
     levels: FloatArray
     records: list[str]
     gaps: list[float | None]
@@ -139,18 +139,18 @@ class FragilityAnalysis:
     """One line per failed run: record, level, message."""
 
 
-def demand_table(plan: StudyPlan, table: Any) -> tuple[dict[str, FloatArray], list[str]]:
+def demand_table(cases: StudyCases, table: Any) -> tuple[dict[str, FloatArray], list[str]]:
     """The demands of every run as arrays (n_gaps, n_records, n_levels) [SI], and one line
     per failed run."""
-    ng, nr, nl = len(plan.gaps), len(plan.records), len(plan.levels)
+    ng, nr, nl = len(cases.gaps), len(cases.records), len(cases.levels)
     df = table.sort_values("case_index")
-    if len(df) != len(plan.rows):
-        raise ValueError(f"results: {len(df)} rows for {len(plan.rows)} runs of the study")
+    if len(df) != len(cases.rows):
+        raise ValueError(f"results: {len(df)} rows for {len(cases.rows)} runs of the study")
     ok = (df["status"] == "ok").to_numpy()
-    idx = np.array(plan.rows)
+    idx = np.array(cases.rows)
     out: dict[str, FloatArray] = {}
     keys = ["pounding", "impacts", "impact_force", "drift", "acceleration"]
-    if plan.sweep is not None and df["max_ductility"].notna().any():
+    if cases.sweep is not None and df["max_ductility"].notna().any():
         keys.append("ductility")
     for key in keys:
         col = df[_COLUMNS[key]].to_numpy(dtype=float, na_value=np.nan)
@@ -159,27 +159,27 @@ def demand_table(plan: StudyPlan, table: Any) -> tuple[dict[str, FloatArray], li
         a = np.full((ng, nr, nl), np.nan)
         a[idx[:, 2], idx[:, 0], idx[:, 1]] = np.where(ok, col, np.nan)
         out[key] = a
-    failures = [f"{plan.records[r]} at {plan.levels[li]:g} g"
-                + (f", gap {plan.gaps[g]:g} m" if plan.gaps[g] is not None else "")
+    failures = [f"{cases.records[r]} at {cases.levels[li]:g} g"
+                + (f", gap {cases.gaps[g]:g} m" if cases.gaps[g] is not None else "")
                 + f": {msg}"
-                for (r, li, g), good, msg in zip(plan.rows, ok, df["error"]) if not good]
+                for (r, li, g), good, msg in zip(cases.rows, ok, df["error"]) if not good]
     return out, failures
 
 
-def analyse(plan: StudyPlan, table: Any, gaps: NeededGaps) -> FragilityAnalysis:
+def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysis:
     """The whole analysis of a study from the sweep's table and the needed gaps.
 
     Parameters
     ----------
-    plan : StudyPlan
+    cases : StudyCases
     table : pandas.DataFrame
         The sweep's ``results.parquet``.
     gaps : NeededGaps
-        From :func:`pounding.studies.fragility.runner.needed_gaps`.
+        From :func:`pounding.studies.fragility.gaps.needed_gaps`.
     """
-    cfg = plan.config
-    levels = np.asarray(plan.levels, dtype=float)
-    demands, failures = demand_table(plan, table)
+    cfg = cases.config
+    levels = np.asarray(cases.levels, dtype=float)
+    demands, failures = demand_table(cases, table)
     fractiles = {k: np.stack([ida_fractiles(v[g]) for g in range(v.shape[0])])
                  for k, v in demands.items()}
     bs = cfg.bootstrap
@@ -190,7 +190,7 @@ def analyse(plan: StudyPlan, table: Any, gaps: NeededGaps) -> FragilityAnalysis:
                          "errors in results.parquet")
     boot = resample(n_kept, bs.n, bs.seed)
     results: list[LimitStateResult] = []
-    for gi, g in enumerate(plan.gaps):
+    for gi, g in enumerate(cases.gaps):
         for ls in cfg.limit_state:
             d = DEMANDS[ls.demand]
             if ls.demand not in demands:
@@ -205,15 +205,15 @@ def analyse(plan: StudyPlan, table: Any, gaps: NeededGaps) -> FragilityAnalysis:
                 ls, g, exceed, n_runs, n_exc, cap, cen,
                 fit_from_stripes(levels, exceed, boot, bs.confidence),
                 fit_from_capacities(cap, cen, boot, bs.confidence)))
-    gap = _gap_analysis(plan, gaps, demands, boot[:, :], has_run)
-    n_runs = len(plan.rows)
-    return FragilityAnalysis(plan, levels, list(plan.records), list(plan.gaps), demands,
+    gap = _gap_analysis(cases, gaps, demands, boot[:, :], has_run)
+    n_runs = len(cases.rows)
+    return FragilityAnalysis(cases, levels, list(cases.records), list(cases.gaps), demands,
                              fractiles, results, gap, n_runs, len(failures), failures)
 
 
-def _gap_analysis(plan: StudyPlan, ng: NeededGaps, demands: dict[str, FloatArray],
+def _gap_analysis(cases: StudyCases, ng: NeededGaps, demands: dict[str, FloatArray],
                   boot: NDArray[np.int64], has_run: NDArray[np.bool_]) -> GapAnalysis:
-    cfg = plan.config
+    cfg = cases.config
     p = cfg.gap.target
     at_needed = ng.needed_at[has_run]
     conf = expanded_confidence(cfg.bootstrap.confidence, at_needed.size)
@@ -236,18 +236,18 @@ def _gap_analysis(plan: StudyPlan, ng: NeededGaps, demands: dict[str, FloatArray
     s_fit = np.column_stack([pounding_probability_fit(*gap_lognormal(needed[:, j]), grid)
                              for j in range(needed.shape[1])])
     return GapAnalysis(ng, med, beta, p, gap_fit, gap_emp, (float(lo), float(hi)), grid,
-                       p_emp, p_fit, band, s_emp, s_fit, _check(plan, needed, demands,
+                       p_emp, p_fit, band, s_emp, s_fit, _check(cases, needed, demands,
                                                                 has_run))
 
 
-def _check(plan: StudyPlan, needed: FloatArray, demands: dict[str, FloatArray],
+def _check(cases: StudyCases, needed: FloatArray, demands: dict[str, FloatArray],
            has_run: NDArray[np.bool_]) -> dict[str, Any]:
     """Runs with contact against the needed gaps: pounding iff the needed gap exceeds the
     gap (uniform gaps only)."""
     out: dict[str, Any] = {}
-    base_gaps = [float(x) for x in plan.sweep.base.get("contact", {}).get("gaps", [])] or \
-        [float(plan.sweep.base.get("contact", {}).get("gap", np.nan))]
-    for gi, g in enumerate(plan.gaps):
+    base_gaps = [float(x) for x in cases.sweep.base.get("contact", {}).get("gaps", [])] or \
+        [float(cases.sweep.base.get("contact", {}).get("gap", np.nan))]
+    for gi, g in enumerate(cases.gaps):
         value = g if g is not None else (base_gaps[0] if len(set(base_gaps)) == 1 else None)
         if value is None or not np.isfinite(value):
             continue

@@ -44,7 +44,7 @@ from pounding.studies.fragility.gap_probability import (
     pounding_probability,
     pounding_probability_fit,
 )
-from pounding.studies.fragility.plan import StudyPlan
+from pounding.studies.fragility.cases import StudyCases
 from pounding.studies.fragility.study import DEMANDS
 
 __all__ = ["FIGURES", "STUDY_FILE", "TABLES", "write_outputs"]
@@ -93,9 +93,9 @@ def _csv(rows: list[list[Any]], header: list[str]) -> str:
     return buf.getvalue()
 
 
-def summary(plan: StudyPlan, a: FragilityAnalysis) -> dict[str, Any]:
+def summary(cases: StudyCases, a: FragilityAnalysis) -> dict[str, Any]:
     """The content of ``fragility.json``."""
-    cfg = plan.config
+    cfg = cases.config
     ga = a.gap
     ls = []
     for r in a.limit_states:
@@ -108,19 +108,19 @@ def summary(plan: StudyPlan, a: FragilityAnalysis) -> dict[str, Any]:
                    "msa_mle": _estimate(r.msa), "ida": _estimate(r.ida)})
     return {
         "kind": "fragility", "name": cfg.name, "description": cfg.description,
-        "source": str(plan.source) if plan.source else None, "base": cfg.base,
-        "intensity": {"measure": cfg.intensity.measure, "label": plan.im_label,
+        "source": str(cases.source) if cases.source else None, "base": cfg.base,
+        "intensity": {"measure": cfg.intensity.measure, "label": cases.im_label,
                       "period_s": cfg.intensity.period, "damping": cfg.intensity.damping,
-                      "saavg_periods_s": list(plan.saavg_range) if plan.saavg_range else None,
+                      "saavg_periods_s": list(cases.saavg_range) if cases.saavg_range else None,
                       "scaling": (cfg.suite.scaling.model_dump() if cfg.suite.scaling
                                   else "each record to the level"),
-                      "target_g": plan.im_target},
-        "levels_g": list(plan.levels), "records": plan.records,
-        "records_applied": plan.record_note or "along the row (x), as recorded",
-        "gaps_m": [g for g in plan.gaps], "building_periods_s": plan.periods,
+                      "target_g": cases.im_target},
+        "levels_g": list(cases.levels), "records": cases.records,
+        "records_applied": cases.record_note or "along the row (x), as recorded",
+        "gaps_m": [g for g in cases.gaps], "building_periods_s": cases.periods,
         "limit_states": ls,
         "gap": {"at_g": ga.needed.at, "target_probability": ga.target,
-                "needed_m": dict(zip(plan.records, [_num(v) for v in ga.needed.needed_at])),
+                "needed_m": dict(zip(cases.records, [_num(v) for v in ga.needed.needed_at])),
                 "lognormal_median_m": _num(ga.median), "lognormal_beta": _num(ga.beta),
                 "gap_for_target_lognormal_m": _num(ga.gap_fit),
                 "gap_for_target_lognormal_ci_m": [_num(v) for v in ga.gap_fit_ci],
@@ -132,19 +132,19 @@ def summary(plan: StudyPlan, a: FragilityAnalysis) -> dict[str, Any]:
     }
 
 
-def _fragility_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
+def _fragility_rows(cases: StudyCases, a: FragilityAnalysis) -> list[list[Any]]:
     rows = []
     for r in a.limit_states:
         d = DEMANDS[r.spec.demand]
         for method, e in (("msa_mle", r.msa), ("ida", r.ida)):
             rows.append([r.spec.label, r.spec.demand, r.spec.limit, d.unit, r.gap, method,
-                         plan.im_label, e.median, e.median_ci[0], e.median_ci[1], e.beta,
+                         cases.im_label, e.median, e.median_ci[0], e.median_ci[1], e.beta,
                          e.beta_ci[0], e.beta_ci[1], e.n_records,
                          int(np.sum(~r.censored)), STATUS_TEXT[e.status]])
     return rows
 
 
-def _gap_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
+def _gap_rows(cases: StudyCases, a: FragilityAnalysis) -> list[list[Any]]:
     ga = a.gap
     at = ga.needed.needed_at
     rows: list[tuple[str, float, float, float]] = [
@@ -153,7 +153,7 @@ def _gap_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
     rows += [(f"{k} (mean simulated peaks)", v, math.nan, math.nan)
              for k, v in ga.needed.code.items()]
     rows += [(f"simulated with contact: {1000 * g:g} mm", float(g), math.nan, math.nan)
-             for g in plan.gaps if g is not None]
+             for g in cases.gaps if g is not None]
     out = []
     for name, g, lo, hi in rows:
         pe = float(pounding_probability(at, [g])[0]) if math.isfinite(g) else math.nan
@@ -163,21 +163,21 @@ def _gap_rows(plan: StudyPlan, a: FragilityAnalysis) -> list[list[Any]]:
     return out
 
 
-def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -> list[Path]:
+def write_outputs(cases: StudyCases, a: FragilityAnalysis, figures: bool = True) -> list[Path]:
     """Write the tables, ``fragility.json`` and (with ``figures``) the figures into
-    ``plan.out``; returns the files written.
+    ``cases.out``; returns the files written.
 
-    All are written first into a temporary folder inside ``plan.out`` and moved into place
+    All are written first into a temporary folder inside ``cases.out`` and moved into place
     together once complete, each recorded in the folder's manifest
-    (:mod:`pounding.manifest`): a full disk leaves the files of an earlier analysis as
+    (:mod:`pounding.io.manifest`): a full disk leaves the files of an earlier analysis as
     they were. A file of the same name that pounding did not write is not replaced (one
     line, before any is moved).
     """
-    from pounding.io import WriteFailed, write_text
-    from pounding.manifest import Manifest
-    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
+    from pounding.io.files import WriteFailed, write_text
+    from pounding.io.manifest import Manifest
+    from pounding.io.output_folder import make_temporary_folder, remove_temporary_folder
 
-    out = plan.out
+    out = cases.out
     man = Manifest(out)
     names = [*TABLES, STUDY_FILE, *(FIGURES if figures else ())]
     for name in names:
@@ -185,7 +185,7 @@ def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -
     stage = make_temporary_folder(out, "fragility", "stage", holds=names)
     try:
         try:
-            _write_all(plan, a, stage, figures, write_text)
+            _write_all(cases, a, stage, figures, write_text)
         except WriteFailed as exc:
             raise exc.moved(stage, out) from None
         written = [out / name for name in names]
@@ -200,35 +200,35 @@ def write_outputs(plan: StudyPlan, a: FragilityAnalysis, figures: bool = True) -
     return written
 
 
-def _write_all(plan: StudyPlan, a: FragilityAnalysis, out: Path, figures: bool,
+def _write_all(cases: StudyCases, a: FragilityAnalysis, out: Path, figures: bool,
                write_text: Any) -> None:
     """Write every file of :func:`write_outputs` into the folder ``out``."""
-    fr = _fragility_rows(plan, a)
+    fr = _fragility_rows(cases, a)
     write_text(out / "fragility.csv", _csv(fr, [
         "limit_state", "demand", "limit", "unit", "gap_m", "method", "intensity_measure",
         "median_g", "median_lo_g", "median_hi_g", "beta", "beta_lo", "beta_hi", "n_records",
         "n_records_exceeding", "status"]))
     counts = [[r.spec.label, r.gap, x, int(n), int(z), z / n if n else math.nan]
-              for r in a.limit_states for x, n, z in zip(plan.levels, r.n_runs, r.n_exceed)]
+              for r in a.limit_states for x, n, z in zip(cases.levels, r.n_runs, r.n_exceed)]
     write_text(out / "counts.csv", _csv(counts, [
         "limit_state", "gap_m", "level_g", "n_runs", "n_exceed", "fraction"]))
     keys = list(a.demands)
     runs = []
-    for gi, g in enumerate(plan.gaps):
-        for ri, name in enumerate(plan.records):
-            for li, x in enumerate(plan.levels):
+    for gi, g in enumerate(cases.gaps):
+        for ri, name in enumerate(cases.records):
+            for li, x in enumerate(cases.levels):
                 runs.append([name, x, g] + [a.demands[k][gi, ri, li] * DEMANDS[k].factor
                                             for k in keys])
     write_text(out / "ida.csv", _csv(runs, ["record", "level_g", "gap_m"] + [
         f"{k}_{DEMANDS[k].unit}".replace("_-", "").replace("%", "pct") for k in keys]))
-    write_text(out / "gap.csv", _csv(_gap_rows(plan, a), [
+    write_text(out / "gap.csv", _csv(_gap_rows(cases, a), [
         "gap", "at_g", "gap_m", "gap_lo_m", "gap_hi_m", "p_pounding_records",
         "p_pounding_lognormal"]))
     ng = a.gap.needed
     write_text(out / "needed_gaps.csv", _csv(
-        [[name] + list(row) for name, row in zip(plan.records, ng.needed)],
-        ["record"] + [f"gap_m_at_{x:g}_g" for x in plan.levels]))
-    write_text(out / STUDY_FILE, json.dumps(summary(plan, a), indent=2, allow_nan=False) + "\n")
+        [[name] + list(row) for name, row in zip(cases.records, ng.needed)],
+        ["record"] + [f"gap_m_at_{x:g}_g" for x in cases.levels]))
+    write_text(out / STUDY_FILE, json.dumps(summary(cases, a), indent=2, allow_nan=False) + "\n")
     if figures:
         from pounding.plot import save_figure
         from pounding.plot.fragility import (

@@ -287,7 +287,7 @@ def load_study(path: str | os.PathLike[str]) -> tuple[StudyConfig, Path]:
     ValueError
         A missing or malformed file, or a bad key (one line each, naming it).
     """
-    from pounding.io import read_toml
+    from pounding.io.files import read_toml
 
     p = Path(path)
     data = read_toml(p, "study file")

@@ -22,7 +22,7 @@ column except ``wall_time_s`` (:data:`NONDETERMINISTIC_COLUMNS`).
 
 The modules, one concept each:
 
-* planning — :mod:`~pounding.studies.sweep.plan` (the sweep file, :class:`Sweep`),
+* planning — :mod:`~pounding.studies.sweep.sweep_file` (the sweep file, :class:`Sweep`),
   :mod:`~pounding.studies.sweep.sections` (its keys and tables, validated as a model file's),
   :mod:`~pounding.studies.sweep.cases` (the case tables, case ids),
   :mod:`~pounding.studies.sweep.overrides` (a case applied to the base model),
@@ -55,10 +55,10 @@ _EXPORTS: dict[str, str] = {
     "FLOOR_MEASURES": "pounding.studies.sweep.measures",
     "MEASURES": "pounding.studies.sweep.measures",
     "apply_overrides": "pounding.studies.sweep.overrides",
-    "HISTORY_FORMATS": "pounding.studies.sweep.plan",
-    "Sweep": "pounding.studies.sweep.plan",
-    "load_sweep": "pounding.studies.sweep.plan",
-    "parse_sweep": "pounding.studies.sweep.plan",
+    "HISTORY_FORMATS": "pounding.studies.sweep.sweep_file",
+    "Sweep": "pounding.studies.sweep.sweep_file",
+    "load_sweep": "pounding.studies.sweep.sweep_file",
+    "parse_sweep": "pounding.studies.sweep.sweep_file",
     "SweepInterrupted": "pounding.studies.sweep.runner",
     "SweepOutcome": "pounding.studies.sweep.runner",
     "SweepStopped": "pounding.studies.sweep.runner",
@@ -93,12 +93,6 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.studies.sweep.execute import run_case, warm_up  # noqa: F401
     from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
     from pounding.studies.sweep.overrides import apply_overrides
-    from pounding.studies.sweep.plan import (  # noqa: F401
-        HISTORY_FORMATS,
-        Sweep,
-        load_sweep,
-        parse_sweep,
-    )
     from pounding.studies.sweep.runner import (
         SweepInterrupted,
         SweepOutcome,
@@ -110,6 +104,12 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
         MANIFEST_FILE,
         PARTS_DIR,
         RESULTS_FILE,
+    )
+    from pounding.studies.sweep.sweep_file import (  # noqa: F401
+        HISTORY_FORMATS,
+        Sweep,
+        load_sweep,
+        parse_sweep,
     )
     from pounding.studies.sweep.table import NONDETERMINISTIC_COLUMNS, load_results
 

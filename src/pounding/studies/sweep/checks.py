@@ -97,11 +97,11 @@ def _errors_text(exc: Any, errors: list[Any]) -> str:
     """The chosen errors of a ValidationError as one line (``; ``-separated)."""
     from pydantic import ValidationError
 
-    from pounding.config import format_validation_error
+    from pounding.config import RunConfig, format_validation_error
 
     keep = [{k: e[k] for k in ("type", "loc", "input", "ctx") if k in e} for e in errors]
     sub = ValidationError.from_exception_data(exc.title, keep)
-    return format_validation_error(sub).replace("\n", "; ")
+    return format_validation_error(sub, root=RunConfig).replace("\n", "; ")
 
 
 def _validate(base: dict[str, Any], base_dir: Path, params: Sequence[str],
@@ -185,7 +185,7 @@ def check_cases(base: dict[str, Any], base_dir: Path, params: Sequence[str],
     ValueError
         One line naming the table, the parameter, the value and the problem.
     """
-    from pounding.config import format_validation_error
+    from pounding.config import RunConfig, format_validation_error
 
     if not cases:
         raise ValueError(f"{where}: the sweep has no cases")
@@ -206,7 +206,7 @@ def check_cases(base: dict[str, Any], base_dir: Path, params: Sequence[str],
                 # a member of a union that the value was not meant for does not count
                 # (yield_force = -1 is a number out of range, not a list of the wrong kind)
                 bad = [e for e, aside in zip(exc.errors(include_url=False),
-                                             meant_elsewhere(exc))
+                                             meant_elsewhere(exc, RunConfig))
                        if _is_type_error(e) and not aside and _under(tuple(e["loc"]), p)]
                 if bad:
                     raise ValueError(f"{label}: {_errors_text(exc, bad)}")
@@ -216,4 +216,4 @@ def check_cases(base: dict[str, Any], base_dir: Path, params: Sequence[str],
     if exc is not None and any(e.get("type") == "extra_forbidden"
                                for e in exc.errors(include_url=False)):
         raise ValueError(f"{where}: case 0: "
-                         + format_validation_error(exc).replace("\n", "; ")) from None
+                         + format_validation_error(exc, root=RunConfig).replace("\n", "; ")) from None

@@ -22,10 +22,10 @@ def _error_text(exc: BaseException) -> str:
     """A failed case's message on one line (a validation error names the key)."""
     from pydantic import ValidationError
 
-    from pounding.config import format_validation_error
+    from pounding.config import RunConfig, format_validation_error
 
     if isinstance(exc, ValidationError):
-        return format_validation_error(exc).replace("\n", "; ")
+        return format_validation_error(exc, root=RunConfig).replace("\n", "; ")
     if isinstance(exc, ValueError):
         return str(exc).replace("\n", "; ")
     return f"{type(exc).__name__}: {exc}".replace("\n", "; ")

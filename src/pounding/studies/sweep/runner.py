@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from pounding.io import WriteFailed
+from pounding.io.files import WriteFailed
 from pounding.progress import Progress
 from pounding.studies.sweep.cluster import (
     _auto_batch,
@@ -27,7 +27,6 @@ from pounding.studies.sweep.cluster import (
 )
 from pounding.studies.sweep.execute import Batch, _run_batch, _start_local_worker, warm_up
 from pounding.studies.sweep.extra import require_sweep_packages
-from pounding.studies.sweep.plan import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.store import (
     PARTS_DIR,
     _check_out,
@@ -39,6 +38,7 @@ from pounding.studies.sweep.store import (
     _write_history,
     _write_part,
 )
+from pounding.studies.sweep.sweep_file import HISTORY_FORMATS, Sweep, load_sweep
 from pounding.studies.sweep.table import _write_results
 
 __all__ = ["SweepInterrupted", "SweepOutcome", "SweepStopped", "run_sweep"]
@@ -130,7 +130,7 @@ def run_sweep(input: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
     out : path-like, optional
         Output folder (default: ``out`` of the sweep file, relative to it, else
         ``<sweep file stem>-results`` in the current folder,
-        :func:`pounding.output_folder.default_out_dir`).
+        :func:`pounding.io.output_folder.default_out_dir`).
     overwrite : bool
         Start afresh even if ``out`` holds this sweep (partly) done, or another sweep
         (only files pounding wrote there are removed).
@@ -269,7 +269,7 @@ def run_sweep(input: Sweep | str | os.PathLike[str], out: str | os.PathLike[str]
 def _draw(out_dir: Path, results: Path) -> Path | None:
     """The default figure of ``pounding plot`` beside the table, in the folder's manifest;
     None when no case finished (nothing to draw)."""
-    from pounding.manifest import Manifest
+    from pounding.io.manifest import Manifest
     from pounding.plot import save_figure
     from pounding.plot.sweep import default_figure_name, plot_sweep
     from pounding.studies.sweep.table import load_results

@@ -3,7 +3,7 @@ histories, each written under a temporary name and renamed, so a file is whole o
 
 Layout::
 
-    <out>/.pounding-manifest.jsonl    every file pounding wrote here (:mod:`pounding.manifest`)
+    <out>/.pounding-manifest.jsonl    every file pounding wrote here (:mod:`pounding.io.manifest`)
     <out>/sweep.json                  the sweep: name, fingerprint, parameters, cases
     <out>/parts/part-<hash>.parquet   one per finished batch (rows keyed by case id)
     <out>/histories/<case_id>.nc      time histories of a case (or .zarr), if asked for
@@ -25,10 +25,10 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pounding.manifest import Manifest
+from pounding.io.manifest import Manifest
 
 if TYPE_CHECKING:
-    from pounding.studies.sweep.plan import Sweep
+    from pounding.studies.sweep.sweep_file import Sweep
 
 __all__ = ["HISTORIES_DIR", "MANIFEST_FILE", "PARTS_DIR", "RESULTS_FILE"]
 
@@ -50,10 +50,10 @@ def _check_out(sweep: Sweep, out: Path, overwrite: bool) -> bool:
         One line: ``out`` cannot be made or written (a file on its path, a read-only
         folder), is a file, holds another sweep (without ``overwrite``), is a non-empty
         folder that is not a sweep's, or (with ``overwrite``) holds something pounding did
-        not write (:func:`pounding.manifest.check_replaceable`).
+        not write (:func:`pounding.io.manifest.check_replaceable`).
     """
-    from pounding.io import check_writable
-    from pounding.manifest import check_replaceable
+    from pounding.io.files import check_writable
+    from pounding.io.manifest import check_replaceable
 
     check_writable(out, inside=True)
     if not out.exists() and not out.is_symlink():
@@ -86,8 +86,8 @@ def _prepare_out(sweep: Sweep, out: Path, resume: bool, created: list[Path],
     runs; unless resuming, remove an earlier sweep's files (those its manifest lists) and
     write a new manifest and ``sweep.json``; make the parts folder. What it creates
     (folders, files) is appended to ``created`` as it goes, for :func:`_remove_created`."""
-    from pounding.io import make_folders
-    from pounding.manifest import remove_outputs
+    from pounding.io.files import make_folders
+    from pounding.io.manifest import remove_outputs
 
     created += make_folders(out)
     _remove_temporaries(out)
@@ -114,7 +114,7 @@ def _remove_created(out: Path, created: list[Path]) -> None:
     """After a sweep stopped with no case saved: remove what :func:`_prepare_out` created
     (the folder, if it made it), so the folder is as it was. Nothing else is touched: a
     part, a history or a file of an earlier sweep keeps the folder."""
-    from pounding.io import remove_empty_folders
+    from pounding.io.files import remove_empty_folders
 
     folders = [out / PARTS_DIR, out / HISTORIES_DIR]
     for folder in folders:
@@ -141,9 +141,9 @@ def _saved_ids(folder: Path) -> set[str]:
 
 def _remove_temporaries(out: Path) -> None:
     """Remove what killed runs left half-written in ``out``, ``parts`` and ``histories``
-    (:func:`pounding.output_folder.remove_stale`: temporaries named with the pid of a pounding
+    (:func:`pounding.io.output_folder.remove_stale`: temporaries named with the pid of a pounding
     process no longer running, e.g. ``.results.parquet.part-<pid>-XXXXXXXX.parquet``)."""
-    from pounding.output_folder import remove_stale
+    from pounding.io.output_folder import remove_stale
 
     for folder in (out, out / PARTS_DIR, out / HISTORIES_DIR):
         remove_stale(folder)
@@ -196,7 +196,7 @@ def _write_history(out: Path, cid: str, ds: Any, fmt: str) -> None:
     """Write a case's time histories as ``out/histories/<cid>.nc`` or ``<cid>.zarr``
     (atomically, recorded in the manifest of ``out``). NetCDF is serialised in memory and
     written with plain file I/O, so HDF5 never meets a full disk."""
-    from pounding.io import WriteFailed
+    from pounding.io.files import WriteFailed
 
     folder = out / HISTORIES_DIR
     folder.mkdir(parents=True, exist_ok=True)
@@ -204,7 +204,7 @@ def _write_history(out: Path, cid: str, ds: Any, fmt: str) -> None:
     if fmt == "netcdf":
         man.write_bytes(folder / f"{cid}.nc", ds.to_netcdf(engine="h5netcdf"))
         return
-    from pounding.output_folder import make_temporary_folder, remove_temporary_folder
+    from pounding.io.output_folder import make_temporary_folder, remove_temporary_folder
 
     target = folder / f"{cid}.zarr"
     man.check_free(target)  # (a folder there is refused)
@@ -214,7 +214,7 @@ def _write_history(out: Path, cid: str, ds: Any, fmt: str) -> None:
         try:
             ds.to_zarr(store, mode="w")
         except OSError as exc:
-            from pounding.io import failure_reason
+            from pounding.io.files import failure_reason
 
             reason, code = failure_reason(exc)
             raise WriteFailed(target, reason, code) from None

@@ -12,7 +12,7 @@ from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
 from pounding.studies.sweep.store import RESULTS_FILE
 
 if TYPE_CHECKING:
-    from pounding.studies.sweep.plan import Sweep
+    from pounding.studies.sweep.sweep_file import Sweep
 
 __all__ = ["NONDETERMINISTIC_COLUMNS", "load_results"]
 
@@ -93,7 +93,7 @@ def _write_results(sweep: Sweep, rows: dict[str, dict[str, Any]], out: Path
     """
     import pyarrow.parquet as pq
 
-    from pounding.manifest import Manifest
+    from pounding.io.manifest import Manifest
 
     table = _consolidate(sweep, rows)
     results = out / RESULTS_FILE

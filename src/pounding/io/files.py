@@ -1,7 +1,7 @@
 """Loss-free output: every file is written to a temporary name beside its target and moved
 into place only when complete, so an interrupted run never leaves a half-written file; and
 the checks and folder bookkeeping every output folder (of a run, of a sweep) shares (what
-pounding wrote in a folder, and may remove, is :mod:`pounding.manifest`).
+pounding wrote in a folder, and may remove, is :mod:`pounding.io.manifest`).
 
 A temporary name carries the pid of the process writing it
 (``.<name>.part-<pid>-XXXXXXXX<suffix>``), so a later run can tell the leftovers of a killed
@@ -82,7 +82,7 @@ def atomic_path(target: str | os.PathLike[str],
         The file to write.
     before_replace : callable, optional
         Called with the complete temporary file just before it is moved into place (to
-        record it in a manifest, :mod:`pounding.manifest`).
+        record it in a manifest, :mod:`pounding.io.manifest`).
     """
     target = Path(target)
     if target.exists() and target.is_dir():

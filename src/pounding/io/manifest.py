@@ -18,9 +18,9 @@ The rules built on it (``docs/running.md``, "What pounding promises"):
 * a process killed outright (SIGKILL) leaves temporaries whose names carry its pid
   (``.<name>.part-<pid>-XXXXXXXX``, ``.<name>.tmp-<pid>-XXXXXXXX``); a later run removes
   them once that process is gone, and only those
-  (:func:`pounding.output_folder.remove_stale`): a temporary file by its name, a temporary
+  (:func:`pounding.io.output_folder.remove_stale`): a temporary file by its name, a temporary
   folder only through the marker it was given when made (which lists what may be in it).
-  This module tells them apart (:func:`is_stale`); :mod:`pounding.output_folder` makes and
+  This module tells them apart (:func:`is_stale`); :mod:`pounding.io.output_folder` makes and
   removes them, and puts a finished folder in place.
 
 A one-line JSON Lines file rather than one JSON document: a sweep adds a line per finished
@@ -39,7 +39,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from pounding.io import WriteFailed, atomic_path, failure_reason, pid_alive
+from pounding.io.files import WriteFailed, atomic_path, failure_reason, pid_alive
 
 __all__ = ["MANIFEST_FILE", "TEMPORARY_MARKER", "Entry", "Manifest", "check_replaceable",
            "files_under", "foreign_entry", "is_stale", "is_stale_marker", "read_marker",
@@ -206,7 +206,7 @@ class Manifest:
 
     @contextlib.contextmanager
     def write(self, target: Path) -> Iterator[Path]:
-        """Write ``target`` atomically (:func:`pounding.io.atomic_path`) and record it:
+        """Write ``target`` atomically (:func:`pounding.io.files.atomic_path`) and record it:
         the temporary file is recorded when complete, then moved into place. A file
         already there is replaced only if pounding wrote it (:meth:`check_free`)."""
         self.check_free(target)
@@ -251,7 +251,7 @@ def foreign_entry(folder: Path) -> str | None:
     ``"<relative path> (<why>)"``; None if there is none.
 
     Temporaries of pounding processes no longer running do not count
-    (:func:`pounding.output_folder.remove_stale` removes them); one of a running process is
+    (:func:`pounding.io.output_folder.remove_stale` removes them); one of a running process is
     named as such.
     """
     man = Manifest(folder)
@@ -299,8 +299,8 @@ def is_stale_marker(p: Path) -> bool:
 
 def is_stale(p: Path) -> bool:
     """Whether ``p`` is a temporary of a pounding process no longer running: a file named
-    as :func:`pounding.io.atomic_path` names them, or a folder carrying the marker of
-    :func:`pounding.output_folder.make_temporary_folder` with the pid of its name."""
+    as :func:`pounding.io.files.atomic_path` names them, or a folder carrying the marker of
+    :func:`pounding.io.output_folder.make_temporary_folder` with the pid of its name."""
     if p.is_symlink():
         return False
     m = TEMP_FILE.match(p.name)

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from pounding.io import check_label, read_toml, study_out
+from pounding.io.files import check_label, read_toml, study_out
 from pounding.studies.sweep.cases import Case, _canon, case_rows, unique_cases
 from pounding.studies.sweep.checks import _check_path, check_cases
 from pounding.studies.sweep.sections import SweepFile
@@ -39,7 +39,7 @@ class Sweep:
     cases: list[Case]
     out: Path
     """The output folder: ``out`` of the file (relative to it), else ``<file
-    stem>-results`` in the current folder (:func:`pounding.output_folder.default_out_dir`;
+    stem>-results`` in the current folder (:func:`pounding.io.output_folder.default_out_dir`;
     ``<name>-results`` for a sweep not read from a file)."""
     histories: str | None = None
     batch_size: int | None = None
@@ -49,7 +49,7 @@ class Sweep:
     records: dict[str, Any] = field(default_factory=dict, repr=False)
     out_refused: str | None = None
     """Why ``out`` of the file cannot be used unless an output folder is given
-    explicitly (it leads outside the file's folder, :func:`pounding.io.study_out`)."""
+    explicitly (it leads outside the file's folder, :func:`pounding.io.files.study_out`)."""
 
     @property
     def fingerprint(self) -> str:
@@ -125,7 +125,7 @@ def load_sweep(path: str | os.PathLike[str]) -> Sweep:
     sweep = parse_sweep(data, base_dir=p.resolve().parent, where=str(p))
     sweep.source = p.resolve()
     if data.get("out") is None:
-        from pounding.output_folder import default_out_dir
+        from pounding.io.output_folder import default_out_dir
 
         sweep.out = default_out_dir(p)
     return sweep

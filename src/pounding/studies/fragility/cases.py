@@ -1,5 +1,5 @@
-"""A study planned as a sweep: every record of the suite at every intensity level (and at
-every gap of ``[gap] values``), each a case of :mod:`pounding.studies.sweep` — so the runs
+"""The cases of a study, as a sweep: every record of the suite at every intensity level (and
+at every gap of ``[gap] values``), each a case of :mod:`pounding.studies.sweep` — so the runs
 go on Dask, are saved batch by batch, resume after any interruption and give a table equal
 bit for bit from one run to the next.
 
@@ -27,11 +27,11 @@ import numpy as np
 
 from pounding.studies.fragility.study import StudyConfig, load_study
 
-__all__ = ["StudyPlan", "plan_study"]
+__all__ = ["StudyCases", "study_cases"]
 
 
 @dataclass
-class StudyPlan:
+class StudyCases:
     """A study file turned into its runs.
 
     Attributes
@@ -135,9 +135,10 @@ def _suite(cfg: StudyConfig, here: Path) -> tuple[list[str], str, list[str]]:
     return [Path(p).stem for p in paths], "record.file", paths
 
 
-def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.PathLike[str]
-               | None = None, out: str | os.PathLike[str] | None = None) -> StudyPlan:
-    """Plan a study: validate it, read its suite and build the sweep of its runs.
+def study_cases(study: str | os.PathLike[str] | StudyConfig,
+                folder: str | os.PathLike[str] | None = None,
+                out: str | os.PathLike[str] | None = None) -> StudyCases:
+    """The cases of a study: validate it, read its suite and build the sweep of its runs.
 
     Parameters
     ----------
@@ -147,7 +148,7 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
     out : path, optional
         The output folder (default ``out`` of the file, relative to it, else ``<study file
         stem>-results`` in the current folder,
-        :func:`pounding.output_folder.default_out_dir`; ``<name>-results`` in the current
+        :func:`pounding.io.output_folder.default_out_dir`; ``<name>-results`` in the current
         folder for a study not read from a file).
 
     Raises
@@ -223,24 +224,24 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
                    f"{'second' if base_cfg.record.second else 'second_file'}) is not used"
                    if base_cfg.record.two_components else ""))
     base["record"] = rec
-    plan = StudyPlan(config=cfg, source=source,
-                     out=_out_folder(cfg, here, out, where, Path(study) if source else None),
-                     records=names, source_key=key,
-                     sources=sources, levels=levels,
-                     gaps=list(cfg.gap.values) if cfg.gap.values else [None],
-                     im_label=_im_label(cfg, saavg), saavg_range=saavg, factors=None,
-                     im_target=None, periods=periods, sweep=None, record_note=note)
+    cases = StudyCases(config=cfg, source=source,
+                       out=_out_folder(cfg, here, out, where, Path(study) if source else None),
+                       records=names, source_key=key,
+                       sources=sources, levels=levels,
+                       gaps=list(cfg.gap.values) if cfg.gap.values else [None],
+                       im_label=_im_label(cfg, saavg), saavg_range=saavg, factors=None,
+                       im_target=None, periods=periods, sweep=None, record_note=note)
     if cfg.suite.scaling is not None:
-        factors, im_target = _suite_factors(plan, base, here, model_file.parent, where)
-        plan.factors, plan.im_target = factors, im_target
-    first_params, first_values = plan.case_values(0, levels[0])
+        factors, im_target = _suite_factors(cases, base, here, model_file.parent, where)
+        cases.factors, cases.im_target = factors, im_target
+    first_params, first_values = cases.case_values(0, levels[0])
     for p, v in zip(first_params, first_values):
         rec[p.split(".")[1]] = v
-    rows, cols = [], {p: [] for p in plan.case_values(0, levels[0], plan.gaps[0])[0]}
-    for gi, g in enumerate(plan.gaps):
+    rows, cols = [], {p: [] for p in cases.case_values(0, levels[0], cases.gaps[0])[0]}
+    for gi, g in enumerate(cases.gaps):
         for ri in range(len(names)):
             for li, x in enumerate(levels):
-                params, values = plan.case_values(ri, x, g)
+                params, values = cases.case_values(ri, x, g)
                 for p, v in zip(params, values):
                     cols[p].append(v)
                 rows.append((ri, li, gi))
@@ -250,22 +251,22 @@ def plan_study(study: str | os.PathLike[str] | StudyConfig, folder: str | os.Pat
         data["batch_size"] = cfg.run.batch_size
     with warnings.catch_warnings():  # the base model's were issued when it was loaded
         warnings.simplefilter("ignore", PlausibilityWarning)
-        plan.sweep = parse_sweep(data, base_dir=model_file.parent, where=where)
-    plan.sweep.source = source
-    plan.rows = rows
-    return plan
+        cases.sweep = parse_sweep(data, base_dir=model_file.parent, where=where)
+    cases.sweep.source = source
+    cases.rows = rows
+    return cases
 
 
 def _out_folder(cfg: StudyConfig, here: Path, out: str | os.PathLike[str] | None,
                 where: str, file: Path | None) -> Path:
     """The output folder: ``out`` given (the command line's ``--out``), else ``out`` of the
-    study file — inside the file's folder (:func:`pounding.io.study_out`) — else
+    study file — inside the file's folder (:func:`pounding.io.files.study_out`) — else
     ``<file stem>-results`` in the current folder
-    (:func:`pounding.output_folder.default_out_dir`; ``<name>-results`` for a study not read
-    from a file); the name is a label (:func:`pounding.io.check_label`).
+    (:func:`pounding.io.output_folder.default_out_dir`; ``<name>-results`` for a study not read
+    from a file); the name is a label (:func:`pounding.io.files.check_label`).
     """
-    from pounding.io import check_label, study_out
-    from pounding.output_folder import default_out_dir
+    from pounding.io.files import check_label, study_out
+    from pounding.io.output_folder import default_out_dir
 
     name = check_label(cfg.name, where)
     if out is not None:
@@ -289,24 +290,24 @@ def _im_label(cfg: StudyConfig, saavg: tuple[float, float] | None) -> str:
     return f"Sa_avg({saavg[0]:.3g}–{saavg[1]:.3g} s, {z}) [g]"
 
 
-def _suite_factors(plan: StudyPlan, base: dict[str, Any], here: Path, base_dir: Path,
+def _suite_factors(cases: StudyCases, base: dict[str, Any], here: Path, base_dir: Path,
                    where: str) -> tuple[Any, float]:
     """Scale factors of the suite to the target spectrum and the target's intensity [g]."""
     from pounding.config import RunConfig
     from pounding.spectra import DesignSpectrum, scale_suite
     from pounding.studies.sweep import apply_overrides
 
-    sc = plan.config.suite.scaling
-    it = plan.config.intensity
+    sc = cases.config.suite.scaling
+    it = cases.config.intensity
     assert sc is not None
     try:
         target = DesignSpectrum.from_file(here / sc.target)
     except ValueError as exc:
         raise ValueError(f"{where}: suite.scaling.target: {exc}") from None
     motions = []
-    for ri in range(len(plan.records)):
-        data = apply_overrides(base, [plan.source_key, "record.scale"],
-                               [plan.sources[ri], 1.0])
+    for ri in range(len(cases.records)):
+        data = apply_overrides(base, [cases.source_key, "record.scale"],
+                               [cases.sources[ri], 1.0])
         with_ctx = RunConfig.model_validate(data, context={"base_dir": base_dir})
         motions.append(with_ctx.record.load())
     try:
@@ -319,8 +320,8 @@ def _suite_factors(plan: StudyPlan, base: dict[str, Any], here: Path, base_dir: 
         else:
             from pounding.spectra.scaling import saavg_periods
 
-            assert plan.saavg_range is not None
-            t = saavg_periods(plan.saavg_range, it.n_periods)
+            assert cases.saavg_range is not None
+            t = saavg_periods(cases.saavg_range, it.n_periods)
         sa = np.asarray(target.sa_g(t), dtype=float)
     except ValueError as exc:
         raise ValueError(f"{where}: suite.scaling: {exc}") from None

@@ -2,8 +2,8 @@
 removal of what killed processes left, and a folder built whole and then put in place.
 
 What pounding wrote in a folder, and may therefore remove there, is its manifest
-(:mod:`pounding.manifest`); this module never removes anything else. A temporary folder is
-made private (``mkdtemp``) and marked at once (:data:`pounding.manifest.TEMPORARY_MARKER`:
+(:mod:`pounding.io.manifest`); this module never removes anything else. A temporary folder is
+made private (``mkdtemp``) and marked at once (:data:`pounding.io.manifest.TEMPORARY_MARKER`:
 the pid that made it and the names it may hold), so a later process can tell it from a
 folder of the user's that only looks like one.
 """
@@ -17,8 +17,8 @@ import tempfile
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
-from pounding.io import WriteFailed, umask
-from pounding.manifest import (
+from pounding.io.files import WriteFailed, umask
+from pounding.io.manifest import (
     MANIFEST_FILE,
     TEMP_DIR,
     TEMP_FILE,
@@ -46,7 +46,7 @@ def default_out_dir(input: str | os.PathLike[str]) -> Path:
     sweep gaps.toml`` ``gaps-results`` — for every command that reads an input file (run,
     sweep, fragility, mitigate). A sweep, fragility or mitigation file may name its own
     folder with ``out`` (relative to the file, inside its folder:
-    :func:`pounding.io.study_out`); that is asked for, not a default.
+    :func:`pounding.io.files.study_out`); that is asked for, not a default.
 
     The folder is never beside the input file: a bundled example (in the installed
     package) or a shared folder of models is only read.
@@ -57,7 +57,7 @@ def default_out_dir(input: str | os.PathLike[str]) -> Path:
 def make_temporary_folder(parent: Path, name: str, kind: str, holds: Iterable[str]
                           ) -> Path:
     """Make a private folder ``parent/.<name>.<kind>-<pid>-XXXXXXXX`` marked as pounding's
-    (:data:`pounding.manifest.TEMPORARY_MARKER`): its pid, and ``holds``, the names
+    (:data:`pounding.io.manifest.TEMPORARY_MARKER`): its pid, and ``holds``, the names
     (relative paths; ending ``/**``: a whole tree, e.g. a Zarr store) of what may be put
     in it."""
     tmp = Path(tempfile.mkdtemp(prefix=f".{name}.{kind}-{os.getpid()}-", dir=parent))
@@ -147,7 +147,7 @@ def remove_stale(folder: Path, restore: Path | None = None) -> None:
 def publish_folder(tmp: Path, out: Path) -> None:
     """Move the complete output folder ``tmp`` (a temporary folder of this process, its
     manifest written) to ``out``. An earlier output there (checked replaceable by the
-    caller, :func:`pounding.manifest.check_replaceable`) is moved aside first, into a marked folder
+    caller, :func:`pounding.io.manifest.check_replaceable`) is moved aside first, into a marked folder
     ``.<name>.old-<pid>-…``, and removed file by file from its manifest once the new one
     is in place; if this process is killed in between, :func:`remove_stale` puts it back
     or finishes the removal."""
@@ -180,10 +180,10 @@ def new_output_folder(out: Path, kind: str, holds: Iterable[str],
     them the usual permissions, call ``check`` (the target may still be replaced: it
     raises if not) and move the folder to ``out`` (:func:`publish_folder`). On any failure
     the temporary folder is removed (with the parent folders made for it) and ``out`` is
-    as it was; a :class:`pounding.io.WriteFailed` then names the file under ``out``."""
+    as it was; a :class:`pounding.io.files.WriteFailed` then names the file under ``out``."""
     import shutil
 
-    from pounding.io import make_folders, remove_empty_folders
+    from pounding.io.files import make_folders, remove_empty_folders
 
     parent = out.absolute().parent
     created = make_folders(parent)
