@@ -32,7 +32,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.hysteresis.base import StoreyLaw
+from pounding.hysteresis.isolators import Isolator
 from pounding.structure.damping import DampingModel, ModalDamping, RayleighDamping
+from pounding.structure.isolation import SuperstructureDamping
 from pounding.structure.modal import ModalResult, modes
 from pounding.validation import positive
 
@@ -322,15 +324,65 @@ class ShearBuilding:
         return dataclasses.replace(self, stiffnesses=k)
 
     @classmethod
-    def base_isolated(cls, superstructure: ShearBuilding, base_mass: float, isolator: Any,
-                      base_height: float = 1.0, isolator_damping: float = 0.0,
-                      name: str | None = None) -> ShearBuilding:
-        """A base-isolated building: an isolation storey under ``superstructure``; see
-        :func:`pounding.structure.isolation.base_isolated`."""
-        from pounding.structure.isolation import base_isolated
+    def base_isolated(cls, superstructure: ShearBuilding, base_mass: float,
+                      isolator: Isolator, base_height: float = 1.0,
+                      isolator_damping: float = 0.0, name: str | None = None) -> ShearBuilding:
+        """A base-isolated building: ``superstructure`` on a base slab on ``isolator``
+        (:mod:`pounding.structure.isolation`).
 
-        return base_isolated(superstructure, base_mass, isolator, base_height=base_height,
-                             isolator_damping=isolator_damping, name=name)
+        Parameters
+        ----------
+        superstructure : ShearBuilding
+            The fixed-base superstructure (linear storeys; its damping model becomes the
+            superstructure's damping, relative to the base:
+            :class:`~pounding.structure.isolation.SuperstructureDamping`).
+        base_mass : float
+            Mass of the base slab ``m_b`` [kg] (floor 1 of the isolated building).
+        isolator : Isolator
+            :class:`pounding.hysteresis.isolators.BilinearIsolator` or
+            :class:`pounding.hysteresis.isolators.FrictionPendulum` (one equivalent bearing
+            for the whole isolation system; a friction pendulum without a weight carries the
+            whole building, ``W = g (m_b + Σ m_s)``).
+        base_height : float
+            Height of the isolation storey [m]: the base slab's elevation.
+        isolator_damping : float
+            Viscous coefficient across the isolator [N·s/m] (default 0).
+        name : str, optional
+            Default: the superstructure's name.
+
+        Returns
+        -------
+        ShearBuilding
+            ``n + 1`` floors, storey 1 the isolator (stiffness = the isolator's initial
+            stiffness, ``yielding_storeys = (0,)``).
+
+        Examples
+        --------
+        >>> from pounding.hysteresis.isolators import FrictionPendulum
+        >>> sup = ShearBuilding.uniform(3, 1.0e5, 1.0e8)
+        >>> b = ShearBuilding.base_isolated(sup, 1.5e5, FrictionPendulum(radius=2.0, mu=0.05))
+        >>> b.n, b.yielding, [round(float(z), 1) for z in b.floor_levels]
+        (4, (0,), [1.0, 4.0, 7.0, 10.0])
+        """
+        if not isinstance(superstructure, ShearBuilding):
+            raise ValueError(f"superstructure: expected a ShearBuilding (got "
+                             f"{type(superstructure).__name__})")
+        if superstructure.storey_law is not None:
+            raise ValueError("superstructure: its storeys must be linear (got storey_law="
+                             f"{superstructure.storey_law.describe()})")
+        if not isinstance(isolator, Isolator):
+            raise ValueError(f"isolator: expected a BilinearIsolator or FrictionPendulum (got "
+                             f"{isolator!r})")
+        mb = positive("base_mass", base_mass)
+        hb = positive("base_height", base_height)
+        iso = isolator.carrying(mb + superstructure.total_mass)
+        return cls(
+            masses=np.concatenate([[mb], superstructure.masses]),
+            stiffnesses=np.concatenate([[iso.stiffness], superstructure.stiffnesses]),
+            heights=np.concatenate([[hb], superstructure.heights]),
+            damping=SuperstructureDamping(superstructure.damping, isolator_damping),
+            name=superstructure.name if name is None else name,
+            storey_law=iso.law(), yielding_storeys=(0,), isolator=iso)
 
     def with_storey_law(self, law: StoreyLaw | None,
                         storeys: tuple[int, ...] | None = None) -> ShearBuilding:
