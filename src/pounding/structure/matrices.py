@@ -342,7 +342,8 @@ class MatrixBuilding:
 
     @property
     def is_lumped(self) -> bool:
-        """True if ``M`` is diagonal (to :data:`~pounding.structure.matrix_checks.DIAGONAL_RTOL`)."""
+        """True if ``M`` is diagonal (to
+        :data:`~pounding.structure.matrix_checks.DIAGONAL_RTOL`)."""
         return is_diagonal(self.M)[0]
 
     def lumped_masses(self) -> NDArray[np.float64]:
@@ -372,7 +373,8 @@ class MatrixBuilding:
 
         It is one when, DOFs ordered from floor 1 up to the roof:
 
-        * ``M`` is diagonal (:data:`~pounding.structure.matrix_checks.DIAGONAL_RTOL`) and ``r`` is all ones;
+        * ``M`` is diagonal (:data:`~pounding.structure.matrix_checks.DIAGONAL_RTOL`) and
+          ``r`` is all ones;
         * the elevations rise strictly from above the ground;
         * ``K`` is tridiagonal with negative off-diagonal entries, and ``K · 1 = k₁ e₁``
           (every row sums to zero but the first, whose sum is the ground storey's stiffness
