@@ -52,6 +52,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from pounding.structure.damping import DampingModel, RayleighDamping
 from pounding.structure.modal import ModalResult, modal_result
+from pounding.structure.plan_row import PlanMatrixBuilding
 from pounding.structure.shear_building import _floor_vector, _readonly
 from pounding.units import direction_cosines
 
@@ -405,14 +406,12 @@ class PlanBuilding:
         """Period of the first mode [s]."""
         return float(self.modes().periods[0])
 
-    def as_matrix_building(self) -> PlanMatrixBuilding:  # noqa: F821 (plan_row)
+    def as_matrix_building(self) -> PlanMatrixBuilding:
         """This building as the row of buildings of a :class:`~pounding.model.PoundingModel`
         holds it: a :class:`PlanMatrixBuilding` with this building's M, K, C, the DOF labels
         ``F1x, F1y, F1θ, …``, every DOF at its floor's elevation, the ``u_x`` DOFs as the
         floors (they take the contacts along the row and have storey drifts) and the plan
         kept for the contacts' kinematics. Made once and remembered."""
-        from pounding.structure.plan_row import PlanMatrixBuilding
-
         cached = self.__dict__.get("_as_matrix")
         if cached is None:
             cached = PlanMatrixBuilding(
