@@ -60,6 +60,7 @@ from numpy.typing import NDArray
 
 from pounding.hysteresis.base import StoreyLaw
 from pounding.structure.damping import DampingModel, RayleighDamping
+from pounding.structure.floor_arrays import readonly
 from pounding.structure.matrix_checks import (
     SYMMETRY_RTOL,
     check_matrix,
@@ -73,7 +74,7 @@ from pounding.structure.matrix_checks import (
     smallest_eigenvalue,
 )
 from pounding.structure.modal import ModalResult, modal_result
-from pounding.structure.shear_building import ShearBuilding, _readonly
+from pounding.structure.shear_building import ShearBuilding
 
 __all__ = ["MatrixBuilding"]
 
@@ -214,16 +215,16 @@ class MatrixBuilding:
                                  f"RayleighDamping or ModalDamping (got {damping!r})")
             damping.check(n)
             C = np.ascontiguousarray(damping.matrix(M, K), dtype=np.float64)
-        object.__setattr__(self, "M", _readonly(M))
-        object.__setattr__(self, "K", _readonly(K))
+        object.__setattr__(self, "M", readonly(M))
+        object.__setattr__(self, "K", readonly(K))
         object.__setattr__(self, "labels", labels)
         object.__setattr__(self, "elevations", elevations)
         object.__setattr__(self, "r", r)
-        object.__setattr__(self, "C", None if self.C is None else _readonly(C))
+        object.__setattr__(self, "C", None if self.C is None else readonly(C))
         object.__setattr__(self, "damping", damping)
         object.__setattr__(self, "sources", sources)
         object.__setattr__(self, "floors", floors)
-        object.__setattr__(self, "_C", _readonly(C))
+        object.__setattr__(self, "_C", readonly(C))
 
     # ----------------------------------------------------------------- constructors
     @classmethod

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.structure.shear_building import MAX_FLOORS
+from pounding.structure.floor_arrays import MAX_FLOORS
 
 __all__ = ["DIAGONAL_RTOL", "SYMMETRY_RTOL", "check_matrix", "check_positive_definite",
            "dof_labels", "dof_vector", "floor_indices", "is_diagonal", "lumped_masses",

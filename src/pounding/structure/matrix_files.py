@@ -16,9 +16,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.structure.damping import DampingModel
+from pounding.structure.floor_arrays import MAX_FLOORS
 from pounding.structure.matrices import MatrixBuilding
 from pounding.structure.matrix_checks import check_matrix
-from pounding.structure.shear_building import MAX_FLOORS
 
 __all__ = ["MATRIX_FORMATS", "StrPath", "read_matrix", "read_matrix_building"]
 
@@ -265,7 +265,7 @@ def read_matrix(path: StrPath, name: str = "M") -> NDArray[np.float64]:
     ValueError
         One line naming the file and the problem: missing file, unknown suffix, a line that is
         not numbers, ragged rows, a size declared in the header beyond
-        :data:`~pounding.structure.shear_building.MAX_FLOORS` degrees of freedom (refused
+        :data:`~pounding.structure.floor_arrays.MAX_FLOORS` degrees of freedom (refused
         before anything is allocated), not 2-D, not square, not finite, not symmetric. No
         message shows the file's text.
     """

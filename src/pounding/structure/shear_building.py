@@ -34,46 +34,12 @@ from numpy.typing import ArrayLike, NDArray
 from pounding.hysteresis.base import StoreyLaw
 from pounding.hysteresis.isolators import Isolator
 from pounding.structure.damping import DampingModel, ModalDamping, RayleighDamping
+from pounding.structure.floor_arrays import MAX_FLOORS, SMALLEST, floor_vector, readonly
 from pounding.structure.isolation import SuperstructureDamping
 from pounding.structure.modal import ModalResult, modes
 from pounding.validation import positive
 
 __all__ = ["ShearBuilding", "shear_stiffness_matrix"]
-
-
-MAX_FLOORS: int = 10_000
-"""Most floors a building may have: far beyond any real building (the tallest have about
-160), and a guard against a typo allocating terabytes (``n_storeys = 1e18``)."""
-
-SMALLEST: float = float(np.finfo(np.float64).tiny)
-"""Smallest normal positive float (2.2e-308): masses and stiffnesses below it are subnormal,
-their reciprocals infinite."""
-
-
-def _floor_vector(name: str, value: ArrayLike) -> NDArray[np.float64]:
-    """A read-only float64 copy of ``value``, 1-D, non-empty, at most :data:`MAX_FLOORS`
-    long, every entry finite and at least :data:`SMALLEST`."""
-    try:
-        arr = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a sequence of numbers, one per floor "
-                         f"(got {value!r})") from None
-    arr = np.atleast_1d(arr)
-    if arr.ndim != 1:
-        raise ValueError(f"{name} must be one-dimensional, one value per floor "
-                         f"(got shape {arr.shape})")
-    if arr.size == 0:
-        raise ValueError(f"{name} must hold at least one value (got {value!r})")
-    if arr.size > MAX_FLOORS:
-        raise ValueError(f"{name} must hold at most {MAX_FLOORS} values, one per floor "
-                         f"(got {arr.size})")
-    for i, x in enumerate(arr):
-        if positive(f"{name}[{i}]", x) < SMALLEST:
-            raise ValueError(f"{name}[{i}] must be at least {SMALLEST:.3g}: smaller "
-                             f"positive numbers are subnormal (got {x:g})")
-    arr = np.ascontiguousarray(arr)
-    arr.flags.writeable = False
-    return arr
 
 
 def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
@@ -87,7 +53,7 @@ def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
     stiffnesses : array_like, shape (n,)
         Storey lateral stiffnesses ``k_1 … k_n`` [N/m], ground storey first.
     """
-    return _chain_matrix(_floor_vector("stiffnesses", stiffnesses))
+    return _chain_matrix(floor_vector("stiffnesses", stiffnesses))
 
 
 def _chain_matrix(k: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -123,12 +89,6 @@ def _storey_indices(value: Any, n: int, has_law: bool) -> tuple[int, ...]:
     if len(set(idx)) != len(idx):
         raise ValueError(f"yielding_storeys: a storey given twice (got {value!r})")
     return tuple(sorted(idx))
-
-
-def _readonly(a: NDArray[np.float64]) -> NDArray[np.float64]:
-    a = np.ascontiguousarray(a, dtype=np.float64)
-    a.flags.writeable = False
-    return a
 
 
 @dataclass(frozen=True, eq=False)
@@ -191,9 +151,9 @@ class ShearBuilding:
     isolator: Any = None
 
     def __post_init__(self) -> None:
-        m = _floor_vector("masses", self.masses)
-        k = _floor_vector("stiffnesses", self.stiffnesses)
-        h = _floor_vector("heights", self.heights)
+        m = floor_vector("masses", self.masses)
+        k = floor_vector("stiffnesses", self.stiffnesses)
+        h = floor_vector("heights", self.heights)
         for label, arr in (("stiffnesses", k), ("heights", h)):
             if arr.size != m.size:
                 raise ValueError(f"{label} must have one value per floor, as many as masses "
@@ -217,10 +177,10 @@ class ShearBuilding:
         object.__setattr__(self, "stiffnesses", k)
         object.__setattr__(self, "heights", h)
         self.damping.check(m.size)
-        M = _readonly(np.diag(m))
-        K = _readonly(shear_stiffness_matrix(k))
+        M = readonly(np.diag(m))
+        K = readonly(shear_stiffness_matrix(k))
         # Build C now so that a damping model unfit for this building fails here, early.
-        C = _readonly(self.damping.matrix(M, K))
+        C = readonly(self.damping.matrix(M, K))
         object.__setattr__(self, "_M", M)
         object.__setattr__(self, "_K", K)
         object.__setattr__(self, "_C", C)
