@@ -36,7 +36,7 @@ import bench_opensees as bench  # noqa: E402
 from _memory import keep_freed_memory  # noqa: E402
 
 import pounding.integrate as integrate  # noqa: E402
-from pounding.contact.base import V0  # noqa: E402
+from pounding.contact.codes import V0  # noqa: E402
 from pounding.ground_motion import el_centro  # noqa: E402
 from pounding.integrate import dormand_prince, events, layout, rhs  # noqa: E402
 

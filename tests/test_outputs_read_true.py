@@ -315,7 +315,7 @@ def test_an_isolation_bearing_is_reported_as_a_bearing(tmp_path: Path,
     assert min(float(np.min(ln.get_ydata())) for ln in drawn) == pytest.approx(1.0)
     assert "isolation bearing" in " ".join(t.get_text() for t in drift_panel.texts)
     # the studies' measures of the same run: the superstructure's drift ratio, no ductility
-    from pounding.devices.optimal import RESPONSES
+    from pounding.studies.optimal_link import RESPONSES
     from pounding.studies.sweep.measures import result_row
 
     row = result_row(r)

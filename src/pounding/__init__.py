@@ -20,7 +20,7 @@ imported from ``pounding`` itself)::
 * a model file run end to end: :func:`run`, :func:`load_config`
 * contact laws and damping formulas — :mod:`pounding.contact`; one collision of two bodies:
   :func:`simulate_collision`, calibration and fitting
-* the seed paper's link-element relations — :mod:`pounding.link_element`
+* the seed paper's link-element relations — :mod:`pounding.contact.link_element`
 
 Names are imported on first use (PEP 562), so ``import pounding`` is quick and pulls in
 numba, SciPy or xarray only when something that needs them is used.

@@ -12,8 +12,9 @@ other strikes the other's column there (floor to column, :class:`ContactPoint`),
 ``floor_to_column=False``. Nothing collides above the lower roof (case 2B).
 
 The contact law of a model file is a :class:`ContactSpec` (:mod:`pounding.contact.spec`); the
-contact points and elements are in :mod:`pounding.contact.geometry`; both are importable from
-here too.
+contact points and elements are in :mod:`pounding.contact.geometry`, and where two buildings
+can touch (:func:`contact_points`) in :mod:`pounding.structure.assembly`; all are importable
+from here too.
 
 A building is a :class:`ShearBuilding` or a planar :class:`~pounding.structure.MatrixBuilding`
 with lumped masses: each of its floor DOFs is a lateral translation along the row at its
@@ -47,22 +48,24 @@ import scipy.linalg
 from numpy.typing import NDArray
 
 from pounding.contact.dispatch import PARAMS_SIZE, check_contact_law
-from pounding.contact.geometry import Contact, ContactPoint, contact_points
+from pounding.contact.geometry import Contact, ContactPoint
 from pounding.contact.spec import CONTACT_LAWS, ContactSpec
 from pounding.devices import Bumper, Link
+from pounding.devices.bumper import split_contact
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ShearBuilding
-from pounding.structure.plan import PlanBuilding
-from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
 from pounding.structure.assembly import (
     BUILDING_TYPES,
     AssembledSystem,
     Building,
     assemble,
+    contact_points,
     floor_below,
     floor_dofs,
 )
+from pounding.structure.plan import PlanBuilding
+from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
 from pounding.structure.wall import MoatWall, check_walls, wall_contacts
 from pounding.validation import non_negative, positive
 
@@ -201,7 +204,7 @@ class PoundingModel:
         self._check_devices()
         object.__setattr__(self, "walls", tuple(self.walls))
         if self.walls:
-            check_walls(self)
+            check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
         self._check_law_codes()
 
     def _check_law_codes(self) -> None:
@@ -311,21 +314,18 @@ class PoundingModel:
         pad bottoms out (:func:`pounding.devices.bumper.split_contact`); then the contacts
         with the walls (:func:`pounding.structure.wall.wall_contacts`)."""
         bumpers = {d.label: d for d in self.devices if isinstance(d, Bumper)}
-        if not bumpers:
-            return self._bare_contacts + wall_contacts(self, len(self._bare_contacts))
-        from pounding.devices.bumper import split_contact
-
         out: list[Contact] = []
         for c in self._bare_contacts:
             bumper = bumpers.get(c.label)
-            if bumper is None:
-                out.append(replace(c, index=len(out)))
+            if bumper is None:  # renumbered after a bumper's pad
+                out.append(replace(c, index=len(out)) if bumpers else c)
                 continue
             a, b = self.buildings[c.left.building], self.buildings[c.right.building]
             rubber = bumper.rubber.build(c.left.effective_mass(a.masses),
                                          c.right.effective_mass(b.masses))
             out.extend(split_contact(c, bumper, rubber, len(out)))
-        return tuple(out) + wall_contacts(self, len(out))
+        return tuple(out) + wall_contacts(self.walls, self.buildings, self.contact,
+                                          self.floor_to_column, self.level_tolerance, len(out))
 
     @property
     def links(self) -> tuple[Link, ...]:

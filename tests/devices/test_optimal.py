@@ -13,12 +13,9 @@ from scipy.optimize import minimize_scalar
 
 from pounding import ContactSpec, PoundingModel, ShearBuilding
 from pounding.devices import Link
-from pounding.devices.optimal import (
-    OPTIMUM_RESPONSES,
-    optimal_link_coefficient,
-    white_noise_optimum,
-)
+from pounding.devices.optimal import OPTIMUM_RESPONSES, white_noise_optimum
 from pounding.ground_motion import GroundMotion
+from pounding.studies.optimal_link import optimal_link_coefficient
 
 
 def _mean_square(response, m1, w1, m2, w2, c):

@@ -38,8 +38,8 @@ from pounding.integrate.reference_laws import contact_force, stored_energy
 
 REFERENCE = ("pounding.integrate.reference", "pounding.integrate.reference_laws",
              "pounding.integrate.reference_inputs")
-COMPILED_LAWS = ("pounding.contact.dispatch", "pounding.hysteresis.dispatch",
-                 "pounding.devices.laws")
+COMPILED_LAWS = ("pounding.contact.dispatch", "pounding.contact.kernels",
+                 "pounding.hysteresis.dispatch", "pounding.devices.laws")
 
 
 def _imports(module: str) -> list[tuple[str, str]]:

@@ -17,13 +17,9 @@ import scipy.sparse
 
 from pounding.hysteresis import Bilinear
 from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding
-from pounding.structure.matrices import (
-    MatrixBuilding,
-    check_matrix,
-    lumped_masses,
-    read_matrix,
-    read_matrix_building,
-)
+from pounding.structure.matrices import MatrixBuilding
+from pounding.structure.matrix_checks import check_matrix, lumped_masses
+from pounding.structure.matrix_files import read_matrix, read_matrix_building
 
 K3 = np.array([[5.0e7, -2.0e7, 0.0],
                [-2.0e7, 3.0e7, -1.0e7],

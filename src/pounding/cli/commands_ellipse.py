@@ -50,7 +50,7 @@ def ellipse(
 
     check_output_file(plot, "--plot", figure=True)
 
-    from pounding.link_element import (
+    from pounding.contact.link_element import (
         damping_coefficient_viscous,
         dissipated_energy,
         ellipse_area,

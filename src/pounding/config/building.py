@@ -18,7 +18,7 @@ from pounding.config.storeys import DampingConfig, StoreyLawConfig
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
 from pounding.structure.plan import PlanBuilding
-from pounding.structure.shear_building import MAX_FLOORS, SMALLEST
+from pounding.structure.floor_arrays import MAX_FLOORS, SMALLEST
 
 __all__ = ["BUILDINGS", "BuildingConfig", "DampingConfig", "MatrixFilesConfig",
            "StoreyLawConfig"]

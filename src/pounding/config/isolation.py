@@ -2,7 +2,7 @@
 
 A ``[[building]]`` with an ``isolator`` table is base-isolated: its other keys describe the
 superstructure (fixed-base, linear storeys), and the isolator table adds the base slab and
-the isolation storey under it (:func:`pounding.structure.isolation.base_isolated`):
+the isolation storey under it (:meth:`pounding.structure.ShearBuilding.base_isolated`):
 
 * ``isolator = { law = "friction-pendulum", radius = 2.0, mu = 0.06, base_mass = 4.0e5 }``
   (optional ``yield_displacement`` [m], ``weight`` [N]: default the building's weight,

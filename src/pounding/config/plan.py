@@ -10,7 +10,7 @@ from pydantic import Field, model_validator
 from pounding.config.base import Section, field_error, fmt
 from pounding.config.quantities import Angle, Coordinate, PlanLength, StiffnessOrZero, Unit
 from pounding.structure.plan import LateralElement
-from pounding.structure.shear_building import MAX_FLOORS
+from pounding.structure.floor_arrays import MAX_FLOORS
 
 __all__ = ["ElementConfig", "PlanConfig"]
 

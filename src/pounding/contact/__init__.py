@@ -1,6 +1,7 @@
 """Contact laws (impact models), damping-from-restitution formulas and impact analysis.
 
-Every law obeys one contract, written in :mod:`pounding.contact.base`.
+Every law obeys one contract, written in :mod:`pounding.contact.base`. The seed paper's link
+element under harmonic motion (its eqs 1–15) is :mod:`pounding.contact.link_element`.
 """
 
 from pounding.contact.base import ContactLaw, ContactResponse, m_effective

@@ -30,14 +30,9 @@ Contract
    the one compiled dispatcher, :func:`pounding.contact.dispatch.contact_trial`, switches on.
    The Python methods call the same compiled function the time-history kernel calls.
 
-State vector (float64, length :data:`STATE_SIZE`)
--------------------------------------------------
-``state[V0]``
-    impact velocity of the current impact [m/s]; 0 while the gap is open.
-``state[SLIP]``
-    plastic offset of the bilinear element's elasto-plastic branch [m] (0 for other laws).
-``state[DMAX]``
-    largest penetration reached in the current impact [m].
+The codes and the layout of the state vector (``state[V0]``, ``state[SLIP]``,
+``state[DMAX]``) are in :mod:`pounding.contact.codes`; each law's compiled trial is in
+:mod:`pounding.contact.kernels`.
 """
 
 from __future__ import annotations
@@ -47,49 +42,14 @@ from dataclasses import dataclass, fields, replace
 from typing import ClassVar, NamedTuple
 
 import numpy as np
-from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.contact.codes import STATE_SIZE
+from pounding.contact.dispatch import check_contact_law, contact_trial, respond_path
 from pounding.units import format_value
-
-V0: int = 0
-SLIP: int = 1
-DMAX: int = 2
-STATE_SIZE: int = 3
 
 SYMBOLS: dict[str, str] = {"zeta": "ζ", "chi": "χ", "delta_y": "δy"}
 """How :meth:`ContactLaw.readable` writes a field (its name where not listed)."""
-
-V0_MIN: float = 1e-6
-"""Floor on the recorded impact velocity [m/s], so grazing contacts keep ``δ̇/v0`` finite."""
-
-# Law codes for the compiled dispatcher (one per family member; never reuse a number).
-LINEAR_SPRING: int = 0
-KELVIN_VOIGT: int = 1
-MODIFIED_KELVIN_VOIGT: int = 2
-HERTZ: int = 3
-HUNT_CROSSLEY: int = 4
-NONLINEAR_VISCOELASTIC: int = 5
-BILINEAR_IMPACT: int = 6
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def open_or_onset(delta: float, rate: float, v0: float, slip: float, dmax: float):
-    """Steps 2–3 of the contract, shared by every law (scalar, pure).
-
-    Parameters are the penetration [m], its rate [m/s] and the committed state
-    ``(v0, slip, dmax)``. Returns the trial state ``(v0, slip, dmax)``: all zeros while the
-    gap is open (``δ ≤ 0``), ``v0 = max(δ̇, V0_MIN)`` at onset, ``dmax`` updated.
-    """
-    if delta <= 0.0:
-        return 0.0, 0.0, 0.0
-    if v0 <= 0.0:
-        v0 = max(rate, V0_MIN)
-        slip = 0.0
-        dmax = 0.0
-    if delta > dmax:
-        dmax = delta
-    return v0, slip, dmax
 
 
 class ContactResponse(NamedTuple):
@@ -104,7 +64,7 @@ class ContactResponse(NamedTuple):
     d_rate : float
         Tangent ∂F/∂δ̇ [N·s/m].
     state : numpy.ndarray
-        Trial state (see the module docstring); commit it to keep it.
+        Trial state (layout: :mod:`pounding.contact.codes`); commit it to keep it.
     """
 
     force: float
@@ -141,7 +101,7 @@ class ContactLaw(ABC):
     # ------------------------------------------------------------------ evaluation
     @staticmethod
     def initial_state() -> NDArray[np.float64]:
-        """The open state: zeros of length :data:`STATE_SIZE`."""
+        """The open state: zeros of length :data:`~pounding.contact.codes.STATE_SIZE`."""
         return np.zeros(STATE_SIZE)
 
     def trial(self, delta: float, rate: float,
@@ -151,8 +111,6 @@ class ContactLaw(ABC):
         ``committed=None`` means the open state, so the call starts a new impact at
         ``v0 = δ̇`` when ``δ > 0``.
         """
-        from pounding.contact.dispatch import check_contact_law, contact_trial
-
         check_contact_law(self)
         state = self.initial_state() if committed is None else np.asarray(committed, float)
         out = np.empty(STATE_SIZE)
@@ -174,8 +132,6 @@ class ContactLaw(ABC):
         numpy.ndarray, shape (n,)
             Contact force at each sample [N].
         """
-        from pounding.contact.dispatch import check_contact_law, respond_path
-
         check_contact_law(self)
         d = np.ascontiguousarray(delta, dtype=float)
         r = np.ascontiguousarray(rate, dtype=float)

@@ -10,33 +10,10 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-from numba import njit
 
-from pounding.contact.base import BILINEAR_IMPACT, ContactLaw, open_or_onset
+from pounding.contact.base import ContactLaw
+from pounding.contact.codes import BILINEAR_IMPACT
 from pounding.validation import in_range, positive, restitution
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def bilinear_impact_trial(k1, k2, dy, delta, rate, v0, slip, dmax):
-    """Bilinear impact element (params: [K1, K2, δy]).
-
-    Written as a spring ``K2`` in parallel with an elasto-plastic spring of stiffness
-    ``K1 − K2`` whose force stays in ``[0, (K1 − K2) δy]``; ``slip`` is that spring's
-    plastic offset. Loading follows K1 up to ``δy`` then K2; unloading follows K1 down to the
-    line ``F = K2 δ`` through the gap point, then that line to zero force — the parallelogram
-    loop of Muthukumar (2003). The return mapping is exact for any monotonic increment.
-    """
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    kp = k1 - k2
-    fy = kp * dy
-    fp = kp * (delta - slip)
-    if fp > fy:
-        return k2 * delta + fy, k2, 0.0, v0, delta - dy, dmax
-    if fp < 0.0:
-        return k2 * delta, k2, 0.0, v0, delta, dmax
-    return k2 * delta + fp, k1, 0.0, v0, slip, dmax
 
 
 @dataclass(frozen=True)

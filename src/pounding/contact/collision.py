@@ -25,7 +25,8 @@ from numpy.typing import NDArray
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from pounding.contact.base import STATE_SIZE, V0, ContactLaw, m_effective
+from pounding.contact.base import ContactLaw, m_effective
+from pounding.contact.codes import STATE_SIZE, V0
 from pounding.contact.dispatch import check_contact_law, contact_trial
 from pounding.validation import positive
 

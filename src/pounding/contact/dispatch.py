@@ -1,9 +1,10 @@
 """The one compiled entry point to every contact law.
 
-:func:`law_trial` switches on a law's integer code and calls that law's compiled, pure,
-scalar trial function. The time-history kernel calls it directly; :func:`contact_trial`
-wraps it for arrays (used by the Python law objects and the single-collision analysis). So
-there is exactly one implementation of each law.
+:func:`law_trial` switches on a law's integer code (:mod:`pounding.contact.codes`) and
+calls that law's compiled, pure, scalar trial function (:mod:`pounding.contact.kernels`).
+The time-history kernel calls it directly; :func:`contact_trial` wraps it for arrays (used
+by the Python law objects and the single-collision analysis). So there is exactly one
+implementation of each law.
 
 A code that no branch implements is not run as some other law: the compiled functions
 return NaN (the failure value the kernel reports as an
@@ -17,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import (
+from pounding.contact.codes import (
     BILINEAR_IMPACT,
     DMAX,
     HERTZ,
@@ -30,16 +31,14 @@ from pounding.contact.base import (
     STATE_SIZE,
     V0,
 )
-from pounding.contact.bilinear import bilinear_impact_trial
-from pounding.contact.hertz import (
+from pounding.contact.kernels import (
+    bilinear_impact_trial,
     hertz_trial,
     hunt_crossley_trial,
-    nonlinear_viscoelastic_trial,
-)
-from pounding.contact.linear import (
     kelvin_voigt_trial,
     linear_spring_trial,
     modified_kelvin_voigt_trial,
+    nonlinear_viscoelastic_trial,
 )
 
 PARAMS_SIZE: int = 3

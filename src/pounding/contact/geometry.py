@@ -1,5 +1,6 @@
 """Where neighbouring buildings meet: contact points on floors and columns, and the contact
-elements between them (see :mod:`pounding.model` for the geometry)."""
+elements between them (see :mod:`pounding.model` for the geometry; which floors meet is
+:func:`pounding.structure.assembly.contact_points`)."""
 
 from __future__ import annotations
 
@@ -9,9 +10,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.contact.base import ContactLaw
-from pounding.structure.assembly import Building, floor_dofs, shared_levels
 
-__all__ = ["Contact", "ContactPoint", "contact_points"]
+__all__ = ["Contact", "ContactPoint"]
 
 
 @dataclass(frozen=True)
@@ -170,41 +170,3 @@ class Contact:
         pad, ``'B1F3-B2F3/bumper'``."""
         base = f"{self.left.label()}-{self.right.label()}"
         return f"{base}/{self.tag}" if self.tag else base
-
-
-def contact_points(a: Building, b: Building, floor_to_column: bool = True,
-                   tol: float = 1e-6) -> list[tuple[float, int, float, int, float]]:
-    """Where two neighbouring buildings can touch: ``(elevation, i, ξ_i, j, ξ_j)`` rows.
-
-    Only floors take part: every DOF of a shear building, the
-    :attr:`~pounding.structure.MatrixBuilding.floors` of a matrix building, ordered by
-    elevation. Floors at the same elevation (within ``tol`` [m]) meet floor to floor
-    (``ξ = 1`` both). With ``floor_to_column``, every other floor of one building below the
-    roof of the other meets the other's column at the same elevation, in the storey below
-    the other's floor ``j`` at position ``ξ_j`` (0 at the floor below it or the ground, 1 at
-    floor ``j``). ``i`` and ``j`` are 0-based DOFs of ``a`` and ``b``; rows are sorted by
-    elevation.
-    """
-    fa, fb = floor_dofs(a), floor_dofs(b)
-    za, zb = a.floor_levels[fa], b.floor_levels[fb]
-    rows: list[tuple[float, int, float, int, float]] = []
-    paired_a: set[int] = set()
-    paired_b: set[int] = set()
-    for i, j in shared_levels(a, b, tol):
-        rows.append((float(a.floor_levels[i]), i, 1.0, j, 1.0))
-        paired_a.add(i)
-        paired_b.add(j)
-    if floor_to_column:
-        for levels, dofs, other, odofs, paired, left in ((za, fa, zb, fb, paired_a, True),
-                                                          (zb, fb, za, fa, paired_b, False)):
-            for k, z in enumerate(levels):
-                i = int(dofs[k])
-                if i in paired or z >= other[-1] - tol:
-                    continue  # paired already, or level with / above the other's roof
-                j = int(np.searchsorted(other, z))  # storey j + 1: other[j-1] < z < other[j]
-                below = float(other[j - 1]) if j > 0 else 0.0
-                xi = (float(z) - below) / (float(other[j]) - below)
-                jd = int(odofs[j])
-                rows.append((float(z), i, 1.0, jd, xi) if left else (float(z), jd, xi, i, 1.0))
-    rows.sort(key=lambda r: (r[0], r[1], r[3]))
-    return rows

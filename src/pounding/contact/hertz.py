@@ -8,68 +8,12 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-from numba import njit
 
-from pounding.contact.base import (
-    HERTZ,
-    HUNT_CROSSLEY,
-    NONLINEAR_VISCOELASTIC,
-    ContactLaw,
-    m_effective,
-    open_or_onset,
-)
+from pounding.contact.base import ContactLaw, m_effective
+from pounding.contact.codes import HERTZ, HUNT_CROSSLEY, NONLINEAR_VISCOELASTIC
 from pounding.validation import in_range, non_negative, positive
 
-DELTA_TINY: float = 1e-300
-"""Guard for δ^(n−1) and δ^(−3/4) in tangents at the very instant of contact [m]."""
 
-
-# --------------------------------------------------------------------------- kernels
-# Compiled trials (contract step 4): (p0, p1, p2, δ, δ̇, v0, slip, dmax) →
-# (F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax').
-@njit(cache=True, inline="always", error_model="numpy")
-def hertz_trial(k, n, _p2, delta, rate, v0, slip, dmax):
-    """Hertz ``F = k_h δⁿ`` (params: [k_h, n])."""
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    f = k * delta**n
-    return f, n * f / max(delta, DELTA_TINY), 0.0, v0, slip, dmax
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def hunt_crossley_trial(k, n, chi, delta, rate, v0, slip, dmax):
-    """Hunt–Crossley ``F = k_h δⁿ (1 + χ δ̇ / v0)`` (params: [k_h, n, χ]), clipped at F ≥ 0."""
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    fe = k * delta**n
-    factor = 1.0 + chi * rate / v0
-    if factor <= 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    return (fe * factor, n * fe * factor / max(delta, DELTA_TINY), fe * chi / v0,
-            v0, slip, dmax)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def nonlinear_viscoelastic_trial(k, zeta, m, delta, rate, v0, slip, dmax):
-    """Jankowski ``F = k_h δ^1.5 + c δ̇`` approaching, ``k_h δ^1.5`` separating, with
-    ``c = 2 ζ sqrt(k_h sqrt(δ) m_eff)`` (params: [k_h, ζ, m_eff]).
-    """
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    d = max(delta, DELTA_TINY)
-    sd = np.sqrt(d)
-    fe = k * d * sd
-    ke = 1.5 * k * sd
-    if rate > 0.0:
-        c = 2.0 * zeta * np.sqrt(k * sd * m)
-        return fe + c * rate, ke + 0.25 * c * rate / d, c, v0, slip, dmax
-    return fe, ke, 0.0, v0, slip, dmax
-
-
-# --------------------------------------------------------------------------- laws
 @dataclass(frozen=True)
 class Hertz(ContactLaw):
     """Elastic Hertz contact, ``F = k_h δⁿ`` with ``n = 3/2`` (Davis 1992, EESD 21(3):253–274).

@@ -10,59 +10,12 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-from numba import njit
 
-from pounding.contact.base import (
-    KELVIN_VOIGT,
-    LINEAR_SPRING,
-    MODIFIED_KELVIN_VOIGT,
-    ContactLaw,
-    m_effective,
-    open_or_onset,
-)
+from pounding.contact.base import ContactLaw, m_effective
+from pounding.contact.codes import KELVIN_VOIGT, LINEAR_SPRING, MODIFIED_KELVIN_VOIGT
 from pounding.validation import non_negative, positive
 
 
-# --------------------------------------------------------------------------- kernels
-# Compiled trials (contract step 4): (p0, p1, p2, δ, δ̇, v0, slip, dmax) →
-# (F, ∂F/∂δ, ∂F/∂δ̇, v0', slip', dmax').
-@njit(cache=True, inline="always", error_model="numpy")
-def linear_spring_trial(k, _p1, _p2, delta, rate, v0, slip, dmax):
-    """Gap spring ``F = k δ`` (params: [k])."""
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    return k * delta, k, 0.0, v0, slip, dmax
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def kelvin_voigt_trial(k, c, tension, delta, rate, v0, slip, dmax):
-    """Kelvin–Voigt ``F = k δ + c δ̇`` (params: [k, c, tension]).
-
-    With ``tension == 1`` the dashpot may pull (F < 0) until ``δ = 0``; otherwise the force
-    is clipped at zero and the bodies separate when it returns to zero.
-    """
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    f = k * delta + c * rate
-    if f < 0.0 and tension == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    return f, k, c, v0, slip, dmax
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def modified_kelvin_voigt_trial(k, c, _p2, delta, rate, v0, slip, dmax):
-    """Modified Kelvin–Voigt: ``F = k δ + c δ̇`` approaching, ``F = k δ`` separating."""
-    v0, slip, dmax = open_or_onset(delta, rate, v0, slip, dmax)
-    if v0 == 0.0:
-        return 0.0, 0.0, 0.0, v0, slip, dmax
-    if rate > 0.0:
-        return k * delta + c * rate, k, c, v0, slip, dmax
-    return k * delta, k, 0.0, v0, slip, dmax
-
-
-# --------------------------------------------------------------------------- laws
 @dataclass(frozen=True)
 class LinearSpring(ContactLaw):
     """Linear elastic gap element, ``F = k δ`` for ``δ > 0`` (seed eq 3, spring alone).

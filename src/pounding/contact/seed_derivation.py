@@ -107,7 +107,7 @@ def dissipated_energy_eq23(zeta: float, k: float, delta: ArrayLike,
     ``omega_ratio`` is ω/ω_n; the paper sets it to 1 ("the equation between w and w_n could be
     assumed to be 1") before eq 24. Eqs 21–22 are the definition ``ΔE = ∫ c δ̇ dδ`` of which
     this is the closed form over a cycle of amplitude δ (see
-    :func:`pounding.link_element.ellipse_area`).
+    :func:`pounding.contact.link_element.ellipse_area`).
     """
     z = non_negative("zeta", zeta)
     kk = positive("k", k)

@@ -4,7 +4,8 @@
   all times (:mod:`pounding.devices.laws` for the force laws);
 * :class:`Bumper` — an elastomeric pad in the gap of a contact;
 * :mod:`pounding.devices.optimal` — the optimal coefficient of a damper linking two
-  oscillators (closed form under white noise, and a search on a record).
+  oscillators (closed form under white noise; the search on a record is the study
+  :mod:`pounding.studies.optimal_link`).
 
 Give them to :class:`pounding.PoundingModel` as ``devices=[…]`` or in a model file as
 ``[[device]]`` tables (docs/mitigation.md).

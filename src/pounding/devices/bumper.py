@@ -23,15 +23,17 @@ and the compression limit are the user's (docs/mitigation.md).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 from pounding.devices.link import parse_floor
 
 if TYPE_CHECKING:
-    from pounding.model import ContactSpec
+    from pounding.contact.base import ContactLaw
+    from pounding.contact.geometry import Contact
+    from pounding.contact.spec import ContactSpec
 
-__all__ = ["BUMPER_TAG", "Bumper"]
+__all__ = ["BUMPER_TAG", "Bumper", "split_contact"]
 
 BUMPER_TAG = "bumper"
 """Suffix of a bumper's contact element in labels: ``B1F3-B2F3/bumper``."""
@@ -101,12 +103,11 @@ class Bumper:
                 f"{self.compression_limit:.0%} compression; rubber {self.rubber.describe()}")
 
 
-def split_contact(contact: Any, bumper: Bumper, rubber_law: Any, index: int) -> list[Any]:
+def split_contact(contact: Contact, bumper: Bumper, rubber_law: ContactLaw,
+                  index: int) -> list[Contact]:
     """The two contact elements that replace ``contact`` when ``bumper`` sits in it: the pad
-    (``/bumper``, index ``index``) and the building contact moved to where the pad bottoms
-    out (index ``index + 1``)."""
-    from dataclasses import replace
-
+    (``/bumper``, index ``index``, with ``rubber_law``) and the building contact moved to
+    where the pad bottoms out (index ``index + 1``)."""
     pad_gap, building_gap = bumper.gaps(contact.gap)
     return [replace(contact, index=index, gap=pad_gap, law=rubber_law, tag=BUMPER_TAG),
             replace(contact, index=index + 1, gap=building_gap)]

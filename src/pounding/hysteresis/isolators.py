@@ -1,7 +1,7 @@
 """Isolation bearings as storey laws: the bilinear isolator and the friction pendulum.
 
 An isolator is the storey between the ground and the base slab of a base-isolated building
-(:func:`pounding.structure.isolation.base_isolated`). Each class here takes the constants
+(:meth:`pounding.structure.ShearBuilding.base_isolated`). Each class here takes the constants
 engineers give for the bearing and builds the storey law the kernel already integrates
 (:class:`pounding.hysteresis.Bilinear`, :class:`pounding.hysteresis.BoucWen`) together with
 the isolation storey's elastic (initial) stiffness ``k``, which the law's contract takes
@@ -147,7 +147,7 @@ class FrictionPendulum(Isolator):
         Coefficient of friction ``μ`` (0 < μ < 1), constant.
     weight : float, optional
         Weight carried ``W`` [N]; give it or ``mass``, or leave both out and let
-        :func:`pounding.structure.isolation.base_isolated` use the building's weight.
+        :meth:`pounding.structure.ShearBuilding.base_isolated` use the building's weight.
     mass : float, optional
         Mass carried [kg], ``W = m g``.
     yield_displacement : float

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import V0
+from pounding.contact.codes import V0
 from pounding.devices.laws import DEVICE_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.commit import commit_contacts, commit_storeys

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
+from pounding.contact.codes import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.events import hermite_max
 from pounding.integrate.layout import (

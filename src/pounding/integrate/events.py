@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import V0
+from pounding.contact.codes import V0
 from pounding.contact.dispatch import law_releases, release_value
 from pounding.devices.laws import DEVICE_MIN, has_rate_cusp
 from pounding.integrate.dormand_prince import rk_step

@@ -26,8 +26,7 @@ KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.exact_steps", "pounding.integrate.layout", "pounding.integrate.peaks",
     "pounding.integrate.rhs", "pounding.integrate.kernel_model",
     "pounding.integrate.workspace", "pounding.integrate.propagator",
-    "pounding.contact.base", "pounding.contact.dispatch",
-    "pounding.contact.linear", "pounding.contact.hertz", "pounding.contact.bilinear",
+    "pounding.contact.codes", "pounding.contact.dispatch", "pounding.contact.kernels",
     "pounding.hysteresis.base", "pounding.hysteresis.dispatch",
     "pounding.hysteresis.bilinear", "pounding.hysteresis.bouc_wen", "pounding.devices.laws",
 )

@@ -29,7 +29,7 @@ from numpy.typing import NDArray
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from pounding.contact.base import V0_MIN
+from pounding.contact.codes import V0_MIN
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.reference_inputs import (
     check_components,

@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.base import V0
+from pounding.contact.codes import V0
 from pounding.contact.dispatch import (
     has_linear_spring,
     law_releases,

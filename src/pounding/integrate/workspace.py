@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pounding.contact.base import STATE_SIZE
+from pounding.contact.codes import STATE_SIZE
 from pounding.integrate.kernel_model import KernelModel
 from pounding.integrate.layout import (
     E_DEVICE,

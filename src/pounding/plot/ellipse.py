@@ -5,7 +5,7 @@ from __future__ import annotations
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from pounding.link_element import ellipse_area, harmonic_loop
+from pounding.contact.link_element import ellipse_area, harmonic_loop
 from pounding.plot import new_figure
 from pounding.plot.layout import MM, display_scale, place_legend, plain_ticks
 

@@ -2,7 +2,7 @@
 them, buildings in plan direction by direction with their storey forces, the residual drift
 of a yielding storey, the shear on a struck column, and the names of floors.
 
-* **Bearings.** A base-isolated building (:func:`pounding.structure.isolation.base_isolated`)
+* **Bearings.** A base-isolated building (:meth:`pounding.structure.ShearBuilding.base_isolated`)
   is a shear building whose storey 1 is the isolation bearing under its base slab (floor 1).
   Its "drift" is the bearing's displacement and its "shear" the bearing's force: not a
   storey's drift ratio or ductility (a friction pendulum's 0.5 mm stick displacement makes a

@@ -10,7 +10,8 @@
   and the floor pairs that can collide (:mod:`pounding.structure.assembly`).
 * :class:`MatrixBuilding`, :func:`read_matrix_building`, :func:`read_matrix`,
   :func:`lumped_masses` — buildings given as mass and stiffness matrices read from files
-  (:mod:`pounding.structure.matrices`), planar, beside shear buildings in a
+  (:mod:`pounding.structure.matrices`, :mod:`~pounding.structure.matrix_files`,
+  :mod:`~pounding.structure.matrix_checks`), planar, beside shear buildings in a
   :class:`~pounding.model.PoundingModel`. Matrices out of an
   OpenSeesPy model: :func:`pounding.structure.opensees_matrices.matrices_from_opensees`.
 """
@@ -22,12 +23,9 @@ from pounding.structure.damping import (
     RayleighDamping,
     rayleigh_coefficients,
 )
-from pounding.structure.matrices import (
-    MatrixBuilding,
-    lumped_masses,
-    read_matrix,
-    read_matrix_building,
-)
+from pounding.structure.matrices import MatrixBuilding
+from pounding.structure.matrix_checks import lumped_masses
+from pounding.structure.matrix_files import read_matrix, read_matrix_building
 from pounding.structure.modal import ModalResult, eigenmodes, modal_result, modes
 from pounding.structure.shear_building import ShearBuilding, shear_stiffness_matrix
 

@@ -1,11 +1,12 @@
-"""Base-isolated buildings: a superstructure on an isolation storey.
+"""Base-isolated buildings: a superstructure on an isolation storey, and its damping.
 
-A base-isolated shear building has ``n + 1`` floors: floor 1 is the base slab (mass
-``m_b``), carried by the isolation storey (storey 1, between the ground and the base slab),
-whose shear follows the isolator's law (:mod:`pounding.hysteresis.isolators`); floors
-2 … n + 1 are the superstructure, whose storeys stay linear (Kelly 1990, "Base isolation:
-linear theory and design", Earthquake Spectra 6(2); Naeim & Kelly 1999, ch. 2). Only the
-isolation storey becomes an element row of the kernel
+A base-isolated shear building (:meth:`pounding.structure.ShearBuilding.base_isolated`) has
+``n + 1`` floors: floor 1 is the base slab (mass ``m_b``), carried by the isolation storey
+(storey 1, between the ground and the base slab), whose shear follows the isolator's law
+(:mod:`pounding.hysteresis.isolators`); floors 2 … n + 1 are the superstructure, whose
+storeys stay linear (Kelly 1990, "Base isolation: linear theory and design", Earthquake
+Spectra 6(2); Naeim & Kelly 1999, ch. 2). Only the isolation storey becomes an element row
+of the kernel
 (:attr:`pounding.structure.ShearBuilding.yielding_storeys` ``= (0,)``); the superstructure
 stays in the linear stiffness matrix.
 
@@ -31,13 +32,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.hysteresis.isolators import Isolator
 from pounding.structure.damping import DampingModel
-from pounding.structure.shear_building import ShearBuilding
 from pounding.units import format_value
-from pounding.validation import non_negative, positive
+from pounding.validation import non_negative
 
-__all__ = ["SuperstructureDamping", "base_isolated"]
+__all__ = ["SuperstructureDamping"]
 
 
 @dataclass(frozen=True)
@@ -84,62 +83,3 @@ class SuperstructureDamping(DampingModel):
         C = T.T @ Cs @ T
         C[0, 0] += self.isolator
         return 0.5 * (C + C.T)
-
-
-def base_isolated(superstructure: ShearBuilding, base_mass: float, isolator: Isolator,
-                  base_height: float = 1.0, isolator_damping: float = 0.0,
-                  name: str | None = None) -> ShearBuilding:
-    """A base-isolated shear building: ``superstructure`` on a base slab on ``isolator``.
-
-    Parameters
-    ----------
-    superstructure : ShearBuilding
-        The fixed-base superstructure (linear storeys; its damping model becomes the
-        superstructure's damping, relative to the base: :class:`SuperstructureDamping`).
-    base_mass : float
-        Mass of the base slab ``m_b`` [kg] (floor 1 of the isolated building).
-    isolator : Isolator
-        :class:`pounding.hysteresis.isolators.BilinearIsolator` or
-        :class:`pounding.hysteresis.isolators.FrictionPendulum` (one equivalent bearing for
-        the whole isolation system; a friction pendulum without a weight carries the whole
-        building, ``W = g (m_b + Σ m_s)``).
-    base_height : float
-        Height of the isolation storey [m]: the base slab's elevation.
-    isolator_damping : float
-        Viscous coefficient across the isolator [N·s/m] (default 0).
-    name : str, optional
-        Default: the superstructure's name.
-
-    Returns
-    -------
-    ShearBuilding
-        ``n + 1`` floors, storey 1 the isolator (stiffness = the isolator's initial
-        stiffness, ``yielding_storeys = (0,)``).
-
-    Examples
-    --------
-    >>> from pounding.hysteresis.isolators import FrictionPendulum
-    >>> sup = ShearBuilding.uniform(3, 1.0e5, 1.0e8)
-    >>> b = base_isolated(sup, 1.5e5, FrictionPendulum(radius=2.0, mu=0.05))
-    >>> b.n, b.yielding, [round(float(z), 1) for z in b.floor_levels]
-    (4, (0,), [1.0, 4.0, 7.0, 10.0])
-    """
-    if not isinstance(superstructure, ShearBuilding):
-        raise ValueError(f"superstructure: expected a ShearBuilding (got "
-                         f"{type(superstructure).__name__})")
-    if superstructure.storey_law is not None:
-        raise ValueError("superstructure: its storeys must be linear (got storey_law="
-                         f"{superstructure.storey_law.describe()})")
-    if not isinstance(isolator, Isolator):
-        raise ValueError(f"isolator: expected a BilinearIsolator or FrictionPendulum (got "
-                         f"{isolator!r})")
-    mb = positive("base_mass", base_mass)
-    hb = positive("base_height", base_height)
-    iso = isolator.carrying(mb + superstructure.total_mass)
-    return ShearBuilding(
-        masses=np.concatenate([[mb], superstructure.masses]),
-        stiffnesses=np.concatenate([[iso.stiffness], superstructure.stiffnesses]),
-        heights=np.concatenate([[hb], superstructure.heights]),
-        damping=SuperstructureDamping(superstructure.damping, isolator_damping),
-        name=superstructure.name if name is None else name,
-        storey_law=iso.law(), yielding_storeys=(0,), isolator=iso)

@@ -23,19 +23,21 @@ Formats read (one matrix a file, except ``.npz``):
 
 Everything is checked on reading and on construction, and a fault raises :class:`ValueError`
 in one line that names the file (or the building) and the problem: a matrix that is not
-square, not finite or not symmetric (to :data:`SYMMETRY_RTOL` of its largest entry; the worst
+square, not finite or not symmetric (to
+:data:`~pounding.structure.matrix_checks.SYMMETRY_RTOL` of its largest entry; the worst
 entry is named), sizes that disagree with each other or with the labels, elevations and ``r``,
 a stiffness or mass matrix that is not positive definite (Cholesky factorisation; the
 smallest eigenvalue is named) and a damping matrix with a negative eigenvalue. Matrix indices
 in messages are 0-based, as in NumPy.
 
-The project's time stepper takes lumped (diagonal) masses: :func:`lumped_masses` returns them
-or says which off-diagonal entry is in the way. :meth:`MatrixBuilding.to_shear_building` turns
-a matrix building that is a shear building (Chopra §9.2) back into a
-:class:`~pounding.structure.ShearBuilding`.
+The project's time stepper takes lumped (diagonal) masses:
+:meth:`MatrixBuilding.lumped_masses` returns them or says which off-diagonal entry is in the
+way. :meth:`MatrixBuilding.to_shear_building` turns a matrix building that is a shear
+building (Chopra §9.2) back into a :class:`~pounding.structure.ShearBuilding`.
 
-Reading and checking one matrix (and the labels, elevations, ``r`` and floors that go with
-them), and reading a building from files (:func:`read_matrix_building`), is
+Checking one matrix (and the labels, elevations, ``r`` and floors that go with them) is
+:mod:`pounding.structure.matrix_checks`; reading one matrix or a whole building from files
+(:func:`~pounding.structure.matrix_files.read_matrix_building`) is
 :mod:`pounding.structure.matrix_files`; this module is the building.
 
 In a :class:`pounding.model.PoundingModel` a planar matrix building stands in a row beside
@@ -58,36 +60,23 @@ from numpy.typing import NDArray
 
 from pounding.hysteresis.base import StoreyLaw
 from pounding.structure.damping import DampingModel, RayleighDamping
-from pounding.structure.modal import ModalResult, modal_result
-from pounding.structure.shear_building import ShearBuilding, _readonly
-
-__all__ = [
-    "DIAGONAL_RTOL",
-    "MATRIX_FORMATS",
-    "SYMMETRY_RTOL",
-    "MatrixBuilding",
-    "check_matrix",
-    "lumped_masses",
-    "read_matrix",
-    "read_matrix_building",
-]
-
-from pounding.structure.matrix_files import (  # noqa: E402  (re-exported)
-    DIAGONAL_RTOL,
-    MATRIX_FORMATS,
+from pounding.structure.floor_arrays import readonly
+from pounding.structure.matrix_checks import (
     SYMMETRY_RTOL,
-    _check_positive_definite,
-    _floors,
-    _is_diagonal,
-    _labels,
-    _shape,
-    _smallest_eigenvalue,
-    _vector,
     check_matrix,
+    check_positive_definite,
+    dof_labels,
+    dof_vector,
+    floor_indices,
+    is_diagonal,
     lumped_masses,
-    read_matrix,
-    read_matrix_building,
+    matrix_shape,
+    smallest_eigenvalue,
 )
+from pounding.structure.modal import ModalResult, modal_result
+from pounding.structure.shear_building import ShearBuilding
+
+__all__ = ["MatrixBuilding"]
 
 
 # --------------------------------------------------------------------------- the building
@@ -124,7 +113,7 @@ class MatrixBuilding:
         A label for tables, plots and messages.
     sources : mapping of str to str
         Where each matrix came from (``{"M": "m.csv", "K": "k.csv"}``), named in messages;
-        :func:`read_matrix_building` fills it in.
+        :func:`~pounding.structure.matrix_files.read_matrix_building` fills it in.
     floors : sequence of int or str, optional
         The DOFs that are floor translations along the row (0-based indices or labels);
         default all. Only these meet a neighbour in contact and have a storey drift; the
@@ -180,29 +169,29 @@ class MatrixBuilding:
         M = check_matrix(self.M, "M", where("M"))
         K = check_matrix(self.K, "K", where("K"))
         if K.shape != M.shape:
-            raise ValueError(f"{where('K')}: K is {_shape(K)} but M{_from('M')} is "
-                             f"{_shape(M)}; they must be the same size")
+            raise ValueError(f"{where('K')}: K is {matrix_shape(K)} but M{_from('M')} is "
+                             f"{matrix_shape(M)}; they must be the same size")
         n = M.shape[0]
-        labels = _labels(self.labels, n, who)
-        elevations = _vector("elevations", self.elevations, n, who)
-        floors = _floors(self.floors, labels, who)
+        labels = dof_labels(self.labels, n, who)
+        elevations = dof_vector("elevations", self.elevations, n, who)
+        floors = floor_indices(self.floors, labels, who)
         r0 = np.zeros(n)
         r0[list(floors)] = 1.0
-        r = _vector("r", r0 if self.r is None else self.r, n, who)
+        r = dof_vector("r", r0 if self.r is None else self.r, n, who)
         if not np.any(r != 0.0):
             raise ValueError(f"{who}: r is all zero: the ground motion would not move the "
                              "building")
-        diagonal, _, _ = _is_diagonal(M)
+        diagonal, _, _ = is_diagonal(M)
         if diagonal:
             for k in range(n):
                 if not M[k, k] > 0.0:
                     raise ValueError(f"{where('M')}: M[{k},{k}] = {M[k, k]:g} must be > 0: every "
                                      "degree of freedom needs a positive mass (condense "
                                      "massless ones out first)")
-        _check_positive_definite(M, "M", where("M"),
+        check_positive_definite(M, "M", where("M"),
                                  "every degree of freedom needs mass; condense massless ones "
                                  "out first")
-        _check_positive_definite(K, "K", where("K"),
+        check_positive_definite(K, "K", where("K"),
                                  "the building must be restrained against the ground, with no "
                                  "mechanism")
         if self.C is not None and self.damping is not None:
@@ -211,10 +200,10 @@ class MatrixBuilding:
         if self.C is not None:
             C = check_matrix(self.C, "C", where("C"))
             if C.shape != M.shape:
-                raise ValueError(f"{where('C')}: C is {_shape(C)} but M{_from('M')} is "
-                                 f"{_shape(M)}; they must be the same size")
+                raise ValueError(f"{where('C')}: C is {matrix_shape(C)} but M{_from('M')} is "
+                                 f"{matrix_shape(M)}; they must be the same size")
             scale = float(np.max(np.abs(C)))
-            lam = _smallest_eigenvalue(C)
+            lam = smallest_eigenvalue(C)
             if lam < -SYMMETRY_RTOL * scale:
                 raise ValueError(f"{where('C')}: C must be positive semi-definite (damping "
                                  f"cannot add energy); its smallest eigenvalue is {lam:.6g}")
@@ -226,16 +215,16 @@ class MatrixBuilding:
                                  f"RayleighDamping or ModalDamping (got {damping!r})")
             damping.check(n)
             C = np.ascontiguousarray(damping.matrix(M, K), dtype=np.float64)
-        object.__setattr__(self, "M", _readonly(M))
-        object.__setattr__(self, "K", _readonly(K))
+        object.__setattr__(self, "M", readonly(M))
+        object.__setattr__(self, "K", readonly(K))
         object.__setattr__(self, "labels", labels)
         object.__setattr__(self, "elevations", elevations)
         object.__setattr__(self, "r", r)
-        object.__setattr__(self, "C", None if self.C is None else _readonly(C))
+        object.__setattr__(self, "C", None if self.C is None else readonly(C))
         object.__setattr__(self, "damping", damping)
         object.__setattr__(self, "sources", sources)
         object.__setattr__(self, "floors", floors)
-        object.__setattr__(self, "_C", _readonly(C))
+        object.__setattr__(self, "_C", readonly(C))
 
     # ----------------------------------------------------------------- constructors
     @classmethod
@@ -354,12 +343,13 @@ class MatrixBuilding:
 
     @property
     def is_lumped(self) -> bool:
-        """True if ``M`` is diagonal (to :data:`DIAGONAL_RTOL`)."""
-        return _is_diagonal(self.M)[0]
+        """True if ``M`` is diagonal (to
+        :data:`~pounding.structure.matrix_checks.DIAGONAL_RTOL`)."""
+        return is_diagonal(self.M)[0]
 
     def lumped_masses(self) -> NDArray[np.float64]:
         """The diagonal masses [kg], shape (n,); raises unless ``M`` is diagonal
-        (:func:`lumped_masses`)."""
+        (:func:`~pounding.structure.matrix_checks.lumped_masses`)."""
         return lumped_masses(self.M, self.sources.get("M", self._who))
 
     @property
@@ -384,7 +374,8 @@ class MatrixBuilding:
 
         It is one when, DOFs ordered from floor 1 up to the roof:
 
-        * ``M`` is diagonal (:data:`DIAGONAL_RTOL`) and ``r`` is all ones;
+        * ``M`` is diagonal (:data:`~pounding.structure.matrix_checks.DIAGONAL_RTOL`) and
+          ``r`` is all ones;
         * the elevations rise strictly from above the ground;
         * ``K`` is tridiagonal with negative off-diagonal entries, and ``K · 1 = k₁ e₁``
           (every row sums to zero but the first, whose sum is the ground storey's stiffness

@@ -16,16 +16,34 @@ Conventions
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 import scipy.linalg
 from numpy.typing import ArrayLike, NDArray
 
-if TYPE_CHECKING:
-    from pounding.structure.shear_building import ShearBuilding
+__all__ = ["LinearStructure", "ModalResult", "eigenmodes", "modes", "square_pair"]
 
-__all__ = ["ModalResult", "eigenmodes", "modes", "square_pair"]
+
+class LinearStructure(Protocol):
+    """What :func:`modes` reads of a structure (a :class:`~pounding.structure.ShearBuilding`,
+    a :class:`~pounding.structure.MatrixBuilding`): its matrices and influence vector."""
+
+    def mass_matrix(self) -> NDArray[np.float64]:
+        """``M`` [kg], shape (n, n)."""
+        ...
+
+    def stiffness_matrix(self) -> NDArray[np.float64]:
+        """``K`` [N/m], shape (n, n)."""
+        ...
+
+    def damping_matrix(self) -> NDArray[np.float64]:
+        """``C`` [N·s/m], shape (n, n)."""
+        ...
+
+    def influence_vector(self) -> NDArray[np.float64]:
+        """``ι`` [-], shape (n,)."""
+        ...
 
 
 def square_pair(M: ArrayLike, K: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -192,14 +210,14 @@ def modal_result(M: ArrayLike, K: ArrayLike, C: ArrayLike | None = None,
     )
 
 
-def modes(building: ShearBuilding) -> ModalResult:
-    """Modal analysis of a shear building.
+def modes(building: LinearStructure) -> ModalResult:
+    """Modal analysis of a shear building (or any :class:`LinearStructure`).
 
     Parameters
     ----------
     building : ShearBuilding
-        The building; its mass, stiffness and damping matrices are used, with the ground
-        motion influence vector ι = 1.
+        The building; its mass, stiffness and damping matrices are used, with its ground
+        motion influence vector (ι = 1 for a shear building).
 
     Returns
     -------

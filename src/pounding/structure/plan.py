@@ -51,8 +51,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.structure.damping import DampingModel, RayleighDamping
+from pounding.structure.floor_arrays import floor_vector, readonly
 from pounding.structure.modal import ModalResult, modal_result
-from pounding.structure.shear_building import _floor_vector, _readonly
+from pounding.structure.plan_row import PlanMatrixBuilding
 from pounding.units import direction_cosines
 
 __all__ = ["LateralElement", "PlanBuilding", "plan_stiffness_matrix"]
@@ -192,8 +193,8 @@ class PlanBuilding:
     stiffness: Any = None
 
     def __post_init__(self) -> None:
-        m = _floor_vector("masses", self.masses)
-        h = _floor_vector("heights", self.heights)
+        m = floor_vector("masses", self.masses)
+        h = floor_vector("heights", self.heights)
         n = m.size
         if h.size != n:
             raise ValueError(f"heights must have one value per floor, as many as masses ({n}) "
@@ -227,7 +228,7 @@ class PlanBuilding:
         if self.inertias is None:
             inertia = m * (self.width ** 2 + self.depth ** 2) / 12.0
         else:
-            inertia = _floor_vector("inertias", self.inertias)
+            inertia = floor_vector("inertias", self.inertias)
             if inertia.size != n:
                 raise ValueError(f"inertias must have one value per floor ({n}) "
                                  f"(got {inertia.size})")
@@ -259,20 +260,20 @@ class PlanBuilding:
                              f"ModalDamping (got {self.damping!r})")
         if not isinstance(self.name, str):
             raise ValueError(f"name must be a string (got {self.name!r})")
-        object.__setattr__(self, "masses", _readonly(m))
-        object.__setattr__(self, "heights", _readonly(h))
-        object.__setattr__(self, "mass_centres", _readonly(centres))
-        object.__setattr__(self, "inertias", _readonly(inertia))
+        object.__setattr__(self, "masses", readonly(m))
+        object.__setattr__(self, "heights", readonly(h))
+        object.__setattr__(self, "mass_centres", readonly(centres))
+        object.__setattr__(self, "inertias", readonly(inertia))
         object.__setattr__(self, "elements", elements)
-        M = _readonly(np.diag(np.column_stack([m, m, inertia]).ravel()))
+        M = readonly(np.diag(np.column_stack([m, m, inertia]).ravel()))
         if self.stiffness is None:
-            K = _readonly(plan_stiffness_matrix(elements, centres))
+            K = readonly(plan_stiffness_matrix(elements, centres))
         else:
-            K = _readonly(_given_stiffness(self.stiffness, 3 * n))
+            K = readonly(_given_stiffness(self.stiffness, 3 * n))
         object.__setattr__(self, "stiffness", None if self.stiffness is None else K)
         self._check_restrained(K)
         self.damping.check(3 * n)
-        C = _readonly(self.damping.matrix(M, K))
+        C = readonly(self.damping.matrix(M, K))
         object.__setattr__(self, "_M", M)
         object.__setattr__(self, "_K", K)
         object.__setattr__(self, "_C", C)
@@ -405,14 +406,12 @@ class PlanBuilding:
         """Period of the first mode [s]."""
         return float(self.modes().periods[0])
 
-    def as_matrix_building(self) -> PlanMatrixBuilding:  # noqa: F821 (plan_row)
+    def as_matrix_building(self) -> PlanMatrixBuilding:
         """This building as the row of buildings of a :class:`~pounding.model.PoundingModel`
         holds it: a :class:`PlanMatrixBuilding` with this building's M, K, C, the DOF labels
         ``F1x, F1y, F1θ, …``, every DOF at its floor's elevation, the ``u_x`` DOFs as the
         floors (they take the contacts along the row and have storey drifts) and the plan
         kept for the contacts' kinematics. Made once and remembered."""
-        from pounding.structure.plan_row import PlanMatrixBuilding
-
         cached = self.__dict__.get("_as_matrix")
         if cached is None:
             cached = PlanMatrixBuilding(

@@ -9,24 +9,61 @@ floors at the same elevation meet at the ends of the stretch where their façade
 other (:func:`facing_points`): between two straight edges of rigid floors the gap is linear
 along that stretch, so the first touch is at one of its ends. The penetration at such a point
 is a linear combination of the floors' DOFs (:func:`plan_contact_points`).
+
+This module reads a building in plan through what :class:`FloorPlan` names (a
+:class:`~pounding.structure.plan.PlanBuilding` has it all); the plan makes its row building
+(:meth:`~pounding.structure.plan.PlanBuilding.as_matrix_building`), not the other way round.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.structure.assembly import shared_levels
 from pounding.structure.matrices import MatrixBuilding
-from pounding.structure.plan import PlanBuilding
 
-__all__ = ["PlanMatrixBuilding", "facing_points", "plan_contact_points", "point_history"]
+__all__ = ["FloorPlan", "PlanMatrixBuilding", "facing_points", "plan_contact_points",
+           "point_history"]
 
 
-def facing_points(left: PlanBuilding, right: PlanBuilding) -> list[float]:
+@runtime_checkable
+class FloorPlan(Protocol):
+    """What this module reads of a building in plan
+    (:class:`~pounding.structure.plan.PlanBuilding`): its plan's size and place on the site,
+    its floors, and the kinematics of a point of a rigid floor."""
+
+    width: float
+    """Plan dimension along x [m]."""
+    depth: float
+    """Plan dimension along y [m]."""
+    site_y: float
+    """Site y of the plan's ``y = 0`` edge [m]."""
+
+    @property
+    def n_floors(self) -> int:
+        """Number of floors."""
+        ...
+
+    def influence_matrix(self) -> NDArray[np.float64]:
+        """``R`` (3n × 2) of the ground's x and y components."""
+        ...
+
+    def point_weights(self, floor: int, x: float, y: float, direction: str | float = "x"
+                      ) -> list[tuple[int, float]]:
+        """``(DOF, weight)`` pairs of the displacement of a point of ``floor``."""
+        ...
+
+    def point_displacement(self, u: ArrayLike, floor: int, x: float, y: float,
+                           direction: str | float = "x") -> NDArray[np.float64]:
+        """Displacement [m] of a point of ``floor`` from DOF histories ``u[..., 3n]``."""
+        ...
+
+
+def facing_points(left: FloorPlan, right: FloorPlan) -> list[float]:
     """Site y [m] of the contact points between the right façade (``x = width``) of
     ``left`` and the left façade (``x = 0``) of ``right``: the two ends of the stretch over
     which they face each other (one point if it is a single point; none if they do not face
@@ -43,33 +80,35 @@ def facing_points(left: PlanBuilding, right: PlanBuilding) -> list[float]:
 
 @dataclass(frozen=True, eq=False)
 class PlanMatrixBuilding(MatrixBuilding):
-    """A :class:`PlanBuilding` as it stands in a row of buildings: a matrix building (so that
-    every part of the engine and its outputs takes it as one: DOF labels ``F1x, F1y, F1θ``,
-    the ``u_x`` DOFs its floors) that keeps its plan (:attr:`plan`) for the influence matrix
-    of two ground components and the kinematics of its façade points. Made by
-    :meth:`PlanBuilding.as_matrix_building`; :class:`~pounding.model.PoundingModel` makes it
-    of every PlanBuilding it is given."""
+    """A :class:`~pounding.structure.plan.PlanBuilding` as it stands in a row of buildings:
+    a matrix building (so that every part of the engine and its outputs takes it as one: DOF
+    labels ``F1x, F1y, F1θ``, the ``u_x`` DOFs its floors) that keeps its plan
+    (:attr:`plan`) for the influence matrix of two ground components and the kinematics of
+    its façade points. Made by
+    :meth:`~pounding.structure.plan.PlanBuilding.as_matrix_building`;
+    :class:`~pounding.model.PoundingModel` makes it of every PlanBuilding it is given."""
 
-    plan: PlanBuilding | None = None
+    plan: FloorPlan | None = None
 
     def __post_init__(self) -> None:
-        if not isinstance(self.plan, PlanBuilding):
+        if not isinstance(self.plan, FloorPlan):
             raise ValueError(f"plan must be a PlanBuilding (got {self.plan!r})")
         super().__post_init__()
 
     def influence_matrix(self) -> NDArray[np.float64]:
-        """``R`` (3n × 2) of the plan (:meth:`PlanBuilding.influence_matrix`)."""
+        """``R`` (3n × 2) of the plan
+        (:meth:`~pounding.structure.plan.PlanBuilding.influence_matrix`)."""
         return self.plan.influence_matrix()  # type: ignore[union-attr]
 
     def point_displacement(self, u: ArrayLike, floor: int, x: float, y: float,
                            direction: str | float = "x") -> NDArray[np.float64]:
         """Displacement [m] of a point ``(x, y)`` (plan coordinates) of ``floor`` (0-based)
         from this building's DOF histories ``u[..., 3n]``
-        (:meth:`PlanBuilding.point_displacement`)."""
+        (:meth:`~pounding.structure.plan.PlanBuilding.point_displacement`)."""
         return self.plan.point_displacement(u, floor, x, y, direction)  # type: ignore[union-attr]
 
 
-def _plan_of(building: Any) -> PlanBuilding | None:
+def _plan_of(building: Any) -> FloorPlan | None:
     return building.plan if isinstance(building, PlanMatrixBuilding) else None
 
 
@@ -89,9 +128,9 @@ def plan_contact_points(a: Any, b: Any, tol: float = 1e-6
     -------
     list of (elevation, i, weights_i, j, weights_j, y)
         ``i``, ``j``: the floor (``u_x``) DOFs of ``a`` and ``b``; ``weights``: the point's
-        ``(DOF, weight)`` pairs of its displacement along x (:meth:`PlanBuilding.point_weights`;
-        ``[(i, 1.0)]`` for a planar floor); ``y``: site y of the point [m]. Sorted by
-        elevation, then y.
+        ``(DOF, weight)`` pairs of its displacement along x
+        (:meth:`~pounding.structure.plan.PlanBuilding.point_weights`; ``[(i, 1.0)]`` for a
+        planar floor); ``y``: site y of the point [m]. Sorted by elevation, then y.
     """
     pa, pb = _plan_of(a), _plan_of(b)
     if pa is None and pb is None:
@@ -122,7 +161,7 @@ def point_history(result: Any, building: int, floor: int, x: float, y: float,
     result : pounding.result.Result
         A run of a model with buildings in plan.
     building : int
-        0-based index of the building in the row (a :class:`PlanBuilding`).
+        0-based index of the building in the row (a :class:`~pounding.structure.plan.PlanBuilding`).
     floor : int
         0-based floor (0 = floor 1).
     x, y : float
@@ -134,7 +173,7 @@ def point_history(result: Any, building: int, floor: int, x: float, y: float,
     -------
     ndarray (nt,)
         ``c (u_x − (y − y_c) θ) + s (u_y + (x − x_c) θ)`` at every output time
-        (:meth:`PlanBuilding.point_weights`).
+        (:meth:`~pounding.structure.plan.PlanBuilding.point_weights`).
     """
     model = result.model
     if not 0 <= building < len(model.buildings):

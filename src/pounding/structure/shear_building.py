@@ -32,46 +32,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.hysteresis.base import StoreyLaw
+from pounding.hysteresis.isolators import Isolator
 from pounding.structure.damping import DampingModel, ModalDamping, RayleighDamping
+from pounding.structure.floor_arrays import MAX_FLOORS, SMALLEST, floor_vector, readonly
+from pounding.structure.isolation import SuperstructureDamping
 from pounding.structure.modal import ModalResult, modes
 from pounding.validation import positive
 
 __all__ = ["ShearBuilding", "shear_stiffness_matrix"]
-
-
-MAX_FLOORS: int = 10_000
-"""Most floors a building may have: far beyond any real building (the tallest have about
-160), and a guard against a typo allocating terabytes (``n_storeys = 1e18``)."""
-
-SMALLEST: float = float(np.finfo(np.float64).tiny)
-"""Smallest normal positive float (2.2e-308): masses and stiffnesses below it are subnormal,
-their reciprocals infinite."""
-
-
-def _floor_vector(name: str, value: ArrayLike) -> NDArray[np.float64]:
-    """A read-only float64 copy of ``value``, 1-D, non-empty, at most :data:`MAX_FLOORS`
-    long, every entry finite and at least :data:`SMALLEST`."""
-    try:
-        arr = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a sequence of numbers, one per floor "
-                         f"(got {value!r})") from None
-    arr = np.atleast_1d(arr)
-    if arr.ndim != 1:
-        raise ValueError(f"{name} must be one-dimensional, one value per floor "
-                         f"(got shape {arr.shape})")
-    if arr.size == 0:
-        raise ValueError(f"{name} must hold at least one value (got {value!r})")
-    if arr.size > MAX_FLOORS:
-        raise ValueError(f"{name} must hold at most {MAX_FLOORS} values, one per floor "
-                         f"(got {arr.size})")
-    for i, x in enumerate(arr):
-        if positive(f"{name}[{i}]", x) < SMALLEST:
-            raise ValueError(f"{name}[{i}] must be at least {SMALLEST:.3g}: smaller "
-                             f"positive numbers are subnormal (got {x:g})")
-    arr = np.ascontiguousarray(arr)
-    arr.flags.writeable = False
-    return arr
 
 
 def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
@@ -85,7 +53,7 @@ def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
     stiffnesses : array_like, shape (n,)
         Storey lateral stiffnesses ``k_1 … k_n`` [N/m], ground storey first.
     """
-    return _chain_matrix(_floor_vector("stiffnesses", stiffnesses))
+    return _chain_matrix(floor_vector("stiffnesses", stiffnesses))
 
 
 def _chain_matrix(k: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -121,12 +89,6 @@ def _storey_indices(value: Any, n: int, has_law: bool) -> tuple[int, ...]:
     if len(set(idx)) != len(idx):
         raise ValueError(f"yielding_storeys: a storey given twice (got {value!r})")
     return tuple(sorted(idx))
-
-
-def _readonly(a: NDArray[np.float64]) -> NDArray[np.float64]:
-    a = np.ascontiguousarray(a, dtype=np.float64)
-    a.flags.writeable = False
-    return a
 
 
 @dataclass(frozen=True, eq=False)
@@ -189,9 +151,9 @@ class ShearBuilding:
     isolator: Any = None
 
     def __post_init__(self) -> None:
-        m = _floor_vector("masses", self.masses)
-        k = _floor_vector("stiffnesses", self.stiffnesses)
-        h = _floor_vector("heights", self.heights)
+        m = floor_vector("masses", self.masses)
+        k = floor_vector("stiffnesses", self.stiffnesses)
+        h = floor_vector("heights", self.heights)
         for label, arr in (("stiffnesses", k), ("heights", h)):
             if arr.size != m.size:
                 raise ValueError(f"{label} must have one value per floor, as many as masses "
@@ -215,10 +177,10 @@ class ShearBuilding:
         object.__setattr__(self, "stiffnesses", k)
         object.__setattr__(self, "heights", h)
         self.damping.check(m.size)
-        M = _readonly(np.diag(m))
-        K = _readonly(shear_stiffness_matrix(k))
+        M = readonly(np.diag(m))
+        K = readonly(shear_stiffness_matrix(k))
         # Build C now so that a damping model unfit for this building fails here, early.
-        C = _readonly(self.damping.matrix(M, K))
+        C = readonly(self.damping.matrix(M, K))
         object.__setattr__(self, "_M", M)
         object.__setattr__(self, "_K", K)
         object.__setattr__(self, "_C", C)
@@ -322,15 +284,65 @@ class ShearBuilding:
         return dataclasses.replace(self, stiffnesses=k)
 
     @classmethod
-    def base_isolated(cls, superstructure: ShearBuilding, base_mass: float, isolator: Any,
-                      base_height: float = 1.0, isolator_damping: float = 0.0,
-                      name: str | None = None) -> ShearBuilding:
-        """A base-isolated building: an isolation storey under ``superstructure``; see
-        :func:`pounding.structure.isolation.base_isolated`."""
-        from pounding.structure.isolation import base_isolated
+    def base_isolated(cls, superstructure: ShearBuilding, base_mass: float,
+                      isolator: Isolator, base_height: float = 1.0,
+                      isolator_damping: float = 0.0, name: str | None = None) -> ShearBuilding:
+        """A base-isolated building: ``superstructure`` on a base slab on ``isolator``
+        (:mod:`pounding.structure.isolation`).
 
-        return base_isolated(superstructure, base_mass, isolator, base_height=base_height,
-                             isolator_damping=isolator_damping, name=name)
+        Parameters
+        ----------
+        superstructure : ShearBuilding
+            The fixed-base superstructure (linear storeys; its damping model becomes the
+            superstructure's damping, relative to the base:
+            :class:`~pounding.structure.isolation.SuperstructureDamping`).
+        base_mass : float
+            Mass of the base slab ``m_b`` [kg] (floor 1 of the isolated building).
+        isolator : Isolator
+            :class:`pounding.hysteresis.isolators.BilinearIsolator` or
+            :class:`pounding.hysteresis.isolators.FrictionPendulum` (one equivalent bearing
+            for the whole isolation system; a friction pendulum without a weight carries the
+            whole building, ``W = g (m_b + Σ m_s)``).
+        base_height : float
+            Height of the isolation storey [m]: the base slab's elevation.
+        isolator_damping : float
+            Viscous coefficient across the isolator [N·s/m] (default 0).
+        name : str, optional
+            Default: the superstructure's name.
+
+        Returns
+        -------
+        ShearBuilding
+            ``n + 1`` floors, storey 1 the isolator (stiffness = the isolator's initial
+            stiffness, ``yielding_storeys = (0,)``).
+
+        Examples
+        --------
+        >>> from pounding.hysteresis.isolators import FrictionPendulum
+        >>> sup = ShearBuilding.uniform(3, 1.0e5, 1.0e8)
+        >>> b = ShearBuilding.base_isolated(sup, 1.5e5, FrictionPendulum(radius=2.0, mu=0.05))
+        >>> b.n, b.yielding, [round(float(z), 1) for z in b.floor_levels]
+        (4, (0,), [1.0, 4.0, 7.0, 10.0])
+        """
+        if not isinstance(superstructure, ShearBuilding):
+            raise ValueError(f"superstructure: expected a ShearBuilding (got "
+                             f"{type(superstructure).__name__})")
+        if superstructure.storey_law is not None:
+            raise ValueError("superstructure: its storeys must be linear (got storey_law="
+                             f"{superstructure.storey_law.describe()})")
+        if not isinstance(isolator, Isolator):
+            raise ValueError(f"isolator: expected a BilinearIsolator or FrictionPendulum (got "
+                             f"{isolator!r})")
+        mb = positive("base_mass", base_mass)
+        hb = positive("base_height", base_height)
+        iso = isolator.carrying(mb + superstructure.total_mass)
+        return cls(
+            masses=np.concatenate([[mb], superstructure.masses]),
+            stiffnesses=np.concatenate([[iso.stiffness], superstructure.stiffnesses]),
+            heights=np.concatenate([[hb], superstructure.heights]),
+            damping=SuperstructureDamping(superstructure.damping, isolator_damping),
+            name=superstructure.name if name is None else name,
+            storey_law=iso.law(), yielding_storeys=(0,), isolator=iso)
 
     def with_storey_law(self, law: StoreyLaw | None,
                         storeys: tuple[int, ...] | None = None) -> ShearBuilding:

@@ -34,18 +34,17 @@ building's column there.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
 from pounding.contact.geometry import Contact, ContactPoint
+from pounding.contact.spec import ContactSpec
+from pounding.structure.assembly import Building
 from pounding.structure.shear_building import ShearBuilding
 from pounding.validation import choice, non_negative, positive
-
-if TYPE_CHECKING:
-    from pounding.model import PoundingModel
 
 __all__ = ["MoatWall", "WallPoint", "check_walls", "flexible_wall", "wall_contacts", "wall_points"]
 
@@ -132,40 +131,45 @@ def wall_points(wall: MoatWall, building: ShearBuilding, index: int, floor_to_co
     return sorted(out, key=lambda r: r[0])
 
 
-def wall_contacts(model: PoundingModel, start: int) -> tuple[Contact, ...]:
-    """The contacts of every wall of ``model`` (in the order of ``model.walls``), numbered
-    from ``start``; the building on the left of a contact is the left point."""
+def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
+                  contact: ContactSpec, floor_to_column: bool, tol: float,
+                  start: int) -> tuple[Contact, ...]:
+    """The contacts of every wall (in the order of ``walls``) with the end building of the
+    row ``buildings`` beside it, numbered from ``start``; the building on the left of a
+    contact is the left point. ``contact`` builds each contact's law; ``floor_to_column``
+    and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`)."""
     out: list[Contact] = []
-    last = len(model.buildings) - 1
-    for w, wall in enumerate(model.walls):
+    last = len(buildings) - 1
+    for wall in walls:
         b = 0 if wall.side == "left" else last
-        building = model.buildings[b]
+        building = buildings[b]
         wp = WallPoint(name=wall.name)
-        for z, point in wall_points(wall, building, b, model.floor_to_column,
-                                    model.level_tolerance):
-            law = model.contact.build(point.effective_mass(building.masses), math.inf)
+        for z, point in wall_points(wall, building, b, floor_to_column, tol):
+            law = contact.build(point.effective_mass(building.masses), math.inf)
             left, right = (wp, point) if wall.side == "left" else (point, wp)
             pair = -1 if wall.side == "left" else last
             out.append(Contact(start + len(out), pair, left, right, z, wall.gap, law))
     return tuple(out)
 
 
-def check_walls(model: PoundingModel) -> None:
-    """At most one wall a side, and every wall has a floor of its neighbour at or below its
-    top; one line naming the wall otherwise."""
+def check_walls(walls: Sequence[MoatWall], buildings: Sequence[Building],
+                floor_to_column: bool, tol: float) -> None:
+    """At most one wall a side, and every wall has a floor of its neighbour in the row
+    ``buildings`` at or below its top (within ``tol`` [m]); one line naming the wall
+    otherwise."""
     seen: set[str] = set()
-    for i, wall in enumerate(model.walls):
+    for i, wall in enumerate(walls):
         if not isinstance(wall, MoatWall):
             raise ValueError(f"walls[{i}]: expected a MoatWall (got {type(wall).__name__})")
         if wall.side in seen:
             raise ValueError(f"walls[{i}]: a second wall on the {wall.side} of the row")
         seen.add(wall.side)
-        b = 0 if wall.side == "left" else len(model.buildings) - 1
-        building = model.buildings[b]
+        b = 0 if wall.side == "left" else len(buildings) - 1
+        building = buildings[b]
         if not isinstance(building, ShearBuilding):
             raise ValueError(f"walls[{i}]: a moat wall stands beside a shear building; B{b + 1} "
                              f"is a {type(building).__name__} (not supported yet)")
-        if not wall_points(wall, building, b, model.floor_to_column, model.level_tolerance):
+        if not wall_points(wall, building, b, floor_to_column, tol):
             raise ValueError(f"walls[{i}]: no floor of B{b + 1} at or below the wall's top "
                              f"({wall.height:g} m; lowest floor at "
                              f"{float(building.floor_levels[0]):g} m), so it can never strike it")

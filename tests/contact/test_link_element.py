@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad, trapezoid
 
-from pounding import link_element as le
+from pounding.contact import link_element as le
 
 K = 1.0e8
 M = 1.0e6
