@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from pounding.plot import new_figure
-from pounding.studies.fragility.study import DEMANDS
+from pounding.result.demands import DEMANDS
 
 __all__ = ["plot_fragility", "plot_gap_probability", "plot_gap_surface", "plot_ida"]
 

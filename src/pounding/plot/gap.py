@@ -2,19 +2,61 @@
 
 from __future__ import annotations
 
+from typing import Protocol
+
 import numpy as np
 from matplotlib.figure import Figure
+from numpy.typing import NDArray
 
+from pounding.contact.geometry import Contact
+from pounding.model import PoundingModel
 from pounding.plot import new_figure
 from pounding.plot.layout import MM
 from pounding.spectra import DesignSpectrum
-from pounding.studies.gap import GapStudy
+
+
+class GapStudyFigureData(Protocol):
+    """What the figure reads of a gap study (:class:`pounding.studies.gap.GapStudy`, which
+    the figure does not import: the studies sit above the figures, docs/architecture.md)."""
+
+    @property
+    def model(self) -> PoundingModel: ...
+
+    @property
+    def records(self) -> tuple[str, ...]: ...
+
+    @property
+    def elevation(self) -> NDArray[np.float64]: ...
+
+    @property
+    def critical(self) -> NDArray[np.float64]: ...
+
+    @property
+    def period(self) -> NDArray[np.float64]: ...
+
+    @property
+    def rho(self) -> NDArray[np.float64]: ...
+
+    @property
+    def gap_names(self) -> tuple[str, ...]: ...
+
+    @property
+    def contacts(self) -> tuple[Contact, ...]: ...
+
+    @property
+    def max_critical(self) -> NDArray[np.float64]: ...
+
+    def rules_from_peaks(self, stat: str = "mean") -> dict[str, NDArray[np.float64]]: ...
+
+    def rules_from_spectrum(self, spectrum: DesignSpectrum
+                            ) -> dict[str, NDArray[np.float64]]: ...
+
 
 RULE_STYLE = {"ABS": "tab:red", "SRSS": "tab:green", "DDC": "tab:purple"}
 """Colour of each code rule."""
 
 
-def plot_gap_study(study: GapStudy, spectrum: DesignSpectrum | None = None) -> Figure:
+def plot_gap_study(study: GapStudyFigureData, spectrum: DesignSpectrum | None = None) -> Figure:
     """Gap [mm] against elevation [m], one panel per pair of neighbours.
 
     * thin grey lines: the critical gap by simulation for each record;
@@ -81,7 +123,7 @@ def plot_gap_study(study: GapStudy, spectrum: DesignSpectrum | None = None) -> F
     return fig
 
 
-def _panel_title(study: GapStudy, name: str) -> str:
+def _panel_title(study: GapStudyFigureData, name: str) -> str:
     """``B1 name – B2 name`` with the periods and ρ; ``B1 name – moat wall W`` (the moat
     width the building needs) for a wall."""
     from pounding.structure.wall import WallPoint

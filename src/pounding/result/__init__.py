@@ -42,6 +42,7 @@ _EXPORTS: dict[str, str] = {
         "BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys")},
     **{name: "pounding.result.variables" for name in (
         "HistoryVariables", "Variable", "history_variables")},
+    **{name: "pounding.result.demands" for name in ("DEMANDS", "Demand")},
     "summarize": "pounding.result.summary",
     **{name: "pounding.result.files" for name in ("IMPACTS_CSV_COLUMNS", "save_result")},
     "Result": "pounding.result.result",
@@ -49,6 +50,8 @@ _EXPORTS: dict[str, str] = {
 """Public name → the module that defines it."""
 
 __all__ = [
+    "DEMANDS",
+    "Demand",
     "ENERGY_NAMES",
     "IMPACTS_CSV_COLUMNS",
     "IMPACT_COLUMNS",

@@ -50,7 +50,7 @@ _EXPORTS: dict[str, str] = {
     "ida_fractiles": "pounding.studies.fragility.ida",
     "FragilityOutcome": "pounding.studies.fragility.runner",
     "run_study": "pounding.studies.fragility.runner",
-    "DEMANDS": "pounding.studies.fragility.study",
+    "DEMANDS": "pounding.result.demands",
     "StudyConfig": "pounding.studies.fragility.study",
     "load_study": "pounding.studies.fragility.study",
     "parse_study": "pounding.studies.fragility.study",
@@ -91,7 +91,8 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.studies.fragility.gaps import NeededGaps, needed_gaps
     from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
     from pounding.studies.fragility.runner import FragilityOutcome, run_study
-    from pounding.studies.fragility.study import DEMANDS, StudyConfig, load_study, parse_study
+    from pounding.result.demands import DEMANDS
+    from pounding.studies.fragility.study import StudyConfig, load_study, parse_study
 
 __all__ = [
     "DEMANDS",

@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from pounding.result.demands import DEMANDS
 from pounding.studies.fragility.bootstrap import (
     FragilityEstimate,
     expanded_confidence,
@@ -20,6 +21,7 @@ from pounding.studies.fragility.bootstrap import (
     percentile_interval,
     resample,
 )
+from pounding.studies.fragility.cases import StudyCases
 from pounding.studies.fragility.gap_probability import (
     empirical_gap,
     gap_lognormal,
@@ -29,8 +31,7 @@ from pounding.studies.fragility.gap_probability import (
 )
 from pounding.studies.fragility.gaps import NeededGaps
 from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
-from pounding.studies.fragility.cases import StudyCases
-from pounding.studies.fragility.study import DEMANDS, LimitStateSpec
+from pounding.studies.fragility.study import LimitStateSpec
 
 __all__ = ["FragilityAnalysis", "GapAnalysis", "LimitStateResult", "analyse",
            "demand_table"]
@@ -127,7 +128,7 @@ class FragilityAnalysis:
     records: list[str]
     gaps: list[float | None]
     demands: dict[str, FloatArray]
-    """Demand [SI] per key of :data:`~pounding.studies.fragility.study.DEMANDS` shown:
+    """Demand [SI] per key of :data:`~pounding.result.demands.DEMANDS` shown:
     shape (n_gaps, n_records, n_levels), NaN for a failed run."""
     fractiles: dict[str, FloatArray]
     """16/50/84 % fractiles of each demand [SI]: (n_gaps, 3, n_levels)."""

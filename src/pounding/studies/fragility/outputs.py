@@ -31,8 +31,10 @@ from typing import Any
 
 import numpy as np
 
+from pounding.result.demands import DEMANDS
 from pounding.studies.fragility.analysis import FragilityAnalysis
 from pounding.studies.fragility.bootstrap import FragilityEstimate
+from pounding.studies.fragility.cases import StudyCases
 from pounding.studies.fragility.fitting import (
     FIT_ALL,
     FIT_FAILED,
@@ -44,8 +46,6 @@ from pounding.studies.fragility.gap_probability import (
     pounding_probability,
     pounding_probability_fit,
 )
-from pounding.studies.fragility.cases import StudyCases
-from pounding.studies.fragility.study import DEMANDS
 
 __all__ = ["FIGURES", "STUDY_FILE", "TABLES", "write_outputs"]
 

@@ -7,7 +7,6 @@ each). See ``docs/fragility.md``.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -15,40 +14,11 @@ from pydantic import Field, ValidationError, model_validator
 
 from pounding.config.base import Section, field_error, fmt
 from pounding.config.quantities import Duration, Gap, Intensity, Period, Step
+from pounding.result.demands import DEMANDS
 
-__all__ = ["DEMANDS", "Demand", "IntensitySpec", "LimitStateSpec", "StudyConfig",
+__all__ = ["IntensitySpec", "LimitStateSpec", "StudyConfig",
            "load_study", "parse_study"]
 
-
-@dataclass(frozen=True)
-class Demand:
-    """An engineering demand recorded per run: the column of the sweep's table it comes
-    from, how it is shown (label, unit, factor from SI to that unit) and whether it is
-    binary (exceeded or not: its IDA capacity is the first level exceeded)."""
-
-    key: str
-    label: str
-    unit: str
-    factor: float
-    binary: bool = False
-    largest: float = 0.0
-    """The largest limit that means something, in the demand's unit (a limit state beyond
-    it is never reached)."""
-
-
-DEMANDS: dict[str, Demand] = {
-    "pounding": Demand("pounding", "pounding (any impact)", "-", 1.0, binary=True),
-    "impacts": Demand("impacts", "number of impacts", "-", 1.0, largest=1e6),
-    "impact_force": Demand("impact_force", "peak impact force", "MN", 1e-6, largest=1e7),
-    "drift": Demand("drift", "peak storey drift ratio", "%", 100.0, largest=100.0),
-    "acceleration": Demand("acceleration", "peak floor acceleration", "g", 1.0 / 9.80665,
-                           largest=100.0),
-    "ductility": Demand("ductility", "peak storey ductility", "-", 1.0, largest=1000.0),
-}
-"""The demands a limit state can be put on. ``limit`` is given in the unit shown: impact
-force in MN (at most 1e7 MN, the weight of 1e12 kg), drift ratio in % (at most 100: a
-drift of the whole storey height), floor acceleration in g (at most 100), a number of
-impacts (at most a million) or a ductility (at most 1000)."""
 
 MAX_WORKERS = 1024
 """Most workers of a local cluster (more processes than any one machine runs well)."""
