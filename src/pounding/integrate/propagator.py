@@ -145,9 +145,9 @@ def independent_blocks(*mats: NDArray[np.float64]) -> NDArray[np.int64]:
     n = mats[0].shape[0]
     reach = np.arange(n)  # reach[i]: the largest floor coupled to floor i
     for a in mats:
-        i, j = np.nonzero(a)
-        np.maximum.at(reach, i, j)
-        np.maximum.at(reach, j, i)
+        rows, cols = np.nonzero(a)
+        np.maximum.at(reach, rows, cols)
+        np.maximum.at(reach, cols, rows)
     bounds = [0]
     far = -1
     for i in range(n):
@@ -245,8 +245,8 @@ def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     f, t = _augmented(M, C, K, r, h)
     w_d = np.zeros_like(f)
     w_d[n : 2 * n, n : 2 * n] = 0.5 * (C + C.T)
-    return tuple(t.T @ _van_loan_integral(f, w, h) @ t  # type: ignore
-                 for w in (_input_weight(M, r), w_d))
+    q_in, q_visc = (t.T @ _van_loan_integral(f, w, h) @ t for w in (_input_weight(M, r), w_d))
+    return q_in, q_visc
 
 
 def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
