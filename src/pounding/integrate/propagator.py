@@ -18,7 +18,8 @@ contact; it is exact to round-off whatever the step.
 from __future__ import annotations
 
 import hashlib
-from typing import NamedTuple
+from collections.abc import Callable
+from typing import Any, NamedTuple, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -57,7 +58,15 @@ def propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.flo
     return _remembered(_CACHE, compute_propagator, M, C, K, r, h)
 
 
-def _remembered(cache: dict, compute, M, C, K, r, h):  # noqa: ANN001 (private helper)
+Arrays = TypeVar("Arrays", bound=tuple[NDArray[Any], ...])
+"""A named tuple of arrays a structure and a step make (:func:`_remembered`)."""
+
+
+def _remembered(cache: dict[bytes, Arrays],
+                compute: Callable[[NDArray[np.float64], NDArray[np.float64],
+                                   NDArray[np.float64], NDArray[np.float64], float], Arrays],
+                M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                r: NDArray[np.float64], h: float) -> Arrays:
     """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes and ``h``;
     the result's arrays are made read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
     key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()

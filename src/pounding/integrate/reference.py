@@ -181,7 +181,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
             p[l_hi[q]] -= f[q]
             p[l_lo[q]] += f[q]
 
-    def rhs_factory(t0: float, a0: NDArray[np.float64], slope: NDArray[np.float64]):
+    def rhs_factory(t0: float, a0: NDArray[np.float64], slope: NDArray[np.float64]
+                    ) -> Callable[[float, NDArray[np.float64]], NDArray[np.float64]]:
         def rhs(t: float, y: NDArray[np.float64]) -> NDArray[np.float64]:
             u, v = y[:n], y[n:2 * n]
             a_g = a0 + slope * (t - t0)  # the G components
@@ -465,7 +466,10 @@ def _around(ts: NDArray[np.float64], k: int) -> tuple[float, float]:
     return float(ts[max(k - 1, 0)]), float(ts[min(k + 1, ts.size - 1)])
 
 
-def _update_peaks(peaks: NDArray[np.float64], dense, t0: float, t1: float, values) -> None:  # noqa: ANN001
+def _update_peaks(peaks: NDArray[np.float64],
+                  dense: Callable[[NDArray[np.float64]], NDArray[np.float64]], t0: float,
+                  t1: float, values: Callable[[NDArray[np.float64]], NDArray[np.float64]]
+                  ) -> None:
     """Largest |u|, |drift|, |absolute acceleration| of every floor over ``[t0, t1]`` from
     the dense output ``dense``: 64 samples, then a bounded scalar search (to 10⁻¹² s) around
     the largest, as for the peak contact forces."""
