@@ -73,7 +73,7 @@ class Memo:
             entry = self._entries.get(key)
             if entry is not None:
                 self._entries.move_to_end(key)
-                return entry[0]  # type: ignore[no-any-return]
+                return entry[0]
         value = make()
         nbytes = size(value) if size is not None else 0
         if nbytes > self.max_bytes:

@@ -145,7 +145,7 @@ def audit_cmd(
     for (formula, law), g in df.groupby(["formula", "law"], sort=False):
         mark = "" if bool(g["intended"].iloc[0]) else " *"
         cells = [f"{v:.4f}" if s else "stuck" for v, s in zip(g["achieved_e"], g["separated"])]
-        rows.append((literal(formula), literal(law + mark), *cells,
+        rows.append((literal(formula), literal(f"{law}{mark}"), *cells,
                      f"{g['error'].abs().max():.4f}"))
     print_table(console, f"Restitution audit: achieved e for target e (m1 = {m1:g} kg, m2 = "
                          f"{m2:g} kg, v0 = {v0:g} m/s)",
@@ -321,7 +321,7 @@ def fit_cmd(
     from dataclasses import fields
 
     stiffness = fields(fit.law)[0].name  # k, k_h: the first field of every fitted law
-    rows = []
+    rows: list[tuple[str | Text, str]] = []
     for key, value in fit.parameters.items():
         field = stiffness if key == "stiffness" else key
         label = (f"stiffness {field}" if key == "stiffness"

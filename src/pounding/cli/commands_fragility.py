@@ -73,15 +73,15 @@ def _print(res: Any) -> None:
     ga = a.gap
     from pounding.studies.fragility.outputs import _gap_rows
 
-    rows = []
+    gap_rows = []
     for name, _, gm, lo, hi, pe, pf in _gap_rows(cases, a):
         ci = f" ({1000 * lo:.0f} – {1000 * hi:.0f})" if lo == lo else ""
-        rows.append((literal(name), f"{1000 * gm:.1f}{ci}", f"{pe:.2f}", f"{pf:.3f}"))
+        gap_rows.append((literal(name), f"{1000 * gm:.1f}{ci}", f"{pe:.2f}", f"{pf:.3f}"))
     print_table(console, f"gap at {cases.im_label.replace(' [g]', '')} = {ga.needed.at:g} g "
                          f"(needed gaps: lognormal θ = {1000 * ga.median:.1f} mm, β = "
                          f"{ga.beta:.3f})",
                 [Col("gap from", "left", wrap=True), Col("gap [mm]"), Col("P(pounding), records"),
-                 Col("P(pounding), lognormal")], rows)
+                 Col("P(pounding), lognormal")], gap_rows)
     if a.n_failed:
         console.print(Text.assemble((f"{a.n_failed} run(s) failed", "red"),
                                     f": see results.parquet (first: {a.failures[0]})"))

@@ -187,17 +187,17 @@ def gap_cmd(
         raise ValueError(f"unexpected argument(s) {', '.join(map(str, more_records))}: "
                          "give record files after --records")
     files = [*(records or []), *(more_records or [])]
-    model_path = model
-    cfg = load_config(model_path)
-    model, _, solver = cfg.build()
-    if len(model.buildings) < 2 and not model.walls:
-        raise ValueError(f"{model_path}: a gap study needs two or more buildings, or a "
+    cfg = load_config(model)
+    pounding_model, _, solver = cfg.build()
+    if len(pounding_model.buildings) < 2 and not pounding_model.walls:
+        raise ValueError(f"{model}: a gap study needs two or more buildings, or a "
                          f"building beside a moat wall ([[wall]]) (got "
-                         f"{len(model.buildings)} building and no wall)")
-    if model.links:
-        raise ValueError(f"{model_path}: pounding gap simulates each building alone, and "
-                         f"the model's {len(model.links)} link(s) ([[device]]) tie them "
-                         "together; remove the links, or use pounding run at several gaps")
+                         f"{len(pounding_model.buildings)} building and no wall)")
+    if pounding_model.links:
+        raise ValueError(f"{model}: pounding gap simulates each building alone, and "
+                         f"the model's {len(pounding_model.links)} link(s) ([[device]]) tie "
+                         "them together; remove the links, or use pounding run at several "
+                         "gaps")
     spec = DesignSpectrum.from_file(design) if design is not None else None
     if spec is not None and cfg.in_plan:
         raise ValueError("--design: the code rules from a design spectrum take each "
@@ -205,30 +205,31 @@ def gap_cmd(
                          "sways and twists in modes of its own; leave out --design (the "
                          "rules from the simulated peaks are in the table)")
     if spec is not None:  # fail before simulating if a fundamental period is off the table
-        for bl in model.buildings:
+        for bl in pounding_model.buildings:
             spec.sd(bl.fundamental_period)
     motions, how = _load_records(cfg, files, list(second or []), dt,
                                  None if units is None else str(units), unscaled,
                                  {"column": column, "time_column": time_column,
                                   "channel": channel})
     sim_duration = duration if duration is not None else solver.get("duration")
-    with progress_bar(f"{len(model.buildings)} buildings alone under {len(motions)} "
+    with progress_bar(f"{len(pounding_model.buildings)} buildings alone under {len(motions)} "
                       "record(s)", "runs") as progress:
-        study = critical_gaps(model, motions, dt=solver.get("dt"), duration=sim_duration,
-                              scheduler=scheduler, n_workers=workers, progress=progress)
+        study = critical_gaps(pounding_model, motions, dt=solver.get("dt"),
+                              duration=sim_duration, scheduler=scheduler, n_workers=workers,
+                              progress=progress)
     if spec is not None:
         spec_peaks = study.spectral_peaks(spec)
         spec_rules = study.rules_from_spectrum(spec)
 
     head = [(building_label(b, bl.name),
              f"{_floors(bl)}, T1 = {study.period[b]:.4g} s, ζ1 = {study.zeta[b]:.3g}")
-            for b, bl in enumerate(model.buildings)]
+            for b, bl in enumerate(pounding_model.buildings)]
     head += [(f"ρ B{p + 1}-B{p + 2}", f"{rho:.4f} (CQC, fundamental modes)")
              for p, rho in enumerate(study.rho)]
     head += [(f"R{i + 1}", f"{m.name}: PGA {m.pga_g:.3f} g, simulated "
                            f"{study.durations[i]:g} s") for i, m in enumerate(motions)]
     head.append(("output step", f"{study.dt:g} s (peaks refined between samples)"))
-    print_table(console, f"{model.name}: buildings and records",
+    print_table(console, f"{pounding_model.name}: buildings and records",
                 [Col("quantity", "left", wrap=True), Col("value", "left", wrap=True)], head,
                 show_header=False)
     console.print(Text(how))
@@ -247,14 +248,14 @@ def gap_cmd(
              _mm(mean[k]), _mm(top[k]),
              *(_ratio_cell(float(v[k]), float(top[k])) for v in rules.values())]
             for k in range(study.n_levels)]
-    print_table(console, f"{model.name}: critical separation gap [mm] by simulation and code "
-                "rules", cols, rows, keys=2,
+    print_table(console, f"{pounding_model.name}: critical separation gap [mm] by simulation "
+                "and code rules", cols, rows, keys=2,
                 caption="R1, R2, ...: critical gap = max over time of u_left − u_right from "
                         "each building simulated alone (no contact), 0 if never positive"
                         + ("; in plan, u of the contact point along x (the floor's sway and "
                            "twist)" if plan_points else "")
                         + ("; beside a moat wall, the building's largest displacement toward "
-                           "the wall (the moat width it needs)" if model.walls else "")
+                           "the wall (the moat width it needs)" if pounding_model.walls else "")
                         + ". ABS = u1 + u2, SRSS = sqrt(u1² + u2²), DDC = sqrt(u1² + u2² − "
                         "2ρu1u2), with u1, u2 the mean over records of each building's "
                         "simulated peak |u| at that level; (×r) = rule / max simulated.")
@@ -270,15 +271,16 @@ def gap_cmd(
                     "(fundamental mode: u = |Γ1 φ1| Sd(T1))", cols, rows, keys=2,
                     caption="Sd(T1) [mm]: " + ", ".join(
                         f"B{b + 1} {_mm(float(spec.sd(study.period[b])))}"
-                        for b in range(len(model.buildings))) + "; (×r) = rule / max simulated")
+                        for b in range(len(pounding_model.buildings)))
+                    + "; (×r) = rule / max simulated")
 
     gov = study.governing_gaps()
-    between = {f"B{p + 1}-B{p + 2}" for p in range(len(model.buildings) - 1)}
+    between = {f"B{p + 1}-B{p + 2}" for p in range(len(pounding_model.buildings) - 1)}
     if between:
         console.print(Text("governing critical gap per pair (max over levels and records): "
                            + ", ".join(f"{name} {_mm(g)} mm" for name, g in gov.items()
                                        if name in between)))
-    if model.walls:
+    if pounding_model.walls:
         console.print(Text("moat width needed (the building's largest displacement toward "
                             "each wall, max over records): " + ", ".join(
                                 f"{name} {_mm(g)} mm" for name, g in gov.items()

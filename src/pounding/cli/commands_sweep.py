@@ -50,8 +50,9 @@ def sweep_cmd(
     except (SweepInterrupted, SweepStopped) as exc:
         stopped(exc, again(sweep_file, "sweep", out=out, workers=workers, scheduler=scheduler,
                            batch_size=batch_size, histories=histories), "cases")
-    rows = [("cases", f"{res.n_cases} ({len(sweep.params)} parameter(s): "
-                      f"{', '.join(sweep.params)})")]
+    rows: list[tuple[str, str | Text]] = [
+        ("cases", f"{res.n_cases} ({len(sweep.params)} parameter(s): "
+                  f"{', '.join(sweep.params)})")]
     if sweep.duplicates:
         rows.append(("duplicates skipped", str(sweep.duplicates)))
     rows += [("run now / done before", f"{res.n_run} / {res.n_cases - res.n_run}"),

@@ -9,6 +9,7 @@ number (:func:`pounding.cli.tables.print_table`).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -52,7 +53,7 @@ def print_run_summary(out: Any) -> None:
     ef, eu = energy_scale(max(abs(fin["input"]), s["contact_dissipated_J"]))
     units = (ff, fu, ef, eu)
 
-    rows: list[tuple[str, Any]] = [
+    rows: list[tuple[str | Text, Any]] = [
         ("record", Text(f"{r.motion.name}, PGA {r.motion.pga_g:.3f} g")),
         ("simulated / output step [s]", f"{s['duration_s']:g} / {r.dt:g}"),
         ("buildings / contacts", f"{len(model.buildings)} / {len(model.contacts)}")]
@@ -132,9 +133,9 @@ def _print_buildings(r: Any, units: tuple[float, str, float, str]) -> None:
             else:
                 shear = ["–", "(given by K)"]
             storeys = str(ps.elevation.size)
-            d = int(ps.displacement_y[-1] > ps.displacement_x[-1])
-            roof_disp = f"{_mm((ps.displacement_x, ps.displacement_y)[d][-1])} {'xy'[d]}"
-            roof_t = _t((ps.displacement_x_time, ps.displacement_y_time)[d][-1])
+            way = int(ps.displacement_y[-1] > ps.displacement_x[-1])  # 0: x, 1: y
+            roof_disp = f"{_mm((ps.displacement_x, ps.displacement_y)[way][-1])} {'xy'[way]}"
+            roof_t = _t((ps.displacement_x_time, ps.displacement_y_time)[way][-1])
         else:
             ratio = r.peak_drift_ratio[off + floors]
             j = int(np.nanargmax(ratio))
@@ -208,7 +209,7 @@ def _print_storeys(r: Any, units: tuple[float, str, float, str]) -> None:
             continue
         off = int(off)
         floors = _storey_floors(r, b)
-        ks = range(floors.size)
+        ks: Sequence[int] = range(floors.size)
         if floors.size > STOREY_ROWS:
             ks = sorted(np.argsort(-ratio[off + floors])[:10])
         label = building_label(b, bl.name)

@@ -49,7 +49,7 @@ class _DelayedProgress(Progress):
         self._delay = delay
         super().__init__(*columns, **kw)
 
-    def get_renderables(self) -> Iterator[Any]:  # type: ignore[override]
+    def get_renderables(self) -> Iterator[Any]:
         if time.monotonic() - self._t0 >= self._delay:
             yield from super().get_renderables()
 

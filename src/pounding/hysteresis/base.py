@@ -114,6 +114,7 @@ class StoreyLaw(ABC):
         k = np.asarray(stiffness, dtype=float)
         if self.yield_force is not None:
             return per_storey("yield_force", self.yield_force, k.size)
+        assert self.yield_drift is not None  # __post_init__ requires exactly one of the two
         return per_storey("yield_drift", self.yield_drift, k.size) * k
 
     def params(self, stiffness: ArrayLike) -> NDArray[np.float64]:

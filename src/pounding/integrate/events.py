@@ -241,7 +241,7 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
     s_par = el.params
     best_t = 1e300
     best_c = -1
-    best_k = 0
+    best_k: int | np.int64 = 0  # the event kinds (EV_*) are NumPy integers
     for c in range(cgap.shape[0]):
         ds0, r0 = gap_row(c, y0, n, cdof, cw)
         ds1, r1 = gap_row(c, y1, n, cdof, cw)

@@ -61,6 +61,7 @@ from pounding.integrate.layout import (
 from pounding.integrate.rhs import (
     G_NOW,
     INLINE,
+    NRT_FREE,
     deriv_call,
     first_unknown_law,
     gap_row,
@@ -71,7 +72,7 @@ __all__ = ["ENERGY_COLUMNS", "IMP_COLUMNS", "PK_COLUMNS", "WS_F_SIZE", "WS_I_SIZ
            "integrate_chunk"]
 
 
-@njit(cache=True, error_model="numpy", nogil=True, fastmath={"contract"}, _nrt=False)
+@njit(**NRT_FREE)
 def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``; stop
     early at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps in all. The grid

@@ -69,7 +69,9 @@ def invalidate_if_stale(modules: list[ModuleType]) -> bool:
             return False
     for disp in dispatchers:
         with contextlib.suppress(Exception):
-            disp._cache.flush()  # numba's own invalidation: empties the cache index
+            # numba's own invalidation: empties the cache index (a private attribute, which
+            # numba's stubs leave out)
+            disp._cache.flush()  # type: ignore[attr-defined]
     with contextlib.suppress(OSError):
         Path(folder).mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(f".{os.getpid()}.tmp")

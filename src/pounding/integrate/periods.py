@@ -7,10 +7,14 @@ refused in one line naming the input."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from pounding.model import PoundingModel
+
+if TYPE_CHECKING:
+    from pounding.contact.geometry import ContactPoint
 
 CONTACT_PERIOD_FLOOR: float = 1e-6
 """A contact whose natural period is below this fraction of the output step is refused
@@ -48,7 +52,7 @@ def check_contact_periods(model: PoundingModel, step: float) -> None:
                 "masses and the contact stiffness")
 
 
-def _apparent_mass(model: PoundingModel, point) -> float:  # noqa: ANN001 (a contact point)
+def _apparent_mass(model: PoundingModel, point: ContactPoint) -> float:
     """The mass a contact point meets [kg]: of its building's floors, or infinite for a
     point that moves with no building (a moat wall's side, building −1)."""
     if point.building < 0:

@@ -18,7 +18,8 @@ contact; it is exact to round-off whatever the step.
 from __future__ import annotations
 
 import hashlib
-from typing import NamedTuple
+from collections.abc import Callable
+from typing import Any, NamedTuple, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -57,7 +58,15 @@ def propagator(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.flo
     return _remembered(_CACHE, compute_propagator, M, C, K, r, h)
 
 
-def _remembered(cache: dict, compute, M, C, K, r, h):  # noqa: ANN001 (private helper)
+Arrays = TypeVar("Arrays", bound=tuple[NDArray[Any], ...])
+"""A named tuple of arrays a structure and a step make (:func:`_remembered`)."""
+
+
+def _remembered(cache: dict[bytes, Arrays],
+                compute: Callable[[NDArray[np.float64], NDArray[np.float64],
+                                   NDArray[np.float64], NDArray[np.float64], float], Arrays],
+                M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                r: NDArray[np.float64], h: float) -> Arrays:
     """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes and ``h``;
     the result's arrays are made read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
     key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
@@ -145,9 +154,9 @@ def independent_blocks(*mats: NDArray[np.float64]) -> NDArray[np.int64]:
     n = mats[0].shape[0]
     reach = np.arange(n)  # reach[i]: the largest floor coupled to floor i
     for a in mats:
-        i, j = np.nonzero(a)
-        np.maximum.at(reach, i, j)
-        np.maximum.at(reach, j, i)
+        rows, cols = np.nonzero(a)
+        np.maximum.at(reach, rows, cols)
+        np.maximum.at(reach, cols, rows)
     bounds = [0]
     far = -1
     for i in range(n):
@@ -245,8 +254,8 @@ def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     f, t = _augmented(M, C, K, r, h)
     w_d = np.zeros_like(f)
     w_d[n : 2 * n, n : 2 * n] = 0.5 * (C + C.T)
-    return tuple(t.T @ _van_loan_integral(f, w, h) @ t  # type: ignore
-                 for w in (_input_weight(M, r), w_d))
+    q_in, q_visc = (t.T @ _van_loan_integral(f, w, h) @ t for w in (_input_weight(M, r), w_d))
+    return q_in, q_visc
 
 
 def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],

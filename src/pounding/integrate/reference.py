@@ -23,6 +23,8 @@ Bouc–Wen ``h = z``.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
@@ -42,6 +44,7 @@ from pounding.integrate.reference_inputs import (
     output_times,
 )
 from pounding.integrate.reference_laws import (
+    Storey,
     contact_force,
     link_force,
     link_recoverable,
@@ -58,6 +61,22 @@ from pounding.model import PoundingModel
 from pounding.result import ENERGY_NAMES, IMPACT_COLUMNS, Result, SolverStats
 
 REFERENCE_RTOL: float = 1e-10
+
+
+@dataclass(frozen=True)
+class StopEvent:
+    """A terminal event function for ``solve_ivp``, which reads ``terminal`` and
+    ``direction`` off the callable: ``function(t, y)`` crosses zero (in ``direction``: +1
+    rising, −1 falling) where the state changes branch; ``tag`` is (kind, index, sign), the
+    sign ±1 for a storey yielding one way or the other, 0 for the other kinds."""
+
+    function: Callable[[float, NDArray[np.float64]], float]
+    direction: float
+    tag: tuple[str, int, int]
+    terminal: bool = True
+
+    def __call__(self, t: float, y: NDArray[np.float64]) -> float:
+        return self.function(t, y)
 
 
 def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotionComponents, *,
@@ -162,7 +181,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
             p[l_hi[q]] -= f[q]
             p[l_lo[q]] += f[q]
 
-    def rhs_factory(t0: float, a0: NDArray[np.float64], slope: NDArray[np.float64]):
+    def rhs_factory(t0: float, a0: NDArray[np.float64], slope: NDArray[np.float64]
+                    ) -> Callable[[float, NDArray[np.float64]], NDArray[np.float64]]:
         def rhs(t: float, y: NDArray[np.float64]) -> NDArray[np.float64]:
             u, v = y[:n], y[n:2 * n]
             a_g = a0 + slope * (t - t0)  # the G components
@@ -189,48 +209,36 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                                                         fl @ rl], f * rate])
         return rhs
 
-    def make_events() -> list:
+    def make_events() -> list[StopEvent]:
         """Terminal events, each tagged (kind, index)."""
         evs = []
         for c in range(nc):
-            def ev(t, y, c=c):
+            def ev(t: float, y: NDArray[np.float64], c: int = c) -> float:
                 return kin(y, c)[0]
-            ev.direction = 1.0 if v0s[c] == 0.0 else -1.0
-            ev.terminal = True
-            ev.tag = ("gap", c)
-            evs.append(ev)
+            evs.append(StopEvent(ev, 1.0 if v0s[c] == 0.0 else -1.0, ("gap", c, 0)))
             if v0s[c] > 0.0:
-                def evr(t, y, c=c):
+                def evr(t: float, y: NDArray[np.float64], c: int = c) -> float:
                     return kin(y, c)[1]
-                evr.direction = -1.0 if phase[c] > 0 else 1.0
-                evr.terminal = True
-                evr.tag = ("rate", c)
-                evs.append(evr)
-                if release[c] is not None:
-                    def evc(t, y, c=c):
-                        return release[c](*kin(y, c))
-                    evc.direction = 1.0 if released[c] else -1.0
-                    evc.terminal = True
-                    evc.tag = ("release", c)
-                    evs.append(evc)
+                evs.append(StopEvent(evr, -1.0 if phase[c] > 0 else 1.0, ("rate", c, 0)))
+                release_c = release[c]
+                if release_c is not None:
+                    def evc(t: float, y: NDArray[np.float64], c: int = c,
+                            release_c: Callable[[float, float], float] = release_c) -> float:
+                        return release_c(*kin(y, c))
+                    evs.append(StopEvent(evc, 1.0 if released[c] else -1.0, ("release", c, 0)))
         for s, st in enumerate(storeys):
             if st.kind == "bilinear" and yld[s] == 0:
                 for sign in (1.0, -1.0):
-                    def evy(t, y, s=s, sign=sign, st=st):
+                    def evy(t: float, y: NDArray[np.float64], s: int = s, sign: float = sign,
+                            st: Storey = st) -> float:
                         d = drift(y, s)[0]
                         return sign * (y[i_h + s] - st.b * st.k * d) - (1.0 - st.b) * st.fy
-                    evy.direction = 1.0
-                    evy.terminal = True
-                    evy.tag = ("yield", s, int(sign))
-                    evs.append(evy)
+                    evs.append(StopEvent(evy, 1.0, ("yield", s, int(sign))))
             elif st.kind == "bilinear":
                 # leaving the yield branch: the drift rate changes sign
-                def evu(t, y, s=s):
+                def evu(t: float, y: NDArray[np.float64], s: int = s) -> float:
                     return drift(y, s)[1]
-                evu.direction = -1.0 if yld[s] > 0 else 1.0
-                evu.terminal = True
-                evu.tag = ("unload", s)
-                evs.append(evu)
+                evs.append(StopEvent(evu, -1.0 if yld[s] > 0 else 1.0, ("unload", s, 0)))
             # (Bouc–Wen: ż is continuous where ḋ changes sign, only its slope jumps; the
             # tight-tolerance steps go through it without an event)
         for q, lk in enumerate(links):
@@ -238,19 +246,16 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 # a fluid damper's force has an unbounded slope where its rate changes sign:
                 # an event where it next does (the way it is going now, or, at a rate of
                 # ~0 — at rest, or just after such an event — the way it is accelerating)
-                going = np.sign(y[n + l_hi[q]] - y[n + l_lo[q]])
+                going = float(np.sign(y[n + l_hi[q]] - y[n + l_lo[q]]))
                 if abs(y[n + l_hi[q]] - y[n + l_lo[q]]) < 1e-9 * v_scale:
                     dy = rhs(t, y)
-                    going = np.sign(dy[n + l_hi[q]] - dy[n + l_lo[q]])
+                    going = float(np.sign(dy[n + l_hi[q]] - dy[n + l_lo[q]]))
                 if going == 0:
                     continue
 
-                def evl(t, y, q=q):
+                def evl(t: float, y: NDArray[np.float64], q: int = q) -> float:
                     return y[n + l_hi[q]] - y[n + l_lo[q]]
-                evl.direction = -going
-                evl.terminal = True
-                evl.tag = ("link", q)
-                evs.append(evl)
+                evs.append(StopEvent(evl, -going, ("link", q, 0)))
         return evs
 
     y = np.zeros(i_e + 4 + nc)
@@ -429,8 +434,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         acc[k] = -minv_k @ u_out[k] - minv_c @ v_out[k] + minv @ p
     recov = np.zeros(nt)
     for s, st in enumerate(storeys):
-        d = u_out[:, st.upper] - (u_out[:, st.lower] if st.lower >= 0 else 0.0)
-        recov += storey_recoverable(st, d, out[:, i_h + s])
+        storey_drift = u_out[:, st.upper] - (u_out[:, st.lower] if st.lower >= 0 else 0.0)
+        recov += storey_recoverable(st, storey_drift, out[:, i_h + s])
     recov_links = np.zeros(nt)
     for q, lk in enumerate(links):
         z = out[:, i_z + l_zi[q]] if lk.kind == "maxwell" else np.zeros(nt)
@@ -461,7 +466,10 @@ def _around(ts: NDArray[np.float64], k: int) -> tuple[float, float]:
     return float(ts[max(k - 1, 0)]), float(ts[min(k + 1, ts.size - 1)])
 
 
-def _update_peaks(peaks: NDArray[np.float64], dense, t0: float, t1: float, values) -> None:  # noqa: ANN001
+def _update_peaks(peaks: NDArray[np.float64],
+                  dense: Callable[[NDArray[np.float64]], NDArray[np.float64]], t0: float,
+                  t1: float, values: Callable[[NDArray[np.float64]], NDArray[np.float64]]
+                  ) -> None:
     """Largest |u|, |drift|, |absolute acceleration| of every floor over ``[t0, t1]`` from
     the dense output ``dense``: 64 samples, then a bounded scalar search (to 10⁻¹² s) around
     the largest, as for the peak contact forces."""

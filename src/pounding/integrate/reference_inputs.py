@@ -65,7 +65,7 @@ def output_times(step: float, t_end: float) -> NDArray[np.float64]:
     if count < 2:
         raise ValueError(f"duration: {t_end:g} s is shorter than one output step "
                          f"({step:g} s)")
-    return np.arange(count) * step
+    return np.arange(count, dtype=np.float64) * step
 
 
 def knots(motion: GroundMotion | GroundMotionComponents, t_end: float

@@ -139,10 +139,13 @@ def storeys(model: PoundingModel) -> list[Storey]:
     only the storeys that follow their building's law (a base-isolated building: its
     isolation storey); the others are in the linear stiffness matrix."""
     from pounding.hysteresis import Bilinear, BoucWen
+    from pounding.structure import ShearBuilding
 
     out = []
     offsets = model.system.offsets
     for p, b in enumerate(model.buildings):
+        if not isinstance(b, ShearBuilding):
+            continue  # a matrix building is linear (its storey_law is None)
         law = b.storey_law
         if law is None:
             continue
@@ -183,29 +186,38 @@ def storey_recoverable(st: Storey, drift: np.ndarray, h: np.ndarray) -> np.ndarr
     return 0.5 * st.alpha * st.k * drift**2 + 0.5 * (1.0 - st.alpha) * st.fy**2 / st.k * h**2
 
 
+def spring_stiffness(link: Link) -> float:
+    """Stiffness ``k`` [N/m] of a kelvin or maxwell link's spring (:class:`Link` requires
+    one for those kinds)."""
+    if link.k is None:
+        raise ValueError(f"reference: the {link.kind} link {link.name} has no spring "
+                         "stiffness k")
+    return float(link.k)
+
+
 def link_force(link: Link, d: float, rate: float, z: float) -> float:
     """Force [N] of a link at relative displacement ``d`` [m] and rate ``ḋ`` [m/s] (a
     Maxwell link: at its spring's deformation ``z`` [m])."""
     if link.kind == "viscous":
         return math.copysign(link.c * abs(rate) ** link.alpha, rate) if rate != 0.0 else 0.0
     if link.kind == "kelvin":
-        return float(link.k) * d + link.c * rate
+        return spring_stiffness(link) * d + link.c * rate
     if link.kind == "maxwell":
-        return float(link.k) * z
+        return spring_stiffness(link) * z
     raise ValueError(f"reference: no reference for link kind {link.kind!r}")
 
 
 def maxwell_spring_rate(link: Link, rate: float, z: float) -> float:
     """``ż`` [m/s] of a Maxwell link: the relative velocity less the dashpot's,
     ``sgn F (|F|/c)^(1/α)`` with ``F = k z``."""
-    f = float(link.k) * z
+    f = spring_stiffness(link) * z
     return rate - math.copysign((abs(f) / link.c) ** (1.0 / link.alpha), f)
 
 
 def link_recoverable(link: Link, d: np.ndarray, z: np.ndarray) -> np.ndarray:
     """Elastic energy [J] of a link's spring: ``½ k d²`` (Kelvin), ``½ k z²`` (Maxwell)."""
     if link.kind == "kelvin":
-        return 0.5 * float(link.k) * d**2
+        return 0.5 * spring_stiffness(link) * d**2
     if link.kind == "maxwell":
-        return 0.5 * float(link.k) * z**2
+        return 0.5 * spring_stiffness(link) * z**2
     return np.zeros_like(d)

@@ -23,6 +23,8 @@ nothing); see :data:`NRT_FREE`.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numba import njit
 
@@ -54,15 +56,15 @@ G_ROWS = 5
 their slope [m/s³], their values at the end of the RK step being taken and at the instant
 being evaluated [m/s²]."""
 
-NRT_FREE = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
-                _nrt=False)
+NRT_FREE: dict[str, Any] = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
+                                _nrt=False)
 """Options of the kernel's working functions. They allocate nothing (the scratch comes from
 :func:`pounding.integrate.kernel.integrate_chunk`), so they run with numba's
 reference-counting runtime off: no array passed to a call costs an atomic increment and
 decrement. Sums are never reassociated (``fastmath`` allows only fused multiply-add), so
 results do not depend on how arrays happen to be aligned in memory."""
 
-INLINE = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+INLINE: dict[str, Any] = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
 """Options of the functions numba inlines where they are called: the right-hand side, inside
 the Dormand–Prince step (a call would pass some twenty arrays as flattened structures, 35 ns
 each time), and parts of the step loop that have a single call site. numba's inlining copies

@@ -158,6 +158,8 @@ def kernel_scratch(km: KernelModel, m: int) -> KernelScratch:
     gaps = np.zeros((4, nc))
     floors = np.zeros((6, n))
     return KernelScratch(stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)),
-                         np.zeros((1, npw)), *states, np.zeros(2 * m + 4), np.zeros((2, n)),
-                         np.zeros(2 * n), *gaps, *floors,
+                         np.zeros((1, npw)), states[0], states[1], states[2], states[3],
+                         np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n),
+                         gaps[0], gaps[1], gaps[2], gaps[3],
+                         floors[0], floors[1], floors[2], floors[3], floors[4], floors[5],
                          np.zeros((G_ROWS, km.floors.r.shape[1])))

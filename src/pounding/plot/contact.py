@@ -58,9 +58,9 @@ def plot_audit(table: pd.DataFrame) -> Figure:
     """
     fig = new_figure(11, 6.2, laid_out=False, layout="constrained")
     ax_a, ax_b = fig.subplots(1, 2, sharex=True)
-    colors = matplotlib.colormaps["tab20"].colors
+    tab20 = matplotlib.colormaps["tab20"]
     for i, ((formula, law), g) in enumerate(table.groupby(["formula", "law"], sort=False)):
-        kw = {"color": colors[i % len(colors)]}
+        kw = {"color": tab20(i % tab20.N)}
         style = "-o" if bool(g["intended"].iloc[0]) else "--x"
         label = f"{formula} / {law}"
         ax_a.plot(g["target_e"], g["achieved_e"], style, ms=4, label=label, **kw)

@@ -13,7 +13,7 @@ cut, to the width it has; :func:`titled_figure` gives the page the room its line
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 from matplotlib.axes import Axes
@@ -33,6 +33,9 @@ from pounding.units import G
 __all__ = ["Scale", "scale_for", "display_scale", "axes_grid", "plain_ticks", "history",
            "ground_panel", "fit_text", "titled_figure", "place_legend",
            "TITLE_SIZE", "LEGEND_SIZE"]
+
+ShareAxes = bool | Literal["row", "col", "all", "none"]
+"""Which axes share an x or y axis (:meth:`matplotlib.figure.Figure.subplots`)."""
 
 TITLE_SIZE = 9
 """Font size of panel titles [pt]."""
@@ -96,8 +99,8 @@ def display_scale(unit: str | None, peak: float) -> Scale:
 def axes_grid(fig: Figure, nrows: int, ncols: int, *, left: float = 0.85,
               right: float = 0.25, top: float = 0.55, bottom: float = 0.55,
               wspace: float = 0.45, hspace: float = 0.45,
-              height_ratios: list[float] | None = None, sharex: bool | str = False,
-              sharey: bool | str = False) -> NDArray[Any]:
+              height_ratios: list[float] | None = None, sharex: ShareAxes = False,
+              sharey: ShareAxes = False) -> NDArray[Any]:
     """A ``nrows`` × ``ncols`` array of axes with margins and gaps given in inches.
 
     Parameters
@@ -231,7 +234,11 @@ def titled_figure(name: str, subject: str, width: float, height: float,
     return fig, extra
 
 
-_LEGEND_PLACES = ("upper right", "upper left", "lower left", "lower right", "center right",
+LegendPlace = Literal["upper right", "upper left", "lower left", "lower right", "center right",
+                      "center left", "lower center", "upper center", "center"]
+"""A place for a legend inside the axes (matplotlib's ``loc``)."""
+
+_LEGEND_PLACES: tuple[LegendPlace, ...] = ("upper right", "upper left", "lower left", "lower right", "center right",
                   "center left", "lower center", "upper center", "center")
 
 
@@ -260,13 +267,14 @@ def place_legend(ax: Axes, *args: Any, **kw: Any) -> Legend:
     Draws the figure once to know the size of the legend and where the axes are; a figure
     whose layout engine then moves the axes keeps the legend's place relative to them.
     """
-    fig = ax.figure
+    fig = ax.figure.figure  # the page (a subfigure's too)
     legend = ax.legend(*args, **kw)
     fig.draw_without_rendering()
     size = legend.get_window_extent()
     pad = legend.borderaxespad * legend.prop.get_size_in_points() * fig.dpi / 72.0
     inner = ax.bbox.padded(-pad)
-    lines = [ln for ln in ax.get_lines() if ln.get_visible() and len(ln.get_xydata())]
+    lines = [ln for ln in ax.get_lines()
+             if ln.get_visible() and np.asarray(ln.get_xydata()).size]
     for place in _LEGEND_PLACES:
         vert, horiz = place.split() if " " in place else (place, place)
         x0 = {"left": inner.x0, "right": inner.x1 - size.width,
@@ -292,13 +300,14 @@ def _line_under(line: Line2D, box: Bbox) -> bool:
             return True
     if mark:
         near = box.padded(mark * dpi / 144.0)
-        return bool(near.count_contains(path.vertices[np.isfinite(path.vertices).all(1)]))
+        vertices = np.asarray(path.vertices)
+        return bool(near.count_contains(vertices[np.isfinite(vertices).all(1)]))
     return False
 
 
 def axes_width(ax: Axes) -> float:
     """Width of ``ax`` on the page [in]."""
-    return float(ax.get_position().width * ax.figure.get_figwidth())
+    return float(ax.get_position().width * ax.figure.figure.get_figwidth())
 
 
 def history(ax: Axes, t: NDArray[np.float64], y: NDArray[np.float64], **kw: Any) -> Any:

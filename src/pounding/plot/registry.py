@@ -44,7 +44,7 @@ class RunFigure(NamedTuple):
         """Draw the figure of ``result`` (imports its module on first use)."""
         module, name = self.function.split(":")
         draw = getattr(importlib.import_module(module), name)
-        return draw(result)  # type: ignore[no-any-return]
+        return draw(result)
 
 
 RUN_FIGURES: dict[str, RunFigure] = {
@@ -75,6 +75,6 @@ def figures_for(subject: Result | PoundingModel) -> dict[str, RunFigure]:
     :data:`RUN_FIGURES` except the storey hysteresis figure when no storey can yield (a
     linear storey's shear against drift is a straight line of slope ``k``, nothing to
     read)."""
-    model = getattr(subject, "model", subject)
+    model = subject.model if hasattr(subject, "model") else subject
     yielding = bool(model.is_inelastic)
     return {key: fig for key, fig in RUN_FIGURES.items() if yielding or not fig.yielding_only}

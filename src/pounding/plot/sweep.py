@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 import pandas as pd
@@ -15,7 +15,9 @@ from pounding.units import column_name, unit_of
 
 __all__ = ["axis_label", "default_figure_name", "plot_sweep", "swept_parameters"]
 
-_REDUCERS = ("mean", "max", "min", "median")
+_REDUCERS: dict[str, Literal["mean", "max", "min", "median"]] = {
+    "mean": "mean", "max": "max", "min": "min", "median": "median"}
+"""How cases with equal parameters shown are combined: by name, pandas' aggregation."""
 
 
 def swept_parameters(df: pd.DataFrame) -> list[str]:
@@ -81,7 +83,8 @@ def plot_sweep(df: pd.DataFrame, x: str | None = None, y: str | None = None,
                    and pd.api.types.is_numeric_dtype(df[c]) and c != "case_index"]
         raise ValueError(f"--measure: no column {measure!r}; choose one of "
                          f"{', '.join(numeric)}")
-    if reduce not in _REDUCERS:
+    how = _REDUCERS.get(reduce)
+    if how is None:
         raise ValueError(f"--reduce: one of {', '.join(_REDUCERS)} (got {reduce!r})")
     if kind not in ("heatmap", "lines"):
         raise ValueError(f"--kind: heatmap or lines (got {kind!r})")
@@ -99,12 +102,12 @@ def plot_sweep(df: pd.DataFrame, x: str | None = None, y: str | None = None,
     note = f" ({reduce} over {', '.join(column_name(p) for p in others)})" if others else ""
     x_label, xs = axis_label(x, frame[x])
     if y is None:
-        g = frame.groupby(x, sort=True)["_v"].agg(reduce)
+        g = frame.groupby(x, sort=True)["_v"].agg(how)
         m_label, ms = axis_label(measure, g.to_numpy())
         ax.plot(_axis(g.index, xs), g.to_numpy() * ms.factor, marker="o")
         _ticks(ax, g.index)
     elif kind == "lines":
-        groups = [(yv, sub.groupby(x, sort=True)["_v"].agg(reduce))
+        groups = [(yv, sub.groupby(x, sort=True)["_v"].agg(how))
                   for yv, sub in frame.groupby(y, sort=True)]
         m_label, ms = axis_label(measure, np.concatenate([g.to_numpy() for _, g in groups]))
         _, ys = axis_label(y, frame[y])
@@ -113,7 +116,7 @@ def plot_sweep(df: pd.DataFrame, x: str | None = None, y: str | None = None,
                     label=f"{column_name(y)} = {_fmt(yv, ys, with_unit=True)}")
         _ticks(ax, pd.Index(sorted(frame[x].unique())))
     else:
-        table = frame.pivot_table(index=y, columns=x, values="_v", aggfunc=reduce,
+        table = frame.pivot_table(index=y, columns=x, values="_v", aggfunc=how,
                                   sort=True)
         m_label, ms = axis_label(measure, table.to_numpy(dtype=float))
         y_label, ys = axis_label(y, frame[y])

@@ -81,7 +81,7 @@ def _grid_section(sw: SweepFolder) -> list[Block]:
     grid = Table(("parameter", "values", "distinct values", "min", "max"),
                  caption="Parameter grid (values found in results.parquet)")
     for p in sw.parameters:
-        vals = pd.unique(df[p].dropna())
+        vals = np.asarray(pd.unique(df[p].dropna()))
         try:
             vals = np.sort(vals)
         except TypeError:

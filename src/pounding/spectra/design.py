@@ -220,7 +220,7 @@ class DesignSpectrum:
         agr = positive("agr", agr)
         gi = positive("importance", importance)
         zeta = in_range("damping", damping, 0.0, 1.0, high_open=True)
-        kind = {1: 1, 2: 2, "1": 1, "2": 2}.get(spectrum_type)  # type: ignore[call-overload]
+        kind = {1: 1, 2: 2, "1": 1, "2": 2}.get(spectrum_type)
         if kind is None:
             raise ValueError(f"spectrum_type: must be 1 or 2 (EN 1998-1 §3.2.2.2(2)) "
                              f"(got {spectrum_type!r})")

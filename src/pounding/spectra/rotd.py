@@ -173,7 +173,7 @@ def rotd_spectrum(motion1: GroundMotion, motion2: GroundMotion,
     n_angles = round(180.0 / step)
     if not math.isclose(n_angles * step, 180.0, rel_tol=1e-12):
         raise ValueError(f"angle_step: 180 must be a whole multiple of it (got {step:g})")
-    angles = np.arange(n_angles) * step
+    angles = np.arange(n_angles, dtype=np.float64) * step
     rad = np.radians(angles)
     weights = np.vstack([np.eye(2), np.column_stack([np.cos(rad), np.sin(rad)])])
     accel = np.vstack([motion1.accel, motion2.accel])

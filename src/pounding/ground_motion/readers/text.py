@@ -18,7 +18,7 @@ from pounding.validation import positive
 __all__ = ["read_text"]
 
 
-class _ColumnNames(dict):  # type: ignore[type-arg]
+class _ColumnNames(dict[int, tuple[str, ...]]):
     """What the values of a line are, by how many it holds (for the messages): time,
     acceleration, or ``column k`` for one that is not read."""
 
@@ -29,7 +29,7 @@ class _ColumnNames(dict):  # type: ignore[type-arg]
     def __bool__(self) -> bool:  # empty, yet it names every count of values
         return True
 
-    def get(self, n: int, default: object = ()) -> tuple[str, ...]:  # type: ignore[override]
+    def get(self, n: int, default: object = ()) -> tuple[str, ...]:
         acc, tcol = _layout(n, self.column, self.time_column)
         return tuple("acceleration" if k == acc else "time" if k == tcol else f"column {k}"
                      for k in range(1, n + 1))

@@ -144,4 +144,4 @@ def case_builder(base: dict[str, Any], base_dir: str | os.PathLike[str],
     """The :class:`CaseBuilder` of a sweep, the same one for every batch of it that runs in
     this process (remembered by the ``repr`` of its arguments)."""
     key = repr((base, str(base_dir), tuple(params)))
-    return _BUILDERS.get(key, lambda: CaseBuilder(base, base_dir, params))  # type: ignore[no-any-return]
+    return _BUILDERS.get(key, lambda: CaseBuilder(base, base_dir, params))

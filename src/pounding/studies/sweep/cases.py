@@ -13,6 +13,7 @@ import json
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -62,6 +63,26 @@ def _norm(value: Any, where: str) -> Any:
     return value
 
 
+def _draw_choice(values: Sequence[Any], gen: np.random.Generator) -> Any:
+    """One of ``values``, each as likely."""
+    return values[int(gen.integers(len(values)))]
+
+
+def _draw_uniform(low: float, high: float, gen: np.random.Generator) -> float:
+    """A number uniform in ``[low, high)``."""
+    return float(gen.uniform(low, high))
+
+
+def _draw_log_uniform(log_low: float, log_high: float, gen: np.random.Generator) -> float:
+    """A number whose logarithm is uniform in ``[log_low, log_high)``."""
+    return float(math.exp(gen.uniform(log_low, log_high)))
+
+
+def _draw_integer(low: int, high: int, gen: np.random.Generator) -> int:
+    """An integer from ``low`` to ``high``, both included, each as likely."""
+    return int(gen.integers(low, high, endpoint=True))
+
+
 def _random_cases(table: Any, where: str
                   ) -> tuple[tuple[str, ...], list[tuple], list[list[Any]]]:
     """The parameters, rows and samples (see :func:`case_rows`) of a ``[random]`` table
@@ -75,15 +96,13 @@ def _random_cases(table: Any, where: str
         kind, arg = dist.kind, dist.argument
         if kind == "choice":
             choices[len(draws)] = [_norm(v, f"{where}: random.{key}") for v in arg]
-            draws.append(lambda g, a=arg: a[int(g.integers(len(a)))])
+            draws.append(partial(_draw_choice, arg))
         elif kind == "uniform":
-            draws.append(lambda g, a=float(arg[0]), b=float(arg[1]): float(g.uniform(a, b)))
+            draws.append(partial(_draw_uniform, float(arg[0]), float(arg[1])))
         elif kind == "log":
-            draws.append(lambda g, a=math.log(arg[0]), b=math.log(arg[1]):
-                         float(math.exp(g.uniform(a, b))))
+            draws.append(partial(_draw_log_uniform, math.log(arg[0]), math.log(arg[1])))
         else:  # int
-            draws.append(lambda g, a=int(arg[0]), b=int(arg[1]):
-                         int(g.integers(a, b, endpoint=True)))
+            draws.append(partial(_draw_integer, int(arg[0]), int(arg[1])))
     gen = np.random.Generator(np.random.PCG64(table.seed))
     rows = [tuple(d(gen) for d in draws) for _ in range(n)]
     # the values to check: every choice, and the smallest and largest number drawn
@@ -155,7 +174,7 @@ def case_rows(kind: str, table: Any, where: str
 def unique_cases(params: Sequence[str], rows: list[tuple]) -> list[Case]:
     """The cases of ``rows`` in order, each set of values once (the first copy kept)."""
     seen: set[str] = set()
-    cases = []
+    cases: list[Case] = []
     for r in rows:
         cid = case_id(params, r)
         if cid in seen:

@@ -96,10 +96,16 @@ def _under(loc: tuple[Any, ...], path: str) -> bool:
 def _errors_text(exc: Any, errors: list[Any]) -> str:
     """The chosen errors of a ValidationError as one line (``; ``-separated)."""
     from pydantic import ValidationError
+    from pydantic_core import InitErrorDetails
 
     from pounding.config import RunConfig, format_validation_error
 
-    keep = [{k: e[k] for k in ("type", "loc", "input", "ctx") if k in e} for e in errors]
+    keep: list[InitErrorDetails] = []
+    for e in errors:  # (the entries of ValidationError.errors(): type, loc, input, ctx)
+        detail = InitErrorDetails(type=e["type"], loc=e["loc"], input=e["input"])
+        if "ctx" in e:
+            detail["ctx"] = e["ctx"]
+        keep.append(detail)
     sub = ValidationError.from_exception_data(exc.title, keep)
     return format_validation_error(sub, root=RunConfig).replace("\n", "; ")
 

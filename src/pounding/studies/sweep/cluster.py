@@ -173,7 +173,7 @@ def _start_method_kept() -> Iterator[None]:
     finally:
         if method is None:
             with contextlib.suppress(AttributeError):
-                multiprocessing.context._default_context._actual_context = None  # type: ignore[attr-defined]
+                multiprocessing.context._default_context._actual_context = None
 
 
 def _start_worker_server() -> None:
@@ -221,8 +221,9 @@ def worker_server_pid() -> int | None:
     from multiprocessing import forkserver
 
     with _SERVER_LOCK:
-        # while a local cluster runs, multiprocessing's fork server holds its state
-        server = forkserver._forkserver if _lent else _server  # type: ignore[attr-defined]
+        # while a local cluster runs, multiprocessing's fork server holds its state (Any:
+        # typeshed leaves out the private fields read here)
+        server: Any = forkserver._forkserver if _lent else _server
         return None if server is None else server._forkserver_pid
 
 
@@ -270,7 +271,7 @@ def _lend_worker_server() -> Iterator[None]:
     from multiprocessing import forkserver
 
     _start_worker_server()  # (at once if the sweep started it already)
-    own = forkserver._forkserver  # type: ignore[attr-defined]
+    own: Any = forkserver._forkserver  # (Any: typeshed leaves out its private _lock)
     with own._lock, _SERVER_LOCK:
         if _lent == 0:
             _swap_servers(own, _server)
