@@ -124,3 +124,21 @@ def test_without_the_sweep_extra_a_sweep_is_one_line_naming_it(tmp_path, capsys,
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f'error: {words} with the sweep extra: pip install "pounding[sweep]"']
     assert sorted(p.name for p in tmp_path.iterdir()) == ["sweep.toml"]
+
+
+def test_without_pyarrow_the_report_of_a_sweep_is_one_line_naming_the_extra(tmp_path, capsys,
+                                                                             monkeypatch):
+    import importlib.util
+
+    folder = tmp_path / "sweep-results"
+    folder.mkdir()
+    (folder / "results.parquet").write_bytes(b"PAR1")  # (never read: refused before)
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == "pyarrow" else real(name, *a))
+    capsys.readouterr()
+    assert main(["report", str(folder)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ['error: the report of a sweep needs pyarrow, which comes with the sweep '
+                   'extra: pip install "pounding[sweep]"']
+    assert sorted(p.name for p in folder.iterdir()) == ["results.parquet"]

@@ -61,8 +61,12 @@ def read_sweep(folder: Path) -> SweepFolder:
     Raises
     ------
     ValueError
-        ``results.parquet`` is not a readable Parquet file.
+        ``results.parquet`` is not a readable Parquet file, or pyarrow (the sweep extra)
+        is not installed.
     """
+    from pounding.studies.sweep.extra import require_sweep_packages
+
+    require_sweep_packages("the report of a sweep", dask=False)  # (pyarrow reads Parquet)
     path = folder / SWEEP_FILE
     try:
         df = pd.read_parquet(path)
