@@ -215,3 +215,12 @@ def test_usage_errors_listing_choices_are_one_line(capsys, argv):
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(err) == 1 and err[0].startswith("error: pounding collide: "), err
     assert "hunt-crossley" in err[0] and "(see 'pounding collide --help')" in err[0]
+
+
+def test_collide_without_e_names_the_option(capsys):
+    capsys.readouterr()
+    assert main(["collide", "--law", "hunt-crossley"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["error: --e: required for the hunt-crossley law (its coefficient of "
+                   "restitution, e.g. --e 0.65)"]
+    assert main(["collide", "--law", "hertz"]) == 0  # (undamped: no e)

@@ -200,3 +200,18 @@ def test_collide_prints_the_formula_and_achieves_e() -> None:
     assert out.exit_code == 0, out.output
     assert "exact-hunt-crossley (exact for this law)" in out.output
     assert "0.650000" in out.output  # was 0.774819 with Lankarani-Nikravesh's χ
+
+
+def test_collide_shows_an_undamped_law_dissipating_nothing_not_round_off(capsys):
+    """``collide --law linear-spring``: ∫F dδ is 0 to round-off (−3.9e-15 kJ of 15 kJ); the
+    table says 0, not −0.00000000000393923 kJ."""
+    from pounding.cli import main
+
+    capsys.readouterr()
+    assert main(["collide", "--law", "linear-spring"]) == 0
+    out = capsys.readouterr().out
+    rows = {line.split("│")[1].strip(): line.split("│")[2].strip()
+            for line in out.splitlines() if line.count("│") == 3}
+    assert rows["energy dissipated ∫F dδ [kJ]"] == "0"
+    assert rows["½ m_eff v0² (1 − e²) [kJ]"] == "0"
+    assert rows["achieved e"] == "1.000000"

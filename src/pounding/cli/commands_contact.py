@@ -204,6 +204,9 @@ def collide_cmd(
 
     name = str(law)
     form = None if formula is None else str(formula)
+    if e is None and name not in ("linear-spring", "hertz"):
+        raise ValueError(f"--e: required for the {name} law (its coefficient of restitution, "
+                         "e.g. --e 0.65)")
     targets: list[float | None] = list(_restitutions(e, ())) if e is not None else [None]
     impacts = []
     for target in targets:
@@ -219,8 +222,13 @@ def collide_cmd(
         used = resolve_formula(name, form, tension) if target is not None else None
         impacts.append((target, used, obj, simulate_collision(obj, m1, m2, v0)))
     f_scale, f_unit = force_scale(max(r.peak_force for *_, r in impacts))
-    e_scale, e_unit = energy_scale(max(max(r.energy_dissipated, r.energy_expected)
-                                       for *_, r in impacts))
+    # energies in the unit of the impact's kinetic energy ½ m_eff v0², and round-off
+    # (below 1e-9 of it: an undamped law's ∫F dδ) shown as 0
+    kinetic = 0.5 * m_effective(m1, m2) * v0**2
+    e_scale, e_unit = energy_scale(kinetic)
+
+    def energy(value: float) -> str:
+        return number(value * e_scale, 6) if abs(value) > 1e-9 * kinetic else "0"
 
     def column(target: float | None, used: str | None, r: Any) -> list[str]:
         """One impact's cells, in the order of ``quantities``."""
@@ -231,8 +239,8 @@ def collide_cmd(
                 f"{r.e:.6f}" if r.separated else "0 (stuck: the bodies never separate)",
                 number(1e3 * r.duration, 6) if r.separated else "stuck",
                 number(1e3 * r.time_to_max, 6), number(1e3 * r.delta_max, 6),
-                number(r.peak_force * f_scale, 6), number(r.energy_dissipated * e_scale, 6),
-                number(r.energy_expected * e_scale, 6)]
+                number(r.peak_force * f_scale, 6), energy(r.energy_dissipated),
+                energy(r.energy_expected)]
 
     quantities = ["target e", "damping formula for e", "achieved e", "contact duration [ms]",
                   "time to max compression [ms]", "max penetration [mm]",
