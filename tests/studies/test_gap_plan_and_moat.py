@@ -123,3 +123,28 @@ def test_cli_gap_answers_for_plan_and_moat_models(tmp_path: Path, capsys) -> Non
             assert "B1F3@y=6-B2F3@y=6" in out and "governing critical gap" in out
             assert "3 floor(s) in plan" in out and "9 storey" not in out
         assert csv.is_file()
+
+
+def test_the_gap_header_gives_an_isolated_building_its_period_on_sliding_or_yielded_bearings():
+    """T1 of the building alone is of bearings at their initial stiffness (0.529 s for the
+    example's friction pendulum, stuck); beside it the period an engineer knows it by:
+    2π √(R/g) = 2.837 s for R = 2 m, and 2π √(M/k₂) for a bilinear isolator."""
+    import math
+
+    from pounding.cli.commands_gap import _isolated_period
+    from pounding.hysteresis.isolators import BilinearIsolator
+    from pounding.structure import ShearBuilding
+
+    config = load_config(ROOT / "examples" / "isolated_moat_wall.toml")
+    building = config.build()[0].buildings[0]
+    assert _isolated_period(building) == (
+        f" (bearings stuck; sliding: {2 * math.pi * math.sqrt(2.0 / 9.80665):.4g} s, 2π√(R/g))")
+    assert "2.837 s" in _isolated_period(building)
+    frame = ShearBuilding.uniform(3, mass=2e5, stiffness=2e8)
+    iso = BilinearIsolator(2.0e8, 2.0e7, characteristic_strength=9.0e5)
+    on_bearings = ShearBuilding.base_isolated(frame, base_mass=3e5, isolator=iso)
+    total = 3 * 2e5 + 3e5
+    assert _isolated_period(on_bearings) == (
+        f" (bearings elastic; yielded: {2 * math.pi * math.sqrt(total / 2.0e7):.4g} s, "
+        "2π√(M/k₂))")
+    assert _isolated_period(frame) == ""
