@@ -70,7 +70,15 @@ def test_a_fragility_module_loads_only_what_it_needs() -> None:
     assert "pounding.studies.fragility.runner" in loaded
 
 
-@pytest.mark.parametrize("package", ["pounding.config", "pounding.result", "pounding.studies",
+def test_the_seed_link_element_loads_no_compiled_law() -> None:
+    """``pounding ellipse`` (the seed paper's link element) needs NumPy and SciPy only: the
+    contact package loads its laws' compiled kernels (numba) on first use of a law."""
+    assert "numba" not in loaded_by("import pounding.contact.link_element")
+    assert "numba" in loaded_by("from pounding.contact import LAWS")
+
+
+@pytest.mark.parametrize("package", ["pounding.config", "pounding.contact", "pounding.result",
+                                     "pounding.studies",
                                      "pounding.studies.sweep", "pounding.studies.fragility"])
 def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
     """Each name a package lists is what its module defines (imported on first use), and

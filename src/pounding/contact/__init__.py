@@ -2,24 +2,30 @@
 
 Every law obeys one contract, written in :mod:`pounding.contact.base`. The seed paper's link
 element under harmonic motion (its eqs 1–15) is :mod:`pounding.contact.link_element`.
+
+Names are imported on first use (PEP 562): importing one module of the package (the link
+element, say) does not load the laws' compiled kernels.
 """
 
-from pounding.contact.base import ContactLaw, ContactResponse, m_effective
-from pounding.contact.bilinear import BilinearImpact
-from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic, hertzdamp, naderpour_2015
-from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
-from pounding.contact.restitution import FORMULAS, DampingFormula, formula
+from __future__ import annotations
 
-LAWS: dict[str, type[ContactLaw]] = {
-    "linear-spring": LinearSpring,
-    "kelvin-voigt": KelvinVoigt,
-    "modified-kelvin-voigt": ModifiedKelvinVoigt,
-    "hertz": Hertz,
-    "hunt-crossley": HuntCrossley,
-    "nonlinear-viscoelastic": NonlinearViscoelastic,
-    "bilinear-impact": BilinearImpact,
+import importlib
+from typing import TYPE_CHECKING, Any
+
+_EXPORTS: dict[str, str] = {
+    **{name: "pounding.contact.base" for name in ("ContactLaw", "ContactResponse",
+                                                    "m_effective")},
+    "BilinearImpact": "pounding.contact.bilinear",
+    "LAWS": "pounding.contact.factory",
+    **{name: "pounding.contact.hertz" for name in ("Hertz", "HuntCrossley",
+                                                     "NonlinearViscoelastic", "hertzdamp",
+                                                     "naderpour_2015")},
+    **{name: "pounding.contact.linear" for name in ("KelvinVoigt", "LinearSpring",
+                                                      "ModifiedKelvinVoigt")},
+    **{name: "pounding.contact.restitution" for name in ("FORMULAS", "DampingFormula",
+                                                           "formula")},
 }
-"""Every contact law class, keyed by the name used in configs and on the command line."""
+"""Public name → the module that defines it."""
 
 __all__ = [
     "BilinearImpact",
@@ -39,3 +45,32 @@ __all__ = [
     "m_effective",
     "naderpour_2015",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name from its module on first use (PEP 562)."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pounding.contact' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value  # later look-ups do not come back here
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
+
+if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.contact.base import ContactLaw, ContactResponse, m_effective
+    from pounding.contact.bilinear import BilinearImpact
+    from pounding.contact.factory import LAWS
+    from pounding.contact.hertz import (
+        Hertz,
+        HuntCrossley,
+        NonlinearViscoelastic,
+        hertzdamp,
+        naderpour_2015,
+    )
+    from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
+    from pounding.contact.restitution import FORMULAS, DampingFormula, formula

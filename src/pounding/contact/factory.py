@@ -12,6 +12,17 @@ from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoi
 from pounding.contact.restitution import FORMULAS, formula as get_formula
 from pounding.validation import choice
 
+LAWS: dict[str, type[ContactLaw]] = {
+    "linear-spring": LinearSpring,
+    "kelvin-voigt": KelvinVoigt,
+    "modified-kelvin-voigt": ModifiedKelvinVoigt,
+    "hertz": Hertz,
+    "hunt-crossley": HuntCrossley,
+    "nonlinear-viscoelastic": NonlinearViscoelastic,
+    "bilinear-impact": BilinearImpact,
+}
+"""Every contact law class, keyed by the name used in configs and on the command line."""
+
 LAW_NAMES: tuple[str, ...] = (
     "linear-spring", "kelvin-voigt", "modified-kelvin-voigt", "hertz", "hunt-crossley",
     "hertzdamp", "nonlinear-viscoelastic", "naderpour", "bilinear-impact",

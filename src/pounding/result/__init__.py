@@ -95,6 +95,7 @@ def __dir__() -> list[str]:
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
     from pounding.result.columns import ENERGY_NAMES, IMPACT_COLUMNS
+    from pounding.result.demands import DEMANDS, Demand
     from pounding.result.files import IMPACTS_CSV_COLUMNS, save_result
     from pounding.result.peaks import peak_abs
     from pounding.result.reductions import (
