@@ -149,7 +149,9 @@ def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
     """The contacts of every wall (in the order of ``walls``) with the end building of the
     row ``buildings`` beside it, numbered from ``start``; the building on the left of a
     contact is the left point. ``contact`` builds each contact's law; ``floor_to_column``
-    and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`)."""
+    and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`). The building
+    beside a wall is a :class:`ShearBuilding` (a ``ValueError`` naming the wall otherwise,
+    as :func:`check_walls`)."""
     out: list[Contact] = []
     last = len(buildings) - 1
     for i, wall in enumerate(walls):
