@@ -475,3 +475,12 @@ class MatrixBuilding:
                 and self.floors == other.floors)
 
     __hash__ = None  # type: ignore[assignment]
+
+    # pickling (multiprocessing, copy.deepcopy): ``sources`` is a read-only mapping proxy,
+    # which cannot be pickled; it travels as a dict and is made read-only again
+    def __getstate__(self) -> dict[str, Any]:
+        return {**self.__dict__, "sources": dict(self.sources)}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self.__dict__.update(state)
+        object.__setattr__(self, "sources", MappingProxyType(dict(state["sources"])))
