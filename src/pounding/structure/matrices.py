@@ -229,6 +229,8 @@ class MatrixBuilding:
         frozen_set(self, "name", name)
         frozen_set(self, "sources", given)
         frozen_set(self, "floors", floors_)
+        # the matrices, read-only (private: the methods hand out copies)
+        self._C: NDArray[np.float64]
         frozen_set(self, "_C", readonly(C_))
 
     # ----------------------------------------------------------------- constructors
@@ -266,7 +268,7 @@ class MatrixBuilding:
 
     def damping_matrix(self) -> NDArray[np.float64]:
         """``C`` [N·s/m], shape (n, n): the given matrix, or the damping model's."""
-        return np.array(self._C)  # type: ignore[attr-defined]
+        return np.array(self._C)
 
     def influence_vector(self) -> NDArray[np.float64]:
         """``r`` [-], shape (n,), a fresh copy."""
@@ -366,7 +368,7 @@ class MatrixBuilding:
         """Natural modes: ``K φ = ω² M φ`` solved by :func:`scipy.linalg.eigh` (Chopra §10.2),
         longest period first, mass-normalised shapes, with this building's ``C`` and ``r``
         (:func:`pounding.structure.modal.modal_result`)."""
-        return modal_result(self.M, self.K, self._C, self.r)  # type: ignore[attr-defined]
+        return modal_result(self.M, self.K, self._C, self.r)
 
     @property
     def fundamental_period(self) -> float:

@@ -285,6 +285,10 @@ class PlanBuilding:
         self._check_restrained(K)
         damping.check(3 * n)
         C = readonly(damping.matrix(M, K))
+        # the matrices, read-only (private: the methods hand out copies)
+        self._M: NDArray[np.float64]
+        self._K: NDArray[np.float64]
+        self._C: NDArray[np.float64]
         frozen_set(self, "_M", M)
         frozen_set(self, "_K", K)
         frozen_set(self, "_C", C)
@@ -392,15 +396,15 @@ class PlanBuilding:
     # ----------------------------------------------------------------- matrices
     def mass_matrix(self) -> NDArray[np.float64]:
         """``diag(m_1, m_1, I_1, m_2, …)`` [kg, kg·m²], (3n, 3n)."""
-        return np.array(self._M)  # type: ignore[attr-defined]
+        return np.array(self._M)
 
     def stiffness_matrix(self) -> NDArray[np.float64]:
         """Stiffness matrix [N/m, N, N·m] from the elements (:func:`plan_stiffness_matrix`)."""
-        return np.array(self._K)  # type: ignore[attr-defined]
+        return np.array(self._K)
 
     def damping_matrix(self) -> NDArray[np.float64]:
         """Damping matrix from the building's damping model."""
-        return np.array(self._C)  # type: ignore[attr-defined]
+        return np.array(self._C)
 
     def influence_matrix(self) -> NDArray[np.float64]:
         """``R`` (3n × 2): column 0 the ground's x component, column 1 its y component."""
@@ -411,7 +415,7 @@ class PlanBuilding:
 
     def modes(self) -> ModalResult:
         """Natural modes of the building in plan (lateral–torsional)."""
-        return modal_result(self._M, self._K, self._C)  # type: ignore[attr-defined]
+        return modal_result(self._M, self._K, self._C)
 
     @property
     def fundamental_period(self) -> float:
@@ -427,7 +431,7 @@ class PlanBuilding:
         cached = self.__dict__.get("_as_matrix")
         if cached is None:
             cached = PlanMatrixBuilding(
-                M=self._M, K=self._K, C=self._C,  # type: ignore[attr-defined]
+                M=self._M, K=self._K, C=self._C,
                 labels=tuple(self.dof_labels()), elevations=np.repeat(self.floor_levels, 3),
                 r=self.influence_matrix()[:, 0], floors=list(range(0, self.n, 3)),
                 name=self.name, plan=self)
@@ -444,7 +448,7 @@ class PlanBuilding:
                 and (self.width, self.depth, self.site_y, self.name, self.damping,
                      self.elements) == (other.width, other.depth, other.site_y, other.name,
                                         other.damping, other.elements)
-                and np.array_equal(self._K, other._K))  # type: ignore[attr-defined]
+                and np.array_equal(self._K, other._K))
 
     __hash__ = object.__hash__
 

@@ -156,13 +156,13 @@ def plan_contact_points(a: Any, b: Any, tol: float = 1e-6
         planar floor); ``y``: site y of the point [m]. Sorted by elevation, then y.
     """
     pa, pb = _plan_of(a), _plan_of(b)
-    if pa is None and pb is None:
-        raise ValueError("plan_contact_points: neither building is in plan")
+    one = pa if pb is None else pb  # the one building in plan, if only one is
     if pa is not None and pb is not None:
         ys = facing_points(pa, pb)
+    elif one is not None:  # a planar floor faces its whole façade
+        ys = [one.site_y, one.site_y + one.depth]
     else:
-        p = pa if pa is not None else pb
-        ys = [p.site_y, p.site_y + p.depth]  # type: ignore[union-attr]
+        raise ValueError("plan_contact_points: neither building is in plan")
     rows = []
     levels = np.asarray(a.floor_levels)
     for i, j in shared_levels(a, b, tol):  # floors at the same elevation, u_x DOFs

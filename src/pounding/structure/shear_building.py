@@ -193,6 +193,10 @@ class ShearBuilding:
         K = readonly(shear_stiffness_matrix(k))
         # Build C now so that a damping model unfit for this building fails here, early.
         C = readonly(damping.matrix(M, K))
+        # the matrices, read-only (private: the methods hand out copies)
+        self._M: NDArray[np.float64]
+        self._K: NDArray[np.float64]
+        self._C: NDArray[np.float64]
         frozen_set(self, "_M", M)
         frozen_set(self, "_K", K)
         frozen_set(self, "_C", C)
@@ -436,18 +440,18 @@ class ShearBuilding:
     # ----------------------------------------------------------------- matrices
     def mass_matrix(self) -> NDArray[np.float64]:
         """Diagonal mass matrix ``M = diag(m_1 … m_n)`` [kg], shape (n, n)."""
-        return np.array(self._M)  # type: ignore[attr-defined]
+        return np.array(self._M)
 
     def stiffness_matrix(self) -> NDArray[np.float64]:
         """Tridiagonal shear-building stiffness matrix ``K`` [N/m], shape (n, n).
 
         See :func:`shear_stiffness_matrix` (Chopra §9.2).
         """
-        return np.array(self._K)  # type: ignore[attr-defined]
+        return np.array(self._K)
 
     def damping_matrix(self) -> NDArray[np.float64]:
         """Damping matrix ``C`` [N·s/m], shape (n, n), from :attr:`damping`."""
-        return np.array(self._C)  # type: ignore[attr-defined]
+        return np.array(self._C)
 
     def influence_vector(self) -> NDArray[np.float64]:
         """Ground-motion influence vector ``ι`` [-], shape (n,): all ones (Chopra §9.4.1)."""
