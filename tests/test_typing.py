@@ -33,7 +33,6 @@ def _cache_dir() -> Path:
     return Path(tempfile.gettempdir()) / f"pounding-mypy-cache-{key}"
 
 
-@pytest.mark.xfail(strict=False, reason="phase 3: areas being moved")
 def test_mypy_finds_no_error() -> None:
     if importlib.util.find_spec("mypy") is None:
         reason = 'mypy is not installed (pip install -e ".[test]")'

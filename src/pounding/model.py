@@ -128,7 +128,7 @@ def _read_only(system: AssembledSystem) -> AssembledSystem:
     return system
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class PoundingModel:
     """Buildings in a row, the gaps between them, and the contact law.
 
@@ -170,39 +170,44 @@ class PoundingModel:
     ['B1F1-B2F1']
     """
 
-    buildings: Sequence[Building]
-    gaps: Sequence[float]
+    buildings: tuple[Building, ...]
+    gaps: tuple[float, ...]
     contact: ContactSpec
-    name: str = "model"
-    floor_to_column: bool = True
-    level_tolerance: float = 0.1
-    devices: Sequence[Link | Bumper] = ()
-    walls: Sequence[MoatWall] = ()
+    name: str
+    floor_to_column: bool
+    level_tolerance: float
+    devices: tuple[Link | Bumper, ...]
+    walls: tuple[MoatWall, ...]
 
-    def __post_init__(self) -> None:
-        if len(self.buildings) < 1:
+    def __init__(self, buildings: Sequence[Building | PlanBuilding], gaps: Sequence[float],
+                 contact: ContactSpec, name: str = "model", floor_to_column: bool = True,
+                 level_tolerance: float = 0.1, devices: Sequence[Link | Bumper] = (),
+                 walls: Sequence[MoatWall] = ()) -> None:
+        if len(buildings) < 1:
             raise ValueError("buildings: give at least one building")
         # a building in plan stands in the row as its matrix building (which keeps the plan)
-        object.__setattr__(self, "buildings", tuple(
-            b.as_matrix_building() if isinstance(b, PlanBuilding) else b
-            for b in self.buildings))
-        for i, b in enumerate(self.buildings):
+        row = tuple(b.as_matrix_building() if isinstance(b, PlanBuilding) else b
+                    for b in buildings)
+        for i, b in enumerate(row):
             if not isinstance(b, BUILDING_TYPES):
                 raise ValueError(f"buildings[{i}]: expected a ShearBuilding or a MatrixBuilding "
                                  f"(got {type(b).__name__})")
             if isinstance(b, MatrixBuilding):
                 _check_matrix_building(i, b)
-        if len(self.gaps) != len(self.buildings) - 1:
-            raise ValueError(f"gaps: need {len(self.buildings) - 1} value(s) for "
-                             f"{len(self.buildings)} buildings (got {len(self.gaps)})")
-        object.__setattr__(self, "level_tolerance", positive("level_tolerance",
-                                                             self.level_tolerance))
-        object.__setattr__(self, "buildings", tuple(self.buildings))
-        object.__setattr__(self, "gaps", tuple(non_negative(f"gaps[{i}]", g)
-                                               for i, g in enumerate(self.gaps)))
-        object.__setattr__(self, "devices", tuple(self.devices))
+        if len(gaps) != len(row) - 1:
+            raise ValueError(f"gaps: need {len(row) - 1} value(s) for "
+                             f"{len(row)} buildings (got {len(gaps)})")
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "buildings", row)
+        frozen_set(self, "contact", contact)
+        frozen_set(self, "name", name)
+        frozen_set(self, "floor_to_column", floor_to_column)
+        frozen_set(self, "level_tolerance", positive("level_tolerance", level_tolerance))
+        frozen_set(self, "gaps", tuple(non_negative(f"gaps[{i}]", g)
+                                       for i, g in enumerate(gaps)))
+        frozen_set(self, "devices", tuple(devices))
         self._check_devices()
-        object.__setattr__(self, "walls", tuple(self.walls))
+        frozen_set(self, "walls", tuple(walls))
         if self.walls:
             check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
         self._check_law_codes()
@@ -426,10 +431,9 @@ class PoundingModel:
         rows: list[NDArray[np.float64]] = []
         nz = 0
         for p, b in enumerate(self.buildings):
-            if not b.is_inelastic:
-                continue
             law = b.storey_law
-            assert law is not None
+            if law is None or not isinstance(b, ShearBuilding):
+                continue  # linear storeys (a matrix building has no storey law)
             check_storey_law(law)
             prm = b.storey_law_params()
             for r, j in enumerate(b.yielding):

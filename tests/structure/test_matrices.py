@@ -600,3 +600,28 @@ def test_a_header_declaring_a_huge_matrix_is_one_line_from_the_command_line(
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "1000000×1000000" in err[0] and "K.npy" in err[0], err
     assert not (tmp_path / "out").exists()
+
+
+def test_a_matrix_building_and_a_model_of_one_pickle_and_deep_copy() -> None:
+    """``sources`` is a read-only mapping proxy, which pickle refused: a matrix building, a
+    building in plan's row building and any model holding one could not go to another
+    process (multiprocessing) nor through ``copy.deepcopy`` (TypeError: cannot pickle
+    'mappingproxy' object). They travel whole, and ``sources`` stays read-only."""
+    import copy
+    import pickle
+
+    from pounding.model import ContactSpec, PoundingModel
+    from pounding.structure.plan import LateralElement, PlanBuilding
+
+    b = _building(sources={"M": "m.csv", "K": "k.csv"}, name="A")
+    plan = PlanBuilding(masses=[4e5], heights=[4.0], width=20.0, depth=10.0, elements=[
+        LateralElement(0.0, 0.0, "x", 5e7), LateralElement(0.0, 10.0, "x", 5e7),
+        LateralElement(0.0, 5.0, "y", 5e7), LateralElement(20.0, 5.0, "y", 1e8)])
+    model = PoundingModel([b, plan], [0.05], ContactSpec("linear-spring", k=1e8))
+    for copied in (pickle.loads(pickle.dumps(b)), copy.deepcopy(b)):
+        assert copied == b and dict(copied.sources) == {"M": "m.csv", "K": "k.csv"}
+        with pytest.raises(TypeError):
+            copied.sources["M"] = "other.csv"  # type: ignore[index]
+    again = pickle.loads(pickle.dumps(model))
+    assert again.buildings == model.buildings
+    assert [c.label for c in again.contacts] == [c.label for c in model.contacts] != []

@@ -63,6 +63,23 @@ def test_bad_walls(walls, match):
         PoundingModel([isolated()], [], KV, walls=walls, floor_to_column=False)
 
 
+def test_wall_contacts_refuse_a_matrix_building_as_the_model_does():
+    """``wall_contacts`` (public) took any building beside the wall and made a contact at
+    every DOF below the wall's top: a rotation DOF at 0.5 m struck the wall as a floor
+    ``'B1F2-W'``. It refuses the neighbour the model refuses (:func:`check_walls`)."""
+    from pounding.structure import MatrixBuilding
+    from pounding.structure.wall import wall_contacts
+
+    b = MatrixBuilding(M=np.diag([1e5, 1e4]), K=[[2e7, 0.0], [0.0, 1e8]], labels=["F1", "R"],
+                       elevations=[3.0, 0.5], floors=["F1"])
+    walls = [MoatWall(height=1.0, gap=0.1)]
+    for make in (lambda: wall_contacts(walls, [b], KV, True, 0.1, 0),
+                 lambda: PoundingModel([b], [], KV, walls=walls)):
+        with pytest.raises(ValueError, match=r"walls\[0\]: a moat wall stands beside a shear "
+                                             r"building; B1 is a MatrixBuilding"):
+            make()
+
+
 @pytest.mark.parametrize("kwargs, match", [
     ({"height": -1.0, "gap": 0.1}, "height must be"),
     ({"height": 1.0, "gap": -0.1}, "gap must be"),

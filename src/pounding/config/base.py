@@ -81,13 +81,12 @@ class prefixed:
     def __enter__(self) -> None:
         return None
 
-    def __exit__(self, typ: type | None, exc: BaseException | None, tb: Any) -> bool:
+    def __exit__(self, typ: type | None, exc: BaseException | None, tb: Any) -> None:
         if isinstance(exc, ValueError) and not isinstance(exc, ValidationError):
             text = str(exc)
             found = _KEY_PATH.match(text)
             sep = "." if found and found[1] in self.keys else ": "
             raise ValueError(f"{self.where}{sep}{text}") from exc
-        return False
 
 
 _KEY_PATH = re.compile(r"([A-Za-z_]\w*)(\[\d+\])*(\.[A-Za-z_]\w*(\[\d+\])*)*: ")

@@ -421,12 +421,15 @@ class BuildingConfig(Section):
         h = self.height if self.height is not None else 3.0
         if self.kind == "sdof":
             assert self.mass is not None
-            k = (self.stiffness if self.stiffness is not None
-                 else self.mass * (2.0 * math.pi / self.period) ** 2)  # type: ignore[operator]
-            if not SMALLEST <= k < math.inf:
-                raise ValueError(f"mass {self.mass:g} kg with period {self.period:g} s gives a "
-                                 f"storey stiffness m (2π/T)² = {k:g} N/m, outside the "
-                                 "floating-point range; check mass and period")
+            if self.stiffness is not None:
+                k = self.stiffness
+            else:
+                assert self.period is not None  # the checks: a stiffness or a period
+                k = self.mass * (2.0 * math.pi / self.period) ** 2
+                if not SMALLEST <= k < math.inf:
+                    raise ValueError(f"mass {self.mass:g} kg with period {self.period:g} s gives "
+                                     f"a storey stiffness m (2π/T)² = {k:g} N/m, outside the "
+                                     "floating-point range; check mass and period")
             return self._with_law(ShearBuilding(masses=[self.mass], stiffnesses=[k],
                                                 heights=[h], damping=damping or ModalDamping(0.05),
                                                 name=name))
@@ -435,7 +438,8 @@ class BuildingConfig(Section):
             b = ShearBuilding.uniform(self.n_storeys, self.mass, self.stiffness or 1.0, h,
                                       damping=damping, name=name)
         else:
-            n = len(self.masses)  # type: ignore[arg-type]
+            assert self.masses is not None and self.stiffnesses is not None
+            n = len(self.masses)
             heights = self.heights if self.heights is not None else [h] * n
             b = ShearBuilding(masses=self.masses, stiffnesses=self.stiffnesses,
                               heights=heights, damping=damping or RayleighDamping(), name=name)

@@ -53,8 +53,8 @@ class PlanConfig(Section):
         if self.mass_centres is None:
             return []
         if isinstance(self.mass_centres[0], list):
-            return [(float(p[0]), float(p[1])) for p in self.mass_centres]  # type: ignore[index]
-        return [(float(self.mass_centres[0]), float(self.mass_centres[1]))]  # type: ignore[arg-type]
+            return [(float(p[0]), float(p[1])) for p in self.mass_centres]
+        return [(float(self.mass_centres[0]), float(self.mass_centres[1]))]
 
     def check_inertias(self, masses: list[float]) -> None:
         """Refuse an inertia no floor of that mass on this plan can have: above ``m ρ²``,

@@ -110,7 +110,9 @@ def _masses(cfg: RunConfig, built: Built) -> list[str]:
             given.append((f"building[{i}].isolator.base_mass", b.isolator.base_mass))
         if b.kind == "matrices":
             from pounding.structure.assembly import floor_dofs
+            from pounding.structure.matrices import MatrixBuilding
 
+            assert isinstance(made, MatrixBuilding)  # what a "matrices" table builds
             labels = list(made.labels)
             given += [(f"building[{i}]: the mass of floor {labels[k]!r} in M",
                        float(made.masses[k])) for k in floor_dofs(made)]

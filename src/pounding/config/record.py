@@ -5,7 +5,7 @@ from __future__ import annotations
 import functools
 from pathlib import Path
 
-from typing import Annotated
+from typing import Annotated, Literal, overload
 
 from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_validator
 
@@ -204,6 +204,12 @@ class RecordConfig(Section):
         if self.file is not None and self._path is None:
             self._path = Path(self.file).expanduser().resolve()
         return self._path
+
+    @overload
+    def load(self, components: Literal[False] = False) -> GroundMotion: ...
+
+    @overload
+    def load(self, components: bool) -> GroundMotion | GroundMotionComponents: ...
 
     def load(self, components: bool = False) -> GroundMotion | GroundMotionComponents:
         """Read the record and apply ``duration``, then ``scale`` / ``pga_g`` / ``sa_g`` /

@@ -179,12 +179,12 @@ class RunConfig(Section):
             raise ValueError(f"contact: {text}") from exc
         for p in range(len(buildings) - 1):
             if not any(c.pair == p for c in model.contacts):
-                a, b = buildings[p], buildings[p + 1]
+                left, right = buildings[p], buildings[p + 1]
                 raise ValueError(
                     f"building[{p}] and building[{p + 1}]: no floor at the same elevation, "
                     "so they can never collide (floor levels [m]: "
-                    f"{[round(float(x), 6) for x in a.floor_levels]} and "
-                    f"{[round(float(x), 6) for x in b.floor_levels]}); with "
+                    f"{[round(float(x), 6) for x in left.floor_levels]} and "
+                    f"{[round(float(x), 6) for x in right.floor_levels]}); with "
                     "contact.floor_to_column = false floors meet only at equal levels")
         with prefixed("record", RecordConfig.model_fields):
             motion = self.record.load(components=self.in_plan)

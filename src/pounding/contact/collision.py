@@ -19,6 +19,7 @@ This module is the reference against which every damping formula is audited
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -275,14 +276,18 @@ def simulate_collision(law: ContactLaw, m1: float, m2: float, v0: float, *,
         i = int(np.argmax(ff))
         peak = max(peak, float(ff[i]))
         if 0 < i < samples - 1:  # refine the interior maximum on the dense output
-            def neg_force(s: float, sol_k=sol_k, st=st) -> float:
+            def neg_force(s: float, sol_k: Any = sol_k, st: NDArray[np.float64] = st
+                          ) -> float:
                 yk = sol_k.sol(s)
                 return -contact_trial(code, params, max(yk[0], 1e-300), yk[1], st, trial)[0]
 
             res = minimize_scalar(neg_force, bounds=(tt[i - 1], tt[i + 1]), method="bounded",
                                   options={"xatol": (b - a) * 1e-12})
             peak = max(peak, -float(res.fun))
-        ts.append(tt), ds.append(yy[0]), rs.append(yy[1]), fs.append(ff)
+        ts.append(tt)
+        ds.append(yy[0])
+        rs.append(yy[1])
+        fs.append(ff)
     return CollisionResult(
         law=law, m1=float(m1), m2=float(m2), m_eff=m_eff, v0=v0, e=e, separated=separated,
         duration=t_end if separated else float("nan"), time_to_max=t_max_c, delta_max=float(segments[0].y_events[0][0][0]),

@@ -53,7 +53,7 @@ CONTACT_LAW_CODES: dict[int, str] = {
 """The codes :func:`law_trial` implements, each with its law (a branch apiece)."""
 
 
-def unknown_code_text(kind: str, law: object, code: int, codes: dict[int, str]) -> str:
+def unknown_code_text(kind: str, law: object, code: object, codes: dict[int, str]) -> str:
     """One line: a law whose code no compiled branch implements, and the codes there are."""
     known = ", ".join(f"{k} {name}" for k, name in codes.items())
     return (f"{kind} {type(law).__name__} has code {code}, which no compiled {kind} "

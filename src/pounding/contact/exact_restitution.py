@@ -24,7 +24,9 @@ from pounding.validation import restitution as _check_e
 FloatArray = NDArray[np.float64]
 
 
-def _by_damping_regime(zeta: ArrayLike, under, critical: float, over) -> FloatArray | float:
+def _by_damping_regime(zeta: ArrayLike, under: Callable[[FloatArray], FloatArray],
+                       critical: float, over: Callable[[FloatArray], FloatArray]
+                       ) -> FloatArray | float:
     """``under(ζ)`` for ζ < 1, ``critical`` at ζ = 1 (within 1e-9) and ``over(ζ)`` for
     ζ > 1, elementwise; ζ must be finite and ≥ 0."""
     z = np.asarray(zeta, dtype=float)
@@ -145,8 +147,9 @@ def restitution_hunt_crossley(chi: ArrayLike) -> FloatArray | float:
     from scipy.optimize import brentq
 
     x = np.atleast_1d(np.asarray(chi, dtype=float))
-    if np.any(~np.isfinite(x) | (x < 0.0)):
-        raise ValueError(f"chi must be finite and >= 0 (got {chi})")
+    bad = ~np.isfinite(x) | (x < 0.0)
+    if np.any(bad):
+        raise ValueError(f"chi must be finite and >= 0 (got {x[bad][0]})")
     out = np.empty_like(x)
     for i, c in enumerate(x):
         if c == 0.0:
@@ -201,15 +204,15 @@ def _invert(e: ArrayLike, one: Callable[[float], float]) -> FloatArray | float:
     return float(out.ravel()[0]) if np.ndim(e) == 0 else out
 
 
-def _brent_decreasing(fun: Callable[[float], float], target: float, hi: float,
+def _brent_decreasing(fun: Callable[[float], FloatArray | float], target: float, hi: float,
                       xtol: float = 1e-300) -> float:
     """The x ≥ 0 with ``fun(x) = target`` for ``fun`` falling from ``fun(0) = 1``:
     ``hi`` doubled until it brackets, then Brent's method to round-off."""
     from scipy.optimize import brentq
 
-    while fun(hi) > target:
+    while float(fun(hi)) > target:
         hi *= 2.0
-    return float(brentq(lambda z: fun(z) - target, 0.0, hi, xtol=xtol, rtol=8.9e-16,
+    return float(brentq(lambda z: float(fun(z)) - target, 0.0, hi, xtol=xtol, rtol=8.9e-16,
                         maxiter=200))
 
 

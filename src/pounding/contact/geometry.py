@@ -83,7 +83,8 @@ class ContactPoint:
 
     def of(self, floors: NDArray[np.float64]) -> NDArray[np.float64]:
         """The point's value from per-floor values of its building, ``floors[..., floor]``."""
-        return sum(w * floors[..., i] for i, w in self.floor_weights())
+        return sum((w * floors[..., i] for i, w in self.floor_weights()),
+                   np.zeros(floors.shape[:-1]))
 
     def effective_mass(self, masses: NDArray[np.float64]) -> float:
         """Apparent mass at the point [kg]: ``1 / Σ w_i² / m_i`` (the mass a short impulse

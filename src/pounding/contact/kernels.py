@@ -22,7 +22,8 @@ DELTA_TINY: float = 1e-300
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def open_or_onset(delta: float, rate: float, v0: float, slip: float, dmax: float):
+def open_or_onset(delta: float, rate: float, v0: float, slip: float, dmax: float
+                  ) -> tuple[float, float, float]:
     """Steps 2–3 of the contract, shared by every law (scalar, pure).
 
     Parameters are the penetration [m], its rate [m/s] and the committed state

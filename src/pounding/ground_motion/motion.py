@@ -13,7 +13,8 @@ import functools
 import math
 import sys
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from types import MappingProxyType
 from typing import Any, overload
 
 import numpy as np
@@ -27,7 +28,7 @@ __all__ = ["GroundMotion"]
 FloatArray = NDArray[np.float64]
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class GroundMotion:
     """A uniformly sampled ground acceleration record, in SI units.
 
@@ -59,16 +60,19 @@ class GroundMotion:
 
     dt: float
     accel: FloatArray
-    name: str = "record"
-    source: str = ""
-    units_read: str = "m/s2"
-    metadata: Mapping[str, Any] = field(default_factory=dict)
+    name: str
+    source: str
+    units_read: str
+    metadata: Mapping[str, Any]
 
-    def __post_init__(self) -> None:
-        label = f"ground motion {self.name!r}"
-        object.__setattr__(self, "dt", positive(f"{label}: dt", self.dt))
+    def __init__(self, dt: float, accel: ArrayLike, name: str = "record", source: str = "",
+                 units_read: str = "m/s2",
+                 metadata: Mapping[str, Any] = MappingProxyType({})) -> None:
+        label = f"ground motion {name!r}"
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "dt", positive(f"{label}: dt", dt))
         try:
-            arr = np.array(self.accel, dtype=np.float64)
+            arr = np.array(accel, dtype=np.float64)
         except (TypeError, ValueError):
             raise ValueError(f"{label}: accel must be an array of numbers") from None
         if arr.ndim != 1:
@@ -80,8 +84,11 @@ class GroundMotion:
             i = int(np.flatnonzero(bad)[0])
             raise ValueError(f"{label}: accel must be finite (got {arr[i]} at index {i})")
         arr.setflags(write=False)
-        object.__setattr__(self, "accel", arr)
-        object.__setattr__(self, "metadata", dict(self.metadata))
+        frozen_set(self, "accel", arr)
+        frozen_set(self, "name", name)
+        frozen_set(self, "source", source)
+        frozen_set(self, "units_read", units_read)
+        frozen_set(self, "metadata", dict(metadata))
 
     # ------------------------------------------------------------------ sampling
     @property

@@ -128,4 +128,4 @@ def energy_residual_max(e: np.ndarray) -> tuple[float, float]:
     (the links' column where there is one) and ``e0 = e[0, 1] + e[0, 2]``."""
     e = np.asarray(e, dtype=np.float64)
     # (a column of the kernel's Fortran-ordered energies is contiguous already)
-    return _energy_residual_max(e, np.ascontiguousarray(e[:, 0]))  # type: ignore[no-any-return]
+    return _energy_residual_max(e, np.ascontiguousarray(e[:, 0]))

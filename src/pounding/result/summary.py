@@ -100,7 +100,6 @@ def floor_rotations(r: Response) -> list[tuple[int, int, str, float, float]]:
         if not isinstance(bl, PlanMatrixBuilding):
             continue
         plan = bl.plan
-        assert plan is not None
         for k in range(plan.n_floors):
             j = plan.dof(k, "θ")
             out.append((b, k, f"B{b + 1}{bl.labels[j]}", float(peak[off + j]),

@@ -40,7 +40,7 @@ each ground type A–E, ``(S, T_B [s], T_C [s], T_D [s])``. A National Annex may
 others (give them as a table)."""
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class DesignSpectrum:
     """A design spectrum given as a table, linearly interpolated in the period.
 
@@ -76,45 +76,54 @@ class DesignSpectrum:
 
     periods: FloatArray
     values: FloatArray
-    kind: str = "Sa"
-    units: str = "g"
-    name: str = "design spectrum"
-    formula: Callable[[FloatArray], FloatArray] | None = field(default=None, repr=False)
-    corner_periods: FloatArray | None = field(default=None, repr=False)
+    kind: str
+    units: str
+    name: str
+    formula: Callable[[FloatArray], FloatArray] | None = field(repr=False)
+    corner_periods: FloatArray | None = field(repr=False)
     _sd: FloatArray = field(init=False, repr=False)
 
-    def __post_init__(self) -> None:
-        t = np.asarray(self.periods, dtype=float).ravel()
-        v = np.asarray(self.values, dtype=float).ravel()
+    def __init__(self, periods: ArrayLike, values: ArrayLike, kind: str = "Sa",
+                 units: str = "g", name: str = "design spectrum",
+                 formula: Callable[[FloatArray], FloatArray] | None = None,
+                 corner_periods: ArrayLike | None = None) -> None:
+        t = np.asarray(periods, dtype=float).ravel()
+        v = np.asarray(values, dtype=float).ravel()
         if t.size < 2 or t.size != v.size:
-            raise ValueError(f"spectrum {self.name!r}: need at least 2 periods and as many "
+            raise ValueError(f"spectrum {name!r}: need at least 2 periods and as many "
                              f"values (got {t.size} periods, {v.size} values)")
         if not (np.all(np.isfinite(t)) and np.all(np.isfinite(v))):
-            raise ValueError(f"spectrum {self.name!r}: periods and values must be finite")
+            raise ValueError(f"spectrum {name!r}: periods and values must be finite")
         if t[0] < 0 or np.any(np.diff(t) <= 0):
-            raise ValueError(f"spectrum {self.name!r}: periods must be >= 0 and strictly "
+            raise ValueError(f"spectrum {name!r}: periods must be >= 0 and strictly "
                              f"increasing (got {t.tolist()})")
         if np.any(v < 0):
-            raise ValueError(f"spectrum {self.name!r}: values must be >= 0 (got {v.tolist()})")
-        kind = {"sd": "Sd", "sa": "Sa"}.get(str(self.kind).lower())
-        if kind is None:
-            raise ValueError(f"spectrum {self.name!r}: kind must be 'Sd' or 'Sa' "
-                             f"(got {self.kind!r})")
-        if kind == "Sd":
-            if self.units != "m":
-                raise ValueError(f"spectrum {self.name!r}: Sd values are in m (got units="
-                                 f"{self.units!r})")
+            raise ValueError(f"spectrum {name!r}: values must be >= 0 (got {v.tolist()})")
+        spelled = {"sd": "Sd", "sa": "Sa"}.get(str(kind).lower())
+        if spelled is None:
+            raise ValueError(f"spectrum {name!r}: kind must be 'Sd' or 'Sa' "
+                             f"(got {kind!r})")
+        if spelled == "Sd":
+            if units != "m":
+                raise ValueError(f"spectrum {name!r}: Sd values are in m (got units="
+                                 f"{units!r})")
             sd = v
         else:
-            sa = v * acceleration_factor(self.units)
+            sa = v * acceleration_factor(units)
             sd = sa * (t / (2.0 * np.pi)) ** 2
-        object.__setattr__(self, "periods", t)
-        object.__setattr__(self, "values", v)
-        object.__setattr__(self, "kind", kind)
-        object.__setattr__(self, "_sd", sd)
-        if self.corner_periods is not None:
-            c = np.asarray(self.corner_periods, dtype=float).ravel()
-            object.__setattr__(self, "corner_periods", np.unique(c[(c >= t[0]) & (c <= t[-1])]))
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "periods", t)
+        frozen_set(self, "values", v)
+        frozen_set(self, "kind", spelled)
+        frozen_set(self, "units", units)
+        frozen_set(self, "name", name)
+        frozen_set(self, "formula", formula)
+        frozen_set(self, "_sd", sd)
+        corners = None
+        if corner_periods is not None:
+            c = np.asarray(corner_periods, dtype=float).ravel()
+            corners = np.unique(c[(c >= t[0]) & (c <= t[-1])])
+        frozen_set(self, "corner_periods", corners)
 
     @property
     def corners(self) -> FloatArray:

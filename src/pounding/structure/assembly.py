@@ -103,7 +103,7 @@ class AssembledSystem(NamedTuple):
         return int(self.offsets[b] + i)
 
 
-def assemble(buildings: Sequence[ShearBuilding]) -> AssembledSystem:
+def assemble(buildings: Sequence[Building]) -> AssembledSystem:
     """Stack buildings into one block-diagonal system (no coupling between them).
 
     Parameters

@@ -123,13 +123,14 @@ class DampingModel(ABC):
     def readable(self) -> str:
         """One line for people: the model and its parameters (the default: the class name
         and every field in three significant digits)."""
-        values = ([(f.name, getattr(self, f.name)) for f in fields(self)]  # type: ignore[arg-type]
-                  if is_dataclass(self) else [])
+        values: list[tuple[str, object]] = []
+        if is_dataclass(self):
+            values = [(f.name, getattr(self, f.name)) for f in fields(self)]
         return f"{type(self).__name__}: " + ", ".join(
             f"{k} = {format_value(v) if isinstance(v, float) else v}" for k, v in values)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class RayleighDamping(DampingModel):
     """Rayleigh (mass- plus stiffness-proportional) damping, ``C = a₀ M + a₁ K``.
 
@@ -157,34 +158,37 @@ class RayleighDamping(DampingModel):
     ``ζ = c/(2 m ω)``) exactly.
     """
 
-    zeta_i: float = 0.05
-    zeta_j: float | None = None
-    mode_i: int = 1
-    mode_j: int = 2
-    period_i: float | None = None
-    period_j: float | None = None
+    zeta_i: float
+    zeta_j: float
+    mode_i: int
+    mode_j: int
+    period_i: float | None
+    period_j: float | None
 
-    def __post_init__(self) -> None:
-        zi = _ratio("zeta_i", self.zeta_i)
-        zj = zi if self.zeta_j is None else _ratio("zeta_j", self.zeta_j)
-        object.__setattr__(self, "zeta_i", zi)
-        object.__setattr__(self, "zeta_j", zj)
-        mi = _mode_number("mode_i", self.mode_i)
-        mj = _mode_number("mode_j", self.mode_j)
-        object.__setattr__(self, "mode_i", mi)
-        object.__setattr__(self, "mode_j", mj)
-        if (self.period_i is None) != (self.period_j is None):
-            raise ValueError("period_i and period_j must be given together "
-                             f"(got period_i={self.period_i!r}, period_j={self.period_j!r})")
-        if self.period_i is not None:
-            ti = positive("period_i", self.period_i)
-            tj = positive("period_j", self.period_j)  # type: ignore[arg-type]
-            object.__setattr__(self, "period_i", ti)
-            object.__setattr__(self, "period_j", tj)
+    def __init__(self, zeta_i: float = 0.05, zeta_j: float | None = None, mode_i: int = 1,
+                 mode_j: int = 2, period_i: float | None = None,
+                 period_j: float | None = None) -> None:
+        zi = _ratio("zeta_i", zeta_i)
+        zj = zi if zeta_j is None else _ratio("zeta_j", zeta_j)
+        mi = _mode_number("mode_i", mode_i)
+        mj = _mode_number("mode_j", mode_j)
+        if period_i is not None and period_j is not None:
+            period_i = positive("period_i", period_i)
+            period_j = positive("period_j", period_j)
             # Validates distinctness and the sign of the coefficients now.
-            rayleigh_coefficients(2.0 * math.pi / ti, 2.0 * math.pi / tj, zi, zj)
+            rayleigh_coefficients(2.0 * math.pi / period_i, 2.0 * math.pi / period_j, zi, zj)
+        elif period_i is not None or period_j is not None:
+            raise ValueError("period_i and period_j must be given together "
+                             f"(got period_i={period_i!r}, period_j={period_j!r})")
         elif mi == mj:
             raise ValueError(f"mode_i and mode_j must differ (got {mi} and {mj})")
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "zeta_i", zi)
+        frozen_set(self, "zeta_j", zj)
+        frozen_set(self, "mode_i", mi)
+        frozen_set(self, "mode_j", mj)
+        frozen_set(self, "period_i", period_i)
+        frozen_set(self, "period_j", period_j)
 
     @classmethod
     def from_periods(cls, period_i: float, period_j: float, zeta_i: float = 0.05,
@@ -205,14 +209,22 @@ class RayleighDamping(DampingModel):
     @property
     def by_periods(self) -> bool:
         """True if anchored at two periods rather than two natural modes."""
-        return self.period_i is not None
+        return self.anchor_periods is not None
+
+    @property
+    def anchor_periods(self) -> tuple[float, float] | None:
+        """``(period_i, period_j)`` [s] if anchored at two periods, else None."""
+        if self.period_i is None or self.period_j is None:
+            return None
+        return self.period_i, self.period_j
 
     def readable(self) -> str:
         """``Rayleigh, ζ = 0.05 at modes 1 and 2``, ``Rayleigh, ζ = 0.05 at 0.8 s and 0.02
         at 0.2 s``."""
-        zi, zj = format_value(self.zeta_i), format_value(self.zeta_j)  # type: ignore[arg-type]
-        if self.by_periods:
-            at_i, at_j = (format_value(t, "s") for t in (self.period_i, self.period_j))
+        zi, zj = format_value(self.zeta_i), format_value(self.zeta_j)
+        periods = self.anchor_periods
+        if periods is not None:
+            at_i, at_j = (format_value(t, "s") for t in periods)
             where = (f"at {at_i} and {at_j}" if zi == zj
                      else f"at {at_i} and {zj} at {at_j}")
         else:
@@ -240,10 +252,10 @@ class RayleighDamping(DampingModel):
 
     def coefficients(self, M: ArrayLike, K: ArrayLike) -> tuple[float, float]:
         """The coefficients ``(a₀ [1/s], a₁ [s])`` of ``C = a₀ M + a₁ K`` for ``(M, K)``."""
-        if self.by_periods:
-            return rayleigh_coefficients(2.0 * math.pi / self.period_i,  # type: ignore[operator]
-                                         2.0 * math.pi / self.period_j,  # type: ignore[operator]
-                                         self.zeta_i, self.zeta_j)  # type: ignore[arg-type]
+        periods = self.anchor_periods
+        if periods is not None:
+            return rayleigh_coefficients(2.0 * math.pi / periods[0], 2.0 * math.pi / periods[1],
+                                         self.zeta_i, self.zeta_j)
         Mf, Kf = square_pair(M, K)
         n = Mf.shape[0]
         self.check(n)
@@ -252,7 +264,7 @@ class RayleighDamping(DampingModel):
             w = float(omega[0])
             return self.zeta_i * w, self.zeta_i / w
         return rayleigh_coefficients(float(omega[self.mode_i - 1]), float(omega[self.mode_j - 1]),
-                                     self.zeta_i, self.zeta_j)  # type: ignore[arg-type]
+                                     self.zeta_i, self.zeta_j)
 
     def ratio(self, omega: ArrayLike, M: ArrayLike, K: ArrayLike) -> NDArray[np.float64]:
         """Damping ratio ``ζ(ω) = a₀/(2ω) + a₁ω/2`` [-] this model gives at ``omega`` [rad/s]."""

@@ -51,12 +51,12 @@ storey yielding is the shear building's.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from pounding.hysteresis.base import StoreyLaw
 from pounding.structure.damping import DampingModel, RayleighDamping
@@ -80,7 +80,7 @@ __all__ = ["MatrixBuilding"]
 
 
 # --------------------------------------------------------------------------- the building
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class MatrixBuilding:
     """A building's linear lateral model given by its matrices.
 
@@ -144,66 +144,69 @@ class MatrixBuilding:
     K: NDArray[np.float64]
     labels: tuple[str, ...]
     elevations: NDArray[np.float64]
-    r: NDArray[np.float64] | None = None
-    C: NDArray[np.float64] | None = None
-    damping: DampingModel | None = None
-    name: str = ""
-    sources: Mapping[str, str] = field(default_factory=dict)
-    floors: Sequence[int | str] | None = None
+    r: NDArray[np.float64]
+    C: NDArray[np.float64] | None
+    damping: DampingModel | None
+    name: str
+    sources: Mapping[str, str]
+    floors: tuple[int, ...]
 
-    def __post_init__(self) -> None:
-        if not isinstance(self.name, str):
-            raise ValueError(f"name must be a string (got {self.name!r})")
-        if not isinstance(self.sources, Mapping):
+    def __init__(self, M: ArrayLike, K: ArrayLike, labels: Sequence[str], elevations: ArrayLike,
+                 r: ArrayLike | None = None, C: ArrayLike | None = None,
+                 damping: DampingModel | None = None, name: str = "",
+                 sources: Mapping[str, str] = MappingProxyType({}),
+                 floors: Sequence[int | str] | None = None) -> None:
+        if not isinstance(name, str):
+            raise ValueError(f"name must be a string (got {name!r})")
+        if not isinstance(sources, Mapping):
             raise ValueError(f"sources must map matrix names to where they came from "
-                             f"(got {self.sources!r})")
-        sources = MappingProxyType({str(k): str(v) for k, v in self.sources.items()})
-        who = f"building {self.name!r}" if self.name else "matrix building"
+                             f"(got {sources!r})")
+        given = MappingProxyType({str(k): str(v) for k, v in sources.items()})
+        who = f"building {name!r}" if name else "matrix building"
 
         def where(key: str) -> str:
-            return sources.get(key, who)
+            return given.get(key, who)
 
         def _from(key: str) -> str:
-            return f" (from {sources[key]})" if key in sources else ""
+            return f" (from {given[key]})" if key in given else ""
 
-        M = check_matrix(self.M, "M", where("M"))
-        K = check_matrix(self.K, "K", where("K"))
-        if K.shape != M.shape:
-            raise ValueError(f"{where('K')}: K is {matrix_shape(K)} but M{_from('M')} is "
-                             f"{matrix_shape(M)}; they must be the same size")
-        n = M.shape[0]
-        labels = dof_labels(self.labels, n, who)
-        elevations = dof_vector("elevations", self.elevations, n, who)
-        floors = floor_indices(self.floors, labels, who)
+        M_ = check_matrix(M, "M", where("M"))
+        K_ = check_matrix(K, "K", where("K"))
+        if K_.shape != M_.shape:
+            raise ValueError(f"{where('K')}: K is {matrix_shape(K_)} but M{_from('M')} is "
+                             f"{matrix_shape(M_)}; they must be the same size")
+        n = M_.shape[0]
+        labels_ = dof_labels(labels, n, who)
+        elevations_ = dof_vector("elevations", elevations, n, who)
+        floors_ = floor_indices(floors, labels_, who)
         r0 = np.zeros(n)
-        r0[list(floors)] = 1.0
-        r = dof_vector("r", r0 if self.r is None else self.r, n, who)
-        if not np.any(r != 0.0):
+        r0[list(floors_)] = 1.0
+        r_ = dof_vector("r", r0 if r is None else r, n, who)
+        if not np.any(r_ != 0.0):
             raise ValueError(f"{who}: r is all zero: the ground motion would not move the "
                              "building")
-        diagonal, _, _ = is_diagonal(M)
+        diagonal, _, _ = is_diagonal(M_)
         if diagonal:
             for k in range(n):
-                if not M[k, k] > 0.0:
-                    raise ValueError(f"{where('M')}: M[{k},{k}] = {M[k, k]:g} must be > 0: every "
+                if not M_[k, k] > 0.0:
+                    raise ValueError(f"{where('M')}: M[{k},{k}] = {M_[k, k]:g} must be > 0: every "
                                      "degree of freedom needs a positive mass (condense "
                                      "massless ones out first)")
-        check_positive_definite(M, "M", where("M"),
+        check_positive_definite(M_, "M", where("M"),
                                  "every degree of freedom needs mass; condense massless ones "
                                  "out first")
-        check_positive_definite(K, "K", where("K"),
+        check_positive_definite(K_, "K", where("K"),
                                  "the building must be restrained against the ground, with no "
                                  "mechanism")
-        if self.C is not None and self.damping is not None:
+        if C is not None and damping is not None:
             raise ValueError(f"{who}: give a damping matrix C or a damping model, not both")
-        damping: DampingModel | None = self.damping
-        if self.C is not None:
-            C = check_matrix(self.C, "C", where("C"))
-            if C.shape != M.shape:
-                raise ValueError(f"{where('C')}: C is {matrix_shape(C)} but M{_from('M')} is "
-                                 f"{matrix_shape(M)}; they must be the same size")
-            scale = float(np.max(np.abs(C)))
-            lam = smallest_eigenvalue(C)
+        if C is not None:
+            C_ = check_matrix(C, "C", where("C"))
+            if C_.shape != M_.shape:
+                raise ValueError(f"{where('C')}: C is {matrix_shape(C_)} but M{_from('M')} is "
+                                 f"{matrix_shape(M_)}; they must be the same size")
+            scale = float(np.max(np.abs(C_)))
+            lam = smallest_eigenvalue(C_)
             if lam < -SYMMETRY_RTOL * scale:
                 raise ValueError(f"{where('C')}: C must be positive semi-definite (damping "
                                  f"cannot add energy); its smallest eigenvalue is {lam:.6g}")
@@ -214,17 +217,21 @@ class MatrixBuilding:
                 raise ValueError(f"{who}: damping must be a DampingModel such as "
                                  f"RayleighDamping or ModalDamping (got {damping!r})")
             damping.check(n)
-            C = np.ascontiguousarray(damping.matrix(M, K), dtype=np.float64)
-        object.__setattr__(self, "M", readonly(M))
-        object.__setattr__(self, "K", readonly(K))
-        object.__setattr__(self, "labels", labels)
-        object.__setattr__(self, "elevations", elevations)
-        object.__setattr__(self, "r", r)
-        object.__setattr__(self, "C", None if self.C is None else readonly(C))
-        object.__setattr__(self, "damping", damping)
-        object.__setattr__(self, "sources", sources)
-        object.__setattr__(self, "floors", floors)
-        object.__setattr__(self, "_C", readonly(C))
+            C_ = np.ascontiguousarray(damping.matrix(M_, K_), dtype=np.float64)
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "M", readonly(M_))
+        frozen_set(self, "K", readonly(K_))
+        frozen_set(self, "labels", labels_)
+        frozen_set(self, "elevations", elevations_)
+        frozen_set(self, "r", r_)
+        frozen_set(self, "C", None if C is None else readonly(C_))
+        frozen_set(self, "damping", damping)
+        frozen_set(self, "name", name)
+        frozen_set(self, "sources", given)
+        frozen_set(self, "floors", floors_)
+        # the matrices, read-only (private: the methods hand out copies)
+        self._C: NDArray[np.float64]
+        frozen_set(self, "_C", readonly(C_))
 
     # ----------------------------------------------------------------- constructors
     @classmethod
@@ -261,7 +268,7 @@ class MatrixBuilding:
 
     def damping_matrix(self) -> NDArray[np.float64]:
         """``C`` [N·s/m], shape (n, n): the given matrix, or the damping model's."""
-        return np.array(self._C)  # type: ignore[attr-defined]
+        return np.array(self._C)
 
     def influence_vector(self) -> NDArray[np.float64]:
         """``r`` [-], shape (n,), a fresh copy."""
@@ -314,7 +321,7 @@ class MatrixBuilding:
     def total_mass(self) -> float:
         """The mass the ground motion moves, ``rᵀ M r`` [kg] (the sum of the floor masses
         for a building whose DOFs are all floors)."""
-        return float(self.r @ self.M @ self.r)  # type: ignore[operator]
+        return float(self.r @ self.M @ self.r)
 
     @property
     def storey_law(self) -> None:
@@ -361,7 +368,7 @@ class MatrixBuilding:
         """Natural modes: ``K φ = ω² M φ`` solved by :func:`scipy.linalg.eigh` (Chopra §10.2),
         longest period first, mass-normalised shapes, with this building's ``C`` and ``r``
         (:func:`pounding.structure.modal.modal_result`)."""
-        return modal_result(self.M, self.K, self._C, self.r)  # type: ignore[attr-defined]
+        return modal_result(self.M, self.K, self._C, self.r)
 
     @property
     def fundamental_period(self) -> float:
@@ -465,8 +472,17 @@ class MatrixBuilding:
         return (np.array_equal(self.M, other.M) and np.array_equal(self.K, other.K)
                 and self.labels == other.labels
                 and np.array_equal(self.elevations, other.elevations)
-                and np.array_equal(self.r, other.r)  # type: ignore[arg-type]
+                and np.array_equal(self.r, other.r)
                 and same_c and self.damping == other.damping and self.name == other.name
                 and self.floors == other.floors)
 
     __hash__ = None  # type: ignore[assignment]
+
+    # pickling (multiprocessing, copy.deepcopy): ``sources`` is a read-only mapping proxy,
+    # which cannot be pickled; it travels as a dict and is made read-only again
+    def __getstate__(self) -> dict[str, Any]:
+        return {**self.__dict__, "sources": dict(self.sources)}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self.__dict__.update(state)
+        object.__setattr__(self, "sources", MappingProxyType(dict(state["sources"])))

@@ -184,7 +184,9 @@ def _read_npz(path: Path, name: str) -> NDArray[np.float64]:
     if not isinstance(archive, np.lib.npyio.NpzFile):
         raise ValueError(f"{path}: is a single .npy array, not an .npz archive; name it .npy")
     with archive:
-        members = archive.zip.namelist()
+        zipped = archive.zip  # None only once the archive is closed
+        assert zipped is not None
+        members = zipped.namelist()
         if not all(m.endswith(".npy") for m in members):
             # a zip archive of other files: its member names are not shown either
             raise ValueError(f"{path}: a zip archive that is not a NumPy .npz archive (not "
@@ -193,8 +195,8 @@ def _read_npz(path: Path, name: str) -> NDArray[np.float64]:
             held = ", ".join(archive.files) or "nothing"
             raise ValueError(f"{path}: has no array {name!r} (it holds {held}); a building's "
                              ".npz holds M, K and optionally C")
-        info = archive.zip.getinfo(name + ".npy")
-        with archive.zip.open(info) as member:
+        info = zipped.getinfo(name + ".npy")
+        with zipped.open(info) as member:
             _npy_header(member, path, f"array {name!r}", info.file_size)
         try:
             arr = archive[name]
@@ -358,5 +360,5 @@ def read_matrix_building(M: StrPath, K: StrPath | None = None, C: StrPath | None
             Cx = read_matrix(m_path, "C")
             sources["C"] = str(m_path)
     return MatrixBuilding(M=Mx, K=Kx, labels=tuple(labels),
-                          elevations=elevations, r=r,  # type: ignore[arg-type]
+                          elevations=elevations, r=r,
                           C=Cx, damping=damping, name=name, sources=sources, floors=floors)

@@ -44,7 +44,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -62,11 +62,11 @@ __all__ = ["LateralElement", "PlanBuilding", "plan_stiffness_matrix"]
 FLOOR_DOFS: tuple[str, str, str] = ("x", "y", "θ")
 
 
-def _default_damping() -> RayleighDamping:
-    """5 % Rayleigh damping anchored at modes 1 and 3: in a building in plan the first three
-    modes are usually the first of each family (x, y, torsion), and a symmetric building
-    has modes 1 and 2 at the same period, which cannot anchor Rayleigh damping."""
-    return RayleighDamping(0.05, mode_i=1, mode_j=3)
+_DEFAULT_DAMPING = RayleighDamping(0.05, mode_i=1, mode_j=3)
+"""A building in plan's damping when none is given: 5 % Rayleigh damping anchored at modes
+1 and 3: in a building in plan the first three modes are usually the first of each family
+(x, y, torsion), and a symmetric building has modes 1 and 2 at the same period, which cannot
+anchor Rayleigh damping."""
 
 
 @dataclass(frozen=True)
@@ -91,7 +91,7 @@ class LateralElement:
     x: float
     y: float
     direction: str | float
-    stiffnesses: Any
+    stiffnesses: ArrayLike
     name: str = ""
 
     def __post_init__(self) -> None:
@@ -127,7 +127,7 @@ class LateralElement:
         return np.array(k, dtype=float)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class PlanBuilding:
     """A multi-storey building with rigid floors in plan: three DOFs a floor (u_x, u_y, θ).
 
@@ -157,7 +157,7 @@ class PlanBuilding:
         the distance from the centre of mass to the farthest corner of the plan (the
         floor's whole mass there): no floor on the plan has more.
     damping : DampingModel
-        Default 5 % Rayleigh damping at modes 1 and 3 (see :func:`_default_damping`).
+        Default 5 % Rayleigh damping at modes 1 and 3 (see :data:`_DEFAULT_DAMPING`).
     name : str
         A label.
     site_y : float
@@ -184,56 +184,61 @@ class PlanBuilding:
     heights: NDArray[np.float64]
     width: float
     depth: float
-    elements: Sequence[LateralElement] = ()
-    mass_centres: Any = None
-    inertias: Any = None
-    damping: DampingModel = field(default_factory=_default_damping)
-    name: str = ""
-    site_y: float = 0.0
-    stiffness: Any = None
+    elements: tuple[LateralElement, ...]
+    mass_centres: NDArray[np.float64]
+    inertias: NDArray[np.float64]
+    damping: DampingModel
+    name: str
+    site_y: float
+    stiffness: NDArray[np.float64] | None
 
-    def __post_init__(self) -> None:
-        m = floor_vector("masses", self.masses)
-        h = floor_vector("heights", self.heights)
+    def __init__(self, masses: ArrayLike, heights: ArrayLike, width: float, depth: float,
+                 elements: Sequence[LateralElement] = (), mass_centres: ArrayLike | None = None,
+                 inertias: ArrayLike | None = None, damping: DampingModel = _DEFAULT_DAMPING,
+                 name: str = "", site_y: float = 0.0, stiffness: ArrayLike | None = None
+                 ) -> None:
+        m = floor_vector("masses", masses)
+        h = floor_vector("heights", heights)
         n = m.size
         if h.size != n:
             raise ValueError(f"heights must have one value per floor, as many as masses ({n}) "
                              f"(got {h.size})")
-        for label in ("width", "depth"):
-            v = getattr(self, label)
+        sizes = []
+        for label, v in (("width", width), ("depth", depth)):
             if not isinstance(v, (int, float, np.floating, np.integer)) or not v > 0 \
                     or not math.isfinite(v):
                 raise ValueError(f"{label} must be a finite number > 0 [m] (got {v!r})")
-            object.__setattr__(self, label, float(v))
-        if not isinstance(self.site_y, (int, float, np.floating, np.integer)) \
-                or not math.isfinite(self.site_y):
-            raise ValueError(f"site_y must be a finite number [m] (got {self.site_y!r})")
-        object.__setattr__(self, "site_y", float(self.site_y))
-        if self.mass_centres is None:
-            centres = np.tile([0.5 * self.width, 0.5 * self.depth], (n, 1))
+            sizes.append(float(v))
+        width, depth = sizes
+        if not isinstance(site_y, (int, float, np.floating, np.integer)) \
+                or not math.isfinite(site_y):
+            raise ValueError(f"site_y must be a finite number [m] (got {site_y!r})")
+        site_y = float(site_y)
+        if mass_centres is None:
+            centres = np.tile([0.5 * width, 0.5 * depth], (n, 1))
         else:
-            centres = np.asarray(self.mass_centres, dtype=float)
+            centres = np.asarray(mass_centres, dtype=float)
             if centres.shape == (2,):
                 centres = np.tile(centres, (n, 1))
             if centres.shape != (n, 2) or not np.all(np.isfinite(centres)):
                 raise ValueError(f"mass_centres must be finite (x, y) pairs [m], one a floor "
                                  f"({n}) (got shape {centres.shape})")
-            outside = np.flatnonzero((centres[:, 0] < 0.0) | (centres[:, 0] > self.width)
-                                     | (centres[:, 1] < 0.0) | (centres[:, 1] > self.depth))
+            outside = np.flatnonzero((centres[:, 0] < 0.0) | (centres[:, 0] > width)
+                                     | (centres[:, 1] < 0.0) | (centres[:, 1] > depth))
             if outside.size:
                 k = int(outside[0])
                 raise ValueError(f"mass_centres[{k}] must lie inside the plan, x in [0, "
-                                 f"{self.width:g}] and y in [0, {self.depth:g}] m (got "
+                                 f"{width:g}] and y in [0, {depth:g}] m (got "
                                  f"[{centres[k, 0]:g}, {centres[k, 1]:g}])")
-        if self.inertias is None:
-            inertia = m * (self.width ** 2 + self.depth ** 2) / 12.0
+        if inertias is None:
+            inertia = m * (width ** 2 + depth ** 2) / 12.0
         else:
-            inertia = floor_vector("inertias", self.inertias)
+            inertia = floor_vector("inertias", inertias)
             if inertia.size != n:
                 raise ValueError(f"inertias must have one value per floor ({n}) "
                                  f"(got {inertia.size})")
             rho2 = np.max([(cx - centres[:, 0]) ** 2 + (cy - centres[:, 1]) ** 2
-                           for cx in (0.0, self.width) for cy in (0.0, self.depth)], axis=0)
+                           for cx in (0.0, width) for cy in (0.0, depth)], axis=0)
             over = np.flatnonzero(inertia > m * rho2 * (1.0 + 1e-12))
             if over.size:
                 k = int(over[0])
@@ -241,42 +246,52 @@ class PlanBuilding:
                                  f"(mass {m[k]:g} kg, the farthest plan corner "
                                  f"{math.sqrt(rho2[k]):.6g} m from its centre of mass) (got "
                                  f"{inertia[k]:g})")
-        elements = tuple(self.elements)
-        if not elements and self.stiffness is None:
+        elements = tuple(elements)
+        if not elements and stiffness is None:
             raise ValueError("elements: give the lateral load-resisting elements (none given), "
                              "or the stiffness matrix")
-        if elements and self.stiffness is not None:
+        if elements and stiffness is not None:
             raise ValueError("stiffness: give the elements or the stiffness matrix, not both")
         for i, e in enumerate(elements):
             if not isinstance(e, LateralElement):
                 raise ValueError(f"elements[{i}] must be a LateralElement (got {e!r})")
             e.storey_stiffnesses(n)
-            for key, value, size in (("x", e.x, self.width), ("y", e.y, self.depth)):
+            for key, value, size in (("x", e.x, width), ("y", e.y, depth)):
                 if not 0.0 <= value <= size:
                     raise ValueError(f"elements[{i}].{key} must lie inside the plan, in [0, "
                                      f"{size:g}] m (got {value:g})")
-        if not isinstance(self.damping, DampingModel):
+        if not isinstance(damping, DampingModel):
             raise ValueError(f"damping must be a DampingModel such as RayleighDamping or "
-                             f"ModalDamping (got {self.damping!r})")
-        if not isinstance(self.name, str):
-            raise ValueError(f"name must be a string (got {self.name!r})")
-        object.__setattr__(self, "masses", readonly(m))
-        object.__setattr__(self, "heights", readonly(h))
-        object.__setattr__(self, "mass_centres", readonly(centres))
-        object.__setattr__(self, "inertias", readonly(inertia))
-        object.__setattr__(self, "elements", elements)
+                             f"ModalDamping (got {damping!r})")
+        if not isinstance(name, str):
+            raise ValueError(f"name must be a string (got {name!r})")
         M = readonly(np.diag(np.column_stack([m, m, inertia]).ravel()))
-        if self.stiffness is None:
+        if stiffness is None:
             K = readonly(plan_stiffness_matrix(elements, centres))
         else:
-            K = readonly(_given_stiffness(self.stiffness, 3 * n))
-        object.__setattr__(self, "stiffness", None if self.stiffness is None else K)
+            K = readonly(_given_stiffness(stiffness, 3 * n))
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "masses", readonly(m))
+        frozen_set(self, "heights", readonly(h))
+        frozen_set(self, "width", width)
+        frozen_set(self, "depth", depth)
+        frozen_set(self, "elements", elements)
+        frozen_set(self, "mass_centres", readonly(centres))
+        frozen_set(self, "inertias", readonly(inertia))
+        frozen_set(self, "damping", damping)
+        frozen_set(self, "name", name)
+        frozen_set(self, "site_y", site_y)
+        frozen_set(self, "stiffness", None if stiffness is None else K)
         self._check_restrained(K)
-        self.damping.check(3 * n)
-        C = readonly(self.damping.matrix(M, K))
-        object.__setattr__(self, "_M", M)
-        object.__setattr__(self, "_K", K)
-        object.__setattr__(self, "_C", C)
+        damping.check(3 * n)
+        C = readonly(damping.matrix(M, K))
+        # the matrices, read-only (private: the methods hand out copies)
+        self._M: NDArray[np.float64]
+        self._K: NDArray[np.float64]
+        self._C: NDArray[np.float64]
+        frozen_set(self, "_M", M)
+        frozen_set(self, "_K", K)
+        frozen_set(self, "_C", C)
 
     def _check_restrained(self, K: NDArray[np.float64]) -> None:
         """Raise unless K is positive definite: the elements restrain every floor."""
@@ -348,7 +363,8 @@ class PlanBuilding:
         """Displacement [m] of a point of a floor along a direction, from DOF histories
         ``u[..., N]`` (see :meth:`point_weights`)."""
         arr = np.asarray(u, dtype=float)
-        return sum(w * arr[..., d] for d, w in self.point_weights(floor, x, y, direction))
+        return sum((w * arr[..., d] for d, w in self.point_weights(floor, x, y, direction)),
+                   np.zeros(arr.shape[:-1]))
 
     def stiffness_eccentricity(self) -> NDArray[np.float64]:
         """Centre of stiffness minus centre of mass of each storey ``(e_x, e_y)`` [m].
@@ -380,15 +396,15 @@ class PlanBuilding:
     # ----------------------------------------------------------------- matrices
     def mass_matrix(self) -> NDArray[np.float64]:
         """``diag(m_1, m_1, I_1, m_2, …)`` [kg, kg·m²], (3n, 3n)."""
-        return np.array(self._M)  # type: ignore[attr-defined]
+        return np.array(self._M)
 
     def stiffness_matrix(self) -> NDArray[np.float64]:
         """Stiffness matrix [N/m, N, N·m] from the elements (:func:`plan_stiffness_matrix`)."""
-        return np.array(self._K)  # type: ignore[attr-defined]
+        return np.array(self._K)
 
     def damping_matrix(self) -> NDArray[np.float64]:
         """Damping matrix from the building's damping model."""
-        return np.array(self._C)  # type: ignore[attr-defined]
+        return np.array(self._C)
 
     def influence_matrix(self) -> NDArray[np.float64]:
         """``R`` (3n × 2): column 0 the ground's x component, column 1 its y component."""
@@ -399,7 +415,7 @@ class PlanBuilding:
 
     def modes(self) -> ModalResult:
         """Natural modes of the building in plan (lateral–torsional)."""
-        return modal_result(self._M, self._K, self._C)  # type: ignore[attr-defined]
+        return modal_result(self._M, self._K, self._C)
 
     @property
     def fundamental_period(self) -> float:
@@ -415,7 +431,7 @@ class PlanBuilding:
         cached = self.__dict__.get("_as_matrix")
         if cached is None:
             cached = PlanMatrixBuilding(
-                M=self._M, K=self._K, C=self._C,  # type: ignore[attr-defined]
+                M=self._M, K=self._K, C=self._C,
                 labels=tuple(self.dof_labels()), elevations=np.repeat(self.floor_levels, 3),
                 r=self.influence_matrix()[:, 0], floors=list(range(0, self.n, 3)),
                 name=self.name, plan=self)
@@ -432,7 +448,7 @@ class PlanBuilding:
                 and (self.width, self.depth, self.site_y, self.name, self.damping,
                      self.elements) == (other.width, other.depth, other.site_y, other.name,
                                         other.damping, other.elements)
-                and np.array_equal(self._K, other._K))  # type: ignore[attr-defined]
+                and np.array_equal(self._K, other._K))
 
     __hash__ = object.__hash__
 

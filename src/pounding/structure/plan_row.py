@@ -17,13 +17,16 @@ This module reads a building in plan through what :class:`FloorPlan` names (a
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from types import MappingProxyType
 from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from pounding.structure.assembly import shared_levels
+from pounding.structure.damping import DampingModel
 from pounding.structure.matrices import MatrixBuilding
 
 __all__ = ["FloorPlan", "PlanMatrixBuilding", "facing_points", "plan_contact_points",
@@ -36,16 +39,28 @@ class FloorPlan(Protocol):
     (:class:`~pounding.structure.plan.PlanBuilding`): its plan's size and place on the site,
     its floors, and the kinematics of a point of a rigid floor."""
 
-    width: float
-    """Plan dimension along x [m]."""
-    depth: float
-    """Plan dimension along y [m]."""
-    site_y: float
-    """Site y of the plan's ``y = 0`` edge [m]."""
+    @property
+    def width(self) -> float:
+        """Plan dimension along x [m]."""
+        ...
+
+    @property
+    def depth(self) -> float:
+        """Plan dimension along y [m]."""
+        ...
+
+    @property
+    def site_y(self) -> float:
+        """Site y of the plan's ``y = 0`` edge [m]."""
+        ...
 
     @property
     def n_floors(self) -> int:
         """Number of floors."""
+        ...
+
+    def dof(self, floor: int, component: str) -> int:
+        """The DOF of ``floor`` (0-based) and ``component`` ``"x"``, ``"y"`` or ``"θ"``."""
         ...
 
     def influence_matrix(self) -> NDArray[np.float64]:
@@ -78,7 +93,7 @@ def facing_points(left: FloorPlan, right: FloorPlan) -> list[float]:
     return [lo, hi]
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class PlanMatrixBuilding(MatrixBuilding):
     """A :class:`~pounding.structure.plan.PlanBuilding` as it stands in a row of buildings:
     a matrix building (so that every part of the engine and its outputs takes it as one: DOF
@@ -86,26 +101,34 @@ class PlanMatrixBuilding(MatrixBuilding):
     (:attr:`plan`) for the influence matrix of two ground components and the kinematics of
     its façade points. Made by
     :meth:`~pounding.structure.plan.PlanBuilding.as_matrix_building`;
-    :class:`~pounding.model.PoundingModel` makes it of every PlanBuilding it is given."""
+    :class:`~pounding.model.PoundingModel` makes it of every PlanBuilding it is given.
 
-    plan: FloorPlan | None = None
+    Parameters are those of :class:`~pounding.structure.MatrixBuilding`, and ``plan``
+    (keyword only): the building in plan (:class:`FloorPlan`)."""
 
-    def __post_init__(self) -> None:
-        if not isinstance(self.plan, FloorPlan):
-            raise ValueError(f"plan must be a PlanBuilding (got {self.plan!r})")
-        super().__post_init__()
+    plan: FloorPlan
+
+    def __init__(self, M: ArrayLike, K: ArrayLike, labels: Sequence[str], elevations: ArrayLike,
+                 r: ArrayLike | None = None, C: ArrayLike | None = None,
+                 damping: DampingModel | None = None, name: str = "",
+                 sources: Mapping[str, str] = MappingProxyType({}),
+                 floors: Sequence[int | str] | None = None, *, plan: FloorPlan) -> None:
+        if not isinstance(plan, FloorPlan):
+            raise ValueError(f"plan must be a PlanBuilding (got {plan!r})")
+        object.__setattr__(self, "plan", plan)  # the attributes of a frozen dataclass
+        super().__init__(M, K, labels, elevations, r, C, damping, name, sources, floors)
 
     def influence_matrix(self) -> NDArray[np.float64]:
         """``R`` (3n × 2) of the plan
         (:meth:`~pounding.structure.plan.PlanBuilding.influence_matrix`)."""
-        return self.plan.influence_matrix()  # type: ignore[union-attr]
+        return self.plan.influence_matrix()
 
     def point_displacement(self, u: ArrayLike, floor: int, x: float, y: float,
                            direction: str | float = "x") -> NDArray[np.float64]:
         """Displacement [m] of a point ``(x, y)`` (plan coordinates) of ``floor`` (0-based)
         from this building's DOF histories ``u[..., 3n]``
         (:meth:`~pounding.structure.plan.PlanBuilding.point_displacement`)."""
-        return self.plan.point_displacement(u, floor, x, y, direction)  # type: ignore[union-attr]
+        return self.plan.point_displacement(u, floor, x, y, direction)
 
 
 def _plan_of(building: Any) -> FloorPlan | None:
@@ -133,13 +156,13 @@ def plan_contact_points(a: Any, b: Any, tol: float = 1e-6
         planar floor); ``y``: site y of the point [m]. Sorted by elevation, then y.
     """
     pa, pb = _plan_of(a), _plan_of(b)
-    if pa is None and pb is None:
-        raise ValueError("plan_contact_points: neither building is in plan")
+    one = pa if pb is None else pb  # the one building in plan, if only one is
     if pa is not None and pb is not None:
         ys = facing_points(pa, pb)
+    elif one is not None:  # a planar floor faces its whole façade
+        ys = [one.site_y, one.site_y + one.depth]
     else:
-        p = pa if pa is not None else pb
-        ys = [p.site_y, p.site_y + p.depth]  # type: ignore[union-attr]
+        raise ValueError("plan_contact_points: neither building is in plan")
     rows = []
     levels = np.asarray(a.floor_levels)
     for i, j in shared_levels(a, b, tol):  # floors at the same elevation, u_x DOFs
@@ -183,8 +206,8 @@ def point_history(result: Any, building: int, floor: int, x: float, y: float,
     if not isinstance(b, PlanMatrixBuilding):
         raise ValueError(f"building {building} ({b.name!r}) is not in plan: its DOFs are "
                          "translations along the row; read result.displacement")
-    if not 0 <= floor < b.plan.n_floors:  # type: ignore[union-attr]
-        raise ValueError(f"floor must be in [0, {b.plan.n_floors - 1}] "  # type: ignore[union-attr]
+    if not 0 <= floor < b.plan.n_floors:
+        raise ValueError(f"floor must be in [0, {b.plan.n_floors - 1}] "
                          f"(got {floor!r})")
     off = int(model.system.offsets[building])
     u = np.asarray(result.displacement)[:, off: off + b.n]

@@ -25,7 +25,8 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -40,6 +41,9 @@ from pounding.structure.modal import ModalResult, modes
 from pounding.validation import positive
 
 __all__ = ["ShearBuilding", "shear_stiffness_matrix"]
+
+_DEFAULT_DAMPING = RayleighDamping()
+"""A building's damping when none is given: 5 % Rayleigh damping at modes 1 and 2."""
 
 
 def shear_stiffness_matrix(stiffnesses: ArrayLike) -> NDArray[np.float64]:
@@ -91,7 +95,7 @@ def _storey_indices(value: Any, n: int, has_law: bool) -> tuple[int, ...]:
     return tuple(sorted(idx))
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class ShearBuilding:
     """A multi-storey shear building with lumped floor masses (n storeys, n DOFs).
 
@@ -144,46 +148,58 @@ class ShearBuilding:
     masses: NDArray[np.float64]
     stiffnesses: NDArray[np.float64]
     heights: NDArray[np.float64]
-    damping: DampingModel = field(default_factory=RayleighDamping)
-    name: str = ""
-    storey_law: StoreyLaw | None = None
-    yielding_storeys: tuple[int, ...] | None = None
-    isolator: Any = None
+    damping: DampingModel
+    name: str
+    storey_law: StoreyLaw | None
+    yielding_storeys: tuple[int, ...] | None
+    isolator: Isolator | None
 
-    def __post_init__(self) -> None:
-        m = floor_vector("masses", self.masses)
-        k = floor_vector("stiffnesses", self.stiffnesses)
-        h = floor_vector("heights", self.heights)
+    def __init__(self, masses: ArrayLike, stiffnesses: ArrayLike, heights: ArrayLike,
+                 damping: DampingModel = _DEFAULT_DAMPING, name: str = "",
+                 storey_law: StoreyLaw | None = None,
+                 yielding_storeys: Sequence[int] | None = None,
+                 isolator: Isolator | None = None) -> None:
+        m = floor_vector("masses", masses)
+        k = floor_vector("stiffnesses", stiffnesses)
+        h = floor_vector("heights", heights)
         for label, arr in (("stiffnesses", k), ("heights", h)):
             if arr.size != m.size:
                 raise ValueError(f"{label} must have one value per floor, as many as masses "
                                  f"({m.size}) (got {arr.size})")
-        if not isinstance(self.damping, DampingModel):
+        if not isinstance(damping, DampingModel):
             raise ValueError(f"damping must be a DampingModel such as RayleighDamping or "
-                             f"ModalDamping (got {self.damping!r})")
-        if not isinstance(self.name, str):
-            raise ValueError(f"name must be a string (got {self.name!r})")
-        if self.storey_law is not None and not isinstance(self.storey_law, StoreyLaw):
+                             f"ModalDamping (got {damping!r})")
+        if not isinstance(name, str):
+            raise ValueError(f"name must be a string (got {name!r})")
+        if storey_law is not None and not isinstance(storey_law, StoreyLaw):
             raise ValueError(f"storey_law must be a StoreyLaw such as Bilinear or BoucWen, or "
-                             f"None for linear storeys (got {self.storey_law!r})")
-        if self.yielding_storeys is not None:
-            object.__setattr__(self, "yielding_storeys",
-                               _storey_indices(self.yielding_storeys, m.size,
-                                               self.storey_law is not None))
-        if self.storey_law is not None:
+                             f"None for linear storeys (got {storey_law!r})")
+        storeys = (None if yielding_storeys is None
+                   else _storey_indices(yielding_storeys, m.size, storey_law is not None))
+        frozen_set = object.__setattr__  # the attributes of a frozen dataclass
+        frozen_set(self, "damping", damping)
+        frozen_set(self, "name", name)
+        frozen_set(self, "storey_law", storey_law)
+        frozen_set(self, "yielding_storeys", storeys)
+        frozen_set(self, "isolator", isolator)
+        if storey_law is not None:
             # one yield value, or one per yielding storey
-            self.storey_law.yield_forces(k[list(self._yielding(m.size))])
-        object.__setattr__(self, "masses", m)
-        object.__setattr__(self, "stiffnesses", k)
-        object.__setattr__(self, "heights", h)
-        self.damping.check(m.size)
+            storey_law.yield_forces(k[list(self._yielding(m.size))])
+        frozen_set(self, "masses", m)
+        frozen_set(self, "stiffnesses", k)
+        frozen_set(self, "heights", h)
+        damping.check(m.size)
         M = readonly(np.diag(m))
         K = readonly(shear_stiffness_matrix(k))
         # Build C now so that a damping model unfit for this building fails here, early.
-        C = readonly(self.damping.matrix(M, K))
-        object.__setattr__(self, "_M", M)
-        object.__setattr__(self, "_K", K)
-        object.__setattr__(self, "_C", C)
+        C = readonly(damping.matrix(M, K))
+        # the matrices, read-only (private: the methods hand out copies)
+        self._M: NDArray[np.float64]
+        self._K: NDArray[np.float64]
+        self._C: NDArray[np.float64]
+        frozen_set(self, "_M", M)
+        frozen_set(self, "_K", K)
+        frozen_set(self, "_C", C)
 
     # ----------------------------------------------------------------- constructors
     @classmethod
@@ -424,18 +440,18 @@ class ShearBuilding:
     # ----------------------------------------------------------------- matrices
     def mass_matrix(self) -> NDArray[np.float64]:
         """Diagonal mass matrix ``M = diag(m_1 … m_n)`` [kg], shape (n, n)."""
-        return np.array(self._M)  # type: ignore[attr-defined]
+        return np.array(self._M)
 
     def stiffness_matrix(self) -> NDArray[np.float64]:
         """Tridiagonal shear-building stiffness matrix ``K`` [N/m], shape (n, n).
 
         See :func:`shear_stiffness_matrix` (Chopra §9.2).
         """
-        return np.array(self._K)  # type: ignore[attr-defined]
+        return np.array(self._K)
 
     def damping_matrix(self) -> NDArray[np.float64]:
         """Damping matrix ``C`` [N·s/m], shape (n, n), from :attr:`damping`."""
-        return np.array(self._C)  # type: ignore[attr-defined]
+        return np.array(self._C)
 
     def influence_vector(self) -> NDArray[np.float64]:
         """Ground-motion influence vector ``ι`` [-], shape (n,): all ones (Chopra §9.4.1)."""

@@ -131,18 +131,31 @@ def wall_points(wall: MoatWall, building: ShearBuilding, index: int, floor_to_co
     return sorted(out, key=lambda r: r[0])
 
 
+def _neighbour(i: int, wall: MoatWall, buildings: Sequence[Building]
+               ) -> tuple[int, ShearBuilding]:
+    """The index in the row and the building beside ``walls[i]``: a shear building (one
+    line naming the wall otherwise)."""
+    b = 0 if wall.side == "left" else len(buildings) - 1
+    building = buildings[b]
+    if not isinstance(building, ShearBuilding):
+        raise ValueError(f"walls[{i}]: a moat wall stands beside a shear building; B{b + 1} "
+                         f"is a {type(building).__name__} (not supported yet)")
+    return b, building
+
+
 def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
                   contact: ContactSpec, floor_to_column: bool, tol: float,
                   start: int) -> tuple[Contact, ...]:
     """The contacts of every wall (in the order of ``walls``) with the end building of the
     row ``buildings`` beside it, numbered from ``start``; the building on the left of a
     contact is the left point. ``contact`` builds each contact's law; ``floor_to_column``
-    and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`)."""
+    and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`). The building
+    beside a wall is a :class:`ShearBuilding` (a ``ValueError`` naming the wall otherwise,
+    as :func:`check_walls`)."""
     out: list[Contact] = []
     last = len(buildings) - 1
-    for wall in walls:
-        b = 0 if wall.side == "left" else last
-        building = buildings[b]
+    for i, wall in enumerate(walls):
+        b, building = _neighbour(i, wall, buildings)
         wp = WallPoint(name=wall.name)
         for z, point in wall_points(wall, building, b, floor_to_column, tol):
             law = contact.build(point.effective_mass(building.masses), math.inf)
@@ -164,11 +177,7 @@ def check_walls(walls: Sequence[MoatWall], buildings: Sequence[Building],
         if wall.side in seen:
             raise ValueError(f"walls[{i}]: a second wall on the {wall.side} of the row")
         seen.add(wall.side)
-        b = 0 if wall.side == "left" else len(buildings) - 1
-        building = buildings[b]
-        if not isinstance(building, ShearBuilding):
-            raise ValueError(f"walls[{i}]: a moat wall stands beside a shear building; B{b + 1} "
-                             f"is a {type(building).__name__} (not supported yet)")
+        b, building = _neighbour(i, wall, buildings)
         if not wall_points(wall, building, b, floor_to_column, tol):
             raise ValueError(f"walls[{i}]: no floor of B{b + 1} at or below the wall's top "
                              f"({wall.height:g} m; lowest floor at "

@@ -96,7 +96,7 @@ def optimal_link_coefficient(model: PoundingModel, motion: GroundMotion, link_in
 
     def run(log_c: float) -> float:
         c = float(math.exp(log_c))
-        devices = [replace(d, c=c) if d is target else d for d in model.devices]
+        devices = tuple(replace(d, c=c) if d is target else d for d in model.devices)
         value = fn(simulate(replace(model, devices=devices), motion, **simulate_kw))
         seen.append((c, value))
         return value

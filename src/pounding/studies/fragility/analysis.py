@@ -184,7 +184,7 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
     fractiles = {k: np.stack([ida_fractiles(v[g]) for g in range(v.shape[0])])
                  for k, v in demands.items()}
     bs = cfg.bootstrap
-    has_run = np.isfinite(demands["pounding"]).any(axis=(0, 2))
+    has_run: NDArray[np.bool_] = np.any(np.isfinite(demands["pounding"]), axis=(0, 2))
     n_kept = int(has_run.sum())
     if n_kept < 2:
         raise ValueError("runs: fewer than two records have a successful run; see the "
@@ -207,9 +207,8 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
                 fit_from_stripes(levels, exceed, boot, bs.confidence),
                 fit_from_capacities(cap, cen, boot, bs.confidence)))
     gap = _gap_analysis(cases, gaps, demands, boot[:, :], has_run)
-    n_runs = len(cases.rows)
     return FragilityAnalysis(cases, levels, list(cases.records), list(cases.gaps), demands,
-                             fractiles, results, gap, n_runs, len(failures), failures)
+                             fractiles, results, gap, len(cases.rows), len(failures), failures)
 
 
 def _gap_analysis(cases: StudyCases, ng: NeededGaps, demands: dict[str, FloatArray],

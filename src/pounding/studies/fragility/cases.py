@@ -95,6 +95,7 @@ class StudyCases:
         values: list[Any] = [self.sources[record]]
         if self.factors is not None:
             params.append("record.scale")
+            assert self.im_target is not None  # set with the factors
             values.append(float(self.factors[record]) * level / float(self.im_target))
         else:
             params.append({"pga": "record.pga_g", "sa": "record.sa_g",
@@ -163,11 +164,13 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     from pounding.spectra import fundamental_mode
     from pounding.studies.sweep import parse_sweep
 
-    source: Path | None = None
+    source: Path | None = None  # the study file, resolved
+    given: Path | None = None  # the study file as given
     if isinstance(study, StudyConfig):
         cfg, here = study, Path(folder or ".").resolve()
     else:
-        source = Path(study).resolve()
+        given = Path(study)
+        source = given.resolve()
         cfg, here = load_study(study)
     where = str(source) if source else "study"
     model_file = here / cfg.base
@@ -211,6 +214,7 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
         if it.measure == "sa":
             rec.update(sa_period=it.period, sa_damping=it.damping)
         elif it.measure == "saavg":
+            assert saavg is not None
             rec.update(saavg_periods=list(saavg), saavg_n=it.n_periods, sa_damping=it.damping)
     note = ""
     if base_cfg.in_plan:
@@ -225,7 +229,7 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
                    if base_cfg.record.two_components else ""))
     base["record"] = rec
     cases = StudyCases(config=cfg, source=source,
-                       out=_out_folder(cfg, here, out, where, Path(study) if source else None),
+                       out=_out_folder(cfg, here, out, where, given),
                        records=names, source_key=key,
                        sources=sources, levels=levels,
                        gaps=list(cfg.gap.values) if cfg.gap.values else [None],
@@ -237,7 +241,9 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     first_params, first_values = cases.case_values(0, levels[0])
     for p, v in zip(first_params, first_values):
         rec[p.split(".")[1]] = v
-    rows, cols = [], {p: [] for p in cases.case_values(0, levels[0], cases.gaps[0])[0]}
+    rows: list[tuple[int, int, int]] = []
+    cols: dict[str, list[Any]] = {p: [] for p in cases.case_values(0, levels[0],
+                                                                   cases.gaps[0])[0]}
     for gi, g in enumerate(cases.gaps):
         for ri in range(len(names)):
             for li, x in enumerate(levels):
@@ -245,7 +251,7 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
                 for p, v in zip(params, values):
                     cols[p].append(v)
                 rows.append((ri, li, gi))
-    data = {"name": cfg.name, "base": base, "list": cols,
+    data: dict[str, Any] = {"name": cfg.name, "base": base, "list": cols,
             "histories": cfg.run.histories or False}
     if cfg.run.batch_size is not None:
         data["batch_size"] = cfg.run.batch_size
