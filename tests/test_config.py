@@ -124,6 +124,36 @@ def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> No
         example_path("nope")
 
 
+def test_an_interrupted_copy_of_the_examples_leaves_whole_files_only(tmp_path: Path,
+                                                                      monkeypatch) -> None:
+    """A full disk (or Ctrl-C) on the third file: the two before it are whole, nothing is
+    half-written, and a folder the copy made is gone if it is empty."""
+    import pounding.example_files as ex
+    from pounding.io import files
+
+    real = files.write_bytes
+    calls = []
+
+    def failing(target, data):
+        calls.append(target)
+        if len(calls) == 3:
+            raise OSError(28, "No space left on device", str(target))
+        return real(target, data)
+
+    monkeypatch.setattr(ex, "write_bytes", failing)
+    with pytest.raises(OSError, match="No space"):
+        ex.copy_examples(tmp_path / "mine")
+    written = sorted(p.name for p in (tmp_path / "mine").iterdir())
+    assert written == sorted(Path(c).name for c in calls[:2])
+    for name in written:
+        assert (tmp_path / "mine" / name).read_bytes() == (ex._folder() / name).read_bytes()
+    monkeypatch.setattr(ex, "write_bytes", lambda target, data: (_ for _ in ()).throw(
+        KeyboardInterrupt()))
+    with pytest.raises(KeyboardInterrupt):
+        ex.copy_examples(tmp_path / "new" / "deeper")
+    assert not (tmp_path / "new").exists()
+
+
 # ------------------------------------------------------------------------ round trip
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
 def test_round_trip_through_toml(path: Path, tmp_path: Path) -> None:

@@ -10,10 +10,11 @@ them, ``pounding examples --copy DIR`` copies them into a folder to edit and run
 from __future__ import annotations
 
 import os
-import shutil
 from importlib import resources
 from pathlib import Path
 from typing import NamedTuple
+
+from pounding.io.files import make_folders, remove_empty_folders, write_bytes
 
 __all__ = ["DEMO", "KINDS", "Example", "copy_examples", "example_path", "examples"]
 
@@ -73,7 +74,9 @@ DATA_SUFFIXES: tuple[str, ...] = (".csv", ".npy", ".npz", ".mtx")
 def copy_examples(dest: str | os.PathLike[str], overwrite: bool = False) -> list[Path]:
     """Copy every bundled example (with the matrix files they read, and their README) into
     the folder ``dest`` (made if missing). An existing file is not replaced unless
-    ``overwrite``. Returns the files written."""
+    ``overwrite``. Each file is written whole (a temporary beside it, then renamed), so an
+    interrupted copy leaves whole files only, and no folder it made empty. Returns the files
+    written."""
     folder = Path(dest)
     if folder.exists() and not folder.is_dir():
         raise ValueError(f"copy: {folder} is a file, not a folder")
@@ -84,8 +87,12 @@ def copy_examples(dest: str | os.PathLike[str], overwrite: bool = False) -> list
     if clash and not overwrite:
         raise ValueError(f"copy: {folder} already has {', '.join(clash)}; give --overwrite "
                          "to replace them")
-    folder.mkdir(parents=True, exist_ok=True)
-    written = []
-    for p in sources:
-        written.append(Path(shutil.copyfile(p, folder / p.name)))
+    created = make_folders(folder)
+    written: list[Path] = []
+    try:
+        for p in sources:  # each file whole or not at all (a full disk, Ctrl-C)
+            written.append(write_bytes(folder / p.name, p.read_bytes()))
+    except BaseException:
+        remove_empty_folders(created)
+        raise
     return written
