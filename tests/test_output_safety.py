@@ -408,3 +408,21 @@ def test_an_out_outside_is_fine_when_given_on_the_command_line(tmp_path, work, c
     assert code == 0, err
     assert (tmp_path / "x" / "runs.csv").is_file()
 
+
+
+def test_a_file_written_by_a_killed_process_leaves_no_temporary_after_the_next_write(tmp_path):
+    """``pounding report --html page.html`` killed outright (SIGKILL) while writing leaves
+    ``.page.html.part-<pid>-XXXXXXXX.html``; the next write of page.html removes it — only
+    that name, only of a dead process."""
+    from pounding.io.files import write_text
+
+    dead, alive = dead_pid(), os.getppid()
+    stale = tmp_path / f".page.html.part-{dead}-abcd1234.html"
+    live = tmp_path / f".page.html.part-{alive}-abcd1234.html"
+    other = tmp_path / f".other.html.part-{dead}-abcd1234.html"
+    users = tmp_path / f".page.html.part-{dead}-notours.html"
+    for p in (stale, live, other, users):
+        p.write_text("half")
+    write_text(tmp_path / "page.html", "<html></html>")
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        ["page.html", live.name, other.name, users.name])

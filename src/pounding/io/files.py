@@ -88,6 +88,7 @@ def atomic_path(target: str | os.PathLike[str],
     if target.exists() and target.is_dir():
         raise IsADirectoryError(f"output: {target} is a directory, not a file")
     target.parent.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(target)
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.part-{os.getpid()}-",
                                suffix=target.suffix, dir=target.parent)
     os.close(fd)
@@ -105,6 +106,26 @@ def atomic_path(target: str | os.PathLike[str],
             reason, code = failure_reason(exc)
             raise WriteFailed(target, reason, code) from None
         raise
+
+
+def remove_stale_temporaries(target: str | os.PathLike[str]) -> list[Path]:
+    """Remove the temporaries :func:`atomic_path` made for ``target`` in processes no longer
+    running (killed outright while writing it: ``.<name>.part-<pid>-XXXXXXXX<suffix>``
+    beside it, the pid dead); return them. A file of another name, or of a live process,
+    is never touched."""
+    target = Path(target)
+    pattern = re.compile(rf"^\.{re.escape(target.name)}\.part-(?P<pid>\d+)-[a-z0-9_]{{8}}"
+                         rf"{re.escape(target.suffix)}$")
+    removed = []
+    with contextlib.suppress(OSError):
+        for p in target.parent.iterdir():
+            m = pattern.match(p.name)
+            if (m and int(m["pid"]) != os.getpid() and not p.is_symlink() and p.is_file()
+                    and not pid_alive(int(m["pid"]))):
+                with contextlib.suppress(OSError):
+                    p.unlink()
+                    removed.append(p)
+    return removed
 
 
 def write_bytes(target: str | os.PathLike[str], data: bytes | memoryview) -> Path:
