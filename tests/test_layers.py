@@ -20,7 +20,8 @@ ROOT = Path(pounding.__file__).parent
 
 LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("foundations", ("pounding.units", "pounding.validation", "pounding.io", "pounding.memo",
-                     "pounding.progress", "pounding.plausibility", "pounding.example_files")),
+                     "pounding.lazy", "pounding.progress", "pounding.plausibility",
+                     "pounding.example_files")),
     ("physics", ("pounding.contact", "pounding.hysteresis", "pounding.devices",
                  "pounding.ground_motion", "pounding.structure", "pounding.spectra")),
     ("model", ("pounding.model",)),
