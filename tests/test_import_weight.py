@@ -33,8 +33,11 @@ def test_reading_a_sweep_table_loads_no_model_scipy_or_numba() -> None:
 
 def test_the_studies_package_loads_a_study_only_when_named() -> None:
     assert not loaded_by("import pounding.studies") & {"numpy", "scipy", "numba"}
-    loaded = loaded_by("from pounding.studies import srss")
+    loaded = loaded_by("from pounding.studies import critical_gaps")
     assert "pounding.studies.gap" in loaded
+    # a code rule is a formula: it needs neither the gap study nor the model
+    loaded = loaded_by("from pounding.studies import srss")
+    assert not loaded & {"pounding.studies.gap", "pounding.model", "scipy", "numba"}, loaded
 
 
 @pytest.mark.parametrize("argv", [["--help"], ["--version"], ["run", "--help"],

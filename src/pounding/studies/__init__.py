@@ -25,9 +25,9 @@ _EXPORTS: dict[str, str] = {
     "DesignSpectrum": "pounding.spectra",
     "fundamental_mode": "pounding.spectra",
     "spectral_displacements": "pounding.spectra",
-    **{name: "pounding.studies.gap" for name in (
-        "RULES", "GapStudy", "abs_sum", "code_gaps", "cqc_correlation", "critical_gaps", "ddc",
-        "hermite_max", "srss")},
+    **{name: "pounding.studies.gap" for name in ("GapStudy", "critical_gaps", "hermite_max")},
+    **{name: "pounding.studies.separation_rules" for name in (
+        "RULES", "abs_sum", "code_gaps", "cqc_correlation", "ddc", "srss")},
 }
 """Public name → the module that defines it."""
 
@@ -52,14 +52,12 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
     from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
-    from pounding.studies.gap import (
+    from pounding.studies.gap import GapStudy, critical_gaps, hermite_max
+    from pounding.studies.separation_rules import (
         RULES,
-        GapStudy,
         abs_sum,
         code_gaps,
         cqc_correlation,
-        critical_gaps,
         ddc,
-        hermite_max,
         srss,
     )
