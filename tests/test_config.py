@@ -11,16 +11,16 @@ import numpy as np
 import pytest
 
 from pounding.config import RunConfig, dump_toml, load_config, parse_config
-from pounding.example_files import KINDS
+from pounding.example_files import example_kind
 from pounding.structure.assembly import floor_dofs
 from pounding.model import PoundingModel
 from pounding.structure import ModalDamping, RayleighDamping
 
 ROOT = Path(__file__).resolve().parents[1]
 # model files (sweep files, sweep_*.toml, are tested in tests/studies/test_sweep.py, spectrum
-# files, spectrum_*.toml, in tests/spectra/)
-EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml")
-                  if not p.name.startswith(tuple(f"{k}_" for k in KINDS)))
+# files, spectrum_*.toml, in tests/spectra/, pushover files, *_pushover.toml, in
+# tests/structure/test_pushover_cli.py)
+EXAMPLES = sorted(p for p in (ROOT / "examples").glob("*.toml") if example_kind(p.name) == "model")
 DEMO = ROOT / "src" / "pounding" / "examples" / "two_10_storey.toml"
 
 
@@ -108,7 +108,8 @@ def test_the_examples_ship_inside_the_package_and_copy_out(tmp_path: Path) -> No
     assert example_path(DEMO_NAME).resolve() == DEMO.resolve()
     listed = {e.name: e.kind for e in examples()}
     assert KINDS == ("sweep", "spectrum", "fragility", "mitigation")
-    assert listed == {p.name: next((k for k in KINDS if p.name.startswith(f"{k}_")), "model")
+    assert listed == {p.name: next((k for k in KINDS if p.name.startswith(f"{k}_")),
+                                   "pushover" if p.stem.endswith("_pushover") else "model")
                       for p in (ROOT / "examples").glob("*.toml")}
     assert all(e.description for e in examples())
     assert listed["fragility_two_10_storey.toml"] == "fragility"

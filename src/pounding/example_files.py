@@ -16,7 +16,8 @@ from typing import NamedTuple
 
 from pounding.io.files import make_folders, remove_empty_folders, write_bytes
 
-__all__ = ["DEMO", "KINDS", "Example", "copy_examples", "example_path", "examples"]
+__all__ = ["DEMO", "KINDS", "SUFFIX_KINDS", "Example", "copy_examples", "example_kind",
+           "example_path", "examples"]
 
 DEMO = "two_10_storey.toml"
 """The example ``pounding demo`` runs."""
@@ -24,11 +25,24 @@ DEMO = "two_10_storey.toml"
 KINDS: tuple[str, ...] = ("sweep", "spectrum", "fragility", "mitigation")
 """Kinds of example other than a model file, told by the prefix ``<kind>_`` of the name."""
 
+SUFFIX_KINDS: tuple[str, ...] = ("pushover",)
+"""Kinds told by the suffix ``_<kind>`` of the name (``portal_pushover.toml``: a model file
+made for ``pounding pushover``, with no record)."""
+
+
+def example_kind(name: str) -> str:
+    """The kind of the example file ``name``: a prefix of :data:`KINDS`, a suffix of
+    :data:`SUFFIX_KINDS`, else ``"model"``."""
+    stem = Path(name).stem
+    return next((k for k in KINDS if stem.startswith(f"{k}_")),
+                next((k for k in SUFFIX_KINDS if stem.endswith(f"_{k}")), "model"))
+
 
 class Example(NamedTuple):
     """One bundled example: file name, kind (``model``, ``sweep``, ``spectrum``,
-    ``fragility`` or ``mitigation``: by the prefix ``sweep_`` / ``spectrum_`` /
-    ``fragility_`` / ``mitigation_`` of its name),
+    ``fragility``, ``mitigation`` or ``pushover``: by the prefix ``sweep_`` / ``spectrum_`` /
+    ``fragility_`` / ``mitigation_`` or the suffix ``_pushover`` of its name,
+    :func:`example_kind`),
     what it shows."""
 
     name: str
@@ -62,8 +76,7 @@ def examples() -> list[Example]:
             lines.append(line.lstrip("# ").strip())
         text = " ".join(lines)
         first = text.split(". ")[0].rstrip(".")
-        kind = next((k for k in KINDS if path.name.startswith(f"{k}_")), "model")
-        out.append(Example(path.name, kind, first))
+        out.append(Example(path.name, example_kind(path.name), first))
     return out
 
 

@@ -38,6 +38,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_fragility,
     commands_gap,
     commands_mitigate,
+    commands_pushover,
     commands_record,
     commands_report,
     commands_run,

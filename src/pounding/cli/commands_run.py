@@ -101,5 +101,5 @@ def examples_cmd(
                 [Col("file", "left"), Col("kind", "left"), Col("what it shows", "left", wrap=True)],
                 [(literal(e.name), e.kind, literal(e.description)) for e in examples()])
     console.print("Run one with `pounding run FILE` (a sweep: `pounding sweep FILE`, a fragility "
-                  "study: `pounding fragility FILE`); copy them with `pounding examples --copy "
+                  "study: `pounding fragility FILE`, a pushover: `pounding pushover FILE`); copy them with `pounding examples --copy "
                   "DIR`.", highlight=False)

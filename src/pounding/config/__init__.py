@@ -58,6 +58,8 @@ _EXPORTS: dict[str, str] = {
     "load_config": "pounding.config.load",
     "parse_config": "pounding.config.load",
     "dump_toml": "pounding.config.toml",
+    "PushoverConfig": "pounding.config.pushover",
+    "load_pushover": "pounding.config.pushover",
 }
 """Public name → the module that defines it."""
 
@@ -72,6 +74,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.config.load import SWEEP_CASE_TABLES, load_config, parse_config
     from pounding.config.record import EL_CENTRO_ALIASES, RecordConfig
     from pounding.config.run import Built, OutputConfig, RunConfig, SolverConfig
+    from pounding.config.pushover import PushoverConfig, load_pushover
     from pounding.config.toml import dump_toml
 
 __all__ = [
@@ -83,6 +86,7 @@ __all__ = [
     "EL_CENTRO_ALIASES",
     "LAW_FIELDS",
     "OutputConfig",
+    "PushoverConfig",
     "RecordConfig",
     "RunConfig",
     "SWEEP_CASE_TABLES",
@@ -91,5 +95,6 @@ __all__ = [
     "dump_toml",
     "format_validation_error",
     "load_config",
+    "load_pushover",
     "parse_config",
 ]

@@ -11,12 +11,14 @@ from typing import Annotated, Any
 from pydantic import Field, ValidationInfo, model_validator
 
 from pounding.config.base import Section, field_error, fmt, prefixed
+from pounding.config.frame import FrameConfig
 from pounding.config.isolation import IsolatorConfig
 from pounding.config.plan import ElementConfig, PlanConfig
 from pounding.config.quantities import MAX_LENGTH, Elevation, Length, Mass, Period, Stiffness
 from pounding.config.storeys import DampingConfig, StoreyLawConfig
 from pounding.memo import Memo
 from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
+from pounding.structure.frame import Frame
 from pounding.structure.plan import PlanBuilding
 from pounding.structure.floor_arrays import MAX_FLOORS, SMALLEST
 
@@ -113,6 +115,7 @@ class BuildingConfig(Section):
     floors: Annotated[list[str | int], Field(min_length=1)] | None = None
     plan: PlanConfig | None = None
     elements: Annotated[list[ElementConfig], Field(min_length=1)] | None = None
+    frame: FrameConfig | None = None
 
     @model_validator(mode="before")
     @classmethod
@@ -132,7 +135,10 @@ class BuildingConfig(Section):
 
     @property
     def kind(self) -> str:
-        """``'storeys'``, ``'uniform'``, ``'sdof'``, ``'matrices'`` or ``'plan'``."""
+        """``'storeys'``, ``'uniform'``, ``'sdof'``, ``'matrices'``, ``'plan'`` or
+        ``'frame'``."""
+        if self.frame is not None:
+            return "frame"
         if self.plan is not None:
             return "plan"
         if self.matrices is not None or self.npz is not None:
@@ -173,6 +179,13 @@ class BuildingConfig(Section):
 
     def _check_shape(self) -> None:
         kind = self.kind
+        if kind == "frame":
+            for key in type(self).model_fields:
+                if key not in ("name", "damping", "frame") and getattr(self, key) is not None:
+                    raise field_error(key, f"not a key of a frame (its masses, stiffnesses "
+                                           f"and heights are in frame = {{...}}) (got "
+                                           f"{fmt(getattr(self, key))})")
+            return
         if kind == "plan":
             self._check_plan_keys()
             return
@@ -341,6 +354,11 @@ class BuildingConfig(Section):
     @property
     def n(self) -> int:
         """Number of storeys (of degrees of freedom, for a building given as matrices)."""
+        if self.frame is not None:
+            if self.frame.form == "regular":
+                return self.frame.n_storeys_given
+            ys = sorted({y for _, y in self.frame.nodes or []})
+            return max(1, len(ys) - 1)
         return {"sdof": 1, "uniform": self.n_storeys or 1, "storeys": len(self.masses or ()),
                 "matrices": len(self.elevations or ()),
                 "plan": len(self.masses or ())}[self.kind]
@@ -411,8 +429,21 @@ class BuildingConfig(Section):
                 raise ValueError(f"damping.rayleigh: {exc}") from None
             raise
 
+    def build_frame(self, default_name: str) -> Frame:
+        """The :class:`~pounding.structure.frame.Frame` of a ``frame = {...}`` building."""
+        if self.frame is None:
+            raise ValueError(f"building {self.name or default_name!r}: not a frame (give "
+                             "frame = {...})")
+        damping = self.damping.build() if self.damping is not None else None
+        with prefixed("frame", FrameConfig.model_fields):
+            return self.frame.build(self.name or default_name, damping)
+
     def _make(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
         name = self.name or default_name
+        if self.kind == "frame":
+            from pounding.structure.frame_linear import frame_matrix_building
+
+            return frame_matrix_building(self.build_frame(default_name))
         if self.kind == "matrices":
             return self._build_matrices(name)
         if self.kind == "plan":

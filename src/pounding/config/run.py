@@ -68,6 +68,7 @@ class RunConfig(Section):
     wall: list[WallConfig] = []
     solver: SolverConfig = SolverConfig()
     output: OutputConfig = OutputConfig()
+    pushover: dict[str, Any] | None = None  #: ``[pushover]``, read by ``pounding pushover`` alone
 
     _source: Path | None = PrivateAttr(default=None)
     _plausibility: tuple[str, ...] = PrivateAttr(default=())

@@ -347,7 +347,8 @@ def check_replaceable(folder: Path, kind: str, option: str = "--out") -> None:
                          f"choose another {option}")
 
 
-_KIND_TEXT = {"run": "a run", "sweep": "a sweep", "mitigation": "a mitigation study"}
+_KIND_TEXT = {"run": "a run", "sweep": "a sweep", "mitigation": "a mitigation study",
+              "pushover": "a pushover"}
 
 
 def remove_outputs(folder: Path, keep_folder: bool = False) -> None:

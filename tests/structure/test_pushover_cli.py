@@ -1,0 +1,187 @@
+"""`pounding pushover` end to end: the portal example's files, bad input, the output folder's
+safety, and frames in model files (`frame = {...}`)."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pounding.cli import main
+from pounding.config import load_config, load_pushover
+from pounding.example_files import example_path
+
+PORTAL = example_path("portal_pushover")
+
+
+@pytest.fixture(autouse=True)
+def _capture(capsys: pytest.CaptureFixture[str]) -> None:
+    global _CAPSYS
+    _CAPSYS = capsys
+
+
+_CAPSYS: pytest.CaptureFixture[str]
+
+
+def _run(*args: str) -> tuple[int, str]:
+    """The command's exit status and what it printed (standard output and error)."""
+    _CAPSYS.readouterr()
+    code = main(list(args))
+    got = _CAPSYS.readouterr()
+    return code, got.out + got.err
+
+
+def test_portal_example_writes_its_curve_and_reaches_four_mp_over_h(tmp_path: Path) -> None:
+    code, out = _run("pushover", str(PORTAL), "--out", str(tmp_path / "p"))
+    assert code == 0, out
+    with open(tmp_path / "p" / "pushover.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert list(rows[0])[:4] == ["roof_displacement_m", "base_shear_N", "storey_1_drift_m",
+                                 "storey_1_shear_N"]
+    shear = np.array([float(r["base_shear_N"]) for r in rows])
+    roof = np.array([float(r["roof_displacement_m"]) for r in rows])
+    assert shear.max() == pytest.approx(4 * 300e3 / 4.0, rel=1e-9)  # 4 Mp / h
+    assert roof[-1] == pytest.approx(0.2)
+    summary = json.loads((tmp_path / "p" / "summary.json").read_text())
+    assert summary["peak_base_shear_N"] == pytest.approx(300e3, rel=1e-9)
+    assert summary["stopped"] == "target"
+    assert summary["first_yield"]["hinges"] == [0, 2]  # the two column bases yield first
+    hinges = list(csv.DictReader(open(tmp_path / "p" / "hinges.csv", newline="")))
+    assert [h["yielded"] for h in hinges] == ["true"] * 4 + ["false"] * 2
+    assert (tmp_path / "p" / "pushover.png").stat().st_size > 10_000
+
+
+def test_options_override_the_file(tmp_path: Path) -> None:
+    code, out = _run("pushover", str(PORTAL), "--out", str(tmp_path / "p"), "--to", "0.05",
+                     "--pattern", "triangular", "--no-figures")
+    assert code == 0, out
+    summary = json.loads((tmp_path / "p" / "summary.json").read_text())
+    assert summary["target_roof_displacement_m"] == 0.05
+    assert summary["pattern"] == "triangular"
+    assert not (tmp_path / "p" / "pushover.png").exists()
+
+
+@pytest.mark.parametrize(("args", "says"), [
+    (["--to", "-1"], "--to: the roof displacement must be finite and > 0 [m] (got -1.0)"),
+    (["--to", "nan"], "--to: the roof displacement must be finite and > 0 [m] (got nan)"),
+    (["--pattern", "sideways"], "--pattern: must be one of first-mode, uniform, triangular "
+                                "(got 'sideways')"),
+    (["--building", "tower"], "--building: no frame named 'tower' (frames: 'portal')"),
+    (["--pattern", "first-mode"], "pattern: first-mode needs floor masses; portal has none"),
+])
+def test_bad_options_say_one_line_and_write_nothing(tmp_path: Path, args: list[str],
+                                                    says: str) -> None:
+    code, out = _run("pushover", str(PORTAL), "--out", str(tmp_path / "p"), *args)
+    assert code == 2
+    assert says in out
+    assert not (tmp_path / "p").exists()
+
+
+def test_a_folder_not_written_by_pounding_is_never_replaced(tmp_path: Path) -> None:
+    mine = tmp_path / "p"
+    mine.mkdir()
+    (mine / "notes.txt").write_text("keep")
+    code, out = _run("pushover", str(PORTAL), "--out", str(mine), "--overwrite")
+    assert code == 2 and "has no manifest" in out
+    assert (mine / "notes.txt").read_text() == "keep"
+    # an earlier pushover is replaced with --overwrite, and not without
+    assert _run("pushover", str(PORTAL), "--out", str(tmp_path / "q"))[0] == 0
+    code, out = _run("pushover", str(PORTAL), "--out", str(tmp_path / "q"))
+    assert code == 2 and "already exists" in out
+    assert _run("pushover", str(PORTAL), "--out", str(tmp_path / "q"), "--overwrite")[0] == 0
+
+
+def _write(tmp_path: Path, text: str) -> Path:
+    f = tmp_path / "m.toml"
+    f.write_text(text, encoding="utf-8")
+    return f
+
+
+def test_bad_frame_keys_name_the_key(tmp_path: Path) -> None:
+    f = _write(tmp_path, """
+[[building]]
+frame = { bays = [6.0], storey_heights = [4.0, 3.0], column_EI = [2e8, 2e8, 2e8], beam_EI = 2e8 }
+""")
+    with pytest.raises(ValueError, match=r"building\[0\]\.frame\.column_EI: need one value or 2 "
+                                         r"\(one per storey\), got 3"):
+        load_pushover(f)
+    f = _write(tmp_path, """
+[[building]]
+[building.frame]
+bays = [6.0]
+storey_heights = [4.0]
+column_EI = 2e8
+beam_EI = 2e8
+column_hinge = { type = "elastic-plastic", k0 = 1e11, m_y = -3e5 }
+""")
+    with pytest.raises(ValueError, match=r"building\[0\]\.frame\.column_hinge\.m_y"):
+        load_pushover(f)
+
+
+def test_full_form_matches_the_regular_form(tmp_path: Path) -> None:
+    """The portal written node by node pushes exactly as the regular form does."""
+    f = _write(tmp_path, """
+[[building]]
+name = "portal"
+[building.frame]
+nodes = [[0.0, 0.0], [6.0, 0.0], [0.0, 4.0], [6.0, 4.0]]
+supports = [{ node = 0 }, { node = 1, fix = "fixed" }]
+members = [
+  { nodes = [0, 2], EI = 2.0e8, hinges = [{ type = "elastic-plastic", k0 = 1e11, m_y = 3e5 },
+                                          { type = "elastic-plastic", k0 = 1e11, m_y = 3e5 }] },
+  { nodes = [1, 3], EI = 2.0e8, hinges = [{ type = "elastic-plastic", k0 = 1e11, m_y = 3e5 },
+                                          { type = "elastic-plastic", k0 = 1e11, m_y = 3e5 }] },
+  { nodes = [2, 3], EI = 2.0e8, hinges = [{ type = "elastic-plastic", k0 = 1e11, m_y = 6e5 },
+                                          { type = "elastic-plastic", k0 = 1e11, m_y = 6e5 }] },
+]
+[pushover]
+target = 0.2
+""")
+    code, out = _run("pushover", str(f), "--out", str(tmp_path / "full"), "--no-figures")
+    assert code == 0, out
+    code, out = _run("pushover", str(PORTAL), "--out", str(tmp_path / "reg"), "--no-figures")
+    full = np.loadtxt(tmp_path / "full" / "pushover.csv", delimiter=",", skiprows=1)
+    reg = np.loadtxt(tmp_path / "reg" / "pushover.csv", delimiter=",", skiprows=1)
+    assert full == pytest.approx(reg, rel=1e-9, abs=1e-9)
+
+
+def test_an_elastic_frame_runs_and_pounds_as_its_condensed_matrices(tmp_path: Path) -> None:
+    """A frame without hinges in a time history: its floors' condensed stiffness; its first
+    period is the rigid-beam closed form when the beams are rigid."""
+    f = _write(tmp_path, """
+[record]
+bundled = "el_centro"
+[[building]]
+name = "A"
+frame = { bays = [6.0], height = 4.0, n_storeys = 1, column_EI = 2e8, beam_EI = 2e16, column_EA = 1e16, floor_mass = 1e5 }
+[[building]]
+name = "B"
+n_storeys = 1
+mass = 1e5
+period = 0.5
+height = 4.0
+[contact]
+law = "linear-spring"
+k = 1e9
+gap = 0.01
+""")
+    model, _, _ = load_config(f).build()
+    frame = model.buildings[0]
+    expected = 2 * math.pi / math.sqrt(2 * 12 * 2e8 / 4.0 ** 3 / 1e5)
+    assert frame.modes().periods[0] == pytest.approx(expected, rel=1e-6)
+
+
+def test_a_yielding_frame_is_refused_by_run_with_the_way_out(tmp_path: Path) -> None:
+    f = _write(tmp_path, PORTAL.read_text().replace("[pushover]", """
+[record]
+bundled = "el_centro"
+[pushover]"""))
+    code, out = _run("run", str(f), "--out", str(tmp_path / "r"))
+    assert code == 2
+    assert "time histories of yielding frames are not available yet" in out
+    assert "pounding pushover" in out
+    assert not (tmp_path / "r").exists()
