@@ -185,3 +185,15 @@ bundled = "el_centro"
     assert "time histories of yielding frames are not available yet" in out
     assert "pounding pushover" in out
     assert not (tmp_path / "r").exists()
+
+
+def test_the_report_of_a_pushover_folder_shows_the_curve(tmp_path: Path) -> None:
+    from pounding.report import detect_kind, write_report
+
+    assert _run("pushover", str(PORTAL), "--out", str(tmp_path / "p"))[0] == 0
+    assert detect_kind(tmp_path / "p") == "pushover"
+    html = write_report(tmp_path / "p").read_text(encoding="utf-8")
+    assert "300 kN" in html and "250 kN at 5.346 mm" in html  # peak; first yield
+    assert "data:image/png;base64," in html
+    # pounding's own report is listed, so an earlier pushover folder stays replaceable
+    assert _run("pushover", str(PORTAL), "--out", str(tmp_path / "p"), "--overwrite")[0] == 0

@@ -13,6 +13,9 @@ Every text taken from the files is HTML-escaped; every quantity carries its unit
   sweep's table: the page shows the study, the fragility of every limit state with its
   intervals, the probability of pounding against the gap beside the code gaps, the counts
   at every stripe and the study's figures (:mod:`~pounding.report.fragility`).
+* A **pushover** folder (``pounding pushover``) holds ``pushover.csv`` and ``summary.json``:
+  the page shows the frame, the capacity curve's numbers and figure, the curve event by
+  event and the hinges (:mod:`~pounding.report.pushover`).
 * A **sweep** folder holds ``results.parquet`` (one row per case: parameters and measures).
   The page shows the parameter grid, the first rows of the results with summary statistics,
   and the main measure plotted against each swept parameter.
@@ -39,6 +42,7 @@ from pathlib import Path
 
 from pounding.io.files import write_text
 from pounding.report.fragility import FRAGILITY_FILE, render_fragility
+from pounding.report.pushover import is_pushover, render_pushover
 from pounding.report.run import MAX_IMPACT_ROWS, render_run
 from pounding.report.run_folder import RUN_FILES
 from pounding.report.sweep import MAX_SWEEP_ROWS, render_sweep
@@ -52,7 +56,7 @@ DEFAULT_NAME = "report.html"
 
 
 def detect_kind(results_dir: str | os.PathLike[str]) -> str:
-    """``"run"``, ``"sweep"`` or ``"fragility"``: what ``results_dir`` holds.
+    """``"run"``, ``"sweep"``, ``"fragility"`` or ``"pushover"``: what ``results_dir`` holds.
 
     Parameters
     ----------
@@ -64,7 +68,8 @@ def detect_kind(results_dir: str | os.PathLike[str]) -> str:
     str
         ``"run"`` for a run output, ``"fragility"`` for the output of ``pounding
         fragility`` (``fragility.json``, beside its sweep's ``results.parquet``),
-        ``"sweep"`` for a sweep output.
+        ``"pushover"`` for the output of ``pounding pushover`` (``pushover.csv`` and
+        ``summary.json``), ``"sweep"`` for a sweep output.
 
     Raises
     ------
@@ -83,6 +88,8 @@ def detect_kind(results_dir: str | os.PathLike[str]) -> str:
         return "run"
     if (folder / FRAGILITY_FILE).is_file():
         return "fragility"
+    if is_pushover(folder):
+        return "pushover"
     if (folder / SWEEP_FILE).is_file():
         return "sweep"
     raise ValueError(
@@ -152,4 +159,6 @@ def render_report(results_dir: str | os.PathLike[str]) -> str:
     kind = detect_kind(folder)
     if kind == "fragility":
         return render_fragility(folder)
+    if kind == "pushover":
+        return render_pushover(folder)
     return render_run(folder) if kind == "run" else render_sweep(folder)
