@@ -14,6 +14,9 @@ imported from ``pounding`` itself)::
 * the problem: buildings (:class:`ShearBuilding`, damping models), the pair or row of them with
   their gaps and contact law (:class:`PoundingModel`, :class:`ContactSpec`) —
   :mod:`pounding.structure`, :mod:`pounding.model`
+* frames with plastic hinges: :class:`Frame`, :func:`regular_frame`, hinge laws
+  (:class:`ElasticPlastic`, :class:`BilinearHinge`) and the event-to-event :func:`pushover`
+  — :mod:`pounding.structure.frame`, :mod:`pounding.structure.frame_analysis`
 * the excitation: :class:`GroundMotion`, record readers, the bundled El Centro 1940 record —
   :mod:`pounding.ground_motion`
 * the solver: :func:`simulate` (:mod:`pounding.integrate`); the answer: :class:`Result`
@@ -46,6 +49,13 @@ _EXPORTS: dict[str, str] = {
     "modes": "pounding.structure",
     "Bilinear": "pounding.hysteresis",
     "BoucWen": "pounding.hysteresis",
+    "Frame": "pounding.structure.frame",
+    "FrameHinge": "pounding.structure.frame",
+    "regular_frame": "pounding.structure.frame",
+    "ElasticPlastic": "pounding.hysteresis.hinges",
+    "BilinearHinge": "pounding.hysteresis.hinges",
+    "pushover": "pounding.structure.frame_analysis",
+    "PushoverResult": "pounding.structure.frame_analysis",
     # excitation
     "GroundMotion": "pounding.ground_motion",
     "el_centro": "pounding.ground_motion",
@@ -114,9 +124,12 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     from pounding.contact.factory import make_law
     from pounding.ground_motion import GroundMotion, el_centro, read_at2, read_record, read_text
     from pounding.hysteresis import Bilinear, BoucWen
+    from pounding.hysteresis.hinges import BilinearHinge, ElasticPlastic
     from pounding.integrate import simulate
     from pounding.model import ContactSpec, PoundingModel
     from pounding.plausibility import PlausibilityWarning
     from pounding.result import Result, SolverStats
     from pounding.run_file import RunOutput, run
     from pounding.structure import ModalDamping, RayleighDamping, ShearBuilding, modes
+    from pounding.structure.frame import Frame, FrameHinge, regular_frame
+    from pounding.structure.frame_analysis import PushoverResult, pushover
