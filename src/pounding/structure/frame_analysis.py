@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -96,35 +97,59 @@ def _tangents(state: FrameState, directions: NDArray[np.int64]) -> NDArray[np.fl
                      for h in range(len(laws))])
 
 
-def _solve_unit(K: NDArray[np.float64], P: NDArray[np.float64], control: NDArray[np.float64],
+def _hinge_matrix(dofs: FrameDofs, tangents: NDArray[np.float64]) -> Any:
+    """The hinges' springs as a sparse matrix (:func:`configuration_stiffness` without the
+    base)."""
+    import scipy.sparse
+
+    a, b = dofs.hinge_node, dofs.hinge
+    fixed = a < 0
+    rows = np.concatenate([b, a[~fixed], a[~fixed], b[~fixed]])
+    cols = np.concatenate([b, a[~fixed], b[~fixed], a[~fixed]])
+    vals = np.concatenate([tangents, tangents[~fixed], -tangents[~fixed], -tangents[~fixed]])
+    return scipy.sparse.coo_matrix((vals, (rows, cols)), shape=(dofs.n, dofs.n)).tocsc()
+
+
+def _solve_unit(K: Any, P: NDArray[np.float64], control: NDArray[np.float64],
                 load_control: bool) -> tuple[NDArray[np.float64], float] | None:
     """``(dU, dλ)`` for a unit increment of the control: ``K dU = P dλ`` with ``dλ = 1`` (load
-    control) or ``control · dU = 1``. DOFs with no stiffness at all (a joint whose every
-    connection is a plastic hinge of zero tangent) do not move. None if singular."""
+    control) or ``control · dU = 1``; ``K`` sparse. DOFs with no stiffness at all (a joint
+    whose every connection is a plastic hinge of zero tangent) do not move. None if
+    singular.
+
+    The bordered matrix ``[[K, −P], [cᵀ, c_λ]]`` is equilibrated (rows and columns by the
+    square root of the diagonal's size, so that the pivots compare DOFs of different units)
+    and factorised sparse (SuperLU); a pivot 1e-15 below the largest means singular."""
+    import scipy.sparse
+    import scipy.sparse.linalg
+
     n = K.shape[0]
-    live = np.flatnonzero(np.any(K != 0.0, axis=1))
-    A = np.zeros((live.size + 1, live.size + 1))
-    A[:live.size, :live.size] = K[np.ix_(live, live)]
-    A[:live.size, -1] = -P[live]
-    rhs = np.zeros(live.size + 1)
-    if load_control:
-        A[-1, -1] = 1.0
-    else:
-        A[-1, :live.size] = control[live]
-    rhs[-1] = 1.0
-    # equilibrate (rows and columns by the square root of the diagonal's size) so that the
-    # pivots compare DOFs of different units; a pivot 1e-15 below the largest: singular
-    d = np.sqrt(np.maximum(np.abs(np.diag(A)), np.max(np.abs(A)) * 1e-30))
+    K = scipy.sparse.csc_matrix(K)
+    nonzero = np.diff(K.indptr) > 0
+    live = np.flatnonzero(nonzero & (np.abs(K).sum(axis=0).A1 > 0.0))
+    Kl = K[live][:, live]
+    border_row = (scipy.sparse.csr_matrix(([1.0], ([0], [live.size])), shape=(1, live.size + 1))
+                  if load_control else scipy.sparse.hstack(
+                      [scipy.sparse.csr_matrix(control[live]), scipy.sparse.csr_matrix((1, 1))]))
+    A = scipy.sparse.vstack([scipy.sparse.hstack([Kl, scipy.sparse.csc_matrix(-P[live][:, None])]),
+                             border_row]).tocsc()
+    diag = np.abs(A.diagonal())
+    scale = float(abs(A).max()) if A.nnz else 1.0
+    d = np.sqrt(np.maximum(diag, scale * 1e-30))
     if not load_control:
         d[-1] = 1.0
-    As = A / d[:, None] / d[None, :]
-    import scipy.linalg
-
-    lu, piv = scipy.linalg.lu_factor(As, check_finite=False)
-    pivots = np.abs(np.diag(lu))
+    Dinv = scipy.sparse.diags(1.0 / d)
+    As = (Dinv @ A @ Dinv).tocsc()
+    rhs = np.zeros(live.size + 1)
+    rhs[-1] = 1.0
+    try:
+        lu = scipy.sparse.linalg.splu(As, permc_spec="COLAMD")
+    except RuntimeError:  # exactly singular
+        return None
+    pivots = np.abs(lu.U.diagonal())
     if not np.all(np.isfinite(pivots)) or np.min(pivots) <= 1e-15 * np.max(pivots):
         return None
-    x = scipy.linalg.lu_solve((lu, piv), rhs / d, check_finite=False) / d
+    x = lu.solve(rhs / d) / d
     if not np.all(np.isfinite(x)):
         return None
     dU = np.zeros(n)
@@ -155,6 +180,9 @@ def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.floa
     lam = lam0
     c_now = lam if load_control else float(control @ state.U)  # type: ignore[operator]
     peak_lam = abs(lam)
+    import scipy.sparse
+
+    base_sparse = scipy.sparse.csc_matrix(state.base)
     for _ in range(MAX_EVENTS):
         remaining = target - c_now
         if remaining <= 1e-14 * max(1.0, abs(target)):
@@ -162,7 +190,7 @@ def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.floa
         directions = state.directions.copy()
         solved = None
         for _it in range(2 * nh + 2):
-            K = configuration_stiffness(state.base, dofs, _tangents(state, directions))
+            K = base_sparse + _hinge_matrix(dofs, _tangents(state, directions))
             solved = _solve_unit(K, P, control if control is not None else np.zeros(0),
                                  load_control)
             if solved is None:
