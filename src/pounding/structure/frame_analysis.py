@@ -220,8 +220,11 @@ def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.floa
         # nearest event along the control
         step = remaining
         hits: list[int] = []
+        # a hinge turns only as fast as rounding allows (or against the way its branch was
+        # chosen, by rounding): it reaches no breakpoint in this segment
+        moving = 1e-12 * (float(np.max(np.abs(dth))) if nh else 0.0)
         for h in range(nh):
-            if dth[h] == 0.0 or directions[h] == 0:
+            if directions[h] == 0 or dth[h] * directions[h] <= moving:
                 continue
             br = laws[h].branch(state.hinges[h], int(directions[h]))
             if not math.isfinite(br.theta_end):
