@@ -197,7 +197,7 @@ def pushover(ops: Any, built: OpenSeesFrame, shape: NDArray[np.float64], target:
     u0 = ops.nodeDisp(roof, 1)
     u, V = [u0], [0.0]
     rescued = 0
-    n = int(round(target / step))
+    n = round(target / step)
     for _ in range(n):
         ok = False
         for k, (algorithm, iterations) in enumerate(FALLBACKS if fallbacks else FALLBACKS[:1]):

@@ -9,7 +9,8 @@ domain is read, not changed (no analysis is set up or run). What is read, and ho
 * **element and material types, parameters**: ``printModel('-JSON', '-file', …)`` names every
   element's type, nodes, geometric transformation and releases, and every uniaxial
   material's type and parameters — but to 6 significant digits only (``setPrecision`` does
-  not change it). So the numbers that matter are read again exactly:
+  not change it). So the numbers that matter are read again exactly
+  (:mod:`pounding.structure.opensees_domain`):
 
   - ``elasticBeamColumn`` (``ElasticBeam2d``): ``EA`` and ``EI`` from the element's basic
     stiffness ``basicStiffness(tag)`` = ``[[EA/L, 0, 0], [0, 4EI/L, 2EI/L], [0, 2EI/L,
@@ -54,28 +55,28 @@ material. Damping is not read (the frame gets pounding's default).
 
 from __future__ import annotations
 
-import json
 import math
-import os
-import re
-import tempfile
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
-from pounding.hysteresis.hinges import BilinearHinge, ElasticPlastic, HingeLaw
+from pounding.hysteresis.hinges import HingeLaw
 from pounding.structure.frame import LEVEL_TOL, Frame, FrameHinge
+from pounding.structure.opensees_domain import (
+    hinge_law,
+    model_json,
+    mp_ties,
+    pattern_loads,
+)
 
 __all__ = ["ImportedFrame", "frame_from_opensees", "read_opensees_frame"]
 
-IMK_MATERIALS: tuple[str, ...] = ("Bilin", "IMKBilin", "IMKPeakOriented")
-"""OpenSees deteriorating hinge materials that pounding will import once its IMK laws exist."""
-
 _BEAM = "ElasticBeam2d"
 _ZERO = "ZeroLength"
-_UNIFORM_LOAD_CLASS = 3  # OpenSees LOAD_TAG_Beam2dUniformLoad: data (w_y, w_x)
+_TRANSFORMS = ("LinearCrdTransf2d", "PDeltaCrdTransf2d")
 
 
 @dataclass(frozen=True)
@@ -101,118 +102,222 @@ class ImportedFrame:
     hinge_tags: tuple[int, ...]
 
 
-def _model_json(ops: Any) -> dict[str, Any]:
-    """The domain as OpenSees prints it with ``printModel -JSON`` (6 significant digits)."""
-    with tempfile.TemporaryDirectory(prefix="pounding-ops-") as tmp:
-        path = os.path.join(tmp, "model.json")
-        ops.printModel("-JSON", "-file", path)
-        with open(path, encoding="utf-8") as fh:
-            text = fh.read()
-    text = re.sub(r"(?<![\w.])(-?)inf\b", r"\1Infinity", text)
-    text = re.sub(r"(?<![\w.])-?nan\b", "NaN", text)
-    try:
-        model = json.loads(text)["StructuralAnalysisModel"]
-    except (ValueError, KeyError) as exc:
-        raise ValueError(f"OpenSees printModel -JSON: could not read the model it printed "
-                         f"({exc})") from None
-    return model  # type: ignore[no-any-return]
+Tie = tuple[int, int, tuple[int, ...], tuple[int, ...]]
 
 
-def _probe(ops: Any, tag: int, strain: float) -> tuple[float, float]:
-    """(stress, tangent) of a fresh copy of material ``tag`` strained monotonically from 0."""
-    ops.testUniaxialMaterial(tag)
-    ops.setStrain(float(strain))
-    return float(ops.getStress()), float(ops.getTangent())
+@dataclass
+class _Domain:
+    """What the import read from the domain (tags are OpenSees tags)."""
+
+    ops: Any
+    coord: dict[int, NDArray[np.float64]]
+    fixed: dict[int, NDArray[np.bool_]]
+    mass: dict[int, NDArray[np.float64]]
+    ele_info: dict[int, dict[str, Any]]
+    mat_info: dict[int, dict[str, Any]]
+    transf: dict[str, str]
+    ends: dict[int, tuple[int, int]]
+    beams: list[int]
+    zeros: list[int]
+    ties: list[Tie]
+    scale: float
+    attached: dict[int, list[int]] = field(default_factory=dict)
+    used_ties: set[int] = field(default_factory=set)
+
+    def transformation(self, e: int) -> str:
+        return self.transf.get(str(self.ele_info.get(e, {}).get("crdTransformation")), "?")
 
 
-def _hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
-               materials: Mapping[int, HingeLaw]) -> HingeLaw:
-    """The hinge law of uniaxial material ``tag`` (module docstring)."""
-    if tag in materials:
-        return materials[tag]
-    if info is None:
-        raise ValueError(f"material {tag}: not in the model's printed materials")
-    kind = str(info.get("type", "?"))
-    who = f"material {tag} ({kind})"
-    if kind in IMK_MATERIALS:
-        raise ValueError(f"{who}: not yet supported (the IMK hinge laws are not in pounding "
-                         "yet); give materials={" + str(tag) + ": <HingeLaw>}")
-    if kind == "ElasticPPMaterial":
-        if float(info.get("eps0", 0.0)) != 0.0:
-            raise ValueError(f"{who}: eps0 = {info['eps0']} (an initial strain); pounding's "
-                             "elastic-plastic hinge starts unstrained (eps0 = 0)")
-        ep, en = float(info["epsyp"]), float(info["epsyn"])
-        k0 = _probe(ops, tag, 0.0)[1]
-        m_pos = _probe(ops, tag, 2.0 * ep)[0]
-        m_neg = _probe(ops, tag, 2.0 * en)[0]
-        if not math.isclose(-m_neg, m_pos, rel_tol=1e-9):
-            raise ValueError(f"{who}: yield moments +{m_pos:.6g} / {m_neg:.6g} differ; "
-                             "pounding's hinges are symmetric (epsyN = -epsyP)")
-        return ElasticPlastic(k0=k0, m_y=m_pos)
-    if kind == "Steel01":
-        iso = [float(info.get(k, 0.0)) for k in ("a1", "a2", "a3", "a4")]
-        if iso[0] != 0.0 or iso[2] != 0.0:
-            raise ValueError(f"{who}: isotropic hardening a1 … a4 = {iso}; pounding's bilinear "
-                             "hinge has kinematic hardening only (a1 = a3 = 0)")
-        k0 = _probe(ops, tag, 0.0)[1]
-        theta = 2.0 * float(info["fy"]) / float(info["E"])
-        m, kt = _probe(ops, tag, theta)
-        b = kt / k0
-        m_y = (m - kt * theta) / (1.0 - b)
-        if not math.isclose(m_y, float(info["fy"]), rel_tol=1e-5):  # pragma: no cover
-            raise ValueError(f"{who}: probing it gave a yield moment {m_y:.6g}, its printout "
-                             f"{info['fy']}")
-        if b == 0.0:
-            return ElasticPlastic(k0=k0, m_y=m_y)
-        return BilinearHinge(k0=k0, m_y=m_y, hardening=b)
-    raise ValueError(f"{who}: not supported as a hinge (pounding reads ElasticPP, Steel01; "
-                     "give materials={" + str(tag) + ": <HingeLaw>} for another)")
+def _read(ops: Any) -> _Domain:
+    """Nodes, fixities, masses, elements and constraints of the domain."""
+    model = model_json(ops)
+    geometry = model.get("geometry", {})
+    props = model.get("properties", {})
+    node_info = {int(n["name"]): n for n in geometry.get("nodes", [])}
+    ele_info = {int(e["name"]): e for e in geometry.get("elements", [])}
+    mat_info = {int(m["name"]): m for m in props.get("uniaxialMaterials", [])
+                if str(m.get("name", "")).lstrip("-").isdigit()}
+    transf = {str(t["name"]): str(t["type"]) for t in props.get("crdTransformations", [])}
+    tags = [int(t) for t in ops.getNodeTags()]
+    if not tags:
+        raise ValueError("the OpenSees domain has no nodes")
+    coord = {}
+    for t in tags:
+        xy = np.asarray(ops.nodeCoord(t), dtype=float)
+        ndf = int(node_info.get(t, {}).get("ndf", 3))
+        if xy.size != 2 or ndf != 3:
+            raise ValueError(f"node {t}: {xy.size}-D with {ndf} DOFs; pounding imports planar "
+                             "frames (model basic -ndm 2 -ndf 3)")
+        coord[t] = xy
+    fixed = {t: np.zeros(3, dtype=bool) for t in tags}
+    for t in ops.getFixedNodes():
+        for d in ops.getFixedDOFs(int(t)):
+            fixed[int(t)][int(d) - 1] = True
+    mass = {t: np.asarray(ops.nodeMass(t), dtype=float)[:3] for t in tags}
+    d = _Domain(ops, coord, fixed, mass, ele_info, mat_info, transf, {}, [], [], mp_ties(ops),
+                max(1.0, max(float(np.max(np.abs(c))) for c in coord.values())),
+                {t: [] for t in tags})
+    for e in (int(t) for t in ops.getEleTags()):
+        kind = ops.eleType(e) if hasattr(ops, "eleType") else ele_info.get(e, {}).get("type")
+        info = ele_info.get(e, {})
+        if kind == _BEAM:
+            if float(info.get("massperlength", 0.0)) != 0.0:
+                raise ValueError(f"element {e} ({kind}): a distributed mass (-mass "
+                                 f"{info['massperlength']}); give the masses at the nodes")
+            if int(info.get("release", 0)) not in (0, 3):
+                raise ValueError(f"element {e} ({kind}): -release {info['release']} (one end "
+                                 "pinned); use a zeroLength hinge, or release both ends for a "
+                                 "leaning column")
+            d.beams.append(e)
+        elif kind == _ZERO:
+            d.zeros.append(e)
+        else:
+            raise ValueError(f"element {e} ({kind}): not supported; pounding imports "
+                             "elasticBeamColumn elements and zeroLength rotational hinges")
+        nodes = tuple(int(n) for n in ops.eleNodes(e))
+        d.ends[e] = (nodes[0], nodes[1])
+        for n in nodes:
+            d.attached[n].append(e)
+    return d
 
 
-def _ties(ops: Any) -> list[tuple[int, int, tuple[int, ...], tuple[int, ...]]]:
-    """Every MP constraint as (retained, constrained, retained DOFs, constrained DOFs)."""
-    out = []
-    for r in sorted({int(t) for t in ops.getRetainedNodes()}):
-        for c in sorted({int(t) for t in ops.getConstrainedNodes(r)}):
-            out.append((r, c, tuple(int(d) for d in ops.getRetainedDOFs(r, c)),
-                        tuple(int(d) for d in ops.getConstrainedDOFs(c, r))))
+def _hinge(d: _Domain, z: int, materials: Mapping[int, HingeLaw]
+           ) -> tuple[int, int, HingeLaw]:
+    """(joint a, member end b, law) of zeroLength element ``z``."""
+    who = f"element {z} (zeroLength)"
+    info = d.ele_info.get(z, {})
+    dofs = [str(x) for x in info.get("dof", [])]
+    mats = [int(m) for m in info.get("materials", [])]
+    if dofs.count("Mz") != 1 or any(x not in ("P", "Vy", "Mz") for x in dofs):
+        raise ValueError(f"{who}: directions {dofs}: need one rotational material (-dir 3 or "
+                         "6) and rigid translations; pounding imports zeroLength elements as "
+                         "rotational hinges")
+    i, j = d.ends[z]
+    if np.hypot(*(d.coord[i] - d.coord[j])) > 1e-9 * d.scale:
+        raise ValueError(f"{who}: its nodes {i} and {j} are apart; a hinge joins two nodes "
+                         "at one place")
+    tied: set[int] = set()
+    constrained = []
+    for k, (r, c, rd, cd) in enumerate(d.ties):
+        if {r, c} == {i, j}:
+            if rd != cd or 3 in cd:
+                raise ValueError(f"{who}: equalDOF {r} {c} ties DOFs {list(cd)}; a hinge's two "
+                                 "nodes are tied in translation only (1 2)")
+            tied |= set(cd)
+            constrained.append(c)
+            d.used_ties.add(k)
+    for name, dof in (("P", 1), ("Vy", 2)):
+        if name in dofs:
+            mtag = mats[dofs.index(name)]
+            if str(d.mat_info.get(mtag, {}).get("type")) != "ElasticMaterial":
+                raise ValueError(f"{who}: material {mtag} in direction {dof} is not Elastic; "
+                                 "the translations of a hinge are rigid ties")
+            tied.add(dof)
+    tied |= {k + 1 for k in range(2) if d.fixed[i][k] and d.fixed[j][k]}
+    if not {1, 2} <= tied:
+        raise ValueError(f"{who}: nodes {i} and {j} are not tied in translation (equalDOF "
+                         f"{i} {j} 1 2)")
+
+    def member_end(n: int) -> bool:
+        others = [e for e in d.attached[n] if e != z]
+        return len(others) == 1 and others[0] in d.beams and not d.fixed[n][2]
+
+    order = [constrained[0], i + j - constrained[0]] if constrained else [j, i]
+    b = next((n for n in order if member_end(n)), None)
+    if b is None:
+        raise ValueError(f"{who}: neither node {i} nor {j} is a member end (one "
+                         "elasticBeamColumn and this hinge, rotation free)")
+    mtag = mats[dofs.index("Mz")]
+    return i + j - b, b, hinge_law(d.ops, mtag, d.mat_info.get(mtag), materials)
+
+
+def _leaning(d: _Domain) -> tuple[list[int], set[int], bool]:
+    """The leaning column: its pin-ended elements, their nodes, and whether their
+    transformation is PDelta."""
+    elems = [e for e in d.beams if int(d.ele_info.get(e, {}).get("release", 0)) == 3]
+    nodes: set[int] = set()
+    for e in elems:
+        nodes |= set(d.ends[e])
+    for n in nodes:
+        if any(e not in elems for e in d.attached[n]):
+            raise ValueError(f"node {n}: joins a pin-ended (leaning) element and other "
+                             "elements; a leaning column stands apart, tied to the floors by "
+                             "equalDOF 1")
+    kinds = set()
+    for e in elems:
+        i, j = d.ends[e]
+        if abs(d.coord[j][0] - d.coord[i][0]) > 1e-9 * d.scale:
+            raise ValueError(f"element {e} ({_BEAM}, -release 3): not vertical; pounding "
+                             "reads pin-ended elements as a leaning column")
+        kind = d.transformation(e)
+        if kind not in _TRANSFORMS:
+            raise ValueError(f"element {e} ({_BEAM}): transformation {kind} not supported "
+                             "(Linear or PDelta)")
+        kinds.add(kind)
+    if len(kinds) > 1:
+        raise ValueError("leaning column: some of its elements have a PDelta transformation "
+                         "and some do not")
+    return elems, nodes, kinds == {"PDeltaCrdTransf2d"}
+
+
+@dataclass
+class _Members:
+    elements: list[tuple[int, int]] = field(default_factory=list)
+    EA: list[float] = field(default_factory=list)
+    EI: list[float] = field(default_factory=list)
+    w: list[float] = field(default_factory=list)
+    hinges: list[FrameHinge] = field(default_factory=list)
+    hinge_tags: list[int] = field(default_factory=list)
+    geometry: str = "linear"
+
+
+def _members(d: _Domain, elems: list[int], node_index: Callable[[int], int],
+             hinge_at: dict[int, tuple[int, HingeLaw]],
+             member_loads: dict[int, NDArray[np.float64]]) -> _Members:
+    """Rigidities, hinges, member loads and geometry of the frame elements ``elems``."""
+    out = _Members()
+    columns: set[str] = set()
+    beams: set[str] = set()
+    for k, e in enumerate(elems):
+        i, j = d.ends[e]
+        delta = d.coord[j] - d.coord[i]
+        L = float(np.hypot(*delta))
+        kb = np.asarray(d.ops.basicStiffness(e), dtype=float)
+        if kb.size != 9 or not math.isclose(kb[5], 0.5 * kb[4], rel_tol=1e-9) or not \
+                math.isclose(kb[7], kb[5], rel_tol=1e-9) or kb[1] != 0.0 or kb[2] != 0.0:
+            raise ValueError(f"element {e} ({_BEAM}): its basic stiffness {kb.tolist()} is "
+                             "not that of an elastic Euler-Bernoulli beam-column")
+        out.EA.append(float(kb[0]) * L)
+        out.EI.append(float(kb[4]) * L / 4.0)
+        out.elements.append((node_index(i), node_index(j)))
+        for end, n in ((0, i), (1, j)):
+            if n in hinge_at:
+                z, law = hinge_at[n]
+                out.hinges.append(FrameHinge(k, end, law))
+                out.hinge_tags.append(z)
+        (columns if abs(delta[1]) > abs(delta[0]) else beams).add(d.transformation(e))
+        wy, wx = member_loads.get(e, np.zeros(2))
+        c, s = delta / L
+        # the global load per length wy (−s, c) + wx (c, s) must be (0, −w)
+        gx, gy = -wy * s + wx * c, wy * c + wx * s
+        if abs(gx) > 1e-9 * max(abs(wy), abs(wx)):
+            raise ValueError(f"element {e} ({_BEAM}): its -beamUniform load ({wy:.6g}, "
+                             f"{wx:.6g}) N/m is not vertical; pounding's member loads are "
+                             "gravity loads")
+        out.w.append(0.0 - float(gy))
+    for e in member_loads:
+        if e not in elems:
+            raise ValueError(f"element {e}: an element load on an element that is not a "
+                             "frame member")
+    unknown = (columns | beams) - set(_TRANSFORMS)
+    if unknown:
+        raise ValueError(f"geometric transformation {min(unknown)}: not supported "
+                         "(Linear or PDelta)")
+    if len(columns) > 1:
+        raise ValueError("columns: some have a Linear and some a PDelta transformation; "
+                         "pounding takes one for all")
+    out.geometry = "p-delta" if columns == {"PDeltaCrdTransf2d"} else "linear"
     return out
-
-
-def _loads(ops: Any, patterns: Sequence[int] | None, ndf: int
-           ) -> tuple[dict[int, np.ndarray], dict[int, np.ndarray]]:
-    """Nodal loads {node: (F_x, F_y, M)} and uniform element loads {element: (w_y, w_x)}
-    summed over the chosen load patterns."""
-    have = [int(p) for p in ops.getPatterns()]
-    chosen = have if patterns is None else [int(p) for p in patterns]
-    for p in chosen:
-        if p not in have:
-            raise ValueError(f"load_patterns: pattern {p} is not in the domain (it has "
-                             f"{have})")
-    nodal: dict[int, np.ndarray] = {}
-    member: dict[int, np.ndarray] = {}
-    for p in chosen:
-        tags = [int(t) for t in ops.getNodeLoadTags(p)]
-        data = np.asarray(ops.getNodeLoadData(p), dtype=float)
-        if data.size != ndf * len(tags):
-            raise ValueError(f"load pattern {p}: {data.size} nodal load values for "
-                             f"{len(tags)} loads of {ndf} components")
-        for k, t in enumerate(tags):
-            nodal[t] = nodal.get(t, np.zeros(3)) + data[ndf * k: ndf * (k + 1)]
-        etags = [int(t) for t in ops.getEleLoadTags(p)]
-        classes = [int(c) for c in ops.getEleLoadClassTags(p)]
-        edata = np.asarray(ops.getEleLoadData(p), dtype=float)
-        for t, c in zip(etags, classes, strict=False):
-            if c != _UNIFORM_LOAD_CLASS:
-                raise ValueError(f"load pattern {p}: element {t}: element load of class "
-                                 f"{c} not supported (pounding reads -beamUniform loads over "
-                                 "the whole member)")
-        if edata.size != 2 * len(etags):
-            raise ValueError(f"load pattern {p}: {edata.size} element load values for "
-                             f"{len(etags)} uniform loads")
-        for k, t in enumerate(etags):
-            member[t] = member.get(t, np.zeros(2)) + edata[2 * k: 2 * k + 2]
-    return nodal, member
 
 
 def _find(parent: dict[int, int], x: int) -> int:
@@ -220,6 +325,87 @@ def _find(parent: dict[int, int], x: int) -> int:
         parent[x] = parent[parent[x]]
         x = parent[x]
     return x
+
+
+def _floors(d: _Domain, frame: Frame, keep: list[int], joint: Callable[[int], int],
+            leaning_nodes: set[int]) -> tuple[bool, dict[int, int]]:
+    """Rigid floors from the remaining equalDOF ties: (diaphragm, the floor each
+    leaning-column node is tied to)."""
+    index = {t: k for k, t in enumerate(keep)}
+    level = frame.node_level
+    parent: dict[int, int] = {}
+    floor_ties = 0
+    lean_at: dict[int, int] = {}
+    for k, (r, c, rd, cd) in enumerate(d.ties):
+        if k in d.used_ties:
+            continue
+        if rd != (1,) or cd != (1,):
+            raise ValueError(f"equalDOF {r} {c} (DOFs {list(cd)}): pounding reads equalDOF as "
+                             "rigid-floor ties (DOF 1 at one level) and hinge ties (1 2)")
+        if abs(d.coord[r][1] - d.coord[c][1]) > LEVEL_TOL:
+            raise ValueError(f"equalDOF {r} {c} 1: the nodes stand at different levels "
+                             f"({d.coord[r][1]:.6g} m, {d.coord[c][1]:.6g} m)")
+        if r in leaning_nodes or c in leaning_nodes:
+            lean, other = (r, c) if r in leaning_nodes else (c, r)
+            if other in leaning_nodes or level[index[joint(other)]] < 0:
+                raise ValueError(f"equalDOF {r} {c} 1: a leaning-column node must be tied to "
+                                 "a floor of the frame")
+            lean_at[lean] = int(level[index[joint(other)]])
+            continue
+        ra, ca = index[joint(r)], index[joint(c)]
+        if level[ra] < 0 or frame.supports[ra, 0] or frame.supports[ca, 0]:
+            raise ValueError(f"equalDOF {r} {c} 1: ties nodes that are not on a floor above "
+                             "the base, or are fixed in x")
+        parent[_find(parent, ra)] = _find(parent, ca)
+        floor_ties += 1
+    diaphragm = floor_ties > 0 or bool(lean_at)
+    if diaphragm:
+        for f, y in enumerate(frame.levels):
+            members = [n for n in range(len(keep))
+                       if level[n] == f and not frame.supports[n, 0]]
+            first = _find(parent, members[0])
+            loose = [keep[n] for n in members if _find(parent, n) != first]
+            if loose:
+                raise ValueError(f"equalDOF: the floor at y = {y:.6g} m does not tie nodes "
+                                 f"{loose} to node {keep[members[0]]} in x; pounding's rigid "
+                                 "floors tie every node of every floor (tie all, or none)")
+    return diaphragm, lean_at
+
+
+def _leaning_loads(d: _Domain, frame: Frame, elems: list[int], nodes: set[int],
+                   lean_at: dict[int, int], nodal: dict[int, NDArray[np.float64]]
+                   ) -> NDArray[np.float64]:
+    """The gravity load the leaning column takes at each floor [N]."""
+    leaning = np.zeros(frame.levels.size)
+    base = frame.base
+    for n in sorted(nodes):
+        if np.any(d.mass[n] != 0.0):
+            raise ValueError(f"node {n}: a mass on the leaning column; put it on the floor")
+        f = nodal.get(n, np.zeros(3))
+        if f[0] != 0.0 or f[2] != 0.0:
+            raise ValueError(f"node {n}: a leaning-column load that is not vertical "
+                             f"({f.tolist()})")
+        if abs(d.coord[n][1] - base) <= LEVEL_TOL:
+            if not (d.fixed[n][0] and d.fixed[n][1]):
+                raise ValueError(f"node {n}: the leaning column's base must be fixed in x "
+                                 "and y")
+            continue
+        if not d.fixed[n][2]:
+            raise ValueError(f"node {n}: fix the leaning column's rotations (fix {n} 0 0 1); "
+                             "they have no stiffness")
+        if n not in lean_at:
+            raise ValueError(f"node {n}: a leaning-column node not tied to a floor "
+                             f"(equalDOF <floor node> {n} 1)")
+        leaning[lean_at[n]] -= f[1]
+    for e in elems:
+        lo, hi = sorted(d.ends[e], key=lambda n: d.coord[n][1])
+        below = -1 if abs(d.coord[lo][1] - base) <= LEVEL_TOL else lean_at.get(lo, -2)
+        if lean_at.get(hi, -3) != below + 1:
+            raise ValueError(f"element {e} (leaning column): must span one storey, from a "
+                             "floor (or the base) to the next")
+    if np.any(leaning < 0.0):
+        raise ValueError(f"leaning column: an upward load ({leaning.tolist()} N)")
+    return leaning
 
 
 def read_opensees_frame(ops_module: Any = None, *, name: str = "frame",
@@ -249,329 +435,78 @@ def read_opensees_frame(ops_module: Any = None, *, name: str = "frame",
     ValueError
         One line naming what is not supported or inconsistent.
     """
-    if ops_module is None:
-        import openseespy.opensees as ops_module
     ops = ops_module
-    materials = dict(materials or {})
-    for tag, law in materials.items():
+    if ops is None:
+        from openseespy import opensees
+
+        ops = opensees
+    given = dict(materials or {})
+    for tag, law in given.items():
         if not isinstance(law, HingeLaw):
             raise ValueError(f"materials[{tag}]: need a hinge law (got {law!r})")
-    model = _model_json(ops)
-    geometry_json = model.get("geometry", {})
-    node_info = {int(n["name"]): n for n in geometry_json.get("nodes", [])}
-    ele_info = {int(e["name"]): e for e in geometry_json.get("elements", [])}
-    mat_info = {int(m["name"]): m for m in model.get("properties", {}).get(
-        "uniaxialMaterials", []) if str(m.get("name", "")).lstrip("-").isdigit()}
-    transf = {str(t["name"]): str(t["type"]) for t in model.get("properties", {}).get(
-        "crdTransformations", [])}
+    d = _read(ops)
 
-    tags = [int(t) for t in ops.getNodeTags()]
-    if not tags:
-        raise ValueError("the OpenSees domain has no nodes")
-    coord: dict[int, np.ndarray] = {}
-    for t in tags:
-        xy = np.asarray(ops.nodeCoord(t), dtype=float)
-        ndf = int(node_info.get(t, {}).get("ndf", 3))
-        if xy.size != 2 or ndf != 3:
-            raise ValueError(f"node {t}: {xy.size}-D with {ndf} DOFs; pounding imports planar "
-                             "frames (model basic -ndm 2 -ndf 3)")
-        coord[t] = xy
-    scale = max(1.0, max(float(np.max(np.abs(c))) for c in coord.values()))
-    fixed = {t: np.zeros(3, dtype=bool) for t in tags}
-    for t in ops.getFixedNodes():
-        for d in ops.getFixedDOFs(int(t)):
-            fixed[int(t)][int(d) - 1] = True
-    mass = {t: np.asarray(ops.nodeMass(t), dtype=float)[:3] for t in tags}
-
-    # ---------------------------------------------------------------- elements
-    beams: list[int] = []
-    zeros: list[int] = []
-    ends: dict[int, tuple[int, int]] = {}
-    for e in (int(t) for t in ops.getEleTags()):
-        kind = ops.eleType(e) if hasattr(ops, "eleType") else ele_info.get(e, {}).get("type")
-        info = ele_info.get(e, {})
-        nodes = tuple(int(n) for n in ops.eleNodes(e))
-        if kind == _BEAM:
-            if float(info.get("massperlength", 0.0)) != 0.0:
-                raise ValueError(f"element {e} ({kind}): a distributed mass (-mass "
-                                 f"{info['massperlength']}); give the masses at the nodes")
-            if int(info.get("release", 0)) not in (0, 3):
-                raise ValueError(f"element {e} ({kind}): -release {info['release']} (one end "
-                                 "pinned); use a zeroLength hinge, or release both ends for a "
-                                 "leaning column")
-            beams.append(e)
-        elif kind == _ZERO:
-            zeros.append(e)
-        else:
-            raise ValueError(f"element {e} ({kind}): not supported; pounding imports "
-                             "elasticBeamColumn elements and zeroLength rotational hinges")
-        ends[e] = (nodes[0], nodes[1])
-    attached: dict[int, list[int]] = {t: [] for t in tags}
-    for e in beams + zeros:
-        for n in ends[e]:
-            attached[n].append(e)
-
-    ties = _ties(ops)
-    used_ties: set[int] = set()
-
-    # ---------------------------------------------------------------- hinges
     merged: dict[int, int] = {}  # member-end node b -> joint a
-    hinge_of_end: dict[int, tuple[int, HingeLaw]] = {}  # node b -> (zeroLength tag, law)
-    for z in zeros:
-        who = f"element {z} (zeroLength)"
-        info = ele_info.get(z, {})
-        dofs = [str(d) for d in info.get("dof", [])]
-        mats = [int(m) for m in info.get("materials", [])]
-        if "Mz" not in dofs or dofs.count("Mz") != 1:
-            raise ValueError(f"{who}: no single rotational material (-dir 3 or 6); pounding "
-                             "imports zeroLength elements as rotational hinges")
-        i, j = ends[z]
-        if np.hypot(*(coord[i] - coord[j])) > 1e-9 * scale:
-            raise ValueError(f"{who}: its nodes {i} and {j} are apart; a hinge joins two "
-                             "nodes at one place")
-        tied = set()
-        for k, (r, c, rd, cd) in enumerate(ties):
-            if {r, c} == {i, j}:
-                if rd != cd or 3 in cd:
-                    raise ValueError(f"{who}: equalDOF {r} {c} ties DOFs {list(cd)}; a hinge's "
-                                     "two nodes are tied in translation only (1 2)")
-                tied |= set(cd)
-                used_ties.add(k)
-        for d_name, dof in (("P", 1), ("Vy", 2)):
-            if d_name in dofs:
-                mtag = mats[dofs.index(d_name)]
-                if str(mat_info.get(mtag, {}).get("type")) != "ElasticMaterial":
-                    raise ValueError(f"{who}: material {mtag} in direction {dof} is not "
-                                     "Elastic; the translations of a hinge are rigid ties")
-                tied.add(dof)
-        for d in (1, 2):
-            if fixed[i][d - 1] and fixed[j][d - 1]:
-                tied.add(d)
-        if not {1, 2} <= tied:
-            raise ValueError(f"{who}: nodes {i} and {j} are not tied in translation "
-                             f"(equalDOF {i} {j} 1 2)")
-        for d_name in dofs:
-            if d_name not in ("P", "Vy", "Mz"):
-                raise ValueError(f"{who}: direction {d_name} not supported")
-
-        def member_end(n: int) -> bool:
-            others = [e for e in attached[n] if e != z]
-            return len(others) == 1 and others[0] in beams and not fixed[n][2]
-
-        constrained = [c for (r, c, _, _) in ties if {r, c} == {i, j}]
-        order = ([constrained[0], i if constrained[0] == j else j] if constrained
-                 else [j, i])
-        b = next((n for n in order if member_end(n)), None)
-        if b is None:
-            raise ValueError(f"{who}: neither node {i} nor {j} is a member end (one "
-                             "elasticBeamColumn and this hinge, rotation free)")
-        a = j if b == i else i
-        if b in merged or b in hinge_of_end:
-            raise ValueError(f"{who}: node {b} already ends another hinge")
+    hinge_at: dict[int, tuple[int, HingeLaw]] = {}  # node b -> (zeroLength tag, law)
+    for z in d.zeros:
+        a, b, law = _hinge(d, z, given)
+        if b in merged:
+            raise ValueError(f"element {z} (zeroLength): node {b} already ends another hinge")
         merged[b] = a
-        mtag = mats[dofs.index("Mz")]
-        hinge_of_end[b] = (z, _hinge_law(ops, mtag, mat_info.get(mtag), materials))
+        hinge_at[b] = (z, law)
     for b, a in merged.items():
         if a in merged:
-            raise ValueError(f"element {hinge_of_end[b][0]} (zeroLength): its joint {a} ends "
-                             f"another hinge (element {hinge_of_end[a][0]}); hinges in series "
-                             "are not supported")
+            raise ValueError(f"element {hinge_at[b][0]} (zeroLength): its joint {a} ends "
+                             f"another hinge (element {hinge_at[a][0]}); hinges in series are "
+                             "not supported")
 
     def joint(n: int) -> int:
         return merged.get(n, n)
 
-    # ---------------------------------------------------------------- loads
-    nodal, member = _loads(ops, load_patterns, 3)
-
-    # ---------------------------------------------------------------- leaning column
-    leaning_elems = [e for e in beams if int(ele_info.get(e, {}).get("release", 0)) == 3]
-    frame_elems = [e for e in beams if e not in leaning_elems]
-    leaning_nodes: set[int] = set()
-    for e in leaning_elems:
-        leaning_nodes |= set(ends[e])
-    for n in leaning_nodes:
-        if any(e not in leaning_elems for e in attached[n]):
-            raise ValueError(f"node {n}: joins a pin-ended (leaning) element and other "
-                             "elements; a leaning column stands apart, tied to the floors by "
-                             "equalDOF 1")
-    lean_pdelta = False
-    for e in leaning_elems:
-        i, j = ends[e]
-        d = coord[j] - coord[i]
-        kind = transf.get(str(ele_info[e].get("crdTransformation")), "?")
-        if abs(d[0]) > 1e-9 * scale:
-            raise ValueError(f"element {e} ({_BEAM}, -release 3): not vertical; pounding "
-                             "reads pin-ended elements as a leaning column")
-        if kind not in ("LinearCrdTransf2d", "PDeltaCrdTransf2d"):
-            raise ValueError(f"element {e} ({_BEAM}): transformation {kind} not supported "
-                             "(Linear or PDelta)")
-        lean_pdelta |= kind == "PDeltaCrdTransf2d"
-    if leaning_elems and lean_pdelta and any(
-            transf.get(str(ele_info[e].get("crdTransformation"))) != "PDeltaCrdTransf2d"
-            for e in leaning_elems):
-        raise ValueError("leaning column: some of its elements have a PDelta transformation "
-                         "and some do not")
-
-    # ---------------------------------------------------------------- the frame's nodes
-    keep = [t for t in tags if t not in merged and t not in leaning_nodes]
+    nodal, member_loads = pattern_loads(ops, load_patterns, 3)
+    lean_elems, lean_nodes, lean_pdelta = _leaning(d)
+    keep = [t for t in d.coord if t not in merged and t not in lean_nodes]
     index = {t: k for k, t in enumerate(keep)}
-    nodes = np.array([coord[t] for t in keep])
-    supports = np.array([fixed[t] for t in keep], dtype=bool)
-    masses = np.array([mass[t] for t in keep])
+    supports = np.array([d.fixed[t] for t in keep], dtype=bool)
+    masses = np.array([d.mass[t] for t in keep])
     loads = np.zeros((len(keep), 3))
     for t, f in nodal.items():
-        if t in leaning_nodes:
+        if t in lean_nodes:
             continue
-        loads[index[joint(t)]] += f
         if t in merged and f[2] != 0.0:
             raise ValueError(f"node {t}: a moment load on a hinge's member-end node; load "
                              f"the joint {merged[t]}")
+        loads[index[joint(t)]] += f
     for b, a in merged.items():
-        if fixed[b][2]:
-            raise ValueError(f"node {b}: its rotation is fixed, so its hinge cannot turn")
-        supports[index[a], :2] |= fixed[b][:2]
-        if mass[b][2] != 0.0:
+        supports[index[a], :2] |= d.fixed[b][:2]
+        if d.mass[b][2] != 0.0:
             raise ValueError(f"node {b}: a rotational mass on a hinge's member-end node; put "
                              f"it on the joint {a}")
-        masses[index[a], :2] += mass[b][:2]
-
-    # ---------------------------------------------------------------- elements, hinges
-    elements = []
-    EA, EI, w = [], [], []
-    hinges: list[FrameHinge] = []
-    hinge_tags: list[int] = []
-    columns_transf: set[str] = set()
-    beams_transf: set[str] = set()
-    for k, e in enumerate(frame_elems):
-        i, j = ends[e]
-        d = coord[j] - coord[i]
-        L = float(np.hypot(*d))
-        kb = np.asarray(ops.basicStiffness(e), dtype=float)
-        if kb.size != 9 or not math.isclose(kb[5], 0.5 * kb[4], rel_tol=1e-9) or not \
-                math.isclose(kb[7], kb[5], rel_tol=1e-9) or kb[1] != 0.0 or kb[2] != 0.0:
-            raise ValueError(f"element {e} ({_BEAM}): its basic stiffness {kb.tolist()} is "
-                             "not that of an elastic Euler-Bernoulli beam-column")
-        EA.append(kb[0] * L)
-        EI.append(kb[4] * L / 4.0)
-        elements.append((index[joint(i)], index[joint(j)]))
-        for end, n in ((0, i), (1, j)):
-            if n in hinge_of_end:
-                z, law = hinge_of_end[n]
-                hinges.append(FrameHinge(k, end, law))
-                hinge_tags.append(z)
-        kind = transf.get(str(ele_info.get(e, {}).get("crdTransformation")), "?")
-        (columns_transf if abs(d[1]) > abs(d[0]) else beams_transf).add(kind)
-        wy, wx = member.get(e, np.zeros(2))
-        c, s = d / L
-        # global load per length: wy (−s, c) + wx (c, s) must be (0, −w)
-        gx, gy = -wy * s + wx * c, wy * c + wx * s
-        if abs(gx) > 1e-9 * max(abs(wy), abs(wx)):
-            raise ValueError(f"element {e} ({_BEAM}): its -beamUniform load ({wy:.6g}, "
-                             f"{wx:.6g}) N/m is not vertical; pounding's member loads are "
-                             "gravity loads")
-        w.append(0.0 - gy)
-    for e in member:
-        if e not in frame_elems:
-            raise ValueError(f"element {e}: an element load on an element that is not a "
-                             "frame member")
-    if not elements:
+        masses[index[a], :2] += d.mass[b][:2]
+    frame_elems = [e for e in d.beams if e not in lean_elems]
+    if not frame_elems:
         raise ValueError("the OpenSees domain has no elasticBeamColumn frame members")
-    unknown = (columns_transf | beams_transf) - {"LinearCrdTransf2d", "PDeltaCrdTransf2d"}
-    if unknown:
-        raise ValueError(f"geometric transformation {sorted(unknown)[0]}: not supported "
-                         "(Linear or PDelta)")
-    if len(columns_transf) > 1:
-        raise ValueError("columns: some have a Linear and some a PDelta transformation; "
-                         "pounding takes one for all")
-    geometry = "p-delta" if columns_transf == {"PDeltaCrdTransf2d"} else "linear"
-
-    # ---------------------------------------------------------------- rigid floors
-    probe = Frame(nodes=nodes, elements=np.array(elements, dtype=np.int64), EA=EA, EI=EI,
-                  supports=supports, masses=masses, diaphragm=False, name=name)
-    levels = probe.levels
-    level = probe.node_level
-    parent: dict[int, int] = {}
-    floor_ties = 0
-    lean_at: dict[int, int] = {}  # leaning node -> floor level
-    for k, (r, c, rd, cd) in enumerate(ties):
-        if k in used_ties:
-            continue
-        if rd != (1,) or cd != (1,):
-            raise ValueError(f"equalDOF {r} {c} (DOFs {list(cd)}): pounding reads equalDOF as "
-                             "rigid-floor ties (DOF 1 at one level) and hinge ties (1 2)")
-        if abs(coord[r][1] - coord[c][1]) > LEVEL_TOL:
-            raise ValueError(f"equalDOF {r} {c} 1: the nodes stand at different levels "
-                             f"({coord[r][1]:.6g} m, {coord[c][1]:.6g} m)")
-        if r in leaning_nodes or c in leaning_nodes:
-            lean, other = (r, c) if r in leaning_nodes else (c, r)
-            if other in leaning_nodes or level[index[joint(other)]] < 0:
-                raise ValueError(f"equalDOF {r} {c} 1: a leaning-column node must be tied to "
-                                 "a floor of the frame")
-            lean_at[lean] = int(level[index[joint(other)]])
-            continue
-        ra, ca = index[joint(r)], index[joint(c)]
-        if level[ra] < 0 or supports[ra, 0] or supports[ca, 0]:
-            raise ValueError(f"equalDOF {r} {c} 1: ties nodes that are not on a floor above "
-                             "the base, or are fixed in x")
-        parent[_find(parent, ra)] = _find(parent, ca)
-        floor_ties += 1
-    diaphragm = floor_ties > 0 or bool(lean_at)
-    if diaphragm:
-        for f, y in enumerate(levels):
-            members = [n for n in range(len(keep)) if level[n] == f and not supports[n, 0]]
-            roots = {_find(parent, n) for n in members}
-            if len(roots) > 1:
-                loose = [keep[n] for n in members if _find(parent, n) != _find(
-                    parent, members[0])]
-                raise ValueError(f"equalDOF: the floor at y = {y:.6g} m does not tie nodes "
-                                 f"{loose} to node {keep[members[0]]} in x; pounding's rigid "
-                                 "floors tie every node of every floor (tie all, or none)")
-
-    # ---------------------------------------------------------------- leaning loads
-    leaning = np.zeros(levels.size)
-    base = probe.base
-    for n in leaning_nodes:
-        if np.any(mass[n] != 0.0):
-            raise ValueError(f"node {n}: a mass on the leaning column; put it on the floor")
-        f = nodal.get(n, np.zeros(3))
-        if f[0] != 0.0 or f[2] != 0.0:
-            raise ValueError(f"node {n}: a leaning-column load that is not vertical "
-                             f"({f.tolist()})")
-        if abs(coord[n][1] - base) <= LEVEL_TOL:
-            if not (fixed[n][0] and fixed[n][1]):
-                raise ValueError(f"node {n}: the leaning column's base must be fixed in x "
-                                 "and y")
-            continue
-        if not fixed[n][2]:
-            raise ValueError(f"node {n}: fix the leaning column's rotations (fix {n} 0 0 1); "
-                             "they have no stiffness")
-        if n not in lean_at:
-            raise ValueError(f"node {n}: a leaning-column node not tied to a floor "
-                             f"(equalDOF <floor node> {n} 1)")
-        leaning[lean_at[n]] += -f[1]
-    for e in leaning_elems:
-        lo, hi = sorted(ends[e], key=lambda n: coord[n][1])
-        f_lo = -1 if abs(coord[lo][1] - base) <= LEVEL_TOL else lean_at.get(lo, -2)
-        if lean_at.get(hi, -3) != f_lo + 1:
-            raise ValueError(f"element {e} (leaning column): must span one storey, from a "
-                             "floor (or the base) to the next")
-    if np.any(leaning < 0.0):
-        raise ValueError("leaning column: an upward load")
-    if not lean_pdelta:
+    m = _members(d, frame_elems, lambda n: index[joint(n)], hinge_at, member_loads)
+    nodes = np.array([d.coord[t] for t in keep])
+    elements = np.array(m.elements, dtype=np.int64)
+    bare = Frame(nodes=nodes, elements=elements, EA=np.array(m.EA), EI=np.array(m.EI),
+                 supports=supports, masses=masses, diaphragm=False, name=name)
+    diaphragm, lean_at = _floors(d, bare, keep, joint, lean_nodes)
+    leaning = _leaning_loads(d, bare, lean_elems, lean_nodes, lean_at, nodal)
+    if not lean_pdelta:  # a Linear pin-ended column adds nothing laterally
         leaning[:] = 0.0
-
-    frame = Frame(nodes=nodes, elements=np.array(elements, dtype=np.int64), EA=np.array(EA),
-                  EI=np.array(EI), supports=supports, hinges=tuple(hinges), masses=masses,
-                  nodal_loads=loads, member_loads=np.array(w), diaphragm=diaphragm,
-                  leaning_loads=leaning, geometry=geometry, name=name)
-    return ImportedFrame(frame, tuple(keep), tuple(frame_elems), tuple(hinge_tags))
+    frame = Frame(nodes=nodes, elements=elements, EA=np.array(m.EA), EI=np.array(m.EI),
+                  supports=supports, hinges=tuple(m.hinges), masses=masses, nodal_loads=loads,
+                  member_loads=np.array(m.w), diaphragm=diaphragm, leaning_loads=leaning,
+                  geometry=m.geometry, name=name)
+    return ImportedFrame(frame, tuple(keep), tuple(frame_elems), tuple(m.hinge_tags))
 
 
 def frame_from_opensees(ops_module: Any = None, *, name: str = "frame",
                         materials: Mapping[int, HingeLaw] | None = None,
                         load_patterns: Sequence[int] | None = None) -> Frame:
     """The planar frame of the current OpenSeesPy domain (:func:`read_opensees_frame`'s
-    frame; see the module docstring for what is read and how).
+    frame, with the same parameters; see the module docstring for what is read and how).
 
     Examples
     --------
