@@ -15,10 +15,10 @@ domain is read, not changed (no analysis is set up or run). What is read, and ho
   - ``elasticBeamColumn`` (``ElasticBeam2d``): ``EA`` and ``EI`` from the element's basic
     stiffness ``basicStiffness(tag)`` = ``[[EA/L, 0, 0], [0, 4EI/L, 2EI/L], [0, 2EI/L,
     4EI/L]]`` times the length from ``nodeCoord`` (exact to rounding);
-  - the hinge materials by probing a copy of each with ``testUniaxialMaterial``/``setStrain``/
-    ``getStress``/``getTangent`` (the domain's material is untouched): the tangent at zero
-    strain is ``k0``; past yield (twice the printed yield rotation) the tangent is ``b k0``
-    and the stress gives ``M_y = (M − b k0 θ)/(1 − b)``;
+  - the hinge materials' constants (``E``, ``Fy``, ``b``, ``a1``, ``a3``) through an OpenSees
+    parameter on the zeroLength's material, added, read with ``getParamValue`` and removed
+    (the material's state is untouched; ``ElasticPP``'s ``epsyN`` and ``eps0``, which no
+    parameter reads, from the printout);
 
 * **hinges**: a ``zeroLength`` element between two nodes at one place, with one rotational
   material (``-dir 3`` or ``-dir 6``) and its two nodes tied in translation (``equalDOF a b
@@ -227,8 +227,10 @@ def _hinge(d: _Domain, z: int, materials: Mapping[int, HingeLaw]
     if b is None:
         raise ValueError(f"{who}: neither node {i} nor {j} is a member end (one "
                          "elasticBeamColumn and this hinge, rotation free)")
-    mtag = mats[dofs.index("Mz")]
-    return i + j - b, b, hinge_law(d.ops, mtag, d.mat_info.get(mtag), materials)
+    place = dofs.index("Mz")
+    mtag = mats[place]
+    law = hinge_law(d.ops, mtag, d.mat_info.get(mtag), materials, z, place + 1)
+    return i + j - b, b, law
 
 
 def _leaning(d: _Domain) -> tuple[list[int], set[int], bool]:

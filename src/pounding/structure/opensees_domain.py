@@ -3,9 +3,11 @@
 * :func:`model_json` — the domain as ``printModel('-JSON', '-file', …)`` prints it: element
   and material types, nodes, transformations, releases, material parameters (to 6
   significant digits only; ``setPrecision`` does not change it);
-* :func:`hinge_law` — a uniaxial material as a pounding hinge law, its numbers read exactly by
-  probing a copy of it (``testUniaxialMaterial``, ``setStrain``, ``getStress``,
-  ``getTangent``; the domain's material is untouched);
+* :func:`hinge_law` — a uniaxial material as a pounding hinge law, its constants read exactly
+  through OpenSees parameters on the zeroLength element's material (``parameter``,
+  ``getParamValue``, then ``remove('parameter', …)``). Not by straining it with
+  ``testUniaxialMaterial``/``setStrain``: in OpenSeesPy 3.7.1 that strains the material
+  library's own object (no copy), whose state later ``element`` commands would copy;
 * :func:`mp_ties` — the multi-point constraints (``equalDOF``) with their DOFs;
 * :func:`pattern_loads` — nodal loads and uniform member loads of load patterns.
 
@@ -54,23 +56,29 @@ def model_json(ops: Any) -> dict[str, Any]:
     return dict(model)
 
 
-def _probe(ops: Any, tag: int, strain: float) -> tuple[float, float]:
-    """(stress, tangent) of a fresh copy of material ``tag`` strained monotonically from 0."""
-    ops.testUniaxialMaterial(tag)
-    ops.setStrain(float(strain))
-    return float(ops.getStress()), float(ops.getTangent())
+def _parameter(ops: Any, element: int, index: int, name: str) -> float:
+    """The value of constant ``name`` of material number ``index`` (from 1) of ``element``,
+    read through a parameter added and removed at once (``parameter``, ``getParamValue``,
+    ``remove('parameter', …)``), exact and without touching the material's state."""
+    tag = max([0, *(int(t) for t in ops.getParamTags())]) + 1
+    ops.parameter(tag, "element", element, "material", str(index), name)
+    try:
+        return float(ops.getParamValue(tag))
+    finally:
+        ops.remove("parameter", tag)
 
 
 def hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
-               materials: Mapping[int, HingeLaw]) -> HingeLaw:
-    """The hinge law of uniaxial material ``tag``.
+              materials: Mapping[int, HingeLaw], element: int, index: int) -> HingeLaw:
+    """The hinge law of uniaxial material ``tag``, the ``index``-th (from 1) material of
+    zeroLength ``element``.
 
     ``materials[tag]`` when given; else ``ElasticPP`` (symmetric, ``eps0 = 0``) →
     :class:`~pounding.hysteresis.hinges.ElasticPlastic` and ``Steel01`` with no isotropic
-    hardening (``a1 = a3 = 0``) → :class:`~pounding.hysteresis.hinges.BilinearHinge`. The
-    numbers are probed on a copy of the material: the tangent at zero strain is ``k0``; at
-    twice the printed yield rotation ``θ`` the tangent is ``b k0`` and the stress ``M`` gives
-    ``M_y = (M − b k0 θ)/(1 − b)``.
+    hardening (``a1 = a3 = 0``) → :class:`~pounding.hysteresis.hinges.BilinearHinge`. Their
+    constants (``E``, ``Fy``, ``b``, ``a1``, ``a3``) are read exactly through OpenSees
+    parameters on the element's material (:func:`_parameter`); the printout only names the
+    type and, for ``ElasticPP``, gives ``epsyN`` and ``eps0``, which no parameter reads.
 
     Parameters
     ----------
@@ -82,6 +90,8 @@ def hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
         Its entry in :func:`model_json`'s ``uniaxialMaterials``.
     materials : mapping
         Laws given by the user for material tags (taken as they are).
+    element, index : int
+        A zeroLength element that uses the material, and its place in the element's list.
     """
     if tag in materials:
         return materials[tag]
@@ -97,26 +107,18 @@ def hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
             raise ValueError(f"{who}: eps0 = {info['eps0']} (an initial strain); pounding's "
                              "elastic-plastic hinge starts unstrained (eps0 = 0)")
         ep, en = float(info["epsyp"]), float(info["epsyn"])
-        k0 = _probe(ops, tag, 0.0)[1]
-        m_pos = _probe(ops, tag, 2.0 * ep)[0]
-        m_neg = _probe(ops, tag, 2.0 * en)[0]
-        if not math.isclose(-m_neg, m_pos, rel_tol=1e-9):
-            raise ValueError(f"{who}: yield moments +{m_pos:.6g} / {m_neg:.6g} differ; "
+        if not math.isclose(-en, ep, rel_tol=1e-5):
+            raise ValueError(f"{who}: yield rotations epsyP = {ep:.6g}, epsyN = {en:.6g}; "
                              "pounding's hinges are symmetric (epsyN = -epsyP)")
-        return ElasticPlastic(k0=k0, m_y=m_pos)
+        return ElasticPlastic(k0=_parameter(ops, element, index, "E"),
+                              m_y=_parameter(ops, element, index, "Fy"))
     if kind == "Steel01":
-        iso = [float(info.get(k, 0.0)) for k in ("a1", "a2", "a3", "a4")]
-        if iso[0] != 0.0 or iso[2] != 0.0:
-            raise ValueError(f"{who}: isotropic hardening a1 … a4 = {iso}; pounding's bilinear "
-                             "hinge has kinematic hardening only (a1 = a3 = 0)")
-        k0 = _probe(ops, tag, 0.0)[1]
-        theta = 2.0 * float(info["fy"]) / float(info["E"])
-        m, kt = _probe(ops, tag, theta)
-        b = kt / k0
-        m_y = (m - kt * theta) / (1.0 - b)
-        if not math.isclose(m_y, float(info["fy"]), rel_tol=1e-5):  # pragma: no cover
-            raise ValueError(f"{who}: probing it gave a yield moment {m_y:.6g}, its printout "
-                             f"{info['fy']}")
+        iso = [_parameter(ops, element, index, a) for a in ("a1", "a3")]
+        if any(iso):
+            raise ValueError(f"{who}: isotropic hardening a1 = {iso[0]:g}, a3 = {iso[1]:g}; "
+                             "pounding's bilinear hinge has kinematic hardening only "
+                             "(a1 = a3 = 0)")
+        k0, m_y, b = (_parameter(ops, element, index, name) for name in ("E", "Fy", "b"))
         if b == 0.0:
             return ElasticPlastic(k0=k0, m_y=m_y)
         return BilinearHinge(k0=k0, m_y=m_y, hardening=b)
