@@ -274,3 +274,25 @@ def test_a_material_that_is_not_a_hinge_law_is_refused(ops: Any) -> None:
     hand_portal(ops)
     with pytest.raises(ValueError, match=r"^materials\[1\]: need a hinge law \(got 3\.0\)$"):
         frame_from_opensees(ops, materials={1: 3.0})  # type: ignore[dict-item]
+
+
+def test_a_floor_fixed_in_x_beside_tied_floors_is_accepted(ops: Any) -> None:
+    """A two-storey column pair whose first floor is held in x (fix … 1 0 0) and whose roof is
+    tied: the held floor has nothing to tie (it raised an IndexError before)."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    for k, x in enumerate((0.0, 6.0)):
+        for level, y in enumerate((0.0, 4.0, 8.0)):
+            ops.node(10 * level + k + 1, x, y)
+        ops.fix(k + 1, 1, 1, 1)
+        ops.fix(10 + k + 1, 1, 0, 0)
+    ops.geomTransf("Linear", 1)
+    for k in (1, 2):
+        ops.element("elasticBeamColumn", k, k, 10 + k, 1e-2, 2e11, 1e-3, 1)
+        ops.element("elasticBeamColumn", 10 + k, 10 + k, 20 + k, 1e-2, 2e11, 1e-3, 1)
+    ops.element("elasticBeamColumn", 30, 11, 12, 1e-2, 2e11, 1e-3, 1)
+    ops.element("elasticBeamColumn", 31, 21, 22, 1e-2, 2e11, 1e-3, 1)
+    ops.equalDOF(21, 22, 1)
+    f = frame_from_opensees(ops)
+    assert f.diaphragm
+    assert f.levels.tolist() == [4.0, 8.0]

@@ -370,6 +370,8 @@ def _floors(d: _Domain, frame: Frame, keep: list[int], joint: Callable[[int], in
         for f, y in enumerate(frame.levels):
             members = [n for n in range(len(keep))
                        if level[n] == f and not frame.supports[n, 0]]
+            if not members:
+                continue  # every node of this floor is fixed in x: nothing to tie
             first = _find(parent, members[0])
             loose = [keep[n] for n in members if _find(parent, n) != first]
             if loose:
