@@ -96,7 +96,9 @@ class Bound:
             closing = k - self.slopes[i]
             if closing > 0.0:
                 hit = x + gap / closing
-                if hit <= end:
+                if end < INF and abs(hit - end) <= 1e-12 * max(1.0, abs(end)):
+                    return end  # at the breakpoint, up to rounding: exactly there
+                if hit < end:
                     return hit
             if end == INF:
                 return INF
@@ -255,10 +257,10 @@ class IMKLaw(HingeLaw):
         for s, suffix in ((1, ""), (-1, "_neg")):
             side = self.sides[s]
             if side.uu <= side.uy0:
-                raise ValueError(f"{n}.theta_u{suffix}: must exceed the yield rotation "
+                raise ValueError(f"{self.label}.theta_u{suffix}: must exceed the yield rotation "
                                  f"M_y/k0 = {side.uy0:g} rad (got {side.uu!r})")
             if side.kp0 >= self.k0:
-                raise ValueError(f"{n}.mc_my{suffix}: the hardening slope (M_c − M_y)/θ_p = "
+                raise ValueError(f"{self.label}.mc_my{suffix}: the hardening slope (M_c − M_y)/θ_p = "
                                  f"{side.kp0:g} N·m/rad must be below k0 "
                                  f"(got {self._constant('mc_my', suffix)!r})")
 
