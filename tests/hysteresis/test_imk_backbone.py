@@ -30,7 +30,7 @@ NEG = {"m_y": 2.4e5, "theta_p": 0.018, "theta_pc": 0.09, "theta_u": 0.11, "mc_my
        "kappa": 0.2}
 
 
-def _law(cls: type[IMKBilinear] | type[IMKPeakOriented]) -> IMKBilinear | IMKPeakOriented:
+def _law(cls: type[IMKBilinear | IMKPeakOriented]) -> IMKBilinear | IMKPeakOriented:
     return cls(k0=K0, m_y=POS["m_y"], theta_p=POS["theta_p"], theta_pc=POS["theta_pc"],
                theta_u=POS["theta_u"], mc_my=POS["mc_my"], kappa=POS["kappa"],
                m_y_neg=NEG["m_y"], theta_p_neg=NEG["theta_p"], theta_pc_neg=NEG["theta_pc"],

@@ -16,6 +16,8 @@ the law except to get the moments it is compared with.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 
@@ -33,7 +35,7 @@ E_T = 1.0 * MY  # Λ = 1 rad
 def work(corners: list[tuple[float, float]]) -> float:
     """∫M dθ along straight segments through the corners (θ, M)."""
     return sum(0.5 * (m0 + m1) * (t1 - t0)
-               for (t0, m0), (t1, m1) in zip(corners[:-1], corners[1:], strict=True))
+               for (t0, m0), (t1, m1) in itertools.pairwise(corners))
 
 
 def test_basic_strength_deterioration_over_three_excursions() -> None:
@@ -200,7 +202,7 @@ def test_hysteretic_energy_never_negative_nor_decreasing(cls: type, lam: float) 
     # and blind to the jumps a failure makes at a piece's ends)
     work_done = np.cumsum([0.0] + [
         law.moved(s0, 0.5 * (s0.theta + s1.theta)).moment * (s1.theta - s0.theta)
-        for s0, s1 in zip(states[:-1], states[1:], strict=True)])
+        for s0, s1 in itertools.pairwise(states)])
     hysteretic = work_done - np.array([law.recoverable(s) for s in states])
     tol = 1e-9 * MY * THETA_Y
     assert hysteretic.min() >= -tol
@@ -214,7 +216,7 @@ def test_one_move_equals_many_small_moves_and_tangents_are_exact(cls: type) -> N
     law = cls(**LK_STEEL, lambda_=0.6)
     path = protocol([0.004, 0.012, 0.03, 0.06, 0.1], cycles=1) + [0.07, 0.09, -0.05, 0.25]
     fine = [0.0]
-    for t0, t1 in zip(path[:-1], path[1:], strict=True):
+    for t0, t1 in itertools.pairwise(path):
         fine += list(np.linspace(t0, t1, 37)[1:])
     coarse_moments = moment_path(law, path)
     fine_moments = moment_path(law, fine)[36::36]

@@ -105,12 +105,17 @@ class Bound:
             x, i = end, i + 1
 
 
+def side_prefix(s: int) -> str:
+    """The prefix of a side's fields in a law's memory."""
+    return "pos_" if s > 0 else "neg_"
+
+
 def side_bound(side: Side, fres: float) -> Bound:
     """The backbone of one side, ``max(κ M_y, L(θ))``: ``L`` the post-yield line through the
     capping point (slope ``kp``; extended below the yield point, the bilinear law's
     kinematic-hardening line) and then the post-capping line (slope ``kpc``); the residual
     branch ``κ M_y`` below both (Lignos & Krawinkler 2011, Fig. 1)."""
-    fy, kp, ucap, fcap, kpc = side
+    _, kp, ucap, fcap, kpc = side
     if fcap <= fres:
         return Bound.constant(fres)
     breaks: list[float] = []
