@@ -23,6 +23,8 @@ import pytest
 
 from pounding.hysteresis.hinges import HingeLaw, HingeState, moment_path
 from pounding.hysteresis.imk import IMKBilinear, IMKPeakOriented
+from pounding.structure.frame import Frame, FrameHinge
+from pounding.structure.frame_analysis import pushover
 
 K0, MY, THETA_P, THETA_PC, MC_MY = 1.0e8, 3.0e5, 0.03, 0.2, 1.1
 THETA_Y = MY / K0  # 0.003 rad
@@ -243,3 +245,24 @@ def test_memory_is_a_tuple_of_floats() -> None:
         assert isinstance(state.memory, tuple)
         assert all(isinstance(v, float) for v in state.memory)
         assert "lambda=1 rad" in law.describe()
+
+
+@pytest.mark.parametrize("cls", [IMKBilinear, IMKPeakOriented])
+def test_event_to_event_pushover_stops_at_the_backbone_points(cls: type) -> None:
+    """A cantilever column on an IMK hinge, pushed to 0.15 rad (short of θ_u): the
+    event-to-event pushover lands on yield, capping and residual points exactly, and its base
+    shear is M/h there (statically determinate)."""
+    h, law = 4.0, cls(**LK_STEEL, lambda_=1.0)
+    column = Frame(nodes=[[0.0, 0.0], [0.0, h]], elements=[[0, 1]], EA=1e12, EI=1e10,
+                   supports=[[True, True, True], [False, False, False]],
+                   hinges=(FrameHinge(0, 0, law),), diaphragm=False, name="column")
+    result = pushover(column, 0.15 * h)
+    theta = result.hinge_rotations[:, 0]
+    theta_y, theta_c = MY / K0, MY / K0 + 0.025
+    theta_r = theta_c + 0.15 * (1 - 0.4 / 1.1)
+    for point in (theta_y, theta_c, theta_r):
+        assert np.min(np.abs(theta - point)) < 1e-12
+    np.testing.assert_allclose(result.base_shear, result.hinge_moments[:, 0] / h, rtol=1e-9,
+                               atol=1e-6)
+    assert result.peak_base_shear == pytest.approx(1.1 * MY / h, rel=1e-12)
+    assert result.base_shear[-1] == pytest.approx(0.4 * MY / h, rel=1e-9)

@@ -70,8 +70,13 @@ Where this differs from OpenSees (the law must stay exact and continuous)
   the target (a strongly deteriorated ``K_u``) reloading follows ``K_u`` up to the backbone
   (OpenSees jumps onto it).
 
-Jumps (the only places the moment is discontinuous): the fracture at ``θ_u`` and complete
-deterioration at a reversal (``β_k >= 1``), both as OpenSees.
+Jumps (the only places the moment is discontinuous, all as OpenSees): the fracture at ``θ_u``
+(and moving outward again beyond it), and complete deterioration at a reversal (``β_k >= 1`` or
+the energy exhausted there). :meth:`~pounding.hysteresis.hinges.HingeLaw.branch` ends at ``θ_u``;
+:meth:`~pounding.hysteresis.hinges.HingeLaw.moved` there returns the moment after the drop.
+
+The peak-oriented law is in :mod:`pounding.hysteresis.imk_peak`, the shared backbone and
+deterioration rules in :mod:`pounding.hysteresis.imk_backbone`; both laws are exported here.
 """
 
 from __future__ import annotations
@@ -131,8 +136,8 @@ class IMKBilinear(IMKLaw):
 
     Parameters
     ----------
-    k0, m_y, theta_p, theta_pc, theta_u, mc_my, kappa, *_neg, lambda_, lambda_s, lambda_c,
-    lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
+    k0, m_y, theta_p, theta_pc, theta_u, mc_my, kappa, *_neg, lambda_, lambda_s, lambda_c, \
+lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
         As :class:`pounding.hysteresis.imk_backbone.IMKLaw` (SI units, rotations in rad).
 
     Examples

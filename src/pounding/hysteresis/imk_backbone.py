@@ -200,18 +200,43 @@ def _number(name: str, value: object, low: float, high: float = INF, *, low_open
 
 @dataclass(frozen=True)
 class IMKLaw(HingeLaw):
-    """Constants of the modified IMK laws (see :mod:`pounding.hysteresis.imk` for the model).
+    """Constants of the modified IMK laws (the model: :mod:`pounding.hysteresis.imk`).
 
-    ``k0`` elastic stiffness K_e [N·m/rad], ``m_y`` effective yield moment M_y [N·m] (positive
-    side), ``theta_p`` pre-capping plastic rotation θ_p [rad], ``theta_pc`` post-capping
-    rotation θ_pc [rad] (capping point to zero moment), ``theta_u`` ultimate rotation θ_u
-    [rad] (total rotation; inf: none), ``mc_my`` capping-to-yield ratio M_c/M_y, ``kappa``
-    residual-strength ratio κ (M_r = κ M_y). The ``*_neg`` fields are the negative side's
-    (positive numbers; ``None``: as the positive side). ``lambda_`` Λ [rad] for every mode
-    (E_t = Λ M_y; 0 or inf: no cyclic deterioration), ``lambda_s``/``lambda_c``/``lambda_k``
-    per mode (basic strength, post-capping strength, unloading stiffness; ``None``: Λ),
-    ``c`` the exponent for every mode and ``c_s``/``c_c``/``c_k`` per mode, ``d_pos``/``d_neg``
-    the rate D of cyclic deterioration on each side.
+    Parameters
+    ----------
+    k0 : float
+        Elastic stiffness K_e [N·m/rad].
+    m_y : float
+        Effective yield moment M_y of the positive side [N·m].
+    theta_p : float
+        Pre-capping plastic rotation θ_p [rad]: from yield to the capping point.
+    theta_pc : float
+        Post-capping rotation θ_pc [rad]: from the capping point to zero moment.
+    theta_u : float, default inf
+        Ultimate rotation θ_u [rad] (total rotation): the moment drops to 0 there (inf: never).
+    mc_my : float, default 1.1
+        Capping-to-yield moment ratio M_c/M_y (>= 1; 1.1: Lignos & Krawinkler 2011, beams).
+    kappa : float, default 0.4
+        Residual strength ratio κ: M_r = κ M_y (0 <= κ < 1).
+    m_y_neg, theta_p_neg, theta_pc_neg, theta_u_neg, mc_my_neg, kappa_neg : float, optional
+        The same for the negative side, as positive numbers (``None``: as the positive side).
+    lambda_ : float, default 0
+        Λ [rad] of every cyclic deterioration mode, reference energy E_t = Λ M_y (M_y of the
+        positive side, as OpenSees); 0 or inf: no cyclic deterioration.
+    lambda_s, lambda_c, lambda_k : float, optional
+        Λ of one mode (basic strength, post-capping strength, unloading stiffness); ``None``:
+        ``lambda_``. OpenSees' ``Lamda_S``, ``Lamda_C``, ``Lamda_K``.
+    c : float, default 1
+        Exponent c of every mode (Ibarra et al. 2005, Eq. 1).
+    c_s, c_c, c_k : float, optional
+        The exponent of one mode; ``None``: ``c``.
+    d_pos, d_neg : float, default 1
+        Rate D of cyclic deterioration on each side, 0 <= D <= 1 (Lignos & Krawinkler 2011).
+
+    Raises
+    ------
+    ValueError
+        A constant out of its range, in one line naming the field and the value.
     """
 
     theta_p: float
