@@ -10,8 +10,8 @@ Ibarra, Medina & Krawinkler (2005), EESD 34(12), with E_t = Λ M_y (Lignos & Kra
 * Eq. (7) ``θ_t,i = (1 + β_a,i D) θ_t,i−1`` (the peak-oriented target rotation).
 
 Each excursion's energy ``E_i`` is the area under the hand-built path between two zero-moment
-crossings (the trapezoid rule on its corners, exact for straight segments). Nothing here calls
-the law except to get the moments it is compared with.
+crossings (the trapezoid rule on its corners, exact for straight segments). The hand-worked
+tests call the laws only for the moments they compare.
 """
 
 from __future__ import annotations

@@ -170,6 +170,7 @@ lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
 
     def _along(self, state: HingeState, br: Branch, theta: float,
                direction: int) -> HingeState:
+        state = self._prepare(state, direction)  # as branch() saw it (idempotent)
         d, m = direction, _BilinMemory._make(state.memory)
         moment = state.moment + br.k_t * (theta - state.theta)
         m = m._replace(work=m.work + 0.5 * (state.moment + moment) * (theta - state.theta))

@@ -96,6 +96,7 @@ class IMKPeakOriented(IMKLaw):
 
     def _along(self, state: HingeState, br: Branch, theta: float,
                direction: int) -> HingeState:
+        state = self._prepare(state, direction)  # as branch() saw it (idempotent)
         d, m = direction, _PeakMemory._make(state.memory)
         moment = state.moment + br.k_t * (theta - state.theta)
         m = m._replace(work=m.work + 0.5 * (state.moment + moment) * (theta - state.theta))
