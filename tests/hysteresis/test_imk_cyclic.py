@@ -266,3 +266,42 @@ def test_event_to_event_pushover_stops_at_the_backbone_points(cls: type) -> None
                                atol=1e-6)
     assert result.peak_base_shear == pytest.approx(1.1 * MY / h, rel=1e-12)
     assert result.base_shear[-1] == pytest.approx(0.4 * MY / h, rel=1e-9)
+
+
+@pytest.mark.parametrize("cls", [IMKBilinear, IMKPeakOriented])
+def test_pushover_past_the_ultimate_rotation_sheds_the_moment(cls: type) -> None:
+    """Pushed past θ_u the hinge fractures: its moment drops to 0 at θ_u and the event-to-event
+    pushover releases it at that roof displacement (the base shear falls from κ M_y / h to 0
+    there) instead of carrying the old shear on; ``stop_below`` then ends the push."""
+    h, theta_u = 4.0, 0.2
+    law = cls(**{**LK_STEEL, "theta_u": theta_u})
+    column = Frame(nodes=[[0.0, 0.0], [0.0, h]], elements=[[0, 1]], EA=1e12, EI=1e10,
+                   supports=[[True, True, True], [False, False, False]],
+                   hinges=(FrameHinge(0, 0, law),), diaphragm=False, name="column")
+    result = pushover(column, 0.3 * h)
+    at_u = np.flatnonzero(np.abs(result.hinge_rotations[:, 0] - theta_u) < 1e-12)
+    assert at_u.size == 1  # reached θ_u; released at the same roof displacement next
+    i = int(at_u[0])
+    assert result.base_shear[i] == pytest.approx(0.4 * MY / h, rel=1e-9)
+    assert result.roof_displacement[i + 1] == pytest.approx(result.roof_displacement[i],
+                                                            rel=1e-12)
+    assert np.all(np.abs(result.base_shear[i + 1:]) < 1e-9 * MY / h)
+    assert np.all(np.abs(result.hinge_moments[i + 1:, 0]) < 1e-9 * MY)
+    stopped = pushover(column, 0.3 * h, stop_below=0.05)
+    assert stopped.stopped == "strength"
+
+
+def test_reloading_beyond_the_ultimate_rotation_after_a_fracture_is_continuous() -> None:
+    """Fractured at θ_u = 0.08, turned back by 0.001 rad (unloading at K_e/2 after the
+    residual: M = −K_e/2 · 0.001), then outward again: the moment climbs back along K_e/2 to
+    zero and stays there (OpenSees drops it to zero at once; the module docstring)."""
+    law = IMKBilinear(**{**LK_STEEL, "theta_u": 0.08})
+    state = law.moved(law.start(), 0.08)
+    assert state.moment == 0.0
+    back = law.moved(state, 0.079)
+    assert back.moment == pytest.approx(-0.5 * K0 * 0.001, rel=1e-9)
+    half = law.moved(back, 0.0795)
+    assert half.moment == pytest.approx(-0.5 * K0 * 0.0005, rel=1e-9)
+    br = law.branch(back, 1)
+    assert br.k_t == pytest.approx(0.5 * K0) and br.theta_end == pytest.approx(0.08)
+    assert law.moved(back, 0.1).moment == 0.0

@@ -140,3 +140,30 @@ def test_bilinear_hinge_follows_the_bilinear_storey_law() -> None:
     hinge = moment_path(BilinearHinge(k0=1e8, m_y=3e5, hardening=0.03), path)
     storey = respond_drift_path(Bilinear(yield_force=3e5, hardening=0.03), 1e8, path)
     assert hinge == pytest.approx(storey, rel=1e-12, abs=1e-6)
+
+
+def test_fractures_shed_their_moment_in_equilibrium() -> None:
+    """A portal on IMK hinges whose left base fractures first (θ_u = 0.08 rad, the others
+    0.12 rad), pushed until every column hinge has fractured: at every point of the curve the
+    base shear equals the columns' shears from their end moments, (ΣM)/h (statics of the
+    two columns, independent of the load factor's bookkeeping) — before and after each
+    fracture's moment is shed — and the frame ends with no strength."""
+    from pounding.hysteresis.imk import IMKBilinear
+    from pounding.structure.frame import FrameHinge
+
+    lk = dict(k0=1e11, m_y=3e5, theta_p=0.025, theta_pc=0.15, mc_my=1.1, kappa=0.4)
+    f = regular_frame(6.0, 4.0, n_storeys=1, column_EI=2e8, beam_EI=2e8,
+                      column_hinge=IMKBilinear(**lk, theta_u=0.12),
+                      beam_hinge=ElasticPlastic(k0=1e11, m_y=6e5))
+    hinges = list(f.hinges)
+    hinges[0] = FrameHinge(0, 0, IMKBilinear(**lk, theta_u=0.08))
+    f = Frame(nodes=f.nodes, elements=f.elements, EA=f.EA, EI=f.EI, supports=f.supports,
+              hinges=tuple(hinges))
+    r = pushover(f, 0.8)
+    assert r.stopped == "target"
+    columns = r.hinge_moments[:, :4].sum(axis=1) / 4.0
+    np.testing.assert_allclose(r.base_shear, columns, rtol=0, atol=1e-6 * 3e5)
+    drops = np.flatnonzero(np.diff(r.base_shear) < -1e3)
+    assert any(r.roof_displacement[i + 1] == pytest.approx(r.roof_displacement[i], abs=1e-12)
+               for i in drops)  # a fracture drops the shear at one roof displacement
+    assert abs(r.base_shear[-1]) < 1e-6 * 3e5

@@ -192,7 +192,6 @@ def _one_end_released(o: Any) -> None:
 
 @pytest.mark.parametrize(("mat", "extra", "tie", "expected"), [
     (_steel01_isotropic, None, True, "material 1 (Steel01): isotropic hardening"),
-    (_imk, None, True, "material 1 (IMKPeakOriented): not yet supported"),
     (_elastic_hinge, None, True, "material 1 (ElasticMaterial): not supported as a hinge"),
     (None, _truss, True, "element 99 (Truss): not supported"),
     (None, _inclined_load, True, "element 3 (ElasticBeam2d): its -beamUniform load"),
@@ -225,6 +224,33 @@ def test_a_floor_tied_in_part_is_refused(ops: Any) -> None:
     ops.equalDOF(11, 12, 1)
     with pytest.raises(ValueError, match=r"floor at y = 4 m does not tie nodes \[13\]"):
         frame_from_opensees(ops)
+
+
+def _imk_peak(o: Any) -> None:
+    o.uniaxialMaterial("IMKPeakOriented", 1, 1e11, 0.03, 0.02, 0.2, 3e5, 1.1, 0.1, 0.025,
+                       0.02, 1e10, 2.5e5, 1.15, 0.2, 1.0, 0.8, 1.2, 1.0, 1.0, 1.0, 1.0, 1.0,
+                       1.0, 0.9)
+
+
+@pytest.mark.parametrize(("mat", "expected"), [
+    (_imk, dict(k0=1e11, theta_p=0.03, theta_pc=0.02, theta_u=0.2, m_y=3e5, mc_my=1.1,
+                kappa=0.1, lambda_s=1.0, lambda_c=1.0, lambda_k=1.0)),
+    (_imk_peak, dict(k0=1e11, theta_p=0.03, theta_p_neg=0.025, theta_u_neg=float("inf"),
+                     m_y_neg=2.5e5, mc_my_neg=1.15, kappa_neg=0.2, lambda_s=1.0,
+                     lambda_c=0.8, lambda_a=1.2, lambda_k=1.0, d_neg=0.9)),
+])
+def test_imk_materials_become_imk_laws(ops: Any, mat: Any, expected: dict[str, float]) -> None:
+    """IMKBilin and IMKPeakOriented import as the IMK laws with the constants typed (the
+    arguments in OpenSees' order: Ke, then each side's dp, dpc, du, Fy, FmaxFy, FresFy, then
+    the Λ and c of each mode, D+ and D−; du = 1e10 is no ultimate rotation)."""
+    from pounding.hysteresis.imk import IMKBilinear, IMKPeakOriented
+
+    hand_portal(ops, hinge_mat=mat)
+    f = frame_from_opensees(ops)
+    law = next(h.law for h in f.hinges if h.element == 0)
+    assert isinstance(law, IMKPeakOriented if mat is _imk_peak else IMKBilinear)
+    for key, value in expected.items():
+        assert getattr(law, key) == pytest.approx(value, rel=1e-12), key
 
 
 def test_an_imk_material_is_read_through_the_materials_argument(ops: Any) -> None:

@@ -197,3 +197,51 @@ def test_the_report_of_a_pushover_folder_shows_the_curve(tmp_path: Path) -> None
     assert "data:image/png;base64," in html
     # pounding's own report is listed, so an earlier pushover folder stays replaceable
     assert _run("pushover", str(PORTAL), "--out", str(tmp_path / "p"), "--overwrite")[0] == 0
+
+
+IMK_PORTAL = """
+[[building]]
+name = "portal"
+[building.frame]
+bays = [6.0]
+storey_heights = [4.0]
+column_EI = 2.0e8
+beam_EI = 2.0e8
+column_hinge = { type = "imk-bilinear", k0 = 1.0e11, m_y = 3.0e5, theta_p = 0.025, theta_pc = 0.15, theta_u = 0.12, Lambda = 1.0 }
+beam_hinge = { type = "imk-peak-oriented", k0 = 1.0e11, m_y = 6.0e5, theta_p = 0.03, theta_pc = 0.2 }
+[pushover]
+target = 0.6
+stop_below = 0.05
+"""
+
+
+def test_imk_hinges_in_a_model_file_push_through_capping_and_fracture(tmp_path: Path) -> None:
+    """Column hinges cap at M_c = 1.1 M_y (default mc_my) and fracture at θ_u: the sway
+    mechanism's peak lies between 4 M_y / h = 300 kN and 4 M_c / h = 330 kN (the bases cap
+    and soften before the tops cap), and the push ends on the strength criterion."""
+    from pounding.hysteresis.imk import IMKBilinear, IMKPeakOriented
+
+    pf = load_pushover(_write(tmp_path, IMK_PORTAL))
+    laws = [h.law for h in pf.frame.hinges]
+    assert all(isinstance(law, IMKBilinear) for law in laws[:4])
+    assert all(isinstance(law, IMKPeakOriented) for law in laws[4:])
+    assert laws[0].theta_u == 0.12 and laws[0].lambda_ == 1.0
+    code, out = _run("pushover", str(tmp_path / "m.toml"), "--out", str(tmp_path / "p"),
+                     "--no-figures")
+    assert code == 0, out
+    summary = json.loads((tmp_path / "p" / "summary.json").read_text())
+    assert 4 * 3e5 / 4.0 < summary["peak_base_shear_N"] <= 4 * 1.1 * 3e5 / 4.0 * (1 + 1e-12)
+    assert summary["stopped"] == "strength"
+
+
+@pytest.mark.parametrize(("change", "says"), [
+    ("theta_p = 0.025, ", r"column_hinge\.theta_p: required for an imk-bilinear hinge"),
+    ("Lambda = 1.0", r"column_hinge\.hardening: not a constant of imk-bilinear"),
+    ("theta_u = 0.12, Lambda = 1.0", r"column_hinge\.Lambda_A: only for imk-peak-oriented"),
+])
+def test_imk_keys_are_checked(tmp_path: Path, change: str, says: str) -> None:
+    replacement = {"theta_p = 0.025, ": "", "Lambda = 1.0": "hardening = 0.02",
+                   "theta_u = 0.12, Lambda = 1.0": "Lambda_A = 1.0"}[change]
+    text = IMK_PORTAL.replace(change, replacement, 1)
+    with pytest.raises(ValueError, match=says):
+        load_pushover(_write(tmp_path, text))

@@ -18,9 +18,11 @@ Two forms, told apart by the keys present:
 Both take ``diaphragm`` (rigid floors, default true) and ``geometry`` (``"linear"``,
 ``"p-delta"``, ``"consistent"``; default ``"linear"``).
 
-A hinge law: ``{ type = "elastic-plastic", k0 = …, m_y = … }`` or ``{ type = "bilinear",
-k0 = …, m_y = …, hardening = 0.03 }`` (``k0`` [N·m/rad] the hinge's elastic rotational
-stiffness, ``m_y`` [N·m] its yield moment).
+A hinge law: ``{ type = "elastic-plastic", k0 = …, m_y = … }``, ``{ type = "bilinear",
+k0 = …, m_y = …, hardening = 0.03 }`` or the modified Ibarra–Medina–Krawinkler laws
+``{ type = "imk-bilinear" | "imk-peak-oriented", k0, m_y, theta_p, theta_pc, … }``
+(:class:`HingeLawConfig`; ``k0`` [N·m/rad] the hinge's elastic rotational stiffness, ``m_y``
+[N·m] its yield moment).
 """
 
 from __future__ import annotations
@@ -46,36 +48,110 @@ NodeMass = Annotated[float, Field(ge=0, le=MAX_MASS)]
 Coordinate = Annotated[float, Field(ge=-MAX_LENGTH, le=MAX_LENGTH)]
 GravityLoad = Annotated[float, Field(ge=0, le=MAX_FORCE)]
 
-HINGE_LAWS: tuple[str, ...] = ("elastic-plastic", "bilinear")
+HINGE_LAWS: tuple[str, ...] = ("elastic-plastic", "bilinear", "imk-bilinear",
+                               "imk-peak-oriented")
 """Hinge laws by the name model files use (``type = …``)."""
 
 FIXITIES: dict[str, tuple[bool, bool, bool]] = {
     "fixed": (True, True, True), "pinned": (True, True, False), "roller": (False, True, False)}
 """Support kinds (``fix = …``): the fixed ``(u_x, u_y, θ)``."""
 
+Rotation = Annotated[float, Field(gt=0, le=10)]
+"""A plastic or ultimate rotation [rad]."""
+Ratio = Annotated[float, Field(ge=0, le=100)]
+
+_IMK_KEYS = ("theta_p", "theta_pc", "theta_u", "mc_my", "kappa", "m_y_neg", "theta_p_neg",
+             "theta_pc_neg", "theta_u_neg", "mc_my_neg", "kappa_neg", "Lambda", "Lambda_S",
+             "Lambda_C", "Lambda_K", "Lambda_A", "c", "c_S", "c_C", "c_K", "c_A", "D_pos",
+             "D_neg")
+_TO_LAW = {"Lambda": "lambda_", "Lambda_S": "lambda_s", "Lambda_C": "lambda_c",
+           "Lambda_K": "lambda_k", "Lambda_A": "lambda_a", "c_S": "c_s", "c_C": "c_c",
+           "c_K": "c_k", "c_A": "c_a", "D_pos": "d_pos", "D_neg": "d_neg"}
+
 
 class HingeLawConfig(Section):
-    """A hinge law: ``{ type = "elastic-plastic" | "bilinear", k0, m_y, hardening }``."""
+    """A hinge law: ``{ type, k0, m_y, … }`` (docs/frames.md).
 
-    type: Literal["elastic-plastic", "bilinear"]
+    * ``"elastic-plastic"``: ``k0`` [N·m/rad], ``m_y`` [N·m];
+    * ``"bilinear"``: also ``hardening`` (post-yield ratio b);
+    * ``"imk-bilinear"``, ``"imk-peak-oriented"`` (the modified Ibarra–Medina–Krawinkler laws,
+      :mod:`pounding.hysteresis.imk`): ``theta_p``, ``theta_pc`` [rad] (*required*),
+      ``theta_u`` [rad] (default none), ``mc_my`` (1.1), ``kappa`` (0.4), the negative side's
+      ``*_neg`` (default as the positive), cyclic deterioration ``Lambda`` [rad] (Λ; 0: none)
+      or per mode ``Lambda_S``, ``Lambda_C``, ``Lambda_K`` (``Lambda_A`` peak-oriented), the
+      exponents ``c`` or ``c_S`` …, and the rates ``D_pos``, ``D_neg``.
+    """
+
+    type: Literal["elastic-plastic", "bilinear", "imk-bilinear", "imk-peak-oriented"]
     k0: Rigidity
     m_y: Moment
     hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
+    theta_p: Rotation | None = None
+    theta_pc: Rotation | None = None
+    theta_u: Rotation | None = None
+    mc_my: Annotated[float, Field(ge=1, le=10)] | None = None
+    kappa: Annotated[float, Field(ge=0, lt=1)] | None = None
+    m_y_neg: Moment | None = None
+    theta_p_neg: Rotation | None = None
+    theta_pc_neg: Rotation | None = None
+    theta_u_neg: Rotation | None = None
+    mc_my_neg: Annotated[float, Field(ge=1, le=10)] | None = None
+    kappa_neg: Annotated[float, Field(ge=0, lt=1)] | None = None
+    Lambda: Ratio | None = None
+    Lambda_S: Ratio | None = None
+    Lambda_C: Ratio | None = None
+    Lambda_K: Ratio | None = None
+    Lambda_A: Ratio | None = None
+    c: Ratio | None = None
+    c_S: Ratio | None = None
+    c_C: Ratio | None = None
+    c_K: Ratio | None = None
+    c_A: Ratio | None = None
+    D_pos: Annotated[float, Field(gt=0, le=1)] | None = None
+    D_neg: Annotated[float, Field(gt=0, le=1)] | None = None
 
     @model_validator(mode="after")
     def _keys(self) -> HingeLawConfig:
         if self.type == "elastic-plastic" and self.hardening not in (None, 0.0):
             raise field_error("hardening", f"an elastic-plastic hinge does not harden; use type "
                                            f"= \"bilinear\" (got {fmt(self.hardening)})")
+        imk = self.type.startswith("imk")
+        if not imk:
+            for key in _IMK_KEYS:
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"a constant of the IMK laws, not of a "
+                                           f"{self.type} hinge (got {fmt(getattr(self, key))})")
+            return self
+        if self.hardening is not None:
+            raise field_error("hardening", f"not a constant of {self.type} (its post-yield "
+                                           f"slope follows from mc_my and theta_p) (got "
+                                           f"{fmt(self.hardening)})")
+        for key in ("theta_p", "theta_pc"):
+            if getattr(self, key) is None:
+                raise field_error(key, f"required for an {self.type} hinge [rad]")
+        if self.type == "imk-bilinear":
+            for key in ("Lambda_A", "c_A"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, "only for imk-peak-oriented (the reloading "
+                                           f"deterioration) (got {fmt(getattr(self, key))})")
         return self
 
     def build(self) -> Any:
         """The :class:`~pounding.hysteresis.hinges.HingeLaw`."""
-        from pounding.hysteresis.hinges import BilinearHinge, ElasticPlastic
-
         if self.type == "elastic-plastic":
+            from pounding.hysteresis.hinges import ElasticPlastic
+
             return ElasticPlastic(k0=self.k0, m_y=self.m_y)
-        return BilinearHinge(k0=self.k0, m_y=self.m_y, hardening=self.hardening or 0.0)
+        if self.type == "bilinear":
+            from pounding.hysteresis.hinges import BilinearHinge
+
+            return BilinearHinge(k0=self.k0, m_y=self.m_y, hardening=self.hardening or 0.0)
+        from pounding.hysteresis.imk import IMKBilinear, IMKPeakOriented
+
+        kw = {_TO_LAW.get(key, key): getattr(self, key) for key in _IMK_KEYS
+              if getattr(self, key) is not None}
+        cls = IMKPeakOriented if self.type == "imk-peak-oriented" else IMKBilinear
+        return cls(k0=self.k0, m_y=self.m_y, **kw)
 
 
 class MemberConfig(Section):

@@ -69,9 +69,13 @@ Where this differs from OpenSees (the law must stay exact and continuous)
   may fall below κ M_y after heavy deterioration), and when the reloading start lies beyond
   the target (a strongly deteriorated ``K_u``) reloading follows ``K_u`` up to the backbone
   (OpenSees jumps onto it).
+* After a fracture at ``θ_u``, a rotation that turned back and moves outward again beyond
+  ``θ_u`` reloads along its unloading stiffness to zero moment and stays there; OpenSees drops
+  the moment to zero at once (a jump at every such reversal, which leaves a frame with no
+  consistent state: the hinge would chatter between the two sides of the jump).
 
-Jumps (the only places the moment is discontinuous, all as OpenSees): the fracture at ``θ_u``
-(and moving outward again beyond it), and complete deterioration at a reversal (``β_k >= 1`` or
+Jumps (the only places the moment is discontinuous, as OpenSees): the fracture at ``θ_u``,
+and complete deterioration at a reversal (``β_k >= 1`` or
 the energy exhausted there). :meth:`~pounding.hysteresis.hinges.HingeLaw.branch` ends at ``θ_u``;
 :meth:`~pounding.hysteresis.hinges.HingeLaw.moved` there returns the moment after the drop.
 
@@ -227,7 +231,8 @@ lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
             if k_u is None:
                 return HingeState(theta, 0.0, m._replace(dead=1.0, on_bound=0.0))
             m = m._replace(k_u=k_u, on_bound=0.0)
-        if d * theta >= self.sides[d].uu:
+        lost = m.lost_pos if d > 0 else m.lost_neg
+        if d * theta >= self.sides[d].uu and not lost:
             m, moment = self._lose(m, d), 0.0
         if not m.on_bound and m.yielded and moment == 0.0 and m.exc_dir != d and not m.dead:
             m = self._excursion(m, d, d * theta)
@@ -247,7 +252,8 @@ lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
         prepared state."""
         m = _BilinMemory._make(state.memory)
         x, mm, uu = d * state.theta, d * state.moment, self.sides[d].uu
-        if m.dead or x >= uu:
+        lost = m.lost_pos if d > 0 else m.lost_neg
+        if m.dead or (x >= uu and not lost):
             return 0.0, INF, ""
         bound = self._bound(m, d)
         if mm >= bound.value(x) - self._tol:  # on the backbone
@@ -259,7 +265,7 @@ lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
             end = bound.first_hit(x, mm, k)
             if m.yielded and not m.on_bound and mm < 0.0 and x - mm / k <= end:
                 end, event = x - mm / k, "zero"
-        if uu <= end:
+        if uu <= end and not lost:
             end, event = uu, "ultimate"
         return k, end, event
 

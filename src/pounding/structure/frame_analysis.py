@@ -111,9 +111,12 @@ def _hinge_matrix(dofs: FrameDofs, tangents: NDArray[np.float64]) -> Any:
 
 
 def _solve_unit(K: Any, P: NDArray[np.float64], control: NDArray[np.float64],
-                load_control: bool) -> tuple[NDArray[np.float64], float] | None:
+                load_control: bool, drive: NDArray[np.float64] | None = None
+                ) -> tuple[NDArray[np.float64], float] | None:
     """``(dU, dλ)`` for a unit increment of the control: ``K dU = P dλ`` with ``dλ = 1`` (load
-    control) or ``control · dU = 1``; ``K`` sparse. DOFs with no stiffness at all (a joint
+    control) or ``control · dU = 1``; ``K`` sparse. With ``drive`` (a redistribution,
+    :func:`_advance`): ``K dU − P dλ = drive`` with the control held (``dλ = 0`` or
+    ``control · dU = 0``). DOFs with no stiffness at all (a joint
     whose every connection is a plastic hinge of zero tangent) do not move. None if
     singular.
 
@@ -141,7 +144,10 @@ def _solve_unit(K: Any, P: NDArray[np.float64], control: NDArray[np.float64],
     Dinv = scipy.sparse.diags(1.0 / d)
     As = (Dinv @ A @ Dinv).tocsc()
     rhs = np.zeros(live.size + 1)
-    rhs[-1] = 1.0
+    if drive is None:
+        rhs[-1] = 1.0
+    else:
+        rhs[:-1] = drive[live]
     try:
         lu = scipy.sparse.linalg.splu(As, permc_spec="COLAMD")
     except RuntimeError:  # exactly singular
@@ -167,18 +173,42 @@ class _Path:
     rotations: list[NDArray[np.float64]] = field(default_factory=list)
 
 
+def _jump_force(dofs: FrameDofs, h: int, dm: float) -> NDArray[np.float64]:
+    """The out-of-balance force when hinge ``h``'s moment jumps by ``dm`` [N·m] at fixed
+    rotation (fracture at the ultimate rotation, complete deterioration): the hinge pushes
+    ``+M`` on its node's rotation and ``−M`` on the member end's, so equilibrium is restored
+    by ``K ΔU = −b_h dm``."""
+    r = np.zeros(dofs.n)
+    r[dofs.hinge[h]] += dm
+    if dofs.hinge_node[h] >= 0:
+        r[dofs.hinge_node[h]] -= dm
+    return r
+
+
 def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.float64] | None,
              lam0: float, target: float, path: _Path | None,
-             stop_below: float | None = None) -> tuple[float, str]:
+             stop_below: float | None = None, drive: NDArray[np.float64] | None = None,
+             depth: int = 0) -> tuple[float, str]:
     """Move the control from its current value to ``target`` event by event; returns the
     final load factor and why it stopped (``"target"``, ``"mechanism"``, ``"snap-back"``,
-    ``"strength"``)."""
+    ``"strength"``).
+
+    A hinge whose moment jumps at an event (a law that fractures at its ultimate rotation,
+    or deteriorates completely) leaves the frame out of balance at the same control: the
+    out-of-balance force is then released event by event at that control — ``drive`` is
+    that force and the control is the fraction of it released, from 0 to ``target`` = 1 — so
+    the other hinges take the moment it shed (yielding or unloading on the way), and the
+    curve drops at that roof displacement. A jump during a release is released the same
+    way, inside it."""
     frame, dofs = state.frame, state.dofs
     laws = [h.law for h in frame.hinges]
     nh = len(laws)
     load_control = control is None
     lam = lam0
-    c_now = lam if load_control else float(control @ state.U)  # type: ignore[operator]
+    if drive is not None:
+        c_now = 0.0
+    else:
+        c_now = lam if load_control else float(control @ state.U)  # type: ignore[operator]
     peak_lam = abs(lam)
     import scipy.sparse
 
@@ -192,7 +222,7 @@ def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.floa
         for _it in range(2 * nh + 2):
             K = base_sparse + _hinge_matrix(dofs, _tangents(state, directions))
             solved = _solve_unit(K, P, control if control is not None else np.zeros(0),
-                                 load_control)
+                                 load_control, drive)
             if solved is None:
                 break
             dth = hinge_rotations(dofs, solved[0])
@@ -215,7 +245,7 @@ def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.floa
             return lam, "mechanism"
         dU, dlam = solved
         dth = hinge_rotations(dofs, dU)
-        if load_control is False and dlam == 0.0 and not np.any(dU):
+        if drive is None and load_control is False and dlam == 0.0 and not np.any(dU):
             return lam, "snap-back"
         # nearest event along the control
         step = remaining
@@ -240,22 +270,36 @@ def _advance(state: FrameState, P: NDArray[np.float64], control: NDArray[np.floa
         lam += step * dlam
         c_now += step
         theta = hinge_rotations(dofs, state.U)
+        jumps: list[tuple[int, float]] = []
+        shown = np.zeros(nh)
         for h in range(nh):
-            if h in hits:
-                theta_h = laws[h].branch(state.hinges[h], int(directions[h])).theta_end
+            before = state.hinges[h]
+            br = laws[h].branch(before, int(directions[h]) or 1)
+            theta_h = br.theta_end if h in hits else float(theta[h])
+            # the moment the segment's linear solution assumed (its branch's tangent)
+            continuous = before.moment + br.k_t * (theta_h - before.theta)
+            state.hinges[h] = laws[h].moved(before, theta_h)
+            shown[h] = continuous
+            if abs(state.hinges[h].moment - continuous) > 1e-9 * laws[h].m_y:
+                jumps.append((h, state.hinges[h].moment - continuous))
             else:
-                theta_h = float(theta[h])
-            state.hinges[h] = laws[h].moved(state.hinges[h], theta_h)
+                shown[h] = state.hinges[h].moment
             state.peak_rotation[h] = max(state.peak_rotation[h], abs(theta_h))
         state.directions = directions
         if path is not None:
             path.lam.append(lam)
             path.U.append(state.U.copy())
-            path.moments.append(state.hinge_moments())
+            path.moments.append(shown)
             path.rotations.append(state.hinge_rotations())
+        if jumps:
+            if depth > 50:
+                raise RuntimeError(f"{frame.name}: more than 50 moment jumps in a cascade")
+            release = sum(_jump_force(dofs, h, dm) for h, dm in jumps)
+            lam, why = _advance(state, P, control, lam, 1.0, path, None,
+                                np.asarray(release, dtype=float), depth + 1)
+            if why != "target":
+                return lam, why
         peak_lam = max(peak_lam, abs(lam))
-        if stop_below is not None and abs(lam) < stop_below * peak_lam and not hits:
-            return lam, "strength"
         if stop_below is not None and abs(lam) < stop_below * peak_lam:
             return lam, "strength"
     raise RuntimeError(f"{frame.name}: more than {MAX_EVENTS} events")  # pragma: no cover

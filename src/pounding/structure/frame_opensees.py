@@ -30,9 +30,12 @@ domain is read, not changed (no analysis is set up or run). What is read, and ho
   - ``ElasticPP`` (symmetric, ``eps0 = 0``) → :class:`~pounding.hysteresis.hinges.ElasticPlastic`;
   - ``Steel01`` with no isotropic hardening (``a1 = a3 = 0``) →
     :class:`~pounding.hysteresis.hinges.BilinearHinge` with hardening ``b``;
-  - ``Bilin``, ``IMKBilin``, ``IMKPeakOriented``: not yet supported (the IMK laws are not in
-    pounding yet); any material can be given as a hinge law with ``materials={tag: law}``,
-    which takes precedence over what the domain says;
+  - ``IMKBilin`` and ``IMKPeakOriented`` → :class:`~pounding.hysteresis.imk.IMKBilinear` and
+    :class:`~pounding.hysteresis.imk.IMKPeakOriented`, their constants from the printout (no
+    parameter reads them: 6 significant digits, exact for constants typed with 6 or fewer;
+    :func:`pounding.structure.opensees_domain.imk_law`);
+  - any material can be given as a hinge law with ``materials={tag: law}``, which takes
+    precedence over what the domain says;
 
 * **rigid floors**: ``equalDOF r c 1`` between nodes of one level; every floor's nodes tied
   in x gives ``diaphragm=True`` (some floors or some nodes only: refused);

@@ -29,11 +29,46 @@ from numpy.typing import NDArray
 
 from pounding.hysteresis.hinges import BilinearHinge, ElasticPlastic, HingeLaw
 
-__all__ = ["IMK_MATERIALS", "hinge_law", "model_json", "mp_ties", "pattern_loads"]
+__all__ = ["IMK_MATERIALS", "hinge_law", "imk_law", "model_json", "mp_ties", "pattern_loads"]
 
-IMK_MATERIALS: tuple[str, ...] = ("Bilin", "IMKBilin", "IMKPeakOriented")
-"""OpenSees deteriorating hinge materials that pounding will import once its IMK laws exist
-(OpenSees 3.7.1 prints an IMKBilin material's type as IMKPeakOriented)."""
+IMK_MATERIALS: tuple[str, ...] = ("IMKBilin", "IMKPeakOriented")
+"""OpenSees' modified Ibarra–Medina–Krawinkler materials read as
+:mod:`pounding.hysteresis.imk` laws (OpenSees 3.7.1 prints an IMKBilin material's type as
+IMKPeakOriented; the bilinear one has no ``Lamda_A``)."""
+
+_IMK_SIDE = (("dp", "theta_p"), ("dpc", "theta_pc"), ("du", "theta_u"), ("Fy", "m_y"),
+             ("FmaxFy", "mc_my"), ("FresFy", "kappa"))
+"""OpenSees' IMK constants of one side → the law's (``_pos`` → as named, ``_neg`` → ``*_neg``)."""
+
+
+def imk_law(info: dict[str, Any], who: str) -> HingeLaw:
+    """An OpenSees ``IMKBilin`` / ``IMKPeakOriented`` material as its pounding law, from the
+    model's printout (:func:`model_json`). No OpenSees parameter reads these materials'
+    constants, so they carry the printout's precision: 6 significant digits, which is exact
+    for constants given with 6 digits or fewer (``0.025``, ``3e5``), and rounds others at
+    the 6th."""
+    from pounding.hysteresis.imk import IMKBilinear, IMKPeakOriented
+
+    def get(key: str) -> float:
+        if key not in info:
+            raise ValueError(f"{who}: the printout has no {key}; pounding reads IMKBilin and "
+                             "IMKPeakOriented by the names OpenSees 3.7 prints")
+        return float(info[key])
+
+    kw: dict[str, float] = {"k0": get("Ke")}
+    for theirs, ours in _IMK_SIDE:
+        kw[ours] = get(f"{theirs}_pos")
+        kw[f"{ours}_neg"] = get(f"{theirs}_neg")
+    peak = "Lamda_A" in info
+    for mode in ("S", "C", "K") + (("A",) if peak else ()):
+        kw[f"lambda_{mode.lower()}"] = get(f"Lamda_{mode}")
+        kw[f"c_{mode.lower()}"] = get(f"c_{mode}")
+    kw["d_pos"], kw["d_neg"] = get("D_pos"), get("D_neg")
+    for key in ("theta_u", "theta_u_neg"):
+        if kw[key] >= 1e9:  # OpenSees' way of saying "no ultimate rotation"
+            kw[key] = math.inf
+    law = IMKPeakOriented(**kw) if peak else IMKBilinear(**kw)
+    return law
 
 UNIFORM_LOAD_CLASS = 3
 """OpenSees class tag of ``Beam2dUniformLoad`` (``-beamUniform``), whose data are (w_y, w_x)."""
@@ -74,8 +109,11 @@ def hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
     zeroLength ``element``.
 
     ``materials[tag]`` when given; else ``ElasticPP`` (symmetric, ``eps0 = 0``) →
-    :class:`~pounding.hysteresis.hinges.ElasticPlastic` and ``Steel01`` with no isotropic
-    hardening (``a1 = a3 = 0``) → :class:`~pounding.hysteresis.hinges.BilinearHinge`. Their
+    :class:`~pounding.hysteresis.hinges.ElasticPlastic`, ``Steel01`` with no isotropic
+    hardening (``a1 = a3 = 0``) → :class:`~pounding.hysteresis.hinges.BilinearHinge`, and
+    ``IMKBilin`` / ``IMKPeakOriented`` → :class:`~pounding.hysteresis.imk.IMKBilinear` /
+    :class:`~pounding.hysteresis.imk.IMKPeakOriented` (:func:`imk_law`: to the printout's 6
+    digits). The first two's
     constants (``E``, ``Fy``, ``b``, ``a1``, ``a3``) are read exactly through OpenSees
     parameters on the element's material (:func:`_parameter`); the printout only names the
     type and, for ``ElasticPP``, gives ``epsyN`` and ``eps0``, which no parameter reads.
@@ -100,8 +138,11 @@ def hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
     kind = str(info.get("type", "?"))
     who = f"material {tag} ({kind})"
     if kind in IMK_MATERIALS:
-        raise ValueError(f"{who}: not yet supported (the IMK hinge laws are not in pounding "
-                         "yet); give materials={" + str(tag) + ": <HingeLaw>}")
+        try:
+            return imk_law(info, who)
+        except ValueError as exc:
+            text = str(exc)
+            raise ValueError(text if text.startswith(who) else f"{who}: {text}") from None
     if kind == "ElasticPPMaterial":
         if float(info.get("eps0", 0.0)) != 0.0:
             raise ValueError(f"{who}: eps0 = {info['eps0']} (an initial strain); pounding's "
