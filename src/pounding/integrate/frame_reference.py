@@ -74,21 +74,15 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
-from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from pounding.hysteresis.hinges import HingeLaw, HingeState
+from pounding.integrate.frame_reference_motion import Motion
 from pounding.structure.damping import ModalDamping, RayleighDamping
 from pounding.structure.frame import Frame
 from pounding.structure.frame_analysis import _mass_vector, frame_modes, gravity
-from pounding.structure.frame_stiffness import (
-    FrameDofs,
-    configuration_stiffness,
-    elastic_stiffness,
-    gravity_load_vector,
-)
+from pounding.structure.frame_stiffness import elastic_stiffness, gravity_load_vector
 
 __all__ = ["DAMPING_CHOICES", "FRAME_REFERENCE_RTOL", "FrameEnergy", "FrameReferenceResult",
            "simulate_frame_reference"]
@@ -98,10 +92,6 @@ FRAME_REFERENCE_RTOL: float = 1e-10
 
 DAMPING_CHOICES: tuple[str, ...] = ("rayleigh-elastic", "modal")
 """How the damping matrix is built (module docstring, item 5)."""
-
-RATE_BAND: float = 1e-12
-"""Half-width of the band a hinge's rotation rate must cross to count as a reversal,
-relative to ``‖Θ_h‖ v_scale`` (module docstring, item 4)."""
 
 MAX_EVENTS_PER_INTERVAL: int = 100_000
 """A bound on the events inside one record interval (a guard against an endless loop)."""
@@ -134,6 +124,7 @@ class FrameReferenceResult:
     storey_drifts: NDArray[np.float64]  #: storey drifts [m] (first from the base), (nt, nf)
     hinge_rotations: NDArray[np.float64]  #: hinge rotations [rad], (nt, nh)
     hinge_moments: NDArray[np.float64]  #: hinge moments [N·m], (nt, nh)
+    hinge_hysteretic: NDArray[np.float64]  #: each hinge's hysteretic energy [J], (nt, nh)
     peak_hinge_rotation: NDArray[np.float64]  #: largest |rotation| of each hinge [rad] (exact)
     residual_drift: NDArray[np.float64]  #: storey drifts at the end of the window [m], (nf,)
     base_shear: NDArray[np.float64]  #: restoring base shear ``rᵀ f`` [N] (no damping), (nt,)
@@ -199,253 +190,6 @@ def _damping(frame: Frame, choice: str, M: NDArray[np.float64], Kc_el: NDArray[n
                          f"{model.readable()}); use damping='rayleigh-elastic'")
     C = model.matrix(Mm, Kc_el)
     return C, f"modal: {model.readable()}, elastic modes under gravity", None
-
-
-# ----------------------------------------------------------------------------- configuration
-@dataclass(frozen=True)
-class _Configuration:
-    """The frame linearised with every hinge on one branch (module docstring, item 3)."""
-
-    tangents: NDArray[np.float64]  #: k_t of each hinge [N·m/rad]
-    Kc: NDArray[np.float64]  #: condensed stiffness on the mass DOFs
-    T: NDArray[np.float64]  #: massless DOFs' displacement per mass DOFs' (n_o, n_m)
-    Theta: NDArray[np.float64]  #: hinge rotations per mass DOFs' displacement (nh, n_m)
-
-
-def _hinge_incidence(dofs: FrameDofs) -> NDArray[np.float64]:
-    """``B`` (nh, n): ``θ = B U`` (the node's rotation minus the member end's)."""
-    B = np.zeros((dofs.hinge.size, dofs.n))
-    for h in range(dofs.hinge.size):
-        if dofs.hinge_node[h] >= 0:
-            B[h, dofs.hinge_node[h]] = 1.0
-        B[h, dofs.hinge[h]] -= 1.0
-    return B
-
-
-def _configuration(base: NDArray[np.float64], dofs: FrameDofs, B: NDArray[np.float64],
-                   keep: NDArray[np.int64], other: NDArray[np.int64],
-                   tangents: NDArray[np.float64], name: str, t: float) -> _Configuration:
-    import scipy.linalg
-
-    K = configuration_stiffness(base, dofs, tangents)
-    live_rows = np.any(K[other] != 0.0, axis=1)  # dead massless DOFs stay where they are
-    live = other[live_rows]
-    T = np.zeros((other.size, keep.size))
-    Kc = K[np.ix_(keep, keep)].copy()
-    if live.size:
-        Kom = K[np.ix_(live, keep)]
-        try:
-            X = -scipy.linalg.solve(K[np.ix_(live, live)], Kom, check_finite=False)
-        except (np.linalg.LinAlgError, ValueError):
-            X = np.full_like(Kom, np.nan)
-        if not np.all(np.isfinite(X)):
-            raise ValueError(f"{name}: at t = {t:.6g} s the DOFs without mass form a "
-                             "mechanism on their own (their stiffness is singular): give "
-                             "them mass or stiffer hinges")
-        T[live_rows] = X
-        Kc = Kc + K[np.ix_(keep, live)] @ X
-    Theta = B[:, keep] + B[:, other] @ T
-    return _Configuration(tangents.copy(), 0.5 * (Kc + Kc.T), T, Theta)
-
-
-# ----------------------------------------------------------------------------- events
-@dataclass(frozen=True)
-class _BranchEnd:
-    """``d (θ_h − θ_end)``, rising through zero where hinge ``h`` reaches the end of the
-    branch it follows in direction ``d``."""
-
-    h: int
-    d: int
-    end: float
-    theta_e: float
-    row: NDArray[np.float64]
-    u_e: NDArray[np.float64]
-    terminal: ClassVar[bool] = True
-    direction: ClassVar[float] = 1.0
-
-    def __call__(self, t: float, y: NDArray[np.float64]) -> float:
-        return self.d * (self.theta_e + float(self.row @ (y[: self.u_e.size] - self.u_e))
-                         - self.end)
-
-
-@dataclass(frozen=True)
-class _Reversal:
-    """``d θ̇_h + ε_h``, falling through zero where a hinge moving in direction ``d`` turns
-    back (past the band ε: module docstring, item 4)."""
-
-    h: int
-    d: int
-    eps: float
-    row: NDArray[np.float64]
-    terminal: ClassVar[bool] = True
-    direction: ClassVar[float] = -1.0
-
-    def __call__(self, t: float, y: NDArray[np.float64]) -> float:
-        n = self.row.size
-        return self.d * float(self.row @ y[n: 2 * n]) + self.eps
-
-
-@dataclass(frozen=True)
-class _RateZero:
-    """``θ̇_h`` crossing zero: an elastic hinge's extreme rotation (non-terminal; for its
-    peak)."""
-
-    h: int
-    row: NDArray[np.float64]
-    terminal: ClassVar[bool] = False
-    direction: ClassVar[float] = 0.0
-
-    def __call__(self, t: float, y: NDArray[np.float64]) -> float:
-        n = self.row.size
-        return float(self.row @ y[n: 2 * n])
-
-
-_AnyEvent = _BranchEnd | _Reversal | _RateZero
-
-
-# ----------------------------------------------------------------------------- the motion
-class _Motion:
-    """The frame between two events: its constant matrices, the hinge states committed at
-    the last event, the configuration and the state there (``u_e, f_e, U_o,e, θ_e``) that
-    the affine maps of the module docstring (item 3) start from."""
-
-    def __init__(self, frame: Frame, dofs: FrameDofs, base: NDArray[np.float64],
-                 U_g: NDArray[np.float64], hinges: list[HingeState], keep: NDArray[np.int64],
-                 other: NDArray[np.int64], v_scale: float) -> None:
-        self.frame, self.dofs, self.base, self.U_g = frame, dofs, base, U_g
-        self.keep, self.other, self.v_scale = keep, other, v_scale
-        self.laws: list[HingeLaw] = [h.law for h in frame.hinges]
-        self.nh, self.nm = len(self.laws), keep.size
-        self.B = _hinge_incidence(dofs)
-        self.states = list(hinges)
-        # a hinge loaded by gravity is taken to go on the way gravity moved it until it turns
-        self.directions = np.array([1 if s.moment >= 0.0 else -1 for s in hinges],
-                                   dtype=np.int64)
-        self.u_e = np.zeros(self.nm)
-        self.f_e = np.zeros(self.nm)
-        self.Uo_e = U_g[other].copy()
-        self.theta_e = np.array([s.theta for s in hinges])
-        self.moment_e = np.array([s.moment for s in hinges])
-        self.work = np.zeros(self.nh)  # each hinge's ∫ M dθ since gravity, to the last event
-        self.peak = np.abs(self.theta_e)
-        self.events = 0
-        self._cache: dict[bytes, _Configuration] = {}
-        self.cfg = self._configuration(self.directions, 0.0)
-
-    # -- the configuration
-    def _configuration(self, directions: NDArray[np.int64], t: float) -> _Configuration:
-        tangents = np.array([law.branch(s, int(d)).k_t
-                             for law, s, d in zip(self.laws, self.states, directions)])
-        key = tangents.tobytes()
-        if key not in self._cache:
-            self._cache[key] = _configuration(self.base, self.dofs, self.B, self.keep,
-                                              self.other, tangents, self.frame.name, t)
-        return self._cache[key]
-
-    def two_way(self, h: int) -> bool:
-        """True if the hinge's tangent depends on the way it moves (a reversal matters)."""
-        law, s = self.laws[h], self.states[h]
-        return law.branch(s, 1).k_t != law.branch(s, -1).k_t
-
-    def band(self, cfg: _Configuration) -> NDArray[np.float64]:
-        """ε of each hinge [rad/s] (module docstring, item 4)."""
-        return RATE_BAND * np.linalg.norm(cfg.Theta, axis=1) * self.v_scale
-
-    # -- the state as a function of the mass DOFs' (affine in u within the configuration)
-    def restoring(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
-        """``f_m`` [N, N·m]."""
-        return self.f_e + self.cfg.Kc @ (u - self.u_e)
-
-    def displacements(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
-        """Every DOF's total displacement ``U`` [m, rad]."""
-        U = self.U_g.copy()
-        U[self.keep] += u
-        U[self.other] = self.Uo_e + self.cfg.T @ (u - self.u_e)
-        return U
-
-    def rotations(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
-        """Hinge rotations ``θ`` [rad]."""
-        return self.theta_e + self.cfg.Theta @ (u - self.u_e)
-
-    def work_done(self, theta: NDArray[np.float64]) -> NDArray[np.float64]:
-        """Each hinge's ``∫ M dθ`` since gravity [J], exact along its branch."""
-        dth = theta - self.theta_e
-        return self.work + self.moment_e * dth + 0.5 * self.cfg.tangents * dth * dth
-
-    # -- events
-    def watch(self) -> tuple[list[_AnyEvent], list[bool]]:
-        """The events of this configuration, and whether each is an end of branch."""
-        cfg, eps = self.cfg, self.band(self.cfg)
-        events: list[_AnyEvent] = []
-        for h in range(self.nh):
-            row = cfg.Theta[h]
-            if not np.any(row):
-                continue  # the hinge cannot move in this configuration
-            law, s = self.laws[h], self.states[h]
-            ways = [int(self.directions[h])] if self.two_way(h) else [1, -1]
-            for d in ways:
-                end = law.branch(s, d).theta_end
-                if math.isfinite(end):
-                    events.append(_BranchEnd(h, d, end, float(self.theta_e[h]), row, self.u_e))
-            if len(ways) == 1:
-                events.append(_Reversal(h, ways[0], float(eps[h]), row))
-            else:
-                events.append(_RateZero(h, row))
-        return events, [isinstance(ev, _BranchEnd) for ev in events]
-
-    def note_peaks(self, events: list[_AnyEvent], y_events: list[NDArray[np.float64]]
-                   ) -> None:
-        """Peak rotations of the elastic hinges at their extremes (non-terminal events)."""
-        for ev, ys in zip(events, y_events):
-            if isinstance(ev, _RateZero) and len(ys):
-                th = self.theta_e[ev.h] + (ys[:, : self.nm] - self.u_e) @ self.cfg.Theta[ev.h]
-                self.peak[ev.h] = max(self.peak[ev.h], float(np.max(np.abs(th))))
-
-    def commit(self, t: float, y: NDArray[np.float64], events: list[_AnyEvent],
-               fired: list[bool]) -> None:
-        """Commit at the event ``(t, y)``: the hinges that reached a breakpoint land on it,
-        those that turned back change direction, every hinge state is committed, the
-        offsets restart from here, and the directions are made consistent."""
-        nm = self.nm
-        u, v = y[:nm], y[nm: 2 * nm]
-        theta = self.rotations(u)
-        land: dict[int, float] = {}
-        for ev, hit in zip(events, fired):
-            if isinstance(ev, _BranchEnd) and (
-                    hit or ev(t, y) >= -1e-12 * max(abs(ev.end), self.laws[ev.h].theta_y)):
-                land[ev.h] = ev.end  # (and any other at this instant)
-                self.directions[ev.h] = ev.d
-            elif isinstance(ev, _Reversal) and (hit or ev(t, y) <= 0.5 * ev.eps):
-                self.directions[ev.h] = -ev.d
-            else:
-                continue
-            self.events += 1
-        self.f_e = self.restoring(u)
-        self.Uo_e = self.Uo_e + self.cfg.T @ (u - self.u_e)
-        theta_new = np.array([land.get(h, float(theta[h])) for h in range(self.nh)])
-        self.work = self.work_done(theta_new)
-        self.states = [law.moved(s, float(th))
-                       for law, s, th in zip(self.laws, self.states, theta_new)]
-        self.peak = np.maximum(self.peak, np.abs(theta_new))
-        self.u_e = u.copy()
-        self.theta_e = np.array([s.theta for s in self.states])
-        self.moment_e = np.array([s.moment for s in self.states])
-        self._settle(v, t)
-
-    def _settle(self, v: NDArray[np.float64], t: float) -> None:
-        """Give every two-way hinge whose rate (in the configuration being built) goes
-        against its branch the other branch, until none does."""
-        for _ in range(2 * self.nh + 2):
-            cfg = self._configuration(self.directions, t)
-            rate, eps = cfg.Theta @ v, self.band(cfg)
-            against = [h for h in range(self.nh)
-                       if self.directions[h] * rate[h] < -eps[h] and self.two_way(h)]
-            if not against:
-                self.cfg = cfg
-                return
-            self.directions[against] *= -1
-        raise RuntimeError(f"{self.frame.name}: at t = {t:.6g} s no hinge configuration "
-                           "agrees with the hinges' rotation rates")  # pragma: no cover
 
 
 # ----------------------------------------------------------------------------- the run
@@ -528,9 +272,10 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
     atol = np.concatenate([np.full(nm, 1e-2 * tol * u_scale), np.full(nm, 1e-2 * tol * v_scale),
                            np.full(2, 1e-2 * tol * e_scale)])
 
-    motion = _Motion(frame, dofs, g_state.base, U_g, g_state.hinges, keep, other, v_scale)
+    motion = Motion(frame, dofs, g_state.base, U_g, g_state.hinges, keep, other, v_scale)
     laws, nh = motion.laws, motion.nh
-    recoverable_g = np.array([law.recoverable(s) for law, s in zip(laws, g_state.hinges)])
+    recoverable_g = np.array([law.recoverable(s)
+                              for law, s in zip(laws, g_state.hinges, strict=True)])
     out = _Outputs(nt, nm, dofs.n, nh)
 
     def record(k: int, y: NDArray[np.float64]) -> None:
@@ -540,13 +285,13 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
         out.f[k] = motion.restoring(u)
         out.U[k] = motion.displacements(u)
         theta = motion.rotations(u)
-        now = [law.moved(s, float(th)) for law, s, th in zip(laws, motion.states, theta)]
+        now = [law.moved(s, float(th))
+               for law, s, th in zip(laws, motion.states, theta, strict=True)]
         out.theta[k] = [s.theta for s in now]
         out.moment[k] = [s.moment for s in now]
-        recoverable = sum(law.recoverable(s) for law, s in zip(laws, now)) \
-            - float(np.sum(recoverable_g))
-        out.recoverable[k] = recoverable
-        out.hysteretic[k] = float(np.sum(motion.work_done(theta))) - recoverable
+        recoverable = np.array([law.recoverable(s) for law, s in zip(laws, now, strict=True)])
+        out.recoverable[k] = float(np.sum(recoverable - recoverable_g))
+        out.hinge_hysteretic[k] = motion.work_done(theta) - (recoverable - recoverable_g)
         motion.peak = np.maximum(motion.peak, np.abs(theta))
 
     y = np.zeros(2 * nm + 2)
@@ -575,7 +320,7 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
             if sol.status != 1:
                 break
             motion.commit(t, y, events, [len(te) > 0 and ev.terminal
-                                         for ev, te in zip(events, sol.t_events)])
+                                         for ev, te in zip(events, sol.t_events, strict=True)])
             if t >= t1:
                 break
         else:  # pragma: no cover
@@ -593,12 +338,14 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
     strain = quadratic(K_el) + out.recoverable
     grav = quadratic(K_geo) - (out.U - U_g) @ G
     kinetic = 0.5 * np.einsum("ki,i,ki->k", out.v, M, out.v)
-    residual = out.e_in - (kinetic + strain + out.e_damp + out.hysteretic + grav)
+    hysteretic = out.hinge_hysteretic.sum(axis=1)
+    residual = out.e_in - (kinetic + strain + out.e_damp + hysteretic + grav)
     energy = FrameEnergy(input=out.e_in, kinetic=kinetic, strain=strain, damping=out.e_damp,
-                         hysteretic=out.hysteretic, gravity=grav, residual=residual)
+                         hysteretic=hysteretic, gravity=grav, residual=residual)
     return FrameReferenceResult(
         time=t_grid, ground=knots[:nt].copy(), floor_displacements=floors,
         storey_drifts=drifts, hinge_rotations=out.theta, hinge_moments=out.moment,
+        hinge_hysteretic=out.hinge_hysteretic,
         peak_hinge_rotation=motion.peak.copy(), residual_drift=drifts[-1].copy(),
         base_shear=out.f @ r_m, energy=energy, mass_dofs=keep, displacement=out.u,
         velocity=out.v, dof_displacements=out.U,
@@ -614,4 +361,4 @@ class _Outputs:
         self.e_in, self.e_damp = np.zeros(nt), np.zeros(nt)
         self.U = np.zeros((nt, n))
         self.theta, self.moment = np.zeros((nt, nh)), np.zeros((nt, nh))
-        self.recoverable, self.hysteretic = np.zeros(nt), np.zeros(nt)
+        self.recoverable, self.hinge_hysteretic = np.zeros(nt), np.zeros((nt, nh))
