@@ -61,7 +61,7 @@ The model
    :mod:`pounding.integrate.reference_inputs`). Each record interval is integrated apart
    (``a_g`` is smooth on it).
 
-Energy (since the gravity state, per unit of nothing: joules): with ``f`` the restoring
+Energy [J], counted from the gravity state: with ``f`` the restoring
 force, ``∫ f_m·du_m = Δ(½ Uᵀ K_el U + Σ R_h) + Δ(½ Uᵀ K_geo U − Gᵀ U) + Σ H_h`` where ``R_h``
 is a hinge's recoverable energy (``law.recoverable``) and ``H_h = ∫ M_h dθ_h − ΔR_h`` its
 hysteretic energy (``∫ M dθ`` summed exactly branch by branch). So
@@ -312,12 +312,15 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
 
         t = t0
         for _ in range(MAX_EVENTS_PER_INTERVAL):
-            events, _ends = motion.watch()
+            events = motion.watch()
             sol = solve_ivp(rhs, (t, t1), y, method=method, rtol=tol, atol=atol,
                             events=events or None)
+            if sol.status < 0 or not np.all(np.isfinite(sol.y[:, -1])):
+                raise RuntimeError(f"{frame.name}: solve_ivp ({method}) failed after "
+                                   f"t = {float(sol.t[-1]):.6g} s: {sol.message}")
             motion.note_peaks(events, sol.y_events or [])
             y, t = sol.y[:, -1].copy(), float(sol.t[-1])
-            if sol.status != 1:
+            if sol.status == 0:
                 break
             motion.commit(t, y, events, [len(te) > 0 and ev.terminal
                                          for ev, te in zip(events, sol.t_events, strict=True)])

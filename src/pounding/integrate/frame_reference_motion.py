@@ -54,8 +54,10 @@ def hinge_incidence(dofs: FrameDofs) -> NDArray[np.float64]:
 
 
 def configuration(base: NDArray[np.float64], dofs: FrameDofs, B: NDArray[np.float64],
-                   keep: NDArray[np.int64], other: NDArray[np.int64],
-                   tangents: NDArray[np.float64], name: str, t: float) -> Configuration:
+                  keep: NDArray[np.int64], other: NDArray[np.int64],
+                  tangents: NDArray[np.float64], name: str, t: float) -> Configuration:
+    """The configuration whose hinges have the tangents ``tangents`` (``name``, ``t``: for
+    the message if the DOFs without mass are a mechanism by themselves)."""
     import scipy.linalg
 
     K = configuration_stiffness(base, dofs, tangents)
@@ -170,7 +172,7 @@ class Motion:
         key = tangents.tobytes()
         if key not in self._cache:
             self._cache[key] = configuration(self.base, self.dofs, self.B, self.keep,
-                                              self.other, tangents, self.frame.name, t)
+                                             self.other, tangents, self.frame.name, t)
         return self._cache[key]
 
     def two_way(self, h: int) -> bool:
@@ -204,8 +206,8 @@ class Motion:
         return self.work + self.moment_e * dth + 0.5 * self.cfg.tangents * dth * dth
 
     # -- events
-    def watch(self) -> tuple[list[AnyEvent], list[bool]]:
-        """The events of this configuration, and whether each is an end of branch."""
+    def watch(self) -> list[AnyEvent]:
+        """The ``solve_ivp`` events of this configuration."""
         cfg, eps = self.cfg, self.band(self.cfg)
         events: list[AnyEvent] = []
         for h in range(self.nh):
@@ -222,7 +224,7 @@ class Motion:
                 events.append(Reversal(h, ways[0], float(eps[h]), row))
             else:
                 events.append(RateZero(h, row))
-        return events, [isinstance(ev, BranchEnd) for ev in events]
+        return events
 
     def note_peaks(self, events: list[AnyEvent], y_events: list[NDArray[np.float64]]
                    ) -> None:
