@@ -15,6 +15,7 @@ import pytest
 
 from pounding.cli import main
 from pounding.config import dump_toml, load_config, parse_config
+from pounding.example_files import example_kind
 from pounding.plausibility import PlausibilityWarning
 
 from model_documents import EXAMPLES, MODEL_DOCS, replaced
@@ -56,7 +57,7 @@ def test_plausible_models_and_the_examples_warn_of_nothing() -> None:
         for doc in MODEL_DOCS.values():
             assert parse_config(doc, EXAMPLES).plausibility == ()
         for path in sorted(EXAMPLES.glob("*.toml")):
-            if not path.name.startswith(("sweep_", "fragility_", "mitigation_", "spectrum_")):
+            if example_kind(path.name) == "model":
                 assert load_config(path).plausibility == (), path.name
 
 
