@@ -418,3 +418,19 @@ def test_a_frame_without_mass_is_refused() -> None:
     frame = regular_frame(SPAN, H, n_storeys=1, column_EI=EI, beam_EI=EI, name="bare")
     with pytest.raises(ValueError, match="bare: masses: none is given"):
         simulate_frame_reference(frame, np.zeros(5), 0.01)
+
+
+def test_a_moment_that_jumps_is_refused_not_smoothed() -> None:
+    """A fracture at θ_u drops a hinge's moment; the reference does not redistribute it, so it
+    says so rather than carry the old restoring force on (which left a portal's statics
+    R = ΣM/h 126 kN off: found by the compiled kernel's tests)."""
+    from pounding.hysteresis.imk import IMKBilinear
+    from pounding.structure.frame import regular_frame
+
+    lk = dict(k0=1e10, m_y=3e5, theta_p=0.01, theta_pc=0.05, mc_my=1.1, kappa=0.4,
+              theta_u=0.03)
+    f = regular_frame(6.0, 4.0, n_storeys=1, column_EI=2e8, beam_EI=2e8,
+                      column_hinge=IMKBilinear(**lk), floor_mass=5e4)
+    t = np.arange(0.0, 1.0, 0.01)
+    with pytest.raises(NotImplementedError, match="does not redistribute a moment that jumps"):
+        simulate_frame_reference(f, 12.0 * np.sin(2 * np.pi * t / 0.8), 0.01)

@@ -257,8 +257,19 @@ class Motion:
         self.Uo_e = self.Uo_e + self.cfg.T @ (u - self.u_e)
         theta_new = np.array([land.get(h, float(theta[h])) for h in range(self.nh)])
         self.work = self.work_done(theta_new)
-        self.states = [law.moved(s, float(th))
-                       for law, s, th in zip(self.laws, self.states, theta_new, strict=True)]
+        moved = [law.moved(s, float(th))
+                 for law, s, th in zip(self.laws, self.states, theta_new, strict=True)]
+        for h, (law, s, after) in enumerate(zip(self.laws, self.states, moved, strict=True)):
+            d = 1 if after.theta > s.theta else -1
+            br = law.branch(s, d)
+            if abs(after.moment - (s.moment + br.k_t * (after.theta - s.theta))) > \
+                    1e-9 * law.m_y:
+                raise NotImplementedError(
+                    f"{self.frame.name}: hinge {h}'s moment drops at t = {t:.6g} s (a "
+                    f"fracture or complete deterioration, {law.label}); the SciPy reference "
+                    "does not redistribute a moment that jumps (the compiled kernel and the "
+                    "pushover do)")
+        self.states = moved
         self.peak = np.maximum(self.peak, np.abs(theta_new))
         self.u_e = u.copy()
         self.theta_e = np.array([s.theta for s in self.states])
