@@ -152,10 +152,13 @@ def tall_child() -> int:
 
 def memory_section() -> None:
     print("\n== memory: a pair of 40-storey, 8-bay frames, one pushover each (subprocess) ==")
-    print(tall_frame.__doc__.split("\n\n")[0].replace("\n   ", "\n"))
+    import textwrap
+
+    print(textwrap.fill(" ".join((tall_frame.__doc__ or "").split()), width=92,
+                        initial_indent="  ", subsequent_indent="  "))
     t = time.perf_counter()
     proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--tall-child"],
-                          capture_output=True, text=True, env=os.environ.copy())
+                          capture_output=True, text=True, env=os.environ.copy(), check=False)
     wall = time.perf_counter() - t
     if proc.returncode != 0:
         print(f"  the subprocess failed ({proc.returncode}): {proc.stderr.strip()[-2000:]}")
@@ -190,10 +193,10 @@ class StepRuns:
 
 def la9_section(args: argparse.Namespace, steps_mm: list[float]) -> None:
     import numpy as np
-    import openseespy.opensees as ops
-
     import opensees_frames as osf
+    import openseespy.opensees as ops
     from frames_la9 import la9_frame, total_height
+
     from pounding.structure.frame_analysis import frame_modes, gravity, pushover
 
     log = Path(os.environ.get("TMPDIR", "/tmp")) / f"bench_pushover_opensees_{os.getpid()}.log"
