@@ -50,6 +50,8 @@ HERE = Path(__file__).resolve().parent
 SECTIONS = ("la9", "memory")
 DEFAULT_STEPS_MM = "20,10,5,2.5,1.25"
 ROOF_DRIFT = 0.05
+ROUND_OFF = 1e-9
+"""An OpenSees error (relative to the peak base shear) this small is round-off: agreement."""
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -277,11 +279,18 @@ def la9_section(args: argparse.Namespace, steps_mm: list[float]) -> None:
         print(f"  {1e3 * run.step:8.3f} {run.n:6d} {spread(run.times):>32} {run.error:11.1e}"
               f" {run.where:9.3f} {run.rescued:7d} {'yes' if run.complete else 'NO':>5}"
               f" {ratio:9.1f}x {ratio_med:8.1f}x")
-    best = min(runs, key=lambda r: r.error)
+    agreeing = [r for r in runs if r.error <= ROUND_OFF]
+    if agreeing:  # OpenSees is exact too at these steps: the cheapest of them
+        best = min(agreeing, key=lambda r: min(r.times))
+        what = (f"OpenSees agrees with pounding to round-off (≤ {ROUND_OFF:g}) from step "
+                f"{1e3 * best.step:.3f} mm ({best.error:.1e})")
+    else:  # pounding is the more accurate at every step: OpenSees' most accurate run
+        best = min(runs, key=lambda r: r.error)
+        what = (f"OpenSees' smallest error is {best.error:.1e} of the peak (step "
+                f"{1e3 * best.step:.3f} mm)")
     print(f"  at equal or better accuracy: pounding's curve is exact between its events; "
-          f"OpenSees' smallest error is {best.error:.1e} of the peak (step "
-          f"{1e3 * best.step:.3f} mm), where it takes {min(best.times) / min(ours):.1f}x "
-          f"(best) / {statistics.median(best.times) / statistics.median(ours):.1f}x (median) "
+          f"{what}, where it takes {min(best.times) / min(ours):.1f}x (best) / "
+          f"{statistics.median(best.times) / statistics.median(ours):.1f}x (median) "
           f"pounding's time")
     all_ratios = [t / o for r in runs for t in r.times for o in ours]
     print(f"  the day's spread of the ratio (every OpenSees run / every pounding run): "
