@@ -92,7 +92,7 @@ stiffness exactly ``6EI/L`` (spring and element in series), so::
     k0         = n · 6 EI_element / L  = (n + 1) · 6 E I_x / L
 
 and the member's post-yield stiffness ratio ``α`` becomes the spring's
-``α_s = α / (1 + n (1 − α))`` (their Eq. B.6, used for the bilinear springs). The spring's
+``α_s = α / (1 + n (1 − α))`` (their Appendix B; used for the bilinear springs). The spring's
 ``θ_y = M_y/k0`` is 1/11 of the member's.
 
 ``hinges="imk-bilinear"`` (default): **beams** get the modified IMK law with bilinear
