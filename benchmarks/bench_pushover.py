@@ -13,7 +13,7 @@ Sections:
 la9     The LA9-type frame of ``frames_la9.la9_frame`` (IMK beams, bilinear columns, leaning
         column, P-Delta), first-mode load pattern, gravity first, pushed to 5 % roof drift.
         pounding: ``pushover(frame, target, pattern="first-mode")`` — gravity, modes, the
-        event-to-event push, the result. OpenSees (``opensees_frames.py``): gravity in 10
+        event-to-event push, the result. OpenSees (``opensees_frame_models.py``): gravity in 10
         load steps, then ``DisplacementControl`` of the roof in steps of target/N, Newton
         (at most ``--newton-iterations``) with fallbacks, the roof displacement and base
         shear read after every step; it is given pounding's first-mode load shape (its own first mode is printed beside it,
@@ -195,7 +195,7 @@ class StepRuns:
 
 def la9_section(args: argparse.Namespace, steps_mm: list[float]) -> None:
     import numpy as np
-    import opensees_frames as osf
+    import opensees_frame_models as osf
     import openseespy.opensees as ops
     from frames_la9 import la9_frame, total_height
 

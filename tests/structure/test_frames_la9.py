@@ -41,7 +41,7 @@ from pounding.structure.frame_analysis import frame_modes, gravity, pushover
 
 def _load_la9() -> ModuleType:
     """``benchmarks/frames_la9.py`` by its path (no change to sys.path: the benchmarks'
-    ``opensees_frames.py`` must not shadow this folder's helper of the same name)."""
+    modules stay out of the tests' import path)."""
     path = Path(__file__).resolve().parents[2] / "benchmarks" / "frames_la9.py"
     spec = importlib.util.spec_from_file_location("frames_la9", path)
     assert spec is not None and spec.loader is not None
