@@ -279,7 +279,7 @@ class Frame:
     def describe(self) -> str:
         """One line: size and hinges."""
         return (f"{self.name}: planar frame, {self.n_nodes} nodes, {self.n_elements} elements, "
-                f"{len(self.hinges)} hinges, {self.levels.size} floor{"s" if self.levels.size != 1 else ""}"
+                f"{len(self.hinges)} hinges, {self.levels.size} floor{'s' if self.levels.size != 1 else ''}"
                 f"{', rigid floors' if self.diaphragm else ''}, geometry {self.geometry}")
 
 
