@@ -39,11 +39,19 @@ from pounding.integrate.layout import (
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
     EV_GRAZE,
+    EV_HINGE_HI,
     EV_ONSET,
     EV_SEPARATION,
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
+    HS_K_UNLOAD,
+    HS_KT,
+    HS_M_C,
+    HS_Q,
+    HS_REC0,
+    HS_THETA_C,
+    HS_WORK_C,
     I_CALL_STEPS,
     I_FAIL_STEP,
     I_FAILED,
@@ -52,18 +60,24 @@ from pounding.integrate.layout import (
     I_NSTEPS,
     I_ONSET_C,
     I_STEP_BUDGET,
+    I_STOP,
+    I_STOP_ROW,
     P_CONTACT,
     P_DAMP,
     P_DEVICE,
+    P_FRAME,
     P_INPUT,
     P_STOREY,
     PK_A,
+    STOP_HINGE,
     W_E_DAMP,
     W_E_DEVICE,
+    W_E_FRAME,
     W_E_INPUT,
     W_E_STOREY,
     W_ERR_OLD,
     W_H,
+    W_RESUME_S,
 )
 from pounding.integrate.peaks import track_point, track_step
 from pounding.integrate.rhs import (
@@ -80,6 +94,7 @@ from pounding.integrate.rhs import (
     gap_row,
     ground_at,
     ground_at_grid_end,
+    hinge_row,
     jerk,
     law_call,
     recoverable_call,
@@ -104,8 +119,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why); also returns at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps
     in all. One call for a whole contact episode.
+
+    A yielding frame's hinge event ends the call right after the step to it is accepted
+    (``ws_i[I_STOP] = STOP_HINGE``, the hinge row in ``ws_i[I_STOP_ROW]``), for Python to
+    give the frame its next configuration: the grid step in progress is returned, and the
+    local time reached in it left in ``ws_f[W_RESUME_S]``, where the next call resumes
+    (at the grid point's end, the grid step is finished first and 0 is left there).
     """
-    fl, ct, el = km
+    fl, ct, el = km.floors, km.contacts, km.elements
     dt = run.dt
     ag = run.ag
     rtol = run.rtol
@@ -131,7 +152,9 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     m = x.shape[0]
     nc = cgap.shape[0]
     ns = el.lo.shape[0]
+    n_frame = fl.f_dof.shape[0]
     npw = P_CONTACT + nc
+    stop_at_grid = False
     while k < k1:
         # ---------------- grid step k → k + 1: RK steps landing on t_k + dt
         t_k = k * dt
@@ -140,11 +163,19 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             gnd[G_A1, g] = ag[k + 1, g]
             gnd[G_SLOPE, g] = (gnd[G_A1, g] - gnd[G_A0, g]) / dt
         a0 = ag[k, 0]
-        s = 0.0
+        s = ws_f[W_RESUME_S]
         h = min(ws_f[W_H], dt, h_max)
-        for i in range(n):
-            aabs0[i] = kx[0, n + i] + r[i, 0] * a0
-        add_ground_rest(aabs0, r, ag, k, n)
+        if s > 0.0:
+            # resumed inside the grid step after a hinge event (kx: f there)
+            ws_f[W_RESUME_S] = 0.0
+            ground_at(gnd, G_NOW, s)
+            for i in range(n):
+                aabs0[i] = kx[0, n + i] + r[i, 0] * gnd[G_NOW, 0]
+            add_ground_rest(aabs0, r, gnd, G_NOW, n)
+        else:
+            for i in range(n):
+                aabs0[i] = kx[0, n + i] + r[i, 0] * a0
+            add_ground_rest(aabs0, r, ag, k, n)
         while s < dt:
             last = False
             if s + h >= dt * (1.0 - 1e-12):
@@ -227,7 +258,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                                               kind, graze_tol, last_f[:, LF_GRAZED])
                     continue
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
-                g_tol = event_tolerance(kind, ce, n, cparams, atol)
+                g_tol = event_tolerance(kind, ce, n, cparams, atol, el.h_state)
                 h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px,
                                     gnd, s, fl, ct, el, committed, sstate, lin, ks, ps, ks_b,
                                     ps_b, ytmp, y1, yb, atol, rtol, ws_i)
@@ -239,7 +270,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                         g_lo = gap_row(ce, x, n, cdof, cw)[0] - cgap[ce]
                         h_acc, err = locate(EV_ONSET, ce, 0.0, h_acc, g_lo, d_peak,
                                             0.5 * h_acc, event_tolerance(EV_ONSET, ce, n,
-                                                                         cparams, atol),
+                                                                         cparams, atol,
+                                                                         el.h_state),
                                             dt, x, kx, px, gnd, s, fl, ct, el, committed,
                                             sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb,
                                             atol, rtol, ws_i)
@@ -278,6 +310,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             if ns > 0:
                 ws_f[W_E_STOREY] += weighted_sum(ps, P_STOREY, h_acc)
                 ws_f[W_E_DEVICE] += weighted_sum(ps, P_DEVICE, h_acc)
+            if n_frame > 0:
+                ws_f[W_E_FRAME] += weighted_sum(ps, P_FRAME, h_acc)
             for c in range(nc):
                 wc[c] += weighted_sum(ps, P_CONTACT + c, h_acc)
             s_new = dt if last else s + h_acc
@@ -309,10 +343,13 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             if ns > 0:
                 commit_storeys(x, n, el, sstate)
             was_event = ev_c >= 0
-            if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN:
+            hinge_event = ev_kind >= EV_HINGE_HI
+            if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN or hinge_event:
                 ws_i[I_NEVENTS] += 1
-                ev_c = -1  # a storey, not a contact: the contact loop must not see it
-                ev_kind = 0
+                if hinge_event:
+                    ws_i[I_STOP_ROW] = ev_c
+                ev_c = -1  # a storey or a hinge, not a contact: the contact loop must not
+                ev_kind = 0  # see it
             # commit contact states at the step end; handle the event
             state_changed = commit_contacts(x, ks[6], t_now, ev_c, ev_kind, n, ct, st, out)
             if state_changed:
@@ -347,6 +384,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 ws_f[W_H] = h_acc * fac_try
             h = min(ws_f[W_H], h_max)
             s = s_new
+            if hinge_event:
+                # back to Python, which moves the frame's hinges and gives it its next
+                # configuration; the next call resumes here
+                if s < dt:
+                    ws_i[I_STOP] = STOP_HINGE
+                    ws_f[W_RESUME_S] = s
+                    return k
+                stop_at_grid = True
         for i in range(n):
             arel0[i] = kx[0, n + i]
         grid_outputs(k + 1, ag, x, kx, fl, ct, el, st, out, lin)
@@ -360,6 +405,9 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             ws_i[I_FAIL_STEP] = k
             return -1
         k += 1
+        if stop_at_grid:
+            ws_i[I_STOP] = STOP_HINGE  # (the event at the grid point: resume there)
+            break
         if run.exact and not any_closed(committed):
             break  # back to exact stepping once every contact is open
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
@@ -378,7 +426,7 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     r = fl.r
     m_diag = fl.m_diag
     cdof, cw, cgap, ccode, cparams = ct
-    s_lo, _, s_code, s_par, s_zi = el
+    s_lo, s_code, s_par, s_zi = el.lo, el.code, el.params, el.z_index
     committed = st.committed
     sstate = st.storeys
     wc = st.contact_work
@@ -386,6 +434,17 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out = out[:7]
     n = r.shape[0]
     band_mv(fl.k_band, fl.c_band, x, n, fl.bw, lin)
+    # the hinges of yielding frames: rotation and moment, their work ∫ M dθ (exact: M is
+    # linear in θ along the branch since the last commit) less their recoverable energy
+    hst = el.h_state
+    e_hinge = 0.0
+    for q in range(hst.shape[0]):
+        th = hinge_row(q, x, n, el)[0]
+        mom = hst[q, HS_KT] * th + hst[q, HS_Q]
+        out.hinge_rotation[o, q] = th
+        out.hinge_moment[o, q] = mom
+        work_q = hst[q, HS_WORK_C] + 0.5 * (hst[q, HS_M_C] + mom) * (th - hst[q, HS_THETA_C])
+        e_hinge += work_q - 0.5 * mom * mom / hst[q, HS_K_UNLOAD] + hst[q, HS_REC0]
     a_o = ag[o, 0]
     for i in range(n):
         u_out[o, i] = x[i]
@@ -422,6 +481,13 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
                                   delta, committed[c, 1])
         f_out[o, c] = f
         wsum += wc[c]
+    f_dof = fl.f_dof
+    if f_dof.shape[0] > 0:
+        # a yielding frame's strain energy is its restoring force's work less its hinges'
+        # hysteretic energy (not ½ uᵀ K u of its tangent stiffness)
+        for q in range(f_dof.shape[0]):
+            es -= 0.5 * x[f_dof[q]] * lin[0, f_dof[q]]
+        es += ws_f[W_E_FRAME] - e_hinge
     e_out[o, E_INPUT] = ws_f[W_E_INPUT]
     e_out[o, E_KINETIC] = ek
     e_out[o, E_STRAIN] = es + recov + recov_dev
@@ -429,6 +495,8 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     e_out[o, E_CONTACT_WORK] = wsum
     e_out[o, E_CONTACT_STORED] = stored
     e_out[o, E_HYSTERETIC] = ws_f[W_E_STOREY] - recov
+    if hst.shape[0] > 0:
+        e_out[o, E_HYSTERETIC] += e_hinge
     e_out[o, E_DEVICE] = ws_f[W_E_DEVICE] - recov_dev
 
 

@@ -10,7 +10,7 @@ from typing import NamedTuple
 import numpy as np
 
 from pounding.contact.dispatch import PARAMS_SIZE as P_CONTACT_LAW
-from pounding.integrate.layout import ROW_BLOCK
+from pounding.integrate.layout import HS_COLUMNS, ROW_BLOCK
 from pounding.integrate.propagator import FreeStep
 from pounding.memo import Memo
 from pounding.model import PoundingModel
@@ -69,6 +69,11 @@ class Floors(NamedTuple):
     mr: np.ndarray  #: M R [kg], (N, G)
     r: np.ndarray  #: influence matrix R of the G ground components, (N, G)
     below: np.ndarray  #: DOF of the floor below each floor (−1: the ground), (N,)
+    #: the floors of yielding frames (N_f,), whose restoring force in the frame's current
+    #: configuration is ``K u + f_const`` (:mod:`pounding.integrate.frame_run`); empty
+    #: without yielding frames
+    f_dof: np.ndarray
+    f_const: np.ndarray  #: the configuration's constant force on each of them [N] (N_f,)
 
 
 class ContactRows(NamedTuple):
@@ -93,6 +98,15 @@ class ElementRows(NamedTuple):
     code: np.ndarray  #: storey-law or link codes (n_s,)
     params: np.ndarray  #: their constants (n_s, P)
     z_index: np.ndarray  #: index of each row's internal variable z among the states (−1: none)
+    #: the plastic hinges of yielding frames, rows ``θ_h = Σ_q h_w[h, q] u[h_dof[h, q]] +
+    #: a0`` over their frame's floors (padded to a multiple of ROW_BLOCK), (n_h, W): set by
+    #: Python for each configuration of the frame (:mod:`pounding.integrate.frame_run`);
+    #: empty without yielding frames
+    h_dof: np.ndarray
+    h_w: np.ndarray  #: their weights [rad/m] (n_h, W)
+    #: each hinge's branch and committed point (n_h, HS_COLUMNS),
+    #: :data:`pounding.integrate.layout.HS_A0` …
+    h_state: np.ndarray
 
 
 class KernelArrays(NamedTuple):
@@ -155,6 +169,14 @@ def _read_only_free_step(fs: FreeStep) -> FreeStep:
         a.setflags(write=False)
     return fs
 
+
+NO_FRAME_DOFS = np.zeros(0, dtype=np.int64)
+NO_FRAME_FORCE = np.zeros(0)
+NO_HINGE_DOFS = np.zeros((0, ROW_BLOCK), dtype=np.int64)
+NO_HINGE_WEIGHTS = np.zeros((0, ROW_BLOCK))
+NO_HINGE_STATE = np.zeros((0, HS_COLUMNS))
+"""The frame and hinge rows of a model without yielding frames: empty (never written), and
+writeable like a run's own rows, so that the kernel is compiled for one signature."""
 
 NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), np.zeros((2, 4)),
                                               np.zeros((2, 1)), np.zeros((2, 1)),
@@ -227,8 +249,10 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     bw = half_bandwidth(K, C)
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
     floors = Floors(bw, band_storage(K, bw), band_storage(C, bw), m_diag, 1.0 / m_diag,
-                    np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model))
-    elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi)
+                    np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
+                    NO_FRAME_DOFS, NO_FRAME_FORCE)
+    elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi,
+                           NO_HINGE_DOFS, NO_HINGE_WEIGHTS, NO_HINGE_STATE)
     no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
                               np.zeros((0, ROW_BLOCK)), np.zeros(0),
                               np.zeros(0, dtype=np.int64), np.zeros((0, P_CONTACT_LAW)))

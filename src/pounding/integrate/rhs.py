@@ -41,9 +41,11 @@ from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 from pounding.integrate.layout import (
     DELTA_EPS,
+    HS_A0,
     P_CONTACT,
     P_DAMP,
     P_DEVICE,
+    P_FRAME,
     P_INPUT,
     P_STOREY,
     RATE_SIDE,
@@ -85,6 +87,23 @@ def gap_row(c, y, n, cdof, cw):
             d += cw[c, q] * y[j]
             v += cw[c, q] * y[n + j]
     return d, v
+
+
+@njit(**NRT_FREE)
+def hinge_row(h, y, n, el):
+    """``(θ, θ̇)`` of hinge row h of a yielding frame: ``θ = Σ w u + a0`` over its frame's
+    floors in the frame's current configuration (``el``: the element rows, whose ``h_dof``,
+    ``h_w`` and ``h_state`` hold the hinge rows)."""
+    hdof = el.h_dof
+    hw = el.h_w
+    d = 0.0
+    v = 0.0
+    for q0 in range(0, hdof.shape[1], ROW_BLOCK):
+        for q in range(q0, q0 + ROW_BLOCK):
+            j = hdof[h, q]
+            d += hw[h, q] * y[j]
+            v += hw[h, q] * y[n + j]
+    return d + el.h_state[h, HS_A0], v
 
 
 @njit(**NRT_FREE)
@@ -228,7 +247,7 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     mr = fl.mr
     r = fl.r
     cdof, cw, cgap, ccode, cparams = ct
-    s_lo, s_hi, s_code, s_par, s_zi = el
+    s_lo, s_hi, s_code, s_par, s_zi = el.lo, el.hi, el.code, el.params, el.z_index
     nc = cgap.shape[0]
     # linear part: acc = −M⁻¹(K u + C v) − R a_g, K (linear storeys only) and C banded
     # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work; the first ground
@@ -259,6 +278,18 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
             p_in -= y[n + i] * mr[i, g] * ag
     power[row, P_INPUT] = p_in
     power[row, P_DAMP] = p_d
+    # yielding frames: in their current configuration the restoring force of a frame's
+    # floors is K u + f_const (K, its condensed tangent stiffness, in the band above); the
+    # constant part here, and the power of the whole (no floors of this kind: nothing)
+    p_f = 0.0
+    f_dof = fl.f_dof
+    for q in range(f_dof.shape[0]):
+        i = f_dof[q]
+        f0 = fl.f_const[q]
+        dy[row, n + i] -= f0 * m_inv[i]
+        ku = lin[0, i] if bw > 0 else k_band[0, i] * y[i]
+        p_f += (ku + f0) * y[n + i]
+    power[row, P_FRAME] = p_f
     # yielding storeys: shear V from the storey law, −V on the floor above, +V below; the
     # links between buildings (codes ≥ DEVICE_MIN) are rows of the same kind
     p_s = 0.0
@@ -351,7 +382,7 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     n = fl.m_diag.shape[0]
     m_inv = fl.m_inv
     cdof, cw, cgap, ccode, cparams = ct
-    s_lo, s_hi, s_code, s_par, s_zi = el
+    s_lo, s_hi, s_code, s_par, s_zi = el.lo, el.hi, el.code, el.params, el.z_index
     for i in range(n):
         work[i] = x[n + i]
         work[n + i] = dx[n + i]

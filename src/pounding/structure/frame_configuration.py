@@ -1,0 +1,328 @@
+"""A yielding frame in motion: each configuration of its hinges, condensed onto its floors.
+
+Every hinge law is piecewise linear (:mod:`pounding.hysteresis.hinges`), so in a
+*configuration* — each hinge on one straight branch of tangent ``k_t`` — the frame is
+linear: its stiffness is ``K_t = configuration_stiffness(base, dofs, k_t)`` (``base`` the
+elastic elements plus the geometric stiffness of the gravity loads) and the moment of hinge
+h is ``M_h = k_t θ_h + q_h`` with ``q_h = M_h* − k_t θ_h*`` from the point ``(θ_h*, M_h*)``
+where it was last committed. With masses on the floors' lateral motion only (rigid floors),
+every other DOF ``s`` (vertical displacements, joint and member-end rotations) is massless
+and in static equilibrium with the floors' displacements ``u``:
+
+    K_ss U_s + K_sm u + (B q)_s = G_s   ⇒   U_s = S u + s0,
+    S = −K_ss⁻¹ K_sm,   s0 = K_ss⁻¹ (G_s − (B q)_s),
+
+with ``B`` the hinges' incidence (``θ_h = U_node − U_end``, ``B q`` their moments' nodal
+loads) and ``G`` the gravity loads, held constant. The force the frame's floors exert back
+(its restoring force) is then linear in ``u``:
+
+    R = (K_t U + B q − G)_m = K_c u + f0,   K_c = K_mm + K_ms S,   f0 = K_ms s0 + (B q)_m − G_m,
+
+net of the gravity loads, so the frame standing in its gravity state is at rest; and every
+hinge rotation is ``θ = A u + a0`` with ``A = B_sᵀ S``, ``a0 = B_sᵀ s0`` (no hinge rotation is
+a floor's DOF). This is the static condensation of Chopra, *Dynamics of Structures*, 4th
+ed., §9.3, carried out in the configuration and with the constant part kept.
+
+Between events the frame's motion is linear; an *event* is a hinge reaching the end of its
+branch in the direction it moves (yield, capping, the elastic branch's other bound) or a
+hinge on a branch whose tangent depends on the direction (a plastic plateau, say)
+reversing. At each event the hinges are committed where they stand (``law.moved``) and the
+next configuration is chosen as the event-to-event pushover chooses it
+(:func:`pounding.structure.frame_analysis._advance`): each hinge on the branch of the
+direction it moves, ``sign(A_h u̇)`` — or, where that rate is zero (at a reversal), the sign
+of its rate's rate ``A_h ü`` — checked in the configuration that choice gives and
+flipped until the two agree. A joint whose every connection is a hinge of zero tangent has
+no stiffness at all: it stays where it is (as in the pushover).
+
+Floor displacements here are measured from the gravity state (``u = 0``: the frame at rest
+under its gravity loads), as a run measures them; :class:`FrameMotion` is the state of one
+frame through one run (NumPy; the time stepper that moves the floors is
+:mod:`pounding.integrate`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from pounding.hysteresis.hinges import HingeState
+from pounding.structure.frame import Frame
+from pounding.structure.frame_analysis import FrameState, gravity
+from pounding.structure.frame_stiffness import (
+    configuration_stiffness,
+    gravity_load_vector,
+)
+
+__all__ = ["Configuration", "FrameMotion"]
+
+Vector = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Configuration:
+    """One configuration of a frame's hinges, condensed onto its floors (module docstring;
+    displacements ``u`` of the floors from the gravity state, floors lowest first)."""
+
+    directions: NDArray[np.int64]  #: the direction each hinge's branch holds for (0: both)
+    tangents: Vector  #: each hinge's tangent k_t [N·m/rad]
+    q: Vector  #: each hinge's moment offset, ``M = k_t θ + q`` [N·m]
+    K: Vector  #: condensed tangent stiffness of the floors K_c [N/m] (n_f, n_f)
+    f0: Vector  #: constant part of the floors' restoring force ``R = K u + f0`` [N] (n_f,)
+    A: Vector  #: hinge rotations per floor displacement [rad/m] (n_h, n_f)
+    a0: Vector  #: their constant part [rad] (n_h,): ``θ = A u + a0``
+    lower: Vector  #: where each hinge's branch ends below [rad] (−inf: it does not)
+    upper: Vector  #: and above [rad] (+inf: it does not)
+    P: Vector  #: every DOF of the frame per floor displacement (n, n_f)
+    p0: Vector  #: and its constant part (n,): ``U = P u + p0`` (total, not from gravity)
+
+
+class FrameMotion:
+    """The state of a yielding frame through one run: its hinges' committed states and
+    work, its displacements at the last commit, and its current :class:`Configuration`.
+
+    Parameters
+    ----------
+    frame : Frame
+        A frame with rigid floors and masses on the floors' lateral motion only.
+    state : FrameState, optional
+        Its gravity state (:func:`pounding.structure.frame_analysis.gravity`), computed if
+        not given; it is not modified.
+    """
+
+    def __init__(self, frame: Frame, state: FrameState | None = None) -> None:
+        state = state if state is not None else gravity(frame)
+        dofs = state.dofs
+        self.frame = frame
+        self.dofs = dofs
+        self.laws = [h.law for h in frame.hinges]
+        self.hinges: list[HingeState] = list(state.hinges)
+        self.directions = np.zeros(len(self.laws), dtype=np.int64)
+        self.base = state.base
+        self.G = gravity_load_vector(frame, dofs)
+        self.floor = np.asarray(dofs.floor_dof, dtype=np.int64)
+        self.other = np.setdiff1d(np.arange(dofs.n), self.floor)
+        self.U = state.U.copy()
+        self.U0 = self.U.copy()  #: the displacements at the start [m, rad]
+        self.u_gravity = self.U[self.floor].copy()
+        self.work = np.zeros(len(self.laws))  #: ∫ M dθ of every hinge since the start [J]
+        self.recoverable0 = np.array([law.recoverable(h) for law, h in
+                                      zip(self.laws, self.hinges)])
+        self.node = np.asarray(dofs.hinge_node, dtype=np.int64)
+        self.end = np.asarray(dofs.hinge, dtype=np.int64)
+        self.config: Configuration | None = None
+
+    # ------------------------------------------------------------------ the hinges now
+    @property
+    def n_floors(self) -> int:
+        """Number of floors (the frame's DOFs with mass)."""
+        return int(self.floor.size)
+
+    @property
+    def n_hinges(self) -> int:
+        """Number of hinges."""
+        return len(self.laws)
+
+    def rotations(self) -> Vector:
+        """Committed hinge rotations [rad]."""
+        return np.array([h.theta for h in self.hinges])
+
+    def moments(self) -> Vector:
+        """Committed hinge moments [N·m]."""
+        return np.array([h.moment for h in self.hinges])
+
+    def unloading_stiffness(self) -> Vector:
+        """Each hinge's unloading stiffness at its committed state [N·m/rad] (its
+        recoverable energy is ``M²/(2 k)``)."""
+        return np.array([law.unloading_stiffness(h) for law, h in zip(self.laws, self.hinges)])
+
+    def hysteretic_energy(self) -> Vector:
+        """Each hinge's hysteretic energy at its committed state [J]: its work less the
+        change of its recoverable energy since the start."""
+        rec = np.array([law.recoverable(h) for law, h in zip(self.laws, self.hinges)])
+        return self.work - rec + self.recoverable0
+
+    def plastic_rotations(self) -> Vector:
+        """Each hinge's rotation once unloaded to zero moment along its unloading
+        stiffness [rad]: its residual (plastic) rotation."""
+        return self.rotations() - self.moments() / self.unloading_stiffness()
+
+    # ------------------------------------------------------------------ configurations
+    def condensed(self, tangents: Vector, directions: NDArray[np.int64]) -> Configuration:
+        """The configuration with hinge tangents ``tangents`` about the committed hinge
+        states (module docstring).
+
+        Raises
+        ------
+        ValueError
+            If the frame's massless DOFs have no unique equilibrium in it (a mechanism that
+            does not involve the floors).
+        """
+        import scipy.linalg
+
+        dofs, floor = self.dofs, self.floor
+        theta_c = self.rotations()
+        q = self.moments() - tangents * theta_c
+        K = configuration_stiffness(self.base, dofs, tangents)
+        live = np.any(K != 0.0, axis=1)
+        s_live = self.other[live[self.other]]
+        s_dead = self.other[~live[self.other]]
+        Bq = np.zeros(dofs.n)
+        fixed = self.node < 0
+        np.add.at(Bq, self.node[~fixed], q[~fixed])
+        np.add.at(Bq, self.end, -q)
+        nf = floor.size
+        P = np.zeros((dofs.n, nf))
+        p0 = np.zeros(dofs.n)
+        P[floor, np.arange(nf)] = 1.0
+        p0[s_dead] = self.U[s_dead]  # (a joint with no stiffness stays where it is)
+        if s_live.size:
+            Kss = K[np.ix_(s_live, s_live)]
+            Kms = K[np.ix_(floor, s_live)]
+            rhs = np.column_stack([-K[np.ix_(s_live, floor)], (self.G - Bq)[s_live]])
+            # equilibrate rows and columns by the diagonal so that the pivots compare DOFs
+            # of different units; a pivot 1e-13 below the largest: no unique equilibrium
+            d = np.sqrt(np.maximum(np.abs(np.diag(Kss)), np.max(np.abs(Kss)) * 1e-30))
+            lu, _ = scipy.linalg.lu_factor(Kss / d[:, None] / d[None, :], check_finite=False)
+            pivots = np.abs(np.diag(lu))
+            if not np.all(np.isfinite(pivots)) or np.min(pivots) <= 1e-13 * np.max(pivots):
+                raise ValueError(f"{self.frame.name}: its joints and member ends have no "
+                                 "unique equilibrium in this configuration of its hinges (a "
+                                 "mechanism without mass); give the hinges some post-yield "
+                                 "stiffness or put a floor mass on the moving part")
+            # (NumPy's solve: SciPy's triangular solves took 15 ms for a 12 × 12 system on
+            # the 2-core test machine, NumPy's 10 µs)
+            X = np.linalg.solve(Kss / d[:, None] / d[None, :], rhs / d[:, None]) / d[:, None]
+            P[s_live] = X[:, :nf]
+            p0[s_live] = X[:, nf]
+            Kc = K[np.ix_(floor, floor)] + Kms @ X[:, :nf]
+            f0 = Kms @ X[:, nf] + Bq[floor] - self.G[floor]
+        else:
+            Kc = K[np.ix_(floor, floor)].copy()
+            f0 = Bq[floor] - self.G[floor]
+        Kc = 0.5 * (Kc + Kc.T)
+        node_P = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)])
+        node_p0 = np.where(fixed, 0.0, p0[np.maximum(self.node, 0)])
+        A = node_P - P[self.end]
+        a0 = node_p0 - p0[self.end]
+        # from total floor displacements to those from the gravity state
+        ug = self.u_gravity
+        f0 = f0 + Kc @ ug
+        a0 = a0 + A @ ug
+        p0 = p0 + P @ ug
+        lower = np.full(self.n_hinges, -math.inf)
+        upper = np.full(self.n_hinges, math.inf)
+        for h, (law, st) in enumerate(zip(self.laws, self.hinges)):
+            up, down = law.branch(st, 1), law.branch(st, -1)
+            if up.k_t == down.k_t:  # one branch both ways: events at both its ends
+                lower[h], upper[h] = down.theta_end, up.theta_end
+            elif directions[h] > 0:
+                upper[h] = up.theta_end
+            else:
+                lower[h] = down.theta_end
+        return Configuration(directions.copy(), tangents.copy(), q, Kc, f0, A, a0, lower,
+                             upper, P, p0)
+
+    def one_way(self) -> NDArray[np.bool_]:
+        """True for every hinge whose branch depends on the direction it moves."""
+        return np.array([law.branch(st, 1).k_t != law.branch(st, -1).k_t
+                         for law, st in zip(self.laws, self.hinges)])
+
+    def configure(self, velocity: Vector,
+                  acceleration: Vector | Callable[[Configuration], Vector],
+                  rate_tol: float, fallback: Vector | None = None) -> Configuration:
+        """Choose and set the configuration for floor velocities ``velocity`` [m/s] (from the
+        gravity state's; continuous across an event) as :func:`frame_analysis._advance` does:
+        each one-way hinge on the branch of ``sign(A_h u̇)`` — where ``|A_h u̇|`` is within
+        ``rate_tol · Σ|A_h|`` [m/s × rad/m] of zero, the sign of ``A_h ü`` (``acceleration``:
+        the floors' accelerations [m/s²], or a function of the configuration giving them),
+        and failing both, the sign of ``fallback`` (floor displacements that show which way
+        the frame will move, say) or the direction it last moved — checked in the
+        configuration that choice gives, and flipped until they agree (at most
+        ``2 n_h + 2`` times, the pushover's bound)."""
+        nh = self.n_hinges
+        one_way = self.one_way()
+        directions = self.directions.copy()
+        directions[~one_way] = 0
+        for h in np.flatnonzero(one_way & (directions == 0)):
+            directions[h] = 1
+        cfg = None
+        for _ in range(2 * nh + 2):
+            tangents = np.array([law.branch(st, int(d) or 1).k_t for law, st, d in
+                                 zip(self.laws, self.hinges, directions)])
+            cfg = self.condensed(tangents, directions)
+            if not np.any(one_way):
+                break
+            rate = cfg.A @ velocity
+            tol = rate_tol * np.sum(np.abs(cfg.A), axis=1)
+            acc = None
+            flips = 0
+            for h in np.flatnonzero(one_way):
+                want = 0
+                if abs(rate[h]) > tol[h]:
+                    want = 1 if rate[h] > 0.0 else -1
+                else:
+                    if acc is None:
+                        a = acceleration(cfg) if callable(acceleration) else acceleration
+                        acc = cfg.A @ a
+                    if acc[h] != 0.0:
+                        want = 1 if acc[h] > 0.0 else -1
+                    elif fallback is not None and (cfg.A[h] @ fallback) != 0.0:
+                        want = 1 if cfg.A[h] @ fallback > 0.0 else -1
+                if want != 0 and want != directions[h]:
+                    directions[h] = want
+                    flips += 1
+            if not flips:
+                break
+        assert cfg is not None
+        moving = directions != 0
+        self.directions[moving] = directions[moving]
+        self.config = cfg
+        return cfg
+
+    def commit(self, u: Vector) -> Vector:
+        """Commit the hinges at floor displacements ``u`` [m] (from the gravity state) in
+        the current configuration: each hinge moved to its rotation there along its law
+        (``law.moved``, across any breakpoint the located event just passed), its work
+        ``∫ M dθ`` along the configuration's branch added, the frame's displacements kept.
+        Returns the hinge rotations [rad]."""
+        cfg = self.config
+        assert cfg is not None
+        theta = cfg.A @ u + cfg.a0
+        moment = cfg.tangents * theta + cfg.q
+        theta_c, moment_c = self.rotations(), self.moments()
+        self.work = self.work + 0.5 * (moment_c + moment) * (theta - theta_c)
+        self.U = cfg.P @ u + cfg.p0
+        self.hinges = [law.moved(st, float(t)) for law, st, t in
+                       zip(self.laws, self.hinges, theta)]
+        return theta
+
+    def displacements(self, u: Vector) -> Vector:
+        """Every DOF of the frame [m, rad] (total, from the undeformed frame) at floor
+        displacements ``u`` from the gravity state, in the current configuration."""
+        cfg = self.config
+        assert cfg is not None
+        return cfg.P @ u + cfg.p0
+
+    def strain_energy(self, u: Vector) -> float:
+        """The frame's recoverable energy [J] at floor displacements ``u`` (current
+        configuration) relative to its gravity state: the elastic elements' and geometric
+        ``½ Uᵀ K_base U − Gᵀ U`` and the hinges' recoverable ``M²/(2 k_unload)``, each less
+        its value at the start. (For checks: the run integrates the restoring force's work
+        instead.)"""
+        cfg = self.config
+        assert cfg is not None
+        U = self.displacements(u)
+        theta = cfg.A @ u + cfg.a0
+        moment = cfg.tangents * theta + cfg.q
+        k_un = self.unloading_stiffness()
+        return float(0.5 * U @ self.base @ U - self.G @ U - self._elastic0
+                     + np.sum(0.5 * moment ** 2 / k_un) - np.sum(self.recoverable0))
+
+    @property
+    def _elastic0(self) -> float:
+        U0 = self.U0
+        return float(0.5 * U0 @ self.base @ U0 - self.G @ U0)
