@@ -49,7 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.hysteresis.hinges import HingeState
+from pounding.hysteresis.hinges import Branch, HingeState
 from pounding.structure.frame import Frame
 from pounding.structure.frame_analysis import FrameState, gravity
 from pounding.structure.frame_stiffness import (
@@ -151,9 +151,15 @@ class FrameMotion:
         return self.rotations() - self.moments() / self.unloading_stiffness()
 
     # ------------------------------------------------------------------ configurations
-    def condensed(self, tangents: Vector, directions: NDArray[np.int64]) -> Configuration:
+    def branches(self) -> tuple[list[Branch], list[Branch]]:
+        """Each hinge's branch from its committed state moving up, and moving down."""
+        return ([law.branch(st, 1) for law, st in zip(self.laws, self.hinges)],
+                [law.branch(st, -1) for law, st in zip(self.laws, self.hinges)])
+
+    def condensed(self, tangents: Vector, directions: NDArray[np.int64],
+                  branches: tuple[list[Branch], list[Branch]] | None = None) -> Configuration:
         """The configuration with hinge tangents ``tangents`` about the committed hinge
-        states (module docstring).
+        states (module docstring); ``branches``: :meth:`branches`, if at hand.
 
         Raises
         ------
@@ -182,7 +188,7 @@ class FrameMotion:
         if s_live.size:
             Kss = K[np.ix_(s_live, s_live)]
             Kms = K[np.ix_(floor, s_live)]
-            rhs = np.column_stack([-K[np.ix_(s_live, floor)], (self.G - Bq)[s_live]])
+            rhs = np.column_stack([-Kms.T, (self.G - Bq)[s_live]])
             # equilibrate rows and columns by the diagonal so that the pivots compare DOFs
             # of different units; a pivot 1e-13 below the largest: no unique equilibrium
             d = np.sqrt(np.maximum(np.abs(np.diag(Kss)), np.max(np.abs(Kss)) * 1e-30))
@@ -215,8 +221,8 @@ class FrameMotion:
         p0 = p0 + P @ ug
         lower = np.full(self.n_hinges, -math.inf)
         upper = np.full(self.n_hinges, math.inf)
-        for h, (law, st) in enumerate(zip(self.laws, self.hinges)):
-            up, down = law.branch(st, 1), law.branch(st, -1)
+        ups, downs = branches if branches is not None else self.branches()
+        for h, (up, down) in enumerate(zip(ups, downs)):
             if up.k_t == down.k_t:  # one branch both ways: events at both its ends
                 lower[h], upper[h] = down.theta_end, up.theta_end
             elif directions[h] > 0:
@@ -228,8 +234,8 @@ class FrameMotion:
 
     def one_way(self) -> NDArray[np.bool_]:
         """True for every hinge whose branch depends on the direction it moves."""
-        return np.array([law.branch(st, 1).k_t != law.branch(st, -1).k_t
-                         for law, st in zip(self.laws, self.hinges)])
+        ups, downs = self.branches()
+        return np.array([up.k_t != down.k_t for up, down in zip(ups, downs)], dtype=bool)
 
     def configure(self, velocity: Vector,
                   acceleration: Vector | Callable[[Configuration], Vector],
@@ -244,16 +250,17 @@ class FrameMotion:
         configuration that choice gives, and flipped until they agree (at most
         ``2 n_h + 2`` times, the pushover's bound)."""
         nh = self.n_hinges
-        one_way = self.one_way()
+        ups, downs = self.branches()
+        one_way = np.array([up.k_t != down.k_t for up, down in zip(ups, downs)], dtype=bool)
         directions = self.directions.copy()
         directions[~one_way] = 0
         for h in np.flatnonzero(one_way & (directions == 0)):
             directions[h] = 1
         cfg = None
         for _ in range(2 * nh + 2):
-            tangents = np.array([law.branch(st, int(d) or 1).k_t for law, st, d in
-                                 zip(self.laws, self.hinges, directions)])
-            cfg = self.condensed(tangents, directions)
+            tangents = np.array([down.k_t if d < 0 else up.k_t
+                                 for up, down, d in zip(ups, downs, directions)])
+            cfg = self.condensed(tangents, directions, (ups, downs))
             if not np.any(one_way):
                 break
             rate = cfg.A @ velocity
