@@ -225,3 +225,29 @@ def test_opensees_converges_toward_the_kernel_on_the_yielding_portal() -> None:
     assert peak_err[0] > peak_err[1] > peak_err[2] and final_err[0] > final_err[2]
     assert peak_err[2] < 1e-5 and final_err[2] < 1e-4
     assert math.isfinite(final)
+
+
+def test_hinges_yielded_by_gravity_start_on_their_plastic_branch_and_stay_at_rest() -> None:
+    # beam hinges of 200 kN·m under wL²/12 = 300 kN·m of gravity (hardening 2 %): they
+    # yield before the shaking starts, each on a branch that holds one way only
+    frame = regular_frame(6.0, 4.0, n_storeys=1, column_EI=2e8, beam_EI=2e8,
+                          column_hinge=BilinearHinge(k0=1e11, m_y=1e6, hardening=0.02),
+                          beam_hinge=BilinearHinge(k0=1e11, m_y=2e5, hardening=0.02),
+                          floor_mass=MASS, beam_load=1e5, name="sagging")
+    b = frame_matrix_building(frame)
+    assert abs(b.gravity_state.hinges[4].moment) > 2e5
+    model = PoundingModel([b], [], KV)
+    still = simulate(model, GroundMotion(0.01, np.zeros(100), name="none"))
+    assert np.max(np.abs(still.displacement)) < 1e-12
+    shaken = simulate(model, el_centro(), duration=3.0)
+    assert shaken.energy_balance_error < 1e-9
+    assert np.all(np.isfinite(shaken.hinge_moment))
+
+
+def test_a_yielding_frame_given_an_initial_displacement_is_refused_in_one_line() -> None:
+    model = PoundingModel([frame_matrix_building(_portal())], [], KV)
+    with pytest.raises(ValueError, match=r"^initial_displacement: frame 'portal' \(building "
+                                         r"B1\) starts displaced"):
+        simulate(model, el_centro(), duration=0.1, initial_displacement=[0.01])
+    moving = simulate(model, el_centro(), duration=1.0, initial_velocity=[0.3])
+    assert moving.displacement[1, 0] > 0.0 and moving.energy_balance_error < 1e-9

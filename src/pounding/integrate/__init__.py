@@ -393,7 +393,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
             assert frames is not None
             frames.on_event(st.x, scratch.kx[0], k0 * step + st.ws_f[W_RESUME_S],
                             int(ws_i[I_STOP_ROW]))
-        if progress is not None:
+        elif progress is not None:
             progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
     hinges = frames.finish(st.x, (nt - 1) * step, out.hinge_rotation) if frames else None

@@ -130,6 +130,8 @@ class FrameRun:
         self.peak = np.zeros(h0)
         self.peak_time = np.zeros(h0)
         self.events = 0
+        self._last_event = (-1.0, 0)  # the time of the last event, and events at it
+        self._chatter = 4 * h0 + 20
 
     # ------------------------------------------------------------------ start
     def start(self, x: NDArray[np.float64], ag0: NDArray[np.float64],
@@ -185,8 +187,25 @@ class FrameRun:
         """A hinge event that ended a call of the kernel: commit the frame of hinge ``row``
         at state ``x`` (``f_x`` = f(x), whose velocity part gives the floors'
         accelerations), choose its next configuration and write it; likewise any other
-        frame whose hinge is at or past an end of its branch (simultaneous events)."""
+        frame whose hinge is at or past an end of its branch (simultaneous events).
+
+        Raises
+        ------
+        ValueError
+            If the hinges keep changing configuration at one instant (more than ``4 n_h +
+            20`` events there): a configuration its hinges cannot settle in.
+        """
         self.events += 1
+        last_t, count = self._last_event
+        count = count + 1 if abs(t - last_t) <= 1e-12 * max(abs(t), 1.0) else 0
+        self._last_event = (t, count)
+        if count > self._chatter:
+            frame = next(f for f in self.frames if f.rows.start <= row < f.rows.stop)
+            raise ValueError(f"solver: the hinges of frame {frame.motion.frame.name!r} "
+                             f"(building B{frame.building + 1}) keep changing branch at "
+                             f"t = {t:.6f} s ({count} events at that instant) without "
+                             "settling; check its hinge laws (a branch of zero length, or "
+                             "a tangent that leaves its joints with no stiffness)")
         n = self.n
         for f in self.frames:
             sl = self._floors(f)
