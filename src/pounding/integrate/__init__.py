@@ -305,7 +305,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         raise ValueError(f"motion: {ag.shape[1]} ground components for "  # unchecked)
                          f"{km.floors.r.shape[1]}")
     n, nz = km.n, km.nz
-    fl, ct, el = km.arrays
+    fl, ct, el = km.floors, km.contacts, km.elements
     ns = el.lo.size
     yielding_frames = bool(model.yielding_frames)
     if (ns or yielding_frames) and free_stepping == "exact":

@@ -65,14 +65,12 @@ from pounding.integrate.layout import (
     P_CONTACT,
     P_DAMP,
     P_DEVICE,
-    P_FRAME,
     P_INPUT,
     P_STOREY,
     PK_A,
     STOP_HINGE,
     W_E_DAMP,
     W_E_DEVICE,
-    W_E_FRAME,
     W_E_INPUT,
     W_E_STOREY,
     W_ERR_OLD,
@@ -126,7 +124,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     local time reached in it left in ``ws_f[W_RESUME_S]``, where the next call resumes
     (at the grid point's end, the grid step is finished first and 0 is left there).
     """
-    fl, ct, el = km.floors, km.contacts, km.elements
+    fl, ct, el, hg = km.floors, km.contacts, km.elements, km.hinges
     dt = run.dt
     ag = run.ag
     rtol = run.rtol
@@ -152,7 +150,6 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     m = x.shape[0]
     nc = cgap.shape[0]
     ns = el.lo.shape[0]
-    n_frame = fl.f_dof.shape[0]
     npw = P_CONTACT + nc
     stop_at_grid = False
     while k < k1:
@@ -216,7 +213,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             # (the literals −1 and 0 give find_event a compiled version of its own here,
             # unlike the typed constants of layout; np.int64(−1) and np.int64(0) instead
             # change the last bits of some runs, through the compiler's fused multiply-adds)
-            te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, committed, -1, 0,
+            te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, hg, committed, -1, 0,
                                       graze_tol, last_f[:, LF_GRAZED])
             ev_c = -1
             ev_kind = 0
@@ -228,8 +225,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     ws_i[I_FAIL_STEP] = k
                     return -1
                 # locate on real RK steps by the Illinois method, keeping the 'after' side
-                g_lo = event_value(kind, ce, x, n, ct, el)
-                g_hi = event_value(kind, ce, y1, n, ct, el)
+                g_lo = event_value(kind, ce, x, n, ct, el, hg)
+                g_hi = event_value(kind, ce, y1, n, ct, el, hg)
                 upward = is_upward(kind)
                 lo = 0.0
                 hi = h_acc
@@ -243,7 +240,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     err = rk_step(x, kx, px, te, gnd, s, fl, ct, el, committed, sstate, lin,
                                   ks_b, ps_b, ytmp, yb, atol, rtol)
                     ws_i[I_NSTEPS] += 1
-                    g_te = event_value(kind, ce, yb, n, ct, el)
+                    g_te = event_value(kind, ce, yb, n, ct, el, hg)
                     if (g_te > 0.0) == upward and g_te != 0.0:
                         hi = te
                         g_hi = g_te
@@ -254,14 +251,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     if ev_c >= 0 or false_events > 0:
                         break
                     false_events += 1
-                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, committed, ce,
+                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, hg, committed, ce,
                                               kind, graze_tol, last_f[:, LF_GRAZED])
                     continue
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
-                g_tol = event_tolerance(kind, ce, n, cparams, atol, el.h_state)
+                g_tol = event_tolerance(kind, ce, n, cparams, atol, hg.state)
                 h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px,
-                                    gnd, s, fl, ct, el, committed, sstate, lin, ks, ps, ks_b,
-                                    ps_b, ytmp, y1, yb, atol, rtol, ws_i)
+                                    gnd, s, fl, ct, el, hg, committed, sstate, lin, ks, ps,
+                                    ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i)
                 if kind == EV_GRAZE:
                     # the step now ends at the peak of the gap's penetration: closed there?
                     d_peak = gap_row(ce, y1, n, cdof, cw)[0] - cgap[ce]
@@ -271,10 +268,10 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                         h_acc, err = locate(EV_ONSET, ce, 0.0, h_acc, g_lo, d_peak,
                                             0.5 * h_acc, event_tolerance(EV_ONSET, ce, n,
                                                                          cparams, atol,
-                                                                         el.h_state),
-                                            dt, x, kx, px, gnd, s, fl, ct, el, committed,
-                                            sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb,
-                                            atol, rtol, ws_i)
+                                                                         hg.state),
+                                            dt, x, kx, px, gnd, s, fl, ct, el, hg,
+                                            committed, sstate, lin, ks, ps, ks_b, ps_b, ytmp,
+                                            y1, yb, atol, rtol, ws_i)
                         kind = EV_ONSET
                     else:
                         # no: accept the step to the peak, and do not search this gap again
@@ -292,7 +289,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     break
                 h_before = h_acc
                 # any other event earlier in this shorter step?
-                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, committed, ev_c,
+                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, hg, committed, ev_c,
                                           ev_kind, graze_tol, last_f[:, LF_GRAZED])
             if ev_kind == EV_GRAZE:
                 ev_c = -1  # nothing happened at the peak of a gap that stayed open
@@ -310,8 +307,6 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             if ns > 0:
                 ws_f[W_E_STOREY] += weighted_sum(ps, P_STOREY, h_acc)
                 ws_f[W_E_DEVICE] += weighted_sum(ps, P_DEVICE, h_acc)
-            if n_frame > 0:
-                ws_f[W_E_FRAME] += weighted_sum(ps, P_FRAME, h_acc)
             for c in range(nc):
                 wc[c] += weighted_sum(ps, P_CONTACT + c, h_acc)
             s_new = dt if last else s + h_acc
@@ -394,7 +389,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 stop_at_grid = True
         for i in range(n):
             arel0[i] = kx[0, n + i]
-        grid_outputs(k + 1, ag, x, kx, fl, ct, el, st, out, lin)
+        grid_outputs(k + 1, ag, x, kx, fl, ct, el, hg, st, out, lin)
         # every entry of the state, and every work integrated, is in one of the energies:
         # one test a grid step that none stopped being a finite number
         e_sum = 0.0
@@ -419,10 +414,11 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
 
 
 @njit(**INLINE)
-def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
+def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     """Write the outputs of grid point ``o`` (ground components ``ag[o]``) from the state
     ``x`` and ``kx = f(x)`` after an adaptive grid step (the model's floors, contacts and
-    element rows ``fl``, ``ct``, ``el``; the run's state ``st`` and outputs ``out``)."""
+    element rows ``fl``, ``ct``, ``el``, its hinge rows ``hg``; the run's state ``st`` and
+    outputs ``out``)."""
     r = fl.r
     m_diag = fl.m_diag
     cdof, cw, cgap, ccode, cparams = ct
@@ -434,17 +430,6 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out = out[:7]
     n = r.shape[0]
     band_mv(fl.k_band, fl.c_band, x, n, fl.bw, lin)
-    # the hinges of yielding frames: rotation and moment, their work ∫ M dθ (exact: M is
-    # linear in θ along the branch since the last commit) less their recoverable energy
-    hst = el.h_state
-    e_hinge = 0.0
-    for q in range(hst.shape[0]):
-        th = hinge_row(q, x, n, el)[0]
-        mom = hst[q, HS_KT] * th + hst[q, HS_Q]
-        out.hinge_rotation[o, q] = th
-        out.hinge_moment[o, q] = mom
-        work_q = hst[q, HS_WORK_C] + 0.5 * (hst[q, HS_M_C] + mom) * (th - hst[q, HS_THETA_C])
-        e_hinge += work_q - 0.5 * mom * mom / hst[q, HS_K_UNLOAD] + hst[q, HS_REC0]
     a_o = ag[o, 0]
     for i in range(n):
         u_out[o, i] = x[i]
@@ -481,13 +466,12 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
                                   delta, committed[c, 1])
         f_out[o, c] = f
         wsum += wc[c]
-    f_dof = fl.f_dof
-    if f_dof.shape[0] > 0:
-        # a yielding frame's strain energy is its restoring force's work less its hinges'
-        # hysteretic energy (not ½ uᵀ K u of its tangent stiffness)
-        for q in range(f_dof.shape[0]):
-            es -= 0.5 * x[f_dof[q]] * lin[0, f_dof[q]]
-        es += ws_f[W_E_FRAME] - e_hinge
+    e_hinge = 0.0
+    if fl.f_rows.shape[0] > 0:
+        # (called, not inlined: inlined, its loops cost the SDOF pair's contact steps 5 %)
+        e_frame, e_hinge = frame_outputs(o, x, n, fl, hg, out.hinge_rotation,
+                                         out.hinge_moment)
+        es += e_frame
     e_out[o, E_INPUT] = ws_f[W_E_INPUT]
     e_out[o, E_KINETIC] = ek
     e_out[o, E_STRAIN] = es + recov + recov_dev
@@ -495,9 +479,36 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     e_out[o, E_CONTACT_WORK] = wsum
     e_out[o, E_CONTACT_STORED] = stored
     e_out[o, E_HYSTERETIC] = ws_f[W_E_STOREY] - recov
-    if hst.shape[0] > 0:
+    if fl.f_rows.shape[0] > 0:
         e_out[o, E_HYSTERETIC] += e_hinge
     e_out[o, E_DEVICE] = ws_f[W_E_DEVICE] - recov_dev
+
+
+@njit(**NRT_FREE)
+def frame_outputs(o, x, n, fl, hg, rotation, moment):
+    """The yielding frames' part of :func:`grid_outputs` at output ``o``, state ``x``: every
+    hinge's rotation and moment (written to row o of ``rotation`` and ``moment``), and
+    ``(strain, hysteretic)`` energy [J]: the frames' restoring-force work less their
+    hinges' hysteretic energy, beyond the ``½ uᵀ K u`` of their floors, and that hysteretic
+    energy ``Σ (∫ M dθ − M²/(2 k_unload))`` less its value at the start.
+
+    A frame's work within a configuration is ``½ uᵀ K u + f0ᵀ u + c`` (``fl.f_rows``: each
+    floor's DOF, f0 and c, set at each event so that it runs on continuously); a hinge's
+    ``∫ M dθ`` is exact along its branch (M linear in θ since the last commit)."""
+    hst = hg.state
+    e_hinge = 0.0
+    for q in range(hst.shape[0]):
+        th = hinge_row(q, x, n, hg)[0]
+        mom = hst[q, HS_KT] * th + hst[q, HS_Q]
+        rotation[o, q] = th
+        moment[o, q] = mom
+        work_q = hst[q, HS_WORK_C] + 0.5 * (hst[q, HS_M_C] + mom) * (th - hst[q, HS_THETA_C])
+        e_hinge += work_q - 0.5 * mom * mom / hst[q, HS_K_UNLOAD] + hst[q, HS_REC0]
+    fr = fl.f_rows
+    e_frame = 0.0
+    for q in range(fr.shape[0]):
+        e_frame += fr[q, 1] * x[int(fr[q, 0])] + fr[q, 2]
+    return e_frame - e_hinge, e_hinge
 
 
 @njit(**NRT_FREE)

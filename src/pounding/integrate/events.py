@@ -187,19 +187,20 @@ def quintic_max(f0, d0, q0, f1, d1, q1, h):
 
 
 @njit(**NRT_FREE)
-def event_value(kind, c, y, n, ct, el):
+def event_value(kind, c, y, n, ct, el, hg):
     """Event function: δ of contact c (onset, separation), δ̇ (phase switches, the peak of
     an open gap's penetration), the unclipped force of a releasing law (release, engaging
-    again), or the drift rate of element row c (drift reversals); ``ct``, ``el``: the
-    contacts and element rows."""
+    again), the drift rate of element row c (drift reversals), or of hinge row c its
+    rotation less an end of its branch (the branch's ends) or its rate (reversals); ``ct``,
+    ``el``, ``hg``: the contacts, element rows and hinge rows."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return drift_of(el.lo[c], el.hi[c], y, n)[1]
     if kind >= EV_HINGE_HI:
-        th, th_rate = hinge_row(c, y, n, el)
+        th, th_rate = hinge_row(c, y, n, hg)
         if kind == EV_HINGE_HI:
-            return th - el.h_state[c, HS_HI]
+            return th - hg.state[c, HS_HI]
         if kind == EV_HINGE_LO:
-            return th - el.h_state[c, HS_LO]
+            return th - hg.state[c, HS_LO]
         return th_rate
     d, v = gap_row(c, y, n, ct.dof, ct.weight)
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
@@ -242,7 +243,8 @@ def touch_possible(d0, r0, q0, d1, r1, q1, h, tol):
 
 
 @njit(**NRT_FREE)
-def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze_tol, grazed):
+def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, graze_tol,
+               grazed):
     """Earliest event in a step, from Hermite interpolants of every contact's δ and δ̇ and
     every yielding storey's drift rate (``k0``: row 0 is f(y0); ``k1``: row 6 is f(y1)).
 
@@ -255,8 +257,8 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
     8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
     (released before δ = 0 / engaged again), 10 / 11 a frame's hinge rotation reaching the
     upper / lower end of its branch, 12 / 13 a hinge on a one-way branch reversing (its
-    rate turning negative / positive); (−1, −1, 0) if none. ``ct``, ``el``: the
-    contacts and element rows.
+    rate turning negative / positive); (−1, −1, 0) if none. ``ct``, ``el``, ``hg``: the
+    contacts, element rows and hinge rows.
     """
     cdof, cw, cgap, ccode, cparams = ct
     s_lo = el.lo
@@ -336,12 +338,12 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
             best_t, best_c, best_k = t, s, kind
     # the plastic hinges of yielding frames: a rotation reaching an end of its branch, a
     # one-way branch's rotation reversing
-    hdof = el.h_dof
-    hw = el.h_w
-    hst = el.h_state
+    hdof = hg.dof
+    hw = hg.weight
+    hst = hg.state
     for q in range(hdof.shape[0]):
-        th0, r0 = hinge_row(q, y0, n, el)
-        th1, r1 = hinge_row(q, y1, n, el)
+        th0, r0 = hinge_row(q, y0, n, hg)
+        th1, r1 = hinge_row(q, y1, n, hg)
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
         hi = hst[q, HS_HI]
         if max(th0, th1) + bound > hi and not (q == skip_c and skip_kind == EV_HINGE_HI):
@@ -376,7 +378,7 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
 
 
 @njit(**NRT_FREE)
-def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl, ct, el,
+def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl, ct, el, hg,
            committed, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i):
     """Locate an event bracketed in ``(lo, hi]`` (local times from the step start ``s``;
     event function ``g_lo`` on the 'before' side at lo, ``g_hi`` on the 'after' side at hi)
@@ -398,7 +400,7 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl
         err = rk_step(x, kx, px, t_try, gnd, s, fl, ct, el, committed, sstate, lin, ks_b,
                       ps_b, ytmp, yb, atol, rtol)
         ws_i[I_NSTEPS] += 1
-        g = event_value(kind, ce, yb, n, ct, el)
+        g = event_value(kind, ce, yb, n, ct, el, hg)
         after = (g > 0.0) if upward else (g <= 0.0)
         if after:
             hi = t_try

@@ -8,9 +8,10 @@ arrays that belong to the run, not to the model (whose arrays are shared by ever
 it, :data:`pounding.integrate.kernel_model.STRUCTURES`):
 
 * the frame's block of the banded stiffness, a copy for the run, holds ``K_c``;
-* ``Floors.f_dof`` / ``f_const`` hold the frame's floors and ``f0`` (empty for models
+* ``Floors.f_rows`` holds the frame's floors, ``f0`` and the constant ``c`` that keeps the
+  frame's work ``½ uᵀ K_c u + f0ᵀ u + c`` continuous across configurations (empty for models
   without yielding frames, whose arithmetic is then unchanged);
-* ``ElementRows.h_dof`` / ``h_w`` / ``h_state`` hold one row per hinge: its rotation
+* :class:`~pounding.integrate.kernel_model.HingeRows` holds one row per hinge: its rotation
   ``θ = A_h u + a0_h`` over the frame's floors, the ends of the branch it is on, the
   direction that branch holds for, its moment line and its committed point and work
   (:data:`pounding.integrate.layout.HS_A0` …).
@@ -30,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.integrate.kernel_model import KernelModel, band_storage
+from pounding.integrate.kernel_model import HingeRows, KernelModel, band_storage
 from pounding.integrate.layout import (
     EVENT_TOL,
     HS_A0,
@@ -72,6 +73,8 @@ class _Frame:
     offset: int  #: its first floor's DOF
     rows: slice  #: its hinge rows
     motion: FrameMotion
+    first: int  #: its first row in ``Floors.f_rows``
+    work_constant: float = 0.0  #: c: its work is ``½ uᵀ K_c u + f0ᵀ u + c`` [J]
 
 
 class FrameRun:
@@ -97,15 +100,17 @@ class FrameRun:
         self.theta_tol = EVENT_TOL * float(atol[0])
         self.frames: list[_Frame] = []
         h0 = 0
+        first = 0
         for b, bl in model.yielding_frames:
             motion = FrameMotion(bl.frame, bl.gravity_state)
             rows = slice(h0, h0 + motion.n_hinges)
             h0 += motion.n_hinges
-            self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion))
+            self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first))
+            first += motion.n_floors
         self.n_hinges = h0
         nf_max = max(f.motion.n_floors for f in self.frames)
         width = -(-nf_max // ROW_BLOCK) * ROW_BLOCK
-        fl, el = km.floors, km.elements
+        fl = km.floors
         # the frames' condensed stiffness is full over their floors: a band wide enough
         bw = max(fl.bw, nf_max - 1)
         self.bw = bw
@@ -119,11 +124,11 @@ class FrameRun:
             self.h_dof[f.rows] = f.offset  # (padding: weight 0 on the first floor)
             self.h_dof[f.rows, :f.motion.n_floors] = f.offset + np.arange(f.motion.n_floors)
         self.k_band = k_band
-        self.f_const = np.zeros(f_dof.size)
-        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band,
-                                  f_dof=np.ascontiguousarray(f_dof), f_const=self.f_const)
-        self.elements = el._replace(h_dof=self.h_dof, h_w=self.h_w, h_state=self.h_state)
-        self.arrays = km.arrays._replace(floors=self.floors, elements=self.elements)
+        self.f_rows = np.zeros((f_dof.size, 3))
+        self.f_rows[:, 0] = f_dof
+        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band, f_rows=self.f_rows)
+        self.hinges = HingeRows(self.h_dof, self.h_w, self.h_state)
+        self.arrays = km.arrays._replace(floors=self.floors, hinges=self.hinges)
         self.masses = fl.m_diag
         self.C = km.C
         self.R = fl.r
@@ -216,7 +221,10 @@ class FrameRun:
             self._track(f, theta, t)
             v = x[n + f.offset: n + f.offset + f.motion.n_floors]
             a = f_x[n + f.offset: n + f.offset + f.motion.n_floors]
+            work = self._work(f, u)
             f.motion.configure(v, a, self.rate_tol)
+            f.work_constant = 0.0
+            f.work_constant = work - self._work(f, u)
             self._write(f)
 
     def _due(self, f: _Frame, x: NDArray[np.float64]) -> bool:
@@ -253,6 +261,14 @@ class FrameRun:
                             self.events)
 
     # ------------------------------------------------------------------ arrays
+    @staticmethod
+    def _work(f: _Frame, u: NDArray[np.float64]) -> float:
+        """The work of frame ``f``'s restoring force since the start [J] at floor
+        displacements ``u``, in its current configuration: ``½ uᵀ K_c u + f0ᵀ u + c``."""
+        cfg = f.motion.config
+        assert cfg is not None
+        return float(0.5 * u @ cfg.K @ u + cfg.f0 @ u) + f.work_constant
+
     def _floors(self, f: _Frame) -> slice:
         return slice(f.offset, f.offset + f.motion.n_floors)
 
@@ -274,8 +290,8 @@ class FrameRun:
         # band storage: kb[d, i] = K[i, i + d − bw]
         rows_i, cols_j = np.meshgrid(a, a, indexing="ij")
         self.k_band[cols_j - rows_i + self.bw, f.offset + rows_i] = cfg.K
-        start = sum(g.motion.n_floors for g in self.frames[: self.frames.index(f)])
-        self.f_const[start: start + nf] = cfg.f0
+        self.f_rows[f.first: f.first + nf, 1] = cfg.f0
+        self.f_rows[f.first, 2] = f.work_constant
         hs = self.h_state[f.rows]
         self.h_w[f.rows, :nf] = cfg.A
         hs[:, HS_A0] = cfg.a0

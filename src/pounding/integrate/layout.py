@@ -24,10 +24,9 @@ of yielding storeys and links), viscous damping, contact work, energy stored in 
 contacts, hysteretic (yielding storeys) and dissipated by the links between buildings."""
 
 # ---------------------------------------------------------------- power rows of a step's stages
-# input, viscous, yielding storeys, links, yielding frames' restoring forces, then one per
-# contact
-P_INPUT, P_DAMP, P_STOREY, P_DEVICE, P_FRAME = range(5)
-P_CONTACT = 5
+# input, viscous, yielding storeys, links, then one per contact
+P_INPUT, P_DAMP, P_STOREY, P_DEVICE = range(4)
+P_CONTACT = 4
 
 # ---------------------------------------------------------------- event kinds
 # Event kinds and peak columns, which the compiled functions pass as arguments, are NumPy
@@ -54,15 +53,15 @@ EV_HINGE_TURN_DOWN, EV_HINGE_TURN_UP = np.int64(12), np.int64(13)
 rotation rate θ̇ turning negative / positive."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
-(W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE, W_E_FRAME,
- W_RESUME_S) = range(9)
-WS_F_SIZE = 9
+(W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE,
+ W_RESUME_S) = range(8)
+WS_F_SIZE = 8
 """Workspace scalars: proposed RK step [s], cumulative input, viscous and storey work [J],
 last error norm, and the margin by which an acceleration peak between two exact-step
 samples can exceed the larger sample (relative; :func:`pounding.integrate.peak_margin`),
-the links' cumulative work [J], the yielding frames' restoring-force work ``∫ R·u̇ dt`` [J],
-and the local time [s] inside grid step ``I_REACHED`` at which the next call resumes (0:
-at the grid point; set where a call returned at a hinge event, :data:`I_STOP`)."""
+the links' cumulative work [J], and the local time [s] inside grid step ``I_REACHED`` at
+which the next call resumes (0: at the grid point; set where a call returned at a hinge
+event, :data:`I_STOP`)."""
 (I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED, I_FAIL_STEP,
  I_STEP_BUDGET, I_ONSET_C, I_CALL_STEPS, I_REACHED, I_FAIL_ROW, I_STOP, I_STOP_ROW) = range(15)
 WS_I_SIZE = 15
@@ -85,7 +84,7 @@ STOP_HINGE = 1
 (HS_A0, HS_LO, HS_HI, HS_DIR, HS_KT, HS_Q, HS_THETA_C, HS_M_C, HS_WORK_C, HS_K_UNLOAD,
  HS_REC0, HS_WABS) = range(12)
 HS_COLUMNS = 12
-"""Columns of a hinge row's state (``ElementRows.h_state``), set by Python at every
+"""Columns of a hinge row's state (``HingeRows.state``), set by Python at every
 configuration of its frame: the offset ``a0`` of its rotation ``θ = Σ w u + a0`` [rad]
 (u the floors' displacements from the gravity state), the lower and upper end of the
 branch it is on [rad] (±inf: none), the direction that branch holds for (0: both ways;

@@ -45,7 +45,6 @@ from pounding.integrate.layout import (
     P_CONTACT,
     P_DAMP,
     P_DEVICE,
-    P_FRAME,
     P_INPUT,
     P_STOREY,
     RATE_SIDE,
@@ -90,12 +89,12 @@ def gap_row(c, y, n, cdof, cw):
 
 
 @njit(**NRT_FREE)
-def hinge_row(h, y, n, el):
+def hinge_row(h, y, n, hg):
     """``(θ, θ̇)`` of hinge row h of a yielding frame: ``θ = Σ w u + a0`` over its frame's
-    floors in the frame's current configuration (``el``: the element rows, whose ``h_dof``,
-    ``h_w`` and ``h_state`` hold the hinge rows)."""
-    hdof = el.h_dof
-    hw = el.h_w
+    floors in the frame's current configuration (``hg``: the hinge rows,
+    :class:`pounding.integrate.kernel_model.HingeRows`)."""
+    hdof = hg.dof
+    hw = hg.weight
     d = 0.0
     v = 0.0
     for q0 in range(0, hdof.shape[1], ROW_BLOCK):
@@ -103,7 +102,7 @@ def hinge_row(h, y, n, el):
             j = hdof[h, q]
             d += hw[h, q] * y[j]
             v += hw[h, q] * y[n + j]
-    return d + el.h_state[h, HS_A0], v
+    return d + hg.state[h, HS_A0], v
 
 
 @njit(**NRT_FREE)
@@ -279,17 +278,13 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     power[row, P_INPUT] = p_in
     power[row, P_DAMP] = p_d
     # yielding frames: in their current configuration the restoring force of a frame's
-    # floors is K u + f_const (K, its condensed tangent stiffness, in the band above); the
-    # constant part here, and the power of the whole (no floors of this kind: nothing)
-    p_f = 0.0
-    f_dof = fl.f_dof
-    for q in range(f_dof.shape[0]):
-        i = f_dof[q]
-        f0 = fl.f_const[q]
-        dy[row, n + i] -= f0 * m_inv[i]
-        ku = lin[0, i] if bw > 0 else k_band[0, i] * y[i]
-        p_f += (ku + f0) * y[n + i]
-    power[row, P_FRAME] = p_f
+    # floors is K u + f0 (K, its condensed tangent stiffness, in the band above); f0 here
+    # (its work is a potential within a configuration: grid_outputs has it in closed form)
+    frames = fl.f_rows
+    if frames.shape[0] > 0:
+        for q in range(frames.shape[0]):
+            i = int(frames[q, 0])
+            dy[row, n + i] -= frames[q, 1] * m_inv[i]
     # yielding storeys: shear V from the storey law, −V on the floor above, +V below; the
     # links between buildings (codes ≥ DEVICE_MIN) are rows of the same kind
     p_s = 0.0
