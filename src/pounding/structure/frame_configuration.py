@@ -20,7 +20,8 @@ loads) and ``G`` the gravity loads, held constant. The force the frame's floors 
 
 net of the gravity loads, so the frame standing in its gravity state is at rest; and every
 hinge rotation is ``θ = A u + a0`` with ``A = B_sᵀ S``, ``a0 = B_sᵀ s0`` (no hinge rotation is
-a floor's DOF). This is the static condensation of Chopra, *Dynamics of Structures*, 4th
+a floor's DOF) — taken as ``a0 = θ* − A u*``, anchored where the hinges were committed (the
+same up to rounding, but a commit at the same instant then moves no hinge at all). This is the static condensation of Chopra, *Dynamics of Structures*, 4th
 ed., §9.3, carried out in the configuration and with the constant part kept.
 
 Between events the frame's motion is linear; an *event* is a hinge reaching the end of its
@@ -108,6 +109,9 @@ class FrameMotion:
         self.U = state.U.copy()
         self.U0 = self.U.copy()  #: the displacements at the start [m, rad]
         self.u_gravity = self.U[self.floor].copy()
+        #: the floors' displacements (from the gravity state) where the hinges were last
+        #: committed: each hinge's rotation is anchored there (:meth:`condensed`)
+        self.u_commit = np.zeros(self.floor.size)
         self.work = np.zeros(len(self.laws))  #: ∫ M dθ of every hinge since the start [J]
         self.recoverable0 = np.array([law.recoverable(h) for law, h in
                                       zip(self.laws, self.hinges)])
@@ -213,12 +217,15 @@ class FrameMotion:
         node_P = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)])
         node_p0 = np.where(fixed, 0.0, p0[np.maximum(self.node, 0)])
         A = node_P - P[self.end]
-        a0 = node_p0 - p0[self.end]
         # from total floor displacements to those from the gravity state
         ug = self.u_gravity
         f0 = f0 + Kc @ ug
-        a0 = a0 + A @ ug
         p0 = p0 + P @ ug
+        # each hinge's rotation anchored where it was committed, θ = θ* + A (u − u*), not
+        # B_sᵀ s0 (the same up to rounding): at that point its rotation is θ* exactly, so a
+        # second commit at the same instant (another hinge's event) moves it not at all —
+        # a move of a rounding error the wrong way is a reversal to a law with memory
+        a0 = theta_c - A @ self.u_commit
         lower = np.full(self.n_hinges, -math.inf)
         upper = np.full(self.n_hinges, math.inf)
         ups, downs = branches if branches is not None else self.branches()
@@ -298,11 +305,12 @@ class FrameMotion:
         Returns the hinge rotations [rad]."""
         cfg = self.config
         assert cfg is not None
-        theta = cfg.A @ u + cfg.a0
-        moment = cfg.tangents * theta + cfg.q
         theta_c, moment_c = self.rotations(), self.moments()
+        theta = cfg.A @ (u - self.u_commit) + theta_c
+        moment = cfg.tangents * theta + cfg.q
         self.work = self.work + 0.5 * (moment_c + moment) * (theta - theta_c)
         self.U = cfg.P @ u + cfg.p0
+        self.u_commit = np.array(u, dtype=float)
         self.hinges = [law.moved(st, float(t)) for law, st, t in
                        zip(self.laws, self.hinges, theta)]
         return theta
