@@ -223,6 +223,7 @@ class FrameRun:
             a = f_x[n + f.offset: n + f.offset + f.motion.n_floors]
             work = self._work(f, u)
             f.motion.configure(v, a, self.rate_tol)
+            f.motion.redistribute(u, v, a, self.rate_tol)
             f.work_constant = 0.0
             f.work_constant = work - self._work(f, u)
             self._write(f)

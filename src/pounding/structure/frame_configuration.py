@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.hysteresis.hinges import Branch, HingeState
+from pounding.hysteresis.hinges import Branch, HingeLaw, HingeState
 from pounding.structure.frame import Frame
 from pounding.structure.frame_analysis import FrameState, gravity
 from pounding.structure.frame_stiffness import (
@@ -59,6 +59,32 @@ from pounding.structure.frame_stiffness import (
 )
 
 __all__ = ["Configuration", "FrameMotion"]
+
+JUMP_TOL: float = 1e-9
+"""A hinge's moment jumps where its law's moment leaves the straight branch it was on by more
+than this fraction of its yield moment (as the pushover judges it)."""
+
+
+def _moved(law: HingeLaw, state: HingeState, theta: float) -> tuple[HingeState, bool]:
+    """``law.moved(state, theta)``, walked branch by branch (contract 5), and whether the
+    moment jumped anywhere on the way (at a breakpoint, or at the start of a reversal)."""
+    if theta == state.theta:
+        return state, False
+    direction = 1 if theta > state.theta else -1
+    tol = JUMP_TOL * law.m_y
+    jumped = False
+    current = state
+    for _ in range(10_000):
+        br = law.branch(current, direction)
+        end = br.theta_end
+        last = (direction > 0 and end >= theta) or (direction < 0 and end <= theta)
+        to = theta if last else end
+        nxt = law.moved(current, to)
+        jumped = jumped or abs(nxt.moment - (current.moment + br.k_t * (to - current.theta))) > tol
+        if last:
+            return nxt, jumped
+        current = nxt
+    raise RuntimeError(f"{law.label}: more than 10000 branches in one move")  # pragma: no cover
 
 Vector = NDArray[np.float64]
 
@@ -79,6 +105,10 @@ class Configuration:
     upper: Vector  #: and above [rad] (+inf: it does not)
     P: Vector  #: every DOF of the frame per floor displacement (n, n_f)
     p0: Vector  #: and its constant part (n,): ``U = P u + p0`` (total, not from gravity)
+    #: the hinge rotations' constant part in the configuration's own equilibrium, ``B_sᵀ
+    #: s0`` [rad] (``a0`` anchors them where they were committed instead; the two differ
+    #: by rounding, or after a hinge's moment jumped)
+    a0_equilibrium: Vector
 
 
 class FrameMotion:
@@ -118,6 +148,10 @@ class FrameMotion:
         self.node = np.asarray(dofs.hinge_node, dtype=np.int64)
         self.end = np.asarray(dofs.hinge, dtype=np.int64)
         self.config: Configuration | None = None
+        #: a hinge's moment jumped at the last commit (a fracture, complete deterioration):
+        #: the frame must be brought to the equilibrium of its next configuration
+        #: (:meth:`redistribute`)
+        self.jumped = False
 
     # ------------------------------------------------------------------ the hinges now
     @property
@@ -221,6 +255,7 @@ class FrameMotion:
         ug = self.u_gravity
         f0 = f0 + Kc @ ug
         p0 = p0 + P @ ug
+        a0_equilibrium = node_p0 - p0[self.end] + A @ ug
         # each hinge's rotation anchored where it was committed, θ = θ* + A (u − u*), not
         # B_sᵀ s0 (the same up to rounding): at that point its rotation is θ* exactly, so a
         # second commit at the same instant (another hinge's event) moves it not at all —
@@ -237,7 +272,7 @@ class FrameMotion:
             else:
                 lower[h] = down.theta_end
         return Configuration(directions.copy(), tangents.copy(), q, Kc, f0, A, a0, lower,
-                             upper, P, p0)
+                             upper, P, p0, a0_equilibrium)
 
     def one_way(self) -> NDArray[np.bool_]:
         """True for every hinge whose branch depends on the direction it moves."""
@@ -297,23 +332,62 @@ class FrameMotion:
         self.config = cfg
         return cfg
 
-    def commit(self, u: Vector) -> Vector:
+    def commit(self, u: Vector, equilibrium: bool = False) -> Vector:
         """Commit the hinges at floor displacements ``u`` [m] (from the gravity state) in
         the current configuration: each hinge moved to its rotation there along its law
         (``law.moved``, across any breakpoint the located event just passed), its work
-        ``∫ M dθ`` along the configuration's branch added, the frame's displacements kept.
-        Returns the hinge rotations [rad]."""
+        ``∫ M dθ`` along the configuration's branch added, the frame's displacements kept;
+        :attr:`jumped` set if a hinge's moment jumped on the way. ``equilibrium``: the
+        rotations of the configuration's own equilibrium at ``u`` (after a jump), not those
+        anchored at the last commit. Returns the hinge rotations [rad]."""
         cfg = self.config
         assert cfg is not None
         theta_c, moment_c = self.rotations(), self.moments()
-        theta = cfg.A @ (u - self.u_commit) + theta_c
+        if equilibrium:
+            theta = cfg.A @ u + cfg.a0_equilibrium
+        else:
+            theta = cfg.A @ (u - self.u_commit) + theta_c
         moment = cfg.tangents * theta + cfg.q
         self.work = self.work + 0.5 * (moment_c + moment) * (theta - theta_c)
         self.U = cfg.P @ u + cfg.p0
         self.u_commit = np.array(u, dtype=float)
-        self.hinges = [law.moved(st, float(t)) for law, st, t in
-                       zip(self.laws, self.hinges, theta)]
+        moved = [_moved(law, st, float(t)) for law, st, t in
+                 zip(self.laws, self.hinges, theta)]
+        self.hinges = [st for st, _ in moved]
+        self.jumped = any(jump for _, jump in moved)
         return theta
+
+    def redistribute(self, u: Vector, velocity: Vector, acceleration: Vector,
+                     rate_tol: float) -> Configuration:
+        """After a hinge's moment jumped at floor displacements ``u`` (:attr:`jumped`): the
+        massless DOFs take the equilibrium of the configuration with the jumped moment at
+        once (they have no mass to hold them), each hinge moved to its rotation there and
+        the configuration chosen again, until no moment jumps. (The pushover releases such
+        a jump event by event, :func:`pounding.structure.frame_analysis._advance`; here a
+        hinge the release carries past the end of its branch is moved along its law at once,
+        and the next configuration takes it from there.)
+
+        Raises
+        ------
+        ValueError
+            If the jumps keep cascading (more than ``2 n_h + 10`` rounds).
+        """
+        cfg = self.config
+        assert cfg is not None
+        if not self.jumped:
+            return cfg
+        # (until no moment jumps and the configuration's equilibrium is where the hinges
+        # are: a hinge the release carried past a breakpoint follows its law, not the line
+        # the release assumed, and the next round releases the difference)
+        tol = 1e-9 * min((law.theta_y for law in self.laws), default=1.0)
+        for _ in range(2 * self.n_hinges + 10):
+            self.commit(u, equilibrium=True)
+            cfg = self.configure(velocity, acceleration, rate_tol)
+            gap = cfg.A @ u + cfg.a0_equilibrium - self.rotations()
+            if not self.jumped and not np.any(np.abs(gap) > tol):
+                return cfg
+        raise ValueError(f"{self.frame.name}: its hinges' moments keep jumping (fractures "
+                         "cascading) without reaching an equilibrium")
 
     def displacements(self, u: Vector) -> Vector:
         """Every DOF of the frame [m, rad] (total, from the undeformed frame) at floor
