@@ -74,7 +74,9 @@ def test_the_portal_carries_four_mp_over_h_while_its_mechanism_moves() -> None:
     plastic = np.all(np.isclose(np.abs(moments[:, :4]), MP_COLUMN, rtol=1e-12, atol=0), axis=1)
     assert plastic.sum() > 50  # the sway mechanism moves for a while
     assert np.abs(R[plastic]) == pytest.approx(mechanism, rel=1e-7)
-    assert np.max(np.abs(moments[:, 4:])) <= MP_COLUMN * (1 + 1e-12)  # the beam's: elastic
+    # the beam's stay elastic: at the joints they carry the column tops' moments, at most
+    # Mp (and the event tolerance of a hinge's rotation times k0: 3e-4 N·m measured)
+    assert np.max(np.abs(moments[:, 4:])) <= MP_COLUMN * (1 + 1e-8)
     # statics of the portal at every output step: the storey shear is the columns' end
     # moments over the height, R = Σ M / h (a check of the condensation and of the hinge
     # rows against each other: 8e-7 N measured)

@@ -345,15 +345,22 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
         th0, r0 = hinge_row(q, y0, n, hg)
         th1, r1 = hinge_row(q, y1, n, hg)
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
+        # (after an event was located, skip_c >= 0: a hinge within the event tolerance past
+        # the end of its branch at the shortened step's end is left to Python, which lands
+        # every such hinge with the event's; located again, twin hinges — a symmetric
+        # frame's — shortened the step in turn by fractions of that tolerance, ~60 times)
+        near = graze_tol * hst[q, HS_WABS] if skip_c >= 0 else -1.0
         hi = hst[q, HS_HI]
-        if max(th0, th1) + bound > hi and not (q == skip_c and skip_kind == EV_HINGE_HI):
+        if (max(th0, th1) + bound > hi and not (q == skip_c and skip_kind == EV_HINGE_HI)
+                and not (th1 > hi and th1 - hi <= near)):
             t = hermite_root(th0 - hi, r0, th1 - hi, r1, h, UPWARD)
             if th1 > hi and t < 0.0:
                 t = h
             if t > 0.0 and t < best_t:
                 best_t, best_c, best_k = t, q, EV_HINGE_HI
         lo = hst[q, HS_LO]
-        if min(th0, th1) - bound <= lo and not (q == skip_c and skip_kind == EV_HINGE_LO):
+        if (min(th0, th1) - bound <= lo and not (q == skip_c and skip_kind == EV_HINGE_LO)
+                and not (th1 <= lo and lo - th1 <= near)):
             t = hermite_root(th0 - lo, r0, th1 - lo, r1, h, DOWNWARD)
             if th1 <= lo and t < 0.0:
                 t = h

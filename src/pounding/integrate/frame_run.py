@@ -217,13 +217,14 @@ class FrameRun:
             u = x[sl]
             if not (f.rows.start <= row < f.rows.stop or self._due(f, x)):
                 continue
-            theta = f.motion.commit(u)
-            self._track(f, theta, t)
             v = x[n + f.offset: n + f.offset + f.motion.n_floors]
             a = f_x[n + f.offset: n + f.offset + f.motion.n_floors]
+            event = row - f.rows.start if f.rows.start <= row < f.rows.stop else None
+            theta = f.motion.commit(u, land=f.motion.landing(u, v, self.theta_tol, event))
+            self._track(f, theta, t)
             work = self._work(f, u)
             f.motion.configure(v, a, self.rate_tol)
-            f.motion.redistribute(u, v, a, self.rate_tol)
+            f.motion.redistribute(u, v, a, self.rate_tol, self.theta_tol)
             f.work_constant = 0.0
             f.work_constant = work - self._work(f, u)
             self._write(f)

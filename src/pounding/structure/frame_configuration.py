@@ -111,6 +111,25 @@ class Configuration:
     a0_equilibrium: Vector
 
 
+LINEAR_PARTS_KEPT: int = 256
+"""The configurations' linear parts a frame keeps for reuse (oldest forgotten first)."""
+
+
+@dataclass(frozen=True)
+class _LinearPart:
+    """What a configuration's tangents alone fix: the live and dead massless DOFs, the
+    equilibrated ``K_ss`` and its scaling, ``K_ms``, the condensed ``K_c``, ``A`` and ``P``."""
+
+    live: NDArray[np.int64]
+    dead: NDArray[np.int64]
+    scale: Vector
+    Kss_scaled: Vector
+    Kms: Vector
+    Kc: Vector
+    A: Vector
+    P: Vector
+
+
 class FrameMotion:
     """The state of a yielding frame through one run: its hinges' committed states and
     work, its displacements at the last commit, and its current :class:`Configuration`.
@@ -152,6 +171,7 @@ class FrameMotion:
         #: the frame must be brought to the equilibrium of its next configuration
         #: (:meth:`redistribute`)
         self.jumped = False
+        self._linear_parts: dict[bytes, _LinearPart] = {}
 
     # ------------------------------------------------------------------ the hinges now
     @property
@@ -205,62 +225,34 @@ class FrameMotion:
             If the frame's massless DOFs have no unique equilibrium in it (a mechanism that
             does not involve the floors).
         """
-        import scipy.linalg
-
-        dofs, floor = self.dofs, self.floor
+        floor = self.floor
         theta_c = self.rotations()
         q = self.moments() - tangents * theta_c
-        K = configuration_stiffness(self.base, dofs, tangents)
-        live = np.any(K != 0.0, axis=1)
-        s_live = self.other[live[self.other]]
-        s_dead = self.other[~live[self.other]]
-        Bq = np.zeros(dofs.n)
+        lin = self._linear_part(tangents)
+        Bq = np.zeros(self.dofs.n)
         fixed = self.node < 0
         np.add.at(Bq, self.node[~fixed], q[~fixed])
         np.add.at(Bq, self.end, -q)
-        nf = floor.size
-        P = np.zeros((dofs.n, nf))
-        p0 = np.zeros(dofs.n)
-        P[floor, np.arange(nf)] = 1.0
-        p0[s_dead] = self.U[s_dead]  # (a joint with no stiffness stays where it is)
-        if s_live.size:
-            Kss = K[np.ix_(s_live, s_live)]
-            Kms = K[np.ix_(floor, s_live)]
-            rhs = np.column_stack([-Kms.T, (self.G - Bq)[s_live]])
-            # equilibrate rows and columns by the diagonal so that the pivots compare DOFs
-            # of different units; a pivot 1e-13 below the largest: no unique equilibrium
-            d = np.sqrt(np.maximum(np.abs(np.diag(Kss)), np.max(np.abs(Kss)) * 1e-30))
-            lu, _ = scipy.linalg.lu_factor(Kss / d[:, None] / d[None, :], check_finite=False)
-            pivots = np.abs(np.diag(lu))
-            if not np.all(np.isfinite(pivots)) or np.min(pivots) <= 1e-13 * np.max(pivots):
-                raise ValueError(f"{self.frame.name}: its joints and member ends have no "
-                                 "unique equilibrium in this configuration of its hinges (a "
-                                 "mechanism without mass); give the hinges some post-yield "
-                                 "stiffness or put a floor mass on the moving part")
+        p0 = np.zeros(self.dofs.n)
+        p0[lin.dead] = self.U[lin.dead]  # (a joint with no stiffness stays where it is)
+        if lin.live.size:
+            d = lin.scale
             # (NumPy's solve: SciPy's triangular solves took 15 ms for a 12 × 12 system on
             # the 2-core test machine, NumPy's 10 µs)
-            X = np.linalg.solve(Kss / d[:, None] / d[None, :], rhs / d[:, None]) / d[:, None]
-            P[s_live] = X[:, :nf]
-            p0[s_live] = X[:, nf]
-            Kc = K[np.ix_(floor, floor)] + Kms @ X[:, :nf]
-            f0 = Kms @ X[:, nf] + Bq[floor] - self.G[floor]
-        else:
-            Kc = K[np.ix_(floor, floor)].copy()
-            f0 = Bq[floor] - self.G[floor]
-        Kc = 0.5 * (Kc + Kc.T)
-        node_P = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)])
+            p0[lin.live] = np.linalg.solve(lin.Kss_scaled, (self.G - Bq)[lin.live] / d) / d
+        f0 = lin.Kms @ p0[lin.live] + Bq[floor] - self.G[floor]
         node_p0 = np.where(fixed, 0.0, p0[np.maximum(self.node, 0)])
-        A = node_P - P[self.end]
         # from total floor displacements to those from the gravity state
         ug = self.u_gravity
-        f0 = f0 + Kc @ ug
-        p0 = p0 + P @ ug
-        a0_equilibrium = node_p0 - p0[self.end] + A @ ug
+        a0_equilibrium = node_p0 - p0[self.end] + lin.A @ ug
+        f0 = f0 + lin.Kc @ ug
+        p0 = p0 + lin.P @ ug
         # each hinge's rotation anchored where it was committed, θ = θ* + A (u − u*), not
         # B_sᵀ s0 (the same up to rounding): at that point its rotation is θ* exactly, so a
         # second commit at the same instant (another hinge's event) moves it not at all —
         # a move of a rounding error the wrong way is a reversal to a law with memory
-        a0 = theta_c - A @ self.u_commit
+        a0 = theta_c - lin.A @ self.u_commit
+        Kc, A, P = lin.Kc, lin.A, lin.P
         lower = np.full(self.n_hinges, -math.inf)
         upper = np.full(self.n_hinges, math.inf)
         ups, downs = branches if branches is not None else self.branches()
@@ -273,6 +265,52 @@ class FrameMotion:
                 lower[h] = down.theta_end
         return Configuration(directions.copy(), tangents.copy(), q, Kc, f0, A, a0, lower,
                              upper, P, p0, a0_equilibrium)
+
+    def _linear_part(self, tangents: Vector) -> _LinearPart:
+        """What a configuration's tangents alone fix (:class:`_LinearPart`), computed once
+        for each set of tangents met in the run (a frame returns to the same few: elastic,
+        its mechanisms)."""
+        key = tangents.tobytes()
+        part = self._linear_parts.get(key)
+        if part is not None:
+            return part
+        dofs, floor = self.dofs, self.floor
+        K = configuration_stiffness(self.base, dofs, tangents)
+        alive = np.any(K != 0.0, axis=1)
+        live = self.other[alive[self.other]]
+        dead = self.other[~alive[self.other]]
+        nf = floor.size
+        P = np.zeros((dofs.n, nf))
+        P[floor, np.arange(nf)] = 1.0
+        Kms = K[np.ix_(floor, live)]
+        Kc = K[np.ix_(floor, floor)]
+        scale = np.ones(live.size)
+        Kss_scaled = np.zeros((live.size, live.size))
+        if live.size:
+            import scipy.linalg
+
+            Kss = K[np.ix_(live, live)]
+            # equilibrate rows and columns by the diagonal so that the pivots compare DOFs
+            # of different units; a pivot 1e-13 below the largest: no unique equilibrium
+            scale = np.sqrt(np.maximum(np.abs(np.diag(Kss)), np.max(np.abs(Kss)) * 1e-30))
+            Kss_scaled = Kss / scale[:, None] / scale[None, :]
+            lu, _ = scipy.linalg.lu_factor(Kss_scaled, check_finite=False)
+            pivots = np.abs(np.diag(lu))
+            if not np.all(np.isfinite(pivots)) or np.min(pivots) <= 1e-13 * np.max(pivots):
+                raise ValueError(f"{self.frame.name}: its joints and member ends have no "
+                                 "unique equilibrium in this configuration of its hinges (a "
+                                 "mechanism without mass); give the hinges some post-yield "
+                                 "stiffness or put a floor mass on the moving part")
+            S = np.linalg.solve(Kss_scaled, -Kms.T / scale[:, None]) / scale[:, None]
+            P[live] = S
+            Kc = Kc + Kms @ S
+        fixed = self.node < 0
+        A = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)]) - P[self.end]
+        part = _LinearPart(live, dead, scale, Kss_scaled, Kms, 0.5 * (Kc + Kc.T), A, P)
+        if len(self._linear_parts) >= LINEAR_PARTS_KEPT:
+            self._linear_parts.pop(next(iter(self._linear_parts)))
+        self._linear_parts[key] = part
+        return part
 
     def one_way(self) -> NDArray[np.bool_]:
         """True for every hinge whose branch depends on the direction it moves."""
@@ -332,21 +370,32 @@ class FrameMotion:
         self.config = cfg
         return cfg
 
-    def commit(self, u: Vector, equilibrium: bool = False) -> Vector:
+    def commit(self, u: Vector, equilibrium: float | None = None,
+               land: dict[int, float] | None = None) -> Vector:
         """Commit the hinges at floor displacements ``u`` [m] (from the gravity state) in
         the current configuration: each hinge moved to its rotation there along its law
         (``law.moved``, across any breakpoint the located event just passed), its work
         ``∫ M dθ`` along the configuration's branch added, the frame's displacements kept;
-        :attr:`jumped` set if a hinge's moment jumped on the way. ``equilibrium``: the
-        rotations of the configuration's own equilibrium at ``u`` (after a jump), not those
-        anchored at the last commit. Returns the hinge rotations [rad]."""
+        :attr:`jumped` set if a hinge's moment jumped on the way. ``equilibrium`` [rad/m]:
+        the rotations of the configuration's own equilibrium at ``u`` (after a jump), not
+        those anchored at the last commit — for each hinge whose equilibrium rotation is
+        further than ``equilibrium · Σ|A_h|`` (and 10⁻¹² of its rotation) from where it
+        stands (a move of a rounding error is a reversal to a law with memory). ``land``: hinges to commit at these rotations instead
+        (an event's, on the end of its branch: :meth:`landing`). Returns the hinge
+        rotations [rad]."""
         cfg = self.config
         assert cfg is not None
         theta_c, moment_c = self.rotations(), self.moments()
-        if equilibrium:
-            theta = cfg.A @ u + cfg.a0_equilibrium
-        else:
-            theta = cfg.A @ (u - self.u_commit) + theta_c
+        theta = cfg.A @ (u - self.u_commit) + theta_c
+        if equilibrium is not None:
+            settled = cfg.A @ u + cfg.a0_equilibrium
+            theta_y = np.array([law.theta_y for law in self.laws])
+            near = np.maximum(equilibrium * np.sum(np.abs(cfg.A), axis=1),
+                              1e-12 * (np.abs(theta) + theta_y))
+            far = np.abs(settled - theta) > near
+            theta = np.where(far, settled, theta)
+        for h, th in (land or {}).items():
+            theta[h] = th
         moment = cfg.tangents * theta + cfg.q
         self.work = self.work + 0.5 * (moment_c + moment) * (theta - theta_c)
         self.U = cfg.P @ u + cfg.p0
@@ -357,15 +406,39 @@ class FrameMotion:
         self.jumped = any(jump for _, jump in moved)
         return theta
 
+    def landing(self, u: Vector, velocity: Vector, theta_tol: float,
+                event: int | None = None) -> dict[int, float]:
+        """The hinges to commit on the end of their branch at floor displacements ``u``:
+        each within ``theta_tol · Σ|A_h|`` [rad] of an end of its branch and heading there
+        (velocity ``velocity``), and the event's hinge ``event`` (which the time stepper
+        found past it), each at its rotation or on the end, whichever is further — never
+        short of it by a rounding error, which would leave the law a branch of zero length
+        there (and the time stepper the same event again and again)."""
+        cfg = self.config
+        assert cfg is not None
+        theta = cfg.A @ (u - self.u_commit) + self.rotations()
+        rate = cfg.A @ velocity
+        tol = theta_tol * np.sum(np.abs(cfg.A), axis=1)
+        out: dict[int, float] = {}
+        for h in range(self.n_hinges):
+            down = theta[h] <= cfg.lower[h] + tol[h] and (h == event or rate[h] < 0.0)
+            up = theta[h] >= cfg.upper[h] - tol[h] and (h == event or rate[h] > 0.0)
+            if down:
+                out[h] = float(min(theta[h], cfg.lower[h]))
+            elif up:
+                out[h] = float(max(theta[h], cfg.upper[h]))
+        return out
+
     def redistribute(self, u: Vector, velocity: Vector, acceleration: Vector,
-                     rate_tol: float) -> Configuration:
+                     rate_tol: float, theta_tol: float) -> Configuration:
         """After a hinge's moment jumped at floor displacements ``u`` (:attr:`jumped`): the
         massless DOFs take the equilibrium of the configuration with the jumped moment at
         once (they have no mass to hold them), each hinge moved to its rotation there and
         the configuration chosen again, until no moment jumps. (The pushover releases such
         a jump event by event, :func:`pounding.structure.frame_analysis._advance`; here a
         hinge the release carries past the end of its branch is moved along its law at once,
-        and the next configuration takes it from there.)
+        and the next configuration takes it from there.) ``theta_tol`` [rad/m]: a hinge
+        within ``theta_tol · Σ|A_h|`` of its equilibrium rotation stays where it is.
 
         Raises
         ------
@@ -376,16 +449,25 @@ class FrameMotion:
         assert cfg is not None
         if not self.jumped:
             return cfg
-        # (until no moment jumps and the configuration's equilibrium is where the hinges
-        # are: a hinge the release carried past a breakpoint follows its law, not the line
-        # the release assumed, and the next round releases the difference)
-        tol = 1e-9 * min((law.theta_y for law in self.laws), default=1.0)
+        # (until no moment jumps and no hinge changes branch: a hinge the release carried
+        # past a breakpoint follows its law, not the line the release assumed, and the next
+        # round releases the difference; once the tangents stay, the equilibrium is where
+        # the hinges are, to rounding)
+        theta_y = np.array([law.theta_y for law in self.laws])
         for _ in range(2 * self.n_hinges + 10):
-            self.commit(u, equilibrium=True)
+            before = cfg.tangents
+            self.commit(u, equilibrium=theta_tol)
             cfg = self.configure(velocity, acceleration, rate_tol)
-            gap = cfg.A @ u + cfg.a0_equilibrium - self.rotations()
-            if not self.jumped and not np.any(np.abs(gap) > tol):
+            if not self.jumped and np.array_equal(cfg.tangents, before):
                 return cfg
+        # (a law whose memory changes at every reversal — IMK's unloading stiffness — can
+        # keep the last rounds moving hinges by rounding errors back and forth: accepted
+        # where the equilibrium is that close)
+        gap = np.abs(cfg.A @ u + cfg.a0_equilibrium - self.rotations())
+        near = np.maximum(theta_tol * np.sum(np.abs(cfg.A), axis=1),
+                          1e-9 * (np.abs(self.rotations()) + theta_y))
+        if not self.jumped and np.all(gap <= near):
+            return cfg
         raise ValueError(f"{self.frame.name}: its hinges' moments keep jumping (fractures "
                          "cascading) without reaching an equilibrium")
 
