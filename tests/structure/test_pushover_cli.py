@@ -194,7 +194,7 @@ duration = 4.0
     assert list(hinges) == [f"B1H{h}" for h in range(1, 7)]
     # the sway mechanism: the four column hinges yield (300 kN·m), the beam's do not
     assert [hinges[f"B1H{h}"]["peak_moment_N_m"] for h in range(1, 5)] == \
-        pytest.approx([300e3] * 4, rel=1e-12)
+        pytest.approx([300e3] * 4, rel=1e-8)  # (to the event tolerance of a rotation, × k0)
     assert all(hinges[f"B1H{h}"]["peak_rotation_rad"] > 1e-3 for h in range(1, 5))
     assert all(hinges[f"B1H{h}"]["peak_rotation_rad"] <= 3e-6 * (1 + 1e-9) for h in (5, 6))
     assert summary["hinge_hysteretic_energy_J"] > 0.0
@@ -204,4 +204,4 @@ duration = 4.0
     with xr.open_dataset(tmp_path / "r" / "timehistories.nc") as ds:
         assert ds["hinge_rotation"].attrs["units"] == "rad"
         assert ds["hinge_moment"].attrs["units"] == "N m"
-        assert float(abs(ds["hinge_moment"]).max()) == pytest.approx(300e3, rel=1e-12)
+        assert float(abs(ds["hinge_moment"]).max()) == pytest.approx(300e3, rel=1e-8)
