@@ -86,10 +86,10 @@ def _loop_deriv(calls, y, gnd, fl, ct, el, committed, sstate, lin, ks, ps):
 
 
 @njit(**_LOOP)
-def _loop_find_event(calls, y0, ks, y1, n, ct, el, committed, grazed):
+def _loop_find_event(calls, y0, ks, y1, n, ct, el, hg, committed, grazed):
     total = 0.0
     for i in range(calls):
-        te, _, _ = events.find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, ct, el,
+        te, _, _ = events.find_event(y0, ks, y1, ks, 1e-4 * (1.0 + 1e-9 * i), n, ct, el, hg,
                                      committed, -1, 0, 2e-10, grazed)
         total += te
     return total
@@ -121,7 +121,7 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
                             f"{st.rk_steps} RK steps, {st.rejected} rejected, "
                             f"{res.n_impacts} impacts)"))
     a = kernel_arguments(bench.sdof_pair_model(law))
-    fl, ct, el = a["km"]
+    fl, ct, el, hg = a["km"]
     st, run = a["st"], a["run"]
     n = fl.m_diag.shape[0]
     m = st.x.shape[0]
@@ -148,7 +148,7 @@ def profile(law: str, calls: int, repeat: int) -> list[tuple[str, str]]:
     ns = per_call_ns(_loop_deriv, calls * 5, y, gnd, fl, none, el, closed[:0], sstate, lin,
                      ks, ps)
     rows.append(("one right-hand side, no contact element", f"{ns:.1f} ns"))
-    ns = per_call_ns(_loop_find_event, calls * 5, y, ks, y + 1e-6, n, ct, el, closed,
+    ns = per_call_ns(_loop_find_event, calls * 5, y, ks, y + 1e-6, n, ct, el, hg, closed,
                      np.zeros(ct.gap.shape[0]))
     rows.append(("one event search (contact closed)", f"{ns:.1f} ns"))
     return rows

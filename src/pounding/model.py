@@ -347,6 +347,20 @@ class PoundingModel:
         """True if any building has yielding storeys."""
         return any(b.is_inelastic for b in self.buildings)
 
+    @cached_property
+    def yielding_frames(self) -> tuple[tuple[int, Any], ...]:
+        """``(building index, building)`` of every frame with plastic hinges
+        (:class:`~pounding.structure.frame_linear.FrameBuilding`), left to right: the
+        buildings whose time history the kernel takes configuration by configuration of
+        their hinges (:mod:`pounding.integrate.frame_run`)."""
+        return tuple((b, bl) for b, bl in enumerate(self.buildings)
+                     if getattr(bl, "has_hinges", False))
+
+    def hinge_labels(self) -> list[str]:
+        """``'B1H1'``, ``'B1H2'``, … for every hinge of the yielding frames (building, then
+        the hinge's number in its frame, 1-based), in :attr:`yielding_frames` order."""
+        return [f"B{b + 1}{lb}" for b, bl in self.yielding_frames for lb in bl.hinge_labels()]
+
     def contact_kinematics(self) -> tuple[NDArray[np.int64], NDArray[np.float64]]:
         """Global DOFs and signed weights of every contact, each shape ``(n_c, 4)`` (two
         slots a side: a floor, a column point between two floors, or a floor in plan and

@@ -66,7 +66,10 @@ from pounding.integrate.layout import (
     I_OVERFLOW,
     I_REACHED,
     I_STEP_BUDGET,
+    I_STOP,
+    I_STOP_ROW,
     PK_COLUMNS,
+    W_RESUME_S,
 )
 from pounding.integrate.periods import (
     check_building_periods,
@@ -302,13 +305,14 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         raise ValueError(f"motion: {ag.shape[1]} ground components for "  # unchecked)
                          f"{km.floors.r.shape[1]}")
     n, nz = km.n, km.nz
-    fl, ct, el = km.arrays
+    fl, ct, el = km.floors, km.contacts, km.elements
     ns = el.lo.size
-    if ns and free_stepping == "exact":
+    yielding_frames = bool(model.yielding_frames)
+    if (ns or yielding_frames) and free_stepping == "exact":
         raise ValueError("free_stepping: 'exact' needs linear storeys and no links; this "
-                         "model has yielding storeys or links between buildings (use 'auto' "
-                         "or 'rk')")
-    exact = choose_free_stepping(free_stepping, n, fl.bw) and ns == 0
+                         "model has yielding storeys, links between buildings or frames with "
+                         "plastic hinges (use 'auto' or 'rk')")
+    exact = choose_free_stepping(free_stepping, n, fl.bw) and ns == 0 and not yielding_frames
     if exact:
         fs = km.free_steps.get(step)
         if fs is None:
@@ -344,8 +348,20 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     st = new_state(km, x, sstate, step, margin, exact, budget)
     ws_i = st.ws_i
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)
-    out = new_outputs(km, nt, cap, np.empty((n, PK_COLUMNS)))
+    arrays = km.arrays
+    frames = None
+    if yielding_frames:
+        from pounding.integrate.frame_run import FrameRun
+
+        frames = FrameRun(model, km, atol)
+        moving = np.flatnonzero(np.any(ag != 0.0, axis=1))
+        frames.start(x, ag[0], ag[moving[0]] if moving.size else ag[0])
+        arrays = frames.arrays
+    out = new_outputs(km, nt, cap, np.empty((n, PK_COLUMNS)),
+                      frames.n_hinges if frames is not None else 0)
     write_initial_row(model, km, x, sstate, out, at_rest)
+    if frames is not None:
+        frames.initial_row(x, out.hinge_rotation[0], out.hinge_moment[0])
     out.peaks[:] = initial_peaks(out.u[0], out.acc[0], fl.below)
 
     # the run in calls of bounded work, so that Ctrl-C and SIGTERM (which Python handles
@@ -353,8 +369,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     grid_per_call, rk_per_call = call_sizes(km, exact, fs)
     if progress is not None:
         grid_per_call = min(grid_per_call, max(1000, (nt - 1) // 50))
-    args = (RunInputs(step, ag, exact, rtol, atol, h_max), km.arrays, fs, st, out,
-            kernel_scratch(km, x.size))
+    scratch = kernel_scratch(km, x.size)
+    args = (RunInputs(step, ag, exact, rtol, atol, h_max), arrays, fs, st, out, scratch)
     # An empty chunk first, in a process that has not loaded the compiled kernel yet: that
     # call loads it from numba's cache (~0.3 s), which is not integrating and is kept out of
     # stats.wall_time.
@@ -371,9 +387,16 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
             raise IntegrationError(_failure_text(model, km, motion, ws_i, st.committed, step,
                                                  rtol))
         k0 = int(ws_i[I_REACHED])
-        if progress is not None:
+        if ws_i[I_STOP]:
+            # a hinge event: the frame's next configuration, then on from the same instant
+            ws_i[I_STOP] = 0
+            assert frames is not None
+            frames.on_event(st.x, scratch.kx[0], k0 * step + st.ws_f[W_RESUME_S],
+                            int(ws_i[I_STOP_ROW]))
+        elif progress is not None:
             progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
+    hinges = frames.finish(st.x, (nt - 1) * step, out.hinge_rotation) if frames else None
     pk = out.peaks
     final_peaks(pk, out.u[-1], out.acc[-1], fl.below, (nt - 1) * step)
     n_imp = int(ws_i[I_NIMP])
@@ -392,7 +415,13 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   link_force=out.element_force[:, n_storey_rows:], final_z=x[2 * n:].copy(),
                   impact_array=out.impacts[: min(n_imp, cap)].copy(), stats=stats,
                   contact_peak=out.peak_force, contact_peak_time=out.peak_force_time,
-                  contact_impacts=out.impact_count, located_peaks=pk)
+                  contact_impacts=out.impact_count, located_peaks=pk,
+                  hinge_rotation=out.hinge_rotation if frames else None,
+                  hinge_moment=out.hinge_moment if frames else None,
+                  hinge_peak_rotation=hinges.peak_rotation if hinges else None,
+                  hinge_peak_rotation_time=hinges.peak_rotation_time if hinges else None,
+                  hinge_residual_rotation=hinges.residual_rotation if hinges else None,
+                  hinge_dissipated=hinges.dissipated if hinges else None)
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,

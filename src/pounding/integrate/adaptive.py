@@ -39,11 +39,19 @@ from pounding.integrate.layout import (
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
     EV_GRAZE,
+    EV_HINGE_HI,
     EV_ONSET,
     EV_SEPARATION,
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
+    HS_K_UNLOAD,
+    HS_KT,
+    HS_M_C,
+    HS_Q,
+    HS_REC0,
+    HS_THETA_C,
+    HS_WORK_C,
     I_CALL_STEPS,
     I_FAIL_STEP,
     I_FAILED,
@@ -52,18 +60,22 @@ from pounding.integrate.layout import (
     I_NSTEPS,
     I_ONSET_C,
     I_STEP_BUDGET,
+    I_STOP,
+    I_STOP_ROW,
     P_CONTACT,
     P_DAMP,
     P_DEVICE,
     P_INPUT,
     P_STOREY,
     PK_A,
+    STOP_HINGE,
     W_E_DAMP,
     W_E_DEVICE,
     W_E_INPUT,
     W_E_STOREY,
     W_ERR_OLD,
     W_H,
+    W_RESUME_S,
 )
 from pounding.integrate.peaks import track_point, track_step
 from pounding.integrate.rhs import (
@@ -80,6 +92,7 @@ from pounding.integrate.rhs import (
     gap_row,
     ground_at,
     ground_at_grid_end,
+    hinge_row,
     jerk,
     law_call,
     recoverable_call,
@@ -104,8 +117,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     Returns the grid point reached, or −1 if the integration failed (``ws_i[I_FAILED]``
     says why); also returns at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps
     in all. One call for a whole contact episode.
+
+    A yielding frame's hinge event ends the call right after the step to it is accepted
+    (``ws_i[I_STOP] = STOP_HINGE``, the hinge row in ``ws_i[I_STOP_ROW]``), for Python to
+    give the frame its next configuration: the grid step in progress is returned, and the
+    local time reached in it left in ``ws_f[W_RESUME_S]``, where the next call resumes
+    (at the grid point's end, the grid step is finished first and 0 is left there).
     """
-    fl, ct, el = km
+    fl, ct, el, hg = km.floors, km.contacts, km.elements, km.hinges
     dt = run.dt
     ag = run.ag
     rtol = run.rtol
@@ -132,6 +151,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     nc = cgap.shape[0]
     ns = el.lo.shape[0]
     npw = P_CONTACT + nc
+    stop_at_grid = False
     while k < k1:
         # ---------------- grid step k → k + 1: RK steps landing on t_k + dt
         t_k = k * dt
@@ -140,11 +160,19 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             gnd[G_A1, g] = ag[k + 1, g]
             gnd[G_SLOPE, g] = (gnd[G_A1, g] - gnd[G_A0, g]) / dt
         a0 = ag[k, 0]
-        s = 0.0
+        s = ws_f[W_RESUME_S]
         h = min(ws_f[W_H], dt, h_max)
-        for i in range(n):
-            aabs0[i] = kx[0, n + i] + r[i, 0] * a0
-        add_ground_rest(aabs0, r, ag, k, n)
+        if s > 0.0:
+            # resumed inside the grid step after a hinge event (kx: f there)
+            ws_f[W_RESUME_S] = 0.0
+            ground_at(gnd, G_NOW, s)
+            for i in range(n):
+                aabs0[i] = kx[0, n + i] + r[i, 0] * gnd[G_NOW, 0]
+            add_ground_rest(aabs0, r, gnd, G_NOW, n)
+        else:
+            for i in range(n):
+                aabs0[i] = kx[0, n + i] + r[i, 0] * a0
+            add_ground_rest(aabs0, r, ag, k, n)
         while s < dt:
             last = False
             if s + h >= dt * (1.0 - 1e-12):
@@ -185,7 +213,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             # (the literals −1 and 0 give find_event a compiled version of its own here,
             # unlike the typed constants of layout; np.int64(−1) and np.int64(0) instead
             # change the last bits of some runs, through the compiler's fused multiply-adds)
-            te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, committed, -1, 0,
+            te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, hg, committed, -1, 0,
                                       graze_tol, last_f[:, LF_GRAZED])
             ev_c = -1
             ev_kind = 0
@@ -197,8 +225,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     ws_i[I_FAIL_STEP] = k
                     return -1
                 # locate on real RK steps by the Illinois method, keeping the 'after' side
-                g_lo = event_value(kind, ce, x, n, ct, el)
-                g_hi = event_value(kind, ce, y1, n, ct, el)
+                g_lo = event_value(kind, ce, x, n, ct, el, hg)
+                g_hi = event_value(kind, ce, y1, n, ct, el, hg)
                 upward = is_upward(kind)
                 lo = 0.0
                 hi = h_acc
@@ -212,7 +240,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     err = rk_step(x, kx, px, te, gnd, s, fl, ct, el, committed, sstate, lin,
                                   ks_b, ps_b, ytmp, yb, atol, rtol)
                     ws_i[I_NSTEPS] += 1
-                    g_te = event_value(kind, ce, yb, n, ct, el)
+                    g_te = event_value(kind, ce, yb, n, ct, el, hg)
                     if (g_te > 0.0) == upward and g_te != 0.0:
                         hi = te
                         g_hi = g_te
@@ -223,14 +251,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     if ev_c >= 0 or false_events > 0:
                         break
                     false_events += 1
-                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, committed, ce,
+                    te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, hg, committed, ce,
                                               kind, graze_tol, last_f[:, LF_GRAZED])
                     continue
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
-                g_tol = event_tolerance(kind, ce, n, cparams, atol)
+                g_tol = event_tolerance(kind, ce, n, cparams, atol, hg.state)
                 h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px,
-                                    gnd, s, fl, ct, el, committed, sstate, lin, ks, ps, ks_b,
-                                    ps_b, ytmp, y1, yb, atol, rtol, ws_i)
+                                    gnd, s, fl, ct, el, hg, committed, sstate, lin, ks, ps,
+                                    ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i)
                 if kind == EV_GRAZE:
                     # the step now ends at the peak of the gap's penetration: closed there?
                     d_peak = gap_row(ce, y1, n, cdof, cw)[0] - cgap[ce]
@@ -239,10 +267,11 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                         g_lo = gap_row(ce, x, n, cdof, cw)[0] - cgap[ce]
                         h_acc, err = locate(EV_ONSET, ce, 0.0, h_acc, g_lo, d_peak,
                                             0.5 * h_acc, event_tolerance(EV_ONSET, ce, n,
-                                                                         cparams, atol),
-                                            dt, x, kx, px, gnd, s, fl, ct, el, committed,
-                                            sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb,
-                                            atol, rtol, ws_i)
+                                                                         cparams, atol,
+                                                                         hg.state),
+                                            dt, x, kx, px, gnd, s, fl, ct, el, hg,
+                                            committed, sstate, lin, ks, ps, ks_b, ps_b, ytmp,
+                                            y1, yb, atol, rtol, ws_i)
                         kind = EV_ONSET
                     else:
                         # no: accept the step to the peak, and do not search this gap again
@@ -260,7 +289,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     break
                 h_before = h_acc
                 # any other event earlier in this shorter step?
-                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, committed, ev_c,
+                te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, hg, committed, ev_c,
                                           ev_kind, graze_tol, last_f[:, LF_GRAZED])
             if ev_kind == EV_GRAZE:
                 ev_c = -1  # nothing happened at the peak of a gap that stayed open
@@ -309,10 +338,13 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             if ns > 0:
                 commit_storeys(x, n, el, sstate)
             was_event = ev_c >= 0
-            if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN:
+            hinge_event = ev_kind >= EV_HINGE_HI
+            if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN or hinge_event:
                 ws_i[I_NEVENTS] += 1
-                ev_c = -1  # a storey, not a contact: the contact loop must not see it
-                ev_kind = 0
+                if hinge_event:
+                    ws_i[I_STOP_ROW] = ev_c
+                ev_c = -1  # a storey or a hinge, not a contact: the contact loop must not
+                ev_kind = 0  # see it
             # commit contact states at the step end; handle the event
             state_changed = commit_contacts(x, ks[6], t_now, ev_c, ev_kind, n, ct, st, out)
             if state_changed:
@@ -347,9 +379,17 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 ws_f[W_H] = h_acc * fac_try
             h = min(ws_f[W_H], h_max)
             s = s_new
+            if hinge_event:
+                # back to Python, which moves the frame's hinges and gives it its next
+                # configuration; the next call resumes here
+                if s < dt:
+                    ws_i[I_STOP] = STOP_HINGE
+                    ws_f[W_RESUME_S] = s
+                    return k
+                stop_at_grid = True
         for i in range(n):
             arel0[i] = kx[0, n + i]
-        grid_outputs(k + 1, ag, x, kx, fl, ct, el, st, out, lin)
+        grid_outputs(k + 1, ag, x, kx, fl, ct, el, hg, st, out, lin)
         # every entry of the state, and every work integrated, is in one of the energies:
         # one test a grid step that none stopped being a finite number
         e_sum = 0.0
@@ -360,6 +400,9 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             ws_i[I_FAIL_STEP] = k
             return -1
         k += 1
+        if stop_at_grid:
+            ws_i[I_STOP] = STOP_HINGE  # (the event at the grid point: resume there)
+            break
         if run.exact and not any_closed(committed):
             break  # back to exact stepping once every contact is open
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
@@ -371,14 +414,15 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
 
 
 @njit(**INLINE)
-def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
+def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     """Write the outputs of grid point ``o`` (ground components ``ag[o]``) from the state
     ``x`` and ``kx = f(x)`` after an adaptive grid step (the model's floors, contacts and
-    element rows ``fl``, ``ct``, ``el``; the run's state ``st`` and outputs ``out``)."""
+    element rows ``fl``, ``ct``, ``el``, its hinge rows ``hg``; the run's state ``st`` and
+    outputs ``out``)."""
     r = fl.r
     m_diag = fl.m_diag
     cdof, cw, cgap, ccode, cparams = ct
-    s_lo, _, s_code, s_par, s_zi = el
+    s_lo, s_code, s_par, s_zi = el.lo, el.code, el.params, el.z_index
     committed = st.committed
     sstate = st.storeys
     wc = st.contact_work
@@ -422,6 +466,12 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
                                   delta, committed[c, 1])
         f_out[o, c] = f
         wsum += wc[c]
+    e_hinge = 0.0
+    if fl.f_rows.shape[0] > 0:
+        # (called, not inlined: inlined, its loops cost the SDOF pair's contact steps 5 %)
+        e_frame, e_hinge = frame_outputs(o, x, n, fl, hg, out.hinge_rotation,
+                                         out.hinge_moment)
+        es += e_frame
     e_out[o, E_INPUT] = ws_f[W_E_INPUT]
     e_out[o, E_KINETIC] = ek
     e_out[o, E_STRAIN] = es + recov + recov_dev
@@ -429,7 +479,36 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, st, out, lin):
     e_out[o, E_CONTACT_WORK] = wsum
     e_out[o, E_CONTACT_STORED] = stored
     e_out[o, E_HYSTERETIC] = ws_f[W_E_STOREY] - recov
+    if fl.f_rows.shape[0] > 0:
+        e_out[o, E_HYSTERETIC] += e_hinge
     e_out[o, E_DEVICE] = ws_f[W_E_DEVICE] - recov_dev
+
+
+@njit(**NRT_FREE)
+def frame_outputs(o, x, n, fl, hg, rotation, moment):
+    """The yielding frames' part of :func:`grid_outputs` at output ``o``, state ``x``: every
+    hinge's rotation and moment (written to row o of ``rotation`` and ``moment``), and
+    ``(strain, hysteretic)`` energy [J]: the frames' restoring-force work less their
+    hinges' hysteretic energy, beyond the ``½ uᵀ K u`` of their floors, and that hysteretic
+    energy ``Σ (∫ M dθ − M²/(2 k_unload))`` less its value at the start.
+
+    A frame's work within a configuration is ``½ uᵀ K u + f0ᵀ u + c`` (``fl.f_rows``: each
+    floor's DOF, f0 and c, set at each event so that it runs on continuously); a hinge's
+    ``∫ M dθ`` is exact along its branch (M linear in θ since the last commit)."""
+    hst = hg.state
+    e_hinge = 0.0
+    for q in range(hst.shape[0]):
+        th = hinge_row(q, x, n, hg)[0]
+        mom = hst[q, HS_KT] * th + hst[q, HS_Q]
+        rotation[o, q] = th
+        moment[o, q] = mom
+        work_q = hst[q, HS_WORK_C] + 0.5 * (hst[q, HS_M_C] + mom) * (th - hst[q, HS_THETA_C])
+        e_hinge += work_q - 0.5 * mom * mom / hst[q, HS_K_UNLOAD] + hst[q, HS_REC0]
+    fr = fl.f_rows
+    e_frame = 0.0
+    for q in range(fr.shape[0]):
+        e_frame += fr[q, 1] * x[int(fr[q, 0])] + fr[q, 2]
+    return e_frame - e_hinge, e_hinge
 
 
 @njit(**NRT_FREE)

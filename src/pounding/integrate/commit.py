@@ -44,7 +44,7 @@ from pounding.integrate.rhs import INLINE, drift_of, gap_row, law_call, storey_c
 def commit_storeys(x, n, el, sstate):
     """Commit every element row's (yielding storey's, link's) drift and force at state x
     (contract step 3 of :mod:`pounding.hysteresis.base`)."""
-    s_lo, s_hi, s_code, s_par, s_zi = el
+    s_lo, s_hi, s_code, s_par, s_zi = el.lo, el.hi, el.code, el.params, el.z_index
     for q in range(s_lo.shape[0]):
         d, dr = drift_of(s_lo[q], s_hi[q], x, n)
         zi = s_zi[q]

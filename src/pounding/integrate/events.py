@@ -24,6 +24,10 @@ from pounding.integrate.layout import (
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
     EV_GRAZE,
+    EV_HINGE_HI,
+    EV_HINGE_LO,
+    EV_HINGE_TURN_DOWN,
+    EV_HINGE_TURN_UP,
     EV_MAX_COMPRESSION,
     EV_ONSET,
     EV_REENGAGE,
@@ -31,10 +35,21 @@ from pounding.integrate.layout import (
     EV_RELOADING,
     EV_SEPARATION,
     EVENT_TOL,
+    HS_DIR,
+    HS_HI,
+    HS_LO,
+    HS_WABS,
     I_NSTEPS,
     ROW_BLOCK,
 )
-from pounding.integrate.rhs import G_END, NRT_FREE, drift_of, gap_row, ground_at
+from pounding.integrate.rhs import (
+    G_END,
+    NRT_FREE,
+    drift_of,
+    gap_row,
+    ground_at,
+    hinge_row,
+)
 
 UPWARD, DOWNWARD = np.bool_(True), np.bool_(False)
 """Directions of a crossing, NumPy booleans: numba would compile :func:`hermite_root` once
@@ -172,13 +187,21 @@ def quintic_max(f0, d0, q0, f1, d1, q1, h):
 
 
 @njit(**NRT_FREE)
-def event_value(kind, c, y, n, ct, el):
+def event_value(kind, c, y, n, ct, el, hg):
     """Event function: δ of contact c (onset, separation), δ̇ (phase switches, the peak of
     an open gap's penetration), the unclipped force of a releasing law (release, engaging
-    again), or the drift rate of element row c (drift reversals); ``ct``, ``el``: the
-    contacts and element rows."""
+    again), the drift rate of element row c (drift reversals), or of hinge row c its
+    rotation less an end of its branch (the branch's ends) or its rate (reversals); ``ct``,
+    ``el``, ``hg``: the contacts, element rows and hinge rows."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return drift_of(el.lo[c], el.hi[c], y, n)[1]
+    if kind >= EV_HINGE_HI:
+        th, th_rate = hinge_row(c, y, n, hg)
+        if kind == EV_HINGE_HI:
+            return th - hg.state[c, HS_HI]
+        if kind == EV_HINGE_LO:
+            return th - hg.state[c, HS_LO]
+        return th_rate
     d, v = gap_row(c, y, n, ct.dof, ct.weight)
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
         return v
@@ -220,7 +243,8 @@ def touch_possible(d0, r0, q0, d1, r1, q1, h, tol):
 
 
 @njit(**NRT_FREE)
-def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze_tol, grazed):
+def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, graze_tol,
+               grazed):
     """Earliest event in a step, from Hermite interpolants of every contact's δ and δ̇ and
     every yielding storey's drift rate (``k0``: row 0 is f(y0); ``k1``: row 6 is f(y1)).
 
@@ -231,8 +255,10 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
     ``graze_tol`` [m] of closing (its peak is then located on real steps, :func:`locate`;
     skipped for a contact whose ``grazed`` flag is set: one already found not to touch),
     8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
-    (released before δ = 0 / engaged again); (−1, −1, 0) if none. ``ct``, ``el``: the
-    contacts and element rows.
+    (released before δ = 0 / engaged again), 10 / 11 a frame's hinge rotation reaching the
+    upper / lower end of its branch, 12 / 13 a hinge on a one-way branch reversing (its
+    rate turning negative / positive); (−1, −1, 0) if none. ``ct``, ``el``, ``hg``: the
+    contacts, element rows and hinge rows.
     """
     cdof, cw, cgap, ccode, cparams = ct
     s_lo = el.lo
@@ -310,13 +336,56 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, committed, skip_c, skip_kind, graze
         t = rate_event(r0, acc0, r1, acc1, h, best_t)
         if t >= 0.0:
             best_t, best_c, best_k = t, s, kind
+    # the plastic hinges of yielding frames: a rotation reaching an end of its branch, a
+    # one-way branch's rotation reversing
+    hdof = hg.dof
+    hw = hg.weight
+    hst = hg.state
+    for q in range(hdof.shape[0]):
+        th0, r0 = hinge_row(q, y0, n, hg)
+        th1, r1 = hinge_row(q, y1, n, hg)
+        bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
+        # (after an event was located, skip_c >= 0: a hinge within the event tolerance past
+        # the end of its branch at the shortened step's end is left to Python, which lands
+        # every such hinge with the event's; located again, twin hinges — a symmetric
+        # frame's — shortened the step in turn by fractions of that tolerance, ~60 times)
+        near = graze_tol * hst[q, HS_WABS] if skip_c >= 0 else -1.0
+        hi = hst[q, HS_HI]
+        if (max(th0, th1) + bound > hi and not (q == skip_c and skip_kind == EV_HINGE_HI)
+                and not (th1 > hi and th1 - hi <= near)):
+            t = hermite_root(th0 - hi, r0, th1 - hi, r1, h, UPWARD)
+            if th1 > hi and t < 0.0:
+                t = h
+            if t > 0.0 and t < best_t:
+                best_t, best_c, best_k = t, q, EV_HINGE_HI
+        lo = hst[q, HS_LO]
+        if (min(th0, th1) - bound <= lo and not (q == skip_c and skip_kind == EV_HINGE_LO)
+                and not (th1 <= lo and lo - th1 <= near)):
+            t = hermite_root(th0 - lo, r0, th1 - lo, r1, h, DOWNWARD)
+            if th1 <= lo and t < 0.0:
+                t = h
+            if t > 0.0 and t < best_t:
+                best_t, best_c, best_k = t, q, EV_HINGE_LO
+        way = hst[q, HS_DIR]
+        if way != 0.0:
+            kind = EV_HINGE_TURN_DOWN if way > 0.0 else EV_HINGE_TURN_UP
+            if (way > 0.0) == (r0 > 0.0) and not (q == skip_c and skip_kind == kind):
+                acc0 = 0.0
+                acc1 = 0.0
+                for q0 in range(0, hdof.shape[1], ROW_BLOCK):
+                    for j in range(q0, q0 + ROW_BLOCK):
+                        acc0 += hw[q, j] * k0[0, n + hdof[q, j]]
+                        acc1 += hw[q, j] * k1[6, n + hdof[q, j]]
+                t = rate_event(r0, acc0, r1, acc1, h, best_t)
+                if t >= 0.0:
+                    best_t, best_c, best_k = t, q, kind
     if best_c < 0:
         return -1.0, -1, 0
     return best_t, best_c, best_k
 
 
 @njit(**NRT_FREE)
-def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl, ct, el,
+def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl, ct, el, hg,
            committed, sstate, lin, ks, ps, ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i):
     """Locate an event bracketed in ``(lo, hi]`` (local times from the step start ``s``;
     event function ``g_lo`` on the 'before' side at lo, ``g_hi`` on the 'after' side at hi)
@@ -338,7 +407,7 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl
         err = rk_step(x, kx, px, t_try, gnd, s, fl, ct, el, committed, sstate, lin, ks_b,
                       ps_b, ytmp, yb, atol, rtol)
         ws_i[I_NSTEPS] += 1
-        g = event_value(kind, ce, yb, n, ct, el)
+        g = event_value(kind, ce, yb, n, ct, el, hg)
         after = (g > 0.0) if upward else (g <= 0.0)
         if after:
             hi = t_try
@@ -382,20 +451,27 @@ def locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px, gnd, s, fl
 @njit(**NRT_FREE)
 def is_upward(kind):
     """Does the event function of ``kind`` cross zero upward (onset, reloading, a drift
-    minimum, a released contact engaging again)?"""
+    minimum, a released contact engaging again, a hinge reaching the upper end of its
+    branch or turning to rotate positively)?"""
     return (kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
-            or kind == EV_REENGAGE)
+            or kind == EV_REENGAGE or kind == EV_HINGE_HI or kind == EV_HINGE_TURN_UP)
 
 
 @njit(**NRT_FREE)
-def event_tolerance(kind, ce, n, cparams, atol):
-    """Absolute tolerance of an event function: of a drift rate, a gap's rate, a gap, or
-    an unclipped force ``k δ + c δ̇`` (from the tolerances of δ and δ̇). Every displacement
+def event_tolerance(kind, ce, n, cparams, atol, hst):
+    """Absolute tolerance of an event function: of a drift rate, a gap's rate, a gap, an
+    unclipped force ``k δ + c δ̇`` (from the tolerances of δ and δ̇), or a hinge's rotation
+    or its rate (those of the displacements and velocities times ``Σ |w|`` of its row,
+    ``hst``: the hinge rows' states). Every displacement
     has one absolute tolerance (``atol[0]``) and every velocity another (``atol[n]``), so
     these are the tolerances of a DOF's motion, whichever DOFs a contact row or an element
     row joins."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return atol[n]
+    if kind == EV_HINGE_HI or kind == EV_HINGE_LO:
+        return atol[0] * hst[ce, HS_WABS]
+    if kind == EV_HINGE_TURN_DOWN or kind == EV_HINGE_TURN_UP:
+        return atol[n] * hst[ce, HS_WABS]
     if kind == EV_MAX_COMPRESSION or kind == EV_RELOADING or kind == EV_GRAZE:
         return atol[n]
     if kind == EV_RELEASE or kind == EV_REENGAGE:

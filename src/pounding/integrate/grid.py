@@ -26,13 +26,14 @@ refused before anything is allocated."""
 def history_bytes(model: PoundingModel, nt: int) -> int:
     """Bytes of the histories a run of ``nt`` output times writes: displacement, velocity,
     acceleration of every floor, penetration and force of every contact, shear of every
-    yielding storey, the energies and the ground acceleration (each of its G components), 8
-    bytes each."""
+    yielding storey, rotation and moment of every hinge of a yielding frame, the energies
+    and the ground acceleration (each of its G components), 8 bytes each."""
     n, nc = model.n_dof, len(model.contacts)
     ns = len(model.yielding_storeys)
+    nh = len(model.hinge_labels())
     r = np.asarray(model.system.r)
     g = 1 if r.ndim == 1 else r.shape[1]
-    return 8 * nt * (3 * n + 2 * nc + ns + ENERGY_COLUMNS + g)
+    return 8 * nt * (3 * n + 2 * nc + ns + 2 * nh + ENERGY_COLUMNS + g)
 
 
 def physical_memory() -> int:

@@ -53,18 +53,24 @@ from pounding.integrate.layout import (
     I_MODE,
     I_NSTEPS,
     I_REACHED,
+    I_STOP,
     IMP_COLUMNS,
     PK_COLUMNS,
+    W_RESUME_S,
     WS_F_SIZE,
     WS_I_SIZE,
 )
 from pounding.integrate.rhs import (
+    G_A0,
+    G_A1,
     G_NOW,
+    G_SLOPE,
     INLINE,
     NRT_FREE,
     deriv_call,
     first_unknown_law,
     gap_row,
+    ground_at,
     set_ground,
 )
 
@@ -75,8 +81,11 @@ __all__ = ["ENERGY_COLUMNS", "IMP_COLUMNS", "PK_COLUMNS", "WS_F_SIZE", "WS_I_SIZ
 @njit(**NRT_FREE)
 def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``; stop
-    early at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps in all. The grid
-    point reached is left in ``ws_i[I_REACHED]`` (the next call starts there).
+    early at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps in all, or right
+    after a hinge event of a yielding frame (``ws_i[I_STOP]``; the grid step in progress in
+    ``ws_i[I_REACHED]`` and the local time reached in it in ``ws_f[W_RESUME_S]``, where the
+    next call resumes). The grid point reached is left in ``ws_i[I_REACHED]`` (the next
+    call starts there).
 
     Parameters (named tuples of arrays; those of ``st``, ``out`` and ``sc`` are updated in
     place)
@@ -116,7 +125,7 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         Scratch, allocated by the caller once a run, so that this function compiles
         quickly (each allocation inside it cost compile time).
     """
-    fl, ct, el = km
+    fl, ct, el = km.floors, km.contacts, km.elements
     x = st.x
     ws_i = st.ws_i
     committed = st.committed
@@ -131,8 +140,17 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         ws_i[I_FAIL_ROW] = bad
         return
     graze_tol = EVENT_TOL * run.atol[0]
-    # the state at grid point k0: f, every gap's δ and δ̇, the accelerations
-    set_ground(gnd, G_NOW, run.ag, k0)
+    # the state at grid point k0 (or, after a hinge event, at the local time
+    # ws_f[W_RESUME_S] inside grid step k0): f, every gap's δ and δ̇, the accelerations
+    s_resume = st.ws_f[W_RESUME_S]
+    if s_resume > 0.0:
+        for g in range(gnd.shape[1]):
+            gnd[G_A0, g] = run.ag[k0, g]
+            gnd[G_A1, g] = run.ag[k0 + 1, g]
+            gnd[G_SLOPE, g] = (gnd[G_A1, g] - gnd[G_A0, g]) / run.dt
+        ground_at(gnd, G_NOW, s_resume)
+    else:
+        set_ground(gnd, G_NOW, run.ag, k0)
     deriv_call(x, x, gnd, fl, ct, el, committed, st.storeys, sc.lin, kx, sc.px, 0)
     _gaps_now(x, n, ct, sc.gd, sc.gr)
     for i in range(n):
@@ -161,6 +179,8 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         k = adaptive_run(k, k1, run, km, graze_tol, st, out, sc)
         if k < 0:
             return
+        if ws_i[I_STOP] != 0:
+            break  # a hinge event: Python gives its frame the next configuration
         if run.exact and not any_closed(committed):
             ws_i[I_MODE] = 0
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:

@@ -10,7 +10,7 @@ from typing import NamedTuple
 import numpy as np
 
 from pounding.contact.dispatch import PARAMS_SIZE as P_CONTACT_LAW
-from pounding.integrate.layout import ROW_BLOCK
+from pounding.integrate.layout import HS_COLUMNS, ROW_BLOCK
 from pounding.integrate.propagator import FreeStep
 from pounding.memo import Memo
 from pounding.model import PoundingModel
@@ -69,6 +69,14 @@ class Floors(NamedTuple):
     mr: np.ndarray  #: M R [kg], (N, G)
     r: np.ndarray  #: influence matrix R of the G ground components, (N, G)
     below: np.ndarray  #: DOF of the floor below each floor (−1: the ground), (N,)
+    #: the floors of yielding frames, whose restoring force in the frame's current
+    #: configuration is ``K u + f0`` (:mod:`pounding.integrate.frame_run`): each floor's
+    #: DOF (a whole number), ``f0`` [N], and a constant [J] that makes the frames' work
+    #: ``Σ ½ uᵀ K u + f0ᵀ u + c`` continuous across configurations, (N_f, 3) — one array,
+    #: not three: every array of a group is passed to every call that takes the group, and
+    #: an RK step takes this one (two more arrays cost the SDOF pair's contact steps
+    #: 3–4 %); empty without yielding frames
+    f_rows: np.ndarray
 
 
 class ContactRows(NamedTuple):
@@ -95,6 +103,20 @@ class ElementRows(NamedTuple):
     z_index: np.ndarray  #: index of each row's internal variable z among the states (−1: none)
 
 
+class HingeRows(NamedTuple):
+    """The plastic hinges of yielding frames: rows ``θ_h = Σ_q weight[h, q] u[dof[h, q]] +
+    a0_h`` over their frame's floors (padded to a multiple of
+    :data:`~pounding.integrate.layout.ROW_BLOCK`), set by Python for each configuration of
+    the frame (:mod:`pounding.integrate.frame_run`); empty without yielding frames. A group
+    of its own, passed only to the event search and the outputs (not to the RK step)."""
+
+    dof: np.ndarray  #: the frame's floors (n_h, W)
+    weight: np.ndarray  #: their weights [rad/m] (n_h, W)
+    #: each hinge's branch and committed point (n_h, HS_COLUMNS),
+    #: :data:`pounding.integrate.layout.HS_A0` …
+    state: np.ndarray
+
+
 class KernelArrays(NamedTuple):
     """Every array the compiled kernel reads that depends on the model alone, in three
     groups: a function takes the groups it uses (numba passes a tuple as its members), and a
@@ -103,6 +125,7 @@ class KernelArrays(NamedTuple):
     floors: Floors
     contacts: ContactRows
     elements: ElementRows
+    hinges: HingeRows
 
 
 class KernelModel(NamedTuple):
@@ -146,6 +169,11 @@ class KernelModel(NamedTuple):
         """:attr:`KernelArrays.elements`."""
         return self.arrays.elements
 
+    @property
+    def hinges(self) -> HingeRows:
+        """:attr:`KernelArrays.hinges`."""
+        return self.arrays.hinges
+
 
 _KERNEL_MODELS: dict[int, KernelModel] = {}
 
@@ -155,6 +183,13 @@ def _read_only_free_step(fs: FreeStep) -> FreeStep:
         a.setflags(write=False)
     return fs
 
+
+NO_FRAME_ROWS = np.zeros((0, 3))
+NO_HINGES = HingeRows(np.zeros((0, ROW_BLOCK), dtype=np.int64), np.zeros((0, ROW_BLOCK)),
+                      np.zeros((0, HS_COLUMNS)))
+"""The frame floors and hinge rows of a model without yielding frames: empty (never
+written), and writeable like a run's own rows, so that the kernel is compiled for one
+signature."""
 
 NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), np.zeros((2, 4)),
                                               np.zeros((2, 1)), np.zeros((2, 1)),
@@ -227,13 +262,14 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     bw = half_bandwidth(K, C)
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
     floors = Floors(bw, band_storage(K, bw), band_storage(C, bw), m_diag, 1.0 / m_diag,
-                    np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model))
+                    np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
+                    NO_FRAME_ROWS)
     elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi)
     no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
                               np.zeros((0, ROW_BLOCK)), np.zeros(0),
                               np.zeros(0, dtype=np.int64), np.zeros((0, P_CONTACT_LAW)))
     return KernelModel(n=r.shape[0], nz=int(np.sum(s_zi >= 0)), K=K, C=np.asarray(C),
-                       arrays=KernelArrays(floors, no_contacts, elements),
+                       arrays=KernelArrays(floors, no_contacts, elements, NO_HINGES),
                        free_steps={}, periods_checked=set())
 
 

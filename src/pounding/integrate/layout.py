@@ -44,24 +44,55 @@ EV_RELEASE, EV_REENGAGE = np.int64(8), np.int64(9)
 :func:`pounding.contact.dispatch.law_releases`): the unclipped force ``k δ + c δ̇`` turning
 negative (the bodies released with the spring still compressed) or positive again before
 δ = 0 (engaged again)."""
+EV_HINGE_HI, EV_HINGE_LO = np.int64(10), np.int64(11)
+"""A plastic hinge of a yielding frame reaching the upper / lower end of the branch it is on
+(its rotation θ crossing ``HS_HI`` upward / ``HS_LO`` downward): yield, capping, the elastic
+branch's other bound (:mod:`pounding.hysteresis.hinges`)."""
+EV_HINGE_TURN_DOWN, EV_HINGE_TURN_UP = np.int64(12), np.int64(13)
+"""A hinge on a branch that holds for one direction only (``HS_DIR`` +1 / −1) reversing: its
+rotation rate θ̇ turning negative / positive."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
-W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE = range(7)
-WS_F_SIZE = 7
+(W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE,
+ W_RESUME_S) = range(8)
+WS_F_SIZE = 8
 """Workspace scalars: proposed RK step [s], cumulative input, viscous and storey work [J],
 last error norm, and the margin by which an acceleration peak between two exact-step
 samples can exceed the larger sample (relative; :func:`pounding.integrate.peak_margin`),
-and the links' cumulative work [J]."""
+the links' cumulative work [J], and the local time [s] inside grid step ``I_REACHED`` at
+which the next call resumes (0: at the grid point; set where a call returned at a hinge
+event, :data:`I_STOP`)."""
 (I_MODE, I_NIMP, I_OVERFLOW, I_NSTEPS, I_NREJECT, I_NEVENTS, I_FAILED, I_FAIL_STEP,
- I_STEP_BUDGET, I_ONSET_C, I_CALL_STEPS, I_REACHED, I_FAIL_ROW) = range(13)
-WS_I_SIZE = 13
+ I_STEP_BUDGET, I_ONSET_C, I_CALL_STEPS, I_REACHED, I_FAIL_ROW, I_STOP, I_STOP_ROW) = range(15)
+WS_I_SIZE = 15
 """Counters: mode (0 exact, 1 adaptive), impacts, table overflow, RK steps, rejected steps,
 events, failure kind (:data:`FAIL_UNDERFLOW`, :data:`FAIL_BUDGET`, :data:`FAIL_NONFINITE`,
 :data:`FAIL_UNKNOWN_LAW`), the grid step it happened in, the largest number of RK steps
 allowed in all, the contact whose onset ended the last accepted step (−1: none), the count
 of RK steps after which a call returns at the next grid point (so that a call holds Python
-— and with it Ctrl-C and SIGTERM — for a bounded time), the grid point a call reached, and
-the row a failure names (a contact c, or an element row n_c + s)."""
+— and with it Ctrl-C and SIGTERM — for a bounded time), the grid point a call reached, the
+row a failure names (a contact c, or an element row n_c + s), why a call returned before
+its last grid point (0: it did not, or the step count; :data:`STOP_HINGE`: at a hinge
+event, for Python to move the hinges and give the frame its next configuration) and the
+hinge row of that event."""
+
+STOP_HINGE = 1
+"""``ws_i[I_STOP]``: the call returned at a located hinge event (the step to it accepted,
+``ws_f[W_RESUME_S]`` the local time in grid step ``ws_i[I_REACHED]``)."""
+
+# ---------------------------------------------------------------- hinge rows (yielding frames)
+(HS_A0, HS_LO, HS_HI, HS_DIR, HS_KT, HS_Q, HS_THETA_C, HS_M_C, HS_WORK_C, HS_K_UNLOAD,
+ HS_REC0, HS_WABS) = range(12)
+HS_COLUMNS = 12
+"""Columns of a hinge row's state (``HingeRows.state``), set by Python at every
+configuration of its frame: the offset ``a0`` of its rotation ``θ = Σ w u + a0`` [rad]
+(u the floors' displacements from the gravity state), the lower and upper end of the
+branch it is on [rad] (±inf: none), the direction that branch holds for (0: both ways;
+±1: one way, its reversal an event), the branch's tangent ``k_t`` [N·m/rad] and offset
+``q`` (the moment ``M = k_t θ + q`` [N·m]), the rotation and moment where the hinge was last
+committed, its work ``∫ M dθ`` up to there [J], its unloading stiffness [N·m/rad] (the
+recoverable energy is ``M²/(2 k_unload)``), its recoverable energy at the start [J], and
+``Σ |w|`` [rad/m] (the tolerance of θ from the displacements')."""
 
 FAIL_UNDERFLOW, FAIL_BUDGET, FAIL_NONFINITE, FAIL_UNKNOWN_LAW = 1, 2, 3, 4
 """Why an integration stopped: the adaptive step fell below 10⁻¹⁴ of the grid step, the

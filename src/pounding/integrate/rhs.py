@@ -41,6 +41,7 @@ from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 from pounding.integrate.layout import (
     DELTA_EPS,
+    HS_A0,
     P_CONTACT,
     P_DAMP,
     P_DEVICE,
@@ -85,6 +86,23 @@ def gap_row(c, y, n, cdof, cw):
             d += cw[c, q] * y[j]
             v += cw[c, q] * y[n + j]
     return d, v
+
+
+@njit(**NRT_FREE)
+def hinge_row(h, y, n, hg):
+    """``(θ, θ̇)`` of hinge row h of a yielding frame: ``θ = Σ w u + a0`` over its frame's
+    floors in the frame's current configuration (``hg``: the hinge rows,
+    :class:`pounding.integrate.kernel_model.HingeRows`)."""
+    hdof = hg.dof
+    hw = hg.weight
+    d = 0.0
+    v = 0.0
+    for q0 in range(0, hdof.shape[1], ROW_BLOCK):
+        for q in range(q0, q0 + ROW_BLOCK):
+            j = hdof[h, q]
+            d += hw[h, q] * y[j]
+            v += hw[h, q] * y[n + j]
+    return d + hg.state[h, HS_A0], v
 
 
 @njit(**NRT_FREE)
@@ -228,7 +246,7 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     mr = fl.mr
     r = fl.r
     cdof, cw, cgap, ccode, cparams = ct
-    s_lo, s_hi, s_code, s_par, s_zi = el
+    s_lo, s_hi, s_code, s_par, s_zi = el.lo, el.hi, el.code, el.params, el.z_index
     nc = cgap.shape[0]
     # linear part: acc = −M⁻¹(K u + C v) − R a_g, K (linear storeys only) and C banded
     # (half-bandwidth bw), M diagonal (lumped floor masses): O(N·bw) work; the first ground
@@ -259,6 +277,14 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
             p_in -= y[n + i] * mr[i, g] * ag
     power[row, P_INPUT] = p_in
     power[row, P_DAMP] = p_d
+    # yielding frames: in their current configuration the restoring force of a frame's
+    # floors is K u + f0 (K, its condensed tangent stiffness, in the band above); f0 here
+    # (its work is a potential within a configuration: grid_outputs has it in closed form)
+    frames = fl.f_rows
+    if frames.shape[0] > 0:
+        for q in range(frames.shape[0]):
+            i = int(frames[q, 0])
+            dy[row, n + i] -= frames[q, 1] * m_inv[i]
     # yielding storeys: shear V from the storey law, −V on the floor above, +V below; the
     # links between buildings (codes ≥ DEVICE_MIN) are rows of the same kind
     p_s = 0.0
@@ -351,7 +377,7 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     n = fl.m_diag.shape[0]
     m_inv = fl.m_inv
     cdof, cw, cgap, ccode, cparams = ct
-    s_lo, s_hi, s_code, s_par, s_zi = el
+    s_lo, s_hi, s_code, s_par, s_zi = el.lo, el.hi, el.code, el.params, el.z_index
     for i in range(n):
         work[i] = x[n + i]
         work[n + i] = dx[n + i]

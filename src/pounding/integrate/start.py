@@ -47,7 +47,8 @@ def initial_storeys(km: KernelModel, u0: np.ndarray,
     from pounding.devices.laws import DEVICE_MIN
     from pounding.hysteresis.dispatch import drive_path, storey_trial
 
-    lo, hi, code, par, zi = km.elements
+    el = km.elements
+    lo, hi, code, par, zi = el.lo, el.hi, el.code, el.params, el.z_index
     state = np.zeros((lo.size, 2))
     z = np.zeros(int(np.sum(zi >= 0)))
     v = np.zeros_like(u0) if v0 is None else v0

@@ -76,6 +76,8 @@ class KernelOutputs(NamedTuple):
     peak_force_time: np.ndarray  #: its time [s]
     impact_count: np.ndarray  #: impacts of every contact (kept past the table's capacity)
     peaks: np.ndarray  #: located peaks of every floor (N, PK_COLUMNS)
+    hinge_rotation: np.ndarray  #: rotation of every hinge of the yielding frames [rad] (nt, n_h)
+    hinge_moment: np.ndarray  #: and its moment [N·m] (nt, n_h)
 
 
 def new_state(km: KernelModel, x: np.ndarray, storeys: np.ndarray, step: float,
@@ -98,8 +100,10 @@ def new_state(km: KernelModel, x: np.ndarray, storeys: np.ndarray, step: float,
                        ws_f, ws_i)
 
 
-def new_outputs(km: KernelModel, nt: int, capacity: int, peaks: np.ndarray) -> KernelOutputs:
-    """The outputs of a run of ``nt`` grid points with ``capacity`` rows of impacts.
+def new_outputs(km: KernelModel, nt: int, capacity: int, peaks: np.ndarray,
+                n_hinges: int = 0) -> KernelOutputs:
+    """The outputs of a run of ``nt`` grid points with ``capacity`` rows of impacts (and
+    ``n_hinges`` hinges of yielding frames).
 
     The kernel writes every row after the first of the histories, so they are not zeroed
     first (zeroing ~5 MB costs as much as a tenth of an SDOF pair's run when the memory is
@@ -112,7 +116,8 @@ def new_outputs(km: KernelModel, nt: int, capacity: int, peaks: np.ndarray) -> K
     return KernelOutputs(np.empty((nt, n)), np.empty((nt, n)), np.empty((nt, n)),
                          np.empty((nt, nc)), np.zeros((nt, nc)), np.empty((nt, ns)), energy,
                          np.empty((capacity, IMP_COLUMNS)), np.zeros(nc), np.zeros(nc),
-                         np.zeros(nc, dtype=np.int64), peaks)
+                         np.zeros(nc, dtype=np.int64), peaks, np.empty((nt, n_hinges)),
+                         np.empty((nt, n_hinges)))
 
 
 class KernelScratch(NamedTuple):

@@ -92,6 +92,18 @@ class Response:
         positive when it resists the right floor moving away from the left one.
     contact_peak_time : ndarray (n_c,), optional
         Time of each contact's peak force [s].
+    hinge_rotation, hinge_moment : ndarray (nt, n_h), optional
+        Rotation [rad] and moment [N·m] of every plastic hinge of the yielding frames
+        (:meth:`PoundingModel.hinge_labels` order).
+    hinge_peak_rotation, hinge_peak_rotation_time : ndarray (n_h,), optional
+        Every hinge's largest |rotation| [rad] (at its events and the output steps: a
+        hinge on a one-way branch turns only at an event) and its time [s].
+    hinge_residual_rotation : ndarray (n_h,), optional
+        Every hinge's rotation at the end, unloaded to zero moment along its unloading
+        stiffness [rad] (its plastic rotation).
+    hinge_dissipated : ndarray (n_h,), optional
+        Every hinge's hysteretic energy at the end [J] (its work ``∫ M dθ`` less the change
+        of its recoverable energy).
     located_peaks : ndarray (N, 6), optional
         Every floor's largest |displacement| [m], |storey drift| [m] and |absolute
         acceleration| [m/s²], each followed by its time [s], located inside solver steps
@@ -118,6 +130,12 @@ class Response:
     contact_peak_time: NDArray[np.float64] | None = field(default=None, repr=False)
     located_peaks: NDArray[np.float64] | None = field(default=None, repr=False)
     link_force: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_moment: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_peak_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_peak_rotation_time: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_residual_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_dissipated: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property

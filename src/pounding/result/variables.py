@@ -15,7 +15,55 @@ from pounding.result.storey_peaks import bearing_peaks, plan_storeys
 if TYPE_CHECKING:
     from pounding.result.response import Response
 
-__all__ = ["HistoryVariables", "Variable", "history_variables"]
+__all__ = ["HingeRow", "HistoryVariables", "Variable", "hinge_table", "history_variables"]
+
+
+class HingeRow(NamedTuple):
+    """Where one plastic hinge of a yielding frame is, and what it did
+    (:func:`hinge_table`)."""
+
+    label: str  #: ``B1H3``: building 1, hinge 3 of its frame
+    building: int  #: the building's index in the row (0-based)
+    element: int  #: the member it is at, in its frame's order (0-based)
+    end: int  #: 0 at the member's first node, 1 at its second
+    member: str  #: ``column`` or ``beam``
+    x: float  #: the node's x in the frame [m]
+    y: float  #: its elevation above the frame's base [m]
+    law: str  #: the hinge law in words
+    yield_rotation: float  #: the law's ``m_y / k0`` [rad]
+    peak_rotation: float  #: largest |θ| [rad]
+    peak_rotation_time: float  #: its time [s]
+    residual_rotation: float  #: θ at the end unloaded to zero moment [rad]
+    peak_moment: float  #: largest |M| at the output steps [N·m]
+    dissipated: float  #: hysteretic energy [J]
+
+
+def hinge_table(result: Response) -> list[HingeRow]:
+    """Every plastic hinge of the model's yielding frames with its peak and residual
+    rotation, peak moment and hysteretic energy (empty without yielding frames)."""
+    model = result.model
+    frames = model.yielding_frames
+    if not frames or result.hinge_peak_rotation is None:
+        return []
+    labels = model.hinge_labels()
+    rows = []
+    h = 0
+    for b, bl in frames:
+        frame = bl.frame
+        col = frame.is_column
+        for fh in frame.hinges:
+            x, y = frame.nodes[frame.elements[fh.element, fh.end]]
+            moment = result.hinge_moment[:, h] if result.hinge_moment is not None else None
+            rows.append(HingeRow(
+                labels[h], b, int(fh.element), int(fh.end),
+                "column" if col[fh.element] else "beam", float(x), float(y - frame.base),
+                fh.law.describe(), float(fh.law.theta_y), float(result.hinge_peak_rotation[h]),
+                float(result.hinge_peak_rotation_time[h]),  # type: ignore[index]
+                float(result.hinge_residual_rotation[h]),  # type: ignore[index]
+                float(np.max(np.abs(moment))) if moment is not None and moment.size else 0.0,
+                float(result.hinge_dissipated[h])))  # type: ignore[index]
+            h += 1
+    return rows
 
 
 class Variable(NamedTuple):
@@ -103,6 +151,13 @@ def history_variables(result: Response) -> HistoryVariables:
         data["link_displacement"] = var(result.link_displacement, ("time", "link"), "m",
                                         "relative displacement across each link "
                                         "(right floor minus left floor)")
+    hinges = hinge_table(result)
+    if hinges and result.hinge_rotation is not None and result.hinge_moment is not None:
+        data["hinge_rotation"] = var(result.hinge_rotation, ("time", "hinge"), "rad",
+                                     "rotation of each plastic hinge of a yielding frame "
+                                     "(its node's rotation less the member end's)")
+        data["hinge_moment"] = var(result.hinge_moment, ("time", "hinge"), "N m",
+                                   "moment of each plastic hinge of a yielding frame")
     buildings = [f"B{b + 1}" for b, bl in enumerate(model.buildings) for _ in range(bl.n)]
     coords = {
         "time": var(result.time, ("time",), "s", "time"),
@@ -142,6 +197,21 @@ def history_variables(result: Response) -> HistoryVariables:
         coords["bearing_law"] = Variable(("bearing",), np.array(
             [x.law for x in bearings], dtype=object),
             {"long_name": "the bearing's law"})
+    if hinges:
+        coords["hinge"] = Variable(("hinge",), np.array([h.label for h in hinges], dtype=object),
+                                   {"long_name": "plastic hinge: building and its number in "
+                                                 "the frame (B1H3: building 1, hinge 3)"})
+        coords["hinge_member"] = Variable(("hinge",), np.array(
+            [f"{h.member} {h.element + 1} end {h.end + 1}" for h in hinges], dtype=object),
+            {"long_name": "the member end the hinge is at (members and ends numbered from 1 "
+                          "in the frame's order)"})
+        coords["hinge_x"] = var([h.x for h in hinges], ("hinge",), "m",
+                                "x of the hinge's node in its frame")
+        coords["hinge_y"] = var([h.y for h in hinges], ("hinge",), "m",
+                                "elevation of the hinge's node above its frame's base")
+        coords["hinge_law"] = Variable(("hinge",), np.array([h.law for h in hinges],
+                                                            dtype=object),
+                                       {"long_name": "the hinge's moment-rotation law"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
                                                       dtype=object), {})

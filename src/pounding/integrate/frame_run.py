@@ -1,0 +1,311 @@
+"""The yielding frames of one run, between the compiled kernel's calls.
+
+A frame with plastic hinges stands in the row as its floors (a
+:class:`~pounding.structure.frame_linear.FrameBuilding`), and in each configuration of its
+hinges its floors' restoring force is linear, ``R = K_c u + f0``
+(:mod:`pounding.structure.frame_configuration`). The kernel reads the configuration from
+arrays that belong to the run, not to the model (whose arrays are shared by every run of
+it, :data:`pounding.integrate.kernel_model.STRUCTURES`):
+
+* the frame's block of the banded stiffness, a copy for the run, holds ``K_c``;
+* ``Floors.f_rows`` holds the frame's floors, ``f0`` and the constant ``c`` that keeps the
+  frame's work ``½ uᵀ K_c u + f0ᵀ u + c`` continuous across configurations (empty for models
+  without yielding frames, whose arithmetic is then unchanged);
+* :class:`~pounding.integrate.kernel_model.HingeRows` holds one row per hinge: its rotation
+  ``θ = A_h u + a0_h`` over the frame's floors, the ends of the branch it is on, the
+  direction that branch holds for, its moment line and its committed point and work
+  (:data:`pounding.integrate.layout.HS_A0` …).
+
+The kernel locates every hinge event (a rotation reaching an end of its branch, a one-way
+branch reversing) on real Runge–Kutta steps like a contact event, accepts the step to it
+and returns (``ws_i[I_STOP]``); :class:`FrameRun` then moves the frame's hinges along their
+laws (the Python laws of :mod:`pounding.hysteresis.hinges`, the one implementation of each),
+chooses the next configuration and writes it into the arrays, and the kernel resumes at the
+same instant inside the grid step.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from pounding.integrate.kernel_model import HingeRows, KernelModel, band_storage
+from pounding.integrate.layout import (
+    EVENT_TOL,
+    HS_A0,
+    HS_COLUMNS,
+    HS_DIR,
+    HS_HI,
+    HS_K_UNLOAD,
+    HS_KT,
+    HS_LO,
+    HS_M_C,
+    HS_Q,
+    HS_REC0,
+    HS_THETA_C,
+    HS_WABS,
+    HS_WORK_C,
+    ROW_BLOCK,
+)
+from pounding.model import PoundingModel
+from pounding.structure.frame_configuration import Configuration, FrameMotion
+
+__all__ = ["FrameRun", "HingeOutputs"]
+
+
+@dataclass(frozen=True)
+class HingeOutputs:
+    """What a run reports of the hinges of its yielding frames (in
+    :meth:`PoundingModel.hinge_labels` order)."""
+
+    peak_rotation: NDArray[np.float64]  #: largest |θ| [rad], at events and output steps
+    peak_rotation_time: NDArray[np.float64]  #: its time [s]
+    residual_rotation: NDArray[np.float64]  #: θ unloaded to zero moment at the end [rad]
+    dissipated: NDArray[np.float64]  #: hysteretic energy at the end [J]
+    events: int  #: hinge events in the run
+
+
+@dataclass
+class _Frame:
+    building: int  #: its index in the row
+    offset: int  #: its first floor's DOF
+    rows: slice  #: its hinge rows
+    motion: FrameMotion
+    first: int  #: its first row in ``Floors.f_rows``
+    work_constant: float = 0.0  #: c: its work is ``½ uᵀ K_c u + f0ᵀ u + c`` [J]
+
+
+class FrameRun:
+    """The yielding frames of a run: their motion and the kernel's arrays for them.
+
+    Parameters
+    ----------
+    model : PoundingModel
+        A model with yielding frames (:attr:`PoundingModel.yielding_frames`).
+    km : KernelModel
+        Its arrays as the kernel reads them (not modified: the run gets its own copies of
+        those a configuration changes, :attr:`arrays`).
+    atol : ndarray
+        The run's absolute tolerances (displacements ``atol[0]``, velocities ``atol[n]``):
+        a hinge whose rotation rate is within ``EVENT_TOL · atol[n] · Σ|A_h|`` of zero is
+        moving the way its rate's rate says.
+    """
+
+    def __init__(self, model: PoundingModel, km: KernelModel, atol: NDArray[np.float64]) -> None:
+        n = km.n
+        self.n = n
+        self.rate_tol = EVENT_TOL * float(atol[n])
+        self.theta_tol = EVENT_TOL * float(atol[0])
+        self.frames: list[_Frame] = []
+        h0 = 0
+        first = 0
+        for b, bl in model.yielding_frames:
+            motion = FrameMotion(bl.frame, bl.gravity_state)
+            rows = slice(h0, h0 + motion.n_hinges)
+            h0 += motion.n_hinges
+            self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first))
+            first += motion.n_floors
+        self.n_hinges = h0
+        nf_max = max(f.motion.n_floors for f in self.frames)
+        width = -(-nf_max // ROW_BLOCK) * ROW_BLOCK
+        fl = km.floors
+        # the frames' condensed stiffness is full over their floors: a band wide enough
+        bw = max(fl.bw, nf_max - 1)
+        self.bw = bw
+        k_band = band_storage(km.K, bw)
+        c_band = fl.c_band if bw == fl.bw else band_storage(km.C, bw)
+        f_dof = np.concatenate([f.offset + np.arange(f.motion.n_floors) for f in self.frames])
+        self.h_dof = np.zeros((h0, width), dtype=np.int64)
+        self.h_w = np.zeros((h0, width))
+        self.h_state = np.zeros((h0, HS_COLUMNS))
+        for f in self.frames:
+            self.h_dof[f.rows] = f.offset  # (padding: weight 0 on the first floor)
+            self.h_dof[f.rows, :f.motion.n_floors] = f.offset + np.arange(f.motion.n_floors)
+        self.k_band = k_band
+        self.f_rows = np.zeros((f_dof.size, 3))
+        self.f_rows[:, 0] = f_dof
+        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band, f_rows=self.f_rows)
+        self.hinges = HingeRows(self.h_dof, self.h_w, self.h_state)
+        self.arrays = km.arrays._replace(floors=self.floors, hinges=self.hinges)
+        self.masses = fl.m_diag
+        self.C = km.C
+        self.R = fl.r
+        self.peak = np.zeros(h0)
+        self.peak_time = np.zeros(h0)
+        self.events = 0
+        self._last_event = (-1.0, 0)  # the time of the last event, and events at it
+        self._chatter = 4 * h0 + 20
+
+    # ------------------------------------------------------------------ start
+    def start(self, x: NDArray[np.float64], ag0: NDArray[np.float64],
+              ag_next: NDArray[np.float64]) -> None:
+        """Configure every frame at the start, state ``x`` = [u, u̇] (its floors at rest in
+        the gravity state, or moving), the ground components ``ag0`` at t = 0 [m/s²] and
+        ``ag_next`` the first ones not all zero (which way the ground will push a frame at
+        rest whose hinge's branch depends on the direction).
+
+        Raises
+        ------
+        ValueError
+            If the frames' floors are given an initial displacement.
+        """
+        n = self.n
+        for f in self.frames:
+            sl = self._floors(f)
+            if np.any(x[sl] != 0.0):
+                raise ValueError(f"initial_displacement: frame {f.motion.frame.name!r} (building "
+                                 f"B{f.building + 1}) starts displaced; a yielding frame starts "
+                                 "at rest in its gravity state (give it an initial velocity "
+                                 "instead)")
+            u = x[sl]
+            v = x[n + f.offset: n + f.offset + f.motion.n_floors]
+            m = self.masses[sl]
+            C = self.C[sl, sl]
+            R = self.R[sl]
+
+            def acceleration(cfg: Configuration, u: NDArray[np.float64] = u,
+                             v: NDArray[np.float64] = v, m: NDArray[np.float64] = m,
+                             C: NDArray[np.float64] = C,
+                             R: NDArray[np.float64] = R) -> NDArray[np.float64]:
+                return -(cfg.K @ u + cfg.f0 + C @ v) / m - R @ ag0
+
+            f.motion.configure(v, acceleration, self.rate_tol, fallback=-(R @ ag_next))
+            self._write(f)
+
+    def initial_row(self, x: NDArray[np.float64], rotation: NDArray[np.float64],
+                    moment: NDArray[np.float64]) -> None:
+        """Write the hinges' rotations [rad] and moments [N·m] at t = 0 into the first rows
+        of their histories."""
+        for f in self.frames:
+            cfg = f.motion.config
+            assert cfg is not None
+            theta = cfg.A @ x[self._floors(f)] + cfg.a0
+            rotation[f.rows] = theta
+            moment[f.rows] = cfg.tangents * theta + cfg.q
+            self._track(f, theta, 0.0)
+
+    # ------------------------------------------------------------------ events
+    def on_event(self, x: NDArray[np.float64], f_x: NDArray[np.float64], t: float,
+                 row: int) -> None:
+        """A hinge event that ended a call of the kernel: commit the frame of hinge ``row``
+        at state ``x`` (``f_x`` = f(x), whose velocity part gives the floors'
+        accelerations), choose its next configuration and write it; likewise any other
+        frame whose hinge is at or past an end of its branch (simultaneous events).
+
+        Raises
+        ------
+        ValueError
+            If the hinges keep changing configuration at one instant (more than ``4 n_h +
+            20`` events there): a configuration its hinges cannot settle in.
+        """
+        self.events += 1
+        last_t, count = self._last_event
+        count = count + 1 if abs(t - last_t) <= 1e-12 * max(abs(t), 1.0) else 0
+        self._last_event = (t, count)
+        if count > self._chatter:
+            frame = next(f for f in self.frames if f.rows.start <= row < f.rows.stop)
+            raise ValueError(f"solver: the hinges of frame {frame.motion.frame.name!r} "
+                             f"(building B{frame.building + 1}) keep changing branch at "
+                             f"t = {t:.6f} s ({count} events at that instant) without "
+                             "settling; check its hinge laws (a branch of zero length, or "
+                             "a tangent that leaves its joints with no stiffness)")
+        n = self.n
+        for f in self.frames:
+            sl = self._floors(f)
+            u = x[sl]
+            if not (f.rows.start <= row < f.rows.stop or self._due(f, x)):
+                continue
+            v = x[n + f.offset: n + f.offset + f.motion.n_floors]
+            a = f_x[n + f.offset: n + f.offset + f.motion.n_floors]
+            event = row - f.rows.start if f.rows.start <= row < f.rows.stop else None
+            theta = f.motion.commit(u, land=f.motion.landing(u, v, self.theta_tol, event))
+            self._track(f, theta, t)
+            work = self._work(f, u)
+            f.motion.configure(v, a, self.rate_tol)
+            f.motion.redistribute(u, v, a, self.rate_tol, self.theta_tol)
+            f.work_constant = 0.0
+            f.work_constant = work - self._work(f, u)
+            self._write(f)
+
+    def _due(self, f: _Frame, x: NDArray[np.float64]) -> bool:
+        """Is a hinge of frame ``f`` at or past an end of its branch (within the event
+        tolerance), or moving against its one-way branch?"""
+        cfg = f.motion.config
+        assert cfg is not None
+        u = x[self._floors(f)]
+        v = x[self.n + f.offset: self.n + f.offset + f.motion.n_floors]
+        theta = cfg.A @ u + cfg.a0
+        rate = cfg.A @ v
+        wabs = np.sum(np.abs(cfg.A), axis=1)
+        tol = self.theta_tol * wabs
+        past = (theta >= cfg.upper - tol) | (theta <= cfg.lower + tol)
+        against = cfg.directions * rate < -self.rate_tol * wabs
+        return bool(np.any(past | against))
+
+    def finish(self, x: NDArray[np.float64], t_end: float, rotation: NDArray[np.float64]
+               ) -> HingeOutputs:
+        """Commit every frame at the final state ``x`` and report its hinges (the peaks
+        also over the output histories ``rotation`` (nt, n_h) [rad])."""
+        for f in self.frames:
+            theta = f.motion.commit(x[self._floors(f)])
+            self._track(f, theta, t_end)
+        if rotation.size:
+            k = np.argmax(np.abs(rotation), axis=0)
+            sampled = np.abs(rotation[k, np.arange(rotation.shape[1])])
+            more = sampled > self.peak
+            self.peak[more] = sampled[more]
+            self.peak_time[more] = k[more] * (t_end / max(rotation.shape[0] - 1, 1))
+        residual = np.concatenate([f.motion.plastic_rotations() for f in self.frames])
+        dissipated = np.concatenate([f.motion.hysteretic_energy() for f in self.frames])
+        return HingeOutputs(self.peak.copy(), self.peak_time.copy(), residual, dissipated,
+                            self.events)
+
+    # ------------------------------------------------------------------ arrays
+    @staticmethod
+    def _work(f: _Frame, u: NDArray[np.float64]) -> float:
+        """The work of frame ``f``'s restoring force since the start [J] at floor
+        displacements ``u``, in its current configuration: ``½ uᵀ K_c u + f0ᵀ u + c``."""
+        cfg = f.motion.config
+        assert cfg is not None
+        return float(0.5 * u @ cfg.K @ u + cfg.f0 @ u) + f.work_constant
+
+    def _floors(self, f: _Frame) -> slice:
+        return slice(f.offset, f.offset + f.motion.n_floors)
+
+    def _track(self, f: _Frame, theta: NDArray[np.float64], t: float) -> None:
+        a = np.abs(theta)
+        peak = self.peak[f.rows]
+        more = a > peak
+        self.peak[f.rows] = np.where(more, a, peak)
+        self.peak_time[f.rows] = np.where(more, t, self.peak_time[f.rows])
+
+    def _write(self, f: _Frame) -> None:
+        """Write frame ``f``'s configuration into the run's arrays (in place: the kernel
+        holds them)."""
+        m = f.motion
+        cfg = m.config
+        assert cfg is not None
+        nf = m.n_floors
+        a = np.arange(nf)
+        # band storage: kb[d, i] = K[i, i + d − bw]
+        rows_i, cols_j = np.meshgrid(a, a, indexing="ij")
+        self.k_band[cols_j - rows_i + self.bw, f.offset + rows_i] = cfg.K
+        self.f_rows[f.first: f.first + nf, 1] = cfg.f0
+        self.f_rows[f.first, 2] = f.work_constant
+        hs = self.h_state[f.rows]
+        self.h_w[f.rows, :nf] = cfg.A
+        hs[:, HS_A0] = cfg.a0
+        hs[:, HS_LO] = cfg.lower
+        hs[:, HS_HI] = cfg.upper
+        hs[:, HS_DIR] = cfg.directions
+        hs[:, HS_KT] = cfg.tangents
+        hs[:, HS_Q] = cfg.q
+        hs[:, HS_THETA_C] = m.rotations()
+        hs[:, HS_M_C] = m.moments()
+        hs[:, HS_WORK_C] = m.work
+        hs[:, HS_K_UNLOAD] = m.unloading_stiffness()
+        hs[:, HS_REC0] = m.recoverable0
+        hs[:, HS_WABS] = np.sum(np.abs(cfg.A), axis=1)
+        self.h_state[f.rows] = hs
