@@ -27,6 +27,7 @@ from pounding.integrate.events import (
     is_upward,
     locate,
 )
+from pounding.integrate.frame_outputs import frame_outputs
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
     E_CONTACT_WORK,
@@ -45,13 +46,6 @@ from pounding.integrate.layout import (
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
-    HS_K_UNLOAD,
-    HS_KT,
-    HS_M_C,
-    HS_Q,
-    HS_REC0,
-    HS_THETA_C,
-    HS_WORK_C,
     I_CALL_STEPS,
     I_FAIL_STEP,
     I_FAILED,
@@ -92,7 +86,6 @@ from pounding.integrate.rhs import (
     gap_row,
     ground_at,
     ground_at_grid_end,
-    hinge_row,
     jerk,
     law_call,
     recoverable_call,
@@ -482,33 +475,6 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     if fl.f_rows.shape[0] > 0:
         e_out[o, E_HYSTERETIC] += e_hinge
     e_out[o, E_DEVICE] = ws_f[W_E_DEVICE] - recov_dev
-
-
-@njit(**NRT_FREE)
-def frame_outputs(o, x, n, fl, hg, rotation, moment):
-    """The yielding frames' part of :func:`grid_outputs` at output ``o``, state ``x``: every
-    hinge's rotation and moment (written to row o of ``rotation`` and ``moment``), and
-    ``(strain, hysteretic)`` energy [J]: the frames' restoring-force work less their
-    hinges' hysteretic energy, beyond the ``½ uᵀ K u`` of their floors, and that hysteretic
-    energy ``Σ (∫ M dθ − M²/(2 k_unload))`` less its value at the start.
-
-    A frame's work within a configuration is ``½ uᵀ K u + f0ᵀ u + c`` (``fl.f_rows``: each
-    floor's DOF, f0 and c, set at each event so that it runs on continuously); a hinge's
-    ``∫ M dθ`` is exact along its branch (M linear in θ since the last commit)."""
-    hst = hg.state
-    e_hinge = 0.0
-    for q in range(hst.shape[0]):
-        th = hinge_row(q, x, n, hg)[0]
-        mom = hst[q, HS_KT] * th + hst[q, HS_Q]
-        rotation[o, q] = th
-        moment[o, q] = mom
-        work_q = hst[q, HS_WORK_C] + 0.5 * (hst[q, HS_M_C] + mom) * (th - hst[q, HS_THETA_C])
-        e_hinge += work_q - 0.5 * mom * mom / hst[q, HS_K_UNLOAD] + hst[q, HS_REC0]
-    fr = fl.f_rows
-    e_frame = 0.0
-    for q in range(fr.shape[0]):
-        e_frame += fr[q, 1] * x[int(fr[q, 0])] + fr[q, 2]
-    return e_frame - e_hinge, e_hinge
 
 
 @njit(**NRT_FREE)

@@ -26,6 +26,7 @@ KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.exact_steps", "pounding.integrate.layout", "pounding.integrate.peaks",
     "pounding.integrate.rhs", "pounding.integrate.kernel_model",
     "pounding.integrate.workspace", "pounding.integrate.propagator",
+    "pounding.integrate.frame_outputs",
     "pounding.contact.codes", "pounding.contact.dispatch", "pounding.contact.kernels",
     "pounding.hysteresis.base", "pounding.hysteresis.dispatch",
     "pounding.hysteresis.bilinear", "pounding.hysteresis.bouc_wen", "pounding.devices.laws",
