@@ -24,7 +24,7 @@ from pounding.hysteresis.hinges import HingeLaw, HingeState
 from pounding.structure.frame import Frame
 from pounding.structure.frame_stiffness import FrameDofs, configuration_stiffness
 
-__all__ = ["RATE_BAND", "AnyEvent", "BranchEnd", "Configuration", "Motion", "RateZero",
+__all__ = ["RATE_BAND", "AnyEvent", "BranchEnd", "ReferenceConfiguration", "Motion", "RateZero",
            "Reversal", "configuration", "hinge_incidence"]
 
 RATE_BAND: float = 1e-12
@@ -34,7 +34,7 @@ relative to ``‖Θ_h‖ v_scale`` (module docstring of the frame reference, ite
 
 # ----------------------------------------------------------------------------- configuration
 @dataclass(frozen=True)
-class Configuration:
+class ReferenceConfiguration:
     """The frame linearised with every hinge on one branch: ``K_c``, ``T``, ``Θ``."""
 
     tangents: NDArray[np.float64]  #: k_t of each hinge [N·m/rad]
@@ -55,7 +55,7 @@ def hinge_incidence(dofs: FrameDofs) -> NDArray[np.float64]:
 
 def configuration(base: NDArray[np.float64], dofs: FrameDofs, B: NDArray[np.float64],
                   keep: NDArray[np.int64], other: NDArray[np.int64],
-                  tangents: NDArray[np.float64], name: str, t: float) -> Configuration:
+                  tangents: NDArray[np.float64], name: str, t: float) -> ReferenceConfiguration:
     """The configuration whose hinges have the tangents ``tangents`` (``name``, ``t``: for
     the message if the DOFs without mass are a mechanism by themselves)."""
     import scipy.linalg
@@ -78,7 +78,7 @@ def configuration(base: NDArray[np.float64], dofs: FrameDofs, B: NDArray[np.floa
         T[live_rows] = X
         Kc = Kc + K[np.ix_(keep, live)] @ X
     Theta = B[:, keep] + B[:, other] @ T
-    return Configuration(tangents.copy(), 0.5 * (Kc + Kc.T), T, Theta)
+    return ReferenceConfiguration(tangents.copy(), 0.5 * (Kc + Kc.T), T, Theta)
 
 
 # ----------------------------------------------------------------------------- events
@@ -162,11 +162,11 @@ class Motion:
         self.work = np.zeros(self.nh)  # each hinge's ∫ M dθ since gravity, to the last event
         self.peak = np.abs(self.theta_e)
         self.events = 0
-        self._cache: dict[bytes, Configuration] = {}
+        self._cache: dict[bytes, ReferenceConfiguration] = {}
         self.cfg = self._configuration(self.directions, 0.0)
 
     # -- the configuration
-    def _configuration(self, directions: NDArray[np.int64], t: float) -> Configuration:
+    def _configuration(self, directions: NDArray[np.int64], t: float) -> ReferenceConfiguration:
         tangents = np.array([law.branch(s, int(d)).k_t for law, s, d
                              in zip(self.laws, self.states, directions, strict=True)])
         key = tangents.tobytes()
@@ -180,7 +180,7 @@ class Motion:
         law, s = self.laws[h], self.states[h]
         return law.branch(s, 1).k_t != law.branch(s, -1).k_t
 
-    def band(self, cfg: Configuration) -> NDArray[np.float64]:
+    def band(self, cfg: ReferenceConfiguration) -> NDArray[np.float64]:
         """ε of each hinge [rad/s] (frame_reference module docstring, item 4)."""
         return RATE_BAND * np.linalg.norm(cfg.Theta, axis=1) * self.v_scale
 
