@@ -189,6 +189,10 @@ duration = 4.0
 [pushover]"""))
     code, out = _run("run", str(f), "--out", str(tmp_path / "r"), "--no-figures")
     assert code == 0, out
+    # the printout: the hinges' hysteretic energy and the table of hinges that yielded
+    assert "hysteretic, frames' plastic hinges [" in out
+    flat = " ".join(out.split())  # (a narrow terminal wraps the titles)
+    assert "4 of 6 hinges yielded" in flat, out
     summary = json.loads((tmp_path / "r" / "summary.json").read_text())
     hinges = {h["hinge"]: h for h in summary["hinges"]}
     assert list(hinges) == [f"B1H{h}" for h in range(1, 7)]

@@ -70,6 +70,9 @@ def print_run_summary(out: Any) -> None:
                 == int(r.is_bearing.sum()) else "yielding storeys"
                 + (" and bearings" if r.is_bearing.any() else ""))
         rows.append((f"hysteretic, {what} [{eu}]", number(fin["hysteretic"] * ef)))
+    if "hinge_hysteretic_energy_J" in s:
+        rows.append((f"hysteretic, frames' plastic hinges [{eu}]",
+                     number(s["hinge_hysteretic_energy_J"] * ef)))
     if model.links:
         rows.append((f"dissipated by links [{eu}]", number(s["links_dissipated_J"] * ef)))
     rows.append(("energy-balance error", f"{r.energy_balance_error:.2e} of peak input"))
@@ -85,6 +88,7 @@ def print_run_summary(out: Any) -> None:
     _print_bearings(r, units)
     _print_storeys(r, units)
     _print_plan_storeys(r, units)
+    _print_hinges(s, units)
     _print_contacts(r, units)
     _print_links(r, units)
     console.print(Text.assemble("outputs in ", (str(out.out_dir), "bold"), ": ",
@@ -266,6 +270,38 @@ def _print_plan_storeys(r: Any, units: tuple[float, str, float, str]) -> None:
                         "centre of mass of the floor above"
                         + (f"; {', '.join(given)} given by its stiffness matrix: no storey "
                            "forces" if given else ""))
+
+
+MAX_HINGE_ROWS = 12
+"""Hinges listed in the run's printout (all of them are in ``summary.json``)."""
+
+
+def _print_hinges(s: dict[str, Any], units: tuple[float, str, float, str]) -> None:
+    """The frames' hinges that yielded, the largest rotations first (``summary.json`` has
+    every hinge)."""
+    hinges = s.get("hinges") or []
+    if not hinges:
+        return
+    ff, fu, ef, eu = units
+    # yielded: turned past the law's yield rotation (a rounding-level hysteretic energy is
+    # not yielding)
+    moved = sorted((h for h in hinges if h["rotation_ductility"] > 1.0 + 1e-9),
+                   key=lambda h: -h["peak_rotation_rad"])
+    cols = [Col("hinge", "left"), Col("member", "left"), Col("x, y [m]"),
+            Col("peak rotation [mrad]"), Col("at t [s]"), Col("residual [mrad]"),
+            Col(f"peak moment [{fu}·m]"), Col(f"hysteretic [{eu}]")]
+    rows = [(h["hinge"], h["member"], f"{h['x_m']:g}, {h['y_m']:g}",
+             number(1e3 * h["peak_rotation_rad"]), _t(h["peak_rotation_time_s"]),
+             number(1e3 * h["residual_rotation_rad"]), number(h["peak_moment_N_m"] * ff),
+             number(h["hysteretic_energy_J"] * ef)) for h in moved[:MAX_HINGE_ROWS]]
+    caption = (f"{len(moved)} of {len(hinges)} hinges yielded"
+               + (f"; the {MAX_HINGE_ROWS} largest rotations shown" if len(moved) >
+                  MAX_HINGE_ROWS else "") + "; every hinge in summary.json")
+    if rows:
+        print_table(console, "Plastic hinges that yielded (largest rotations first)", cols,
+                    rows, caption=caption)
+    else:
+        console.print(f"Plastic hinges: none of the {len(hinges)} yielded", highlight=False)
 
 
 def _print_contacts(r: Any, units: tuple[float, str, float, str]) -> None:
