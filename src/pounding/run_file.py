@@ -24,7 +24,7 @@ from pathlib import Path
 from pounding.config import RunConfig, load_config
 from pounding.integrate import simulate
 from pounding.io.files import check_writable, write_text
-from pounding.io.manifest import check_replaceable
+from pounding.io.manifest import check_out_folder
 from pounding.io.output_folder import default_out_dir, new_output_folder, remove_stale
 from pounding.plot.registry import RUN_FIGURES
 from pounding.progress import Progress
@@ -76,13 +76,7 @@ class RunOutput:
 
 
 def _check_target(out_dir: Path, overwrite: bool) -> None:
-    if out_dir.exists() or out_dir.is_symlink():
-        if not out_dir.is_dir() or out_dir.is_symlink():
-            raise ValueError(f"out: {out_dir} exists and is not a folder; choose another --out")
-        if not overwrite:
-            raise ValueError(f"out: {out_dir} already exists; give --overwrite to replace it "
-                             "or choose another --out")
-        check_replaceable(out_dir, "run")
+    check_out_folder(out_dir, overwrite, "run")
 
 
 def _remove_stale(out_dir: Path) -> None:

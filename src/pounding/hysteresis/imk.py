@@ -165,13 +165,6 @@ lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
                                                  0.0, 0.0, *p, *n))
 
     # ----------------------------------------------------------------- the contract
-    def branch(self, state: HingeState, direction: int) -> Branch:
-        k, end, _ = self._plan(self._prepare(state, direction), direction)
-        return Branch(k, direction * end)
-
-    def _reversed(self, state: HingeState, direction: int) -> HingeState:
-        return self._prepare(state, direction)
-
     def _along(self, state: HingeState, br: Branch, theta: float,
                direction: int) -> HingeState:
         state = self._prepare(state, direction)  # as branch() saw it (idempotent)

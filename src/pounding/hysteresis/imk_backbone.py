@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import ClassVar, NamedTuple
 
-from pounding.hysteresis.hinges import HingeLaw
+from pounding.hysteresis.hinges import Branch, HingeLaw, HingeState
 
 INF = math.inf
 
@@ -329,6 +329,24 @@ class IMKLaw(HingeLaw):
         has been dissipated since the start (:func:`cyclic_beta`)."""
         ref = self.reference_energy(mode)
         return cyclic_beta(energy, ref - used, ref, self.exponent(mode))
+
+    # ------------------------------------------------------ the contract, for both laws
+    def branch(self, state: HingeState, direction: int) -> Branch:
+        k, end, _ = self._plan(self._prepare(state, direction), direction)
+        return Branch(k, direction * end)
+
+    def _reversed(self, state: HingeState, direction: int) -> HingeState:
+        return self._prepare(state, direction)
+
+    def _prepare(self, state: HingeState, d: int) -> HingeState:
+        """What happens at the state's point when the rotation starts moving in ``d``
+        (each law's rules; idempotent)."""
+        raise NotImplementedError
+
+    def _plan(self, state: HingeState, d: int) -> tuple[float, float, str]:
+        """Tangent, end (side coordinates) and event at the end of the branch from a
+        prepared state (each law's rules)."""
+        raise NotImplementedError
 
     def _describe(self) -> str:
         return (f", theta_p={self.theta_p:g} rad, theta_pc={self.theta_pc:g} rad, "

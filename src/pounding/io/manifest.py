@@ -41,7 +41,8 @@ from pathlib import Path
 
 from pounding.io.files import WriteFailed, atomic_path, failure_reason, pid_alive
 
-__all__ = ["MANIFEST_FILE", "TEMPORARY_MARKER", "Entry", "Manifest", "check_replaceable",
+__all__ = ["MANIFEST_FILE", "TEMPORARY_MARKER", "Entry", "Manifest", "check_out_folder",
+           "check_replaceable",
            "files_under", "foreign_entry", "is_stale", "is_stale_marker", "read_marker",
            "remove_outputs"]
 
@@ -319,6 +320,19 @@ def _ancestors(rel_dir: str) -> Iterator[str]:
     while p.as_posix() not in (".", ""):
         yield p.as_posix()
         p = p.parent
+
+
+def check_out_folder(folder: Path, overwrite: bool, kind: str) -> None:
+    """Refuse ``--out`` ``folder`` when it is a file or a link, or exists without
+    ``overwrite``, or holds more than an earlier ``kind`` output of pounding
+    (:func:`check_replaceable`): one line naming the folder, nothing touched."""
+    if folder.exists() or folder.is_symlink():
+        if not folder.is_dir() or folder.is_symlink():
+            raise ValueError(f"out: {folder} exists and is not a folder; choose another --out")
+        if not overwrite:
+            raise ValueError(f"out: {folder} already exists; give --overwrite to replace it "
+                             "or choose another --out")
+        check_replaceable(folder, kind)
 
 
 def check_replaceable(folder: Path, kind: str, option: str = "--out") -> None:

@@ -105,15 +105,9 @@ def _summary(frame: Any, result: Any, target: float, name: str, source: Path) ->
 
 
 def _check_target(out_dir: Path, overwrite: bool) -> None:
-    from pounding.io.manifest import check_replaceable
+    from pounding.io.manifest import check_out_folder
 
-    if out_dir.exists() or out_dir.is_symlink():
-        if not out_dir.is_dir() or out_dir.is_symlink():
-            raise ValueError(f"out: {out_dir} exists and is not a folder; choose another --out")
-        if not overwrite:
-            raise ValueError(f"out: {out_dir} already exists; give --overwrite to replace it "
-                             "or choose another --out")
-        check_replaceable(out_dir, "pushover")
+    check_out_folder(out_dir, overwrite, "pushover")
 
 
 def run_pushover(input: str | os.PathLike[str], out: str | os.PathLike[str] | None = None, *,
