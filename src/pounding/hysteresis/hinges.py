@@ -31,6 +31,13 @@ Contract (the frame analyses of :mod:`pounding.structure.frame_analysis` rely on
 6. **Energy.** ``moment`` integrated over ``θ`` is the work done on the hinge; what it gives
    back when unloaded to zero moment along its elastic branch is
    :meth:`HingeLaw.recoverable`, ``M²/(2 k_unload)``; the rest is its hysteretic energy.
+7. **Two-way branches.** Where :meth:`HingeLaw.two_way` says so — the branch up and the
+   branch down have one tangent and a move either way updates no memory (an elastic
+   branch) — the hinge may move back and forth along that line and be committed only when it
+   leaves it: ``moved`` from the first state to the last equals ``moved`` through every
+   point between. The time stepper of a yielding frame
+   (:mod:`pounding.structure.frame_configuration`) asks the law nothing about such a hinge
+   until it reaches an end of the branch.
 
 Laws here: :class:`ElasticPlastic` (elastic–perfectly plastic, for hand checks) and
 :class:`BilinearHinge` (bilinear, kinematic hardening; OpenSees ``Steel01`` with no isotropic
@@ -47,8 +54,14 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["Branch", "BilinearHinge", "ElasticPlastic", "HingeLaw", "HingeState",
-           "moment_path"]
+__all__ = [
+    "BilinearHinge",
+    "Branch",
+    "ElasticPlastic",
+    "HingeLaw",
+    "HingeState",
+    "moment_path",
+]
 
 INF = math.inf
 
@@ -136,6 +149,14 @@ class HingeLaw(ABC):
                direction: int) -> HingeState:
         """The state at ``theta`` along branch ``br`` (laws add their memory updates)."""
         return HingeState(theta, state.moment + br.k_t * (theta - state.theta), state.memory)
+
+    def two_way(self, state: HingeState) -> bool:
+        """Whether ``state`` lies on one straight branch both ways whose memory a reversal
+        leaves as it is (contract 7): the branches up and down share their tangent and the
+        state is already what a move either way starts from."""
+        if self.branch(state, 1).k_t != self.branch(state, -1).k_t:
+            return False
+        return self._reversed(state, 1) == state and self._reversed(state, -1) == state
 
     def unloading_stiffness(self, state: HingeState) -> float:
         """Stiffness of the branch that unloads from ``state`` [N·m/rad] (default ``k0``)."""

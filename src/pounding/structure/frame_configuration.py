@@ -118,16 +118,28 @@ LINEAR_PARTS_KEPT: int = 256
 @dataclass(frozen=True)
 class _LinearPart:
     """What a configuration's tangents alone fix: the live and dead massless DOFs, the
-    equilibrated ``K_ss`` and its scaling, ``K_ms``, the condensed ``K_c``, ``A`` and ``P``."""
+    factorised, equilibrated ``K_ss`` (its scaling ``scale``), ``K_ms``, the condensed
+    ``K_c``, ``A`` and ``P``."""
 
     live: NDArray[np.int64]
     dead: NDArray[np.int64]
     scale: Vector
-    Kss_scaled: Vector
+    solve: Callable[[Vector], Vector]  #: ``x ↦ K_ss⁻¹ x`` over the live DOFs
     Kms: Vector
     Kc: Vector
     A: Vector
     P: Vector
+
+
+def _no_live_dofs(x: Vector) -> Vector:  # pragma: no cover - never called: no live DOFs
+    return x
+
+
+def _scaled_solver(lu: object, scale: Vector) -> Callable[[Vector], Vector]:
+    """``x ↦ K_ss⁻¹ x`` from the LU of ``D⁻¹ K_ss D⁻¹`` (``D = diag(scale)``)."""
+    def solve(x: Vector) -> Vector:
+        return np.asarray(lu.solve(x / scale)) / scale  # type: ignore[attr-defined]
+    return solve
 
 
 class FrameMotion:
@@ -172,6 +184,20 @@ class FrameMotion:
         #: (:meth:`redistribute`)
         self.jumped = False
         self._linear_parts: dict[bytes, _LinearPart] = {}
+        # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
+        # the hinge laws) is committed here only, its law's state left behind at the last
+        # point the law was asked about (``_behind``) until it leaves that branch
+        self._theta = np.array([h.theta for h in self.hinges])
+        self._moment = np.array([h.moment for h in self.hinges])
+        self._behind = np.zeros(len(self.laws), dtype=bool)
+        self._ups: list[Branch] = []
+        self._downs: list[Branch] = []
+        self._two_way = np.zeros(len(self.laws), dtype=bool)
+        self._k_unload = np.zeros(len(self.laws))
+        for h in range(len(self.laws)):
+            self._ups.append(self.laws[h].branch(self.hinges[h], 1))
+            self._downs.append(self.laws[h].branch(self.hinges[h], -1))
+            self._learn(h)
 
     # ------------------------------------------------------------------ the hinges now
     @property
@@ -186,33 +212,62 @@ class FrameMotion:
 
     def rotations(self) -> Vector:
         """Committed hinge rotations [rad]."""
-        return np.array([h.theta for h in self.hinges])
+        return self._theta.copy()
 
     def moments(self) -> Vector:
         """Committed hinge moments [N·m]."""
-        return np.array([h.moment for h in self.hinges])
+        return self._moment.copy()
 
     def unloading_stiffness(self) -> Vector:
         """Each hinge's unloading stiffness at its committed state [N·m/rad] (its
         recoverable energy is ``M²/(2 k)``)."""
-        return np.array([law.unloading_stiffness(h) for law, h in zip(self.laws, self.hinges)])
+        return self._k_unload.copy()
+
+    def law_states(self) -> list[HingeState]:
+        """Each hinge's committed state as its law keeps it (every hinge brought up to its
+        committed rotation)."""
+        self._catch_up(np.flatnonzero(self._behind))
+        return list(self.hinges)
 
     def hysteretic_energy(self) -> Vector:
         """Each hinge's hysteretic energy at its committed state [J]: its work less the
         change of its recoverable energy since the start."""
-        rec = np.array([law.recoverable(h) for law, h in zip(self.laws, self.hinges)])
+        rec = np.array([law.recoverable(h) for law, h in zip(self.laws, self.law_states())])
         return self.work - rec + self.recoverable0
 
     def plastic_rotations(self) -> Vector:
         """Each hinge's rotation once unloaded to zero moment along its unloading
         stiffness [rad]: its residual (plastic) rotation."""
+        self.law_states()
         return self.rotations() - self.moments() / self.unloading_stiffness()
+
+    def _learn(self, h: int) -> None:
+        """Read hinge ``h``'s branches, two-way flag and unloading stiffness from its law's
+        (up-to-date) state."""
+        law, st = self.laws[h], self.hinges[h]
+        self._ups[h] = law.branch(st, 1)
+        self._downs[h] = law.branch(st, -1)
+        self._two_way[h] = law.two_way(st)
+        self._k_unload[h] = law.unloading_stiffness(st)
+        self._theta[h], self._moment[h] = st.theta, st.moment
+        self._behind[h] = False
+
+    def _catch_up(self, which: NDArray[np.int64]) -> bool:
+        """Move the laws of hinges ``which`` to their committed rotations (contract 7: along
+        their two-way branch); whether a moment jumped on the way."""
+        jumped = False
+        for h in which:
+            h = int(h)
+            st, jump = _moved(self.laws[h], self.hinges[h], float(self._theta[h]))
+            self.hinges[h] = st
+            self._learn(h)
+            jumped = jumped or jump
+        return jumped
 
     # ------------------------------------------------------------------ configurations
     def branches(self) -> tuple[list[Branch], list[Branch]]:
         """Each hinge's branch from its committed state moving up, and moving down."""
-        return ([law.branch(st, 1) for law, st in zip(self.laws, self.hinges)],
-                [law.branch(st, -1) for law, st in zip(self.laws, self.hinges)])
+        return list(self._ups), list(self._downs)
 
     def condensed(self, tangents: Vector, directions: NDArray[np.int64],
                   branches: tuple[list[Branch], list[Branch]] | None = None) -> Configuration:
@@ -226,8 +281,8 @@ class FrameMotion:
             does not involve the floors).
         """
         floor = self.floor
-        theta_c = self.rotations()
-        q = self.moments() - tangents * theta_c
+        theta_c = self._theta
+        q = self._moment - tangents * theta_c
         lin = self._linear_part(tangents)
         Bq = np.zeros(self.dofs.n)
         fixed = self.node < 0
@@ -236,10 +291,7 @@ class FrameMotion:
         p0 = np.zeros(self.dofs.n)
         p0[lin.dead] = self.U[lin.dead]  # (a joint with no stiffness stays where it is)
         if lin.live.size:
-            d = lin.scale
-            # (NumPy's solve: SciPy's triangular solves took 15 ms for a 12 × 12 system on
-            # the 2-core test machine, NumPy's 10 µs)
-            p0[lin.live] = np.linalg.solve(lin.Kss_scaled, (self.G - Bq)[lin.live] / d) / d
+            p0[lin.live] = lin.solve((self.G - Bq)[lin.live])
         f0 = lin.Kms @ p0[lin.live] + Bq[floor] - self.G[floor]
         node_p0 = np.where(fixed, 0.0, p0[np.maximum(self.node, 0)])
         # from total floor displacements to those from the gravity state
@@ -285,28 +337,39 @@ class FrameMotion:
         Kms = K[np.ix_(floor, live)]
         Kc = K[np.ix_(floor, floor)]
         scale = np.ones(live.size)
-        Kss_scaled = np.zeros((live.size, live.size))
+        solve: Callable[[Vector], Vector] = _no_live_dofs
         if live.size:
-            import scipy.linalg
+            import scipy.sparse
+            import scipy.sparse.linalg
 
             Kss = K[np.ix_(live, live)]
             # equilibrate rows and columns by the diagonal so that the pivots compare DOFs
-            # of different units; a pivot 1e-13 below the largest: no unique equilibrium
+            # of different units; a pivot 1e-13 below the largest: no unique equilibrium.
+            # (A sparse LU, SuperLU's: a frame's K_ss has a few entries a row; dense LAPACK
+            # took 14 ms for a 306-DOF frame on a loaded 2-core machine, SuperLU 0.5 ms.)
             scale = np.sqrt(np.maximum(np.abs(np.diag(Kss)), np.max(np.abs(Kss)) * 1e-30))
-            Kss_scaled = Kss / scale[:, None] / scale[None, :]
-            lu, _ = scipy.linalg.lu_factor(Kss_scaled, check_finite=False)
-            pivots = np.abs(np.diag(lu))
+            Kss_scaled = scipy.sparse.csc_matrix(Kss / scale[:, None] / scale[None, :])
+            try:
+                lu = scipy.sparse.linalg.splu(Kss_scaled)
+            except RuntimeError:  # exactly singular
+                lu = None
+            pivots = np.abs(lu.U.diagonal()) if lu is not None else np.zeros(1)
             if not np.all(np.isfinite(pivots)) or np.min(pivots) <= 1e-13 * np.max(pivots):
                 raise ValueError(f"{self.frame.name}: its joints and member ends have no "
                                  "unique equilibrium in this configuration of its hinges (a "
                                  "mechanism without mass); give the hinges some post-yield "
                                  "stiffness or put a floor mass on the moving part")
-            S = np.linalg.solve(Kss_scaled, -Kms.T / scale[:, None]) / scale[:, None]
+            assert lu is not None
+            solve = _scaled_solver(lu, scale)
+            # (column by column: SuperLU's many-column solve calls a BLAS that threads
+            # badly on a loaded machine)
+            S = np.column_stack([solve(-Kms[i]) for i in range(nf)]) if nf else \
+                np.zeros((live.size, 0))
             P[live] = S
             Kc = Kc + Kms @ S
         fixed = self.node < 0
         A = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)]) - P[self.end]
-        part = _LinearPart(live, dead, scale, Kss_scaled, Kms, 0.5 * (Kc + Kc.T), A, P)
+        part = _LinearPart(live, dead, scale, solve, Kms, 0.5 * (Kc + Kc.T), A, P)
         if len(self._linear_parts) >= LINEAR_PARTS_KEPT:
             self._linear_parts.pop(next(iter(self._linear_parts)))
         self._linear_parts[key] = part
@@ -314,8 +377,8 @@ class FrameMotion:
 
     def one_way(self) -> NDArray[np.bool_]:
         """True for every hinge whose branch depends on the direction it moves."""
-        ups, downs = self.branches()
-        return np.array([up.k_t != down.k_t for up, down in zip(ups, downs)], dtype=bool)
+        return np.array([up.k_t != down.k_t for up, down in zip(self._ups, self._downs)],
+                        dtype=bool)
 
     def configure(self, velocity: Vector,
                   acceleration: Vector | Callable[[Configuration], Vector],
@@ -330,8 +393,8 @@ class FrameMotion:
         configuration that choice gives, and flipped until they agree (at most
         ``2 n_h + 2`` times, the pushover's bound)."""
         nh = self.n_hinges
-        ups, downs = self.branches()
-        one_way = np.array([up.k_t != down.k_t for up, down in zip(ups, downs)], dtype=bool)
+        ups, downs = self._ups, self._downs
+        one_way = self.one_way()
         directions = self.directions.copy()
         directions[~one_way] = 0
         for h in np.flatnonzero(one_way & (directions == 0)):
@@ -374,7 +437,9 @@ class FrameMotion:
                land: dict[int, float] | None = None) -> Vector:
         """Commit the hinges at floor displacements ``u`` [m] (from the gravity state) in
         the current configuration: each hinge moved to its rotation there along its law
-        (``law.moved``, across any breakpoint the located event just passed), its work
+        (``law.moved``, across any breakpoint the located event just passed; a hinge on a
+        two-way branch it has not left is committed on its line and its law caught up
+        later, contract 7 of :mod:`pounding.hysteresis.hinges`), its work
         ``∫ M dθ`` along the configuration's branch added, the frame's displacements kept;
         :attr:`jumped` set if a hinge's moment jumped on the way. ``equilibrium`` [rad/m]:
         the rotations of the configuration's own equilibrium at ``u`` (after a jump), not
@@ -400,11 +465,18 @@ class FrameMotion:
         self.work = self.work + 0.5 * (moment_c + moment) * (theta - theta_c)
         self.U = cfg.P @ u + cfg.p0
         self.u_commit = np.array(u, dtype=float)
-        moved = [_moved(law, st, float(t)) for law, st, t in
-                 zip(self.laws, self.hinges, theta)]
-        self.hinges = [st for st, _ in moved]
-        self.jumped = any(jump for _, jump in moved)
-        return theta
+        # the laws are asked only about the hinges that may have left their branch or whose
+        # branch is not two-way (contract 7); the others are committed on their line
+        ask = ~self._two_way | (cfg.directions != 0) | (theta <= cfg.lower) | \
+            (theta >= cfg.upper)
+        if land:
+            ask[list(land)] = True
+        if equilibrium is not None:
+            ask |= far
+        self._theta, self._moment = theta, moment
+        self._behind |= ~ask
+        self.jumped = self._catch_up(np.flatnonzero(ask))
+        return self._theta.copy()
 
     def landing(self, u: Vector, velocity: Vector, theta_tol: float,
                 event: int | None = None) -> dict[int, float]:
