@@ -150,11 +150,15 @@ class HingeLaw(ABC):
         """The state at ``theta`` along branch ``br`` (laws add their memory updates)."""
         return HingeState(theta, state.moment + br.k_t * (theta - state.theta), state.memory)
 
-    def two_way(self, state: HingeState) -> bool:
+    def two_way(self, state: HingeState, up: Branch | None = None,
+                down: Branch | None = None) -> bool:
         """Whether ``state`` lies on one straight branch both ways whose memory a reversal
         leaves as it is (contract 7): the branches up and down share their tangent and the
-        state is already what a move either way starts from."""
-        if self.branch(state, 1).k_t != self.branch(state, -1).k_t:
+        state is already what a move either way starts from. ``up``, ``down``: its
+        branches, if at hand."""
+        up = self.branch(state, 1) if up is None else up
+        down = self.branch(state, -1) if down is None else down
+        if up.k_t != down.k_t:
             return False
         return self._reversed(state, 1) == state and self._reversed(state, -1) == state
 

@@ -85,6 +85,7 @@ deterioration rules in :mod:`pounding.hysteresis.imk_backbone`; both laws are ex
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from typing import ClassVar, NamedTuple
 
@@ -127,6 +128,9 @@ class _BilinMemory(NamedTuple):
 
 
 _SIDE = ("fy", "kp", "ucap", "fcap", "kpc")
+_SIDE_FIELDS = {s: operator.itemgetter(*(_BilinMemory._fields.index(side_prefix(s) + f)
+                                         for f in _SIDE)) for s in (1, -1)}
+"""Each side's backbone fields in the memory (``_side``: called at every branch query)."""
 
 
 @dataclass(frozen=True)
@@ -195,7 +199,7 @@ lambda_k, c, c_s, c_c, c_k, d_pos, d_neg
 
     # ----------------------------------------------------------------- the rules
     def _side(self, m: _BilinMemory, s: int) -> Side:
-        return Side(*(getattr(m, side_prefix(s) + f) for f in _SIDE))
+        return Side._make(_SIDE_FIELDS[s](m))
 
     def _bound(self, m: _BilinMemory, s: int) -> Bound:
         """The backbone towards side ``s`` in its coordinates (0 if the side is lost, its

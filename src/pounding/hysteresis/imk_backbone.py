@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from bisect import bisect_right
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import ClassVar, NamedTuple
 
 from pounding.hysteresis.hinges import Branch, HingeLaw, HingeState
@@ -110,6 +110,7 @@ def side_prefix(s: int) -> str:
     return "pos_" if s > 0 else "neg_"
 
 
+@lru_cache(maxsize=4096)
 def side_bound(side: Side, fres: float) -> Bound:
     """The backbone of one side, ``max(κ M_y, L(θ))``: ``L`` the post-yield line through the
     capping point (slope ``kp``; extended below the yield point, the bilinear law's

@@ -74,6 +74,8 @@ class _Frame:
     rows: slice  #: its hinge rows
     motion: FrameMotion
     first: int  #: its first row in ``Floors.f_rows``
+    band_rows: NDArray[np.int64]  #: where its K_c's entries go in the banded stiffness
+    band_cols: NDArray[np.int64]
     work_constant: float = 0.0  #: c: its work is ``½ uᵀ K_c u + f0ᵀ u + c`` [J]
 
 
@@ -105,7 +107,9 @@ class FrameRun:
             motion = FrameMotion(bl.frame, bl.gravity_state)
             rows = slice(h0, h0 + motion.n_hinges)
             h0 += motion.n_hinges
-            self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first))
+            no_band = np.zeros((0, 0), dtype=np.int64)  # (set below, once the band is known)
+            self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first,
+                                      no_band, no_band))
             first += motion.n_floors
         self.n_hinges = h0
         nf_max = max(f.motion.n_floors for f in self.frames)
@@ -114,6 +118,10 @@ class FrameRun:
         # the frames' condensed stiffness is full over their floors: a band wide enough
         bw = max(fl.bw, nf_max - 1)
         self.bw = bw
+        for f in self.frames:
+            a = np.arange(f.motion.n_floors)
+            rows_i, cols_j = np.meshgrid(a, a, indexing="ij")
+            f.band_rows, f.band_cols = cols_j - rows_i + bw, f.offset + rows_i
         k_band = band_storage(km.K, bw)
         c_band = fl.c_band if bw == fl.bw else band_storage(km.C, bw)
         f_dof = np.concatenate([f.offset + np.arange(f.motion.n_floors) for f in self.frames])
@@ -288,10 +296,8 @@ class FrameRun:
         cfg = m.config
         assert cfg is not None
         nf = m.n_floors
-        a = np.arange(nf)
         # band storage: kb[d, i] = K[i, i + d − bw]
-        rows_i, cols_j = np.meshgrid(a, a, indexing="ij")
-        self.k_band[cols_j - rows_i + self.bw, f.offset + rows_i] = cfg.K
+        self.k_band[f.band_rows, f.band_cols] = cfg.K
         self.f_rows[f.first: f.first + nf, 1] = cfg.f0
         self.f_rows[f.first, 2] = f.work_constant
         hs = self.h_state[f.rows]

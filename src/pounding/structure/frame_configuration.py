@@ -21,8 +21,10 @@ loads) and ``G`` the gravity loads, held constant. The force the frame's floors 
 net of the gravity loads, so the frame standing in its gravity state is at rest; and every
 hinge rotation is ``θ = A u + a0`` with ``A = B_sᵀ S``, ``a0 = B_sᵀ s0`` (no hinge rotation is
 a floor's DOF) — taken as ``a0 = θ* − A u*``, anchored where the hinges were committed (the
-same up to rounding, but a commit at the same instant then moves no hinge at all). This is the static condensation of Chopra, *Dynamics of Structures*, 4th
-ed., §9.3, carried out in the configuration and with the constant part kept.
+same up to rounding, but a commit at the same instant then moves no hinge at all). This is
+the static condensation of Chopra, *Dynamics of Structures*, 4th ed., §9.3, carried out in
+the configuration and with the constant part kept; what the tangents alone fix (``S``,
+``K_c``, ``A``, the factorised ``K_ss``) is :mod:`pounding.structure.frame_condensation`'s.
 
 Between events the frame's motion is linear; an *event* is a hinge reaching the end of its
 branch in the direction it moves (yield, capping, the elastic branch's other bound) or a
@@ -53,10 +55,8 @@ from numpy.typing import NDArray
 from pounding.hysteresis.hinges import Branch, HingeLaw, HingeState
 from pounding.structure.frame import Frame
 from pounding.structure.frame_analysis import FrameState, gravity
-from pounding.structure.frame_stiffness import (
-    configuration_stiffness,
-    gravity_load_vector,
-)
+from pounding.structure.frame_condensation import Condensation
+from pounding.structure.frame_stiffness import gravity_load_vector
 
 __all__ = ["Configuration", "FrameMotion"]
 
@@ -65,9 +65,11 @@ JUMP_TOL: float = 1e-9
 than this fraction of its yield moment (as the pushover judges it)."""
 
 
-def _moved(law: HingeLaw, state: HingeState, theta: float) -> tuple[HingeState, bool]:
+def _moved(law: HingeLaw, state: HingeState, theta: float,
+           first: Branch | None = None) -> tuple[HingeState, bool]:
     """``law.moved(state, theta)``, walked branch by branch (contract 5), and whether the
-    moment jumped anywhere on the way (at a breakpoint, or at the start of a reversal)."""
+    moment jumped anywhere on the way (at a breakpoint, or at the start of a reversal).
+    ``first``: the branch from ``state`` in the direction of the move, if at hand."""
     if theta == state.theta:
         return state, False
     direction = 1 if theta > state.theta else -1
@@ -75,7 +77,8 @@ def _moved(law: HingeLaw, state: HingeState, theta: float) -> tuple[HingeState, 
     jumped = False
     current = state
     for _ in range(10_000):
-        br = law.branch(current, direction)
+        br = first if first is not None else law.branch(current, direction)
+        first = None
         end = br.theta_end
         last = (direction > 0 and end >= theta) or (direction < 0 and end <= theta)
         to = theta if last else end
@@ -111,37 +114,6 @@ class Configuration:
     a0_equilibrium: Vector
 
 
-LINEAR_PARTS_KEPT: int = 256
-"""The configurations' linear parts a frame keeps for reuse (oldest forgotten first)."""
-
-
-@dataclass(frozen=True)
-class _LinearPart:
-    """What a configuration's tangents alone fix: the live and dead massless DOFs, the
-    factorised, equilibrated ``K_ss`` (its scaling ``scale``), ``K_ms``, the condensed
-    ``K_c``, ``A`` and ``P``."""
-
-    live: NDArray[np.int64]
-    dead: NDArray[np.int64]
-    scale: Vector
-    solve: Callable[[Vector], Vector]  #: ``x ↦ K_ss⁻¹ x`` over the live DOFs
-    Kms: Vector
-    Kc: Vector
-    A: Vector
-    P: Vector
-
-
-def _no_live_dofs(x: Vector) -> Vector:  # pragma: no cover - never called: no live DOFs
-    return x
-
-
-def _scaled_solver(lu: object, scale: Vector) -> Callable[[Vector], Vector]:
-    """``x ↦ K_ss⁻¹ x`` from the LU of ``D⁻¹ K_ss D⁻¹`` (``D = diag(scale)``)."""
-    def solve(x: Vector) -> Vector:
-        return np.asarray(lu.solve(x / scale)) / scale  # type: ignore[attr-defined]
-    return solve
-
-
 class FrameMotion:
     """The state of a yielding frame through one run: its hinges' committed states and
     work, its displacements at the last commit, and its current :class:`Configuration`.
@@ -166,7 +138,6 @@ class FrameMotion:
         self.base = state.base
         self.G = gravity_load_vector(frame, dofs)
         self.floor = np.asarray(dofs.floor_dof, dtype=np.int64)
-        self.other = np.setdiff1d(np.arange(dofs.n), self.floor)
         self.U = state.U.copy()
         self.U0 = self.U.copy()  #: the displacements at the start [m, rad]
         self.u_gravity = self.U[self.floor].copy()
@@ -183,20 +154,20 @@ class FrameMotion:
         #: the frame must be brought to the equilibrium of its next configuration
         #: (:meth:`redistribute`)
         self.jumped = False
-        self._linear_parts: dict[bytes, _LinearPart] = {}
+        self._condensation = Condensation(self.base, dofs, frame.name)
         # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
         # the hinge laws) is committed here only, its law's state left behind at the last
         # point the law was asked about (``_behind``) until it leaves that branch
         self._theta = np.array([h.theta for h in self.hinges])
         self._moment = np.array([h.moment for h in self.hinges])
         self._behind = np.zeros(len(self.laws), dtype=bool)
-        self._ups: list[Branch] = []
-        self._downs: list[Branch] = []
-        self._two_way = np.zeros(len(self.laws), dtype=bool)
-        self._k_unload = np.zeros(len(self.laws))
-        for h in range(len(self.laws)):
-            self._ups.append(self.laws[h].branch(self.hinges[h], 1))
-            self._downs.append(self.laws[h].branch(self.hinges[h], -1))
+        # each hinge's branches from its committed state: tangents and ends, up and down
+        nh = len(self.laws)
+        self._k_up, self._end_up = np.zeros(nh), np.zeros(nh)
+        self._k_down, self._end_down = np.zeros(nh), np.zeros(nh)
+        self._two_way = np.zeros(nh, dtype=bool)
+        self._k_unload = np.zeros(nh)
+        for h in range(nh):
             self._learn(h)
 
     # ------------------------------------------------------------------ the hinges now
@@ -245,9 +216,10 @@ class FrameMotion:
         """Read hinge ``h``'s branches, two-way flag and unloading stiffness from its law's
         (up-to-date) state."""
         law, st = self.laws[h], self.hinges[h]
-        self._ups[h] = law.branch(st, 1)
-        self._downs[h] = law.branch(st, -1)
-        self._two_way[h] = law.two_way(st)
+        up, down = law.branch(st, 1), law.branch(st, -1)
+        self._k_up[h], self._end_up[h] = up.k_t, up.theta_end
+        self._k_down[h], self._end_down[h] = down.k_t, down.theta_end
+        self._two_way[h] = law.two_way(st, up, down)
         self._k_unload[h] = law.unloading_stiffness(st)
         self._theta[h], self._moment[h] = st.theta, st.moment
         self._behind[h] = False
@@ -258,7 +230,14 @@ class FrameMotion:
         jumped = False
         for h in which:
             h = int(h)
-            st, jump = _moved(self.laws[h], self.hinges[h], float(self._theta[h]))
+            st = self.hinges[h]
+            theta = float(self._theta[h])
+            # (its branch that way, as :meth:`_learn` read it from this state — or, for a
+            # hinge left behind on its two-way branch, from where it was left)
+            first = (Branch(float(self._k_up[h]), float(self._end_up[h]))
+                     if theta > st.theta else
+                     Branch(float(self._k_down[h]), float(self._end_down[h])))
+            st, jump = _moved(self.laws[h], st, theta, first)
             self.hinges[h] = st
             self._learn(h)
             jumped = jumped or jump
@@ -267,12 +246,12 @@ class FrameMotion:
     # ------------------------------------------------------------------ configurations
     def branches(self) -> tuple[list[Branch], list[Branch]]:
         """Each hinge's branch from its committed state moving up, and moving down."""
-        return list(self._ups), list(self._downs)
+        return ([Branch(k, e) for k, e in zip(self._k_up.tolist(), self._end_up.tolist())],
+                [Branch(k, e) for k, e in zip(self._k_down.tolist(), self._end_down.tolist())])
 
-    def condensed(self, tangents: Vector, directions: NDArray[np.int64],
-                  branches: tuple[list[Branch], list[Branch]] | None = None) -> Configuration:
+    def condensed(self, tangents: Vector, directions: NDArray[np.int64]) -> Configuration:
         """The configuration with hinge tangents ``tangents`` about the committed hinge
-        states (module docstring); ``branches``: :meth:`branches`, if at hand.
+        states (module docstring).
 
         Raises
         ------
@@ -283,7 +262,7 @@ class FrameMotion:
         floor = self.floor
         theta_c = self._theta
         q = self._moment - tangents * theta_c
-        lin = self._linear_part(tangents)
+        lin = self._condensation.part(tangents)
         Bq = np.zeros(self.dofs.n)
         fixed = self.node < 0
         np.add.at(Bq, self.node[~fixed], q[~fixed])
@@ -305,80 +284,17 @@ class FrameMotion:
         # a move of a rounding error the wrong way is a reversal to a law with memory
         a0 = theta_c - lin.A @ self.u_commit
         Kc, A, P = lin.Kc, lin.A, lin.P
-        lower = np.full(self.n_hinges, -math.inf)
-        upper = np.full(self.n_hinges, math.inf)
-        ups, downs = branches if branches is not None else self.branches()
-        for h, (up, down) in enumerate(zip(ups, downs)):
-            if up.k_t == down.k_t:  # one branch both ways: events at both its ends
-                lower[h], upper[h] = down.theta_end, up.theta_end
-            elif directions[h] > 0:
-                upper[h] = up.theta_end
-            else:
-                lower[h] = down.theta_end
+        # a hinge on one branch both ways: events at both its ends; else at the end of the
+        # branch of its direction
+        both = self._k_up == self._k_down
+        lower = np.where(both | (directions <= 0), self._end_down, -math.inf)
+        upper = np.where(both | (directions > 0), self._end_up, math.inf)
         return Configuration(directions.copy(), tangents.copy(), q, Kc, f0, A, a0, lower,
                              upper, P, p0, a0_equilibrium)
 
-    def _linear_part(self, tangents: Vector) -> _LinearPart:
-        """What a configuration's tangents alone fix (:class:`_LinearPart`), computed once
-        for each set of tangents met in the run (a frame returns to the same few: elastic,
-        its mechanisms)."""
-        key = tangents.tobytes()
-        part = self._linear_parts.get(key)
-        if part is not None:
-            return part
-        dofs, floor = self.dofs, self.floor
-        K = configuration_stiffness(self.base, dofs, tangents)
-        alive = np.any(K != 0.0, axis=1)
-        live = self.other[alive[self.other]]
-        dead = self.other[~alive[self.other]]
-        nf = floor.size
-        P = np.zeros((dofs.n, nf))
-        P[floor, np.arange(nf)] = 1.0
-        Kms = K[np.ix_(floor, live)]
-        Kc = K[np.ix_(floor, floor)]
-        scale = np.ones(live.size)
-        solve: Callable[[Vector], Vector] = _no_live_dofs
-        if live.size:
-            import scipy.sparse
-            import scipy.sparse.linalg
-
-            Kss = K[np.ix_(live, live)]
-            # equilibrate rows and columns by the diagonal so that the pivots compare DOFs
-            # of different units; a pivot 1e-13 below the largest: no unique equilibrium.
-            # (A sparse LU, SuperLU's: a frame's K_ss has a few entries a row; dense LAPACK
-            # took 14 ms for a 306-DOF frame on a loaded 2-core machine, SuperLU 0.5 ms.)
-            scale = np.sqrt(np.maximum(np.abs(np.diag(Kss)), np.max(np.abs(Kss)) * 1e-30))
-            Kss_scaled = scipy.sparse.csc_matrix(Kss / scale[:, None] / scale[None, :])
-            try:
-                lu = scipy.sparse.linalg.splu(Kss_scaled)
-            except RuntimeError:  # exactly singular
-                lu = None
-            pivots = np.abs(lu.U.diagonal()) if lu is not None else np.zeros(1)
-            if not np.all(np.isfinite(pivots)) or np.min(pivots) <= 1e-13 * np.max(pivots):
-                raise ValueError(f"{self.frame.name}: its joints and member ends have no "
-                                 "unique equilibrium in this configuration of its hinges (a "
-                                 "mechanism without mass); give the hinges some post-yield "
-                                 "stiffness or put a floor mass on the moving part")
-            assert lu is not None
-            solve = _scaled_solver(lu, scale)
-            # (column by column: SuperLU's many-column solve calls a BLAS that threads
-            # badly on a loaded machine)
-            S = np.column_stack([solve(-Kms[i]) for i in range(nf)]) if nf else \
-                np.zeros((live.size, 0))
-            P[live] = S
-            Kc = Kc + Kms @ S
-        fixed = self.node < 0
-        A = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)]) - P[self.end]
-        part = _LinearPart(live, dead, scale, solve, Kms, 0.5 * (Kc + Kc.T), A, P)
-        if len(self._linear_parts) >= LINEAR_PARTS_KEPT:
-            self._linear_parts.pop(next(iter(self._linear_parts)))
-        self._linear_parts[key] = part
-        return part
-
     def one_way(self) -> NDArray[np.bool_]:
         """True for every hinge whose branch depends on the direction it moves."""
-        return np.array([up.k_t != down.k_t for up, down in zip(self._ups, self._downs)],
-                        dtype=bool)
+        return self._k_up != self._k_down
 
     def configure(self, velocity: Vector,
                   acceleration: Vector | Callable[[Configuration], Vector],
@@ -393,7 +309,6 @@ class FrameMotion:
         configuration that choice gives, and flipped until they agree (at most
         ``2 n_h + 2`` times, the pushover's bound)."""
         nh = self.n_hinges
-        ups, downs = self._ups, self._downs
         one_way = self.one_way()
         directions = self.directions.copy()
         directions[~one_way] = 0
@@ -401,9 +316,8 @@ class FrameMotion:
             directions[h] = 1
         cfg = None
         for _ in range(2 * nh + 2):
-            tangents = np.array([down.k_t if d < 0 else up.k_t
-                                 for up, down, d in zip(ups, downs, directions)])
-            cfg = self.condensed(tangents, directions, (ups, downs))
+            tangents = np.where(directions < 0, self._k_down, self._k_up)
+            cfg = self.condensed(tangents, directions)
             if not np.any(one_way):
                 break
             rate = cfg.A @ velocity
@@ -488,17 +402,15 @@ class FrameMotion:
         there (and the time stepper the same event again and again)."""
         cfg = self.config
         assert cfg is not None
-        theta = cfg.A @ (u - self.u_commit) + self.rotations()
+        theta = cfg.A @ (u - self.u_commit) + self._theta
         rate = cfg.A @ velocity
         tol = theta_tol * np.sum(np.abs(cfg.A), axis=1)
-        out: dict[int, float] = {}
-        for h in range(self.n_hinges):
-            down = theta[h] <= cfg.lower[h] + tol[h] and (h == event or rate[h] < 0.0)
-            up = theta[h] >= cfg.upper[h] - tol[h] and (h == event or rate[h] > 0.0)
-            if down:
-                out[h] = float(min(theta[h], cfg.lower[h]))
-            elif up:
-                out[h] = float(max(theta[h], cfg.upper[h]))
+        heading = np.zeros(self.n_hinges, dtype=bool) if event is None else \
+            (np.arange(self.n_hinges) == event)
+        down = (theta <= cfg.lower + tol) & (heading | (rate < 0.0))
+        up = (theta >= cfg.upper - tol) & (heading | (rate > 0.0)) & ~down
+        out = {int(h): float(min(theta[h], cfg.lower[h])) for h in np.flatnonzero(down)}
+        out.update({int(h): float(max(theta[h], cfg.upper[h])) for h in np.flatnonzero(up)})
         return out
 
     def redistribute(self, u: Vector, velocity: Vector, acceleration: Vector,

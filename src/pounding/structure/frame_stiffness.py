@@ -183,14 +183,13 @@ def configuration_stiffness(base: NDArray[np.float64], dofs: FrameDofs,
     """``base`` (elastic + geometric) plus each hinge's spring of tangent ``tangents[h]``
     [N·m/rad] between its node rotation and its member-end rotation."""
     K = base.copy()
-    for h in range(dofs.hinge.size):
-        k = float(tangents[h])
-        a, b = int(dofs.hinge_node[h]), int(dofs.hinge[h])
-        K[b, b] += k
-        if a >= 0:
-            K[a, a] += k
-            K[a, b] -= k
-            K[b, a] -= k
+    k = np.asarray(tangents, dtype=float)
+    a, b = np.asarray(dofs.hinge_node), np.asarray(dofs.hinge)
+    np.add.at(K, (b, b), k)  # (in hinge order, as a loop would add them)
+    on = a >= 0
+    np.add.at(K, (a[on], a[on]), k[on])
+    np.add.at(K, (a[on], b[on]), -k[on])
+    np.add.at(K, (b[on], a[on]), -k[on])
     return K
 
 
