@@ -62,6 +62,12 @@ def render_fragility(folder: Path) -> str:
                 PageSection("gap", "Probability of pounding and the gap", _gap(data, im)),
                 PageSection("counts", "Counts at every stripe", _counts(data)),
                 PageSection("figures", "Figures", _figures(folder))]
+    if data["runs"].get("collapsed"):
+        sections.insert(1, PageSection("collapses", "Runs that collapsed", [
+            Note(f"{data['runs']['collapsed']} run(s) stopped because a frame lost its "
+                 "strength (its hinges' moments dropped to zero); they count as collapses and "
+                 "as exceeding every drift and plastic-rotation limit state."),
+            Pre("\n".join(data["runs"]["collapses"]))]))
     if data["runs"]["failed"]:
         sections.insert(1, PageSection("failures", "Failed runs", [
             Note(f"{data['runs']['failed']} run(s) failed; they are left out of the counts "
