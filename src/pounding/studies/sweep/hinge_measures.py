@@ -10,9 +10,12 @@ along the hinge laws):
 * its **peak plastic rotation** ``max |θ − M/k0|`` [rad]: the rotation less its elastic part,
   ``k0`` the law's elastic stiffness — the plastic rotation angle of ASCE/SEI 41-17's
   modeling parameters and acceptance criteria (Tables 9-7.1 for steel, 10-7 for concrete
-  beams) and of FEMA P-58's component fragilities. Taken at the output steps and at the
-  hinge's located peak rotation (its moment there interpolated linearly between the output
-  steps either side);
+  beams) and of FEMA P-58's component fragilities. Taken at the output steps: a hinge
+  that unloads at ``k0`` (elastic–plastic, bilinear, IMK until its unloading stiffness
+  deteriorates) keeps its plastic rotation on the way back, so the first output step after
+  a peak holds it exactly; an IMK hinge whose unloading stiffness ``K_u`` has dropped loses
+  ``(1 − K_u/k0) Δθ`` of it in the part of a step after the peak (``Δθ`` the rotation in
+  that part of the step, small where the hinge turns back);
 * whether it went **past its capping point**: for a modified Ibarra–Medina–Krawinkler law
   (:class:`pounding.hysteresis.imk_backbone.IMKLaw`), a rotation on either side beyond
   ``min(θ_cap, θ_u)`` of that side, ``θ_cap = θ_y + θ_p`` (``θ_y = M_y/k0``) the capping
@@ -111,17 +114,15 @@ def hinge_peaks(result: Any) -> HingePeaks | None:
     past = np.zeros(n, dtype=bool)
     has_cap = np.zeros(n, dtype=bool)
     for h, law in enumerate(laws):
+        caps = _cap_rotations(law)
+        if caps is None:
+            continue
+        has_cap[h] = True
         th_h = theta[:, h]
         at = float(np.interp(t_peak[h], t, th_h))
         if at == 0.0:  # the located peak between two samples of opposite sign: the larger one
             at = float(th_h[np.argmax(np.abs(th_h))])
         side = 1.0 if at >= 0.0 else -1.0
-        m_at = float(np.interp(t_peak[h], t, moment[:, h]))
-        plastic[h] = max(plastic[h], abs(side * peak[h] - m_at / k0[h]))
-        caps = _cap_rotations(law)
-        if caps is None:
-            continue
-        has_cap[h] = True
         largest_pos = max(float(th_h.max()), peak[h] if side > 0 else 0.0)
         largest_neg = max(float(-th_h.min()), peak[h] if side < 0 else 0.0)
         past[h] = largest_pos > caps[0] or largest_neg > caps[1]
