@@ -231,8 +231,9 @@ def test_frame_fragility_counts_are_those_of_the_runs_made_directly(frame_study)
                    if exceed["collapse (drift > 10 % or a hinge past its cap)"](runs[r, li])),
                   LEVELS[-1]) for r in range(3)]
     assert ls["capacity_g"] == first
+    # collapsed: stopped as the frame lost its strength, or a storey drifted beyond its height
     assert data["runs"]["failed"] == 0 and data["runs"]["collapsed"] == sum(
-        v is None for v in runs.values())
+        v is None or v[0] > 1.0 for v in runs.values())
 
 
 def test_the_table_and_ida_csv_hold_the_hinges_of_every_run(frame_study):
@@ -251,11 +252,13 @@ def test_the_table_and_ida_csv_hold_the_hinges_of_every_run(frame_study):
             assert line["strength_lost"] == 1
             continue
         assert row["status"] == "ok" and not row["strength_lost"]
-        # sampled (by hand) against located (the table): the located peak is the larger
-        assert row["peak_plastic_rotation_rad"] == pytest.approx(v[1], rel=2e-3)
-        assert row["peak_plastic_rotation_rad"] >= v[1] * (1 - 1e-9)
-        assert line["plastic_rotation_rad"] == pytest.approx(row["peak_plastic_rotation_rad"],
-                                                             rel=1e-5)
+        # the table's and by hand: both at the output steps
+        assert row["peak_plastic_rotation_rad"] == pytest.approx(v[1], rel=1e-12)
+        if v[0] > 1.0:  # sidesway collapse: a deformation beyond meaning, +inf in ida.csv
+            assert math.isinf(line["plastic_rotation_rad"]) and math.isinf(line["drift_pct"])
+            assert np.isnan(line["impact_force_MN"])
+            continue
+        assert line["plastic_rotation_rad"] == pytest.approx(v[1], rel=1e-5)
         assert bool(row["hinge_past_cap"]) is v[2] and line["hinge_past_cap"] == int(v[2])
         assert row["peak_drift_ratio"] == pytest.approx(v[0], rel=2e-3)
         assert row["hysteretic_energy_J"] > 0.0 and pd.isna(row["max_residual_drift_m"])
@@ -375,3 +378,81 @@ def test_gap_study_of_frames_is_the_approach_of_a_run_without_contact():
         # the gap study maximises between samples (Hermite): at least the sampled maximum
         assert gs.critical[0, j] == pytest.approx(max(approach, 0.0), rel=1e-4, abs=1e-7)
         assert gs.critical[0, j] >= approach - 1e-12
+
+
+def test_a_collapse_is_the_flatline_of_the_ida_curve():
+    """A run that collapsed (+inf) exceeds any limit; where it is a record's first
+    exceedance its capacity is that level (as for a yes/no demand); a fractile reaching into
+    the collapsed runs is +inf, one below them the type-7 interpolation by hand."""
+    from pounding.studies.fragility.analysis import collapse_exceedance
+    from pounding.studies.fragility.ida import capacities, ida_fractiles
+
+    levels = [0.2, 0.4, 0.8]
+    edp = np.array([[0.01, np.inf, np.inf],     # collapses at 0.4 before reaching 0.02
+                    [0.01, 0.015, 0.03],        # crosses 0.02 by interpolation
+                    [0.01, np.nan, np.inf]])    # a failed run, then a collapse
+    cap, cen = capacities(levels, edp, 0.02)
+    assert cap.tolist() == pytest.approx([0.4, 0.4 + (0.02 - 0.015) / 0.015 * 0.4, 0.8],
+                                         rel=1e-12)
+    assert not cen.any()
+    f = ida_fractiles(edp, (0.16, 0.5, 0.84))
+    assert f[:, 0] == pytest.approx([0.01, 0.01, 0.01])
+    # level 0.4: {0.015, inf}: 16 % at h = 0.16 → 0.015 + 0.16 (inf − 0.015) = inf
+    assert np.isinf(f[:, 1]).all()
+    # level 0.8: {0.03, inf, inf}: h = 0.32 → inf; with four runs {0.01, 0.02, 0.03, inf}
+    four = np.array([[0.01], [0.02], [0.03], [np.inf]])
+    g = ida_fractiles(four, (0.16, 0.5, 0.84))
+    assert g[:2, 0] == pytest.approx([0.01 + 0.48 * 0.01, 0.02 + 0.5 * 0.01], rel=1e-12)
+    assert np.isinf(g[2, 0])
+    drift = np.array([[0.05, np.nan, np.inf, 0.12]])
+    assert collapse_exceedance(drift, 0.10).tolist()[0][:1] == [0.0]
+    got = collapse_exceedance(drift, 0.10, past_cap=np.array([[1.0, np.nan, np.nan, 0.0]]),
+                              strength_lost=np.array([[0.0, np.nan, 1.0, 0.0]]))
+    assert got[0, 0] == 1.0 and np.isnan(got[0, 1]) and got[0, 2] == 1.0 and got[0, 3] == 1.0
+
+
+def test_collapsed_runs_in_the_demand_table():
+    """From a sweep's table: a run stopped as its frame lost its strength and a run whose
+    storey drifted beyond its height (sidesway collapse) have +inf deformation demands and
+    no forces; the sidesway run keeps whether it pounded; a run that failed otherwise is
+    NaN throughout and listed as failed."""
+    from types import SimpleNamespace
+
+    from pounding.studies.fragility.analysis import collapse_exceedance, demand_table
+
+    cases = SimpleNamespace(gaps=[None], records=["a", "b"], levels=[0.1, 0.2],
+                            rows=[(0, 0, 0), (0, 1, 0), (1, 0, 0), (1, 1, 0)], sweep=None)
+    nan = float("nan")
+    table = pd.DataFrame({
+        "case_index": [0, 1, 2, 3], "status": ["ok", "error", "ok", "error"],
+        "error": [None, "frame: its hinges' moments keep jumping (fractures cascading) ...",
+                  None, "solver: something else"],
+        "n_impacts": [0, None, 3, None], "peak_contact_force_N": [0.0, nan, 1e15, nan],
+        "peak_drift_ratio": [0.01, nan, 5.0, nan], "peak_floor_accel_m_s2": [1.0, nan, 1e9, nan],
+        "max_ductility": [nan] * 4, "peak_hinge_rotation_rad": [0.006, nan, 5.0, nan],
+        "peak_plastic_rotation_rad": [0.005, nan, 5.0, nan],
+        "hinge_past_cap": [False, None, True, None], "strength_lost": [False, True, False, None]})
+    demands, failures, hinges = demand_table(cases, table)
+    inf = math.inf
+    assert demands["drift"][0].tolist() == [[0.01, inf], [inf, pytest.approx(nan, nan_ok=True)]]
+    assert demands["plastic_rotation"][0, :, 1].tolist()[0] == inf
+    assert demands["plastic_rotation"][0, 1, 0] == inf
+    assert np.isnan(demands["impact_force"][0, 1, 0]) and np.isnan(demands["impact_force"][0, 0, 1])
+    assert demands["pounding"][0, 1, 0] == 1.0 and np.isnan(demands["impacts"][0, 1, 0])
+    assert failures == ["b at 0.2 g: solver: something else"]
+    assert [c.split(":")[0] for c in hinges.collapses] == ["a at 0.2 g", "b at 0.1 g"]
+    assert "sidesway collapse" in hinges.collapses[1]
+    got = collapse_exceedance(demands["drift"][0], 0.10, hinges.past_cap[0],
+                              hinges.strength_lost[0])
+    assert got[0].tolist() == [0.0, 1.0] and got[1, 0] == 1.0 and np.isnan(got[1, 1])
+
+
+def test_the_frame_fragility_example_is_a_study_of_90_runs(tmp_path):
+    from pounding.studies.fragility import study_cases
+
+    cases = study_cases(ROOT / "examples" / "fragility_imk_frame.toml", out=tmp_path / "o")
+    assert len(cases.sweep.cases) == 90 and len(cases.records) == 9
+    assert [ls.demand for ls in cases.config.limit_state] == [
+        "pounding", "plastic_rotation", "drift", "collapse"]
+    assert cases.periods[0] == pytest.approx(0.55, abs=0.005)  # Sa(0.55 s): the frame's T1
+    assert not (tmp_path / "o").exists()

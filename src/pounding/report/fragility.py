@@ -64,9 +64,11 @@ def render_fragility(folder: Path) -> str:
                 PageSection("figures", "Figures", _figures(folder))]
     if data["runs"].get("collapsed"):
         sections.insert(1, PageSection("collapses", "Runs that collapsed", [
-            Note(f"{data['runs']['collapsed']} run(s) stopped because a frame lost its "
-                 "strength (its hinges' moments dropped to zero); they count as collapses and "
-                 "as exceeding every drift and plastic-rotation limit state."),
+            Note(f"{data['runs']['collapsed']} run(s) collapsed: a frame lost its strength "
+                 "(its hinges' moments dropped to zero and the run stopped), or a storey drifted "
+                 "by more than its own height (sidesway collapse); they count as collapses and "
+                 "as exceeding every drift and plastic-rotation limit state, their forces and "
+                 "accelerations are left out."),
             Pre("\n".join(data["runs"]["collapses"]))]))
     if data["runs"]["failed"]:
         sections.insert(1, PageSection("failures", "Failed runs", [

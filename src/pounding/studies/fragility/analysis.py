@@ -33,8 +33,8 @@ from pounding.studies.fragility.gaps import NeededGaps
 from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
 from pounding.studies.fragility.study import LimitStateSpec
 
-__all__ = ["FragilityAnalysis", "GapAnalysis", "HingeRuns", "LimitStateResult", "analyse",
-           "collapse_exceedance", "demand_table"]
+__all__ = ["SIDESWAY_DRIFT", "FragilityAnalysis", "GapAnalysis", "HingeRuns",
+           "LimitStateResult", "analyse", "collapse_exceedance", "demand_table"]
 
 FloatArray = NDArray[np.float64]
 
@@ -159,13 +159,31 @@ class HingeRuns:
         (:mod:`pounding.studies.sweep.hinge_measures`).
     strength_lost : ndarray
         The run stopped because a frame lost its strength: a collapse, not a failed run.
+    sidesway : ndarray
+        The run went on but a storey drifted by more than :data:`SIDESWAY_DRIFT` of its
+        height: a sidesway collapse followed past the model's meaning.
     collapses : list of str
-        One line per run that stopped so: record, level, message.
+        One line per run that collapsed so (either way): record, level, what happened.
     """
 
     past_cap: FloatArray
     strength_lost: FloatArray
+    sidesway: FloatArray
     collapses: list[str]
+
+    @property
+    def collapsed(self) -> NDArray[np.bool_]:
+        """Runs that stopped as a frame lost its strength or collapsed sideways."""
+        return (self.strength_lost > 0.5) | (self.sidesway > 0.5)
+
+
+SIDESWAY_DRIFT = 1.0
+"""A peak storey drift ratio beyond which a run of a model with plastic hinges is a sidesway
+collapse: the storey moved by more than its own height. A frame whose hinges have lost their
+strength under gravity (P-Delta) keeps moving away, and the run goes on to displacements of
+kilometres that mean nothing (the model's geometry is that of small displacements): its
+deformation demands are +inf, its forces, accelerations and number of impacts left out
+(NaN), as for a run that stopped; whether it pounded is kept."""
 
 
 def _where(cases: StudyCases, r: int, li: int, g: int) -> str:
@@ -179,8 +197,9 @@ def demand_table(cases: StudyCases, table: Any
     """The demands of every run as arrays (n_gaps, n_records, n_levels) [SI], one line
     per failed run, and the hinges' part (None without plastic hinges).
 
-    A run that stopped because a frame lost its strength (``strength_lost`` in the table) is
-    a collapse, not a failure: its deformation demands (those
+    A run that stopped because a frame lost its strength (``strength_lost`` in the table),
+    or a run of a model with plastic hinges whose peak storey drift ratio exceeds
+    :data:`SIDESWAY_DRIFT`, is a collapse, not a failure: its deformation demands (those
     :attr:`~pounding.result.demands.Demand.exceeded_by_collapse`: drift, plastic rotation)
     are +inf — the flatline of its IDA curve (Vamvatsikos & Cornell 2002) — and the others
     NaN, as for a failed run."""
@@ -193,6 +212,10 @@ def demand_table(cases: StudyCases, table: Any
     has_hinges = "strength_lost" in df.columns
     lost = (df["strength_lost"].fillna(False).to_numpy(dtype=bool) & ~ok if has_hinges
             else np.zeros(ok.shape, dtype=bool))
+    drift = df["peak_drift_ratio"].to_numpy(dtype=float, na_value=np.nan)
+    with np.errstate(invalid="ignore"):
+        sidesway = ok & (drift > SIDESWAY_DRIFT) if has_hinges else np.zeros(ok.shape, bool)
+    collapsed = lost | sidesway
 
     def grid(col: NDArray[np.float64]) -> FloatArray:
         a = np.full((ng, nr, nl), np.nan)
@@ -209,9 +232,11 @@ def demand_table(cases: StudyCases, table: Any
         col = df[_COLUMNS[key]].to_numpy(dtype=float, na_value=np.nan)
         if key == "pounding":
             col = np.where(np.isnan(col), np.nan, (col > 0).astype(float))
-        col = np.where(ok, col, np.nan)
+        # a sidesway collapse did pound or not (the buildings met, or never did), but its
+        # other numbers are those of a motion past the model's meaning
+        col = np.where(ok & (~sidesway | (key == "pounding")), col, np.nan)
         if DEMANDS[key].exceeded_by_collapse:
-            col = np.where(lost, np.inf, col)
+            col = np.where(collapsed, np.inf, col)
         out[key] = grid(col)
     failures = [f"{_where(cases, r, li, g)}: {msg}"
                 for (r, li, g), good, gone, msg in zip(cases.rows, ok, lost, df["error"])
@@ -219,11 +244,14 @@ def demand_table(cases: StudyCases, table: Any
     hinges = None
     if has_hinges:
         cap = df["hinge_past_cap"].to_numpy(dtype=float, na_value=np.nan)
+        what = [msg if gone else f"peak storey drift ratio {100 * d:.3g} % (sidesway collapse)"
+                for gone, d, msg in zip(lost, drift, df["error"])]
         hinges = HingeRuns(
             past_cap=grid(np.where(ok, cap, np.nan)),
             strength_lost=grid(np.where(ok | lost, lost.astype(float), np.nan)),
-            collapses=[f"{_where(cases, r, li, g)}: {msg}"
-                       for (r, li, g), gone, msg in zip(cases.rows, lost, df["error"]) if gone])
+            sidesway=grid(np.where(ok | lost, sidesway.astype(float), np.nan)),
+            collapses=[f"{_where(cases, r, li, g)}: {w}"
+                       for (r, li, g), c, w in zip(cases.rows, collapsed, what) if c])
     return out, failures, hinges
 
 
@@ -273,7 +301,7 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
     # a record counts when one of its runs finished, or stopped as its frame collapsed
     ran = np.isfinite(demands["pounding"])
     if hinges is not None:
-        ran |= hinges.strength_lost > 0.5
+        ran |= hinges.collapsed
     has_run: NDArray[np.bool_] = np.any(ran, axis=(0, 2))
     n_kept = int(has_run.sum())
     if n_kept < 2:
