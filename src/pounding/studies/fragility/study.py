@@ -90,8 +90,8 @@ class IntensitySpec(Section):
 COLLAPSE_DRIFT = 10.0
 """Default drift limit of the ``collapse`` demand [%]: the global collapse-prevention limit of
 FEMA-350 (SAC 2000) for steel moment frames, 10 % interstorey drift, which Vamvatsikos &
-Cornell (2002, §6) take as the collapse capacity of an IDA curve that has not flattened
-before it."""
+Cornell (2002) take as the collapse capacity of an IDA curve that has not flattened before
+it."""
 
 
 class LimitStateSpec(Section):

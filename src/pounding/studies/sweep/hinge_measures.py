@@ -9,8 +9,8 @@ along the hinge laws):
   ``hinge_peak_rotation``);
 * its **peak plastic rotation** ``max |θ − M/k0|`` [rad]: the rotation less its elastic part,
   ``k0`` the law's elastic stiffness — the plastic rotation angle of ASCE/SEI 41-17's
-  modeling parameters and acceptance criteria (Tables 9-7.1 for steel, 10-7 for concrete
-  beams) and of FEMA P-58's component fragilities. Taken at the output steps: a hinge
+  modeling parameters and acceptance criteria for nonlinear procedures (Table 9-7.1 for
+  structural steel components). Taken at the output steps: a hinge
   that unloads at ``k0`` (elastic–plastic, bilinear, IMK until its unloading stiffness
   deteriorates) keeps its plastic rotation on the way back, so the first output step after
   a peak holds it exactly; an IMK hinge whose unloading stiffness ``K_u`` has dropped loses
