@@ -7,6 +7,7 @@ from pathlib import Path
 
 from pounding.integrate import default_step_budget
 from pounding.result import ENERGY_NAMES
+from pounding.studies.sweep.hinge_measures import HINGE_MEASURES
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
@@ -28,9 +29,12 @@ def test_the_sweep_table_lists_every_column_in_the_order_written() -> None:
     assert names[2] == "one per parameter"
     assert names[3:5] == ["status", "error"]
     assert names[5:5 + len(MEASURES)] == list(MEASURES)
+    # then, for a model with plastic hinges only, their columns
+    after = 5 + len(MEASURES)
+    assert names[after:after + len(HINGE_MEASURES)] == list(HINGE_MEASURES)
     assert floor == list(FLOOR_MEASURES)
     assert names[-1] == "wall_time_s"
-    assert len(names) == 5 + len(MEASURES) + len(FLOOR_MEASURES) + 1
+    assert len(names) == 5 + len(MEASURES) + len(HINGE_MEASURES) + len(FLOOR_MEASURES) + 1
 
 
 def test_every_energy_term_is_named_where_the_docs_list_them() -> None:

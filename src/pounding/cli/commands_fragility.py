@@ -82,6 +82,11 @@ def _print(res: Any) -> None:
                          f"{ga.beta:.3f})",
                 [Col("gap from", "left", wrap=True), Col("gap [mm]"), Col("P(pounding), records"),
                  Col("P(pounding), lognormal")], gap_rows)
+    if a.hinges is not None and a.hinges.collapses:
+        console.print(Text(f"{len(a.hinges.collapses)} run(s) collapsed (a frame lost its "
+                           "strength, or a storey drifted by more than its height): counted as "
+                           "collapses and as exceeding every drift and plastic-rotation limit "
+                           f"(first: {a.hinges.collapses[0]})"))
     if a.n_failed:
         console.print(Text.assemble((f"{a.n_failed} run(s) failed", "red"),
                                     f": see results.parquet (first: {a.failures[0]})"))

@@ -62,6 +62,14 @@ def render_fragility(folder: Path) -> str:
                 PageSection("gap", "Probability of pounding and the gap", _gap(data, im)),
                 PageSection("counts", "Counts at every stripe", _counts(data)),
                 PageSection("figures", "Figures", _figures(folder))]
+    if data["runs"].get("collapsed"):
+        sections.insert(1, PageSection("collapses", "Runs that collapsed", [
+            Note(f"{data['runs']['collapsed']} run(s) collapsed: a frame lost its strength "
+                 "(its hinges' moments dropped to zero and the run stopped), or a storey drifted "
+                 "by more than its own height (sidesway collapse); they count as collapses and "
+                 "as exceeding every drift and plastic-rotation limit state, their forces and "
+                 "accelerations are left out."),
+            Pre("\n".join(data["runs"]["collapses"]))]))
     if data["runs"]["failed"]:
         sections.insert(1, PageSection("failures", "Failed runs", [
             Note(f"{data['runs']['failed']} run(s) failed; they are left out of the counts "

@@ -206,14 +206,22 @@ def measure_row(result: "Result") -> dict[str, float]:
         "n_pad_impacts": int(counts[pads].sum()),
         "peak_pad_force_N": float(pcf[pads].max()) if pads.any() else 0.0,
         # storeys only: NaN under a base slab (its bearing) and where there is no storey
-        "peak_drift_ratio": float(np.nanmax(result.peak_drift_ratio)),
-        "peak_storey_shear_N": float(np.nanmax(result.peak_storey_shear[~result.is_bearing])),
+        # shear (buildings given as matrices, frames): NaN when no building has one
+        "peak_drift_ratio": _largest(result.peak_drift_ratio),
+        "peak_storey_shear_N": _largest(result.peak_storey_shear[~result.is_bearing]),
         "peak_abs_accel_m_s2": float(np.max(result.peak_abs_acceleration)),
         "contact_dissipated_J": float(np.nansum(diss[~pads])),
         "pads_dissipated_J": float(np.nansum(diss[pads])),
         "links_dissipated_J": float(result.energy[-1, 7]) if links else 0.0,
         "peak_link_force_N": float(result.link_peak_force.max()) if links else 0.0,
     }
+
+
+def _largest(values: Any) -> float:
+    """The largest value that is not NaN; NaN if there is none (no warning)."""
+    v = np.asarray(values, dtype=float)
+    v = v[~np.isnan(v)]
+    return float(v.max()) if v.size else float("nan")
 
 
 def summarise(table: "pd.DataFrame") -> "pd.DataFrame":

@@ -33,15 +33,18 @@ from pounding.studies.fragility.gaps import NeededGaps
 from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
 from pounding.studies.fragility.study import LimitStateSpec
 
-__all__ = ["FragilityAnalysis", "GapAnalysis", "LimitStateResult", "analyse",
-           "demand_table"]
+__all__ = ["SIDESWAY_DRIFT", "FragilityAnalysis", "GapAnalysis", "HingeRuns",
+           "LimitStateResult", "analyse", "collapse_exceedance", "demand_table"]
 
 FloatArray = NDArray[np.float64]
 
 _COLUMNS = {"pounding": "n_impacts", "impacts": "n_impacts",
             "impact_force": "peak_contact_force_N", "drift": "peak_drift_ratio",
-            "acceleration": "peak_floor_accel_m_s2", "ductility": "max_ductility"}
-"""The column of the sweep's table each demand is read from (SI units)."""
+            "acceleration": "peak_floor_accel_m_s2", "ductility": "max_ductility",
+            "plastic_rotation": "peak_plastic_rotation_rad"}
+"""The column of the sweep's table each demand is read from (SI units). ``collapse`` is
+made of three: ``hinge_past_cap``, ``peak_drift_ratio`` and ``strength_lost``
+(:func:`collapse_exceedance`)."""
 
 
 @dataclass(frozen=True)
@@ -129,7 +132,8 @@ class FragilityAnalysis:
     gaps: list[float | None]
     demands: dict[str, FloatArray]
     """Demand [SI] per key of :data:`~pounding.result.demands.DEMANDS` shown:
-    shape (n_gaps, n_records, n_levels), NaN for a failed run."""
+    shape (n_gaps, n_records, n_levels), NaN for a failed run, +inf for a deformation of a
+    run whose frame lost its strength (:func:`demand_table`)."""
     fractiles: dict[str, FloatArray]
     """16/50/84 % fractiles of each demand [SI]: (n_gaps, 3, n_levels)."""
     limit_states: list[LimitStateResult]
@@ -138,33 +142,143 @@ class FragilityAnalysis:
     n_failed: int
     failures: list[str]
     """One line per failed run: record, level, message."""
+    hinges: HingeRuns | None = None
+    """What the frames' plastic hinges did in every run (None: a model without them)."""
 
 
-def demand_table(cases: StudyCases, table: Any) -> tuple[dict[str, FloatArray], list[str]]:
-    """The demands of every run as arrays (n_gaps, n_records, n_levels) [SI], and one line
-    per failed run."""
+@dataclass(frozen=True)
+class HingeRuns:
+    """The plastic hinges of every run of a study whose model has them, each array
+    (n_gaps, n_records, n_levels): 1.0 / 0.0, NaN for a failed run (or, for ``past_cap``,
+    a model without IMK hinges).
+
+    Attributes
+    ----------
+    past_cap : ndarray
+        A hinge went past its IMK capping (or ultimate) rotation
+        (:mod:`pounding.studies.sweep.hinge_measures`).
+    strength_lost : ndarray
+        The run stopped because a frame lost its strength: a collapse, not a failed run.
+    sidesway : ndarray
+        The run went on but a storey drifted by more than :data:`SIDESWAY_DRIFT` of its
+        height: a sidesway collapse followed past the model's meaning.
+    collapses : list of str
+        One line per run that collapsed so (either way): record, level, what happened.
+    """
+
+    past_cap: FloatArray
+    strength_lost: FloatArray
+    sidesway: FloatArray
+    collapses: list[str]
+
+    @property
+    def collapsed(self) -> NDArray[np.bool_]:
+        """Runs that stopped as a frame lost its strength or collapsed sideways."""
+        return (self.strength_lost > 0.5) | (self.sidesway > 0.5)
+
+
+SIDESWAY_DRIFT = 1.0
+"""A peak storey drift ratio beyond which a run of a model with plastic hinges is a sidesway
+collapse: the storey moved by more than its own height. A frame whose hinges have lost their
+strength under gravity (P-Delta) keeps moving away, and the run goes on to displacements of
+kilometres that mean nothing (the model's geometry is that of small displacements): its
+deformation demands are +inf, its forces, accelerations and number of impacts left out
+(NaN), as for a run that stopped; whether it pounded is kept."""
+
+
+def _where(cases: StudyCases, r: int, li: int, g: int) -> str:
+    """A run named by its record, level and gap."""
+    return (f"{cases.records[r]} at {cases.levels[li]:g} g"
+            + (f", gap {cases.gaps[g]:g} m" if cases.gaps[g] is not None else ""))
+
+
+def demand_table(cases: StudyCases, table: Any
+                 ) -> tuple[dict[str, FloatArray], list[str], HingeRuns | None]:
+    """The demands of every run as arrays (n_gaps, n_records, n_levels) [SI], one line
+    per failed run, and the hinges' part (None without plastic hinges).
+
+    A run that stopped because a frame lost its strength (``strength_lost`` in the table),
+    or a run of a model with plastic hinges whose peak storey drift ratio exceeds
+    :data:`SIDESWAY_DRIFT`, is a collapse, not a failure: its deformation demands (those
+    :attr:`~pounding.result.demands.Demand.exceeded_by_collapse`: drift, plastic rotation)
+    are +inf — the flatline of its IDA curve (Vamvatsikos & Cornell 2002) — and the others
+    NaN, as for a failed run."""
     ng, nr, nl = len(cases.gaps), len(cases.records), len(cases.levels)
     df = table.sort_values("case_index")
     if len(df) != len(cases.rows):
         raise ValueError(f"results: {len(df)} rows for {len(cases.rows)} runs of the study")
     ok = (df["status"] == "ok").to_numpy()
     idx = np.array(cases.rows)
+    has_hinges = "strength_lost" in df.columns
+    lost = (df["strength_lost"].fillna(False).to_numpy(dtype=bool) & ~ok if has_hinges
+            else np.zeros(ok.shape, dtype=bool))
+    drift = df["peak_drift_ratio"].to_numpy(dtype=float, na_value=np.nan)
+    with np.errstate(invalid="ignore"):
+        sidesway = ok & (drift > SIDESWAY_DRIFT) if has_hinges else np.zeros(ok.shape, bool)
+    collapsed = lost | sidesway
+
+    def grid(col: NDArray[np.float64]) -> FloatArray:
+        a = np.full((ng, nr, nl), np.nan)
+        a[idx[:, 2], idx[:, 0], idx[:, 1]] = col
+        return a
+
     out: dict[str, FloatArray] = {}
     keys = ["pounding", "impacts", "impact_force", "drift", "acceleration"]
     if cases.sweep is not None and df["max_ductility"].notna().any():
         keys.append("ductility")
+    if has_hinges:
+        keys.append("plastic_rotation")
     for key in keys:
         col = df[_COLUMNS[key]].to_numpy(dtype=float, na_value=np.nan)
         if key == "pounding":
             col = np.where(np.isnan(col), np.nan, (col > 0).astype(float))
-        a = np.full((ng, nr, nl), np.nan)
-        a[idx[:, 2], idx[:, 0], idx[:, 1]] = np.where(ok, col, np.nan)
-        out[key] = a
-    failures = [f"{cases.records[r]} at {cases.levels[li]:g} g"
-                + (f", gap {cases.gaps[g]:g} m" if cases.gaps[g] is not None else "")
-                + f": {msg}"
-                for (r, li, g), good, msg in zip(cases.rows, ok, df["error"]) if not good]
-    return out, failures
+        # a sidesway collapse did pound or not (the buildings met, or never did), but its
+        # other numbers are those of a motion past the model's meaning
+        col = np.where(ok & (~sidesway | (key == "pounding")), col, np.nan)
+        if DEMANDS[key].exceeded_by_collapse:
+            col = np.where(collapsed, np.inf, col)
+        out[key] = grid(col)
+    failures = [f"{_where(cases, r, li, g)}: {msg}"
+                for (r, li, g), good, gone, msg in zip(cases.rows, ok, lost, df["error"])
+                if not good and not gone]
+    hinges = None
+    if has_hinges:
+        cap = df["hinge_past_cap"].to_numpy(dtype=float, na_value=np.nan)
+        what = [msg if gone else f"peak storey drift ratio {100 * d:.3g} % (sidesway collapse)"
+                for gone, d, msg in zip(lost, drift, df["error"])]
+        hinges = HingeRuns(
+            past_cap=grid(np.where(ok, cap, np.nan)),
+            strength_lost=grid(np.where(ok | lost, lost.astype(float), np.nan)),
+            sidesway=grid(np.where(ok | lost, sidesway.astype(float), np.nan)),
+            collapses=[f"{_where(cases, r, li, g)}: {w}"
+                       for (r, li, g), c, w in zip(cases.rows, collapsed, what) if c])
+    return out, failures, hinges
+
+
+def collapse_exceedance(drift: FloatArray, drift_limit: float,
+                        past_cap: FloatArray | None = None,
+                        strength_lost: FloatArray | None = None) -> FloatArray:
+    """Whether each run collapsed (1.0), did not (0.0) or failed (NaN): a hinge past its IMK
+    capping rotation, a peak storey drift ratio above ``drift_limit`` (a ratio, not %), or a
+    run stopped because a frame lost its strength.
+
+    Parameters
+    ----------
+    drift : ndarray
+        Peak storey drift ratio of every run (+inf where the frame lost its strength, NaN
+        where the run failed).
+    drift_limit : float
+        The drift ratio beyond which a run is a collapse.
+    past_cap, strength_lost : ndarray, optional
+        Of the same shape, 1.0 where a hinge went past its cap / the run stopped as its
+        frame lost its strength (:class:`HingeRuns`); None without plastic hinges.
+    """
+    out = np.where(np.isnan(drift), np.nan, (drift > drift_limit).astype(float))
+    if past_cap is not None:
+        out = np.where(np.nan_to_num(past_cap, nan=0.0) > 0.5, 1.0, out)
+    if strength_lost is not None:
+        out = np.where(strength_lost > 0.5, 1.0, out)
+    return out
 
 
 def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysis:
@@ -180,11 +294,15 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
     """
     cfg = cases.config
     levels = np.asarray(cases.levels, dtype=float)
-    demands, failures = demand_table(cases, table)
+    demands, failures, hinges = demand_table(cases, table)
     fractiles = {k: np.stack([ida_fractiles(v[g]) for g in range(v.shape[0])])
                  for k, v in demands.items()}
     bs = cfg.bootstrap
-    has_run: NDArray[np.bool_] = np.any(np.isfinite(demands["pounding"]), axis=(0, 2))
+    # a record counts when one of its runs finished, or stopped as its frame collapsed
+    ran = np.isfinite(demands["pounding"])
+    if hinges is not None:
+        ran |= hinges.collapsed
+    has_run: NDArray[np.bool_] = np.any(ran, axis=(0, 2))
     n_kept = int(has_run.sum())
     if n_kept < 2:
         raise ValueError("runs: fewer than two records have a successful run; see the "
@@ -194,10 +312,17 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
     for gi, g in enumerate(cases.gaps):
         for ls in cfg.limit_state:
             d = DEMANDS[ls.demand]
-            if ls.demand not in demands:
+            if ls.demand == "collapse":
+                v = collapse_exceedance(
+                    demands["drift"][gi], ls.collapse_drift_percent / 100.0,
+                    *((hinges.past_cap[gi], hinges.strength_lost[gi]) if hinges else ()))
+                v = v[has_run]
+            elif ls.demand not in demands:
                 raise ValueError(f"limit_state: demand \"{ls.demand}\" has no value in the "
-                                 "runs (ductility needs yielding storeys)")
-            v = demands[ls.demand][gi][has_run]
+                                 "runs (ductility needs yielding storeys, a plastic rotation "
+                                 "plastic hinges)")
+            else:
+                v = demands[ls.demand][gi][has_run]
             exceed = np.where(np.isnan(v), np.nan, (v > ls.limit_si).astype(float))
             n_runs, n_exc = exceedance_counts(exceed)
             cap, cen = capacities(levels, exceed if d.binary else v, ls.limit_si,
@@ -208,7 +333,8 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
                 fit_from_capacities(cap, cen, boot, bs.confidence)))
     gap = _gap_analysis(cases, gaps, demands, boot[:, :], has_run)
     return FragilityAnalysis(cases, levels, list(cases.records), list(cases.gaps), demands,
-                             fractiles, results, gap, len(cases.rows), len(failures), failures)
+                             fractiles, results, gap, len(cases.rows), len(failures), failures,
+                             hinges)
 
 
 def _gap_analysis(cases: StudyCases, ng: NeededGaps, demands: dict[str, FloatArray],

@@ -182,11 +182,7 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
                          + (" (a moat wall is not supported here yet: pounding gap gives the "
                             "moat width a record needs, pounding sweep over wall.gap the rest)"
                             if model.walls else ""))
-    for i, ls in enumerate(cfg.limit_state):
-        if ls.demand == "ductility" and not model.is_inelastic:
-            raise ValueError(f"{where}: limit_state[{i}].demand: \"ductility\" needs yielding "
-                             f"storeys, and the buildings of {cfg.base} are linear (got "
-                             "'ductility')")
+    _check_demands(cfg, model, where)
     periods = [float(fundamental_mode(b)[0]) for b in model.buildings]
     try:
         names, key, sources = _suite(cfg, here)
@@ -261,6 +257,25 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     cases.sweep.source = source
     cases.rows = rows
     return cases
+
+
+def _check_demands(cfg: StudyConfig, model: Any, where: str) -> None:
+    """Refuse, in one line, a limit state on a demand the base model cannot have: storey
+    ductility without yielding storeys, a plastic rotation without plastic hinges, collapse
+    of buildings that stay linear."""
+    hinges = bool(model.yielding_frames)
+    for i, ls in enumerate(cfg.limit_state):
+        what = None
+        if ls.demand == "ductility" and not model.is_inelastic:
+            what = "yielding storeys"
+        elif ls.demand == "plastic_rotation" and not hinges:
+            what = "a frame with plastic hinges (building.frame with column_hinge / beam_hinge)"
+        elif ls.demand == "collapse" and not (hinges or model.is_inelastic):
+            what = "yielding storeys or a frame with plastic hinges"
+        if what is not None:
+            state = "have no plastic hinges" if ls.demand == "plastic_rotation" else "are linear"
+            raise ValueError(f"{where}: limit_state[{i}].demand: \"{ls.demand}\" needs {what}, "
+                             f"and the buildings of {cfg.base} {state} (got '{ls.demand}')")
 
 
 def _out_folder(cfg: StudyConfig, here: Path, out: str | os.PathLike[str] | None,

@@ -40,7 +40,10 @@ class NeededGaps:
     scaled : bool
         True where the needed gaps at the levels were scaled from those at ``at`` (linear
         buildings: the uncoupled response is proportional to the record), False where
-        every level was simulated (yielding storeys).
+        every level was simulated (yielding storeys, frames with plastic hinges).
+    stopped : tuple of str
+        One line per record and level whose uncoupled runs stopped (a frame that lost its
+        strength): its needed gap is NaN, left out of the gap analysis.
     """
 
     levels: FloatArray
@@ -49,6 +52,7 @@ class NeededGaps:
     needed_at: FloatArray
     code: dict[str, float]
     scaled: bool
+    stopped: tuple[str, ...] = ()
 
 
 def needed_gaps(cases: StudyCases) -> NeededGaps:
@@ -58,26 +62,57 @@ def needed_gaps(cases: StudyCases) -> NeededGaps:
     For linear buildings one uncoupled run per building and record at ``at`` gives every
     level: the response to ``λ a_g(t)`` is ``λ`` times that to ``a_g(t)``, so the needed
     gap is proportional to the scale factor, which is proportional to the level. Buildings
-    with yielding storeys are simulated at every level.
+    with yielding storeys and frames with plastic hinges are simulated at every level; a
+    record whose uncoupled run stops there (a frame that lost its strength, or any other
+    error of the run) needs an unknown gap (NaN, :attr:`NeededGaps.stopped`), unless every
+    record stops at ``at``: then the first error is raised.
     """
-    from pounding.studies.gap import critical_gaps
-
     at = float(cases.config.gap_at())
     levels = np.asarray(cases.levels, dtype=float)
-
-    def study_at(level: float) -> Any:
-        built = [cases.build(r, level) for r in range(len(cases.records))]
-        model, _, solver = built[0]
-        return critical_gaps(model, [b.motion for b in built], dt=solver["dt"],
-                             duration=solver["duration"])
-
-    gs = study_at(at)
-    needed_at = gs.critical.max(axis=1)
+    gs, needed_at, stopped = _study_at(cases, at)
     rules = gs.rules_from_peaks("mean")
     code = {k: float(np.max(v)) for k, v in rules.items()}
-    inelastic = gs.model.is_inelastic
+    inelastic = gs.model.is_inelastic or bool(gs.model.yielding_frames)
     if not inelastic:
         needed = needed_at[:, None] * (levels[None, :] / at)
     else:
-        needed = np.column_stack([study_at(float(x)).critical.max(axis=1) for x in levels])
-    return NeededGaps(levels, needed, at, needed_at, code, scaled=not inelastic)
+        columns = []
+        for x in levels:
+            _, column, more = _study_at(cases, float(x), every_record_may_stop=True)
+            columns.append(column)
+            stopped += more
+        needed = np.column_stack(columns)
+    return NeededGaps(levels, needed, at, needed_at, code, scaled=not inelastic,
+                      stopped=tuple(stopped))
+
+
+def _study_at(cases: StudyCases, level: float, every_record_may_stop: bool = False
+              ) -> tuple[Any, FloatArray, list[str]]:
+    """The gap study of every record at ``level`` (:func:`pounding.studies.gap.critical_gaps`),
+    each record's needed gap [m] (NaN where its runs stopped) and one line per record whose
+    runs stopped. The study holds the records that ran (None if none did)."""
+    from pounding.studies.gap import critical_gaps
+
+    built = [cases.build(r, level) for r in range(len(cases.records))]
+    model, _, solver = built[0]
+    kw = {"dt": solver["dt"], "duration": solver["duration"]}
+    try:
+        gs = critical_gaps(model, [b.motion for b in built], **kw)
+        return gs, gs.critical.max(axis=1), []
+    except ValueError as first:
+        if len(built) == 1 and not every_record_may_stop:
+            raise
+        error = first
+    needed = np.full(len(built), np.nan)
+    stopped: list[str] = []
+    for r, b in enumerate(built):  # record by record: which ones stop
+        try:
+            needed[r] = critical_gaps(model, [b.motion], **kw).critical.max()
+        except ValueError as exc:
+            stopped.append(f"{cases.records[r]} at {level:g} g, without contact: {exc}")
+    ran = [b.motion for b, ok in zip(built, np.isfinite(needed)) if ok]
+    if not ran:
+        if every_record_may_stop:
+            return None, needed, stopped
+        raise error
+    return critical_gaps(model, ran, **kw), needed, stopped

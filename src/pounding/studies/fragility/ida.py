@@ -29,7 +29,8 @@ def ida_fractiles(edp: ArrayLike, q: Sequence[float] = FRACTILES) -> FloatArray:
     Parameters
     ----------
     edp : array_like, shape (n_records, n_levels)
-        Demand of each record at each level; NaN for a run that failed (left out).
+        Demand of each record at each level; NaN for a run that failed (left out); +inf for
+        a run that collapsed (the flatline of its IDA curve).
     q : sequence of float
         Fractiles in [0, 1].
 
@@ -38,13 +39,34 @@ def ida_fractiles(edp: ArrayLike, q: Sequence[float] = FRACTILES) -> FloatArray:
     ndarray, shape (len(q), n_levels)
         ``numpy.nanquantile`` with linear interpolation between order statistics
         (Hyndman & Fan's type 7): with 10 records the 16 % fractile lies between the
-        second and third smallest demand. NaN at a level with no run.
+        second and third smallest demand. NaN at a level with no run; +inf where the
+        fractile reaches into the collapsed runs (Vamvatsikos & Cornell 2002, §7: the
+        fractile curve flattens there).
     """
     a = np.asarray(edp, dtype=float)
     out = np.full((len(q), a.shape[1]), np.nan)
-    has = np.isfinite(a).any(axis=0)
+    has = ~np.isnan(a).all(axis=0)
     if has.any():
-        out[:, has] = np.nanquantile(a[:, has], list(q), axis=0)
+        with np.errstate(invalid="ignore"):  # inf − inf, where a fractile lies among +inf
+            out[:, has] = np.nanquantile(a[:, has], list(q), axis=0)
+    for j in np.flatnonzero(has & np.isinf(a).any(axis=0)):
+        out[:, j] = _fractiles_with_infinity(a[:, j], q)
+    return out
+
+
+def _fractiles_with_infinity(values: FloatArray, q: Sequence[float]) -> FloatArray:
+    """Type-7 fractiles of a stripe holding +inf: between two order statistics by linear
+    interpolation, +inf where either of the two is infinite (unless the fractile falls on
+    the finite one exactly)."""
+    v = np.sort(values[~np.isnan(values)])
+    h = (v.size - 1) * np.asarray(q, dtype=float)
+    lo = np.floor(h).astype(int)
+    hi = np.ceil(h).astype(int)
+    frac = h - lo
+    out = np.empty(h.size)
+    for k in range(h.size):
+        a, b = v[lo[k]], v[hi[k]]
+        out[k] = a if frac[k] == 0.0 else (np.inf if np.isinf(b) else a + frac[k] * (b - a))
     return out
 
 
@@ -60,14 +82,18 @@ def capacities(levels: ArrayLike, edp: ArrayLike, limit: float, *, binary: bool 
     exceeded (the capacity lies between that level and the one before). A record that
     never exceeds it up to the highest level is right-censored there. Later levels at
     which the curve comes back below the limit ("resurrection") are ignored: the first
-    exceedance counts. Failed runs (NaN) are left out of the curve.
+    exceedance counts. Failed runs (NaN) are left out of the curve. A run that collapsed
+    (+inf: the curve's flatline) exceeds any limit; where it is the first exceedance the
+    capacity is its level, as for a binary demand (the collapse lies between that level
+    and the one before).
 
     Parameters
     ----------
     levels : array_like, shape (n_levels,)
         Intensities (> 0), any order.
     edp : array_like, shape (n_records, n_levels)
-        Demands (for ``binary``: 1 where exceeded, 0 where not).
+        Demands (for ``binary``: 1 where exceeded, 0 where not); NaN for a failed run,
+        +inf for one that collapsed.
     limit : float
         Exceedance is ``edp > limit`` (for ``binary``: ``edp > 0.5``).
 
@@ -87,7 +113,7 @@ def capacities(levels: ArrayLike, edp: ArrayLike, limit: float, *, binary: bool 
     cap = np.full(e.shape[0], np.nan)
     cen = np.zeros(e.shape[0], dtype=bool)
     for i, row in enumerate(e):
-        ok = np.isfinite(row)
+        ok = ~np.isnan(row)
         xs, ys = x[ok], row[ok]
         if xs.size == 0:
             continue
@@ -96,7 +122,7 @@ def capacities(levels: ArrayLike, edp: ArrayLike, limit: float, *, binary: bool 
             cap[i], cen[i] = xs[-1], True
             continue
         j = int(above[0])
-        if binary:
+        if binary or np.isinf(ys[j]):
             cap[i] = xs[j]
             continue
         x0, y0 = (0.0, 0.0) if j == 0 else (xs[j - 1], ys[j - 1])

@@ -2,10 +2,13 @@
 ``results.parquet`` — every run):
 
 * ``fragility.json`` — the study in one file: intensity, levels, records, limit states with
-  both fits and their intervals, the gap analysis, the runs that failed;
+  both fits and their intervals, the gap analysis, the runs that failed (and, with plastic
+  hinges, those that collapsed);
 * ``fragility.csv`` — one row per limit state, gap and method: median [g], β, intervals;
 * ``counts.csv`` — runs and exceedances per limit state, gap and level;
-* ``ida.csv`` — every run in readable units (record, level, gap, demands);
+* ``ida.csv`` — every run in readable units (record, level, gap, demands; with plastic
+  hinges whether a hinge went past its IMK cap and whether the run stopped as its frame
+  lost its strength: ``inf`` in the deformation demands of such a run);
 * ``gap.csv`` — the gaps for the target probability and the code gaps at the gap level,
   each with its probability of pounding;
 * ``needed_gaps.csv`` — the gap each record needs at each level [m]: a column
@@ -83,6 +86,11 @@ def _estimate(e: FragilityEstimate) -> dict[str, Any]:
             "n_records": e.n_records, "bootstrap_failed": e.n_failed_boot}
 
 
+def _flag(v: float) -> int | None:
+    """A yes/no of a run as 1 / 0, None (an empty cell) where unknown."""
+    return None if math.isnan(v) else int(v > 0.5)
+
+
 def _csv(rows: list[list[Any]], header: list[str]) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -100,12 +108,17 @@ def summary(cases: StudyCases, a: FragilityAnalysis) -> dict[str, Any]:
     ls = []
     for r in a.limit_states:
         d = DEMANDS[r.spec.demand]
+        extra = ({"drift_limit_pct": r.spec.collapse_drift_percent}
+                 if r.spec.demand == "collapse" else {})
         ls.append({"name": r.spec.label, "demand": r.spec.demand, "limit": r.spec.limit,
-                   "unit": d.unit, "gap_m": r.gap, "n_runs": r.n_runs.tolist(),
+                   **extra, "unit": d.unit, "gap_m": r.gap, "n_runs": r.n_runs.tolist(),
                    "n_exceed": r.n_exceed.tolist(),
                    "capacity_g": [_num(v) for v in r.capacity],
                    "censored": r.censored.tolist(),
                    "msa_mle": _estimate(r.msa), "ida": _estimate(r.ida)})
+    runs: dict[str, Any] = {"n": a.n_runs, "failed": a.n_failed, "failures": a.failures[:100]}
+    if a.hinges is not None:
+        runs.update(collapsed=len(a.hinges.collapses), collapses=a.hinges.collapses[:100])
     return {
         "kind": "fragility", "name": cfg.name, "description": cfg.description,
         "source": str(cases.source) if cases.source else None, "base": cfg.base,
@@ -126,9 +139,11 @@ def summary(cases: StudyCases, a: FragilityAnalysis) -> dict[str, Any]:
                 "gap_for_target_lognormal_ci_m": [_num(v) for v in ga.gap_fit_ci],
                 "gap_for_target_records_m": _num(ga.gap_empirical),
                 "code_gaps_m": {k: _num(v) for k, v in ga.needed.code.items()},
-                "scaled_from_gap_level": ga.needed.scaled, "check": ga.check},
+                "scaled_from_gap_level": ga.needed.scaled, "check": ga.check,
+                **({"uncoupled_runs_stopped": list(ga.needed.stopped[:100])}
+                   if ga.needed.stopped else {})},
         "bootstrap": cfg.bootstrap.model_dump(),
-        "runs": {"n": a.n_runs, "failed": a.n_failed, "failures": a.failures[:100]},
+        "runs": runs,
     }
 
 
@@ -213,14 +228,18 @@ def _write_all(cases: StudyCases, a: FragilityAnalysis, out: Path, figures: bool
     write_text(out / "counts.csv", _csv(counts, [
         "limit_state", "gap_m", "level_g", "n_runs", "n_exceed", "fraction"]))
     keys = list(a.demands)
+    hinge_cols = ({"hinge_past_cap": a.hinges.past_cap,
+                   "strength_lost": a.hinges.strength_lost} if a.hinges is not None else {})
     runs = []
     for gi, g in enumerate(cases.gaps):
         for ri, name in enumerate(cases.records):
             for li, x in enumerate(cases.levels):
                 runs.append([name, x, g] + [a.demands[k][gi, ri, li] * DEMANDS[k].factor
-                                            for k in keys])
+                                            for k in keys]
+                            + [_flag(v[gi, ri, li]) for v in hinge_cols.values()])
     write_text(out / "ida.csv", _csv(runs, ["record", "level_g", "gap_m"] + [
-        f"{k}_{DEMANDS[k].unit}".replace("_-", "").replace("%", "pct") for k in keys]))
+        f"{k}_{DEMANDS[k].unit}".replace("_-", "").replace("%", "pct") for k in keys]
+        + list(hinge_cols)))
     write_text(out / "gap.csv", _csv(_gap_rows(cases, a), [
         "gap", "at_g", "gap_m", "gap_lo_m", "gap_hi_m", "p_pounding_records",
         "p_pounding_lognormal"]))

@@ -16,7 +16,7 @@ from pounding.config.base import Section, field_error, fmt
 from pounding.config.quantities import Duration, Gap, Intensity, Period, Step
 from pounding.result.demands import DEMANDS
 
-__all__ = ["IntensitySpec", "LimitStateSpec", "StudyConfig",
+__all__ = ["COLLAPSE_DRIFT", "IntensitySpec", "LimitStateSpec", "StudyConfig",
            "load_study", "parse_study"]
 
 
@@ -87,13 +87,22 @@ class IntensitySpec(Section):
         return list(self.levels) if isinstance(self.levels, list) else self.levels.values()
 
 
+COLLAPSE_DRIFT = 10.0
+"""Default drift limit of the ``collapse`` demand [%]: the global collapse-prevention limit of
+FEMA-350 (SAC 2000) for steel moment frames, 10 % interstorey drift, which Vamvatsikos &
+Cornell (2002) take as the collapse capacity of an IDA curve that has not flattened before
+it."""
+
+
 class LimitStateSpec(Section):
     """``[[limit_state]]``: ``demand`` (a key of :data:`DEMANDS`), ``limit`` in the demand's
-    unit (not for ``"pounding"``), and an optional ``name``."""
+    unit (not for the yes/no demands ``"pounding"`` and ``"collapse"``), ``drift_limit`` [%]
+    of ``"collapse"`` (default :data:`COLLAPSE_DRIFT`), and an optional ``name``."""
 
     demand: Literal["pounding", "impacts", "impact_force", "drift", "acceleration",
-                    "ductility"]
+                    "ductility", "plastic_rotation", "collapse"]
     limit: Annotated[float, Field(ge=0)] | None = None
+    drift_limit: Annotated[float, Field(gt=0, le=100)] | None = None
     name: str | None = None
 
     @model_validator(mode="after")
@@ -103,7 +112,17 @@ class LimitStateSpec(Section):
             raise field_error("limit", f"demand \"pounding\" is any impact; it takes no limit "
                                        f"(got {self.limit:g}); for a number of impacts use "
                                        "demand = \"impacts\"")
-        if self.demand != "pounding" and self.limit is None:
+        if self.demand == "collapse" and self.limit is not None:
+            raise field_error("limit", f"demand \"collapse\" is yes or no; it takes no limit "
+                                       f"(got {self.limit:g}); its storey drift ratio is "
+                                       f"drift_limit [%] (default {COLLAPSE_DRIFT:g})")
+        if self.drift_limit is not None and self.demand != "collapse":
+            raise field_error("drift_limit", f"only for demand \"collapse\" (got "
+                                             f"{self.drift_limit:g}); a limit on the drift "
+                                             "itself is demand = \"drift\" with limit [%]")
+        if d.binary:
+            return self
+        if self.limit is None:
             raise field_error("limit", f"required for demand \"{self.demand}\": the "
                                        f"{d.label} beyond which the limit state is exceeded "
                                        f"[{d.unit}]")
@@ -119,16 +138,23 @@ class LimitStateSpec(Section):
         if self.name:
             return self.name
         d = DEMANDS[self.demand]
+        if self.demand == "collapse":
+            return f"collapse (drift > {self.collapse_drift_percent:g} % or a hinge past its cap)"
         if self.limit is None:
             return "pounding"
         return f"{d.label} > {self.limit:g} {d.unit}".replace(" -", "")
 
     @property
     def limit_si(self) -> float:
-        """The limit in SI units (the sweep table's), 0.5 for the binary demand."""
+        """The limit in SI units (the sweep table's), 0.5 for the binary demands."""
         if self.limit is None:
             return 0.5
         return self.limit / DEMANDS[self.demand].factor
+
+    @property
+    def collapse_drift_percent(self) -> float:
+        """The drift limit of ``"collapse"`` [%]: ``drift_limit``, else :data:`COLLAPSE_DRIFT`."""
+        return COLLAPSE_DRIFT if self.drift_limit is None else self.drift_limit
 
 
 class SpectrumScaling(Section):

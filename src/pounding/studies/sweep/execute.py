@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from pounding.studies.sweep.builder import CaseBuilder, case_builder
+from pounding.studies.sweep.hinge_measures import hinge_row, stopped_row
 from pounding.studies.sweep.measures import result_row
 
 __all__ = ["Batch", "case_result", "run_case", "warm_up"]
@@ -67,7 +68,10 @@ def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Seq
     """Run one case: ``(row, dataset or None)``; a failure is reported in the row.
 
     The row holds ``status`` (``"ok"`` / ``"error"``), ``error`` (the message or None),
-    the measures and ``wall_time_s``.
+    the measures and ``wall_time_s``; with plastic hinges their measures
+    (:data:`~pounding.studies.sweep.hinge_measures.HINGE_MEASURES`), of which
+    ``strength_lost`` is true for a run that stopped (``"error"``) because a frame lost its
+    strength.
 
     Parameters
     ----------
@@ -98,11 +102,12 @@ def _run(builder: CaseBuilder, values: Sequence[Any], history: bool) -> tuple[di
     dataset = None
     try:
         result = _simulate(builder, values)
-        row: dict[str, Any] = {"status": "ok", "error": None, **result_row(result)}
+        row: dict[str, Any] = {"status": "ok", "error": None, **result_row(result),
+                               **hinge_row(result)}
         if history:
             dataset = result.to_dataset()
     except Exception as exc:  # noqa: BLE001  (recorded in the table, the sweep goes on)
-        row = {"status": "error", "error": _error_text(exc)}
+        row = {"status": "error", "error": _error_text(exc), **stopped_row(exc)}
     row["wall_time_s"] = time.perf_counter() - start
     return row, dataset
 

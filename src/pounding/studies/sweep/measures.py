@@ -32,7 +32,10 @@ energy-balance error, largest storey drift / storey height over all storeys, lar
 absolute floor acceleration over all floors (of the per-floor columns), PGA of the
 record as applied, whether the impact table overflowed; with yielding storeys the
 hysteretic energy at the end, the largest storey ductility demand and the largest
-|residual drift| (null, null and 0 for linear storeys); with floor-to-column contacts the
+|residual drift| (null, null and 0 for linear storeys; a frame with plastic hinges has its
+hinges' hysteretic energy, no storey ductility and no residual drift computed: null; its
+hinges' own measures are :data:`~pounding.studies.sweep.hinge_measures.HINGE_MEASURES`);
+with floor-to-column contacts the
 largest struck-column shear over its storey's peak shear (null without); with links between
 buildings the energy they dissipated and the largest |force| of any (null without)."""
 
@@ -53,6 +56,8 @@ class _Layout(NamedTuple):
     """The floor below each floor (−1: the ground), as :func:`pounding.integrate.floor_below`."""
     inelastic: bool
     """Whether any storey yields."""
+    hinges: bool
+    """Whether any frame has plastic hinges."""
     struck: bool
     """Whether any contact strikes a column (else no column shear applies)."""
 
@@ -79,7 +84,7 @@ def _layout(model: Any) -> _Layout:
         heights[bearing_mask(model)] = np.nan
         layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
                                for name in FLOOR_MEASURES), heights, below,
-                         bool(model.is_inelastic),
+                         bool(model.is_inelastic), bool(model.yielding_frames),
                          any(c.struck is not None for c in model.contacts))
         try:
             # the entry must go when the model does (before its id can be reused)
@@ -126,11 +131,11 @@ def result_row(result: Any) -> dict[str, Any]:
         "record_pga_g": float(result.motion.pga_g),
         "impact_overflow": bool(result.stats.impact_overflow),
         # not applicable → null (not NaN: a null compares equal, so tables stay comparable)
-        "hysteretic_energy_J": float(e[-1, 6]) if inelastic else None,
+        "hysteretic_energy_J": float(e[-1, 6]) if inelastic or layout.hinges else None,
         "max_ductility": (float(np.nanmax(result.ductility))
                           if inelastic and np.isfinite(result.ductility).any() else None),
         "max_residual_drift_m": (float(np.max(np.abs(result.residual_drift))) if inelastic
-                                 else 0.0),
+                                 else None if layout.hinges else 0.0),
         "max_column_shear_ratio": (float(np.nanmax(shear_ratio))
                                    if shear_ratio is not None and np.isfinite(shear_ratio).any()
                                    else None),

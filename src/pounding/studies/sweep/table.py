@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pounding.studies.sweep.cases import _canon
+from pounding.studies.sweep.hinge_measures import HINGE_MEASURES
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
 from pounding.studies.sweep.store import RESULTS_FILE
 
@@ -68,6 +69,9 @@ def _consolidate(sweep: Sweep, rows: dict[str, dict[str, Any]]) -> Any:
     names: set[str] = set()
     for r in recs:
         names.update(r)
+    if names & set(HINGE_MEASURES):  # models with plastic hinges only
+        for name, typ in HINGE_MEASURES.items():
+            cols[name] = pa.array([r.get(name) for r in recs], types[typ])
     floor_cols = sorted((k for k in names if k.startswith(FLOOR_MEASURES)), key=_floor_key)
     for name in floor_cols:
         cols[name] = pa.array([r.get(name) for r in recs], pa.float64())
