@@ -138,6 +138,10 @@ class IntegrationError(ValueError):
     and the command line reports it in one line with exit status 2.)"""
 
 
+SIDESWAY_CHECK_S: float = 0.1
+"""How often a run with yielding frames looks for a frame swayed past a storey's height [s
+of the record] (between calls of the kernel; :meth:`FrameRun.check_sidesway`)."""
+
 CALL_WORK_NS: float = 1e8
 """Work of one call of the compiled kernel, as :func:`call_sizes` estimates it [ns]. Python
 handles a signal (Ctrl-C, SIGTERM turned into an interrupt by the command line) only
@@ -369,6 +373,10 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     grid_per_call, rk_per_call = call_sizes(km, exact, fs)
     if progress is not None:
         grid_per_call = min(grid_per_call, max(1000, (nt - 1) // 50))
+    if frames is not None:
+        # a frame that has lost its strength sways away exponentially: look every
+        # SIDESWAY_CHECK_S of the record (FrameRun.check_sidesway)
+        grid_per_call = min(grid_per_call, max(1, int(SIDESWAY_CHECK_S / step)))
     scratch = kernel_scratch(km, x.size)
     args = (RunInputs(step, ag, exact, rtol, atol, h_max), arrays, fs, st, out, scratch)
     # An empty chunk first, in a process that has not loaded the compiled kernel yet: that
@@ -387,6 +395,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
             raise IntegrationError(_failure_text(model, km, motion, ws_i, st.committed, step,
                                                  rtol))
         k0 = int(ws_i[I_REACHED])
+        if frames is not None:
+            frames.check_sidesway(st.x, k0 * step)
         if ws_i[I_STOP]:
             # a hinge event: the frame's next configuration, then on from the same instant
             ws_i[I_STOP] = 0
@@ -421,7 +431,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   hinge_peak_rotation=hinges.peak_rotation if hinges else None,
                   hinge_peak_rotation_time=hinges.peak_rotation_time if hinges else None,
                   hinge_residual_rotation=hinges.residual_rotation if hinges else None,
-                  hinge_dissipated=hinges.dissipated if hinges else None)
+                  hinge_dissipated=hinges.dissipated if hinges else None,
+                  frame_residual_displacement=hinges.residual_floors if hinges else None)
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,

@@ -50,9 +50,13 @@ from pounding.integrate.layout import (
     ROW_BLOCK,
 )
 from pounding.model import PoundingModel
-from pounding.structure.frame_configuration import Configuration, FrameMotion
+from pounding.structure.frame_configuration import Configuration, FrameCollapse, FrameMotion
 
-__all__ = ["FrameRun", "HingeOutputs"]
+__all__ = ["SIDESWAY_RATIO", "FrameRun", "HingeOutputs"]
+
+SIDESWAY_RATIO: float = 1.0
+"""A storey drift ratio beyond which a yielding frame has collapsed sideways and the run
+stops (:meth:`FrameRun.check_sidesway`)."""
 
 
 @dataclass(frozen=True)
@@ -65,6 +69,9 @@ class HingeOutputs:
     residual_rotation: NDArray[np.float64]  #: θ unloaded to zero moment at the end [rad]
     dissipated: NDArray[np.float64]  #: hysteretic energy at the end [J]
     events: int  #: hinge events in the run
+    #: every DOF's displacement [m] once each yielding frame is unloaded to zero lateral
+    #: force along its hinges' unloading stiffness at the end (NaN off the frames)
+    residual_floors: NDArray[np.float64]
 
 
 @dataclass
@@ -267,8 +274,36 @@ class FrameRun:
             self.peak_time[more] = k[more] * (t_end / max(rotation.shape[0] - 1, 1))
         residual = np.concatenate([f.motion.plastic_rotations() for f in self.frames])
         dissipated = np.concatenate([f.motion.hysteretic_energy() for f in self.frames])
+        floors = np.full(self.n, np.nan)
+        for f in self.frames:
+            try:
+                floors[self._floors(f)] = f.motion.residual_floors(x[self._floors(f)])
+            except ValueError:  # unloaded, a mechanism: no residual position (NaN)
+                pass
         return HingeOutputs(self.peak.copy(), self.peak_time.copy(), residual, dissipated,
-                            self.events)
+                            self.events, floors)
+
+    def check_sidesway(self, x: NDArray[np.float64], t: float) -> None:
+        """Stop the run if a frame's storey has swayed past its own height (a drift ratio
+        above 1: the frame collapsed sideways; the small-displacement model means nothing
+        there, and a frame with no strength left would be integrated on to any drift).
+
+        Raises
+        ------
+        FrameCollapse
+            Naming the frame, the storey, its drift and the time.
+        """
+        for f in self.frames:
+            u = x[self._floors(f)]
+            drift = np.diff(u, prepend=0.0)
+            ratio = np.abs(drift) / f.motion.frame.storey_heights
+            j = int(np.argmax(ratio))
+            if ratio[j] > SIDESWAY_RATIO:
+                raise FrameCollapse(
+                    f"{f.motion.frame.name} (building B{f.building + 1}): collapsed sideways: "
+                    f"storey {j + 1} drifted {drift[j]:.3g} m, more than its height "
+                    f"{f.motion.frame.storey_heights[j]:.3g} m, at t = {t:.3f} s (the run "
+                    "stops there)")
 
     # ------------------------------------------------------------------ arrays
     @staticmethod

@@ -104,6 +104,9 @@ class Response:
     hinge_dissipated : ndarray (n_h,), optional
         Every hinge's hysteretic energy at the end [J] (its work ``∫ M dθ`` less the change
         of its recoverable energy).
+    frame_residual_displacement : ndarray (N,), optional
+        The floors of the yielding frames at the end, unloaded to zero lateral force along
+        their hinges' unloading stiffness [m] (NaN for the other buildings' floors).
     located_peaks : ndarray (N, 6), optional
         Every floor's largest |displacement| [m], |storey drift| [m] and |absolute
         acceleration| [m/s²], each followed by its time [s], located inside solver steps
@@ -136,6 +139,7 @@ class Response:
     hinge_peak_rotation_time: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_residual_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_dissipated: NDArray[np.float64] | None = field(default=None, repr=False)
+    frame_residual_displacement: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property
@@ -250,12 +254,19 @@ class Response:
         """Residual storey drift [m] (N,): the drift left when the storey, from its state at
         the end of the run, is unloaded to zero shear along its unloading stiffness
         (:func:`pounding.result.storeys.residual_storey_drift`; for the bilinear law: its
-        plastic drift). 0 for linear storeys. Run on past the record (``duration``) to let
-        the motion die out first."""
-        if not self.model.is_inelastic:
-            return np.zeros(self.model.n_dof)
-        return residual_storey_drift(self.model, self.drift[-1], self.storey_shear[-1],
-                                     self.final_z)
+        plastic drift); for a frame with plastic hinges, the drift of its floors unloaded to
+        zero lateral force along its hinges' unloading stiffness
+        (:attr:`frame_residual_displacement`). 0 for linear storeys. Run on past the record
+        (``duration``) to let the motion die out first."""
+        out = (residual_storey_drift(self.model, self.drift[-1], self.storey_shear[-1],
+                                     self.final_z) if self.model.is_inelastic
+               else np.zeros(self.model.n_dof))
+        res = self.frame_residual_displacement
+        if res is not None:
+            below = self.model.floor_below()
+            on = np.flatnonzero(np.isfinite(res))  # the frames' floors
+            out[on] = res[on] - np.where(below[on] >= 0, res[np.maximum(below[on], 0)], 0.0)
+        return out
 
     @cached_property
     def column_shear(self) -> NDArray[np.float64]:

@@ -217,6 +217,7 @@ def inelastic_summary(r: Response) -> dict[str, Any]:
         out["hysteretic_energy_J"] = float(r.energy[-1, 6])
         out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
                                    if np.isfinite(v)}
+    if r.model.is_inelastic or r.model.yielding_frames:
         out["residual_drift_m"] = {lb: float(v) for lb, v, bearing in
                                    zip(labels, r.residual_drift, r.is_bearing) if not bearing}
     struck = [c for c in r.model.contacts if c.struck is not None]

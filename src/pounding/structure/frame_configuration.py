@@ -58,7 +58,7 @@ from pounding.structure.frame_analysis import FrameState, gravity
 from pounding.structure.frame_condensation import Condensation
 from pounding.structure.frame_stiffness import gravity_load_vector
 
-__all__ = ["Configuration", "FrameMotion"]
+__all__ = ["Configuration", "FrameCollapse", "FrameMotion"]
 
 JUMP_TOL: float = 1e-9
 """A hinge's moment jumps where its law's moment leaves the straight branch it was on by more
@@ -90,6 +90,13 @@ def _moved(law: HingeLaw, state: HingeState, theta: float,
     raise RuntimeError(f"{law.label}: more than 10000 branches in one move")  # pragma: no cover
 
 Vector = NDArray[np.float64]
+
+
+class FrameCollapse(ValueError):
+    """A yielding frame lost its strength in a run — its hinges' moments cascading to zero
+    (modified-IMK fractures, complete deterioration) with no equilibrium left, or a storey
+    swaying past its own height — and the run stopped there: what would follow is not a
+    frame's motion that this model describes. Studies count such a run as a collapse."""
 
 
 @dataclass(frozen=True)
@@ -452,8 +459,28 @@ class FrameMotion:
                           1e-9 * (np.abs(self.rotations()) + theta_y))
         if not self.jumped and np.all(gap <= near):
             return cfg
-        raise ValueError(f"{self.frame.name}: its hinges' moments keep jumping (fractures "
-                         "cascading) without reaching an equilibrium")
+        raise FrameCollapse(f"{self.frame.name}: its hinges' moments keep jumping (fractures "
+                            "cascading) without reaching an equilibrium")
+
+    def residual_floors(self, u: Vector) -> Vector:
+        """The floors' displacements [m] (from the gravity state) once the frame at floor
+        displacements ``u`` (current configuration) is unloaded to zero lateral force with
+        every hinge at its unloading stiffness: ``u − K_un⁻¹ (K_c u + f0)`` — its residual
+        (permanent) displacements, as a storey's residual drift is its drift unloaded along
+        its unloading stiffness. A hinge with nothing left to unload (complete
+        deterioration) takes no moment.
+
+        Raises
+        ------
+        ValueError
+            If the unloaded frame is a mechanism (no unique residual position).
+        """
+        cfg = self.config
+        assert cfg is not None
+        self.law_states()
+        k_un = np.where(np.isfinite(self._k_unload), self._k_unload, 0.0)
+        part = self._condensation.part(k_un)
+        return u - np.linalg.solve(part.Kc, cfg.K @ u + cfg.f0)
 
     def displacements(self, u: Vector) -> Vector:
         """Every DOF of the frame [m, rad] (total, from the undeformed frame) at floor

@@ -28,8 +28,9 @@ along the hinge laws):
   uses the monotonic backbone's ``θ_cap``, as component acceptance criteria do.
 
 A run whose frame lost its strength — its hinges' moments cascading to zero (IMK fractures
-at ``θ_u``, complete deterioration) until no equilibrium is left — stops with a
-``ValueError`` (:class:`pounding.structure.frame_configuration`): :func:`is_strength_loss`
+at ``θ_u``, complete deterioration) until no equilibrium is left, or a storey swayed past
+its own height — stops with a
+:class:`~pounding.structure.frame_configuration.FrameCollapse`: :func:`is_strength_loss`
 tells it from a run that failed for another reason, and its row says ``strength_lost``.
 """
 
@@ -40,7 +41,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["HINGE_MEASURES", "STRENGTH_LOSS_MESSAGE", "HingePeaks", "hinge_peaks",
+__all__ = ["HINGE_MEASURES", "HingePeaks", "hinge_peaks",
            "hinge_row", "is_strength_loss", "stopped_row"]
 
 HINGE_MEASURES: dict[str, str] = {
@@ -54,11 +55,6 @@ models without: the largest |rotation| of any hinge [rad]; the largest plastic r
 ``|θ − M/k0|`` of any hinge [rad]; whether any IMK hinge went past its capping rotation (or
 its ultimate rotation) on either side (null where no hinge follows an IMK law); and whether
 the run stopped because a frame lost its strength (true: the other measures are null)."""
-
-STRENGTH_LOSS_MESSAGE = "fractures cascading"
-"""The words of the error a frame raises when its hinges' moments keep dropping to zero
-without reaching an equilibrium (``<frame>: its hinges' moments keep jumping (fractures
-cascading) without reaching an equilibrium``): the frame has lost its strength."""
 
 
 class HingePeaks(NamedTuple):
@@ -142,9 +138,12 @@ def hinge_row(result: Any) -> dict[str, Any]:
 
 
 def is_strength_loss(exc: BaseException) -> bool:
-    """Whether a run stopped because a frame lost its strength (:data:`STRENGTH_LOSS_MESSAGE`)
-    rather than failed."""
-    return isinstance(exc, ValueError) and STRENGTH_LOSS_MESSAGE in str(exc)
+    """Whether a run stopped because a frame lost its strength — its hinges' moments
+    cascading to zero, or a storey swayed past its height
+    (:class:`pounding.structure.frame_configuration.FrameCollapse`) — rather than failed."""
+    from pounding.structure.frame_configuration import FrameCollapse
+
+    return isinstance(exc, FrameCollapse)
 
 
 def stopped_row(exc: BaseException) -> dict[str, Any]:
