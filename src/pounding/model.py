@@ -356,6 +356,13 @@ class PoundingModel:
         return tuple((b, bl) for b, bl in enumerate(self.buildings)
                      if getattr(bl, "has_hinges", False))
 
+    def member_end_labels(self) -> list[str]:
+        """``'B1E1i'``, ``'B1E1j'``, ``'B1E2i'``, … for both ends (i: its first node, j: its
+        second) of every member of the yielding frames (building, the element's number in
+        its frame, 1-based), in :attr:`yielding_frames` order."""
+        return [f"B{b + 1}E{e + 1}{end}" for b, bl in self.yielding_frames
+                for e in range(bl.frame.n_elements) for end in "ij"]
+
     def hinge_labels(self) -> list[str]:
         """``'B1H1'``, ``'B1H2'``, … for every hinge of the yielding frames (building, then
         the hinge's number in its frame, 1-based), in :attr:`yielding_frames` order."""

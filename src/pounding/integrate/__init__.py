@@ -406,7 +406,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         elif progress is not None:
             progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
-    hinges = frames.finish(st.x, (nt - 1) * step, out.hinge_rotation) if frames else None
+    hinges = frames.finish(st.x, (nt - 1) * step, out.hinge_rotation, out.u) if frames else None
     pk = out.peaks
     final_peaks(pk, out.u[-1], out.acc[-1], fl.below, (nt - 1) * step)
     n_imp = int(ws_i[I_NIMP])
@@ -432,7 +432,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   hinge_peak_rotation_time=hinges.peak_rotation_time if hinges else None,
                   hinge_residual_rotation=hinges.residual_rotation if hinges else None,
                   hinge_dissipated=hinges.dissipated if hinges else None,
-                  frame_residual_displacement=hinges.residual_floors if hinges else None)
+                  frame_residual_displacement=hinges.residual_floors if hinges else None,
+                  member_end_moment=hinges.member_end_moment if hinges else None)
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,

@@ -26,7 +26,7 @@ same instant inside the grid step.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -72,6 +72,9 @@ class HingeOutputs:
     #: every DOF's displacement [m] once each yielding frame is unloaded to zero lateral
     #: force along its hinges' unloading stiffness at the end (NaN off the frames)
     residual_floors: NDArray[np.float64]
+    #: the frames' members' end moments at the output steps [N·m] (nt, Σ 2 m), frames in
+    #: order, then elements, end 1 then end 2 (counter-clockwise positive)
+    member_end_moment: NDArray[np.float64]
 
 
 @dataclass
@@ -83,7 +86,11 @@ class _Frame:
     first: int  #: its first row in ``Floors.f_rows``
     band_rows: NDArray[np.int64]  #: where its K_c's entries go in the banded stiffness
     band_cols: NDArray[np.int64]
+    heights: NDArray[np.float64]  #: its storeys' heights [m]
     work_constant: float = 0.0  #: c: its work is ``½ uᵀ K_c u + f0ᵀ u + c`` [J]
+    #: each configuration it took: from when [s], and its ``U = P u + p0``
+    taken: list[tuple[float, NDArray[np.float64], NDArray[np.float64]]] = field(
+        default_factory=list)
 
 
 class FrameRun:
@@ -116,7 +123,8 @@ class FrameRun:
             h0 += motion.n_hinges
             no_band = np.zeros((0, 0), dtype=np.int64)  # (set below, once the band is known)
             self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first,
-                                      no_band, no_band))
+                                      no_band, no_band,
+                                      np.asarray(bl.frame.storey_heights, dtype=float)))
             first += motion.n_floors
         self.n_hinges = h0
         nf_max = max(f.motion.n_floors for f in self.frames)
@@ -187,7 +195,7 @@ class FrameRun:
                 return -(cfg.K @ u + cfg.f0 + C @ v) / m - R @ ag0
 
             f.motion.configure(v, acceleration, self.rate_tol, fallback=-(R @ ag_next))
-            self._write(f)
+            self._write(f, 0.0)
 
     def initial_row(self, x: NDArray[np.float64], rotation: NDArray[np.float64],
                     moment: NDArray[np.float64]) -> None:
@@ -242,7 +250,7 @@ class FrameRun:
             f.motion.redistribute(u, v, a, self.rate_tol, self.theta_tol)
             f.work_constant = 0.0
             f.work_constant = work - self._work(f, u)
-            self._write(f)
+            self._write(f, t)
 
     def _due(self, f: _Frame, x: NDArray[np.float64]) -> bool:
         """Is a hinge of frame ``f`` at or past an end of its branch (within the event
@@ -259,10 +267,12 @@ class FrameRun:
         against = cfg.directions * rate < -self.rate_tol * wabs
         return bool(np.any(past | against))
 
-    def finish(self, x: NDArray[np.float64], t_end: float, rotation: NDArray[np.float64]
-               ) -> HingeOutputs:
+    def finish(self, x: NDArray[np.float64], t_end: float, rotation: NDArray[np.float64],
+               displacement: NDArray[np.float64]) -> HingeOutputs:
         """Commit every frame at the final state ``x`` and report its hinges (the peaks
-        also over the output histories ``rotation`` (nt, n_h) [rad])."""
+        also over the output histories ``rotation`` (nt, n_h) [rad]) and its members' end
+        moments at the output steps of ``displacement`` (nt, n) [m], evenly spaced to
+        ``t_end``."""
         for f in self.frames:
             theta = f.motion.commit(x[self._floors(f)])
             self._track(f, theta, t_end)
@@ -280,8 +290,38 @@ class FrameRun:
                 floors[self._floors(f)] = f.motion.residual_floors(x[self._floors(f)])
             except ValueError:  # unloaded, a mechanism: no residual position (NaN)
                 pass
+        moments = np.concatenate([self._end_moments(f, displacement, t_end)
+                                  for f in self.frames], axis=1)
         return HingeOutputs(self.peak.copy(), self.peak_time.copy(), residual, dissipated,
-                            self.events, floors)
+                            self.events, floors, moments)
+
+    def _end_moments(self, f: _Frame, displacement: NDArray[np.float64], t_end: float
+                     ) -> NDArray[np.float64]:
+        """Frame ``f``'s members' end moments [N·m] (nt, 2 m) at the output steps: each step
+        in the configuration the frame was in then, ``U = P u + p0``, through
+        :func:`pounding.structure.frame_stiffness.end_moment_operator`."""
+        import scipy.sparse
+
+        from pounding.structure.frame_stiffness import end_moment_operator
+
+        motion = f.motion
+        E_dense, m0 = end_moment_operator(motion.frame, motion.dofs, motion.axial)
+        E = scipy.sparse.csr_matrix(E_dense)
+        nt = displacement.shape[0]
+        u = displacement[:, self._floors(f)]
+        times = np.array([t for t, _, _ in f.taken])
+        at = np.arange(nt) * (t_end / max(nt - 1, 1))
+        which = np.searchsorted(times, at + 1e-12 * max(t_end, 1.0), side="right") - 1
+        out = np.empty((nt, E.shape[0]))
+        by_P: dict[int, NDArray[np.float64]] = {}
+        for c in np.unique(which):
+            _, P, p0 = f.taken[int(c)]
+            EP = by_P.get(id(P))
+            if EP is None:
+                EP = by_P[id(P)] = np.asarray(E @ P)
+            rows = which == c
+            out[rows] = u[rows] @ EP.T + (E @ p0 + m0)
+        return out
 
     def check_sidesway(self, x: NDArray[np.float64], t: float) -> None:
         """Stop the run if a frame's storey has swayed past its own height (a drift ratio
@@ -296,13 +336,13 @@ class FrameRun:
         for f in self.frames:
             u = x[self._floors(f)]
             drift = np.diff(u, prepend=0.0)
-            ratio = np.abs(drift) / f.motion.frame.storey_heights
+            ratio = np.abs(drift) / f.heights
             j = int(np.argmax(ratio))
             if ratio[j] > SIDESWAY_RATIO:
                 raise FrameCollapse(
                     f"{f.motion.frame.name} (building B{f.building + 1}): collapsed sideways: "
                     f"storey {j + 1} drifted {drift[j]:.3g} m, more than its height "
-                    f"{f.motion.frame.storey_heights[j]:.3g} m, at t = {t:.3f} s (the run "
+                    f"{f.heights[j]:.3g} m, at t = {t:.3f} s (the run "
                     "stops there)")
 
     # ------------------------------------------------------------------ arrays
@@ -324,12 +364,13 @@ class FrameRun:
         self.peak[f.rows] = np.where(more, a, peak)
         self.peak_time[f.rows] = np.where(more, t, self.peak_time[f.rows])
 
-    def _write(self, f: _Frame) -> None:
-        """Write frame ``f``'s configuration into the run's arrays (in place: the kernel
-        holds them)."""
+    def _write(self, f: _Frame, t: float) -> None:
+        """Write frame ``f``'s configuration, taken at time ``t`` [s], into the run's arrays
+        (in place: the kernel holds them)."""
         m = f.motion
         cfg = m.config
         assert cfg is not None
+        f.taken.append((t, cfg.P, cfg.p0))
         nf = m.n_floors
         # band storage: kb[d, i] = K[i, i + d − bw]
         self.k_band[f.band_rows, f.band_cols] = cfg.K

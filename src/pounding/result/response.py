@@ -104,6 +104,10 @@ class Response:
     hinge_dissipated : ndarray (n_h,), optional
         Every hinge's hysteretic energy at the end [J] (its work ``∫ M dθ`` less the change
         of its recoverable energy).
+    member_end_moment : ndarray (nt, n_me), optional
+        The end moments [N·m] of every member of the yielding frames at the output steps
+        (:meth:`PoundingModel.member_end_labels` order: frames, elements, end 1 then end 2;
+        counter-clockwise positive, the stiffness method's local end moments).
     frame_residual_displacement : ndarray (N,), optional
         The floors of the yielding frames at the end, unloaded to zero lateral force along
         their hinges' unloading stiffness [m] (NaN for the other buildings' floors).
@@ -140,6 +144,7 @@ class Response:
     hinge_residual_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_dissipated: NDArray[np.float64] | None = field(default=None, repr=False)
     frame_residual_displacement: NDArray[np.float64] | None = field(default=None, repr=False)
+    member_end_moment: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property

@@ -134,6 +134,11 @@ def history_variables(result: Response) -> HistoryVariables:
                                            "base slab relative to the ground)")
         data["bearing_force"] = var(result.storey_shear[:, dofs], ("time", "bearing"), "N",
                                     "force of each isolation bearing (its law's)")
+    if model.yielding_frames and not model.is_inelastic:
+        data["residual_drift"] = var(result.residual_drift, ("floor",), "m",
+                                     "residual storey drift after elastic unloading (a "
+                                     "frame's floors unloaded along its hinges' unloading "
+                                     "stiffness)")
     if model.is_inelastic:
         data["ductility"] = var(result.ductility, ("floor",), "1",
                                 "storey ductility demand max|drift| / yield drift "
@@ -158,6 +163,11 @@ def history_variables(result: Response) -> HistoryVariables:
                                      "(its node's rotation less the member end's)")
         data["hinge_moment"] = var(result.hinge_moment, ("time", "hinge"), "N m",
                                    "moment of each plastic hinge of a yielding frame")
+    if result.member_end_moment is not None:
+        data["member_end_moment"] = var(result.member_end_moment, ("time", "member_end"),
+                                        "N m", "end moment of each member of a yielding "
+                                        "frame (the stiffness method's local end moment, "
+                                        "counter-clockwise positive)")
     buildings = [f"B{b + 1}" for b, bl in enumerate(model.buildings) for _ in range(bl.n)]
     coords = {
         "time": var(result.time, ("time",), "s", "time"),
@@ -212,6 +222,12 @@ def history_variables(result: Response) -> HistoryVariables:
         coords["hinge_law"] = Variable(("hinge",), np.array([h.law for h in hinges],
                                                             dtype=object),
                                        {"long_name": "the hinge's moment-rotation law"})
+    if result.member_end_moment is not None:
+        coords["member_end"] = Variable(("member_end",), np.array(model.member_end_labels(),
+                                                                  dtype=object),
+                                        {"long_name": "member end: building, member number "
+                                                      "in its frame, end i (its first node) "
+                                                      "or j (B1E3i)"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
                                                       dtype=object), {})

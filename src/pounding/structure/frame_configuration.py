@@ -143,6 +143,7 @@ class FrameMotion:
         self.hinges: list[HingeState] = list(state.hinges)
         self.directions = np.zeros(len(self.laws), dtype=np.int64)
         self.base = state.base
+        self.axial = state.axial  #: the columns' gravity axial forces [N] (tension +)
         self.G = gravity_load_vector(frame, dofs)
         self.floor = np.asarray(dofs.floor_dof, dtype=np.int64)
         self.U = state.U.copy()

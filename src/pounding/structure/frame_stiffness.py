@@ -30,8 +30,9 @@ from numpy.typing import NDArray
 
 from pounding.structure.frame import Frame
 
-__all__ = ["FrameDofs", "configuration_stiffness", "element_end_forces", "frame_dofs",
-           "geometric_stiffness", "gravity_load_vector", "elastic_stiffness", "condense"]
+__all__ = ["FrameDofs", "configuration_stiffness", "element_end_forces", "end_moment_operator",
+           "frame_dofs", "geometric_stiffness", "gravity_load_vector", "elastic_stiffness",
+           "condense"]
 
 
 @dataclass(frozen=True)
@@ -243,6 +244,34 @@ def element_end_forces(frame: Frame, dofs: FrameDofs, U: NDArray[np.float64],
         out[e] = local_elastic(frame.EA[e], frame.EI[e], L) @ (_transform(c, s) @ d) \
             + gravity_factor * _fixed_end(frame, e)
     return out
+
+
+def end_moment_operator(frame: Frame, dofs: FrameDofs, axial: NDArray[np.float64] | None
+                        ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The members' end moments as a linear function of the displacements: ``(E, m0)`` with
+    ``M = E U + m0`` [N·m], shape (2 m,): elements in order, for each its end 1 then end 2 —
+    the local end moments ``M₁, M₂`` of :func:`element_end_forces` (counter-clockwise
+    positive, the stiffness method's convention) including the columns' geometric stiffness
+    of their gravity axial forces ``axial`` [N] (tension positive; with ``geometry =
+    "consistent"`` it carries moments, with ``"p-delta"`` none) and the fixed-end moments of
+    the member loads, applied in full."""
+    m = frame.n_elements
+    E = np.zeros((2 * m, dofs.n))
+    m0 = np.zeros(2 * m)
+    col = frame.is_column
+    for e in range(m):
+        c, s, L = _rotation(frame, e)
+        T = _transform(c, s)
+        k = local_elastic(frame.EA[e], frame.EI[e], L)
+        if frame.geometry != "linear" and axial is not None and col[e] and axial[e] != 0.0:
+            k = k + local_geometric(float(axial[e]), L, frame.geometry)
+        rows = (k @ T)[[2, 5]]
+        idx = dofs.element[e]
+        ok = idx >= 0
+        for r in range(2):  # (a rigid floor gives both ends of a beam one u_x: add)
+            np.add.at(E[2 * e + r], idx[ok], rows[r, ok])
+        m0[2 * e: 2 * e + 2] = _fixed_end(frame, e)[[2, 5]]
+    return E, m0
 
 
 def condense(K: NDArray[np.float64], keep: NDArray[np.int64]) -> NDArray[np.float64]:
