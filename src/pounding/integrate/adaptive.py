@@ -24,6 +24,8 @@ from pounding.integrate.events import (
     event_tolerance,
     event_value,
     find_event,
+    hinge_start,
+    hinge_step_end,
     is_upward,
     locate,
 )
@@ -145,6 +147,9 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     ns = el.lo.shape[0]
     npw = P_CONTACT + nc
     stop_at_grid = False
+    # the hinge rows' θ, θ̇ at x are in their HS_TH0 / HS_R0 (find_event); False at entry:
+    # Python may have given a frame its next configuration
+    hinges_at_x = False
     while k < k1:
         # ---------------- grid step k → k + 1: RK steps landing on t_k + dt
         t_k = k * dt
@@ -206,8 +211,12 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             # (the literals −1 and 0 give find_event a compiled version of its own here,
             # unlike the typed constants of layout; np.int64(−1) and np.int64(0) instead
             # change the last bits of some runs, through the compiler's fused multiply-adds)
+            if not hinges_at_x:
+                hinge_start(x, n, hg)
+                hinges_at_x = True
             te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, hg, committed, -1, 0,
                                       graze_tol, last_f[:, LF_GRAZED])
+            searched_y1 = True  # (the hinges' θ, θ̇ at y1 are in HS_TH1 / HS_R1)
             ev_c = -1
             ev_kind = 0
             h_before = h_acc
@@ -246,12 +255,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                     false_events += 1
                     te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, hg, committed, ce,
                                               kind, graze_tol, last_f[:, LF_GRAZED])
+                    searched_y1 = True
                     continue
                 t_try = te if (te > lo and te < hi) else 0.5 * (lo + hi)
                 g_tol = event_tolerance(kind, ce, n, cparams, atol, hg.state)
                 h_acc, err = locate(kind, ce, lo, hi, g_lo, g_hi, t_try, g_tol, dt, x, kx, px,
                                     gnd, s, fl, ct, el, hg, committed, sstate, lin, ks, ps,
                                     ks_b, ps_b, ytmp, y1, yb, atol, rtol, ws_i)
+                searched_y1 = False
                 if kind == EV_GRAZE:
                     # the step now ends at the peak of the gap's penetration: closed there?
                     d_peak = gap_row(ce, y1, n, cdof, cw)[0] - cgap[ce]
@@ -266,6 +277,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                                             committed, sstate, lin, ks, ps, ks_b, ps_b, ytmp,
                                             y1, yb, atol, rtol, ws_i)
                         kind = EV_ONSET
+                        searched_y1 = False
                     else:
                         # no: accept the step to the peak, and do not search this gap again
                         # until it recedes
@@ -284,6 +296,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 # any other event earlier in this shorter step?
                 te, ce, kind = find_event(x, kx, y1, ks, h_acc, n, ct, el, hg, committed, ev_c,
                                           ev_kind, graze_tol, last_f[:, LF_GRAZED])
+                searched_y1 = True
             if ev_kind == EV_GRAZE:
                 ev_c = -1  # nothing happened at the peak of a gap that stayed open
                 ev_kind = 0
@@ -328,6 +341,10 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                        jk1, pk, near)
             for i in range(m):
                 x[i] = y1[i]
+            if searched_y1:
+                hinge_step_end(hg)  # (the next step starts where this one ended)
+            else:
+                hinges_at_x = False
             if ns > 0:
                 commit_storeys(x, n, el, sstate)
             was_event = ev_c >= 0

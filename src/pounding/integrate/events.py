@@ -38,6 +38,10 @@ from pounding.integrate.layout import (
     HS_DIR,
     HS_HI,
     HS_LO,
+    HS_R0,
+    HS_R1,
+    HS_TH0,
+    HS_TH1,
     HS_WABS,
     I_NSTEPS,
     ROW_BLOCK,
@@ -243,6 +247,27 @@ def touch_possible(d0, r0, q0, d1, r1, q1, h, tol):
 
 
 @njit(**NRT_FREE)
+def hinge_start(y0, n, hg):
+    """Every hinge row's rotation and rate at ``y0`` into ``HS_TH0``, ``HS_R0`` (what
+    :func:`find_event` reads)."""
+    hst = hg.state
+    for q in range(hst.shape[0]):
+        th, rt = hinge_row(q, y0, n, hg)
+        hst[q, HS_TH0] = th
+        hst[q, HS_R0] = rt
+
+
+@njit(**NRT_FREE)
+def hinge_step_end(hg):
+    """The rotations and rates :func:`find_event` left for the end of the step just
+    accepted become those of the next step's start."""
+    hst = hg.state
+    for q in range(hst.shape[0]):
+        hst[q, HS_TH0] = hst[q, HS_TH1]
+        hst[q, HS_R0] = hst[q, HS_R1]
+
+
+@njit(**NRT_FREE)
 def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, graze_tol,
                grazed):
     """Earliest event in a step, from Hermite interpolants of every contact's δ and δ̇ and
@@ -257,7 +282,9 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
     8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
     (released before δ = 0 / engaged again), 10 / 11 a frame's hinge rotation reaching the
     upper / lower end of its branch, 12 / 13 a hinge on a one-way branch reversing (its
-    rate turning negative / positive); (−1, −1, 0) if none. ``ct``, ``el``, ``hg``: the
+    rate turning negative / positive); (−1, −1, 0) if none. The hinges' rotations and rates
+    at ``y0`` are read from their rows' ``HS_TH0``, ``HS_R0`` (the caller's: see
+    :func:`hinge_start`), those at ``y1`` left in ``HS_TH1``, ``HS_R1``. ``ct``, ``el``, ``hg``: the
     contacts, element rows and hinge rows.
     """
     cdof, cw, cgap, ccode, cparams = ct
@@ -342,8 +369,12 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
     hw = hg.weight
     hst = hg.state
     for q in range(hdof.shape[0]):
-        th0, r0 = hinge_row(q, y0, n, hg)
+        # (θ and θ̇ at y0: the caller's, in HS_TH0 / HS_R0; those at y1 kept for it)
+        th0 = hst[q, HS_TH0]
+        r0 = hst[q, HS_R0]
         th1, r1 = hinge_row(q, y1, n, hg)
+        hst[q, HS_TH1] = th1
+        hst[q, HS_R1] = r1
         bound = 0.25 * h * (abs(r0) + abs(r1))  # the cubic stays within this of its ends
         # (after an event was located, skip_c >= 0: a hinge within the event tolerance past
         # the end of its branch at the shortened step's end is left to Python, which lands

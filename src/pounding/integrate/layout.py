@@ -82,8 +82,8 @@ STOP_HINGE = 1
 
 # ---------------------------------------------------------------- hinge rows (yielding frames)
 (HS_A0, HS_LO, HS_HI, HS_DIR, HS_KT, HS_Q, HS_THETA_C, HS_M_C, HS_WORK_C, HS_K_UNLOAD,
- HS_REC0, HS_WABS) = range(12)
-HS_COLUMNS = 12
+ HS_REC0, HS_WABS, HS_TH0, HS_R0, HS_TH1, HS_R1) = range(16)
+HS_COLUMNS = 16
 """Columns of a hinge row's state (``HingeRows.state``), set by Python at every
 configuration of its frame: the offset ``a0`` of its rotation ``θ = Σ w u + a0`` [rad]
 (u the floors' displacements from the gravity state), the lower and upper end of the
@@ -92,7 +92,11 @@ branch it is on [rad] (±inf: none), the direction that branch holds for (0: bot
 ``q`` (the moment ``M = k_t θ + q`` [N·m]), the rotation and moment where the hinge was last
 committed, its work ``∫ M dθ`` up to there [J], its unloading stiffness [N·m/rad] (the
 recoverable energy is ``M²/(2 k_unload)``), its recoverable energy at the start [J], and
-``Σ |w|`` [rad/m] (the tolerance of θ from the displacements')."""
+``Σ |w|`` [rad/m] (the tolerance of θ from the displacements'); then the kernel's own
+scratch: the rotation and its rate at the start of the step being searched for events
+(``HS_TH0``, ``HS_R0``) and at the end it was last searched to (``HS_TH1``, ``HS_R1``) —
+an accepted step's end is the next step's start, so each step computes the hinges'
+rotations once, not twice (:func:`pounding.integrate.events.find_event`)."""
 
 FAIL_UNDERFLOW, FAIL_BUDGET, FAIL_NONFINITE, FAIL_UNKNOWN_LAW = 1, 2, 3, 4
 """Why an integration stopped: the adaptive step fell below 10⁻¹⁴ of the grid step, the
