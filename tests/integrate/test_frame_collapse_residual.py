@@ -62,3 +62,33 @@ def test_a_frame_that_collapses_sideways_stops_the_run_in_one_line() -> None:
     # 10⁴⁷ m as when the whole run was one call of the kernel
     assert 4.0 < abs(drifted) < 20.0
     assert isinstance(caught.value, ValueError)  # (reported like bad input by the CLI)
+
+
+@pytest.mark.parametrize("speed", [0.6, 1.0])
+def test_a_hinge_is_capped_when_its_first_excursion_passes_its_capping_rotation(
+        speed: float) -> None:
+    # the portal set swinging (no ground motion): its first excursion is monotonic, on the
+    # IMK backbone not yet deteriorated, so a hinge reaches its cap exactly when its peak
+    # rotation passes θ_y + θ_p of that backbone (Lignos & Krawinkler 2011) — the law's
+    # constants, not the branch the kernel saw
+    from pounding.hysteresis.imk import IMKBilinear
+
+    def law(m_y: float) -> IMKBilinear:
+        return IMKBilinear(k0=1e11, m_y=m_y, theta_p=0.01, theta_pc=0.08, theta_u=0.2,
+                           mc_my=1.1, kappa=0.4, lambda_=0.5)
+
+    portal = regular_frame(6.0, 4.0, n_storeys=1, column_EI=2e8, beam_EI=2e8,
+                           column_hinge=law(3e5), beam_hinge=law(6e5), floor_mass=5e4,
+                           damping=RayleighDamping(0.05, 0.05), name="portal")
+    model = PoundingModel([frame_matrix_building(portal)], [], KV)
+    r = simulate(model, GroundMotion(0.01, np.zeros(200), name="still"), duration=1.5,
+                 initial_velocity=[speed])
+    cap = np.array([fh.law.theta_y + fh.law.theta_p for fh in portal.hinges])
+    np.testing.assert_array_equal(r.hinge_capped, r.hinge_peak_rotation > cap)
+    assert r.hinge_capped.sum() == (4 if speed == 1.0 else 0)  # the columns' ends, or none
+
+
+def test_hinges_without_a_capping_point_are_never_capped() -> None:
+    r = simulate(PoundingModel([frame_matrix_building(_portal())], [], KV),
+                 el_centro().scaled(3.0), duration=8.0)
+    assert r.hinge_peak_rotation.max() > 0.005 and not r.hinge_capped.any()

@@ -75,6 +75,9 @@ class HingeOutputs:
     #: the frames' members' end moments at the output steps [N·m] (nt, Σ 2 m), frames in
     #: order, then elements, end 1 then end 2 (counter-clockwise positive)
     member_end_moment: NDArray[np.float64]
+    #: each hinge reached its capping point (a branch of negative tangent ahead as it
+    #: moved) or had its moment jump (fracture, complete deterioration) in the run
+    capped: NDArray[np.bool_]
 
 
 @dataclass
@@ -294,8 +297,9 @@ class FrameRun:
                 pass
         moments = np.concatenate([self._end_moments(f, displacement, t_end)
                                   for f in self.frames], axis=1)
+        capped = np.concatenate([f.motion.capped for f in self.frames])
         return HingeOutputs(self.peak.copy(), self.peak_time.copy(), residual, dissipated,
-                            self.events, floors, moments)
+                            self.events, floors, moments, capped)
 
     def _end_moments(self, f: _Frame, displacement: NDArray[np.float64], t_end: float
                      ) -> NDArray[np.float64]:

@@ -108,6 +108,11 @@ class Response:
         The end moments [N·m] of every member of the yielding frames at the output steps
         (:meth:`PoundingModel.member_end_labels` order: frames, elements, end 1 then end 2;
         counter-clockwise positive, the stiffness method's local end moments).
+    hinge_capped : ndarray (n_h,) of bool, optional
+        Every hinge that reached its capping point in the run (moving onto a branch of
+        negative tangent: post-capping softening) or whose moment jumped (fracture, complete
+        deterioration) — by the branch its law put it on, so a capping point that cyclic
+        deterioration moved inward counts.
     frame_residual_displacement : ndarray (N,), optional
         The floors of the yielding frames at the end, unloaded to zero lateral force along
         their hinges' unloading stiffness [m] (NaN for the other buildings' floors).
@@ -145,6 +150,7 @@ class Response:
     hinge_dissipated: NDArray[np.float64] | None = field(default=None, repr=False)
     frame_residual_displacement: NDArray[np.float64] | None = field(default=None, repr=False)
     member_end_moment: NDArray[np.float64] | None = field(default=None, repr=False)
+    hinge_capped: NDArray[np.bool_] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property

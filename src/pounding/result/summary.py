@@ -254,7 +254,8 @@ def hinge_summary(r: Response) -> dict[str, Any]:
     """The plastic hinges of the yielding frames (none: nothing): each hinge's place, law,
     peak rotation [rad] (at its events and the output steps) with its time, its ductility
     (peak rotation over the law's yield rotation), residual rotation (unloaded to zero
-    moment at the end) [rad], peak moment [N·m] and hysteretic energy [J]; their total
+    moment at the end) [rad], peak moment [N·m], hysteretic energy [J] and whether it
+    reached its capping point or fractured (``capped``); their total
     hysteretic energy [J]; and the damping the frames were given."""
     rows = hinge_table(r)
     if not rows:
@@ -266,7 +267,8 @@ def hinge_summary(r: Response) -> dict[str, Any]:
                     "peak_rotation_time_s": h.peak_rotation_time,
                     "rotation_ductility": h.peak_rotation / h.yield_rotation,
                     "residual_rotation_rad": h.residual_rotation,
-                    "peak_moment_N_m": h.peak_moment, "hysteretic_energy_J": h.dissipated}
+                    "peak_moment_N_m": h.peak_moment, "hysteretic_energy_J": h.dissipated,
+                    "capped": h.capped}
                    for h in rows],
         "hinge_hysteretic_energy_J": float(sum(h.dissipated for h in rows)),
         "peak_hinge_rotation_rad": float(max(h.peak_rotation for h in rows)),

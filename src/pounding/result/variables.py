@@ -36,6 +36,7 @@ class HingeRow(NamedTuple):
     residual_rotation: float  #: θ at the end unloaded to zero moment [rad]
     peak_moment: float  #: largest |M| at the output steps [N·m]
     dissipated: float  #: hysteretic energy [J]
+    capped: bool  #: it reached its capping point or fractured (``Result.hinge_capped``)
 
 
 def hinge_table(result: Response) -> list[HingeRow]:
@@ -61,7 +62,8 @@ def hinge_table(result: Response) -> list[HingeRow]:
                 float(result.hinge_peak_rotation_time[h]),  # type: ignore[index]
                 float(result.hinge_residual_rotation[h]),  # type: ignore[index]
                 float(np.max(np.abs(moment))) if moment is not None and moment.size else 0.0,
-                float(result.hinge_dissipated[h])))  # type: ignore[index]
+                float(result.hinge_dissipated[h]),  # type: ignore[index]
+                bool(result.hinge_capped[h]) if result.hinge_capped is not None else False))
             h += 1
     return rows
 

@@ -169,6 +169,10 @@ class FrameMotion:
         self._theta = np.array([h.theta for h in self.hinges])
         self._moment = np.array([h.moment for h in self.hinges])
         self._behind = np.zeros(len(self.laws), dtype=bool)
+        #: hinges that reached a branch of negative tangent moving onto it (a capping
+        #: point: post-capping softening) or whose moment jumped (fracture, complete
+        #: deterioration) at some time in the run
+        self.capped = np.zeros(len(self.laws), dtype=bool)
         # each hinge's branches from its committed state: tangents and ends, up and down
         nh = len(self.laws)
         self._k_up, self._end_up = np.zeros(nh), np.zeros(nh)
@@ -245,9 +249,13 @@ class FrameMotion:
             first = (Branch(float(self._k_up[h]), float(self._end_up[h]))
                      if theta > st.theta else
                      Branch(float(self._k_down[h]), float(self._end_down[h])))
+            moving_up = theta > st.theta
             st, jump = _moved(self.laws[h], st, theta, first)
             self.hinges[h] = st
             self._learn(h)
+            ahead = self._k_up[h] if moving_up else self._k_down[h]
+            if jump or ahead < 0.0:
+                self.capped[h] = True
             jumped = jumped or jump
         return jumped
 

@@ -24,8 +24,8 @@ along the hinge laws):
   plateau, or fractured. The largest rotation on each side is the largest output sample of
   that sign, and the located peak on its side. Cyclic deterioration can move the capping
   point of a hinge inward (the post-capping branch of a deteriorated IMK hinge starts at a
-  smaller rotation); the Result does not say which branch a hinge was on, so this criterion
-  uses the monotonic backbone's ``θ_cap``, as component acceptance criteria do.
+  smaller rotation): a hinge the run saw reach its law's own capping point or fracture
+  (``Result.hinge_capped``, from the branch its law put it on) is past its cap too.
 
 A run whose frame lost its strength — its hinges' moments cascading to zero (IMK fractures
 at ``θ_u``, complete deterioration) until no equilibrium is left, or a storey swayed past
@@ -122,6 +122,8 @@ def hinge_peaks(result: Any) -> HingePeaks | None:
         largest_pos = max(float(th_h.max()), peak[h] if side > 0 else 0.0)
         largest_neg = max(float(-th_h.min()), peak[h] if side < 0 else 0.0)
         past[h] = largest_pos > caps[0] or largest_neg > caps[1]
+    if result.hinge_capped is not None:  # on its law's own post-capping branch, or fractured
+        past |= np.asarray(result.hinge_capped, dtype=bool) & has_cap
     return HingePeaks(peak.copy(), plastic, past, has_cap)
 
 
