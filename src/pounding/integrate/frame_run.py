@@ -250,7 +250,13 @@ class FrameRun:
             self._track(f, theta, t)
             work = self._work(f, u)
             f.motion.configure(v, a, self.rate_tol)
-            f.motion.redistribute(u, v, a, self.rate_tol, self.theta_tol)
+            try:
+                f.motion.redistribute(u, v, a, self.rate_tol, self.theta_tol)
+            except FrameCollapse as exc:  # (said of the building, as the other stops are)
+                name = f.motion.frame.name
+                raise FrameCollapse(str(exc).replace(
+                    f"{name}:", f"{name} (building B{f.building + 1}):", 1)
+                    + f" at t = {t:.3f} s") from None
             f.work_constant = 0.0
             f.work_constant = work - self._work(f, u)
             self._write(f, t)
