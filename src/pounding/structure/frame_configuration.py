@@ -163,6 +163,16 @@ class FrameMotion:
         #: (:meth:`redistribute`)
         self.jumped = False
         self._condensation = Condensation(self.base, dofs, frame.name)
+        # the hinges' incidence B (n, n_h): +1 at the joint's rotation, −1 at the member
+        # end's; B q are the nodal loads of moments q
+        import scipy.sparse
+
+        on = self.node >= 0
+        h = np.arange(self.node.size)
+        self._incidence = scipy.sparse.csr_matrix(
+            (np.concatenate([np.ones(int(on.sum())), -np.ones(h.size)]),
+             (np.concatenate([self.node[on], self.end]), np.concatenate([h[on], h]))),
+            shape=(dofs.n, h.size))
         # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
         # the hinge laws) is committed here only, its law's state left behind at the last
         # point the law was asked about (``_behind``) until it leaves that branch
@@ -279,10 +289,8 @@ class FrameMotion:
         theta_c = self._theta
         q = self._moment - tangents * theta_c
         lin = self._condensation.part(tangents)
-        Bq = np.zeros(self.dofs.n)
+        Bq = self._incidence @ q
         fixed = self.node < 0
-        np.add.at(Bq, self.node[~fixed], q[~fixed])
-        np.add.at(Bq, self.end, -q)
         p0 = np.zeros(self.dofs.n)
         p0[lin.dead] = self.U[lin.dead]  # (a joint with no stiffness stays where it is)
         if lin.live.size:
