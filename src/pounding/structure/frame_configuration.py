@@ -168,11 +168,11 @@ class FrameMotion:
         import scipy.sparse
 
         on = self.node >= 0
-        h = np.arange(self.node.size)
+        every = np.arange(self.node.size)
         self._incidence = scipy.sparse.csr_matrix(
-            (np.concatenate([np.ones(int(on.sum())), -np.ones(h.size)]),
-             (np.concatenate([self.node[on], self.end]), np.concatenate([h[on], h]))),
-            shape=(dofs.n, h.size))
+            (np.concatenate([np.ones(int(on.sum())), -np.ones(every.size)]),
+             (np.concatenate([self.node[on], self.end]), np.concatenate([every[on], every]))),
+            shape=(dofs.n, every.size))
         # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
         # the hinge laws) is committed here only, its law's state left behind at the last
         # point the law was asked about (``_behind``) until it leaves that branch
