@@ -86,3 +86,12 @@ def test_a_hinge_on_its_backbone_is_not_two_way(law: HingeLaw) -> None:
     on_backbone = law.moved(law.start(), 3 * MY / K0)  # three times its yield rotation
     assert not law.two_way(on_backbone)
     assert law.two_way(law.moved(on_backbone, 2 * MY / K0))  # unloaded part way: elastic
+
+
+@pytest.mark.parametrize("law", LAWS, ids=lambda law: law.label)
+def test_branches_at_once_are_the_branches_one_by_one(law: HingeLaw) -> None:
+    # (the IMK laws prepare each direction once for the three answers)
+    for state in _states(law):
+        up, down, two_way = law.branches(state)
+        assert up == law.branch(state, 1) and down == law.branch(state, -1)
+        assert two_way == law.two_way(state)

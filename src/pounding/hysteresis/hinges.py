@@ -162,6 +162,12 @@ class HingeLaw(ABC):
             return False
         return self._reversed(state, 1) == state and self._reversed(state, -1) == state
 
+    def branches(self, state: HingeState) -> tuple[Branch, Branch, bool]:
+        """The branches up and down from ``state`` and :meth:`two_way` of it, at once (laws
+        whose branches share work override it)."""
+        up, down = self.branch(state, 1), self.branch(state, -1)
+        return up, down, self.two_way(state, up, down)
+
     def unloading_stiffness(self, state: HingeState) -> float:
         """Stiffness of the branch that unloads from ``state`` [N·m/rad] (default ``k0``)."""
         return self.k0

@@ -339,6 +339,14 @@ class IMKLaw(HingeLaw):
     def _reversed(self, state: HingeState, direction: int) -> HingeState:
         return self._prepare(state, direction)
 
+    def branches(self, state: HingeState) -> tuple[Branch, Branch, bool]:
+        # (each direction prepared once: the branch and the two-way test both need it)
+        up_state, down_state = self._prepare(state, 1), self._prepare(state, -1)
+        k_up, end_up, _ = self._plan(up_state, 1)
+        k_down, end_down, _ = self._plan(down_state, -1)
+        two_way = k_up == k_down and up_state == state and down_state == state
+        return Branch(k_up, end_up), Branch(k_down, -end_down), two_way
+
     def _prepare(self, state: HingeState, d: int) -> HingeState:
         """What happens at the state's point when the rotation starts moving in ``d``
         (each law's rules; idempotent)."""

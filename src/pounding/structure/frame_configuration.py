@@ -238,10 +238,10 @@ class FrameMotion:
         """Read hinge ``h``'s branches, two-way flag and unloading stiffness from its law's
         (up-to-date) state."""
         law, st = self.laws[h], self.hinges[h]
-        up, down = law.branch(st, 1), law.branch(st, -1)
+        up, down, two_way = law.branches(st)
         self._k_up[h], self._end_up[h] = up.k_t, up.theta_end
         self._k_down[h], self._end_down[h] = down.k_t, down.theta_end
-        self._two_way[h] = law.two_way(st, up, down)
+        self._two_way[h] = two_way
         self._k_unload[h] = law.unloading_stiffness(st)
         self._theta[h], self._moment[h] = st.theta, st.moment
         self._behind[h] = False
