@@ -92,3 +92,21 @@ def test_hinges_without_a_capping_point_are_never_capped() -> None:
     r = simulate(PoundingModel([frame_matrix_building(_portal())], [], KV),
                  el_centro().scaled(3.0), duration=8.0)
     assert r.hinge_peak_rotation.max() > 0.005 and not r.hinge_capped.any()
+
+
+def test_pounding_run_of_a_collapsing_frame_says_so_in_one_line_with_status_1(
+        tmp_path, capsys) -> None:  # type: ignore[no-untyped-def]
+    from pounding.cli import main
+
+    model = tmp_path / "collapse.toml"
+    model.write_text('name = "collapse"\n[record]\nbundled = "el_centro"\nscale = 3.0\n'
+                     'duration = 10.0\n[[building]]\nname = "portal"\n'
+                     'damping = { ratio = 0.05 }\n[building.frame]\nbays = [6.0]\n'
+                     'storey_heights = [4.0]\ncolumn_EI = 2.0e8\nbeam_EI = 2.0e8\n'
+                     'floor_mass = 5.0e4\nleaning_load = 1.5e7\ngeometry = "p-delta"\n'
+                     'column_hinge = { type = "elastic-plastic", k0 = 1.0e11, m_y = 3.0e5 }\n'
+                     'beam_hinge = { type = "elastic-plastic", k0 = 1.0e11, m_y = 6.0e5 }\n')
+    assert main(["run", str(model), "--out", str(tmp_path / "out"), "--no-figures"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "collapsed sideways: storey 1 drifted" in err[0], err
+    assert not (tmp_path / "out").exists()

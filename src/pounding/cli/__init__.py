@@ -101,8 +101,8 @@ def _plausibility_lines() -> Iterator[None]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the CLI and return its exit status: 0 success, 2 bad input or usage, 130
-    interrupted. Plausibility warnings (inputs probably in the wrong unit) are printed as
+    """Run the CLI and return its exit status: 0 success, 2 bad input or usage, 1 a run
+    whose frame collapsed (or a study its environment stopped), 130 interrupted. Plausibility warnings (inputs probably in the wrong unit) are printed as
     ``warning:`` lines on standard error and change nothing else.
 
     Called with ``argv=None`` (the console script) it exits the process with that status.
@@ -135,7 +135,8 @@ def _main(argv: list[str] | None) -> int:
         # bad input from the public API (field and value named there), or a file that
         # cannot be read or written (the OS names the path)
         error_line(_os_error_text(exc) if isinstance(exc, OSError) else str(exc))
-        code = EXIT_BAD_INPUT
+        # (an error that is a result, a frame that collapsed, says its own status)
+        code = int(getattr(exc, "exit_status", EXIT_BAD_INPUT))
     if argv is None:
         sys.exit(code)
     return code

@@ -21,7 +21,9 @@ EXIT_INTERRUPTED = 130
 """Exit status of a command stopped by Ctrl-C (128 + SIGINT), as shells report it."""
 
 EXIT_FAILED = 1
-"""Exit status of a command its environment stopped (a sweep whose Dask scheduler was lost)."""
+"""Exit status of a command its environment stopped (a sweep whose Dask scheduler was lost),
+or a run that stopped because a frame collapsed
+(:class:`pounding.structure.frame_configuration.FrameCollapse`: a result, not bad input)."""
 
 
 _LINES_SAID: list[int] = [0]

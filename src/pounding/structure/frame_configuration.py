@@ -98,6 +98,10 @@ class FrameCollapse(ValueError):
     swaying past its own height — and the run stopped there: what would follow is not a
     frame's motion that this model describes. Studies count such a run as a collapse."""
 
+    exit_status = 1
+    """The command line ends with this status: a result (the frame collapsed), not bad
+    input (2)."""
+
 
 @dataclass(frozen=True)
 class Configuration:
