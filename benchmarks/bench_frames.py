@@ -114,11 +114,10 @@ class Setup:
     """The pair, its floor damping as OpenSees computes it, OpenSees and its log."""
 
     def __init__(self, args: argparse.Namespace) -> None:
-        import numpy as np
-        import openseespy.opensees as ops
-
         import frames_pair as fp
+        import numpy as np
         import opensees_frame_pair as ofp
+        import openseespy.opensees as ops
 
         self.np, self.ops, self.fp, self.ofp = np, ops, fp, ofp
         self.northridge = Path(args.northridge) if args.northridge else fp.NORTHRIDGE
@@ -126,7 +125,6 @@ class Setup:
                        / f"bench_frames_opensees_{os.getpid()}.log")
         ops.logFile(self.log, "-noEcho")
         self.pair = fp.pair()
-        a, b = self.pair.frames
         self.damping = []
         for frame, building in zip(self.pair.frames, self.pair.buildings, strict=True):
             C, a0, a1 = ofp.floor_damping(ops, frame, building.masses, building.K)
@@ -249,7 +247,7 @@ def speed_section(args: argparse.Namespace, s: Setup) -> None:
             h = s.opensees(gap, motion, duration, args.opensees_dt)
             theirs_t.append(h.wall)
             print(f"  round {k + 1}: OpenSees {h.wall:7.2f} s ({len(h.rescued)} steps "
-                  f"rescued, {'complete' if h.complete else 'STOPPED at %.3f s' % h.time[-1]})",
+                  f"rescued, {'complete' if h.complete else f'STOPPED at {h.time[-1]:.3f} s'})",
                   flush=True)
     assert r is not None and h is not None
     print(f"  pounding [s], best (median–worst): {spread(ours_t)}")

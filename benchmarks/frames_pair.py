@@ -39,9 +39,9 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from frames_la9 import STOREY_HEIGHTS, la9_frame
 from numpy.typing import NDArray
 
-from frames_la9 import STOREY_HEIGHTS, la9_frame
 from pounding.contact.spec import ContactSpec
 from pounding.ground_motion import GroundMotion, el_centro, read_record
 from pounding.model import PoundingModel

@@ -1,6 +1,6 @@
 """Build a pounding :class:`~pounding.structure.frame.Frame` in OpenSeesPy and push it there.
 
-For ``bench_pushover.py`` (not part of the package; adapted from the test helper
+For ``bench_pushover.py`` and ``bench_frames.py`` (not part of the package; adapted from the test helper
 ``tests/structure/opensees_frames.py``, which the benchmarks do not import, with the IMK
 hinges added and a pushover that takes any step size). The OpenSees model is the usual
 concentrated-plasticity one (Lignos & Krawinkler 2011; the OpenSees examples'
@@ -22,6 +22,10 @@ concentrated-plasticity one (Lignos & Krawinkler 2011; the OpenSees examples'
   carrying the floor's leaning load;
 * gravity: nodal loads and ``-beamUniform`` member loads in load pattern 1, applied in
   load steps and held (``loadConst``);
+* two frames in one domain (``opensees_frame_pair.py``): :func:`add_frame` with an
+  ``offset`` added to every tag above (node, element, material and transformation tags) and
+  the nodes moved by ``dx``, :func:`add_gravity_loads` in the current load pattern;
+  :func:`build` is ``add_frame`` with no offset and the loads in pattern 1;
 * the pushover: lateral loads in pattern 2, ``DisplacementControl`` of the roof floor's x,
   Newton on each step and, where it fails, ``NewtonLineSearch``, ``KrylovNewton``, then
   ``ModifiedNewton -initial`` (:data:`FALLBACKS`) — what practitioners do.

@@ -49,7 +49,6 @@ step (slow: one Python call a hinge a step).
 
 from __future__ import annotations
 
-import math
 import os
 import tempfile
 import time
@@ -57,9 +56,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import opensees_frame_models as osf
 from numpy.typing import NDArray
 
-import opensees_frame_models as osf
 from pounding.structure.damping import RayleighDamping
 from pounding.structure.frame import Frame
 
@@ -130,10 +129,8 @@ def rayleigh_coefficients(w_i: float, w_j: float, zeta_i: float,
                           zeta_j: float) -> tuple[float, float]:
     """``(a₀, a₁)`` of ``C = a₀ M + a₁ K`` giving ``ζ_i`` at ``ω_i`` and ``ζ_j`` at ``ω_j``
     (Chopra, *Dynamics of Structures*, eq. 11.4.9)."""
-    det = w_j / w_i - w_i / w_j
     a0 = 2.0 * w_i * w_j * (zeta_i * w_j - zeta_j * w_i) / (w_j**2 - w_i**2)
     a1 = 2.0 * (zeta_j * w_j - zeta_i * w_i) / (w_j**2 - w_i**2)
-    assert math.isfinite(det)
     return a0, a1
 
 
@@ -292,7 +289,7 @@ def run_pair(ops: Any, model: PairModel, accel: NDArray[np.float64], record_dt: 
     ops.logFile(log, "-noEcho")
     hinges = model.left.hinge + model.right.hinge
     floors_l, floors_r = model.left.floor, model.right.floor
-    n = int(round(duration / dt))
+    n = round(duration / dt)
     ul = np.zeros((n + 1, len(floors_l)))
     ur = np.zeros((n + 1, len(floors_r)))
     force = np.zeros((n + 1, len(model.contacts)))
