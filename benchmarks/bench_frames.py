@@ -183,6 +183,7 @@ def accuracy_section(args: argparse.Namespace, s: Setup, steps: list[float]) -> 
           "hinges' peak rotations, Δu hist the floors' displacement histories at OpenSees' "
           "steps; impacts: OpenSees counts closures seen at its steps")
     failures: list[str] = []
+    newton_alone: list[str] = []
     out_dt = min(0.001, min(steps))
     for name in [n.strip() for n in args.records.split(",") if n.strip()]:
         motion = s.motion(name)
@@ -215,9 +216,14 @@ def accuracy_section(args: argparse.Namespace, s: Setup, steps: list[float]) -> 
                     for _, how in h.rescued:
                         kinds[how] = kinds.get(how, 0) + 1
                     print("  " + " " * 16 + "   rescued by: " + "; ".join(
-                        f"{k} ×{v}" for k, v in sorted(kinds.items(), key=lambda kv: -kv[1])))
+                        f"{k} ×{v}" for k, v in sorted(kinds.items(), key=lambda kv: -kv[1]))
+                        + f" (Newton alone would have stopped at t = {h.rescued[0][0]:.3f} s)")
+                    newton_alone.append(f"{name}, {label}, dt = {dt:g} s: t = "
+                                        f"{h.rescued[0][0]:.3f} s")
     print("\n  OpenSees failed to converge (every strategy, down to dt/100): "
           + ("; ".join(failures) if failures else "nowhere") + "; pounding ran every case")
+    print("  Newton alone (no fallback) fails first at: "
+          + ("; ".join(newton_alone) if newton_alone else "nowhere"))
     print(f"  (OpenSees' warnings: {s.log})")
 
 
