@@ -44,9 +44,11 @@ ida       pounding alone: the pair under El Centro at each ``--ida-scales`` fact
           / 2 workers (perfect parallel speed-up assumed).
 
 numpy's OpenBLAS runs on one thread unless ``--blas-threads`` says otherwise (as in
-``bench_pushover.py``); OpenSees 3.7.1.2 solves with its own ``SparseGEN`` solver on one
-thread (the fastest of ``BandGeneral``, ``UmfPack``, ``SparseGEN`` and ``FullGeneral`` on this
-model: 2.7, 4.0, 19 and 34 ms a step in the elastic range, 2026-11-28).
+``bench_pushover.py``); OpenSees 3.7.1.2 solves with its ``SparseGEN`` solver on one
+thread, the fastest of four on this model (2 s of El Centro × 0.2, elastic, 10 ms steps,
+2026-11-27, load average 1.7–2.7: ``SparseGEN`` 3.3 ms a step, ``UmfPack`` 5.0,
+``BandGeneral`` 46 — the floor dashpots and contacts tie far-apart nodes, so the band is
+wide — and ``FullGeneral`` 75).
 """
 
 from __future__ import annotations

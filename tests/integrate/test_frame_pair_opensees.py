@@ -84,7 +84,7 @@ def test_opensees_converges_toward_the_kernel_on_the_pounding_la9_pair(ops: Any)
         impacts.append(theirs.impacts)
         errors.append(fp.errors(ours, theirs, r, h))
     coarse, fine = errors
-    # OpenSees' error shrinks with its step toward the kernel's answer (measured 2026-11-28,
+    # OpenSees' error shrinks with its step toward the kernel's answer (measured 2026-11-27,
     # 10 ms → 5 ms: peak drifts 2.6e-2 → 2.5e-3, peak hinge rotations 7.4e-2 → 3.5e-3, the
     # displacement histories 2.0e-2 → 2.0e-3, the peak contact force 1.3e-1 → 4.7e-2 of
     # pounding's values; and on, 2.5 → 1 → 0.5 ms: drifts 1.7e-3, 5.1e-4, 1.5e-4, hinges
