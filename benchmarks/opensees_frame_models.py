@@ -1,6 +1,6 @@
 """Build a pounding :class:`~pounding.structure.frame.Frame` in OpenSeesPy and push it there.
 
-For ``bench_pushover.py`` (not part of the package; adapted from the test helper
+For ``bench_pushover.py`` and ``bench_frames.py`` (not part of the package; adapted from the test helper
 ``tests/structure/opensees_frames.py``, which the benchmarks do not import, with the IMK
 hinges added and a pushover that takes any step size). The OpenSees model is the usual
 concentrated-plasticity one (Lignos & Krawinkler 2011; the OpenSees examples'
@@ -22,6 +22,10 @@ concentrated-plasticity one (Lignos & Krawinkler 2011; the OpenSees examples'
   carrying the floor's leaning load;
 * gravity: nodal loads and ``-beamUniform`` member loads in load pattern 1, applied in
   load steps and held (``loadConst``);
+* two frames in one domain (``opensees_frame_pair.py``): :func:`add_frame` with an
+  ``offset`` added to every tag above (node, element, material and transformation tags) and
+  the nodes moved by ``dx``, :func:`add_gravity_loads` in the current load pattern;
+  :func:`build` is ``add_frame`` with no offset and the loads in pattern 1;
 * the pushover: lateral loads in pattern 2, ``DisplacementControl`` of the roof floor's x,
   Newton on each step and, where it fails, ``NewtonLineSearch``, ``KrylovNewton``, then
   ``ModifiedNewton -initial`` (:data:`FALLBACKS`) — what practitioners do.
@@ -47,11 +51,16 @@ TRANSF = {"linear": "Linear", "p-delta": "PDelta"}
 
 @dataclass(frozen=True)
 class OpenSeesFrame:
-    """Tags of a frame built by :func:`build`."""
+    """Tags of a frame built by :func:`build` (or :func:`add_frame` with ``offset``: every
+    tag below, and the frame's material and transformation tags, are the ones of
+    :func:`build` plus ``offset``)."""
 
     node: tuple[int, ...]  #: OpenSees tag of each frame node
     floor: tuple[int, ...]  #: a node of each floor (the equalDOF retained one), lowest first
     leaning: tuple[int, ...]  #: leaning-column nodes (base first), or ()
+    offset: int = 0  #: added to every tag of :func:`build`
+    hinge: tuple[int, ...] = ()  #: the zeroLength element of each hinge (frame.hinges order)
+    element: tuple[int, ...] = ()  #: the elasticBeamColumn of each frame element
 
 
 def _imk_args(law: IMKBilinear) -> list[float]:
@@ -89,29 +98,46 @@ def hinge_material(ops: Any, tag: int, law: HingeLaw) -> None:
 
 
 def build(ops: Any, frame: Frame, *, lean_transf: str = "PDelta") -> OpenSeesFrame:
-    """Build ``frame`` in a wiped OpenSees domain; returns the tags."""
-    if frame.geometry not in TRANSF:
-        raise ValueError(f"no OpenSees transformation for geometry {frame.geometry!r}")
+    """Build ``frame`` in a wiped OpenSees domain, its gravity loads in load pattern 1;
+    returns the tags."""
     ops.wipe()
     ops.model("basic", "-ndm", 2, "-ndf", 3)
-    tags = tuple(i + 1 for i in range(frame.n_nodes))
+    built = add_frame(ops, frame, lean_transf=lean_transf)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    add_gravity_loads(ops, frame, built)
+    return built
+
+
+def add_frame(ops: Any, frame: Frame, *, offset: int = 0, dx: float = 0.0,
+              lean_transf: str = "PDelta") -> OpenSeesFrame:
+    """Add ``frame`` to the current (2-D, 3 DOFs a node) domain, moved ``dx`` [m] to the
+    right, every tag of the module docstring plus ``offset`` (so that two frames can stand in
+    one domain: give the second an offset above the first's largest tag, 10001 + its
+    hinges); no loads (:func:`add_gravity_loads`)."""
+    if frame.geometry not in TRANSF:
+        raise ValueError(f"no OpenSees transformation for geometry {frame.geometry!r}")
+    o = int(offset)
+    tags = tuple(o + i + 1 for i in range(frame.n_nodes))
     for i, (x, y) in enumerate(frame.nodes):
-        ops.node(tags[i], float(x), float(y))
+        ops.node(tags[i], float(x) + dx, float(y))
         if np.any(frame.supports[i]):
             ops.fix(tags[i], *(int(s) for s in frame.supports[i]))
         if np.any(frame.masses[i]):
             ops.mass(tags[i], *(float(m) for m in frame.masses[i]))
-    ops.geomTransf("Linear", 1)
-    ops.geomTransf(TRANSF[frame.geometry], 2)
-    ops.geomTransf(lean_transf, 3)
+    ops.geomTransf("Linear", o + 1)
+    ops.geomTransf(TRANSF[frame.geometry], o + 2)
+    ops.geomTransf(lean_transf, o + 3)
     ends = [[tags[a], tags[b]] for a, b in frame.elements]
+    hinge_tags = []
     for h, fh in enumerate(frame.hinges):
         joint = ends[fh.element][fh.end]
-        end = 1001 + h
+        end = o + 1001 + h
         x, y = frame.nodes[frame.elements[fh.element, fh.end]]
-        ops.node(end, float(x), float(y))
-        hinge_material(ops, h + 1, fh.law)
-        ops.element("zeroLength", 10001 + h, joint, end, "-mat", h + 1, "-dir", 6)
+        ops.node(end, float(x) + dx, float(y))
+        hinge_material(ops, o + h + 1, fh.law)
+        ops.element("zeroLength", o + 10001 + h, joint, end, "-mat", o + h + 1, "-dir", 6)
+        hinge_tags.append(o + 10001 + h)
         fixed = frame.supports[frame.elements[fh.element, fh.end]]
         if fixed[0] and fixed[1]:
             ops.fix(end, 1, 1, 0)
@@ -120,8 +146,8 @@ def build(ops: Any, frame: Frame, *, lean_transf: str = "PDelta") -> OpenSeesFra
         ends[fh.element][fh.end] = end
     column = frame.is_column
     for e, (i, j) in enumerate(ends):
-        ops.element("elasticBeamColumn", e + 1, i, j, float(frame.EA[e]), 1.0,
-                    float(frame.EI[e]), 2 if column[e] else 1)
+        ops.element("elasticBeamColumn", o + e + 1, i, j, float(frame.EA[e]), 1.0,
+                    float(frame.EI[e]), o + (2 if column[e] else 1))
     level = frame.node_level
     floors = []
     for f in range(frame.levels.size):
@@ -132,32 +158,37 @@ def build(ops: Any, frame: Frame, *, lean_transf: str = "PDelta") -> OpenSeesFra
                 ops.equalDOF(members[0], other, 1)
     leaning: list[int] = []
     if np.any(frame.leaning_loads):
-        x = float(np.max(frame.nodes[:, 0])) + LEAN_X_OFFSET
-        ops.node(2000, x, frame.base)
-        ops.fix(2000, 1, 1, 1)
-        leaning.append(2000)
+        x = float(np.max(frame.nodes[:, 0])) + LEAN_X_OFFSET + dx
+        ops.node(o + 2000, x, frame.base)
+        ops.fix(o + 2000, 1, 1, 1)
+        leaning.append(o + 2000)
         for f, y in enumerate(frame.levels):
-            ops.node(2001 + f, x, float(y))
-            ops.fix(2001 + f, 0, 0, 1)
-            ops.equalDOF(floors[f], 2001 + f, 1)
-            ops.element("elasticBeamColumn", 3001 + f, 2000 + f, 2001 + f, 1e12, 1.0, 1.0, 3,
-                        "-release", 3)
-            leaning.append(2001 + f)
-    ops.timeSeries("Linear", 1)
-    ops.pattern("Plain", 1, 1)
+            ops.node(o + 2001 + f, x, float(y))
+            ops.fix(o + 2001 + f, 0, 0, 1)
+            ops.equalDOF(floors[f], o + 2001 + f, 1)
+            ops.element("elasticBeamColumn", o + 3001 + f, o + 2000 + f, o + 2001 + f, 1e12,
+                        1.0, 1.0, o + 3, "-release", 3)
+            leaning.append(o + 2001 + f)
+    return OpenSeesFrame(tags, tuple(floors), tuple(leaning), o, tuple(hinge_tags),
+                         tuple(o + e + 1 for e in range(frame.n_elements)))
+
+
+def add_gravity_loads(ops: Any, frame: Frame, built: OpenSeesFrame) -> None:
+    """The frame's gravity loads (nodal, leaning column, ``-beamUniform``) in the current
+    load pattern."""
+    tags, o = built.node, built.offset
     for i in range(frame.n_nodes):
         if np.any(frame.nodal_loads[i]):
             ops.load(tags[i], *(float(v) for v in frame.nodal_loads[i]))
     for f, p in enumerate(frame.leaning_loads):
         if p:
-            ops.load(2001 + f, 0.0, -float(p), 0.0)
+            ops.load(o + 2001 + f, 0.0, -float(p), 0.0)
     for e in range(frame.n_elements):
         w = float(frame.member_loads[e])
         if w:
             a, b = frame.elements[e]
             c, s = (frame.nodes[b] - frame.nodes[a]) / frame.lengths[e]
-            ops.eleLoad("-ele", e + 1, "-type", "-beamUniform", -w * c, -w * s)
-    return OpenSeesFrame(tags, tuple(floors), tuple(leaning))
+            ops.eleLoad("-ele", o + e + 1, "-type", "-beamUniform", -w * c, -w * s)
 
 
 def first_mode_shape(ops: Any, built: OpenSeesFrame) -> NDArray[np.float64]:
@@ -173,18 +204,20 @@ def first_mode_shape(ops: Any, built: OpenSeesFrame) -> NDArray[np.float64]:
     return shape / shape[np.argmax(np.abs(shape))]
 
 
-def _static(ops: Any, tol: float) -> None:
+def _static(ops: Any, tol: float, system: str = "BandGeneral") -> None:
     ops.wipeAnalysis()
     ops.constraints(CONSTRAINTS)
     ops.numberer("RCM")
-    ops.system("BandGeneral")
+    ops.system(system)
     ops.test("NormDispIncr", tol, 100)
     ops.algorithm("Newton")
 
 
-def gravity(ops: Any, steps: int = 10, tol: float = 1e-10) -> None:
-    """Apply load pattern 1 in ``steps`` load steps and hold it (``loadConst``)."""
-    _static(ops, tol)
+def gravity(ops: Any, steps: int = 10, tol: float = 1e-10,
+            system: str = "BandGeneral") -> None:
+    """Apply load pattern 1 in ``steps`` load steps and hold it (``loadConst``), solving
+    with OpenSees' ``system``."""
+    _static(ops, tol, system)
     ops.integrator("LoadControl", 1.0 / steps)
     ops.analysis("Static")
     if ops.analyze(steps) != 0:
