@@ -43,6 +43,7 @@ from pounding.structure.frame_stiffness import (
     frame_dofs,
     geometric_stiffness,
     gravity_load_vector,
+    hinge_incidence,
     hinge_rotations,
 )
 
@@ -98,16 +99,12 @@ def _tangents(state: FrameState, directions: NDArray[np.int64]) -> NDArray[np.fl
 
 
 def _hinge_matrix(dofs: FrameDofs, tangents: NDArray[np.float64]) -> Any:
-    """The hinges' springs as a sparse matrix (:func:`configuration_stiffness` without the
-    base)."""
+    """The hinges' springs as a sparse matrix, ``B diag(k) Bᵀ`` (:func:`configuration_stiffness`
+    without the base)."""
     import scipy.sparse
 
-    a, b = dofs.hinge_node, dofs.hinge
-    fixed = a < 0
-    rows = np.concatenate([b, a[~fixed], a[~fixed], b[~fixed]])
-    cols = np.concatenate([b, a[~fixed], b[~fixed], a[~fixed]])
-    vals = np.concatenate([tangents, tangents[~fixed], -tangents[~fixed], -tangents[~fixed]])
-    return scipy.sparse.coo_matrix((vals, (rows, cols)), shape=(dofs.n, dofs.n)).tocsc()
+    B = hinge_incidence(dofs)
+    return (B @ scipy.sparse.diags(np.asarray(tangents, dtype=float)) @ B.T).tocsc()
 
 
 def _solve_unit(K: Any, P: NDArray[np.float64], control: NDArray[np.float64],

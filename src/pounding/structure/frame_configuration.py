@@ -56,7 +56,7 @@ from pounding.hysteresis.hinges import Branch, HingeLaw, HingeState
 from pounding.structure.frame import Frame
 from pounding.structure.frame_analysis import FrameState, gravity
 from pounding.structure.frame_condensation import Condensation
-from pounding.structure.frame_stiffness import gravity_load_vector
+from pounding.structure.frame_stiffness import gravity_load_vector, hinge_incidence
 
 __all__ = ["Configuration", "FrameCollapse", "FrameMotion"]
 
@@ -167,16 +167,7 @@ class FrameMotion:
         #: (:meth:`redistribute`)
         self.jumped = False
         self._condensation = Condensation(self.base, dofs, frame.name)
-        # the hinges' incidence B (n, n_h): +1 at the joint's rotation, −1 at the member
-        # end's; B q are the nodal loads of moments q
-        import scipy.sparse
-
-        on = self.node >= 0
-        every = np.arange(self.node.size)
-        self._incidence = scipy.sparse.csr_matrix(
-            (np.concatenate([np.ones(int(on.sum())), -np.ones(every.size)]),
-             (np.concatenate([self.node[on], self.end]), np.concatenate([every[on], every]))),
-            shape=(dofs.n, every.size))
+        self._incidence = hinge_incidence(dofs)  # (B q: the nodal loads of moments q)
         # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
         # the hinge laws) is committed here only, its law's state left behind at the last
         # point the law was asked about (``_behind``) until it leaves that branch
@@ -274,11 +265,6 @@ class FrameMotion:
         return jumped
 
     # ------------------------------------------------------------------ configurations
-    def branches(self) -> tuple[list[Branch], list[Branch]]:
-        """Each hinge's branch from its committed state moving up, and moving down."""
-        return ([Branch(k, e) for k, e in zip(self._k_up.tolist(), self._end_up.tolist())],
-                [Branch(k, e) for k, e in zip(self._k_down.tolist(), self._end_down.tolist())])
-
     def condensed(self, tangents: Vector, directions: NDArray[np.int64]) -> Configuration:
         """The configuration with hinge tangents ``tangents`` about the committed hinge
         states (module docstring).

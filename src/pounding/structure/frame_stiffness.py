@@ -24,6 +24,7 @@ In one *configuration* every hinge stands on one straight branch of its law with
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -32,7 +33,7 @@ from pounding.structure.frame import Frame
 
 __all__ = ["FrameDofs", "configuration_stiffness", "element_end_forces", "end_moment_operator",
            "frame_dofs", "geometric_stiffness", "gravity_load_vector", "elastic_stiffness",
-           "condense"]
+           "condense", "hinge_incidence"]
 
 
 @dataclass(frozen=True)
@@ -192,6 +193,22 @@ def configuration_stiffness(base: NDArray[np.float64], dofs: FrameDofs,
     np.add.at(K, (a[on], b[on]), -k[on])
     np.add.at(K, (b[on], a[on]), -k[on])
     return K
+
+
+def hinge_incidence(dofs: FrameDofs) -> Any:
+    """The hinges' incidence ``B`` (n, n_h), sparse: +1 at a hinge's joint rotation (none at a
+    support), −1 at its member end's, so that the hinge rotations are ``Bᵀ U``, the nodal
+    loads of hinge moments ``q`` are ``B q`` and the springs of tangents ``k`` are
+    ``B diag(k) Bᵀ``."""
+    import scipy.sparse
+
+    node, end = np.asarray(dofs.hinge_node), np.asarray(dofs.hinge)
+    on = node >= 0
+    h = np.arange(end.size)
+    return scipy.sparse.csr_matrix(
+        (np.concatenate([np.ones(int(on.sum())), -np.ones(end.size)]),
+         (np.concatenate([node[on], end]), np.concatenate([h[on], h]))),
+        shape=(dofs.n, end.size))
 
 
 def hinge_rotations(dofs: FrameDofs, U: NDArray[np.float64]) -> NDArray[np.float64]:
