@@ -61,6 +61,7 @@ from pounding.structure.assembly import (
     Building,
     assemble,
     contact_points,
+    face_below,
     floor_below,
     floor_dofs,
 )
@@ -83,6 +84,24 @@ def _floor_counts(buildings: Sequence[Building]) -> str:
                      for i, b in enumerate(buildings))
 
 
+def _face_point_name(index: int, building: Building, side: str, z: float, tol: float) -> str:
+    """The label of a contact point at elevation ``z`` [m] on a face of ``building`` (number
+    ``index``, 0-based) that is not its floors (:attr:`MatrixBuilding.faces`; ``""`` for the
+    floors, which :meth:`ContactPoint.label` names): ``'B1F3'`` within ``tol`` [m] of the
+    level of floor 3, ``'B1S3@0.50'`` half way up storey 3."""
+    if not isinstance(building, MatrixBuilding) or side not in building.faces:
+        return ""
+    f = floor_dofs(building)
+    levels = building.elevations[f]
+    k = int(np.searchsorted(levels, z - tol))
+    if k < levels.size and abs(levels[k] - z) <= tol:
+        return f"B{index + 1}F{k + 1}"
+    below = float(levels[k - 1]) if k > 0 else 0.0
+    top = float(levels[min(k, levels.size - 1)])
+    xi = (z - below) / (top - below) if top > below else 1.0
+    return f"B{index + 1}S{k + 1}@{xi:.2f}"
+
+
 def _check_matrix_building(i: int, b: MatrixBuilding) -> None:
     """A matrix building the kernel can take: lumped masses, floors at distinct elevations
     above the ground (one line naming the building and the fault)."""
@@ -102,6 +121,18 @@ def _check_matrix_building(i: int, b: MatrixBuilding) -> None:
         raise ValueError(f"{who}: floors {b.labels[f[k]]!r} and {b.labels[f[k + 1]]!r} are both "
                          f"at elevation {z[k]:g} m; give each floor its own elevation (or list "
                          "only one of them in floors)")
+    for side in b.faces:
+        f = b.face_dofs(side)
+        z = b.elevations[f]
+        if not z[0] > 0.0:
+            raise ValueError(f"{who}: faces.{side}: {b.labels[f[0]]!r} is at elevation "
+                             f"{z[0]:g} m; the DOFs of a face stand above the ground (> 0)")
+        same = np.flatnonzero(np.diff(z) <= 0.0)
+        if same.size:
+            k = int(same[0])
+            raise ValueError(f"{who}: faces.{side}: {b.labels[f[k]]!r} and "
+                             f"{b.labels[f[k + 1]]!r} are both at elevation {z[k]:g} m; a "
+                             "face has one DOF at each elevation")
 
 
 def _with_plan_influence(system: AssembledSystem,
@@ -245,6 +276,12 @@ class PoundingModel:
                         raise ValueError(f"devices[{i}].floors: {label} is not a floor of "
                                          f"building B{b + 1} (DOF {f + 1} is not among its "
                                          "floors)")
+                    faces = getattr(self.buildings[b], "faces", {})
+                    if faces:
+                        raise ValueError(f"devices[{i}].floors: {label}: building B{b + 1} "
+                                         "is struck on faces other than its floors (a frame "
+                                         "without rigid floors, say); links to it are not "
+                                         "supported (give it rigid floors)")
             elif isinstance(dev, Bumper):
                 if dev.label in seen:
                     raise ValueError(f"devices[{i}]: a second bumper in {dev.label}")
@@ -282,10 +319,13 @@ class PoundingModel:
             if isinstance(a, PlanMatrixBuilding) or isinstance(b, PlanMatrixBuilding):
                 out.extend(self._plan_pair_contacts(p, a, b, len(out)))
                 continue
-            for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column,
-                                                      self.level_tolerance):
-                left = ContactPoint(p, i, xi_i, int(floor_below(a)[i]))
-                right = ContactPoint(p + 1, j, xi_j, int(floor_below(b)[j]))
+            tol = self.level_tolerance
+            below_a, below_b = face_below(a, "right"), face_below(b, "left")
+            for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column, tol):
+                left = ContactPoint(p, i, xi_i, int(below_a[i]),
+                                    name=_face_point_name(p, a, "right", z, tol))
+                right = ContactPoint(p + 1, j, xi_j, int(below_b[j]),
+                                     name=_face_point_name(p + 1, b, "left", z, tol))
                 law = self.contact.build(left.effective_mass(a.masses),
                                          right.effective_mass(b.masses))
                 out.append(Contact(len(out), p, left, right, z, float(self.gaps[p]), law))

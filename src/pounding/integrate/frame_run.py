@@ -121,13 +121,13 @@ class FrameRun:
         h0 = 0
         first = 0
         for b, bl in model.yielding_frames:
-            motion = FrameMotion(bl.frame, bl.gravity_state)
+            motion = FrameMotion(bl.frame, bl.gravity_state, bl.kept)
             rows = slice(h0, h0 + motion.n_hinges)
             h0 += motion.n_hinges
             no_band = np.zeros((0, 0), dtype=np.int64)  # (set below, once the band is known)
             self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first,
                                       no_band, no_band,
-                                      np.asarray(bl.frame.storey_heights, dtype=float)))
+                                      np.diff(bl.elevations[:len(bl.floors)], prepend=0.0)))
             first += motion.n_floors
         self.n_hinges = h0
         nf_max = max(f.motion.n_floors for f in self.frames)
@@ -347,7 +347,7 @@ class FrameRun:
             Naming the frame, the storey, its drift and the time.
         """
         for f in self.frames:
-            u = x[self._floors(f)]
+            u = x[self._floors(f)][:f.heights.size]  # (the floors come first)
             drift = u.copy()
             drift[1:] -= u[:-1]
             ratio = np.abs(drift) / f.heights

@@ -13,7 +13,9 @@ floor to column).
 DOF numbering: building ``b``'s floor ``j`` (1-based, floor 1 = first suspended floor) is
 global degree of freedom ``offsets[b] + j − 1``; a :class:`~pounding.structure.MatrixBuilding`'s
 DOF ``j`` (0-based, in its own order) is ``offsets[b] + j``. Its floors are the DOFs of
-:attr:`~pounding.structure.MatrixBuilding.floors` (:func:`floor_dofs`, lowest first).
+:attr:`~pounding.structure.MatrixBuilding.floors` (:func:`floor_dofs`, lowest first); a
+neighbour strikes it there, or at the DOFs its
+:attr:`~pounding.structure.MatrixBuilding.faces` name for that side (:func:`face_dofs`).
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ from pounding.structure.shear_building import ShearBuilding
 from pounding.validation import positive
 
 __all__ = ["BUILDING_TYPES", "AssembledSystem", "Building", "assemble", "contact_points",
-           "floor_below", "floor_dofs", "shared_levels"]
+           "face_below", "face_dofs", "floor_below", "floor_dofs", "shared_levels"]
 
 Building = ShearBuilding | MatrixBuilding
 """A building that stands in a row: a shear building or a (planar) matrix building."""
@@ -53,6 +55,22 @@ def floor_below(building: Building) -> NDArray[np.int64]:
     if isinstance(building, MatrixBuilding):
         return building.floor_below()
     return np.arange(building.n, dtype=np.int64) - 1
+
+
+def face_dofs(building: Building, side: str) -> NDArray[np.int64]:
+    """The DOFs a neighbour on ``side`` (``"left"`` or ``"right"``) strikes, lowest first: a
+    matrix building's :meth:`~MatrixBuilding.face_dofs`, else the floors."""
+    if isinstance(building, MatrixBuilding):
+        return building.face_dofs(side)
+    return floor_dofs(building)
+
+
+def face_below(building: Building, side: str) -> NDArray[np.int64]:
+    """For every DOF, the DOF below it on the face of ``side`` (−1: the ground, −2: not on
+    that face): :func:`floor_below` unless a matrix building's faces say otherwise."""
+    if isinstance(building, MatrixBuilding):
+        return building.face_below(side)
+    return floor_below(building)
 
 
 class AssembledSystem(NamedTuple):
@@ -151,7 +169,8 @@ def shared_levels(a: Building, b: Building, tol: float = 1e-6) -> list[tuple[int
     Parameters
     ----------
     a, b : ShearBuilding or MatrixBuilding
-        The two adjacent buildings (of a matrix building, its floor DOFs only).
+        The two adjacent buildings, ``a`` on the left (of a matrix building, its floor DOFs,
+        or the DOFs of its faces that face the other).
     tol : float
         Two floors are at the same elevation if their levels differ by at most ``tol`` [m].
 
@@ -172,7 +191,7 @@ def shared_levels(a: Building, b: Building, tol: float = 1e-6) -> list[tuple[int
         if not isinstance(x, BUILDING_TYPES):
             raise ValueError(f"{label} must be a ShearBuilding or a MatrixBuilding (got {x!r})")
     t = positive("tol", tol)
-    fa, fb = floor_dofs(a), floor_dofs(b)
+    fa, fb = face_dofs(a, "right"), face_dofs(b, "left")
     za, zb = a.floor_levels[fa], b.floor_levels[fb]
     pairs: list[tuple[int, int]] = []
     for i, z in enumerate(za):
@@ -188,15 +207,16 @@ def contact_points(a: Building, b: Building, floor_to_column: bool = True,
     """Where two neighbouring buildings can touch: ``(elevation, i, ξ_i, j, ξ_j)`` rows.
 
     Only floors take part: every DOF of a shear building, the
-    :attr:`~pounding.structure.MatrixBuilding.floors` of a matrix building, ordered by
-    elevation. Floors at the same elevation (within ``tol`` [m]) meet floor to floor
+    :attr:`~pounding.structure.MatrixBuilding.floors` of a matrix building — or the DOFs of
+    its :attr:`~pounding.structure.MatrixBuilding.faces` that face the other (``a``'s right,
+    ``b``'s left) — ordered by elevation. Floors at the same elevation (within ``tol`` [m]) meet floor to floor
     (``ξ = 1`` both). With ``floor_to_column``, every other floor of one building below the
     roof of the other meets the other's column at the same elevation, in the storey below
     the other's floor ``j`` at position ``ξ_j`` (0 at the floor below it or the ground, 1 at
     floor ``j``). ``i`` and ``j`` are 0-based DOFs of ``a`` and ``b``; rows are sorted by
     elevation.
     """
-    fa, fb = floor_dofs(a), floor_dofs(b)
+    fa, fb = face_dofs(a, "right"), face_dofs(b, "left")
     za, zb = a.floor_levels[fa], b.floor_levels[fb]
     rows: list[tuple[float, int, float, int, float]] = []
     paired_a: set[int] = set()

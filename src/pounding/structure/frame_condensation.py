@@ -1,23 +1,25 @@
-"""A frame condensed onto its floors for one set of hinge tangents.
+"""A frame condensed onto its DOFs with mass for one set of hinge tangents.
 
 In a configuration of its hinges (:mod:`pounding.structure.frame_configuration`) a frame's
 tangent stiffness is its elastic and geometric stiffness ``K_base`` plus each hinge's spring of
-tangent ``k_t`` between its joint's rotation and its member end's. With masses on the floors'
-lateral motion only, every other DOF ``s`` is massless and the static condensation of Chopra,
-*Dynamics of Structures*, 4th ed., §9.3, gives
+tangent ``k_t`` between its joint's rotation and its member end's. The DOFs ``m`` that carry
+mass (the floors' lateral motion, and where given the nodes' vertical motion, rotation or
+own lateral motion) are kept; every other DOF ``s`` is massless and the static condensation
+of Chopra, *Dynamics of Structures*, 4th ed., §9.3, gives
 
-    S = −K_ss⁻¹ K_sm,   K_c = K_mm + K_ms S,   P = [I; S] (every DOF per floor displacement),
+    S = −K_ss⁻¹ K_sm,   K_c = K_mm + K_ms S,   P = [I; S] (every DOF per kept displacement),
 
-and the hinge rotations per floor displacement ``A = B_sᵀ P`` (``B`` the hinges' incidence).
+and the hinge rotations per kept displacement ``A = Bᵀ P`` (``B`` the hinges' incidence).
 :class:`Condensation` keeps these for each set of tangents a run meets, and the factorised
 ``K_ss`` that turns the constant loads of a configuration (gravity, the hinges' moment
 offsets) into the massless DOFs' constant displacements.
 
-The springs of the hinges touch rotations only, never a floor's lateral DOF, so ``K_sm`` and
-``K_mm`` are those of ``K_base``; ``K_ss`` has a fixed sparsity pattern (the base's and the
-springs'), assembled here by adding the tangents into its values and factorised by SuperLU (a
-frame's ``K_ss`` has a few entries a row: dense LAPACK took 14 ms for a 306-DOF frame on a
-loaded 2-core machine where SuperLU took 0.5 ms).
+The springs of the hinges touch rotations only: a member end's own rotation (always
+massless) and its joint's (massless unless the joint has a rotational mass). ``K_ss`` has a
+fixed sparsity pattern (the base's and the springs'), assembled here by adding the tangents
+into its values and factorised by SuperLU (a frame's ``K_ss`` has a few entries a row: dense
+LAPACK took 14 ms for a 306-DOF frame on a loaded 2-core machine where SuperLU took 0.5 ms);
+a spring whose joint rotation is kept adds ``k_t`` to ``K_mm`` and ``−k_t`` to ``K_ms``.
 """
 
 from __future__ import annotations
@@ -50,10 +52,10 @@ class CondensedPart:
     live: NDArray[np.int64]
     dead: NDArray[np.int64]
     solve: Callable[[Vector], Vector]
-    Kms: Vector  #: (n_f, n_live)
-    Kc: Vector  #: (n_f, n_f) [N/m]
-    A: Vector  #: (n_h, n_f) [rad/m]
-    P: Vector  #: (n, n_f)
+    Kms: Vector  #: (n_m, n_live)
+    Kc: Vector  #: (n_m, n_m) [N/m, N, N·m]
+    A: Vector  #: (n_h, n_m) [rad/m, rad/rad]
+    P: Vector  #: (n, n_m)
 
 
 class Condensation:
@@ -67,24 +69,36 @@ class Condensation:
         Its DOF numbering (floors, hinge DOFs).
     name : str
         The frame's name, for messages.
+    kept : array_like of int, optional
+        The DOFs kept (with mass), in the order of the condensed matrices; default the
+        floors' lateral DOFs (``dofs.floor_dof``).
     """
 
-    def __init__(self, base: Vector, dofs: FrameDofs, name: str) -> None:
+    def __init__(self, base: Vector, dofs: FrameDofs, name: str,
+                 kept: NDArray[np.int64] | None = None) -> None:
         import scipy.sparse
 
         n = dofs.n
         self.name = name
-        self.floor = np.asarray(dofs.floor_dof, dtype=np.int64)
+        self.floor = np.asarray(dofs.floor_dof if kept is None else kept, dtype=np.int64)
         self.other = np.setdiff1d(np.arange(n), self.floor)
         self.node = np.asarray(dofs.hinge_node, dtype=np.int64)
         self.end = np.asarray(dofs.hinge, dtype=np.int64)
-        if np.isin(np.concatenate([self.node, self.end]), self.floor).any():
-            raise ValueError(f"{name}: a hinge's DOF is a floor's lateral DOF")
+        if np.isin(self.end, self.floor).any():
+            raise ValueError(f"{name}: a member end's own rotation (a hinge's) cannot carry "
+                             "mass")
         local = np.full(n, -1, dtype=np.int64)
         local[self.other] = np.arange(self.other.size)
+        kept_at = np.full(n, -1, dtype=np.int64)
+        kept_at[self.floor] = np.arange(self.floor.size)
         no = self.other.size
         # the pattern of K_ss over every massless DOF: the base's entries and the springs'
-        on = self.node >= 0
+        # (a spring whose joint rotation is kept, ``kept_node``, reaches K_ss at its end only)
+        on = (self.node >= 0) & (kept_at[np.maximum(self.node, 0)] < 0)
+        kept_node = np.flatnonzero((self.node >= 0) & ~on)
+        self._kept_node = kept_node
+        self._kept_node_m = kept_at[self.node[kept_node]]
+        self._kept_node_s = local[self.end[kept_node]]
         ha, hb = local[self.node[on]], local[self.end[on]]
         he = local[self.end]
         spring_rows = np.concatenate([he, ha, ha, hb])
@@ -144,6 +158,12 @@ class Condensation:
 
         k = np.asarray(tangents, dtype=float)
         data = self._base_data + self._scatter @ k
+        Kmm, Kmo = self._Kmm, self._Kmo
+        if self._kept_node.size:  # springs between a kept joint rotation and a member end
+            kk = k[self._kept_node]
+            Kmm, Kmo = Kmm.copy(), Kmo.copy()
+            np.add.at(Kmm, (self._kept_node_m, self._kept_node_m), kk)
+            np.add.at(Kmo, (self._kept_node_m, self._kept_node_s), -kk)
         no = self.other.size
         # a massless DOF with no stiffness at all (a joint whose every connection is a hinge
         # of zero tangent) stays where it is
@@ -155,10 +175,10 @@ class Condensation:
         Kss = scipy.sparse.csc_matrix((data, self._indices, self._indptr), shape=(no, no))
         if live_local.size != no:
             Kss = Kss[live_local][:, live_local].tocsc()
-        Kms = self._Kmo[:, live_local]
+        Kms = Kmo[:, live_local]
         P = np.zeros((self.other.size + nf, nf))
         P[self.floor, np.arange(nf)] = 1.0
-        Kc = self._Kmm.copy()
+        Kc = Kmm.copy()
         solve: Callable[[Vector], Vector] = _nothing_to_solve
         if live.size:
             # equilibrate rows and columns by the diagonal so that the pivots compare DOFs

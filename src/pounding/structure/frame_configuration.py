@@ -5,9 +5,11 @@ Every hinge law is piecewise linear (:mod:`pounding.hysteresis.hinges`), so in a
 linear: its stiffness is ``K_t = configuration_stiffness(base, dofs, k_t)`` (``base`` the
 elastic elements plus the geometric stiffness of the gravity loads) and the moment of hinge
 h is ``M_h = k_t θ_h + q_h`` with ``q_h = M_h* − k_t θ_h*`` from the point ``(θ_h*, M_h*)``
-where it was last committed. With masses on the floors' lateral motion only (rigid floors),
-every other DOF ``s`` (vertical displacements, joint and member-end rotations) is massless
-and in static equilibrium with the floors' displacements ``u``:
+where it was last committed. The DOFs with mass — the floors' lateral motion and, where
+the frame has them, other masses (a node's own lateral or vertical motion, a joint's
+rotation) — are here called its *floors* ``u`` for short (the floors come first); every
+other DOF ``s`` (vertical displacements, joint and member-end rotations without mass) is
+massless and in static equilibrium with them:
 
     K_ss U_s + K_sm u + (B q)_s = G_s   ⇒   U_s = S u + s0,
     S = −K_ss⁻¹ K_sm,   s0 = K_ss⁻¹ (G_s − (B q)_s),
@@ -132,13 +134,18 @@ class FrameMotion:
     Parameters
     ----------
     frame : Frame
-        A frame with rigid floors and masses on the floors' lateral motion only.
+        A frame with lumped masses.
     state : FrameState, optional
         Its gravity state (:func:`pounding.structure.frame_analysis.gravity`), computed if
         not given; it is not modified.
+    kept : array_like of int, optional
+        The frame's DOFs with mass, in the order of the run's (the "floors" ``u`` of this
+        class: the floors' lateral DOFs first, then any other DOF with mass); default the
+        floors' lateral DOFs (rigid floors, masses on them only).
     """
 
-    def __init__(self, frame: Frame, state: FrameState | None = None) -> None:
+    def __init__(self, frame: Frame, state: FrameState | None = None,
+                 kept: NDArray[np.int64] | None = None) -> None:
         state = state if state is not None else gravity(frame)
         dofs = state.dofs
         self.frame = frame
@@ -149,7 +156,7 @@ class FrameMotion:
         self.base = state.base
         self.axial = state.axial  #: the columns' gravity axial forces [N] (tension +)
         self.G = gravity_load_vector(frame, dofs)
-        self.floor = np.asarray(dofs.floor_dof, dtype=np.int64)
+        self.floor = np.asarray(dofs.floor_dof if kept is None else kept, dtype=np.int64)
         self.U = state.U.copy()
         self.U0 = self.U.copy()  #: the displacements at the start [m, rad]
         self.u_gravity = self.U[self.floor].copy()
@@ -166,7 +173,7 @@ class FrameMotion:
         #: the frame must be brought to the equilibrium of its next configuration
         #: (:meth:`redistribute`)
         self.jumped = False
-        self._condensation = Condensation(self.base, dofs, frame.name)
+        self._condensation = Condensation(self.base, dofs, frame.name, self.floor)
         self._incidence = hinge_incidence(dofs)  # (B q: the nodal loads of moments q)
         # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
         # the hinge laws) is committed here only, its law's state left behind at the last

@@ -1,13 +1,16 @@
-"""A frame's lateral model in a row of buildings: its stiffness condensed onto the floors,
-as a :class:`~pounding.structure.MatrixBuilding` that stands in a row and pounds.
+"""A frame's lateral model in a row of buildings: its stiffness condensed onto its DOFs with
+mass, as a :class:`~pounding.structure.MatrixBuilding` that stands in a row and pounds.
 
-With rigid floors and masses on the floors' lateral motion only (the usual lumped-mass
-model of a moment frame), every other degree of freedom — vertical displacements, joint and
-member-end rotations — is massless and follows the floors statically: the frame's lateral
-stiffness is the static condensation ``K_ff − K_fo K_oo⁻¹ K_of`` (Chopra, *Dynamics of
-Structures*, 4th ed., §9.3), with the hinges at their elastic stiffness and, when the frame
-has P-Delta (``geometry`` or a leaning column), the geometric stiffness of its gravity
-loads included. That is exact for a frame that stays elastic.
+With lumped masses (the usual model of a moment frame: the floors' masses on their lateral
+motion, with rigid floors one DOF a floor), every DOF without mass — vertical displacements,
+joint and member-end rotations, unless given mass — follows the others statically: the
+frame's stiffness is the static condensation ``K_ff − K_fo K_oo⁻¹ K_of`` onto the DOFs with
+mass (Chopra, *Dynamics of Structures*, 4th ed., §9.3), with the hinges at their elastic
+stiffness and, when the frame has P-Delta (``geometry`` or a leaning column), the geometric
+stiffness of its gravity loads included. That is exact for a frame that stays elastic. A
+frame without rigid floors keeps each node's lateral DOF that has mass; its floors (where
+drifts are measured) are its left column line, and a neighbour on its right strikes its
+right column line (:attr:`~pounding.structure.MatrixBuilding.faces`).
 
 A frame with plastic hinges is a :class:`FrameBuilding`: the same matrix building (its
 ``K`` the elastic condensed stiffness, its damping built on it), carrying the frame and its
@@ -19,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pounding.structure.frame import Frame
+from pounding.structure.frame import LEVEL_TOL, Frame
 from pounding.structure.frame_analysis import FrameState, frame_modes, gravity
 from pounding.structure.matrices import MatrixBuilding
 
@@ -39,6 +42,9 @@ class FrameBuilding(MatrixBuilding):
 
     frame: Frame
     gravity_state: FrameState
+    #: the frame's DOF (:class:`~pounding.structure.frame_stiffness.FrameDofs` numbering)
+    #: of each of the building's DOFs
+    kept: np.ndarray
 
     @property
     def hinges(self) -> tuple:
@@ -57,32 +63,94 @@ class FrameBuilding(MatrixBuilding):
 
 def frame_matrix_building(frame: Frame) -> FrameBuilding:
     """The frame as a building of a row (module docstring): a :class:`FrameBuilding`, the
-    :class:`MatrixBuilding` of its floors with the frame attached.
+    :class:`MatrixBuilding` of its DOFs with mass with the frame attached.
+
+    Its DOFs are the floors first — the lateral displacement of each floor (a level where a
+    beam stands), with rigid floors the floor's, without them its first node's (the left
+    column line), ``F1`` … ``Fn`` — then every other DOF with mass, labelled by node (``N7x``,
+    ``N7y``, ``N7r``: node 7's lateral, vertical and rotational DOF). Drifts are measured at
+    the floors. A neighbour strikes the frame's outer column line on its side
+    (:attr:`MatrixBuilding.faces`): without rigid floors each floor's last node on the
+    right; and a node with lateral mass on an outer column between two floors (a level with
+    no beam, at the frame's leftmost or rightmost x) is struck by a neighbour's slab at its
+    level — floor to column at a node of the column, with its bending — and bounds the
+    stretch of column a slab between nodes strikes.
 
     Raises
     ------
     ValueError
-        If the frame has no rigid floors or carries mass other than on the floors' lateral
-        motion.
+        If a floor's node where drifts are measured or where a neighbour strikes carries
+        no lateral mass, or a member end's own rotation is given mass.
     """
-    if not frame.diaphragm:
-        raise ValueError(f"{frame.name}: diaphragm: a time history of a frame needs rigid "
-                         "floors (diaphragm = true)")
     state = gravity(frame)
+    dofs = state.dofs
     _, _, keep, Kc, m = frame_modes(frame, state)
-    floor_dofs = state.dofs.floor_dof
-    if not np.array_equal(np.sort(keep), np.sort(floor_dofs)):
-        raise ValueError(f"{frame.name}: masses: a time history of a frame takes masses on the "
-                         "floors' lateral motion only (m_x of the floor nodes), not vertical or "
-                         "rotational masses")
-    pos = {int(d): i for i, d in enumerate(keep)}
-    idx = np.array([pos[int(d)] for d in floor_dofs])
-    K = Kc[np.ix_(idx, idx)]
-    M = np.diag(m[idx])
-    nf = idx.size
-    building = FrameBuilding(M=M, K=K, labels=[f"F{j + 1}" for j in range(nf)],
-                             elevations=frame.levels - frame.base, damping=frame.damping,
-                             name=frame.name)
+    mass_at = {int(d): i for i, d in enumerate(keep)}
+    floors, left, right = _row_dofs(frame, state.dofs.node, mass_at)
+    order = list(dict.fromkeys(floors + left + right))  # (unique, in order)
+    order += [int(d) for d in keep if int(d) not in set(order)]
+    kept = np.array(order, dtype=np.int64)
+    idx = np.array([mass_at[d] for d in kept], dtype=np.int64)
+    position = {d: k for k, d in enumerate(order)}
+    faces = None
+    if left != floors or right != floors:
+        faces = {"left": [position[d] for d in left], "right": [position[d] for d in right]}
+    # each DOF's node and direction, for its label, elevation and influence
+    node_of = {int(dofs.node[i, d]): (i, d) for i in range(frame.n_nodes) for d in range(3)
+               if dofs.node[i, d] >= 0}
+    nf = len(floors)
+    labels = [f"F{k + 1}" if k < nf else f"N{node_of[d][0] + 1}{'xyr'[node_of[d][1]]}"
+              for k, d in enumerate(order)]
+    elevations = np.array([frame.nodes[node_of[d][0], 1] for d in order]) - frame.base
+    r = np.array([1.0 if node_of[d][1] == 0 else 0.0 for d in order])
+    building = FrameBuilding(M=np.diag(m[idx]), K=Kc[np.ix_(idx, idx)], labels=labels,
+                             elevations=elevations, r=r, damping=frame.damping,
+                             name=frame.name, floors=list(range(nf)), faces=faces)
     object.__setattr__(building, "frame", frame)
     object.__setattr__(building, "gravity_state", state)
+    object.__setattr__(building, "kept", kept)
     return building
+
+
+def _row_dofs(frame: Frame, node_dof: np.ndarray, mass_at: dict[int, int]
+              ) -> tuple[list[int], list[int], list[int]]:
+    """The frame's DOFs (its own numbering) of its floors, lowest first, and of its left and
+    right faces, by elevation (:func:`frame_matrix_building`)."""
+    level, x = frame.node_level, frame.nodes[:, 0]
+    ends = frame.elements
+    beams = {int(level[a]) for a, b in ends if level[a] >= 0 and level[a] == level[b]}
+    standing = np.flatnonzero(level >= 0)
+    x_min, x_max = float(np.min(x[standing])), float(np.max(x[standing]))
+    floors: list[int] = []
+    left: list[int] = []
+    right: list[int] = []
+    for j in range(frame.levels.size):
+        nodes = np.flatnonzero(level == j)
+        nodes = nodes[node_dof[nodes, 0] >= 0]
+        if j in beams:  # a floor: drifts at its first node, struck at its first and last
+            order = nodes[np.argsort(x[nodes], kind="stable")]
+            for face, node in ((left, int(order[0])), (right, int(order[-1]))):
+                d = int(node_dof[node, 0])
+                if d not in mass_at:
+                    where = (f"floor {len(floors) + 1} (y = {frame.levels[j]:.6g} m)"
+                             if frame.diaphragm else
+                             f"node {node + 1} (floor {len(floors) + 1}, y = "
+                             f"{frame.levels[j]:.6g} m)")
+                    raise ValueError(f"{frame.name}: masses: {where} has no lateral mass; a "
+                                     "time history needs a lateral mass where each floor's "
+                                     "drift is measured and where a neighbour may strike")
+                face.append(d)
+            floors.append(left[-1])
+            continue
+        for node in nodes:  # a column node: struck where it has mass on an outer column
+            d = int(node_dof[node, 0])
+            if d not in mass_at:
+                continue
+            if abs(x[node] - x_min) <= LEVEL_TOL:
+                left.append(d)
+            if abs(x[node] - x_max) <= LEVEL_TOL:
+                right.append(d)
+    if not floors:
+        raise ValueError(f"{frame.name}: no floor (no beam at any level above the base) for a "
+                         "time history")
+    return floors, left, right

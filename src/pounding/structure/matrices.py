@@ -44,8 +44,10 @@ In a :class:`pounding.model.PoundingModel` a planar matrix building stands in a 
 shear buildings: every DOF named in :attr:`MatrixBuilding.floors` (all of them by default) is
 a floor's lateral translation along the row at its elevation, where contacts are found and
 storey drifts measured (between consecutive floors ordered by elevation); the other DOFs
-(rotations, say) take no contact and have no drift. A matrix building has no storey law:
-storey yielding is the shear building's.
+(rotations, say) take no contact and have no drift. Where a neighbour strikes other DOFs
+than the floors — a frame without rigid floors, struck at its outer column line on each side,
+or at a column node between its floors — :attr:`MatrixBuilding.faces` names them for each
+side. A matrix building has no storey law: storey yielding is the shear building's.
 """
 
 from __future__ import annotations
@@ -116,8 +118,14 @@ class MatrixBuilding:
         :func:`~pounding.structure.matrix_files.read_matrix_building` fills it in.
     floors : sequence of int or str, optional
         The DOFs that are floor translations along the row (0-based indices or labels);
-        default all. Only these meet a neighbour in contact and have a storey drift; the
-        default ``r`` is 1 on them and 0 on the others (rotations).
+        default all. Only these have a storey drift and, unless ``faces`` says otherwise,
+        meet a neighbour in contact; the default ``r`` is 1 on them and 0 on the others
+        (rotations).
+    faces : mapping of str to sequence of int or str, optional
+        For a side (``"left"``, ``"right"``), the DOFs a neighbour on that side strikes
+        (indices or labels; translations along the row at distinct elevations), in place of
+        the floors: the outer column line of a frame without rigid floors, say, with any
+        column nodes on it. A side not given is struck at the floors.
 
     Raises
     ------
@@ -150,12 +158,14 @@ class MatrixBuilding:
     name: str
     sources: Mapping[str, str]
     floors: tuple[int, ...]
+    faces: Mapping[str, tuple[int, ...]]
 
     def __init__(self, M: ArrayLike, K: ArrayLike, labels: Sequence[str], elevations: ArrayLike,
                  r: ArrayLike | None = None, C: ArrayLike | None = None,
                  damping: DampingModel | None = None, name: str = "",
                  sources: Mapping[str, str] = MappingProxyType({}),
-                 floors: Sequence[int | str] | None = None) -> None:
+                 floors: Sequence[int | str] | None = None,
+                 faces: Mapping[str, Sequence[int | str]] | None = None) -> None:
         if not isinstance(name, str):
             raise ValueError(f"name must be a string (got {name!r})")
         if not isinstance(sources, Mapping):
@@ -179,6 +189,14 @@ class MatrixBuilding:
         labels_ = dof_labels(labels, n, who)
         elevations_ = dof_vector("elevations", elevations, n, who)
         floors_ = floor_indices(floors, labels_, who)
+        if faces is not None and not isinstance(faces, Mapping):
+            raise ValueError(f"{who}: faces must map a side (left, right) to DOFs "
+                             f"(got {faces!r})")
+        faces_: dict[str, tuple[int, ...]] = {}
+        for side, value in (faces or {}).items():
+            if side not in ("left", "right"):
+                raise ValueError(f"{who}: faces: {side!r} is not a side (left or right)")
+            faces_[side] = floor_indices(value, labels_, who, f"faces.{side}")
         r0 = np.zeros(n)
         r0[list(floors_)] = 1.0
         r_ = dof_vector("r", r0 if r is None else r, n, who)
@@ -229,6 +247,7 @@ class MatrixBuilding:
         frozen_set(self, "name", name)
         frozen_set(self, "sources", given)
         frozen_set(self, "floors", floors_)
+        frozen_set(self, "faces", MappingProxyType(faces_))
         # the matrices, read-only (private: the methods hand out copies)
         self._C: NDArray[np.float64]
         frozen_set(self, "_C", readonly(C_))
@@ -286,6 +305,25 @@ class MatrixBuilding:
         the storey drift of floor DOF j is ``u[j] − u[below[j]]`` (``u = 0`` at the ground)."""
         below = np.full(self.n, -2, dtype=np.int64)
         f = self.floor_dofs
+        below[f] = np.concatenate(([-1], f[:-1]))
+        return below
+
+    def face_dofs(self, side: str) -> NDArray[np.int64]:
+        """The DOFs a neighbour on ``side`` (``"left"``, ``"right"``) strikes, lowest first:
+        :attr:`faces` of that side, or the floors (:attr:`floor_dofs`)."""
+        if side not in self.faces:
+            return self.floor_dofs
+        f = np.array(self.faces[side], dtype=np.int64)
+        return f[np.argsort(self.elevations[f], kind="stable")]
+
+    def face_below(self, side: str) -> NDArray[np.int64]:
+        """For every DOF, the DOF below it on the face of ``side`` (−1: the ground; −2: not
+        on that face): a point between two of them moves with their linear interpolation
+        (floor-to-column contact)."""
+        if side not in self.faces:
+            return self.floor_below()
+        below = np.full(self.n, -2, dtype=np.int64)
+        f = self.face_dofs(side)
         below[f] = np.concatenate(([-1], f[:-1]))
         return below
 
@@ -474,15 +512,16 @@ class MatrixBuilding:
                 and np.array_equal(self.elevations, other.elevations)
                 and np.array_equal(self.r, other.r)
                 and same_c and self.damping == other.damping and self.name == other.name
-                and self.floors == other.floors)
+                and self.floors == other.floors and dict(self.faces) == dict(other.faces))
 
     __hash__ = None  # type: ignore[assignment]
 
     # pickling (multiprocessing, copy.deepcopy): ``sources`` is a read-only mapping proxy,
     # which cannot be pickled; it travels as a dict and is made read-only again
     def __getstate__(self) -> dict[str, Any]:
-        return {**self.__dict__, "sources": dict(self.sources)}
+        return {**self.__dict__, "sources": dict(self.sources), "faces": dict(self.faces)}
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         self.__dict__.update(state)
         object.__setattr__(self, "sources", MappingProxyType(dict(state["sources"])))
+        object.__setattr__(self, "faces", MappingProxyType(dict(state.get("faces", {}))))

@@ -209,27 +209,29 @@ def dof_labels(value: Any, n: int, where: str) -> tuple[str, ...]:
     return labels
 
 
-def floor_indices(value: Any, labels: tuple[str, ...], where: str) -> tuple[int, ...]:
-    """The floor DOFs, 0-based and ascending, from indices or labels (default: all)."""
+def floor_indices(value: Any, labels: tuple[str, ...], where: str,
+                  field: str = "floors") -> tuple[int, ...]:
+    """The floor DOFs, 0-based and ascending, from indices or labels (default: all);
+    ``field`` names them in messages."""
     n = len(labels)
     if value is None:
         return tuple(range(n))
     pre = where_prefix(where)
     if isinstance(value, str) or not isinstance(value, Sequence | np.ndarray) or not len(value):
-        raise ValueError(f"{pre}floors must be a non-empty sequence of degree-of-freedom "
+        raise ValueError(f"{pre}{field} must be a non-empty sequence of degree-of-freedom "
                          f"indices or labels (got {value!r})")
     out: list[int] = []
     for k, f in enumerate(value):
         if isinstance(f, str):
             if f not in labels:
-                raise ValueError(f"{pre}floors[{k}] = {f!r} is not one of the labels")
+                raise ValueError(f"{pre}{field}[{k}] = {f!r} is not one of the labels")
             i = labels.index(f)
         elif isinstance(f, int | np.integer) and not isinstance(f, bool) and 0 <= f < n:
             i = int(f)
         else:
-            raise ValueError(f"{pre}floors[{k}] = {f!r} must be a label or an index in "
+            raise ValueError(f"{pre}{field}[{k}] = {f!r} must be a label or an index in "
                              f"[0, {n - 1}]")
         if i in out:
-            raise ValueError(f"{pre}floors[{k}] = {f!r} is given twice")
+            raise ValueError(f"{pre}{field}[{k}] = {f!r} is given twice")
         out.append(i)
     return tuple(sorted(out))
