@@ -7,16 +7,19 @@ Two forms, told apart by the keys present:
   (or ``height`` and ``n_storeys``), ``column_EI``, ``beam_EI`` [N·m²] (one value or one per
   storey), optional ``column_EA``, ``beam_EA`` [N] (default effectively rigid),
   ``column_hinge``, ``beam_hinge`` (a hinge law, or one per storey), ``floor_mass`` [kg],
-  ``beam_load`` [N/m] (uniform gravity load on the beams), ``leaning_load`` [N] (per floor);
-* **full**: ``nodes = [[x, y], …]`` [m], ``members = [{ nodes = [i, j], EA, EI, w,
+  ``beam_load`` [N/m] (uniform gravity load on the beams), ``leaning_load`` [N] (per floor),
+  ``column_mass``, ``beam_mass`` [kg/m] (the members' own mass, per storey);
+* **full**: ``nodes = [[x, y], …]`` [m], ``members = [{ nodes = [i, j], EA, EI, w, mass,
   hinges = [law_i, law_j] }, …]`` (0-based node numbers; ``w`` [N/m] uniform gravity load;
-  a hinge law, or ``{}`` for a rigid end), ``supports = [{ node, fix = "fixed" | "pinned" |
-  "roller" }, …]``, optional ``masses = [{ node, mass = [m_x, m_y, J] }, …]``,
-  ``loads = [{ node, force = [F_x, F_y, M] }, …]`` (gravity, downward ``F_y < 0``) and
-  ``leaning_load`` [N] per floor.
+  ``mass`` [kg/m] the member's own; a hinge law, or ``{}`` for a rigid end), ``supports =
+  [{ node, fix = "fixed" | "pinned" | "roller" }, …]``, optional ``masses = [{ node, mass =
+  [m_x, m_y, J] }, …]``, ``loads = [{ node, force = [F_x, F_y, M] }, …]`` (gravity,
+  downward ``F_y < 0``) and ``leaning_load`` [N] per floor.
 
-Both take ``diaphragm`` (rigid floors, default true) and ``geometry`` (``"linear"``,
-``"p-delta"``, ``"consistent"``; default ``"linear"``).
+Both take ``diaphragm`` (rigid floors, default true), ``geometry`` (``"linear"``,
+``"p-delta"``, ``"consistent"``; default ``"linear"``) and ``mass_matrix`` (``"lumped"``,
+the default, or ``"consistent"``: the members' own mass in the modes; a time history takes
+lumped masses).
 
 A hinge law: ``{ type = "elastic-plastic", k0 = …, m_y = … }``, ``{ type = "bilinear",
 k0 = …, m_y = …, hardening = 0.03 }`` or the modified Ibarra–Medina–Krawinkler laws
@@ -45,6 +48,8 @@ LineLoad = Annotated[float, Field(ge=0, le=MAX_FORCE)]
 """A uniform gravity load on a member [N/m], downward."""
 NodalForce = Annotated[float, Field(ge=-MAX_FORCE * MAX_LENGTH, le=MAX_FORCE * MAX_LENGTH)]
 NodeMass = Annotated[float, Field(ge=0, le=MAX_MASS)]
+MemberMass = Annotated[float, Field(ge=0, le=MAX_MASS)]
+"""A member's own mass per length [kg/m]."""
 Coordinate = Annotated[float, Field(ge=-MAX_LENGTH, le=MAX_LENGTH)]
 GravityLoad = Annotated[float, Field(ge=0, le=MAX_FORCE)]
 
@@ -155,12 +160,13 @@ class HingeLawConfig(Section):
 
 
 class MemberConfig(Section):
-    """``members = [{ nodes = [i, j], EA, EI, w, hinges = [law_i, law_j] }, …]``."""
+    """``members = [{ nodes = [i, j], EA, EI, w, mass, hinges = [law_i, law_j] }, …]``."""
 
     nodes: Annotated[list[Annotated[int, Field(ge=0)]], Field(min_length=2, max_length=2)]
     EA: Rigidity = 1e12
     EI: Rigidity
     w: LineLoad = 0.0
+    mass: MemberMass = 0.0
     hinges: Annotated[list[HingeLawConfig | dict[str, Any]],
                       Field(min_length=2, max_length=2)] | None = None
 
@@ -213,6 +219,8 @@ class FrameConfig(Section):
     beam_hinge: HingeLawConfig | Annotated[list[HingeLawConfig], Field(min_length=1)] | None = None
     floor_mass: NodeMass | Annotated[list[NodeMass], Field(min_length=1)] = 0.0
     beam_load: LineLoad | Annotated[list[LineLoad], Field(min_length=1)] = 0.0
+    column_mass: MemberMass | Annotated[list[MemberMass], Field(min_length=1)] = 0.0
+    beam_mass: MemberMass | Annotated[list[MemberMass], Field(min_length=1)] = 0.0
     # full form
     nodes: Annotated[list[Annotated[list[Coordinate], Field(min_length=2, max_length=2)]],
                      Field(min_length=2)] | None = None
@@ -224,6 +232,7 @@ class FrameConfig(Section):
     leaning_load: GravityLoad | Annotated[list[GravityLoad], Field(min_length=1)] = 0.0
     diaphragm: bool = True
     geometry: Literal["linear", "p-delta", "consistent"] = "linear"
+    mass_matrix: Literal["lumped", "consistent"] = "lumped"
 
     @property
     def form(self) -> str:
@@ -241,6 +250,11 @@ class FrameConfig(Section):
     def _shape(self) -> FrameConfig:
         regular = ("bays", "storey_heights", "height", "n_storeys", "column_EI", "beam_EI",
                    "column_hinge", "beam_hinge")
+        if self.form == "full":
+            for key in ("column_mass", "beam_mass"):
+                if getattr(self, key) != 0.0:
+                    raise field_error(key, "a key of the regular form (per storey); give each "
+                                           "member's own mass as members[i].mass [kg/m]")
         full = ("nodes", "members", "supports", "masses", "loads")
         if self.form == "full":
             for key in regular:
@@ -278,7 +292,8 @@ class FrameConfig(Section):
                                                 "height and n_storeys)")
         n = self.n_storeys_given
         for key in ("column_EI", "beam_EI", "column_EA", "beam_EA", "column_hinge",
-                    "beam_hinge", "floor_mass", "beam_load", "leaning_load"):
+                    "beam_hinge", "floor_mass", "beam_load", "leaning_load", "column_mass",
+                    "beam_mass"):
             value = getattr(self, key)
             if isinstance(value, list) and len(value) not in (1, n):
                 raise field_error(key, f"need one value or {n} (one per storey), got "
@@ -308,7 +323,9 @@ class FrameConfig(Section):
                 beam_EA=self.beam_EA, column_hinge=laws(self.column_hinge),
                 beam_hinge=laws(self.beam_hinge), floor_mass=self.floor_mass,
                 beam_load=self.beam_load, leaning_load=self.leaning_load,
-                diaphragm=self.diaphragm, geometry=self.geometry, name=name, **own)
+                diaphragm=self.diaphragm, geometry=self.geometry, name=name,
+                column_mass=self.column_mass, beam_mass=self.beam_mass,
+                mass_matrix=self.mass_matrix, **own)
         assert self.nodes is not None and self.members is not None and self.supports is not None
         n = len(self.nodes)
         supports = np.zeros((n, 3), dtype=bool)
@@ -335,4 +352,5 @@ class FrameConfig(Section):
                      hinges=tuple(hinges), masses=masses, nodal_loads=loads,
                      member_loads=np.array([m.w for m in self.members]),
                      diaphragm=self.diaphragm, leaning_loads=lean, geometry=self.geometry,
-                     name=name, **own)
+                     name=name, member_mass=np.array([m.mass for m in self.members]),
+                     mass_matrix=self.mass_matrix, **own)

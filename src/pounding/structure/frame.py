@@ -11,7 +11,9 @@ FEMA P695 archetypes):
 * **hinges**: a rotational spring with a :class:`~pounding.hysteresis.hinges.HingeLaw`
   between a node and the end of an element framing into it (in series with the element);
 * **supports**: fixed degrees of freedom (a fixed base fixes all three);
-* **masses**: lumped at the nodes (``[m_x, m_y, J]`` in kg, kg, kg·m²);
+* **masses**: lumped at the nodes (``[m_x, m_y, J]`` in kg, kg, kg·m²), and the members'
+  own (``member_mass`` [kg/m]), lumped at their ends or consistent (``mass_matrix``;
+  :mod:`pounding.structure.frame_mass`);
 * **gravity**: nodal loads [N, N, N·m] and uniform loads on members [N/m] (downward), applied
   first, before any lateral load or shaking;
 * **rigid floors** (``diaphragm=True``): every node of a floor level moves together
@@ -47,10 +49,14 @@ from pounding.hysteresis.hinges import HingeLaw
 from pounding.structure.damping import DampingModel, RayleighDamping
 from pounding.structure.floor_arrays import readonly
 
-__all__ = ["Frame", "FrameHinge", "GEOMETRIES", "regular_frame"]
+__all__ = ["Frame", "FrameHinge", "GEOMETRIES", "MASS_MATRICES", "regular_frame"]
 
 GEOMETRIES: tuple[str, ...] = ("linear", "p-delta", "consistent")
 """How the frame's own columns' gravity loads enter its stiffness (see the module docstring)."""
+
+MASS_MATRICES: tuple[str, ...] = ("lumped", "consistent")
+"""How the members' own mass enters the frame's mass matrix
+(:mod:`pounding.structure.frame_mass`)."""
 
 LEVEL_TOL: float = 1e-6
 """Nodes whose elevations differ by less than this [m] stand on the same floor level."""
@@ -82,7 +88,7 @@ def _array(name: str, value: ArrayLike, shape: tuple[int, ...], *, positive: boo
         idx = tuple(int(i) for i in np.argwhere(bad)[0])
         need = "finite and > 0" if positive else ("finite and >= 0" if nonnegative else "finite")
         where = idx[0] if len(idx) == 1 else list(idx)
-        raise ValueError(f"{name}[{where}]: must be {need} (got {a[idx]!r})")
+        raise ValueError(f"{name}[{where}]: must be {need} (got {float(a[idx])!r})")
     return readonly(a)
 
 
@@ -116,6 +122,12 @@ class Frame:
         ``"linear"``, ``"p-delta"`` or ``"consistent"`` (module docstring).
     damping : DampingModel
         Damping of the frame's lateral motion (default 5 % Rayleigh at modes 1 and 2).
+    member_mass : array_like, shape (m,), optional
+        Each member's own mass per length [kg/m]; default none.
+    mass_matrix : str
+        ``"lumped"`` (the members' mass at their ends' translations; the default) or
+        ``"consistent"`` (:mod:`pounding.structure.frame_mass`: modes only, a time history
+        takes lumped masses).
     name : str
         A label for tables, plots and messages.
     """
@@ -134,6 +146,8 @@ class Frame:
     geometry: str = "linear"
     damping: DampingModel = field(default_factory=lambda: RayleighDamping(0.05, 0.05))
     name: str = "frame"
+    member_mass: NDArray[np.float64] = None  # type: ignore[assignment]  # an array once built
+    mass_matrix: str = "lumped"
 
     def __post_init__(self) -> None:
         who = self.name
@@ -198,6 +212,12 @@ class Frame:
         set_(self, "leaning_loads", _array(f"{who}: leaning_loads", np.zeros(nf)
                                            if self.leaning_loads is None else self.leaning_loads,
                                            (nf,), nonnegative=True))
+        set_(self, "member_mass", _array(f"{who}: member_mass", np.zeros(m)
+                                         if self.member_mass is None else self.member_mass,
+                                         (m,), nonnegative=True))
+        if self.mass_matrix not in MASS_MATRICES:
+            raise ValueError(f"{who}: mass_matrix: must be one of {', '.join(MASS_MATRICES)} "
+                             f"(got {self.mass_matrix!r})")
         if self.geometry not in GEOMETRIES:
             raise ValueError(f"{who}: geometry: must be one of {', '.join(GEOMETRIES)} "
                              f"(got {self.geometry!r})")
@@ -265,9 +285,16 @@ class Frame:
 
     @property
     def floor_masses(self) -> NDArray[np.float64]:
-        """Horizontal mass of each floor level [kg]."""
+        """Horizontal mass of each floor level [kg]: its nodes' and half of each member's own
+        mass at each of its ends there."""
         lv = self.node_level
-        return np.array([float(np.sum(self.masses[lv == j, 0])) for j in range(self.levels.size)])
+        out = np.array([float(np.sum(self.masses[lv == j, 0])) for j in range(self.levels.size)])
+        half = 0.5 * self.member_mass * self.lengths
+        for e, ends in enumerate(self.elements):
+            for node in ends:
+                if lv[node] >= 0:
+                    out[lv[node]] += half[e]
+        return out
 
     def hinge_at(self, element: int, end: int) -> FrameHinge | None:
         """The hinge at an element's end, or None."""
@@ -317,7 +344,10 @@ def regular_frame(bays: float | Sequence[float], storey_heights: float | Sequenc
                   beam_load: float | Sequence[float] = 0.0,
                   leaning_load: float | Sequence[float] = 0.0,
                   diaphragm: bool = True, geometry: str = "linear",
-                  damping: DampingModel | None = None, name: str = "frame") -> Frame:
+                  damping: DampingModel | None = None, name: str = "frame",
+                  column_mass: float | Sequence[float] = 0.0,
+                  beam_mass: float | Sequence[float] = 0.0,
+                  mass_matrix: str = "lumped") -> Frame:
     """A regular moment frame: ``len(bays)`` bays and ``n_storeys`` storeys, fixed at the base.
 
     Column lines stand at the cumulative bay widths from x = 0; each storey has one column
@@ -345,6 +375,9 @@ def regular_frame(bays: float | Sequence[float], storey_heights: float | Sequenc
         Gravity load the leaning column takes at each floor [N].
     diaphragm, geometry, damping, name
         As :class:`Frame`.
+    column_mass, beam_mass : float or sequence
+        The columns' and beams' own mass per length in each storey [kg/m] (default none),
+        in the frame's ``mass_matrix`` (``"lumped"`` or ``"consistent"``).
 
     Examples
     --------
@@ -380,6 +413,8 @@ def regular_frame(bays: float | Sequence[float], storey_heights: float | Sequenc
         "beam_hinge", beam_hinge, ns)
     fm = _per_storey("floor_mass", floor_mass, ns)
     bl = _per_storey("beam_load", beam_load, ns)
+    cm, bm = _per_storey("column_mass", column_mass, ns), _per_storey("beam_mass", beam_mass, ns)
+    member_mass: list[float] = []
     elements: list[tuple[int, int]] = []
     EA: list[float] = []
     EI: list[float] = []
@@ -392,6 +427,7 @@ def regular_frame(bays: float | Sequence[float], storey_heights: float | Sequenc
             EA.append(cEA[s])
             EI.append(cEI[s])
             loads.append(0.0)
+            member_mass.append(cm[s])
             law = ch[s]
             if law is not None:
                 hinges += [FrameHinge(e, 0, law), FrameHinge(e, 1, law)]
@@ -402,6 +438,7 @@ def regular_frame(bays: float | Sequence[float], storey_heights: float | Sequenc
             EA.append(bEA[s])
             EI.append(bEI[s])
             loads.append(bl[s])
+            member_mass.append(bm[s])
             law = bh[s]
             if law is not None:
                 hinges += [FrameHinge(e, 0, law), FrameHinge(e, 1, law)]
@@ -416,4 +453,5 @@ def regular_frame(bays: float | Sequence[float], storey_heights: float | Sequenc
     return Frame(nodes=nodes, elements=np.array(elements, dtype=np.int64), EA=np.array(EA),
                  EI=np.array(EI), supports=supports, hinges=tuple(hinges), masses=masses,
                  member_loads=np.array(loads), diaphragm=diaphragm, leaning_loads=lean,
-                 geometry=geometry, damping=damping or RayleighDamping(0.05, 0.05), name=name)
+                 geometry=geometry, damping=damping or RayleighDamping(0.05, 0.05), name=name,
+                 member_mass=np.array(member_mass), mass_matrix=mass_matrix)

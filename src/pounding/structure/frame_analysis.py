@@ -34,6 +34,7 @@ from numpy.typing import NDArray
 
 from pounding.hysteresis.hinges import HingeState
 from pounding.structure.frame import Frame
+from pounding.structure.frame_mass import frame_mass_matrix
 from pounding.structure.frame_stiffness import (
     FrameDofs,
     condense,
@@ -346,12 +347,12 @@ def gravity(frame: Frame) -> FrameState:
 
 
 def _mass_vector(frame: Frame, dofs: FrameDofs) -> NDArray[np.float64]:
-    m = np.zeros(dofs.n)
-    for i in range(frame.n_nodes):
-        for d in range(3):
-            if dofs.node[i, d] >= 0:
-                m[dofs.node[i, d]] += frame.masses[i, d]
-    return m
+    """The frame's lumped masses on its DOFs [kg, kg·m²] (its nodes' and its members' own,
+    lumped at their ends)."""
+    if frame.mass_matrix != "lumped":
+        raise ValueError(f"{frame.name}: mass_matrix: a time history takes lumped masses (got "
+                         f"{frame.mass_matrix!r}; the consistent one serves the modes)")
+    return np.diag(frame_mass_matrix(frame, dofs)).copy()
 
 
 def frame_modes(frame: Frame, state: FrameState | None = None
@@ -359,22 +360,24 @@ def frame_modes(frame: Frame, state: FrameState | None = None
                            NDArray[np.float64], NDArray[np.float64]]:
     """Elastic modes of the frame under its gravity loads (hinges at their elastic stiffness,
     massless DOFs condensed out): ``(periods [s], shapes (n_mass, n_modes), mass DOFs,
-    the condensed K, the masses)``."""
+    the condensed K, their mass matrix)`` — the mass matrix lumped (diagonal) or consistent
+    as the frame says (:mod:`pounding.structure.frame_mass`)."""
     state = state or gravity(frame)
     dofs = state.dofs
-    m = _mass_vector(frame, dofs)
-    keep = np.flatnonzero(m > 0.0)
+    M = frame_mass_matrix(frame, dofs)
+    keep = np.flatnonzero(np.any(M != 0.0, axis=1))
     if keep.size == 0:
         raise ValueError(f"{frame.name}: no masses: give floor masses to find its modes")
     K = configuration_stiffness(state.base, dofs, np.array([h.law.k0 for h in frame.hinges]))
     Kc = condense(K, keep)
+    Mk = M[np.ix_(keep, keep)]
     import scipy.linalg
 
-    w2, phi = scipy.linalg.eigh(Kc, np.diag(m[keep]))
+    w2, phi = scipy.linalg.eigh(Kc, Mk)
     if w2[0] <= 0.0:
         raise ValueError(f"{frame.name}: unstable under its gravity loads (the lateral "
                          f"stiffness with P-Delta is not positive: ω² = {w2[0]:.3g})")
-    return 2.0 * np.pi / np.sqrt(w2), phi, keep, Kc, m[keep]
+    return 2.0 * np.pi / np.sqrt(w2), phi, keep, Kc, Mk
 
 
 def lateral_pattern(frame: Frame, pattern: str, state: FrameState | None = None

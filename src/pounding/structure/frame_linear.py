@@ -84,7 +84,11 @@ def frame_matrix_building(frame: Frame) -> FrameBuilding:
     """
     state = gravity(frame)
     dofs = state.dofs
-    _, _, keep, Kc, m = frame_modes(frame, state)
+    if frame.mass_matrix != "lumped":
+        raise ValueError(f"{frame.name}: mass_matrix: a time history takes lumped masses (got "
+                         f"{frame.mass_matrix!r}; the consistent one serves the modes)")
+    _, _, keep, Kc, Mk = frame_modes(frame, state)
+    m = np.diag(Mk)
     mass_at = {int(d): i for i, d in enumerate(keep)}
     floors, left, right = _row_dofs(frame, state.dofs.node, mass_at)
     order = list(dict.fromkeys(floors + left + right))  # (unique, in order)
