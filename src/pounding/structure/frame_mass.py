@@ -28,7 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.structure.frame import Frame
-from pounding.structure.frame_stiffness import FrameDofs
+from pounding.structure.frame_stiffness import FrameDofs, member_transform
 
 __all__ = ["consistent_member_mass", "frame_mass_matrix"]
 
@@ -46,16 +46,6 @@ def consistent_member_mass(mass_per_length: float, L: float) -> NDArray[np.float
          [54.0, 13 * L, 156.0, -22 * L],
          [-13 * L, -3 * L * L, -22 * L, 4 * L * L]])
     return m
-
-
-def _rotation(c: float, s: float) -> NDArray[np.float64]:
-    """Global to member axes on one end's ``(u_x, u_y, θ)`` twice."""
-    t = np.zeros((6, 6))
-    for o in (0, 3):
-        t[o, o], t[o, o + 1] = c, s
-        t[o + 1, o], t[o + 1, o + 1] = -s, c
-        t[o + 2, o + 2] = 1.0
-    return t
 
 
 def frame_mass_matrix(frame: Frame, dofs: FrameDofs) -> NDArray[np.float64]:
@@ -82,7 +72,7 @@ def frame_mass_matrix(frame: Frame, dofs: FrameDofs) -> NDArray[np.float64]:
                     M[k, k] += 0.5 * mbar * L
             continue
         c, s = (frame.nodes[b] - frame.nodes[a]) / L
-        t = _rotation(float(c), float(s))
+        t = member_transform(float(c), float(s))
         me = t.T @ consistent_member_mass(mbar, L) @ t
         free = where >= 0
         M[np.ix_(where[free], where[free])] += me[np.ix_(free, free)]

@@ -33,7 +33,7 @@ from pounding.structure.frame import Frame
 
 __all__ = ["FrameDofs", "configuration_stiffness", "element_end_forces", "end_moment_operator",
            "frame_dofs", "geometric_stiffness", "gravity_load_vector", "elastic_stiffness",
-           "condense", "hinge_incidence"]
+           "condense", "hinge_incidence", "member_transform"]
 
 
 @dataclass(frozen=True)
@@ -100,7 +100,9 @@ def _rotation(frame: Frame, e: int) -> tuple[float, float, float]:
     return dx / L, dy / L, L
 
 
-def _transform(c: float, s: float) -> NDArray[np.float64]:
+def member_transform(c: float, s: float) -> NDArray[np.float64]:
+    """From global ``(u_x, u_y, θ)`` at both ends to the member's axes ``(u, v, θ)``, for a
+    member whose axis has direction cosines ``(c, s)``."""
     t = np.zeros((6, 6))
     for o in (0, 3):
         t[o, o], t[o, o + 1] = c, s
@@ -148,7 +150,7 @@ def elastic_stiffness(frame: Frame, dofs: FrameDofs) -> NDArray[np.float64]:
     K = np.zeros((dofs.n, dofs.n))
     for e in range(frame.n_elements):
         c, s, L = _rotation(frame, e)
-        T = _transform(c, s)
+        T = member_transform(c, s)
         _scatter(K, dofs.element[e], T.T @ local_elastic(frame.EA[e], frame.EI[e], L) @ T)
     return K
 
@@ -164,7 +166,7 @@ def geometric_stiffness(frame: Frame, dofs: FrameDofs,
             if not col[e] or axial[e] == 0.0:
                 continue
             c, s, L = _rotation(frame, e)
-            T = _transform(c, s)
+            T = member_transform(c, s)
             _scatter(K, dofs.element[e], T.T @ local_geometric(float(axial[e]), L,
                                                                 frame.geometry) @ T)
     lean = frame.leaning_loads
@@ -242,7 +244,7 @@ def gravity_load_vector(frame: Frame, dofs: FrameDofs) -> NDArray[np.float64]:
         if not np.any(fef):
             continue
         c, s, _ = _rotation(frame, e)
-        eq = -(_transform(c, s).T @ fef)
+        eq = -(member_transform(c, s).T @ fef)
         for q in range(6):
             if dofs.element[e, q] >= 0:
                 F[dofs.element[e, q]] += eq[q]
@@ -258,7 +260,7 @@ def element_end_forces(frame: Frame, dofs: FrameDofs, U: NDArray[np.float64],
     for e in range(frame.n_elements):
         c, s, L = _rotation(frame, e)
         d = np.where(dofs.element[e] >= 0, U[np.maximum(dofs.element[e], 0)], 0.0)
-        out[e] = local_elastic(frame.EA[e], frame.EI[e], L) @ (_transform(c, s) @ d) \
+        out[e] = local_elastic(frame.EA[e], frame.EI[e], L) @ (member_transform(c, s) @ d) \
             + gravity_factor * _fixed_end(frame, e)
     return out
 
@@ -278,7 +280,7 @@ def end_moment_operator(frame: Frame, dofs: FrameDofs, axial: NDArray[np.float64
     col = frame.is_column
     for e in range(m):
         c, s, L = _rotation(frame, e)
-        T = _transform(c, s)
+        T = member_transform(c, s)
         k = local_elastic(frame.EA[e], frame.EI[e], L)
         if frame.geometry != "linear" and axial is not None and col[e] and axial[e] != 0.0:
             k = k + local_geometric(float(axial[e]), L, frame.geometry)
