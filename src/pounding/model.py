@@ -62,6 +62,7 @@ from pounding.structure.assembly import (
     assemble,
     contact_points,
     face_below,
+    face_point_name,
     floor_below,
     floor_dofs,
 )
@@ -82,24 +83,6 @@ def _floor_counts(buildings: Sequence[Building]) -> str:
     """``"B1: 10 floors, B2: 8 floors"``."""
     return ", ".join(f"B{i + 1}: {b.n} floor{'s' if b.n != 1 else ''}"
                      for i, b in enumerate(buildings))
-
-
-def _face_point_name(index: int, building: Building, side: str, z: float, tol: float) -> str:
-    """The label of a contact point at elevation ``z`` [m] on a face of ``building`` (number
-    ``index``, 0-based) that is not its floors (:attr:`MatrixBuilding.faces`; ``""`` for the
-    floors, which :meth:`ContactPoint.label` names): ``'B1F3'`` within ``tol`` [m] of the
-    level of floor 3, ``'B1S3@0.50'`` half way up storey 3."""
-    if not isinstance(building, MatrixBuilding) or side not in building.faces:
-        return ""
-    f = floor_dofs(building)
-    levels = building.elevations[f]
-    k = int(np.searchsorted(levels, z - tol))
-    if k < levels.size and abs(levels[k] - z) <= tol:
-        return f"B{index + 1}F{k + 1}"
-    below = float(levels[k - 1]) if k > 0 else 0.0
-    top = float(levels[min(k, levels.size - 1)])
-    xi = (z - below) / (top - below) if top > below else 1.0
-    return f"B{index + 1}S{k + 1}@{xi:.2f}"
 
 
 def _check_matrix_building(i: int, b: MatrixBuilding) -> None:
@@ -323,9 +306,9 @@ class PoundingModel:
             below_a, below_b = face_below(a, "right"), face_below(b, "left")
             for z, i, xi_i, j, xi_j in contact_points(a, b, self.floor_to_column, tol):
                 left = ContactPoint(p, i, xi_i, int(below_a[i]),
-                                    name=_face_point_name(p, a, "right", z, tol))
+                                    name=face_point_name(p, a, "right", z, tol))
                 right = ContactPoint(p + 1, j, xi_j, int(below_b[j]),
-                                     name=_face_point_name(p + 1, b, "left", z, tol))
+                                     name=face_point_name(p + 1, b, "left", z, tol))
                 law = self.contact.build(left.effective_mass(a.masses),
                                          right.effective_mass(b.masses))
                 out.append(Contact(len(out), p, left, right, z, float(self.gaps[p]), law))

@@ -32,7 +32,8 @@ from pounding.structure.shear_building import ShearBuilding
 from pounding.validation import positive
 
 __all__ = ["BUILDING_TYPES", "AssembledSystem", "Building", "assemble", "contact_points",
-           "face_below", "face_dofs", "floor_below", "floor_dofs", "shared_levels"]
+           "face_below", "face_dofs", "face_point_name", "floor_below", "floor_dofs",
+           "shared_levels"]
 
 Building = ShearBuilding | MatrixBuilding
 """A building that stands in a row: a shear building or a (planar) matrix building."""
@@ -71,6 +72,25 @@ def face_below(building: Building, side: str) -> NDArray[np.int64]:
     if isinstance(building, MatrixBuilding):
         return building.face_below(side)
     return floor_below(building)
+
+
+def face_point_name(index: int, building: Building, side: str, z: float, tol: float) -> str:
+    """The label of a contact point at elevation ``z`` [m] on the face of ``side`` of
+    ``building`` (number ``index`` in the row, 0-based) where that face is not its floors
+    (:attr:`MatrixBuilding.faces`): ``'B1F3'`` within ``tol`` [m] of the level of floor 3,
+    ``'B1S3@0.50'`` half way up storey 3; ``""`` where the floors are the face (the point's
+    own :meth:`~pounding.contact.geometry.ContactPoint.label` names it)."""
+    if not isinstance(building, MatrixBuilding) or side not in building.faces:
+        return ""
+    f = floor_dofs(building)
+    levels = building.elevations[f]
+    k = int(np.searchsorted(levels, z - tol))
+    if k < levels.size and abs(levels[k] - z) <= tol:
+        return f"B{index + 1}F{k + 1}"
+    below = float(levels[k - 1]) if k > 0 else 0.0
+    top = float(levels[min(k, levels.size - 1)])
+    xi = (z - below) / (top - below) if top > below else 1.0
+    return f"B{index + 1}S{k + 1}@{xi:.2f}"
 
 
 class AssembledSystem(NamedTuple):

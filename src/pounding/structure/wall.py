@@ -42,7 +42,7 @@ from numpy.typing import NDArray
 
 from pounding.contact.geometry import Contact, ContactPoint
 from pounding.contact.spec import ContactSpec
-from pounding.structure.assembly import Building
+from pounding.structure.assembly import Building, face_below, face_dofs, face_point_name
 from pounding.structure.shear_building import ShearBuilding
 from pounding.validation import choice, non_negative, positive
 
@@ -114,32 +114,43 @@ class WallPoint(ContactPoint):
         return self.name
 
 
-def wall_points(wall: MoatWall, building: ShearBuilding, index: int, floor_to_column: bool,
+def wall_points(wall: MoatWall, building: Building, index: int, floor_to_column: bool,
                 tol: float) -> list[tuple[float, ContactPoint]]:
     """``(elevation, point)`` of the building (``index``) that strike ``wall``, bottom up:
-    its floors at or below the wall's top, then (``floor_to_column``) the building's column
-    at the wall's top if that lies between two floors below the roof."""
-    z = building.floor_levels
-    out = [(float(z[j]), ContactPoint(index, j)) for j in range(building.n)
-           if z[j] <= wall.height + tol]
+    the DOFs of its face toward the wall (its floors, or a matrix building's
+    :attr:`~pounding.structure.MatrixBuilding.faces`: a frame's outer column line) at or
+    below the wall's top, then (``floor_to_column``) the face between two of them at the
+    wall's top if that lies below the highest."""
+    side = wall.side  # (the building's face toward the wall: its left face for a left wall)
+    f = face_dofs(building, side)
+    below = face_below(building, side)
+    z = building.floor_levels[f]
+
+    def point(k: int, xi: float, at: float) -> ContactPoint:
+        return ContactPoint(index, int(f[k]), xi, int(below[f[k]]),
+                            name=face_point_name(index, building, side, at, tol))
+
+    out = [(float(z[k]), point(k, 1.0, float(z[k]))) for k in range(f.size)
+           if z[k] <= wall.height + tol]
     level = np.abs(z - wall.height) <= tol
     if floor_to_column and not level.any() and wall.height < z[-1] - tol:
-        j = int(np.searchsorted(z, wall.height))
-        below = float(z[j - 1]) if j > 0 else 0.0
-        out.append((wall.height, ContactPoint(index, j, (wall.height - below)
-                                              / (float(z[j]) - below))))
+        k = int(np.searchsorted(z, wall.height))
+        low = float(z[k - 1]) if k > 0 else 0.0
+        out.append((wall.height, point(k, (wall.height - low) / (float(z[k]) - low),
+                                       wall.height)))
     return sorted(out, key=lambda r: r[0])
 
 
 def _neighbour(i: int, wall: MoatWall, buildings: Sequence[Building]
-               ) -> tuple[int, ShearBuilding]:
-    """The index in the row and the building beside ``walls[i]``: a shear building (one
-    line naming the wall otherwise)."""
+               ) -> tuple[int, Building]:
+    """The index in the row and the building beside ``walls[i]``: a shear building or a
+    planar matrix building (a frame among them); one line naming the wall for a building in
+    plan."""
     b = 0 if wall.side == "left" else len(buildings) - 1
     building = buildings[b]
-    if not isinstance(building, ShearBuilding):
-        raise ValueError(f"walls[{i}]: a moat wall stands beside a shear building; B{b + 1} "
-                         f"is a {type(building).__name__} (not supported yet)")
+    if getattr(building, "plan", None) is not None:
+        raise ValueError(f"walls[{i}]: a moat wall stands beside a planar building; B{b + 1} "
+                         f"is a {type(building).__name__} in plan (not supported yet)")
     return b, building
 
 
@@ -150,8 +161,8 @@ def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
     row ``buildings`` beside it, numbered from ``start``; the building on the left of a
     contact is the left point. ``contact`` builds each contact's law; ``floor_to_column``
     and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`). The building
-    beside a wall is a :class:`ShearBuilding` (a ``ValueError`` naming the wall otherwise,
-    as :func:`check_walls`)."""
+    beside a wall is planar (a ``ValueError`` naming the wall otherwise, as
+    :func:`check_walls`)."""
     out: list[Contact] = []
     last = len(buildings) - 1
     for i, wall in enumerate(walls):
@@ -179,9 +190,10 @@ def check_walls(walls: Sequence[MoatWall], buildings: Sequence[Building],
         seen.add(wall.side)
         b, building = _neighbour(i, wall, buildings)
         if not wall_points(wall, building, b, floor_to_column, tol):
+            lowest = float(np.min(building.floor_levels[face_dofs(building, wall.side)]))
             raise ValueError(f"walls[{i}]: no floor of B{b + 1} at or below the wall's top "
-                             f"({wall.height:g} m; lowest floor at "
-                             f"{float(building.floor_levels[0]):g} m), so it can never strike it")
+                             f"({wall.height:g} m; lowest floor at {lowest:g} m), so it can "
+                             "never strike it")
 
 
 def flexible_wall(height: float, stiffness: float, mass: float, damping_ratio: float = 0.05,
