@@ -17,11 +17,12 @@ kernel reads it (:mod:`~pounding.integrate.kernel_model`), the starting state
 
 from __future__ import annotations
 
+import contextlib
 import sys
 import time
 import warnings
 import weakref
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import NamedTuple
 
 import numpy as np
@@ -224,6 +225,19 @@ DEFAULT_RTOL: float = 1e-8
 """Default relative tolerance of the RK steps taken through contacts."""
 
 
+@contextlib.contextmanager
+def _blas_threads(limit: int | None) -> Iterator[None]:
+    """Limit the BLAS library's threads to ``limit`` inside (None: no limit), as
+    ``threadpoolctl.threadpool_limits`` does."""
+    if limit is None:
+        yield
+        return
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=limit, user_api="blas"):
+        yield
+
+
 def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents, *,
              dt: float | None = None, duration: float | None = None, rtol: float = DEFAULT_RTOL,
              h_max: float | None = None, impact_capacity: int | None = None,
@@ -388,23 +402,26 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         _kernel_loaded.append(True)
     start = time.perf_counter()
     k0 = 0
-    while k0 < nt - 1:
-        ws_i[I_CALL_STEPS] = ws_i[I_NSTEPS] + rk_per_call
-        integrate_chunk(k0, min(nt - 1, k0 + grid_per_call), *args)
-        if ws_i[I_FAILED]:
-            raise IntegrationError(_failure_text(model, km, motion, ws_i, st.committed, step,
-                                                 rtol))
-        k0 = int(ws_i[I_REACHED])
-        if frames is not None:
-            frames.check_sidesway(st.x, k0 * step)
-        if ws_i[I_STOP]:
-            # a hinge event: the frame's next configuration, then on from the same instant
-            ws_i[I_STOP] = 0
-            assert frames is not None
-            frames.on_event(st.x, scratch.kx[0], k0 * step + st.ws_f[W_RESUME_S],
-                            int(ws_i[I_STOP_ROW]))
-        elif progress is not None:
-            progress(k0 / (nt - 1))
+    # (a yielding frame's events do small dense products between the kernel's calls,
+    # which a multithreaded BLAS runs slower on a busy machine: one thread there)
+    with _blas_threads(1 if frames is not None else None):
+        while k0 < nt - 1:
+            ws_i[I_CALL_STEPS] = ws_i[I_NSTEPS] + rk_per_call
+            integrate_chunk(k0, min(nt - 1, k0 + grid_per_call), *args)
+            if ws_i[I_FAILED]:
+                raise IntegrationError(_failure_text(model, km, motion, ws_i, st.committed, step,
+                                                     rtol))
+            k0 = int(ws_i[I_REACHED])
+            if frames is not None:
+                frames.check_sidesway(st.x, k0 * step)
+            if ws_i[I_STOP]:
+                # a hinge event: the frame's next configuration, then on from the same instant
+                ws_i[I_STOP] = 0
+                assert frames is not None
+                frames.on_event(st.x, scratch.kx[0], k0 * step + st.ws_f[W_RESUME_S],
+                                int(ws_i[I_STOP_ROW]))
+            elif progress is not None:
+                progress(k0 / (nt - 1))
     wall = time.perf_counter() - start
     hinges = frames.finish(st.x, (nt - 1) * step, out.hinge_rotation, out.u) if frames else None
     pk = out.peaks

@@ -20,17 +20,33 @@ fixed sparsity pattern (the base's and the springs'), assembled here by adding t
 into its values and factorised by SuperLU (a frame's ``K_ss`` has a few entries a row: dense
 LAPACK took 14 ms for a 306-DOF frame on a loaded 2-core machine where SuperLU took 0.5 ms);
 a spring whose joint rotation is kept adds ``k_t`` to ``K_mm`` and ``−k_t`` to ``K_ms``.
+
+A set of tangents that differs from the first set met (the *anchor*, factorised as above) in
+a few hinges ``c`` is the anchor's frame with springs ``Δk_c`` added, a rank-``|c|`` change
+of ``K_ss``; its condensation follows from the anchor's by the Woodbury identity
+(Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989) without a factorisation:
+with ``Z = K_ss⁻¹ B_s`` and ``F = B_sᵀ Z`` the anchor's (the hinges' flexibility with the
+kept DOFs held), ``G = diag(1/Δk_c) + F_cc`` and ``W = G⁻¹ A_c``,
+
+    K_c' = K_c + A_cᵀ W,   A' = A − F_{:,c} W,   S' = S − Z_{:,c} W,
+    K_ss'⁻¹ x = y − Z_{:,c} G⁻¹ B_{s,c}ᵀ y,   y = K_ss⁻¹ x.
+
+Where that does not hold cleanly — ``G`` near singular (a mechanism forming in the massless
+DOFs), a joint losing all its stiffness, more than :data:`UPDATE_LIMIT` of the hinges
+changed, or a hinge on a kept joint rotation — the set is factorised afresh. Both ways agree
+to rounding (``tests/structure/test_frame_condensation.py``).
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.structure.frame_stiffness import FrameDofs
+from pounding.structure.frame_stiffness import FrameDofs, hinge_incidence
 
 __all__ = ["PARTS_KEPT", "Condensation", "CondensedPart"]
 
@@ -38,6 +54,14 @@ Vector = NDArray[np.float64]
 
 PARTS_KEPT: int = 256
 """The condensations a frame keeps for reuse (oldest forgotten first)."""
+
+UPDATE_LIMIT: float = 0.5
+"""A set of tangents is updated from the anchor's condensation (module docstring) when at
+most this fraction of the hinges differ from it; beyond, it is factorised afresh."""
+
+UPDATE_PIVOT: float = 1e-10
+"""An equilibrated pivot of ``G`` this far below its largest: the update is not trusted and
+the set is factorised afresh (which finds a mechanism, if there is one)."""
 
 SINGULAR_PIVOT: float = 1e-13
 """A pivot of the equilibrated ``K_ss`` this far below its largest: no unique equilibrium."""
@@ -131,6 +155,8 @@ class Condensation:
         self._Kmm = base[np.ix_(self.floor, self.floor)]
         self._Kmo = base[np.ix_(self.floor, self.other)]
         self._parts: dict[bytes, CondensedPart] = {}
+        self._B = hinge_incidence(dofs)
+        self._anchor: _Anchor | None = None
 
     def part(self, tangents: Vector) -> CondensedPart:
         """The condensation for hinge tangents ``tangents`` [N·m/rad], computed once for each
@@ -146,11 +172,67 @@ class Condensation:
         found = self._parts.get(key)
         if found is not None:
             return found
-        part = self._condense(tangents)
+        part = self._updated(tangents) if self._anchor is not None else None
+        if part is None:
+            part = self._condense(tangents)
+            if self._anchor is None:
+                self._anchor = self._make_anchor(tangents, part)
         if len(self._parts) >= PARTS_KEPT:
             self._parts.pop(next(iter(self._parts)))
         self._parts[key] = part
         return part
+
+    def _make_anchor(self, tangents: Vector, part: CondensedPart) -> _Anchor:
+        """The anchor of the updates: this set's condensation with ``Z`` and ``F``."""
+        Bs = np.asarray(self._B[part.live].toarray())
+        Z = part.solve(Bs) if part.live.size else Bs
+        return _Anchor(np.array(tangents, dtype=float), part, Bs, Z, Bs.T @ Z)
+
+    def _updated(self, tangents: Vector) -> CondensedPart | None:
+        """The condensation for ``tangents`` updated from the anchor's (module docstring), or
+        None where it is to be factorised afresh."""
+        import scipy.linalg
+
+        a = self._anchor
+        assert a is not None
+        k = np.asarray(tangents, dtype=float)
+        c = np.flatnonzero(k != a.tangents)
+        if c.size == 0:
+            return a.part
+        if self._kept_node.size or c.size > UPDATE_LIMIT * k.size:
+            return None
+        base = a.part
+        data = self._base_data + self._scatter @ k
+        alive = self._coupled.copy()
+        alive[self._rows[data != 0.0]] = True
+        if not np.array_equal(self.other[alive], base.live):
+            return None  # (a joint lost, or regained, all its stiffness)
+        G = a.F[np.ix_(c, c)] + np.diag(1.0 / (k[c] - a.tangents[c]))
+        scale = 1.0 / np.sqrt(np.maximum(np.abs(np.diag(G)), 1e-300))
+        with warnings.catch_warnings():  # (an exactly singular G: judged just below)
+            warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)
+            lu, piv = scipy.linalg.lu_factor(G * scale[:, None] * scale[None, :],
+                                             check_finite=False)
+        pivots = np.abs(np.diag(lu))
+        if not np.all(np.isfinite(pivots)) or np.min(pivots) <= UPDATE_PIVOT * np.max(pivots):
+            return None
+
+        def solve_G(y: Vector) -> Vector:
+            d = scale if y.ndim == 1 else scale[:, None]
+            return d * scipy.linalg.lu_solve((lu, piv), d * y, check_finite=False)
+
+        W = solve_G(base.A[c])
+        Kc = base.Kc + base.A[c].T @ W
+        A = base.A - a.F[:, c] @ W
+        P = base.P.copy()
+        Zc, Bc = a.Z[:, c], a.Bs[:, c]
+        P[base.live] -= Zc @ W
+
+        def solve(x: Vector) -> Vector:
+            y = base.solve(x)
+            return y - Zc @ solve_G(Bc.T @ y)
+
+        return CondensedPart(base.live, base.dead, solve, base.Kms, 0.5 * (Kc + Kc.T), A, P)
 
     def _condense(self, tangents: Vector) -> CondensedPart:
         import scipy.sparse
@@ -209,6 +291,18 @@ class Condensation:
         fixed = self.node < 0
         A = np.where(fixed[:, None], 0.0, P[np.maximum(self.node, 0)]) - P[self.end]
         return CondensedPart(live, dead, solve, Kms, 0.5 * (Kc + Kc.T), A, P)
+
+
+@dataclass(frozen=True)
+class _Anchor:
+    """The first set of tangents condensed by factorisation, from which the others are
+    updated (module docstring)."""
+
+    tangents: Vector  #: (n_h,) [N·m/rad]
+    part: CondensedPart
+    Bs: Vector  #: the hinges' incidence over the live massless DOFs (n_live, n_h)
+    Z: Vector  #: K_ss⁻¹ B_s (n_live, n_h)
+    F: Vector  #: B_sᵀ K_ss⁻¹ B_s (n_h, n_h) [rad/(N·m)]
 
 
 def _nothing_to_solve(x: Vector) -> Vector:  # pragma: no cover - no live DOFs: never called
