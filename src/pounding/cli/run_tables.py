@@ -231,8 +231,10 @@ def _print_storeys(r: Any, units: tuple[float, str, float, str]) -> None:
                          _t(r.peak_abs_acceleration_time[i])])
         if floors.size > STOREY_ROWS:
             rows.append([label, "…", *[""] * (len(cols) - 2)])
-    matrices = [building_label(b, bl.name) for b, bl in enumerate(model.buildings)
-                if hasattr(bl, "labels") and b not in plans]
+    matrices = [building_label(b, bl.name)
+                for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets))
+                if hasattr(bl, "labels") and b not in plans
+                and not np.isfinite(shear[int(off): int(off) + bl.n]).any()]
     print_table(console, "Storeys: peaks and when (all of them in summary.json)", cols, rows,
                 keys=2, caption=(f"{', '.join(matrices)} given as matrices: no storey shear "
                                  "(K has no storey stiffness); floor: the DOF's label"

@@ -451,7 +451,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   hinge_dissipated=hinges.dissipated if hinges else None,
                   frame_residual_displacement=hinges.residual_floors if hinges else None,
                   member_end_moment=hinges.member_end_moment if hinges else None,
-                  hinge_capped=hinges.capped if hinges else None)
+                  hinge_capped=hinges.capped if hinges else None,
+                  frame_restoring_force=hinges.restoring if hinges else None)
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,

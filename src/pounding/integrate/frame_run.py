@@ -26,6 +26,7 @@ same instant inside the grid step.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -78,6 +79,9 @@ class HingeOutputs:
     #: each hinge reached its capping point (a branch of negative tangent ahead as it
     #: moved) or had its moment jump (fracture, complete deterioration) in the run
     capped: NDArray[np.bool_]
+    #: the yielding frames' restoring force on their DOFs at the output steps [N, N·m]
+    #: (nt, N), net of gravity (NaN off the frames)
+    restoring: NDArray[np.float64]
 
 
 @dataclass
@@ -91,9 +95,10 @@ class _Frame:
     band_cols: NDArray[np.int64]
     heights: NDArray[np.float64]  #: its storeys' heights [m]
     work_constant: float = 0.0  #: c: its work is ``½ uᵀ K_c u + f0ᵀ u + c`` [J]
-    #: each configuration it took: from when [s], and its ``U = P u + p0``
-    taken: list[tuple[float, NDArray[np.float64], NDArray[np.float64]]] = field(
-        default_factory=list)
+    #: each configuration it took: from when [s], its ``U = P u + p0`` and its floors'
+    #: restoring force ``R = K u + f0``, as ``(t, P, p0, K, f0)``
+    taken: list[tuple[float, NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
+                      NDArray[np.float64]]] = field(default_factory=list)
 
 
 class FrameRun:
@@ -303,9 +308,12 @@ class FrameRun:
                 pass
         moments = np.concatenate([self._end_moments(f, displacement, t_end)
                                   for f in self.frames], axis=1)
+        restoring = np.full(displacement.shape, np.nan)
+        for f in self.frames:
+            restoring[:, self._floors(f)] = self._restoring(f, displacement, t_end)
         capped = np.concatenate([f.motion.capped for f in self.frames])
         return HingeOutputs(self.peak.copy(), self.peak_time.copy(), residual, dissipated,
-                            self.events, floors, moments, capped)
+                            self.events, floors, moments, capped, restoring)
 
     def _end_moments(self, f: _Frame, displacement: NDArray[np.float64], t_end: float
                      ) -> NDArray[np.float64]:
@@ -319,21 +327,42 @@ class FrameRun:
         motion = f.motion
         E_dense, m0 = end_moment_operator(motion.frame, motion.dofs, motion.axial)
         E = scipy.sparse.csr_matrix(E_dense)
-        nt = displacement.shape[0]
-        u = displacement[:, self._floors(f)]
-        times = np.array([t for t, _, _ in f.taken])
-        at = np.arange(nt) * (t_end / max(nt - 1, 1))
-        which = np.searchsorted(times, at + 1e-12 * max(t_end, 1.0), side="right") - 1
-        out = np.empty((nt, E.shape[0]))
         by_P: dict[int, NDArray[np.float64]] = {}
-        # (which never decreases: the output steps in runs of one configuration each)
-        starts = np.concatenate([[0], np.flatnonzero(np.diff(which)) + 1, [nt]])
-        for a, b in zip(starts[:-1], starts[1:]):
-            _, P, p0 = f.taken[int(which[a])]
+
+        def linear(taken: tuple) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+            _, P, p0, _, _ = taken
             EP = by_P.get(id(P))
             if EP is None:
                 EP = by_P[id(P)] = np.asarray(E @ P)
-            out[a:b] = u[a:b] @ EP.T + (E @ p0 + m0)
+            return EP, E @ p0 + m0
+
+        return self._at_output_steps(f, displacement, t_end, E.shape[0], linear)
+
+    def _restoring(self, f: _Frame, displacement: NDArray[np.float64], t_end: float
+                   ) -> NDArray[np.float64]:
+        """Frame ``f``'s restoring force on its DOFs [N, N·m] (nt, n_f) at the output steps,
+        net of gravity: ``R = K u + f0`` in the configuration it was in then."""
+        return self._at_output_steps(f, displacement, t_end, f.motion.n_floors,
+                                     lambda taken: (taken[3], taken[4]))
+
+    def _at_output_steps(self, f: _Frame, displacement: NDArray[np.float64], t_end: float,
+                         width: int, linear: Callable[[tuple], tuple[NDArray[np.float64],
+                                                                     NDArray[np.float64]]]
+                         ) -> NDArray[np.float64]:
+        """``L u + c`` (nt, width) at the output steps of ``displacement`` (nt, n), evenly
+        spaced to ``t_end``, with ``(L, c) = linear(taken)`` of the configuration frame ``f``
+        was in at each step."""
+        nt = displacement.shape[0]
+        u = displacement[:, self._floors(f)]
+        times = np.array([c[0] for c in f.taken])
+        at = np.arange(nt) * (t_end / max(nt - 1, 1))
+        which = np.searchsorted(times, at + 1e-12 * max(t_end, 1.0), side="right") - 1
+        out = np.empty((nt, width))
+        # (which never decreases: the output steps in runs of one configuration each)
+        starts = np.concatenate([[0], np.flatnonzero(np.diff(which)) + 1, [nt]])
+        for a, b in zip(starts[:-1], starts[1:]):
+            L, c = linear(f.taken[int(which[a])])
+            out[a:b] = u[a:b] @ L.T + c
         return out
 
     def check_sidesway(self, x: NDArray[np.float64], t: float) -> None:
@@ -384,7 +413,7 @@ class FrameRun:
         m = f.motion
         cfg = m.config
         assert cfg is not None
-        f.taken.append((t, cfg.P, cfg.p0))
+        f.taken.append((t, cfg.P, cfg.p0, cfg.K, cfg.f0))
         nf = m.n_floors
         # band storage: kb[d, i] = K[i, i + d − bw]
         self.k_band[f.band_rows, f.band_cols] = cfg.K

@@ -22,6 +22,7 @@ from pounding.result.columns import IMPACT_COLUMNS
 from pounding.result.peaks import peak_abs, sampled_peak
 from pounding.result.storeys import (
     bearing_mask,
+    frame_storey_shear,
     plan_of,
     plan_storey_forces,
     residual_storey_drift,
@@ -116,6 +117,10 @@ class Response:
     frame_residual_displacement : ndarray (N,), optional
         The floors of the yielding frames at the end, unloaded to zero lateral force along
         their hinges' unloading stiffness [m] (NaN for the other buildings' floors).
+    frame_restoring_force : ndarray (nt, N), optional
+        The yielding frames' restoring force on their DOFs at the output steps, net of
+        gravity [N, N·m] (NaN off them): their storey shears
+        (:func:`pounding.result.storeys.frame_storey_shear`).
     located_peaks : ndarray (N, 6), optional
         Every floor's largest |displacement| [m], |storey drift| [m] and |absolute
         acceleration| [m/s²], each followed by its time [s], located inside solver steps
@@ -151,6 +156,7 @@ class Response:
     frame_residual_displacement: NDArray[np.float64] | None = field(default=None, repr=False)
     member_end_moment: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_capped: NDArray[np.bool_] | None = field(default=None, repr=False)
+    frame_restoring_force: NDArray[np.float64] | None = field(default=None, repr=False)
 
     # ----------------------------------------------------------------- basic views
     @property
@@ -190,9 +196,15 @@ class Response:
                 for off, bl in zip(self.model.system.offsets, self.model.buildings)
                 if (plan := plan_of(bl)) is not None]
 
+    @cached_property
+    def _frame_shears(self) -> list[tuple[int, NDArray[np.float64]]]:
+        """``(floor DOF, storey shear (nt,))`` of every frame's storeys."""
+        return frame_storey_shear(self.model, self.displacement, self.frame_restoring_force)
+
     def _storey_stiffness(self) -> NDArray[np.float64]:
         """Storey stiffness [N/m] under every DOF: a shear building's ``k_j``; NaN for a
-        matrix building (its ``K`` has no storey stiffness: its storey shear is not defined)."""
+        matrix building (its ``K`` has no storey stiffness; a frame's storey shear comes from
+        its restoring forces, :func:`pounding.result.storeys.frame_storey_shear`)."""
         return np.concatenate([b.stiffnesses if hasattr(b, "stiffnesses") else np.full(b.n, np.nan)
                                for b in self.model.buildings])
 
@@ -202,7 +214,9 @@ class Response:
         shear for yielding ones (a base slab's: its bearing's force); for a building in plan
         with lateral elements, ``V_x`` under its ``u_x`` DOFs and ``V_y`` under its ``u_y``
         DOFs (:func:`pounding.result.storeys.plan_storey_forces`; the torque is
-        :attr:`storey_torque`); NaN for another matrix building (no storey stiffness)."""
+        :attr:`storey_torque`); for a frame, the lateral restoring forces above the storey
+        (:func:`pounding.result.storeys.frame_storey_shear`); NaN for another matrix
+        building (no storey stiffness)."""
         k = self._storey_stiffness()
         out = self.drift * k
         cols = self._yielding_columns()
@@ -213,6 +227,8 @@ class Response:
         for (off, n), (vx, vy, _) in zip(self._plan_blocks, self._plan_forces):
             ix = off + 3 * np.arange(n)
             out[:, ix], out[:, ix + 1] = vx, vy
+        for col, v in self._frame_shears:
+            out[:, col] = v
         return out
 
     @cached_property
@@ -287,7 +303,18 @@ class Response:
         contacts and for a column of a building given as matrices (no storey shear). Read
         at the output steps (the contact force peak itself is located inside steps:
         :attr:`peak_contact_force`)."""
-        return struck_column_shear(self.model, self.contact_force, self.storey_shear)
+        return struck_column_shear(self.model, self.contact_force, self._storey_shear_of_columns)
+
+    @cached_property
+    def _storey_shear_of_columns(self) -> NDArray[np.float64]:
+        """:attr:`storey_shear` where the storey is one column (NaN for a frame's: its
+        columns share it, and :attr:`member_end_moment` gives each its own)."""
+        frames = [col for col, _ in self._frame_shears]
+        if not frames:
+            return self.storey_shear
+        out = self.storey_shear.copy()
+        out[:, frames] = np.nan
+        return out
 
     @cached_property
     def peak_column_shear(self) -> NDArray[np.float64]:
@@ -306,7 +333,7 @@ class Response:
         struck = [(c.index, c.struck) for c in self.model.contacts if c.struck is not None]
         if not struck:
             return out  # floor to floor only: no storey-shear history needed
-        peak_v = peak_abs(self.storey_shear)
+        peak_v = peak_abs(self._storey_shear_of_columns)
         offsets = self.model.system.offsets
         for index, pt in struck:
             v = peak_v[offsets[pt.building] + pt.upper]
@@ -433,7 +460,8 @@ class Response:
     def peak_storey_shear(self) -> NDArray[np.float64]:
         """Largest |storey shear| of every storey [N] (N,): ``k × peak drift`` for a linear
         storey (so located inside steps with the drift), the largest of the storey law's
-        shear at the output steps for a yielding one; NaN for a matrix building."""
+        shear at the output steps for a yielding one or a frame; NaN for another matrix
+        building."""
         k = self._storey_stiffness()
         out = k * self.peak_drift
         cols = self._yielding_columns()
@@ -443,6 +471,9 @@ class Response:
             ix = off + 3 * np.arange(n)
             out[ix] = sampled_peak(self.storey_shear[:, ix], self.time)[0]
             out[ix + 1] = sampled_peak(self.storey_shear[:, ix + 1], self.time)[0]
+        frames = [col for col, _ in self._frame_shears]  # (a frame's: at the output steps)
+        if frames:
+            out[frames] = sampled_peak(self.storey_shear[:, frames], self.time)[0]
         return out
 
     @cached_property
@@ -457,6 +488,9 @@ class Response:
             ix = off + 3 * np.arange(n)
             out[ix] = sampled_peak(self.storey_shear[:, ix], self.time)[1]
             out[ix + 1] = sampled_peak(self.storey_shear[:, ix + 1], self.time)[1]
+        frames = [col for col, _ in self._frame_shears]
+        if frames:
+            out[frames] = sampled_peak(self.storey_shear[:, frames], self.time)[1]
         return out
 
     @property

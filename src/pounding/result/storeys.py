@@ -15,6 +15,8 @@ of a yielding storey, the shear on a struck column, and the names of floors.
   storey shears ``V_x``, ``V_y`` and torque ``T`` from the lateral elements
   (:func:`pounding.result.storey_peaks.plan_storeys`, floor by floor, the peaks along x and
   y, the rotation, the drifts of the centres of mass and those storey forces).
+* **Frames** (:class:`pounding.structure.frame_linear.FrameBuilding`): :func:`frame_storey_shear`,
+  each storey's shear from the frame's restoring forces above it.
 * **Demands.** :func:`residual_storey_drift`, the drift a yielding storey keeps once
   unloaded; :func:`struck_column_shear`, the shear a floor-to-column impact puts on the
   struck column.
@@ -35,8 +37,12 @@ if TYPE_CHECKING:
     from pounding.model import PoundingModel
     from pounding.structure.plan import PlanBuilding
 
-__all__ = ["bearing_law", "bearing_mask", "floor_name", "plan_of", "plan_storey_forces",
-           "residual_storey_drift", "struck_column_shear"]
+__all__ = ["bearing_law", "bearing_mask", "floor_name", "frame_storey_shear", "plan_of",
+           "plan_storey_forces", "residual_storey_drift", "struck_column_shear"]
+
+CUT_TOL: float = 1e-6
+"""A DOF stands above the cut at the foot of a storey if it is this far [m] above the floor
+below (:func:`frame_storey_shear`)."""
 
 
 # =============================================================================== names
@@ -206,4 +212,37 @@ def struck_column_shear(model: PoundingModel, contact_force: NDArray[np.float64]
         p = contact_force[:, c.index] * (1.0 if pt is c.right else -1.0)
         v = storey_shear[:, offsets[pt.building] + pt.upper]
         out[:, c.index] = np.maximum(np.abs(v + (1.0 - pt.xi) * p), np.abs(v - pt.xi * p))
+    return out
+
+
+# =============================================================================== frames
+def frame_storey_shear(model: PoundingModel, displacement: NDArray[np.float64],
+                       restoring: NDArray[np.float64] | None
+                       ) -> list[tuple[int, NDArray[np.float64]]]:
+    """The storey shears [N] of every frame of the row, ``(floor DOF, history (nt,))``.
+
+    The shear of storey j is the lateral force the frame resists across a cut at the storey's
+    foot: the sum of the lateral restoring forces of its DOFs above the cut (its floors', and
+    any node's with lateral mass), net of gravity — the columns' shears less the P-Delta
+    shear of the gravity loads when the frame has P-Delta, as the pushover's base shear. For
+    a frame with plastic hinges the restoring forces are the run's (``restoring``, (nt, N),
+    :class:`pounding.integrate.frame_run.HingeOutputs`); for an elastic one ``K u``.
+    """
+    from pounding.structure.frame_linear import FrameBuilding
+
+    out: list[tuple[int, NDArray[np.float64]]] = []
+    for off, b in zip(model.system.offsets, model.buildings):
+        if not isinstance(b, FrameBuilding):
+            continue
+        cols = slice(int(off), int(off) + b.n)
+        R = restoring[:, cols] if restoring is not None else None
+        if R is None or not np.all(np.isfinite(R)):
+            R = displacement[:, cols] @ b.K.T
+        floors = b.floor_dofs
+        z = b.elevations
+        lateral = b.r == 1.0
+        below = np.concatenate([[0.0], z[floors[:-1]]])
+        for j, f in enumerate(floors):
+            above = lateral & (z > below[j] + CUT_TOL)
+            out.append((int(off) + int(f), R[:, above].sum(axis=1)))
     return out
