@@ -379,9 +379,12 @@ def test_gap_study_of_frames_is_the_approach_of_a_run_without_contact():
         left = labels.index(c.left.label())
         right = labels.index(c.right.label())
         approach = float(np.max(u[:, left] - u[:, right]))
-        # the gap study maximises between samples (Hermite): at least the sampled maximum
+        # the gap study maximises between samples (Hermite): at least the sampled maximum —
+        # of its own runs; the pair's run is another integration (its adaptive steps cut by
+        # both frames' events), equal to the run's tolerance (rtol 1e-8): 1.4e-9 m apart on
+        # 28 mm under OPENBLAS_CORETYPE=Haswell (2026-11-27)
         assert gs.critical[0, j] == pytest.approx(max(approach, 0.0), rel=1e-4, abs=1e-7)
-        assert gs.critical[0, j] >= approach - 1e-12
+        assert gs.critical[0, j] >= approach - 1e-6 * abs(approach) - 1e-12
 
 
 def test_a_collapse_is_the_flatline_of_the_ida_curve():

@@ -76,6 +76,7 @@ from pounding.integrate.periods import (
     check_building_periods,
     check_contact_periods,
     check_link_periods,
+    stiff_frame_mode,
 )
 from pounding.integrate.propagator import FreeStep, free_step
 from pounding.integrate.start import (
@@ -474,6 +475,9 @@ def _failure_text(model: PoundingModel, km: KernelModel,
     else:
         why = (f"solver: the adaptive step fell below 1e-14 of the {step:g} s output step at "
                f"t = {t:.4f} s{where} (rtol = {rtol:g})")
+    stiff = stiff_frame_mode(model) if ws_i[I_FAILED] == FAIL_BUDGET and not closed else ""
+    if stiff:
+        return why + ": a yielding frame's damping over-damps a stiff mode" + stiff
     return (why + ": the model moves millions of times faster than a building does there; "
             "check the masses, storey and contact stiffnesses and the contact damping "
             "(e.g. e far below 0.1), or raise max_rk_steps")
