@@ -62,6 +62,7 @@ from pounding.structure.assembly import (
     assemble,
     contact_points,
     face_below,
+    face_dofs,
     face_point_name,
     floor_below,
     floor_dofs,
@@ -259,12 +260,6 @@ class PoundingModel:
                         raise ValueError(f"devices[{i}].floors: {label} is not a floor of "
                                          f"building B{b + 1} (DOF {f + 1} is not among its "
                                          "floors)")
-                    faces = getattr(self.buildings[b], "faces", {})
-                    if faces:
-                        raise ValueError(f"devices[{i}].floors: {label}: building B{b + 1} "
-                                         "is struck on faces other than its floors (a frame "
-                                         "without rigid floors, say); links to it are not "
-                                         "supported (give it rigid floors)")
             elif isinstance(dev, Bumper):
                 if dev.label in seen:
                     raise ValueError(f"devices[{i}]: a second bumper in {dev.label}")
@@ -359,6 +354,27 @@ class PoundingModel:
     def links(self) -> tuple[Link, ...]:
         """The links between buildings, in the order given."""
         return tuple(d for d in self.devices if isinstance(d, Link))
+
+    @cached_property
+    def link_dofs(self) -> tuple[tuple[int, int], ...]:
+        """The global DOFs of every link's two ends, left end first as given: each end at
+        its floor — on a building struck on faces other than its floors (a frame without
+        rigid floors, :attr:`MatrixBuilding.faces`), the DOF of its face toward the other
+        end's building at that floor's level."""
+        offsets = self.system.offsets
+        out = []
+        for link in self.links:
+            (ba, fa), (bb, fb) = link.ends
+            ends = []
+            for b, f, other in ((ba, fa, bb), (bb, fb, ba)):
+                building = self.buildings[b]
+                side = "right" if other > b else "left"
+                face = face_dofs(building, side)
+                z = building.floor_levels
+                at = face[np.abs(z[face] - z[f]) <= self.level_tolerance]
+                ends.append(int(offsets[b]) + (int(at[0]) if at.size else f))
+            out.append((ends[0], ends[1]))
+        return tuple(out)
 
     @property
     def n_dof(self) -> int:
@@ -490,10 +506,9 @@ class PoundingModel:
         # the links: rows of the same kind after the storeys, from the left end (lower) to
         # the right end (upper), so the "drift" is u_right − u_left
         width = rows[0].size if rows else STOREY_PARAMS_SIZE
-        for link in self.links:
-            (ba, fa), (bb, fb) = link.ends
-            lower.append(int(offsets[ba] + fa))
-            upper.append(int(offsets[bb] + fb))
+        for link, (lo, hi) in zip(self.links, self.link_dofs):
+            lower.append(lo)
+            upper.append(hi)
             code.append(link.code)
             rows.append(link.params(width))
             zi.append(nz if link.has_internal_variable else -1)

@@ -142,11 +142,9 @@ def check_link_periods(model: PoundingModel, step: float) -> None:
     linear dashpot (α = 1), with ``m_eff = m_a m_b / (m_a + m_b)`` of the two floors'
     masses. One line naming the link, its constants and the masses."""
     floor = CONTACT_PERIOD_FLOOR * step
-    offsets = model.system.offsets
     m = np.diag(model.system.M)
-    for link in model.links:
-        (ba, fa), (bb, fb) = link.ends
-        m_a, m_b = float(m[offsets[ba] + fa]), float(m[offsets[bb] + fb])
+    for link, (lo, hi) in zip(model.links, model.link_dofs):
+        m_a, m_b = float(m[lo]), float(m[hi])
         m_eff = m_a * m_b / (m_a + m_b)
         times = []
         if link.k is not None:

@@ -124,9 +124,8 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     # links between buildings (reference_laws.link_force); a Maxwell link's spring
     # deformation is a state
     links = model.links
-    offs = model.system.offsets
-    l_lo = [int(offs[a[0]] + a[1]) for a, _ in (lk.ends for lk in links)]
-    l_hi = [int(offs[b[0]] + b[1]) for _, b in (lk.ends for lk in links)]
+    l_lo = [lo for lo, _ in model.link_dofs]
+    l_hi = [hi for _, hi in model.link_dofs]
     l_zi = list(np.cumsum([lk.kind == "maxwell" for lk in links]) - 1)
     nzl = sum(lk.kind == "maxwell" for lk in links)
     i_h = 2 * n                 # hysteretic states

@@ -504,9 +504,7 @@ class Response:
         return self._link_kinematics(self.velocity)
 
     def _link_kinematics(self, floors: NDArray[np.float64]) -> NDArray[np.float64]:
-        offsets = self.model.system.offsets
-        cols = [(int(offsets[a[0]] + a[1]), int(offsets[b[0]] + b[1]))
-                for a, b in (link.ends for link in self.model.links)]
+        cols = self.model.link_dofs
         out = np.zeros((floors.shape[0], len(cols)))
         for i, (lo, hi) in enumerate(cols):
             out[:, i] = floors[:, hi] - floors[:, lo]
