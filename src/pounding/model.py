@@ -534,8 +534,11 @@ class PoundingModel:
         """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based): ``F<j>`` is the
         building's DOF ``j`` (a matrix building's own labels: :meth:`dof_names`); of a
         building in plan, its floor and direction, ``'B2F3x'``, ``'B2F3y'``, ``'B2F3θ'``
-        (building 2, floor 3), as its contacts name its floors."""
-        return [f"B{b + 1}{bl.labels[j]}" if isinstance(bl, PlanMatrixBuilding)
+        (building 2, floor 3), as its contacts name its floors; of a frame, its own labels
+        (its floors ``F1`` … first, then its nodes' DOFs with mass, ``'B1N6x'``)."""
+        return [f"B{b + 1}{bl.labels[j]}"
+                if isinstance(bl, MatrixBuilding) and (isinstance(bl, PlanMatrixBuilding)
+                                                       or getattr(bl, "frame", None) is not None)
                 else f"B{b + 1}F{j + 1}" for b, bl in enumerate(self.buildings)
                 for j in range(bl.n)]
 

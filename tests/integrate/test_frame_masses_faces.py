@@ -12,6 +12,8 @@ and against rigid floors as the beams' axial stiffness grows."""
 from __future__ import annotations
 
 import dataclasses
+import json
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -182,8 +184,8 @@ def test_a_floor_without_lateral_mass_where_it_is_struck_is_refused() -> None:
     frame = _three(diaphragm=False, hinges=False)
     m = np.array(frame.masses)
     m[8, 0] = 0.0  # node 9: the right end of floor 2
-    with pytest.raises(ValueError, match=r"three: masses: node 9 \(floor 2, y = 7\.5 m\) has "
-                                         r"no lateral mass"):
+    with pytest.raises(ValueError, match=r"three: masses: node 9 \(nodes\[8\], floor 2, "
+                                         r"y = 7\.5 m\) has no lateral mass"):
         frame_matrix_building(dataclasses.replace(frame, masses=m))
 
 
@@ -217,7 +219,8 @@ def test_faces_of_a_matrix_building_are_checked_and_kept() -> None:
     import pickle
 
     kw = dict(M=np.diag([2e5, 2e5, 1e5]), K=[[6e7, -2e7, 0], [-2e7, 4e7, -2e7], [0, -2e7, 2e7]],
-              labels=["F1", "R1", "F2"], elevations=[3.5, 3.5, 6.5], floors=["F1", "F2"])
+              labels=["F1", "R1", "F2"], elevations=[3.5, 3.5, 6.5], floors=["F1", "F2"],
+              r=[1.0, 1.0, 1.0])
     b = MatrixBuilding(**kw, faces={"right": ["R1", "F2"]})
     assert np.array_equal(b.face_dofs("right"), [1, 2])
     assert np.array_equal(b.face_dofs("left"), [0, 2])  # (the floors)
@@ -228,10 +231,16 @@ def test_faces_of_a_matrix_building_are_checked_and_kept() -> None:
         MatrixBuilding(**kw, faces={"top": [0]})
     with pytest.raises(ValueError, match=r"faces\.right\[0\] = 'X' is not one of the labels"):
         MatrixBuilding(**kw, faces={"right": ["X"]})
+    assert not MatrixBuilding(**kw, faces={"right": None}).faces  # (the floors)
+    # a rotation is not struck (it once was taken for a displacement, interpolated)
+    rot = {**kw, "r": [1.0, 0.0, 1.0]}
+    with pytest.raises(ValueError, match=r"faces\.right: 'R1' is not a translation along the "
+                                         r"row \(its r is 0, not 1\)"):
+        MatrixBuilding(**rot, faces={"right": ["R1", "F2"]})
     with pytest.raises(ValueError, match=r"faces\.right: 'F1' and 'R1' are both at "
                                          r"elevation 3\.5 m"):
-        PoundingModel([b.__class__(**kw, faces={"right": ["R1", "F1", "F2"]}),
-                       ShearBuilding.uniform(2, 1e5, 5e7, height=3.25)], [0.01], KV)
+        MatrixBuilding(**kw, faces={"right": ["F1", "R1", "F2"]})
+
 
 
 def _opensees_frames() -> Any:
@@ -299,3 +308,33 @@ def test_opensees_converges_toward_the_kernel_on_a_frame_without_rigid_floors() 
         errors.append(np.max(np.abs(theirs - ours)) / np.max(np.abs(ours)))
     # measured 2026-11-27: 1.7e-4, 4.1e-5, 1.6e-5
     assert errors[0] > errors[1] > errors[2] and errors[2] < 5e-5, errors
+
+
+def test_outputs_of_a_frame_without_rigid_floors_name_its_dofs(tmp_path: Any) -> None:
+    # its node DOFs keep their own names (not "B1F4" … made up from their index), the
+    # residual drift is its floors' only, and the report's gap check reads the column
+    # line that is struck (once: the floor's left node, 0.56 mm off)
+    from pounding.cli import main
+
+    path = tmp_path / "m.toml"
+    text = (Path(__file__).parents[2] / "src" / "pounding" / "examples" /
+            "frames_pounding.toml").read_text()
+    text = text.replace('geometry = "p-delta"', 'geometry = "p-delta"\ndiaphragm = false\n'
+                        'beam_EA = 5.0e9').replace("scale = 1.5", "scale = 1.5\nduration = 3.0")
+    path.write_text(text)
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--no-figures"]) == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert set(summary["residual_drift_m"]) == {"B1F1", "B1F2", "B1F3", "B2F1", "B2F2"}
+    from pounding.report.run_checks import gap_check_section
+    from pounding.report.run_folder import read_run
+
+    run = read_run(out)
+    table = gap_check_section(run)[0]
+    for row in table.rows:
+        label, max_rel = row[0], row[6]
+        c = next(c for c in run.built.model.contacts if c.label == label)
+        pen = run.ds["penetration"].sel(contact=label).values
+        assert max_rel == pytest.approx(float(np.max(pen)) + c.gap, abs=1e-12)
+    names = [str(x) for x in run.ds["floor"].values]
+    assert "B1N6x" in names and "B1F4" not in names

@@ -152,6 +152,12 @@ gap = 0.02
                                  'mass = -3.0 }, { nodes = [1, 3]'))
     with pytest.raises(ValueError, match=r"building\[1\]\.frame\.members\[0\]\.mass"):
         load_config(path)
+    # a node given a mass twice: refused (OpenSees' mass command overwrites, a sum would not)
+    path.write_text(text.replace('{ node = 3, mass = [2e4, 0, 0] }',
+                                 '{ node = 2, mass = [2e4, 0, 0] }'))
+    with pytest.raises(ValueError, match=r"building\[1\]\.frame\.masses\[1\]\.node: node 2 is "
+                                         r"given a mass twice \(masses\[0\] too\)"):
+        load_config(path)
     path.write_text(text.replace('"lumped"', '"consistent"'))
     with pytest.raises(ValueError, match=r"building\[0\]: regular: mass_matrix: a time history "
                                          "takes lumped masses"):

@@ -171,7 +171,11 @@ class BuildingConfig(Section):
         if self.damping is None or self.damping.modes is None:
             return
         n = {"plan": 3 * self.n}.get(self.kind, self.n)
+        ratios = self.damping.rayleigh or []
         for i, mode in enumerate(self.damping.modes):
+            if n == 1 and i == 1 and len(set(ratios)) <= 1:
+                continue  # (one mode, one ratio: the second anchor is not used, as the
+                #           default damping a run's model.toml writes back)
             if mode > n:
                 raise field_error(("damping", "modes", i),
                                   f"must be in [1, {n}]: the building has {n} mode(s) (got "

@@ -267,6 +267,14 @@ class FrameConfig(Section):
                     raise field_error(key, "required for a frame given node by node (nodes, "
                                            "members, supports)")
             n = len(self.nodes or [])
+            given: dict[int, int] = {}
+            for i, item in enumerate(self.masses or []):
+                if item.node in given:
+                    raise field_error(("masses", i, "node"),
+                                      f"node {item.node} is given a mass twice (masses"
+                                      f"[{given[item.node]}] too); give each node one entry "
+                                      "with all its masses")
+                given[item.node] = i
             for key in ("members", "supports", "masses", "loads"):
                 for i, item in enumerate(getattr(self, key) or []):
                     for j in (item.nodes if key == "members" else [item.node]):

@@ -118,7 +118,10 @@ def gap_check_section(r: RunFolder) -> list[Block]:
     rows = []
     for i, label in enumerate(contacts):
         left, _, right = label.partition("-")
-        if left in floors and right in floors:
+        if label in gaps_model:  # the model's own gap: u_left − u_right = δ + gap exactly
+            rel = None  # (a label names floors, not always the DOFs struck: a frame's
+            gap_from_nc = float("nan")  # column line, a column point)
+        elif left in floors and right in floors:
             rel = u[:, floors.index(left)] - u[:, floors.index(right)]
             gap_from_nc = float(np.median(rel - pen[:, i]))
         else:  # labels not parseable: penetration + gap with the model's gap

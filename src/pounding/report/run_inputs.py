@@ -69,7 +69,13 @@ def model_section(r: RunFolder) -> list[Block]:
                 damping = bl.damping.readable()
             else:  # a MatrixBuilding: its K couples the floors, no storey stiffness
                 floors = [j for j in bl.floors]
-                storeys, masses = len(floors), _range_text(bl.masses[floors], "kg")
+                frame = getattr(bl, "frame", None)  # (a frame: each floor's whole mass)
+                floor_mass = bl.masses[floors]
+                if frame is not None:
+                    at = np.isin(np.round(frame.levels - frame.base, 6),
+                                 np.round(bl.elevations[floors], 6))
+                    floor_mass = frame.floor_masses[at]
+                storeys, masses = len(floors), _range_text(floor_mass, "kg")
                 stiffness = (f"full K, {bl.n}×{bl.n}"
                              + (f" ({bl.sources['K']})" if "K" in bl.sources else ""))
                 damping = (bl.damping.readable() if bl.damping is not None

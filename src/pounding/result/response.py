@@ -291,7 +291,7 @@ class Response:
         res = self.frame_residual_displacement
         if res is not None:
             below = self.model.floor_below()
-            on = np.flatnonzero(np.isfinite(res))  # the frames' floors
+            on = np.flatnonzero(np.isfinite(res) & (below > -2))  # the frames' floors
             out[on] = res[on] - np.where(below[on] >= 0, res[np.maximum(below[on], 0)], 0.0)
         return out
 

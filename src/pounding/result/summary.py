@@ -218,8 +218,9 @@ def inelastic_summary(r: Response) -> dict[str, Any]:
         out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
                                    if np.isfinite(v)}
     if r.model.is_inelastic or r.model.yielding_frames:
-        out["residual_drift_m"] = {lb: float(v) for lb, v, bearing in
-                                   zip(labels, r.residual_drift, r.is_bearing) if not bearing}
+        out["residual_drift_m"] = {lb: float(v) for lb, v, bearing, floor in
+                                   zip(labels, r.residual_drift, r.is_bearing,
+                                       r.model.is_floor) if floor and not bearing}
     struck = [c for c in r.model.contacts if c.struck is not None]
     if struck:
         pcs = r.peak_column_shear

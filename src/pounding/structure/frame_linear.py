@@ -68,7 +68,8 @@ def frame_matrix_building(frame: Frame) -> FrameBuilding:
     Its DOFs are the floors first — the lateral displacement of each floor (a level where a
     beam stands), with rigid floors the floor's, without them its first node's (the left
     column line), ``F1`` … ``Fn`` — then every other DOF with mass, labelled by node (``N7x``,
-    ``N7y``, ``N7r``: node 7's lateral, vertical and rotational DOF). Drifts are measured at
+    ``N7y``, ``N7r``: node 7's lateral, vertical and rotational DOF; nodes counted from 1,
+    so ``N7`` is ``nodes[6]`` of a model file). Drifts are measured at
     the floors. A neighbour strikes the frame's outer column line on its side
     (:attr:`MatrixBuilding.faces`): without rigid floors each floor's last node on the
     right; and a node with lateral mass on an outer column between two floors (a level with
@@ -138,8 +139,8 @@ def _row_dofs(frame: Frame, node_dof: np.ndarray, mass_at: dict[int, int]
                 if d not in mass_at:
                     where = (f"floor {len(floors) + 1} (y = {frame.levels[j]:.6g} m)"
                              if frame.diaphragm else
-                             f"node {node + 1} (floor {len(floors) + 1}, y = "
-                             f"{frame.levels[j]:.6g} m)")
+                             f"node {node + 1} (nodes[{node}], floor {len(floors) + 1}, "
+                             f"y = {frame.levels[j]:.6g} m)")
                     raise ValueError(f"{frame.name}: masses: {where} has no lateral mass; a "
                                      "time history needs a lateral mass where each floor's "
                                      "drift is measured and where a neighbour may strike")

@@ -196,6 +196,8 @@ class MatrixBuilding:
         for side, value in (faces or {}).items():
             if side not in ("left", "right"):
                 raise ValueError(f"{who}: faces: {side!r} is not a side (left or right)")
+            if value is None:
+                continue  # (struck at the floors)
             faces_[side] = floor_indices(value, labels_, who, f"faces.{side}")
         r0 = np.zeros(n)
         r0[list(floors_)] = 1.0
@@ -203,6 +205,18 @@ class MatrixBuilding:
         if not np.any(r_ != 0.0):
             raise ValueError(f"{who}: r is all zero: the ground motion would not move the "
                              "building")
+        for side, dofs in faces_.items():
+            z = elevations_[list(dofs)]
+            for k, d in enumerate(dofs):
+                if r_[d] != 1.0:
+                    raise ValueError(f"{who}: faces.{side}: {labels_[d]!r} is not a translation "
+                                     f"along the row (its r is {r_[d]:g}, not 1); a neighbour "
+                                     "strikes translations only")
+                same = [labels_[e] for e, ze in zip(dofs, z) if e != d and ze == z[k]]
+                if same:
+                    raise ValueError(f"{who}: faces.{side}: {labels_[d]!r} and {same[0]!r} are "
+                                     f"both at elevation {z[k]:g} m; a face has one DOF at "
+                                     "each elevation")
         diagonal, _, _ = is_diagonal(M_)
         if diagonal:
             for k in range(n):
