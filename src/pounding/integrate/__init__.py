@@ -73,10 +73,12 @@ from pounding.integrate.layout import (
     W_RESUME_S,
 )
 from pounding.integrate.periods import (
+    RK_STABILITY,
     check_building_periods,
     check_contact_periods,
     check_link_periods,
     stiff_frame_mode,
+    stiff_frame_rate,
 )
 from pounding.integrate.propagator import FreeStep, free_step
 from pounding.integrate.start import (
@@ -196,6 +198,9 @@ class _ModelNotes(NamedTuple):
     """(output step, duration) pairs whose checks the model passed."""
     margin: dict[float, float]
     """The peak margin (:func:`peak_margin`) of each output step."""
+    stiff_rate: list[object]
+    """The yielding frames' fastest over-damped decay rate and its text
+    (:func:`pounding.integrate.periods.stiff_frame_rate`), once found (empty before)."""
 
 
 _NOTES: dict[int, _ModelNotes] = {}
@@ -209,7 +214,7 @@ def _model_notes(model: PoundingModel) -> _ModelNotes:
     key = id(model)
     notes = _NOTES.get(key)
     if notes is None:
-        notes = _ModelNotes(set(), {})
+        notes = _ModelNotes(set(), {}, [])
         try:
             # the entry must go when the model does (before its id can be reused)
             weakref.finalize(model, _NOTES.pop, key, None)
@@ -364,6 +369,18 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         margin = notes.margin[step] = peak_margin(km, step)
     budget = (default_step_budget(nt) if max_rk_steps is None
               else int(positive("max_rk_steps", max_rk_steps)))
+    if yielding_frames:
+        # (a mode a yielding frame's damping over-damps holds its explicit steps short:
+        # refused before the run where even stable steps would overrun the budget)
+        rate = notes.stiff_rate
+        if not rate:
+            rate[:] = stiff_frame_rate(model)
+        least = t_end * float(rate[0]) / RK_STABILITY  # type: ignore[arg-type]
+        if least > budget:
+            raise IntegrationError(
+                f"solver: a yielding frame's damping over-damps a stiff mode{rate[1]}; the run "
+                f"would take at least {least:,.0f} adaptive steps, beyond its budget of "
+                f"{budget:,} (max_rk_steps)")
     st = new_state(km, x, sstate, step, margin, exact, budget)
     ws_i = st.ws_i
     cap = impact_capacity or max(1000, 20 * nc * int(t_end) + 1000)

@@ -191,10 +191,21 @@ def _fastest_period(model: PoundingModel, i: int) -> float:
     return 2.0 * math.pi / fastest if fastest > 0.0 else math.inf
 
 
+RK_STABILITY: float = 3.3
+"""The explicit Runge–Kutta steps (Dormand–Prince) are stable up to about this many over
+the fastest decay rate |λ| of the motion: a run needs at least ``duration |λ| / 3.3``."""
+
+
 def stiff_frame_mode(model: PoundingModel) -> str:
+    """:func:`stiff_frame_rate`'s text (``""`` where no frame has such a mode)."""
+    return stiff_frame_rate(model)[1]
+
+
+def stiff_frame_rate(model: PoundingModel) -> tuple[float, str]:
     """Where a yielding frame's adaptive steps are held short by a mode its damping
-    over-damps: ``" (B1 'portal': a mode of period 0.45 ms damped at ζ = 9.1, whose fast
-    decay the steps must follow every 13 µs …)"``, or ``""`` where no frame has one.
+    over-damps: its decay rate |λ| [1/s] and ``" (B1 'portal': a mode of period 0.45 ms
+    damped at ζ = 9.1, whose fast decay the steps must follow every 13 µs …)"``, or
+    ``(0, "")`` where no frame has one.
 
     A yielding frame is stepped by explicit Runge–Kutta, stable for steps up to about
     ``3.3 / |λ|`` with ``λ`` the fastest eigenvalue of its motion; a mode of circular
@@ -204,7 +215,7 @@ def stiff_frame_mode(model: PoundingModel) -> str:
     damping is classical: Rayleigh or modal)."""
     import scipy.linalg
 
-    worst: tuple[float, str] = (0.0, "")
+    worst: tuple[float, str] = (0.0, "")  # (rate, text)
     for b, bl in model.yielding_frames:
         M, K, C = np.diag(bl.masses), bl.stiffness_matrix(), bl.damping_matrix()
         w2, phi = scipy.linalg.eigh(K, M)
@@ -217,6 +228,6 @@ def stiff_frame_mode(model: PoundingModel) -> str:
             worst = (float(rate[j]), (
                 f" (B{b + 1} {bl.name!r}: a mode of period {2e3 * math.pi / w[j]:.3g} ms "
                 f"damped at ζ = {zeta[j]:.3g}, whose fast decay the steps must follow every "
-                f"{3.3e6 / rate[j]:.3g} µs: give that frame modal damping — damping = "
-                "{ ratio = 0.05 } — or no mass on its stiff, over-damped modes)"))
-    return worst[1]
+                f"{RK_STABILITY * 1e6 / rate[j]:.3g} µs: give that frame modal damping — "
+                "damping = { ratio = 0.05 } — or no mass on its stiff, over-damped modes)"))
+    return worst
