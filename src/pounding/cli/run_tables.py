@@ -311,7 +311,9 @@ def _print_contacts(r: Any, units: tuple[float, str, float, str]) -> None:
     if not model.contacts:
         return
     ff, fu, ef, eu = units
-    columns = any(c.struck is not None for c in model.contacts)
+    # (a column shear only where one is reported: not a frame's, whose columns share it)
+    columns = any(c.struck is not None for c in model.contacts) and bool(
+        np.isfinite(r.peak_column_shear).any())
     cols = [Col("contact", "left", wrap=True), Col("elevation [m]"), Col("gap [mm]"),
             Col("impacts"), Col(f"peak force [{fu}]"), Col("at t [s]"),
             Col(f"dissipated [{eu}]")]
