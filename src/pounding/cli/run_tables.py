@@ -167,9 +167,12 @@ def _print_buildings(r: Any, units: tuple[float, str, float, str]) -> None:
                 row += [law.label, number(mu[jm], 3), str(list(floors).index(jm) + 1),
                         f"{1e3 * res[jr]:+.2f}", str(list(floors).index(jr) + 1)]
         rows.append(row)
+    notes = (["in plan: the larger of x and y, at the centres of mass"] if plans else []) + \
+        (["a frame's storey shears (as in plan) at the output steps"]
+         if model.yielding_frames or any(getattr(bl, "frame", None) is not None
+                                         for bl in model.buildings) else [])
     print_table(console, "Buildings (peaks located inside solver steps)", cols, rows,
-                caption=("in plan: the larger of x and y, at the centres of mass"
-                         if plans else ""))
+                caption="; ".join(notes))
 
 
 def _print_bearings(r: Any, units: tuple[float, str, float, str]) -> None:
