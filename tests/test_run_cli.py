@@ -415,3 +415,16 @@ gap = 0.01
     model.write_text(bad)
     assert main(["run", str(model), "--out", str(tmp_path / "bad"), "--no-figures"]) == 2
     assert not (tmp_path / "bad").exists()
+
+
+def test_an_impact_open_at_the_end_is_said_beside_the_contact_table(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # the seed pair's first impact lasts 1.979-2.048 s: a run ending at 2.0 s ends inside it;
+    # the table's "dissipated" sums finished impacts, the run's total the energy so far
+    model = short_model(tmp_path, duration=2.0)
+    assert main(["run", str(model), "--out", str(tmp_path / "o"), "--no-figures"]) == 0
+    out = capsys.readouterr().out
+    assert "1 still open at the end, whose energy so far is in the run's total" in " ".join(
+        out.split())
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["contact_dissipated_J"] > 0.0

@@ -24,6 +24,7 @@ from pounding.cli.tables import (
     number,
     print_table,
 )
+from pounding.result.columns import IMPACT_COLUMNS
 
 __all__ = ["STOREY_ROWS", "print_run_summary"]
 
@@ -338,7 +339,12 @@ def _print_contacts(r: Any, units: tuple[float, str, float, str]) -> None:
             cells += [number(pcs[c.index] * ff) if hit else "–",
                       f"{r.column_shear_ratio[c.index]:.2f}" if hit else "–"]
         rows.append(cells)
-    print_table(console, "Contacts", cols, rows)
+    rows_ = r.impact_array
+    col = IMPACT_COLUMNS.index("energy_dissipated")
+    still_open = int(np.count_nonzero(~np.isfinite(rows_[:, col]))) if rows_.size else 0
+    print_table(console, "Contacts", cols, rows, caption=(
+        f"dissipated: finished impacts; {still_open} still open at the end, whose energy so "
+        "far is in the run's total" if still_open else ""))
 
 
 def _print_links(r: Any, units: tuple[float, str, float, str]) -> None:
