@@ -322,3 +322,56 @@ def test_a_floor_fixed_in_x_beside_tied_floors_is_accepted(ops: Any) -> None:
     f = frame_from_opensees(ops)
     assert f.diaphragm
     assert f.levels.tolist() == [4.0, 8.0]
+
+
+def _bilin(lam: float) -> Any:
+    """A ``Bilin`` material (K_e 1e8; M_y 3e5 / 2.5e5; a_s 0.003 / 0.002; θ_p 0.03 / 0.025;
+    θ_pc 0.2 / 0.15; residual 0.4 / 0.3; θ_u 0.25 / 0.2), cyclic deterioration Λ = ``lam``."""
+    def make(o: Any) -> None:
+        o.uniaxialMaterial("Bilin", 1, 1e8, 0.003, 0.002, 3e5, -2.5e5, lam, lam, lam, lam,
+                           1.0, 1.0, 1.0, 1.0, 0.03, 0.025, 0.2, 0.15, 0.4, 0.3, 0.25, 0.2,
+                           1.0, 1.0)
+    return make
+
+
+def test_a_bilin_material_without_deterioration_moves_as_opensees_does(ops: Any) -> None:
+    """OpenSees' older ``Bilin`` (which it says to replace by IMKBilin) imports as the
+    bilinear IMK law, M_c/M_y = 1 + a_s K_e θ_p / M_y, and follows OpenSees' Bilin along a
+    cyclic path of growing amplitude into the post-capping branch on both sides."""
+    import math
+
+    from pounding.hysteresis.hinges import moment_path
+    from pounding.hysteresis.imk import IMKBilinear
+
+    hand_portal(ops, hinge_mat=_bilin(0.0))
+    f = frame_from_opensees(ops)
+    law = next(h.law for h in f.hinges if h.element == 0)
+    assert isinstance(law, IMKBilinear)
+    assert law.mc_my == pytest.approx(1 + 0.003 * 1e8 * 0.03 / 3e5, rel=1e-12)
+    assert law.mc_my_neg == pytest.approx(1 + 0.002 * 1e8 * 0.025 / 2.5e5, rel=1e-12)
+    assert (law.m_y, law.m_y_neg, law.kappa_neg) == (3e5, 2.5e5, 0.3)
+    path = [0.0]
+    for amp in (0.005, 0.02, 0.06, 0.1):
+        path += [amp, -amp, amp]
+    ops.wipe()
+    _bilin(0.0)(ops)
+    ops.testUniaxialMaterial(1)
+    theirs, previous = [0.0], 0.0
+    for target in path[1:]:
+        n = max(1, math.ceil(abs(target - previous) / 1e-5))
+        for j in range(1, n + 1):
+            ops.setStrain(previous + (target - previous) * j / n)
+        theirs.append(ops.getStress())
+        previous = target
+    ours = moment_path(law, path)
+    # measured 2026-11-27: 1.9e-16 of M_y (constants typed with 6 digits or fewer)
+    np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-9 * 3e5)
+    assert min(ours) < -2.5e5 and max(ours) > 3e5  # (past yield both ways)
+
+
+def test_a_bilin_material_with_cyclic_deterioration_is_refused(ops: Any) -> None:
+    hand_portal(ops, hinge_mat=_bilin(1.0))
+    with pytest.raises(ValueError, match=r"material 1 \(Bilin\): cyclic deterioration \(LamdaS "
+                                         r"= 1, LamdaK = 1, LamdaA = 1, LamdaD = 1\) is not "
+                                         r"read: OpenSees replaced Bilin by IMKBilin"):
+        frame_from_opensees(ops)

@@ -34,6 +34,9 @@ domain is read, not changed (no analysis is set up or run). What is read, and ho
     :class:`~pounding.hysteresis.imk.IMKPeakOriented`, their constants from the printout (no
     parameter reads them: 6 significant digits, exact for constants typed with 6 or fewer;
     :func:`pounding.structure.opensees_domain.imk_law`);
+  - ``Bilin`` (the older implementation OpenSees says to replace by ``IMKBilin``) without
+    cyclic deterioration → :class:`~pounding.hysteresis.imk.IMKBilinear` (with it: refused,
+    its rules differ; :func:`pounding.structure.opensees_domain.bilin_law`);
   - any material can be given as a hinge law with ``materials={tag: law}``, which takes
     precedence over what the domain says;
 

@@ -29,7 +29,8 @@ from numpy.typing import NDArray
 
 from pounding.hysteresis.hinges import BilinearHinge, ElasticPlastic, HingeLaw
 
-__all__ = ["IMK_MATERIALS", "hinge_law", "imk_law", "model_json", "mp_ties", "pattern_loads"]
+__all__ = ["IMK_MATERIALS", "bilin_law", "hinge_law", "imk_law", "model_json", "mp_ties",
+           "pattern_loads"]
 
 IMK_MATERIALS: tuple[str, ...] = ("IMKBilin", "IMKPeakOriented")
 """OpenSees' modified Ibarra–Medina–Krawinkler materials read as
@@ -69,6 +70,49 @@ def imk_law(info: dict[str, Any], who: str) -> HingeLaw:
             kw[key] = math.inf
     law = IMKPeakOriented(**kw) if peak else IMKBilinear(**kw)
     return law
+
+def bilin_law(info: dict[str, Any], who: str) -> HingeLaw:
+    """An OpenSees ``Bilin`` material (the older modified-IMK implementation, which OpenSees
+    itself says to replace by ``IMKBilin``) as the bilinear IMK law, from the printout (6
+    significant digits): ``Ke0``; each side's ``My``, the hardening ratio ``As = K_p/K_e``
+    (so ``M_c/M_y = 1 + As K_e θ_p / M_y``), ``Thetap``, ``Thetapc``, ``Thetau`` and the
+    residual ratio ``K``. Without cyclic deterioration (every ``Lamda`` 0) it moves as
+    ``IMKBilin`` to rounding (checked along cyclic paths: 2e-16 of ``M_y``); with it, its
+    deterioration rules differ from ``IMKBilin``'s (by 9 % of ``M_y`` on a cyclic path), so it
+    is refused, as is its ``nFactor`` (an elastic stiffness split with the member)."""
+    from pounding.hysteresis.imk import IMKBilinear
+
+    def get(key: str) -> float:
+        if key not in info:
+            raise ValueError(f"{who}: the printout has no {key}; pounding reads Bilin by the "
+                             "names OpenSees 3.7 prints")
+        return float(info[key])
+
+    lam = {k: get(k) for k in ("LamdaS", "LamdaK", "LamdaA", "LamdaD")}
+    if any(lam.values()):
+        given = ", ".join(f"{k} = {v:g}" for k, v in lam.items() if v)
+        raise ValueError(f"{who}: cyclic deterioration ({given}) is not read: OpenSees "
+                         "replaced Bilin by IMKBilin, whose rules pounding follows and whose "
+                         "deterioration differs from Bilin's; build the hinge as IMKBilin, or "
+                         "give its law with materials={tag: law}")
+    if get("nFactor") != 0.0:
+        raise ValueError(f"{who}: nFactor = {get('nFactor'):g} (the member's stiffness "
+                         "amplified, Ibarra & Krawinkler 2005) is not read; give nFactor = 0 "
+                         "and the spring's own stiffness")
+    k0 = get("Ke0")
+    kw: dict[str, float] = {"k0": k0}
+    for side, suffix, sign in (("pos", "", 1.0), ("neg", "_neg", -1.0)):
+        my = sign * get(f"My_{side}")
+        theta_p = get(f"Thetap_{side}")
+        kw["m_y" + suffix] = my
+        kw["theta_p" + suffix] = theta_p
+        kw["theta_pc" + suffix] = get(f"Thetapc_{side}")
+        theta_u = get(f"Thetau_{side}")
+        kw["theta_u" + suffix] = math.inf if theta_u >= 1e9 else theta_u
+        kw["kappa" + suffix] = get("KPos" if side == "pos" else "KNeg")
+        kw["mc_my" + suffix] = 1.0 + get("AsPos" if side == "pos" else "AsNeg") * k0 * theta_p / my
+    return IMKBilinear(**kw)
+
 
 UNIFORM_LOAD_CLASS = 3
 """OpenSees class tag of ``Beam2dUniformLoad`` (``-beamUniform``), whose data are (w_y, w_x)."""
@@ -137,9 +181,9 @@ def hinge_law(ops: Any, tag: int, info: dict[str, Any] | None,
         raise ValueError(f"material {tag}: not in the model's printed materials")
     kind = str(info.get("type", "?"))
     who = f"material {tag} ({kind})"
-    if kind in IMK_MATERIALS:
+    if kind in IMK_MATERIALS or kind == "Bilin":
         try:
-            return imk_law(info, who)
+            return imk_law(info, who) if kind != "Bilin" else bilin_law(info, who)
         except ValueError as exc:
             text = str(exc)
             raise ValueError(text if text.startswith(who) else f"{who}: {text}") from None
