@@ -124,14 +124,19 @@ def test_out_in_a_read_only_folder_is_one_line_as_for_pounding_run(tmp_path, cap
 
 
 # ------------------------------------------------------------------ no scheduler
-def test_no_scheduler_at_the_address_fails_fast_and_writes_nothing(tmp_path, capsys):
+def test_no_scheduler_at_the_address_fails_fast_and_writes_nothing(tmp_path, capsys,
+                                                                    monkeypatch):
+    from pounding.studies.sweep import cluster
+
+    assert cluster.SCHEDULER_TIMEOUT == 10.0  # (the wait a user meets; 1 s here)
+    monkeypatch.setattr("pounding.studies.sweep.cluster.SCHEDULER_TIMEOUT", 1.0)
     address = f"tcp://127.0.0.1:{_free_port()}"
     start = time.perf_counter()
     code, err = sweep_cli(capsys, str(_write(tmp_path, '[grid]\n"contact.gap" = [0.01]\n')),
                           "--scheduler", address)
-    assert time.perf_counter() - start < 20
+    assert time.perf_counter() - start < 11
     assert code == 2 and err == [
-        f"error: scheduler: no Dask scheduler answers at {address} (waited 10 s); check the "
+        f"error: scheduler: no Dask scheduler answers at {address} (waited 1 s); check the "
         "address, start one (`dask scheduler`), or leave out --scheduler for a local cluster"]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["sweep.toml"]
 
