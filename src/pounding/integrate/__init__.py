@@ -77,7 +77,6 @@ from pounding.integrate.periods import (
     check_building_periods,
     check_contact_periods,
     check_link_periods,
-    stiff_frame_mode,
     stiff_frame_rate,
 )
 from pounding.integrate.propagator import FreeStep, free_step
@@ -492,7 +491,7 @@ def _failure_text(model: PoundingModel, km: KernelModel,
     else:
         why = (f"solver: the adaptive step fell below 1e-14 of the {step:g} s output step at "
                f"t = {t:.4f} s{where} (rtol = {rtol:g})")
-    stiff = stiff_frame_mode(model) if ws_i[I_FAILED] == FAIL_BUDGET and not closed else ""
+    stiff = stiff_frame_rate(model)[1] if ws_i[I_FAILED] == FAIL_BUDGET and not closed else ""
     if stiff:
         return why + ": a yielding frame's damping over-damps a stiff mode" + stiff
     return (why + ": the model moves millions of times faster than a building does there; "

@@ -196,11 +196,6 @@ RK_STABILITY: float = 3.3
 the fastest decay rate |λ| of the motion: a run needs at least ``duration |λ| / 3.3``."""
 
 
-def stiff_frame_mode(model: PoundingModel) -> str:
-    """:func:`stiff_frame_rate`'s text (``""`` where no frame has such a mode)."""
-    return stiff_frame_rate(model)[1]
-
-
 def stiff_frame_rate(model: PoundingModel) -> tuple[float, str]:
     """Where a yielding frame's adaptive steps are held short by a mode its damping
     over-damps: its decay rate |λ| [1/s] and ``" (B1 'portal': a mode of period 0.45 ms

@@ -104,17 +104,17 @@ class Condensation:
 
         n = dofs.n
         self.name = name
-        self.floor = np.asarray(dofs.floor_dof if kept is None else kept, dtype=np.int64)
-        self.other = np.setdiff1d(np.arange(n), self.floor)
+        self.kept = np.asarray(dofs.floor_dof if kept is None else kept, dtype=np.int64)
+        self.other = np.setdiff1d(np.arange(n), self.kept)
         self.node = np.asarray(dofs.hinge_node, dtype=np.int64)
         self.end = np.asarray(dofs.hinge, dtype=np.int64)
-        if np.isin(self.end, self.floor).any():
+        if np.isin(self.end, self.kept).any():
             raise ValueError(f"{name}: a member end's own rotation (a hinge's) cannot carry "
                              "mass")
         local = np.full(n, -1, dtype=np.int64)
         local[self.other] = np.arange(self.other.size)
         kept_at = np.full(n, -1, dtype=np.int64)
-        kept_at[self.floor] = np.arange(self.floor.size)
+        kept_at[self.kept] = np.arange(self.kept.size)
         no = self.other.size
         # the pattern of K_ss over every massless DOF: the base's entries and the springs'
         # (a spring whose joint rotation is kept, ``kept_node``, reaches K_ss at its end only)
@@ -136,7 +136,7 @@ class Condensation:
         self._indptr = pattern.indptr.astype(np.int32)
         cols = np.repeat(np.arange(no), np.diff(pattern.indptr))
         rows = pattern.indices.astype(np.int64)
-        self._rows, self._cols = rows, cols
+        self._rows = rows  # (each stored value's row in K_ss)
         position = np.full((no, no), -1, dtype=np.int64)
         position[rows, cols] = np.arange(rows.size)
         self._base_data = base_ss[rows, cols]
@@ -151,9 +151,9 @@ class Condensation:
                               position[hb, ha]]),
               np.concatenate([np.arange(nh), hon, hon, hon]))),
             shape=(rows.size, nh))
-        self._coupled = np.any(base[np.ix_(self.other, self.floor)] != 0.0, axis=1)
-        self._Kmm = base[np.ix_(self.floor, self.floor)]
-        self._Kmo = base[np.ix_(self.floor, self.other)]
+        self._coupled = np.any(base[np.ix_(self.other, self.kept)] != 0.0, axis=1)
+        self._Kmm = base[np.ix_(self.kept, self.kept)]
+        self._Kmo = base[np.ix_(self.kept, self.other)]
         self._parts: dict[bytes, CondensedPart] = {}
         self._B = hinge_incidence(dofs)
         self._anchor: _Anchor | None = None
@@ -182,6 +182,14 @@ class Condensation:
         self._parts[key] = part
         return part
 
+    def _alive(self, data: Vector) -> NDArray[np.bool_]:
+        """Which massless DOFs have stiffness, ``K_ss``'s values being ``data``: a DOF with
+        none at all (a joint whose every connection is a hinge of zero tangent) stays where
+        it is."""
+        alive = self._coupled.copy()
+        alive[self._rows[data != 0.0]] = True
+        return alive
+
     def _make_anchor(self, tangents: Vector, part: CondensedPart) -> _Anchor:
         """The anchor of the updates: this set's condensation with ``Z`` and ``F``."""
         Bs = np.asarray(self._B[part.live].toarray())
@@ -202,10 +210,8 @@ class Condensation:
         if self._kept_node.size or c.size > UPDATE_LIMIT * k.size:
             return None
         base = a.part
-        data = self._base_data + self._scatter @ k
-        alive = self._coupled.copy()
-        alive[self._rows[data != 0.0]] = True
-        if not np.array_equal(self.other[alive], base.live):
+        if not np.array_equal(self.other[self._alive(self._base_data + self._scatter @ k)],
+                              base.live):
             return None  # (a joint lost, or regained, all its stiffness)
         G = a.F[np.ix_(c, c)] + np.diag(1.0 / (k[c] - a.tangents[c]))
         scale = 1.0 / np.sqrt(np.maximum(np.abs(np.diag(G)), 1e-300))
@@ -247,19 +253,16 @@ class Condensation:
             np.add.at(Kmm, (self._kept_node_m, self._kept_node_m), kk)
             np.add.at(Kmo, (self._kept_node_m, self._kept_node_s), -kk)
         no = self.other.size
-        # a massless DOF with no stiffness at all (a joint whose every connection is a hinge
-        # of zero tangent) stays where it is
-        alive = self._coupled.copy()
-        alive[self._rows[data != 0.0]] = True
+        alive = self._alive(data)
         live_local = np.flatnonzero(alive)
         live, dead = self.other[alive], self.other[~alive]
-        nf = self.floor.size
+        nf = self.kept.size
         Kss = scipy.sparse.csc_matrix((data, self._indices, self._indptr), shape=(no, no))
         if live_local.size != no:
             Kss = Kss[live_local][:, live_local].tocsc()
         Kms = Kmo[:, live_local]
         P = np.zeros((self.other.size + nf, nf))
-        P[self.floor, np.arange(nf)] = 1.0
+        P[self.kept, np.arange(nf)] = 1.0
         Kc = Kmm.copy()
         solve: Callable[[Vector], Vector] = _nothing_to_solve
         if live.size:

@@ -156,13 +156,13 @@ class FrameMotion:
         self.base = state.base
         self.axial = state.axial  #: the columns' gravity axial forces [N] (tension +)
         self.G = gravity_load_vector(frame, dofs)
-        self.floor = np.asarray(dofs.floor_dof if kept is None else kept, dtype=np.int64)
+        self.kept = np.asarray(dofs.floor_dof if kept is None else kept, dtype=np.int64)
         self.U = state.U.copy()
         self.U0 = self.U.copy()  #: the displacements at the start [m, rad]
-        self.u_gravity = self.U[self.floor].copy()
+        self.u_gravity = self.U[self.kept].copy()
         #: the floors' displacements (from the gravity state) where the hinges were last
         #: committed: each hinge's rotation is anchored there (:meth:`condensed`)
-        self.u_commit = np.zeros(self.floor.size)
+        self.u_commit = np.zeros(self.kept.size)
         self.work = np.zeros(len(self.laws))  #: ∫ M dθ of every hinge since the start [J]
         self.recoverable0 = np.array([law.recoverable(h) for law, h in
                                       zip(self.laws, self.hinges)])
@@ -173,7 +173,7 @@ class FrameMotion:
         #: the frame must be brought to the equilibrium of its next configuration
         #: (:meth:`redistribute`)
         self.jumped = False
-        self._condensation = Condensation(self.base, dofs, frame.name, self.floor)
+        self._condensation = Condensation(self.base, dofs, frame.name, self.kept)
         self._incidence = hinge_incidence(dofs)  # (B q: the nodal loads of moments q)
         # the committed rotations and moments; a hinge on a two-way branch (contract 7 of
         # the hinge laws) is committed here only, its law's state left behind at the last
@@ -198,7 +198,7 @@ class FrameMotion:
     @property
     def n_floors(self) -> int:
         """Number of floors (the frame's DOFs with mass)."""
-        return int(self.floor.size)
+        return int(self.kept.size)
 
     @property
     def n_hinges(self) -> int:
@@ -282,7 +282,7 @@ class FrameMotion:
             If the frame's massless DOFs have no unique equilibrium in it (a mechanism that
             does not involve the floors).
         """
-        floor = self.floor
+        kept = self.kept  # (the DOFs with mass: the floors first)
         theta_c = self._theta
         q = self._moment - tangents * theta_c
         lin = self._condensation.part(tangents)
@@ -292,7 +292,7 @@ class FrameMotion:
         p0[lin.dead] = self.U[lin.dead]  # (a joint with no stiffness stays where it is)
         if lin.live.size:
             p0[lin.live] = lin.solve((self.G - Bq)[lin.live])
-        f0 = lin.Kms @ p0[lin.live] + Bq[floor] - self.G[floor]
+        f0 = lin.Kms @ p0[lin.live] + Bq[kept] - self.G[kept]
         node_p0 = np.where(fixed, 0.0, p0[np.maximum(self.node, 0)])
         # from total floor displacements to those from the gravity state
         ug = self.u_gravity
