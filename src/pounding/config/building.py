@@ -11,6 +11,7 @@ from typing import Annotated, Any
 from pydantic import Field, ValidationInfo, model_validator
 
 from pounding.config.base import Section, field_error, fmt, prefixed
+from pounding.config.foundation import FoundationConfig
 from pounding.config.frame import FrameConfig
 from pounding.config.isolation import IsolatorConfig
 from pounding.config.plan import ElementConfig, PlanConfig
@@ -87,6 +88,10 @@ class BuildingConfig(Section):
       (:class:`ElementConfig`), the lateral load-resisting elements. Linear: no storey law,
       no isolator. Under two horizontal components of the ground (``[record] second``).
 
+    ``foundation`` (:class:`pounding.config.foundation.FoundationConfig`) puts a linear
+    SDOF, uniform, storey-by-storey or matrix building on a footing on soil (a flexible
+    base: :func:`pounding.structure.foundation.flexible_base`).
+
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF, 5 %
     Rayleigh at modes 1 and 3 for a building in plan (the PlanBuilding's own: modes 1 and 2
     of a symmetric plan share a period) and 5 % Rayleigh at modes 1 and 2 otherwise. ``storey_law`` (:class:`StoreyLawConfig`) makes the
@@ -116,6 +121,7 @@ class BuildingConfig(Section):
     plan: PlanConfig | None = None
     elements: Annotated[list[ElementConfig], Field(min_length=1)] | None = None
     frame: FrameConfig | None = None
+    foundation: FoundationConfig | None = None
 
     @model_validator(mode="before")
     @classmethod
@@ -158,6 +164,17 @@ class BuildingConfig(Section):
                     where = key if isinstance(value, float) else (key, i)
                     raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
                                              f"positive numbers are subnormal (got {x:g})")
+        if self.foundation is not None:
+            if self.kind in ("plan", "frame"):
+                given = "in plan" if self.kind == "plan" else "given as a frame"
+                raise field_error("foundation", f"not yet for a building {given}: a flexible "
+                                                "base takes SDOF, uniform, storey-by-storey "
+                                                "and matrix buildings")
+            for key in ("storey_law", "isolator"):
+                if getattr(self, key) is not None:
+                    raise field_error("foundation", f"a building on a flexible base stays "
+                                                    f"linear here: give foundation or {key}, "
+                                                    "not both")
         if self.isolator is not None and self.storey_law is not None:
             raise field_error("isolator", "a base-isolated building's superstructure stays "
                                           "linear: give isolator or storey_law, not both")
@@ -427,7 +444,13 @@ class BuildingConfig(Section):
 
     def _build(self, default_name: str) -> ShearBuilding | MatrixBuilding | PlanBuilding:
         try:
-            return self._make(default_name)
+            b = self._make(default_name)
+            if self.foundation is None:
+                return b
+            from pounding.structure.foundation import flexible_base
+
+            assert isinstance(b, (ShearBuilding, MatrixBuilding))
+            return flexible_base(b, *self.foundation.build())
         except ValueError as exc:
             if str(exc).startswith("Rayleigh damping"):  # the ratios given, at these modes
                 raise ValueError(f"damping.rayleigh: {exc}") from None

@@ -10,6 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.result.columns import ENERGY_NAMES, rounded_length
+from pounding.result.foundations import foundation_summary
 from pounding.result.storey_peaks import bearing_peaks, plan_storeys
 from pounding.result.variables import hinge_table
 
@@ -82,6 +83,7 @@ def summarize(r: Response) -> dict[str, Any]:
         **inelastic_summary(r),
         **device_summary(r),
         **hinge_summary(r),
+        **foundation_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
                    "rejected": r.stats.rejected, "events": r.stats.events,
                    "impact_table_overflow": r.stats.impact_overflow,

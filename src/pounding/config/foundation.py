@@ -1,0 +1,77 @@
+"""``foundation = {...}`` of a ``[[building]]``: the building on a flexible base (soil–structure
+interaction, :mod:`pounding.structure.foundation`).
+
+* ``foundation = { radius = 5.0, soil = { vs = 150.0, density = 1800.0, poisson = 0.33 } }``
+  — a rigid circular surface footing of radius 5 m on a half-space;
+* ``length`` and ``width`` [m] (along the row and across it) instead of ``radius``: a
+  rectangular footing;
+* ``mass`` [kg] and ``inertia`` [kg·m²] (about the rocking axis) of the footing: default 0
+  (massless: condensed out of the building's matrices);
+* ``dashpots = false``: the soil's springs only (default: the springs and the radiation and
+  material dashpots);
+* ``soil.shaking`` = ``α S`` (0.1–0.3): take the strain-compatible shear modulus and the
+  soil's own damping of EN 1998-5 Table 4.1 for that level of shaking (default: the
+  small-strain modulus, no material damping).
+
+A building on a flexible base is linear: an SDOF, uniform, storey-by-storey or matrix
+building without ``storey_law`` or ``isolator``.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import Field, model_validator
+
+from pounding.config.base import Section, field_error
+from pounding.config.quantities import MAX_MASS, Length, Unit
+from pounding.structure.foundation import Footing, Soil
+
+__all__ = ["FoundationConfig", "SoilConfig"]
+
+MassOrZero = Annotated[float, Field(ge=0, le=MAX_MASS), Unit("kg")]
+Inertia = Annotated[float, Field(ge=0, le=MAX_MASS * 1e6), Unit("kg·m²")]
+
+
+class SoilConfig(Section):
+    """``soil = { vs, density, poisson, shaking }``
+    (:class:`pounding.structure.foundation.Soil`)."""
+
+    vs: Annotated[float, Field(gt=0, le=10_000.0), Unit("m/s")]
+    density: Annotated[float, Field(gt=0, le=10_000.0), Unit("kg/m³")]
+    poisson: Annotated[float, Field(ge=0, lt=0.5)]
+    shaking: Annotated[float, Field(ge=0.1, le=0.3)] | None = None
+
+
+class FoundationConfig(Section):
+    """``foundation = {...}`` (module docstring)."""
+
+    radius: Length | None = None
+    length: Length | None = None
+    width: Length | None = None
+    mass: MassOrZero = 0.0
+    inertia: Inertia = 0.0
+    dashpots: bool = True
+    soil: SoilConfig
+
+    @model_validator(mode="after")
+    def _shape(self) -> FoundationConfig:
+        if self.radius is not None:
+            for key in ("length", "width"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"give radius (a circle) or length and width (a "
+                                           f"rectangle), not both (got radius = {self.radius:g} "
+                                           "m)")
+        elif self.length is None or self.width is None:
+            missing = "length" if self.length is None else "width"
+            raise field_error(missing, "required: give radius [m] (a circular footing) or "
+                                       "length and width [m] (a rectangle: along the row and "
+                                       "across it)")
+        return self
+
+    def build(self) -> tuple[Footing, Soil]:
+        """The ``(Footing, Soil)`` of :mod:`pounding.structure.foundation`."""
+        s = self.soil
+        return (Footing(radius=self.radius, length=self.length, width=self.width,
+                        mass=self.mass, inertia=self.inertia, dashpots=self.dashpots),
+                Soil(s.vs, s.density, s.poisson, s.shaking))

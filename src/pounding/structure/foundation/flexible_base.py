@@ -1,0 +1,209 @@
+"""A building on a flexible base: its floors, a footing that sways and rocks, and the soil's
+springs and dashpots (soil–structure interaction, the substructure method with a
+lumped-parameter soil).
+
+Degrees of freedom: every floor's displacement ``x_j`` relative to the free-field ground
+(what a neighbour strikes, as on a fixed base), the footing's sway ``u_f`` [m] and its rocking
+``φ`` [rad] (positive: the floors above move along +x, ``z φ`` at elevation ``z``). The
+building's own deformation is what is left once the rigid-body motion of its base is taken
+out,
+
+    u = T y,   T = [I | −1 | −z],   y = [x, u_f, φ],
+
+so its stiffness and damping act on ``u`` while the masses carry the absolute motion
+``x + u_g`` of the floors and ``u_f + u_g`` of the footing (Wolf 1985, *Dynamic
+Soil-Structure Interaction*, §2; Chopra §9.4):
+
+    M_y = diag(M, m_f, I_f),
+    K_y = Tᵀ K T + diag(0, k_x, k_φ),
+    C_y = Tᵀ C T + diag(0, c_x, c_φ),
+    r_y = [1, 1, 0].
+
+The building's damping ``C`` is its fixed-base damping matrix (its damping model on its
+fixed-base modes), acting on its deformation: the soil's damping is the dashpots', not a
+Rayleigh term across the soil springs (the practice for isolated buildings, Ryan & Polanco
+2008, carried over). The floors' own rotary inertia is not included.
+
+A massless footing (``m_f = 0``, ``I_f = 0``; either may be zero alone) is condensed out
+statically: with ``S`` the footing's static response to the floors (``y_f = −K_ff⁻¹ K_fx x``)
+the building keeps its floors only, with ``K̃ = K_xx + K_xf S`` and ``C̃ = [I; S]ᵀ C_y [I; S]``
+— the dashpots acting through the footing's static motion, which is exactly the replacement
+oscillator of Veletsos & Meek (1974) and Wolf (1985) to first order in the damping: for one
+storey of stiffness ``k``, mass ``m`` at height ``h``,
+
+    T̃ = T √(1 + k/k_x + k h²/k_φ),
+    ζ̃ = ζ (T/T̃)³ + ζ_x (T_x/T̃)² + ζ_φ (T_φ/T̃)²,   ζ_i = ω̃ c_i / (2 k_i),
+
+``T_x = 2π √(m/k_x)``, ``T_φ = 2π √(m h²/k_φ)`` (the sums of springs in series).
+
+The dashpots are taken at the flexible-base building's first mode (:mod:`.impedance`). Only
+buildings whose every degree of freedom is a floor's translation along the row take a
+flexible base here (shear buildings, and matrix buildings of that kind), linear.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from pounding.structure.foundation.impedance import (
+    Footing,
+    Impedance,
+    footing_dashpots,
+    footing_stiffness,
+)
+from pounding.structure.foundation.soil import Soil
+from pounding.structure.matrices import MatrixBuilding
+from pounding.structure.modal import eigenmodes
+from pounding.structure.shear_building import ShearBuilding
+
+__all__ = ["FlexibleBaseBuilding", "Foundation", "flexible_base"]
+
+SWAY_LABEL = "Fdn"
+"""The label of a footing's sway DOF (its rocking: ``Fdn_r``)."""
+
+
+@dataclass(frozen=True)
+class Foundation:
+    """What a flexible base adds to a building: its footing, soil and impedance, the
+    fixed-base building's periods, and how the footing's sway and rocking follow from the
+    building's DOFs (``[u_f, φ] = recovery @ y``; rows of the identity where they are DOFs,
+    the static condensation where they are not)."""
+
+    footing: Footing
+    soil: Soil
+    impedance: Impedance
+    fixed_base_periods: NDArray[np.float64]  #: the building's on a rigid base [s]
+    recovery: NDArray[np.float64]  #: (2, n) [m/m, rad/m]: u_f and φ from the DOFs
+    explicit: tuple[bool, bool]  #: whether sway and rocking are DOFs of the building
+
+    def base_reactions(self, displacement: NDArray[np.float64],
+                       velocity: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
+        """The footing's sway [m] and rocking [rad], and the soil's base shear [N] and base
+        moment [N·m] on it, ``V = k_x u_f + c_x u̇_f``, ``M = k_φ φ + c_φ φ̇``, from the
+        building's displacement and velocity histories (nt, n)."""
+        u = displacement @ self.recovery.T
+        v = velocity @ self.recovery.T
+        imp = self.impedance
+        shear = imp.k_x * u[:, 0] + imp.c_x * v[:, 0]
+        moment = imp.k_r * u[:, 1] + imp.c_r * v[:, 1]
+        return u[:, 0], u[:, 1], shear, moment
+
+
+class FlexibleBaseBuilding(MatrixBuilding):
+    """A building on a flexible base (module docstring): a
+    :class:`~pounding.structure.MatrixBuilding` whose matrices include the footing and soil,
+    and its :attr:`foundation`. Made by :func:`flexible_base`."""
+
+    foundation: Foundation
+
+    def __init__(self, foundation: Foundation, **matrices: Any) -> None:
+        super().__init__(**matrices)
+        object.__setattr__(self, "foundation", foundation)
+
+    def __eq__(self, other: Any) -> bool:
+        same = super().__eq__(other)
+        if same is NotImplemented or not same:
+            return same
+        return (isinstance(other, FlexibleBaseBuilding)
+                and self.foundation.footing == other.foundation.footing
+                and self.foundation.soil == other.foundation.soil)
+
+    __hash__ = None
+
+
+def _first_omega(M: NDArray[np.float64], K: NDArray[np.float64]) -> float:
+    return float(eigenmodes(M, K)[0][0])
+
+
+def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
+                  soil: Soil) -> FlexibleBaseBuilding:
+    """``building`` on ``footing`` on ``soil`` (module docstring).
+
+    Parameters
+    ----------
+    building : ShearBuilding or MatrixBuilding
+        The fixed-base building: linear, every DOF a floor's translation along the row
+        (``r`` = 1) at its elevation above the footing's base [m].
+    footing : Footing
+        The footing, its mass and rocking inertia (zero: condensed out).
+    soil : Soil
+        The half-space under it.
+
+    Raises
+    ------
+    ValueError
+        If the building has a storey law, or a DOF that is not a floor's translation.
+
+    Examples
+    --------
+    The issue's example: a one-storey building of 1.0e6 kg, T = 0.5 s, h = 10 m, on a
+    massless disk of radius 5 m on V_s = 150 m/s, ρ = 1800 kg/m³, ν = 0.33:
+
+    >>> b = ShearBuilding.sdof(1.0e6, period=0.5, height=10.0)
+    >>> fb = flexible_base(b, Footing(radius=5.0), Soil(150.0, 1800.0, 0.33))
+    >>> round(float(fb.modes().periods[0]), 4)
+    0.6976
+    """
+    name = building.name
+    if getattr(building, "storey_law", None) is not None:
+        raise ValueError(f"building {name!r}: foundation: a building on a flexible base stays "
+                         "linear here (no storey_law)")
+    if isinstance(building, MatrixBuilding):
+        r = building.influence_vector()
+        if not np.all(r == 1.0) or len(building.floors) != building.n:
+            raise ValueError(f"building {name!r}: foundation: every degree of freedom must be "
+                             "a floor's translation along the row (r = 1) to take a flexible "
+                             "base")
+        labels = list(building.labels)
+    else:
+        labels = [f"F{j + 1}" for j in range(building.n)]
+    M0 = building.mass_matrix()
+    K0 = building.stiffness_matrix()
+    C0 = building.damping_matrix()
+    z = np.asarray(building.floor_levels if isinstance(building, ShearBuilding)
+                   else building.elevations, dtype=float)
+    n = M0.shape[0]
+    fixed_periods = 2.0 * np.pi / eigenmodes(M0, K0)[0]
+    T = np.zeros((n, n + 2))
+    T[:, :n] = np.eye(n)
+    T[:, n] = -1.0
+    T[:, n + 1] = -z
+    k_x, k_r = footing_stiffness(footing, soil)
+    M = np.zeros((n + 2, n + 2))
+    M[:n, :n] = M0
+    M[n, n] = footing.mass
+    M[n + 1, n + 1] = footing.inertia
+    K = T.T @ K0 @ T
+    K[n, n] += k_x
+    K[n + 1, n + 1] += k_r
+    keep = np.r_[np.arange(n), [n] if footing.mass > 0.0 else [], [n + 1] if footing.inertia > 0.0
+                 else []].astype(np.int64)
+    drop = np.setdiff1d(np.arange(n + 2), keep)
+    # the static shape: every DOF of y from the kept ones, y = Φ y_keep
+    Phi = np.zeros((n + 2, keep.size))
+    Phi[keep, np.arange(keep.size)] = 1.0
+    if drop.size:
+        Phi[drop] = -np.linalg.solve(K[np.ix_(drop, drop)], K[np.ix_(drop, keep)])
+    M_k = Phi.T @ M @ Phi
+    K_k = Phi.T @ K @ Phi
+    omega = _first_omega(M_k, K_k)
+    c_x, c_r = footing_dashpots(footing, soil, omega)
+    C = T.T @ C0 @ T
+    C[n, n] += c_x
+    C[n + 1, n + 1] += c_r
+    C_k = Phi.T @ C @ Phi
+    # (exactly symmetric, as the matrix building stores them)
+    M_k, K_k, C_k = (0.5 * (A + A.T) for A in (M_k, K_k, C_k))
+    extra = [lab for lab, d in ((SWAY_LABEL, n), (f"{SWAY_LABEL}_r", n + 1)) if d in keep]
+    foundation = Foundation(footing, soil, Impedance(k_x, k_r, c_x, c_r, omega), fixed_periods,
+                            Phi[[n, n + 1]], (footing.mass > 0.0, footing.inertia > 0.0))
+    return FlexibleBaseBuilding(
+        foundation, M=M_k, K=K_k, C=C_k, labels=labels + extra,
+        elevations=np.r_[z, np.zeros(len(extra))],
+        r=np.r_[np.ones(n), np.ones(1 if footing.mass > 0.0 else 0),
+                np.zeros(1 if footing.inertia > 0.0 else 0)],
+        name=name, floors=list(range(n)))
