@@ -28,6 +28,7 @@ from typing import NamedTuple
 import numpy as np
 
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
+from pounding.ground_motion.spatial import SpatialMotion
 from pounding.integrate.grid import (
     DEFAULT_OUTPUT_STEP,
     HISTORY_MEMORY_FRACTION,
@@ -80,6 +81,7 @@ from pounding.integrate.periods import (
     stiff_frame_rate,
 )
 from pounding.integrate.propagator import FreeStep, free_step
+from pounding.integrate.stations import station_kernel_model
 from pounding.integrate.start import (
     final_peaks,
     initial_peaks,
@@ -310,7 +312,11 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
     notes = _model_notes(model)
-    km = kernel_model(model)
+    # spatially varying ground: each building on its station's ground (one station: the
+    # plain model under that record)
+    stations, station_records = _stations(model, motion)
+    km = kernel_model(model) if stations is None else station_kernel_model(model, stations)
+    n_model = model.n_dof
     if (step, t_end) not in notes.checked:
         check_history_size(model, t_end, step)
         if step not in km.periods_checked:  # (the buildings' and links': once for a sweep)
@@ -324,6 +330,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     ground = ground_on_grid_memo(motion, step, t_end)  # (nt,) or (nt, G)
     nt = ground.shape[0]
     ag = ground.reshape(nt, -1)  # (nt, G), read-only like ground
+    if stations is not None:
+        ag = np.ascontiguousarray(np.column_stack(
+            [ground_on_grid_memo(rec, step, t_end) for rec in station_records]))
     if km.floors.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g]
         raise ValueError(f"motion: {ag.shape[1]} ground components for "  # unchecked)
                          f"{km.floors.r.shape[1]}")
@@ -361,6 +370,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         sstate = np.zeros((ns, 2))
     else:
         x0 = initial_state(model, initial_displacement, initial_velocity)
+        if stations is not None:  # (the grounds start at rest, where they are)
+            x0 = np.concatenate([x0[:n_model], np.zeros(n - n_model), x0[n_model:],
+                                 np.zeros(n - n_model)])
         sstate, z0 = initial_storeys(km, x0[:n], x0[n:])
         x = np.concatenate([x0, z0])
     margin = notes.margin.get(step)
@@ -452,8 +464,13 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                         rejected=int(ws_i[I_NREJECT]), events=int(ws_i[I_NEVENTS]),
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
     n_storey_rows = len(model.yielding_storeys)
+    u_out, v_out, acc_out = out.u, out.v, out.acc
+    if stations is not None:  # (the buildings' DOFs; the grounds' are not reported)
+        u_out, v_out, acc_out = (np.ascontiguousarray(a[:, :n_model])
+                                 for a in (out.u, out.v, out.acc))
+        pk = np.ascontiguousarray(pk[:n_model])
     return Result(model=model, motion=motion, dt=step, ground=ground,
-                  displacement=out.u, velocity=out.v, abs_acceleration=out.acc,
+                  displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
                   penetration=out.pen, contact_force=out.force, energy=out.energy,
                   yielding_shear=out.element_force[:, :n_storey_rows],
                   link_force=out.element_force[:, n_storey_rows:], final_z=x[2 * n:].copy(),
@@ -470,6 +487,22 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   member_end_moment=hinges.member_end_moment if hinges else None,
                   hinge_capped=hinges.capped if hinges else None,
                   frame_restoring_force=hinges.restoring if hinges else None)
+
+
+def _stations(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
+              ) -> tuple[tuple[int, ...] | None, list[GroundMotion]]:
+    """The station of each building and the stations' records under a
+    :class:`~pounding.ground_motion.spatial.SpatialMotion` with more than one distinct record
+    (:mod:`pounding.integrate.stations`); ``(None, [])`` otherwise."""
+    if not isinstance(motion, SpatialMotion):
+        return None, []
+    index, records = motion.stations()
+    if len(index) != len(model.buildings):
+        raise ValueError(f"motion: a spatially varying motion needs one record per building "
+                         f"({len(model.buildings)}; got {len(index)})")
+    if len(records) == 1:
+        return None, []
+    return tuple(index), records
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,

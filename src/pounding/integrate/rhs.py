@@ -348,11 +348,17 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
         power[row, P_CONTACT + c] = f * rate
         if f != 0.0:
             # the force pushes the left point left and the right point right, shared to
-            # the floors with the point's weights (−w F on each)
+            # the floors with the point's weights (−w F on each); a ground station's DOF
+            # (1/m = 0: spatially varying ground, pounding.integrate.stations) is not
+            # pushed, and the work its motion does through the force is input
+            ground_rate = 0.0
             for q0 in range(0, cdof.shape[1], ROW_BLOCK):
                 for q in range(q0, q0 + ROW_BLOCK):
                     j = cdof[c, q]
                     dy[row, n + j] -= cw[c, q] * f * m_inv[j]
+                    if m_inv[j] == 0.0:
+                        ground_rate += cw[c, q] * y[n + j]
+            power[row, P_INPUT] += f * ground_rate
 
 
 @njit(**NRT_FREE)

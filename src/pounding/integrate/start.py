@@ -85,7 +85,7 @@ def write_initial_row(model: PoundingModel, km: KernelModel, x: np.ndarray,
     u, v = x[:n], x[n:2 * n]
     u_out[0] = u
     v_out[0] = v
-    pen_out[0] = model.contact_penetration(u)
+    pen_out[0] = model.contact_penetration(u[:model.n_dof])  # (ground stations: at rest)
     storey_force = np.zeros(n)
     np.add.at(storey_force, el.hi, sstate[:, 1])
     lower = el.lo >= 0
