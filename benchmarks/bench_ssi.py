@@ -334,7 +334,7 @@ def section_reference(case: Case, motion: GroundMotion, duration: float) -> None
     from pounding.integrate.reference import simulate_reference
 
     print(f"\n== reference: pounding against simulate_reference (DOP853, rtol 1e-10), "
-          f"{case.name}, first {duration:g} s ==")
+          f"{case.name}, {duration:.2f} s ==")
     t0 = time.perf_counter()
     ref = pounding_measures(simulate_reference(case.model, motion, dt=POUNDING_DT,
                                                duration=duration))
