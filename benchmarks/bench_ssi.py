@@ -342,14 +342,16 @@ def section_reference(case: Case, motion: GroundMotion, duration: float) -> None
     ours = pounding_measures(_pounding_run(case, motion, duration))
     sway_o, rock_o = ours.footing(case)
     sway_r, rock_r = ref.footing(case)
-    floors = list(range(case.left.dofs + case.right.n))
+    # every DOF against its own largest |u| (floors in m, the rocking in rad)
+    worst = max(history_difference(ref, ours, [q])
+                for q in range(case.left.dofs + case.right.n))
     print(f"  impacts {ours.impacts} (reference {ref.impacts}); peak force {ours.force:.6g} N "
           f"({pct(ours.force, ref.force):+.2e} %); A max|u| "
           f"{pct(ours.floor_peak(case, 'A'), ref.floor_peak(case, 'A')):+.2e} %, B "
           f"{pct(ours.floor_peak(case, 'B'), ref.floor_peak(case, 'B')):+.2e} %, sway "
           f"{pct(sway_o, sway_r):+.2e} %, rocking {pct(rock_o, rock_r):+.2e} %; every DOF's "
-          f"history (floors, sway, rocking) within {history_difference(ref, ours, floors):.1e} % "
-          f"of its largest; the reference took {t_ref:.1f} s")
+          f"history (floors, sway, rocking) within {worst:.1e} % of its largest |u|; the "
+          f"reference took {t_ref:.1f} s")
 
 
 def _time_pounding(case: Case, motion: GroundMotion, dt: float) -> tuple[float, Any]:
