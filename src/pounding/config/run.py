@@ -16,6 +16,7 @@ from pounding.config.device import DeviceConfig
 from pounding.config.isolation import WallConfig
 from pounding.config.quantities import Duration, Step
 from pounding.config.record import RecordConfig
+from pounding.config.spatial import SpatialConfig
 from pounding.config.toml import dump_toml
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.model import ContactSpec, PoundingModel
@@ -69,6 +70,7 @@ class RunConfig(Section):
     solver: SolverConfig = SolverConfig()
     output: OutputConfig = OutputConfig()
     pushover: dict[str, Any] | None = None  #: ``[pushover]``, read by ``pounding pushover`` alone
+    spatial: SpatialConfig | None = None  #: ``[spatial]``: each building on its own ground
 
     _source: Path | None = PrivateAttr(default=None)
     _plausibility: tuple[str, ...] = PrivateAttr(default=())
@@ -90,6 +92,15 @@ class RunConfig(Section):
                                       f"for a model with buildings in plan (plan = {{ … }}); "
                                       f"these buildings are planar, shaken along x by the "
                                       f"record alone (got {key} = {fmt(value)})")
+        if self.spatial is not None:
+            if self.in_plan:
+                raise field_error("spatial", "buildings in plan (two ground components) on "
+                                             "spatially varying ground are not modelled yet")
+            if len(self.spatial.positions) != nb:
+                raise field_error(("spatial", "positions"),
+                                  f"need {nb} value(s), one per building (got "
+                                  f"{len(self.spatial.positions)}: "
+                                  f"{fmt(self.spatial.positions)})")
         if self.contact is None:
             if self.wall:
                 raise field_error("contact", "required with a [[wall]]: a [contact] table "
@@ -189,6 +200,10 @@ class RunConfig(Section):
                     "contact.floor_to_column = false floors meet only at equal levels")
         with prefixed("record", RecordConfig.model_fields):
             motion = self.record.load(components=self.in_plan)
+        if self.spatial is not None:
+            assert isinstance(motion, GroundMotion)
+            with prefixed("spatial", SpatialConfig.model_fields):
+                motion = self.spatial.apply(motion)
         return Built(model, motion, self.solver.kwargs())
 
     # ------------------------------------------------------------------ writing

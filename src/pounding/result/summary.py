@@ -84,6 +84,7 @@ def summarize(r: Response) -> dict[str, Any]:
         **device_summary(r),
         **hinge_summary(r),
         **foundation_summary(r),
+        **spatial_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
                    "rejected": r.stats.rejected, "events": r.stats.events,
                    "impact_table_overflow": r.stats.impact_overflow,
@@ -191,6 +192,21 @@ def building_summary(r: Response) -> list[dict[str, Any]]:
                     "periods_s": [float(t) for t in bl.modes().periods],
                     "storeys": storeys})
     return out
+
+
+def spatial_summary(r: Response) -> dict[str, Any]:
+    """``spatial``: under a spatially varying motion
+    (:class:`~pounding.ground_motion.spatial.SpatialMotion`), how the buildings' motions were
+    made, and each building's record with its delay [s] and its PGA [g]; empty otherwise."""
+    from pounding.ground_motion.spatial import SpatialMotion
+
+    m = r.motion
+    if not isinstance(m, SpatialMotion):
+        return {}
+    return {"spatial": {"how": m.description or "one record per building",
+                        "buildings": [{"building": f"B{b + 1}", "record": rec.name,
+                                       "delay_s": d, "pga_g": rec.pga_g}
+                                      for b, (rec, d) in enumerate(zip(m.records, m.delays))]}}
 
 
 def bearing_summary(r: Response) -> dict[str, Any]:

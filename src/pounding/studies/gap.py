@@ -325,6 +325,38 @@ def _run_alone(building: ShearBuilding, motion: GroundMotion | GroundMotionCompo
                      velocity=np.asarray(run.velocity))
 
 
+def _own_record(motion: GroundMotion | GroundMotionComponents, building: int
+                ) -> GroundMotion | GroundMotionComponents:
+    """The record under ``building``: its own under a spatially varying motion, else the
+    one record."""
+    from pounding.ground_motion.spatial import SpatialMotion
+
+    return motion.records[building] if isinstance(motion, SpatialMotion) else motion
+
+
+def _grounds(motion: object, n_buildings: int, dt: float, nt: int
+             ) -> list[tuple[FloatArray, FloatArray]]:
+    """Each building's ground displacement [m] and velocity [m/s] at the ``nt`` output
+    steps ``dt`` apart: all zero under one record;
+    under a :class:`~pounding.ground_motion.spatial.SpatialMotion` its record integrated
+    exactly (linear between samples, from rest), as the time stepper integrates it (the
+    absolute ground displacement: only differences between grounds enter a gap)."""
+    from pounding.ground_motion.spatial import SpatialMotion
+
+    zero = np.zeros(nt)
+    if not isinstance(motion, SpatialMotion):
+        return [(zero, zero)] * n_buildings
+    from pounding.integrate.grid import ground_on_grid
+
+    out = []
+    for rec in motion.records:
+        a = ground_on_grid(rec, dt, (nt - 1) * dt)[:nt]
+        v = np.concatenate([[0.0], np.cumsum(0.5 * dt * (a[:-1] + a[1:]))])
+        u = np.concatenate([[0.0], np.cumsum(dt * v[:-1] + dt * dt * (2 * a[:-1] + a[1:]) / 6)])
+        out.append((u, v))
+    return out
+
+
 def _alone(building: ShearBuilding) -> PoundingModel:
     return PoundingModel([building], [], ContactSpec("linear-spring", k=1.0),
                          name=building.name or "building")
@@ -449,9 +481,11 @@ def critical_gaps(model: PoundingModel,
     # exact stepping for linear buildings up to EXACT_FREE_MAX_DOF floors (beyond, its
     # propagator alone takes minutes to build, in calls no signal can stop); yielding
     # ones are RK-stepped (not linear)
-    tasks = [(b, motion if _in_plan(b) or isinstance(motion, GroundMotion)
+    # (under a spatially varying motion each building alone under its own record; the
+    # contacts then add the grounds' relative displacement, _ground_on_grid)
+    tasks = [(bl, _own_record(motion, b) if _in_plan(bl) or isinstance(motion, GroundMotion)
               else motion.components[0], dt, motion.duration if duration is None else duration)
-             for motion in ms for b in model.buildings]
+             for motion in ms for b, bl in enumerate(model.buildings)]
     alone = run_tasks(_run_alone, tasks, scheduler=scheduler, n_workers=n_workers,
                       progress=progress)
     nb = len(model.buildings)
@@ -460,18 +494,23 @@ def critical_gaps(model: PoundingModel,
         step = runs[0].dt
         durs[i] = runs[0].end
 
-        def point(p: ContactPoint) -> tuple[FloatArray, FloatArray]:
-            if isinstance(p, WallPoint):  # fixed to the ground
-                return np.zeros(runs[0].n), np.zeros(runs[0].n)
+        grounds = _grounds(ms[i], len(runs), step, runs[0].n)
+
+        def point(p: ContactPoint, other: ContactPoint) -> tuple[FloatArray, ...]:
+            """The point's displacement and velocity relative to its ground, and its
+            ground's (a wall stands on the ground of the building beside it)."""
+            if isinstance(p, WallPoint):
+                zero = np.zeros(runs[0].n)
+                return (zero, zero, *grounds[other.building])
             run = runs[p.building]
-            return p.of(run.displacement), p.of(run.velocity)
+            return (p.of(run.displacement), p.of(run.velocity), *grounds[p.building])
 
         for k, c in enumerate(cs):
             # contact points: a floor, a column point between two floors (interpolated), a
             # façade point of a floor in plan (with the floor's rotation), or a wall
-            ul, vl = point(c.left)
-            ur, vr = point(c.right)
-            d, dd = ul - ur, vl - vr
+            ul, vl, ugl, vgl = point(c.left, c.right)
+            ur, vr, ugr, vgr = point(c.right, c.left)
+            d, dd = ul + ugl - ur - ugr, vl + vgl - vr - vgr
             top, when = hermite_max(d, dd, step)
             low, _ = hermite_max(-d, -dd, step)
             crit[i, k] = max(0.0, float(top))

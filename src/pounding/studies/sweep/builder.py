@@ -3,7 +3,8 @@ what the cases of one sweep have in common.
 
 The cases of a sweep differ in a parameter or two, and each part of a run depends on one
 group of keys of the model file only: the model (buildings, contacts and their laws,
-devices) on ``building``, ``contact``, ``device`` and ``name``; the ground motion on ``record``; the solver
+devices) on ``building``, ``contact``, ``device`` and ``name``; the ground motion on ``record``
+and ``spatial``; the solver
 options on ``solver`` (``output`` and ``description`` change no run). A
 :class:`CaseBuilder` remembers, for each group, what the cases it built made of it, keyed
 by the case's values of that group's parameters: a case whose every group was seen in a
@@ -34,9 +35,11 @@ from pounding.studies.sweep.overrides import _copy, apply_overrides
 __all__ = ["CaseBuilder", "case_builder"]
 
 _GROUPS: dict[str, str] = {"building": "model", "contact": "model", "device": "model",
-                           "name": "model", "record": "record"}
+                           "name": "model", "record": "record", "spatial": "record"}
 """The group of each table of a model file (by the first key of a parameter path); every
-other table (``solver``, ``output``, ``description``) is in the group ``"solver"``."""
+other table (``solver``, ``output``, ``description``) is in the group ``"solver"``. The
+ground motion depends on ``record`` and on ``spatial`` (each building's motion made from
+the record)."""
 
 MAX_PARTS = 256
 """Most parts a :class:`CaseBuilder` remembers per group."""
@@ -121,16 +124,19 @@ class CaseBuilder:
             # a record file may change: its motion is asked of the record each time
             # (RecordConfig.load, remembered by the file's version); a bundled one may not
             self._parts["record"].get(keys["record"], lambda: (
-                cfg.record, built.motion if cfg.record.path is None else None))
+                cfg.record, cfg.spatial, built.motion if cfg.record.path is None else None))
             self._parts["solver"].get(keys["solver"], lambda: dict(built.solver))
             return Built(model, built.motion, built.solver)
-        record_cfg, motion = record
+        record_cfg, spatial_cfg, motion = record
         if motion is None:
             from pounding.structure.plan_row import PlanMatrixBuilding
 
             in_plan = any(isinstance(b, PlanMatrixBuilding) for b in model.buildings)
             with prefixed("record"):
                 motion = record_cfg.load(components=in_plan)
+            if spatial_cfg is not None:
+                with prefixed("spatial"):
+                    motion = spatial_cfg.apply(motion)
         return Built(model, motion, dict(solver))
 
 

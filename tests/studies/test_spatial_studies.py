@@ -1,0 +1,110 @@
+"""Spatially varying ground motion in model files and studies: ``[spatial]`` builds the
+motions it says, a sweep over the apparent velocity is the runs it stands for, and the gap
+study's critical gap (each building alone, plus the grounds' relative displacement) is the
+gap at which the coupled run just stops pounding."""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from pounding.config import parse_config
+from pounding.contact.spec import ContactSpec
+from pounding.ground_motion import el_centro
+from pounding.ground_motion.spatial import SpatialMotion, wave_passage
+from pounding.integrate import simulate
+from pounding.model import PoundingModel
+from pounding.structure import ShearBuilding
+from pounding.studies.gap import critical_gaps
+
+
+def pair() -> dict[str, Any]:
+    return {
+        "name": "wave passage",
+        "record": {"bundled": "el_centro"},
+        "building": [{"mass": 2e5, "period": 0.5, "height": 3.0},
+                     {"mass": 3e5, "period": 1.0, "height": 3.0}],
+        "contact": {"law": "kelvin-voigt", "k": 9.3e8, "e": 0.65, "gap": 0.02},
+        "spatial": {"positions": [0.0, 30.0], "apparent_velocity": 300.0},
+    }
+
+
+def test_spatial_table_builds_the_motions() -> None:
+    _, motion, _ = parse_config(pair(), where="m.toml").build()
+    assert isinstance(motion, SpatialMotion) and motion.delays == pytest.approx((0.0, 0.1))
+    ec = el_centro()
+    assert np.array_equal(motion.records[1].accel[10: 10 + ec.npts], ec.accel)
+    data = pair()
+    data["spatial"] = {"positions": [0.0, 30.0], "coherency": "luco-wong", "beta": 3e-4,
+                       "seed": 5}
+    _, m1, _ = parse_config(data, where="m.toml").build()
+    _, m2, _ = parse_config(data, where="m.toml").build()
+    assert np.array_equal(m1.records[1].accel, m2.records[1].accel)  # seeded
+    assert np.array_equal(m1.records[0].accel, ec.accel)  # the record under building 1
+
+
+@pytest.mark.parametrize("change, expected", [
+    ({"positions": [0.0], "apparent_velocity": 300.0},
+     "spatial.positions: need 2 value(s), one per building"),
+    ({"positions": [0.0, 30.0]}, "spatial.apparent_velocity: required with coherency = "
+                                 "\"none\""),
+    ({"positions": [0.0, 30.0], "apparent_velocity": 0.0}, "spatial.apparent_velocity: must "
+                                                           "not be 0 m/s"),
+    ({"positions": [0.0, 30.0], "apparent_velocity": 300.0, "beta": 1e-4},
+     "spatial.beta: only for coherency = \"luco-wong\""),
+    ({"positions": [0.0, 30.0], "coherency": "abrahamson"}, "spatial.coherency"),
+    ({"positions": [0.0, 30.0], "coherency": "luco-wong", "recorded_at": 2},
+     "spatial.recorded_at: must be a building index in [0, 1] (got 2)"),
+])
+def test_bad_spatial_tables_are_one_line(change: dict[str, Any], expected: str) -> None:
+    data = copy.deepcopy(pair())
+    data["spatial"] = change
+    with pytest.raises(ValueError) as info:
+        parse_config(data, where="m.toml").build()
+    assert expected in str(info.value) and "\n" not in str(info.value)
+
+
+def test_a_sweep_over_the_apparent_velocity_is_its_runs(tmp_path: Path) -> None:
+    """The sweep's cases share parts (the model once, the motion per velocity and scale):
+    each case's result equals the same model file run alone."""
+    import pandas as pd
+
+    from pounding.config.toml import dump_toml
+    from pounding.studies.sweep import run_sweep
+
+    base = tmp_path / "wp.toml"
+    base.write_text(dump_toml(pair()), encoding="utf-8")
+    sweep = tmp_path / "sw.toml"
+    sweep.write_text('name = "sw"\nbase = "wp.toml"\n[grid]\n'
+                     '"spatial.apparent_velocity" = [100.0, 1000.0]\n'
+                     '"record.scale" = [0.5, 1.0]\n', encoding="utf-8")
+    res = run_sweep(sweep, out=tmp_path / "out", scheduler="synchronous")
+    table = pd.read_parquet(res.results)
+    assert res.n_errors == 0 and len(table) == 4
+    for v, s, n in zip(table["spatial.apparent_velocity"], table["record.scale"],
+                       table["n_impacts"]):
+        data = pair()
+        data["spatial"]["apparent_velocity"] = float(v)
+        data["record"]["scale"] = float(s)
+        model, motion, solver = parse_config(data, where="m.toml").build()
+        assert simulate(model, motion, **solver).n_impacts == n
+
+
+def test_the_critical_gap_includes_the_grounds_relative_displacement() -> None:
+    """The gap study's critical gap under wave passage: the coupled run at 1.001 × that gap
+    does not pound, at 0.99 × it does; the critical gap differs from the uniform one."""
+    ec = el_centro().trimmed(12.0)
+    a, b = ShearBuilding.sdof(2e5, period=0.5), ShearBuilding.sdof(3e5, period=1.0)
+    spec = ContactSpec("kelvin-voigt", k=9.3e8, e=0.65)
+    model = PoundingModel([a, b], [0.02], spec)
+    w = wave_passage(ec, [0.0, 30.0], 150.0)  # τ = 0.2 s
+    crit = float(critical_gaps(model, w, dt=0.005).critical[0, 0])
+    uniform = float(critical_gaps(model, ec, dt=0.005).critical[0, 0])
+    assert abs(crit - uniform) > 0.05 * uniform
+    above = simulate(PoundingModel([a, b], [1.001 * crit], spec), w, dt=0.005, duration=12.0)
+    below = simulate(PoundingModel([a, b], [0.99 * crit], spec), w, dt=0.005, duration=12.0)
+    assert above.n_impacts == 0 and below.n_impacts > 0
