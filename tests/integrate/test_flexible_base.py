@@ -139,3 +139,35 @@ def test_soil_dashpot_work_is_the_damping_energy_without_structural_damping() ->
         (f,) = res.summary()["foundations"]
         damping = res.energy[-1, ENERGY_NAMES.index("damping")]
         assert f["soil_dashpot_work_J"] == pytest.approx(damping, rel=2e-4)
+
+
+def test_the_footing_rows_outside_the_band_give_the_full_band_answer(monkeypatch) -> None:
+    """A 6-storey building on a footing with mass and inertia: the kernel keeps a narrow band
+    and the footing's couplings apart (kernel_model.banding); a pounding run equals the same
+    run with K and C stored as one full band, to 1e-12 of the peaks."""
+    import importlib
+
+    from pounding.ground_motion import el_centro
+
+    km_module = importlib.import_module("pounding.integrate.kernel_model")
+    b = ShearBuilding(masses=[3e5] * 6, stiffnesses=[4e8, 3.6e8, 3.2e8, 2.8e8, 2.4e8, 2.0e8],
+                      heights=[3.5] * 6)
+    footing = Footing(length=12.0, width=12.0, mass=1e6, inertia=1.2e7)
+    a = flexible_base(b, footing, SOIL)
+    bw, far = km_module.banding(a.stiffness_matrix(), a.damping_matrix())
+    assert bw == 1 and len(far) > 0
+    runs = []
+    for cost in (km_module.FAR_COST, 1e12):
+        monkeypatch.setattr(km_module, "FAR_COST", cost)
+        # (new buildings each time: the kernel's arrays are remembered per building)
+        model = PoundingModel([flexible_base(b, footing, SOIL),
+                               ShearBuilding.sdof(4e5, period=0.4, height=7.0)], [0.01], SPEC)
+        runs.append(simulate(model, el_centro(), duration=12.0, dt=0.005))
+    assert km_module.kernel_model(model).floors.far.shape[0] == 0  # (the full band)
+    fast, full = runs
+    assert fast.n_impacts == full.n_impacts > 0
+    for x, y in ((fast.displacement, full.displacement),
+                 (fast.abs_acceleration, full.abs_acceleration),
+                 (fast.contact_force, full.contact_force), (fast.energy, full.energy)):
+        assert np.max(np.abs(x - y)) <= 1e-12 * np.max(np.abs(y))
+    assert fast.energy_balance_error < 1e-8

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.integrate.kernel_model import HingeRows, KernelModel, band_storage
+from pounding.integrate.kernel_model import HingeRows, KernelModel, band_storage, far_entries
 from pounding.integrate.layout import (
     EVENT_TOL,
     HS_A0,
@@ -157,7 +157,8 @@ class FrameRun:
         self.k_band = k_band
         self.f_rows = np.zeros((f_dof.size, 3))
         self.f_rows[:, 0] = f_dof
-        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band, f_rows=self.f_rows)
+        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band, f_rows=self.f_rows,
+                                  far=far_entries(km.K, km.C, bw))
         self.hinges = HingeRows(self.h_dof, self.h_w, self.h_state)
         self.arrays = km.arrays._replace(floors=self.floors, hinges=self.hinges)
         self.masses = fl.m_diag

@@ -36,6 +36,41 @@ def half_bandwidth(*mats: np.ndarray) -> int:
     return bw
 
 
+FAR_COST = 2.0
+"""How many band entries one entry outside the band costs in the kernel's products (it is
+read and added by index, not in a vectorised row) — what :func:`banding` weighs."""
+
+
+def banding(K: np.ndarray, C: np.ndarray) -> tuple[int, np.ndarray]:
+    """The half-bandwidth the kernel stores ``K`` and ``C`` with, and their entries outside
+    it (``far``, :attr:`Floors.far`): the bandwidth that makes ``N (2 bw + 1) + FAR_COST ·
+    (entries outside)`` least — the whole band for a banded building, a narrow band and a
+    few rows and columns apart for a building on a flexible base (its footing's sway and
+    rocking coupled to every floor), whose products would otherwise sweep a band of zeros.
+    A model with any coupling keeps a band of at least 1 (``bw == 0`` means uncoupled
+    DOFs to the kernel)."""
+    n = K.shape[0]
+    full = half_bandwidth(K, C)
+    i, j = np.nonzero((K != 0.0) | (C != 0.0))
+    dist = np.abs(i - j)
+    best, best_cost = full, float(n * (2 * full + 1))
+    for bw in range(1 if full else 0, full):
+        cost = n * (2 * bw + 1) + FAR_COST * int(np.count_nonzero(dist > bw))
+        if cost < best_cost:
+            best, best_cost = bw, cost
+    return best, far_entries(K, C, best)
+
+
+def far_entries(K: np.ndarray, C: np.ndarray, bw: int) -> np.ndarray:
+    """The entries of ``K`` and ``C`` outside half-bandwidth ``bw``: rows ``[i, j, K_ij,
+    C_ij]`` (:attr:`Floors.far`), row by row."""
+    i, j = np.nonzero((K != 0.0) | (C != 0.0))
+    out = np.abs(i - j) > bw
+    i, j = i[out], j[out]
+    far = np.column_stack([i, j, K[i, j], C[i, j]]).astype(float)
+    return np.ascontiguousarray(far.reshape(-1, 4))
+
+
 def band_storage(a: np.ndarray, bw: int) -> np.ndarray:
     """``(2 bw + 1, N)`` band storage of a square matrix: ``out[d, i] = a[i, i + d − bw]``
     (zero outside the matrix), the layout the kernel's O(N·bw) products read."""
@@ -77,6 +112,10 @@ class Floors(NamedTuple):
     #: an RK step takes this one (two more arrays cost the SDOF pair's contact steps
     #: 3–4 %); empty without yielding frames
     f_rows: np.ndarray
+    #: the entries of K and C outside the band, rows ``[i, j, K_ij, C_ij]`` (m, 4) —
+    #: a flexible base's footing, coupled to every floor (:func:`banding`); empty for a
+    #: banded model, whose arithmetic is then unchanged
+    far: np.ndarray
 
 
 class ContactRows(NamedTuple):
@@ -259,11 +298,11 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     m_diag = np.diag(M).copy()
     if np.any(M != np.diag(m_diag)):
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
-    bw = half_bandwidth(K, C)
+    bw, far = banding(K, np.asarray(C))
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
     floors = Floors(bw, band_storage(K, bw), band_storage(C, bw), m_diag, 1.0 / m_diag,
                     np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
-                    NO_FRAME_ROWS)
+                    NO_FRAME_ROWS, far)
     elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi)
     no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
                               np.zeros((0, ROW_BLOCK)), np.zeros(0),

@@ -159,10 +159,12 @@ def drift_of(lo, hi, y, n):
 
 
 @njit(**NRT_FREE)
-def band_mv(kb, cb, y, n, bw, lin):
+def band_mv(kb, cb, far, y, n, bw, lin):
     """``lin[0] = K y[:n]``, ``lin[1] = C y[n:2n]`` with K and C in band storage
-    (``kb[d, i] = K[i, i + d − bw]``): O(N·bw), each row summed in column order, and the
-    loop over rows vectorises without reassociation."""
+    (``kb[d, i] = K[i, i + d − bw]``) plus their few entries outside the band (``far``:
+    rows ``[i, j, K_ij, C_ij]``, :attr:`pounding.integrate.kernel_model.Floors.far`):
+    O(N·bw + far), each row of the band summed in column order, and the loop over rows
+    vectorises without reassociation."""
     for i in range(n):
         lin[0, i] = 0.0
         lin[1, i] = 0.0
@@ -173,6 +175,11 @@ def band_mv(kb, cb, y, n, bw, lin):
         for i in range(lo, hi):
             lin[0, i] += kb[d, i] * y[i + off]
             lin[1, i] += cb[d, i] * y[n + i + off]
+    for q in range(far.shape[0]):
+        i = int(far[q, 0])
+        j = int(far[q, 1])
+        lin[0, i] += far[q, 2] * y[j]
+        lin[1, i] += far[q, 3] * y[n + j]
 
 
 @njit(**NRT_FREE)
@@ -264,7 +271,7 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
             p_in -= v * mr[i, 0] * ag
             p_d += v * cv
     else:
-        band_mv(k_band, c_band, y, n, bw, lin)
+        band_mv(k_band, c_band, fl.far, y, n, bw, lin)
         for i in range(n):
             dy[row, i] = y[n + i]
             dy[row, n + i] = -(lin[0, i] + lin[1, i]) * m_inv[i] - r[i, 0] * ag
@@ -387,7 +394,7 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     for i in range(n):
         work[i] = x[n + i]
         work[n + i] = dx[n + i]
-    band_mv(fl.k_band, fl.c_band, work, n, fl.bw, lin)
+    band_mv(fl.k_band, fl.c_band, fl.far, work, n, fl.bw, lin)
     for i in range(n):
         out[i] = lin[0, i] + lin[1, i]
     for s in range(s_lo.shape[0]):
