@@ -108,27 +108,27 @@ def test_pounding_on_different_grounds_against_an_absolute_reference() -> None:
     """A sine reaching the right building 0.1 s later: the relative displacements, the
     impacts and the contact forces of pounding's run against the reference's."""
     dt = 0.005
-    t = np.arange(0, 6.0 + dt / 2, dt)
+    t = np.arange(0, 4.0 + dt / 2, dt)
     sine = GroundMotion(dt, 3.0 * np.sin(2 * np.pi * 1.5 * t) * np.exp(-0.2 * t), "sine")
     w = wave_passage(sine, [0.0, 40.0], apparent_velocity=400.0)  # τ = 0.1 s
     k_c = 5e8
     spec = ContactSpec("linear-spring", k=k_c)
     model = PoundingModel([A, B], [0.01], spec)
-    res = simulate(model, w, dt=dt, duration=6.0, rtol=1e-10)
+    res = simulate(model, w, dt=dt, duration=4.0, rtol=1e-10)
     assert res.n_impacts > 2
     m = (2e5, 3e5)
     k = (A.stiffness_matrix()[0, 0], B.stiffness_matrix()[0, 0])
     c = (A.damping_matrix()[0, 0], B.damping_matrix()[0, 0])
-    yy = _absolute_reference(m, k, c, k_c, 0.01, list(w.records), 6.0, res.time)
+    yy = _absolute_reference(m, k, c, k_c, 0.01, list(w.records), 4.0, res.time)
     # relative to each building's own ground, at pounding's output steps
     rel = [yy[0] - yy[4], yy[1] - yy[5]]
     peak = np.max(np.abs(rel))
     for i in range(2):
-        assert np.max(np.abs(res.displacement[:, i] - rel[i])) < 2e-6 * peak, i
+        assert np.max(np.abs(res.displacement[:, i] - rel[i])) < 1e-6 * peak, i
     # the penetration seen by the contact includes the grounds' relative displacement
     delta = yy[0] - yy[1] - 0.01
     f_ref = k_c * np.maximum(delta, 0.0)
-    assert np.max(np.abs(res.contact_force[:, 0] - f_ref)) < 1e-4 * f_ref.max()
+    assert np.max(np.abs(res.contact_force[:, 0] - f_ref)) < 1e-5 * f_ref.max()
 
 
 def test_the_energy_balance_closes_with_the_grounds_work() -> None:
