@@ -108,3 +108,30 @@ def test_the_critical_gap_includes_the_grounds_relative_displacement() -> None:
     above = simulate(PoundingModel([a, b], [1.001 * crit], spec), w, dt=0.005, duration=12.0)
     below = simulate(PoundingModel([a, b], [0.99 * crit], spec), w, dt=0.005, duration=12.0)
     assert above.n_impacts == 0 and below.n_impacts > 0
+
+
+def test_each_building_its_own_record_scaled_with_the_first() -> None:
+    """``records``: building 2 on its own record, multiplied by the factor that [record]'s
+    pga_g gives building 1's."""
+    data = pair()
+    data["record"] = {"bundled": "el_centro", "pga_g": 0.5}
+    data["spatial"] = {"records": [{"bundled": "el_centro", "duration": 20.0}]}
+    _, motion, _ = parse_config(data, where="m.toml").build()
+    ec = el_centro()
+    factor = 0.5 / ec.pga_g
+    assert motion.records[0].pga_g == pytest.approx(0.5, rel=1e-12)
+    n = int(round(20.0 / ec.dt)) + 1
+    assert np.allclose(motion.records[1].accel[:n], factor * ec.accel[:n], rtol=1e-14)
+    assert not np.any(motion.records[1].accel[n:])  # (continued with zeros)
+    for change, expected in (
+            ({"records": [{"bundled": "el_centro"}, {"bundled": "el_centro"}]},
+             "spatial.records: need 1 record(s), one for each building after the first"),
+            ({"records": [{"bundled": "el_centro", "scale": 2.0}]},
+             "spatial.records[0].scale: not here"),
+            ({"records": [{"bundled": "el_centro"}], "positions": [0.0, 1.0]},
+             "spatial.positions: not with records")):
+        bad = pair()
+        bad["spatial"] = change
+        with pytest.raises(ValueError) as info:
+            parse_config(bad, where="m.toml").build()
+        assert expected in str(info.value), str(info.value)

@@ -186,6 +186,20 @@ class RecordConfig(Section):
                                                f"{UNIT_NAMES.removeprefix('g, ')})")
         return self
 
+    def factor_of(self, motion: GroundMotion) -> float:
+        """The factor ``scale`` / ``pga_g`` / ``sa_g`` / ``saavg_g`` multiplied the record by
+        to make ``motion`` (its :meth:`load`): 1 without them."""
+        if all(getattr(self, k) is None for k in ("scale", "pga_g", "sa_g", "saavg_g")):
+            return 1.0
+        raw = self.model_copy(update={"scale": None, "pga_g": None, "sa_g": None,
+                                      "sa_period": None, "sa_damping": None,
+                                      "saavg_g": None, "saavg_periods": None,
+                                      "saavg_n": None})
+        raw._path, raw._second_path = self._path, self._second_path
+        a = raw.load().accel
+        k = int(abs(a).argmax())
+        return float(motion.accel[k] / a[k])
+
     @property
     def two_components(self) -> bool:
         """True if a second horizontal component is given."""

@@ -96,7 +96,12 @@ class RunConfig(Section):
             if self.in_plan:
                 raise field_error("spatial", "buildings in plan (two ground components) on "
                                              "spatially varying ground are not modelled yet")
-            if len(self.spatial.positions) != nb:
+            given = self.spatial.n_buildings()
+            if self.spatial.records is not None and given != nb:
+                raise field_error(("spatial", "records"),
+                                  f"need {nb - 1} record(s), one for each building after the "
+                                  f"first (building 1 stands on [record]) (got {given - 1})")
+            if self.spatial.positions is not None and given != nb:
                 raise field_error(("spatial", "positions"),
                                   f"need {nb} value(s), one per building (got "
                                   f"{len(self.spatial.positions)}: "
@@ -203,7 +208,7 @@ class RunConfig(Section):
         if self.spatial is not None:
             assert isinstance(motion, GroundMotion)
             with prefixed("spatial", SpatialConfig.model_fields):
-                motion = self.spatial.apply(motion)
+                motion = self.spatial.apply(motion, self.record.factor_of(motion))
         return Built(model, motion, self.solver.kwargs())
 
     # ------------------------------------------------------------------ writing

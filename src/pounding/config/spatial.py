@@ -1,8 +1,13 @@
 """``[spatial]``: each building of the row on its own ground (spatially varying ground
 motion, :mod:`pounding.ground_motion.spatial` and :mod:`pounding.ground_motion.coherency`).
 
+* ``records`` — the records under buildings 2, 3, … (building 1 stands on ``[record]``),
+  each a table like ``[record]``'s source keys (``bundled`` or ``file``, with ``dt``,
+  ``units``, ``column``, ``time_column``, ``channel``, ``duration``), every one multiplied by
+  the factor that ``[record]``'s ``scale`` / ``pga_g`` / ``sa_g`` / ``saavg_g`` gives building
+  1's record (an IDA scales the row's motions together); same step as ``[record]``. Or:
 * ``positions`` [m] — each building's place along the row (where its ground's motion is
-  taken), one a building, *required*;
+  taken), one a building;
 * ``apparent_velocity`` [m/s] — the record reaches each building after
   ``(x_b − x_first)/V`` (wave passage; positive: waves travelling toward +x);
 * ``coherency`` — ``"none"`` (default: the same record, delayed), ``"harichandran-vanmarcke"``
@@ -11,8 +16,8 @@ motion, :mod:`pounding.ground_motion.spatial` and :mod:`pounding.ground_motion.c
   wave passage of ``apparent_velocity`` if given; ``seed`` (default 0) makes them
   reproducible, ``beta`` [s/m] is Luco & Wong's ``α/V_s`` (default 2.5e-4).
 
-The ``[record]`` is the recorded motion (scaled as it says); every building's motion follows
-from it.
+Without ``records`` the ``[record]`` is the recorded motion (scaled as it says) and every
+building's motion follows from it.
 """
 
 from __future__ import annotations
@@ -21,8 +26,9 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from pounding.config.base import Section, field_error
+from pounding.config.base import Section, field_error, prefixed
 from pounding.config.quantities import MAX_PLAN, Unit
+from pounding.config.record import RecordConfig
 from pounding.ground_motion import GroundMotion
 from pounding.ground_motion.spatial import SpatialMotion
 
@@ -35,7 +41,8 @@ Velocity = Annotated[float, Field(ge=-1e5, le=1e5), Unit("m/s")]
 class SpatialConfig(Section):
     """``[spatial]`` (module docstring)."""
 
-    positions: Annotated[list[Position], Field(min_length=1)]
+    positions: Annotated[list[Position], Field(min_length=1)] | None = None
+    records: Annotated[list[RecordConfig], Field(min_length=1)] | None = None
     apparent_velocity: Velocity | None = None
     coherency: Literal["none", "harichandran-vanmarcke", "luco-wong"] = "none"
     recorded_at: Annotated[int, Field(ge=0)] = 0
@@ -44,6 +51,26 @@ class SpatialConfig(Section):
 
     @model_validator(mode="after")
     def _consistent(self) -> SpatialConfig:
+        if self.records is not None:
+            for key in ("positions", "apparent_velocity", "beta"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, "not with records (each building's own record is "
+                                           "given; positions and waves make them from one)")
+            if self.coherency != "none":
+                raise field_error("coherency", "not with records (each building's own record "
+                                               "is given)")
+            for i, r in enumerate(self.records):
+                for key in ("scale", "pga_g", "sa_g", "saavg_g", "second", "second_file",
+                            "incidence"):
+                    if getattr(r, key) is not None:
+                        raise field_error(("records", i, key),
+                                          "not here: every building's record is scaled by "
+                                          "[record]'s factor (give it there)")
+            return self
+        if self.positions is None:
+            raise field_error("positions", "required: each building's place along the row "
+                                           "[m] (or records = [...], the other buildings' own "
+                                           "records)")
         if self.apparent_velocity is not None and self.apparent_velocity == 0.0:
             raise field_error("apparent_velocity", "must not be 0 m/s (waves that never "
                                                     "arrive)")
@@ -61,10 +88,26 @@ class SpatialConfig(Section):
                                              f"{self.recorded_at})")
         return self
 
-    def apply(self, record: GroundMotion) -> SpatialMotion:
-        """Every building's motion from ``record`` (module docstring)."""
+    def n_buildings(self) -> int:
+        """How many buildings the table gives a motion for."""
+        if self.records is not None:
+            return len(self.records) + 1
+        assert self.positions is not None
+        return len(self.positions)
+
+    def apply(self, record: GroundMotion, factor: float = 1.0) -> SpatialMotion:
+        """Every building's motion from ``record`` (module docstring); ``factor``: what
+        ``[record]``'s scaling multiplied its record by (for ``records``)."""
         from pounding.ground_motion.coherency import coherent_motions
         from pounding.ground_motion.spatial import wave_passage
+
+        if self.records is not None:
+            others = []
+            for i, r in enumerate(self.records):
+                with prefixed(f"records[{i}]", RecordConfig.model_fields):
+                    others.append(r.load().scaled(factor))
+            return SpatialMotion([record, *others], description="each building's own record")
+        assert self.positions is not None
 
         if self.coherency == "none":
             assert self.apparent_velocity is not None

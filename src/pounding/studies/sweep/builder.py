@@ -136,7 +136,7 @@ class CaseBuilder:
                 motion = record_cfg.load(components=in_plan)
             if spatial_cfg is not None:
                 with prefixed("spatial"):
-                    motion = spatial_cfg.apply(motion)
+                    motion = spatial_cfg.apply(motion, record_cfg.factor_of(motion))
         return Built(model, motion, dict(solver))
 
 
