@@ -179,10 +179,20 @@ def test_rectangles_square_symmetry_and_the_equivalent_disk() -> None:
     r_inertia = (a ** 4 / 12 * 4 / math.pi) ** 0.25
     assert k_x == pytest.approx(footing_stiffness(Footing(radius=r_area), SOIL)[0], rel=0.02)
     assert k_r == pytest.approx(footing_stiffness(Footing(radius=r_inertia), SOIL)[1], rel=0.02)
-    # longer along the row: stiffer in rocking than across
+    # longer along the row: stiffer in rocking than across, softer in sway (Gazetas 1991:
+    # the longitudinal K_x = K_y − 0.2/(0.75 − ν) G L (1 − B/L), below the lateral K_y)
     long_ = footing_stiffness(Footing(length=2 * a, width=a), SOIL)
     wide = footing_stiffness(Footing(length=a, width=2 * a), SOIL)
-    assert long_[1] > 2.5 * wide[1] and long_[0] > wide[0]
+    assert long_[1] > 2.5 * wide[1] and long_[0] < wide[0]
+    nu = SOIL.poisson
+    for ratio in (1.0, 1.5, 2.0, 3.0, 4.0):
+        L, B = ratio * a / 2, a / 2
+        k_lat = 2 * G * L / (2 - nu) * (2 + 2.5 * (B / L) ** 0.85)  # Gazetas, across L
+        k_lon = k_lat - 0.2 / (0.75 - nu) * G * L * (1 - B / L)  # Gazetas, along L
+        along = footing_stiffness(Footing(length=2 * L, width=2 * B), SOIL)[0]
+        across = footing_stiffness(Footing(length=2 * B, width=2 * L), SOIL)[0]
+        assert along == pytest.approx(k_lon, rel=0.035), ratio
+        assert across == pytest.approx(k_lat, rel=0.035), ratio
 
 
 def test_en1998_5_table_4_1() -> None:

@@ -17,13 +17,14 @@ Springs: the static stiffnesses
     as tabulated in NIST GCR 12-917-21 (2012), *Soil-Structure Interaction for Building
     Structures*, Table 2-2a::
 
-        k_x  = G B / (2 − ν) [6.8 (L/B)^0.65 + 0.8 L/B + 1.6]    (sway along L)
-        k_y  = G B / (2 − ν) [6.8 (L/B)^0.65 + 2.4]              (sway along B)
+        k_x  = G B / (2 − ν) [6.8 (L/B)^0.65 + 2.4]              (sway along L)
+        k_y  = G B / (2 − ν) [6.8 (L/B)^0.65 + 0.8 L/B + 1.6]    (sway along B)
         k_yy = G B³ / (1 − ν) [3.73 (L/B)^2.4 + 0.27]           (rocking under sway along L)
         k_xx = G B³ / (1 − ν) [3.2 L/B + 0.8]                   (rocking under sway along B)
 
     (a square gives ``k_x = k_y`` and ``k_xx = k_yy``, and within 2 % the circle of the same
-    area or moment of inertia).
+    area or moment of inertia; a long footing sways more easily along its length than
+    across, as Gazetas' formulas have it too).
 
 Dashpots: the cone models of Wolf (1994), *Foundation Vibration Analysis Using Simple
 Physical Models*, Prentice Hall, §2 (a disk of radius ``r0``; a rectangle takes the disk of
@@ -154,10 +155,10 @@ def footing_stiffness(footing: Footing, soil: Soil) -> tuple[float, float]:
     L, B = max(along, across), min(along, across)
     a = L / B
     if along >= across:  # sway along L, rocking about the short axis (y)
-        k_x = G * B / (2.0 - nu) * (6.8 * a ** 0.65 + 0.8 * a + 1.6)
+        k_x = G * B / (2.0 - nu) * (6.8 * a ** 0.65 + 2.4)
         k_r = G * B ** 3 / (1.0 - nu) * (3.73 * a ** 2.4 + 0.27)
     else:  # sway along B, rocking about the long axis (x)
-        k_x = G * B / (2.0 - nu) * (6.8 * a ** 0.65 + 2.4)
+        k_x = G * B / (2.0 - nu) * (6.8 * a ** 0.65 + 0.8 * a + 1.6)
         k_r = G * B ** 3 / (1.0 - nu) * (3.2 * a + 0.8)
     return k_x, k_r
 
