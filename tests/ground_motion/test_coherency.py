@@ -41,9 +41,17 @@ def test_the_record_stays_and_full_coherence_is_the_record() -> None:
     # full coherence (β = 0) with waves at 1000 m/s over 50 m: the record 0.05 s later
     w = coherent_motions(EC, [0.0, 50.0], coherency="luco-wong", beta=0.0,
                          apparent_velocity=1000.0, seed=1)
-    assert w.records[1].npts == EC.npts + 5
+    assert w.records[1].npts == EC.npts + 5 and w.delays == pytest.approx((0.0, 0.05))
     assert np.max(np.abs(w.records[1].accel[5:] - EC.accel)) < 1e-12 * EC.pga
     assert np.max(np.abs(w.records[1].accel[:5])) < 1e-12 * EC.pga
+    # recorded downstream: the upstream station 0.05 s earlier, nothing wrapped around —
+    # every motion on one axis, the record after 5 leading zeros
+    u = coherent_motions(EC, [0.0, 50.0], coherency="luco-wong", beta=0.0,
+                         apparent_velocity=1000.0, recorded_at=1, seed=1)
+    assert u.delays == pytest.approx((0.0, 0.05))
+    assert np.array_equal(u.records[1].accel[5:], EC.accel) and not np.any(u.records[1].accel[:5])
+    assert np.max(np.abs(u.records[0].accel[: EC.npts] - EC.accel)) < 1e-12 * EC.pga
+    assert np.max(np.abs(u.records[0].accel[EC.npts:])) < 1e-12 * EC.pga
     # reproducible, and another seed another motion
     again = coherent_motions(EC, [0.0, 40.0, 0.0], seed=3)
     assert np.array_equal(again.records[1].accel, s.records[1].accel)
@@ -51,21 +59,24 @@ def test_the_record_stays_and_full_coherence_is_the_record() -> None:
     assert not np.allclose(other.records[1].accel, s.records[1].accel)
 
 
-def test_coherency_and_amplitudes_over_many_seeds() -> None:
-    """300 seeds, stations at 0 (the record), 60 and 150 m, Harichandran–Vanmarcke with
-    waves at 800 m/s: per frequency band (1–2, 2–4, 4–8 Hz, the lines of each band
-    pooled), the estimated complex coherency of every pair against γ_jk, and each
-    simulated station's mean power against the record's: the coherency within 2.5 times
-    its standard error (1 − |γ|²)/√N (Luco & Wong's motions fail it), the power within 4."""
-    x = [0.0, 60.0, 150.0]
-    n_seeds = 300
-    specs = []
-    for seed in range(n_seeds):
-        s = coherent_motions(EC, x, apparent_velocity=800.0, seed=seed, trim=False)
-        specs.append(np.array([np.fft.rfft(r.accel) for r in s.records]))
-    A = np.array(specs)  # (seeds, stations, F)
-    n = 2 * EC.npts
-    f = np.fft.rfftfreq(n, EC.dt)
+X = [0.0, 60.0, 150.0]
+N_SEEDS = 300
+
+
+def _spectra(model: str) -> np.ndarray:
+    """The DFTs of every station's motion over N_SEEDS seeds (seeds, stations, lines)."""
+    return np.array([[np.fft.rfft(r.accel) for r in
+                      coherent_motions(EC, X, coherency=model, apparent_velocity=800.0,
+                                       seed=seed).records]
+                     for seed in range(N_SEEDS)])
+
+
+def _coherency_checks(A: np.ndarray) -> list[bool]:
+    """Per band (1–2, 2–4, 4–8 Hz, the lines pooled) and pair: is the estimated complex
+    coherency within 2.5 standard errors (1 − |γ|²)/√N of Harichandran–Vanmarcke's with
+    waves at 800 m/s?"""
+    f = np.fft.rfftfreq(EC.npts + 19, EC.dt)  # (the record and 150/800 s of zeros)
+    out = []
     for lo, hi in ((1.0, 2.0), (2.0, 4.0), (4.0, 8.0)):
         band = (f >= lo) & (f < hi)
         for j, k in ((1, 0), (2, 0), (2, 1)):
@@ -74,16 +85,35 @@ def test_coherency_and_amplitudes_over_many_seeds() -> None:
             pk = np.mean(np.abs(A[:, k, band]) ** 2, axis=0)
             est = cross / np.sqrt(pj * pk)  # per line
             w = 2 * np.pi * f[band]
-            target = (harichandran_vanmarcke(x[j] - x[k], f[band])
-                      * np.exp(-1j * w * (x[j] - x[k]) / 800.0))
+            target = (harichandran_vanmarcke(X[j] - X[k], f[band])
+                      * np.exp(-1j * w * (X[j] - X[k]) / 800.0))
             g2 = np.abs(target) ** 2
             # the error of a coherency estimate from N independent pairs ~ (1 − |γ|²)/√N
-            err = np.abs(est - target)
-            assert np.mean(err) < 2.5 * np.mean((1 - g2) / np.sqrt(n_seeds)) + 1e-3, (lo, j, k)
+            err = np.mean(np.abs(est - target))
+            out.append(bool(err < 2.5 * np.mean((1 - g2) / np.sqrt(N_SEEDS)) + 1e-3))
+    return out
+
+
+def test_coherency_and_amplitudes_over_many_seeds() -> None:
+    """300 seeds, stations at 0 (the record), 60 and 150 m, Harichandran–Vanmarcke with
+    waves at 800 m/s: every pair's estimated coherency in three bands within 2.5 standard
+    errors of the target — and Luco & Wong's motions fail the same checks (so they can
+    fail); each station's mean power per band, and its whole energy Σ a², the record's."""
+    A = _spectra("harichandran-vanmarcke")
+    assert A.shape[2] == (EC.npts + 19) // 2 + 1  # (the record and 150/800 s of zeros)
+    assert all(_coherency_checks(A))
+    assert sum(_coherency_checks(_spectra("luco-wong"))) <= 4
+    f = np.fft.rfftfreq(EC.npts + 19, EC.dt)
+    for lo, hi in ((1.0, 2.0), (2.0, 4.0), (4.0, 8.0)):
+        band = (f >= lo) & (f < hi)
         p0 = np.abs(A[0, 0, band]) ** 2
         for j in (1, 2):
             ratio = np.mean(np.abs(A[:, j, band]) ** 2, axis=0) / p0
-            assert np.mean(ratio) == pytest.approx(1.0, abs=4 / np.sqrt(n_seeds * band.sum()))
+            assert np.mean(ratio) == pytest.approx(1.0, abs=4 / np.sqrt(N_SEEDS * band.sum()))
+    # the whole motion's energy (∝ Σ|A|², Parseval), over the seeds: the record's
+    energy = np.sum(np.abs(A) ** 2, axis=2)
+    for j in (1, 2):
+        assert np.mean(energy[:, j]) / energy[0, 0] == pytest.approx(1.0, abs=0.03)
 
 
 def test_refusals() -> None:

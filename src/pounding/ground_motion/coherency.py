@@ -36,11 +36,13 @@ other stations' coefficients are drawn from their Gaussian distribution given ``
 ``Γ_rr`` the coherency matrix of the simulated stations, ``z`` independent standard complex
 normal numbers. So, over many seeds, every station has the record's Fourier amplitudes in
 the mean square (``E|A_r|² = S``) and every pair the target coherency (``E[A_r A_k*] =
-γ_rk S``); at distance 0 without wave passage the simulated motion *is* the record. The
-record is padded with zeros (by its own length) first, so the delays of wave passage do not
-wrap around.
+γ_rk S``), so the same energy (Σ a² dt) as the record in the mean; at distance 0 without
+wave passage the simulated motion *is* the record. The record is padded with zeros first —
+before it by the longest advance of a station upstream of the recorded one, after it by the
+longest delay downstream — so no arrival wraps around the transform; every motion is on
+that one time axis (the recorded station's starts with the leading zeros).
 
-The simulation is stationary: the incoherent part is spread over the whole padded record
+The simulation is stationary: the incoherent part is spread over the whole (padded) record
 rather than following the record's envelope in time (Konakli & Der Kiureghian 2012 treat
 that non-stationarity with time windows; not done here), and the motions are not
 baseline-corrected.
@@ -120,7 +122,7 @@ def lagged_coherency(model: str, distance: ArrayLike, omega: ArrayLike,
 def coherent_motions(record: GroundMotion, positions: Sequence[float], *,
                      coherency: str = "harichandran-vanmarcke",
                      apparent_velocity: float | None = None, recorded_at: int = 0,
-                     seed: int = 0, trim: bool = True, **params: float) -> SpatialMotion:
+                     seed: int = 0, **params: float) -> SpatialMotion:
     """Motions at stations ``positions`` [m] along the row, one a building, the record at
     station ``recorded_at`` and the others simulated from it (module docstring) with lagged
     coherency ``coherency`` (its constants ``params``) and, if ``apparent_velocity`` [m/s]
@@ -130,9 +132,11 @@ def coherent_motions(record: GroundMotion, positions: Sequence[float], *,
     Returns
     -------
     SpatialMotion
-        Every record as long as the original plus the longest delay of wave passage
-        (``trim``; else as long as the padded record, twice the original, whose discrete
-        Fourier transform the statistics of the module docstring hold for).
+        Every motion on one time axis: the record padded with zeros before it by the
+        longest advance of a station upstream of the recorded one and after it by the
+        longest delay downstream (so no arrival wraps around the discrete Fourier
+        transform, whose lines the statistics of the module docstring hold for), and each
+        station's delay [s] on that axis (the recorded station's: its leading zeros).
 
     Raises
     ------
@@ -153,8 +157,12 @@ def coherent_motions(record: GroundMotion, positions: Sequence[float], *,
         if v == 0.0:
             raise ValueError("apparent_velocity [m/s] must not be 0 (waves that never arrive)")
         slowness = 1.0 / v
-    n = 2 * record.npts
-    a0 = np.concatenate([record.accel, np.zeros(n - record.npts)])
+    # each station's arrival after the recorded one's [s] (negative: upstream, earlier)
+    tau = (x - x[recorded_at]) * slowness
+    front = int(np.ceil(max(0.0, -float(tau.min())) / record.dt - 1e-9))
+    back = int(np.ceil(max(0.0, float(tau.max())) / record.dt - 1e-9))
+    n = front + record.npts + back
+    a0 = np.concatenate([np.zeros(front), record.accel, np.zeros(back)])
     spec0 = np.fft.rfft(a0)
     omega = 2.0 * np.pi * np.fft.rfftfreq(n, record.dt)
     others = [j for j in range(x.size) if j != recorded_at]
@@ -182,10 +190,6 @@ def coherent_motions(record: GroundMotion, positions: Sequence[float], *,
         sims[:, 0] = sims[:, 0].real
         if n % 2 == 0:
             sims[:, -1] = sims[:, -1].real
-    keep = n
-    if trim:
-        delay = float(np.max(np.abs(x - x[recorded_at]))) * abs(slowness)
-        keep = min(n, record.npts + int(np.ceil(delay / record.dt)))
     records: list[GroundMotion] = []
     k = 0
     for j in range(x.size):
@@ -196,9 +200,9 @@ def coherent_motions(record: GroundMotion, positions: Sequence[float], *,
             accel = np.fft.irfft(sims[k], n)
             k += 1
             name = f"{record.name} simulated at {x[j]:g} m"
-        records.append(GroundMotion(record.dt, accel[:keep], name, record.source, "m/s2",
+        records.append(GroundMotion(record.dt, accel, name, record.source, "m/s2",
                                     record.metadata))
     how = (f"{coherency} coherency"
            + (f", apparent velocity {apparent_velocity:g} m/s" if apparent_velocity else "")
            + f", conditioned on the record at {x[recorded_at]:g} m, seed {seed}")
-    return SpatialMotion(records, description=how)
+    return SpatialMotion(records, description=how, delays=front * record.dt + tau)
