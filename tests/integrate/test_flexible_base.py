@@ -171,3 +171,28 @@ def test_the_footing_rows_outside_the_band_give_the_full_band_answer(monkeypatch
                  (fast.contact_force, full.contact_force), (fast.energy, full.energy)):
         assert np.max(np.abs(x - y)) <= 1e-12 * np.max(np.abs(y))
     assert fast.energy_balance_error < 1e-8
+
+
+def test_drifts_are_the_buildings_own_deformation() -> None:
+    """The storey's drift on a flexible base is its own deformation x − u_f − h φ: with no
+    damping and a massless footing (springs only) the storey shear k·drift equals the soil's
+    sway reaction k_x u_f and k·drift·h its rocking reaction k_φ φ at every step (the
+    massless footing's equilibrium); the drift ratio and storey shear in the outputs are
+    those, not the floor's displacement relative to the ground."""
+    from pounding.ground_motion import el_centro
+
+    b = ShearBuilding.sdof(1.0e6, period=0.5, height=10.0, damping_ratio=0.0)
+    fb = flexible_base(b, Footing(radius=5.0, dashpots=False), SOIL)
+    res = simulate(PoundingModel([fb], [], SPEC), el_centro(), duration=10.0, dt=0.005)
+    imp = fb.foundation.impedance
+    sway, rocking, shear, moment = fb.foundation.base_reactions(res.displacement,
+                                                                res.velocity)
+    k = float(b.stiffnesses[0])
+    storey = res.storey_shear[:, 0]
+    assert np.max(np.abs(storey - imp.k_x * sway)) < 1e-9 * np.max(np.abs(storey))
+    assert np.max(np.abs(10.0 * storey - imp.k_r * rocking)) < 1e-9 * np.max(np.abs(moment))
+    assert np.allclose(res.drift[:, 0], storey / k, rtol=0, atol=1e-15)
+    assert res.peak_drift_ratio[0] == pytest.approx(np.max(np.abs(storey)) / k / 10.0,
+                                                    rel=1e-12)
+    # the floor's displacement relative to the ground is larger: the footing moves it too
+    assert np.max(np.abs(res.displacement[:, 0])) > 1.5 * res.peak_drift[0]

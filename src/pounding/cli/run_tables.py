@@ -239,10 +239,16 @@ def _print_storeys(r: Any, units: tuple[float, str, float, str]) -> None:
                 for b, (bl, off) in enumerate(zip(model.buildings, model.system.offsets))
                 if hasattr(bl, "labels") and b not in plans
                 and not np.isfinite(shear[int(off): int(off) + bl.n]).any()]
+    soil = [building_label(b, bl.name) for b, bl in enumerate(model.buildings)
+            if hasattr(bl, "foundation")]
+    notes = ([f"{', '.join(matrices)} given as matrices: no storey shear (K has no storey "
+              "stiffness); floor: the DOF's label"] if matrices else [])
+    if soil:
+        notes.append(f"{', '.join(soil)} on a flexible base: drift of the building's own "
+                     "deformation (the footing's sway and rocking taken out), read at the output "
+                     "steps; the footing: foundations in summary.json")
     print_table(console, "Storeys: peaks and when (all of them in summary.json)", cols, rows,
-                keys=2, caption=(f"{', '.join(matrices)} given as matrices: no storey shear "
-                                 "(K has no storey stiffness); floor: the DOF's label"
-                                 if matrices else ""))
+                keys=2, caption="; ".join(notes))
 
 
 def _print_plan_storeys(r: Any, units: tuple[float, str, float, str]) -> None:

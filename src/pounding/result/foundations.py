@@ -4,16 +4,42 @@ and moment on it, and the periods and impedances that made them."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from pounding.structure.foundation import FlexibleBaseBuilding
 
-if TYPE_CHECKING:
-    from pounding.result.response import Response
+__all__ = ["flexible_base_drifts", "flexible_base_storeys", "foundation_summary"]
 
-__all__ = ["foundation_summary"]
+
+def flexible_base_drifts(model: Any, displacement: np.ndarray
+                         ) -> list[tuple[np.ndarray, np.ndarray]]:
+    """For every building on a flexible base, its floors' columns (global DOFs) and the
+    drifts of its own deformation there [m] (nt, n_floors)
+    (:meth:`pounding.structure.foundation.Foundation.deformation_drifts`), from the
+    displacement histories (nt, N)."""
+    out = []
+    for bl, off in zip(model.buildings, model.system.offsets):
+        if isinstance(bl, FlexibleBaseBuilding):
+            f = bl.floor_dofs
+            d = bl.foundation.deformation_drifts(displacement[:, int(off): int(off) + bl.n],
+                                                 bl.elevations[f])
+            out.append((int(off) + f, d))
+    return out
+
+
+def flexible_base_storeys(building: object) -> np.ndarray:
+    """Storey stiffness [N/m] under every DOF of a building on a flexible base that was a
+    shear building (its storey shears ``k_j`` times its deformation drifts), NaN elsewhere
+    (the footing's DOFs; any other matrix building)."""
+    n = int(getattr(building, "n"))
+    out = np.full(n, np.nan)
+    if isinstance(building, FlexibleBaseBuilding):
+        k = building.foundation.storey_stiffnesses
+        if k is not None:
+            out[building.floor_dofs] = k
+    return out
 
 
 def _peak(values: np.ndarray, dt: float) -> tuple[float, float]:
@@ -21,8 +47,9 @@ def _peak(values: np.ndarray, dt: float) -> tuple[float, float]:
     return float(abs(values[k])), round(k * dt, 9)
 
 
-def foundation_summary(r: Response) -> dict[str, Any]:
-    """``foundations``: for every building on a flexible base, its footing, soil and
+def foundation_summary(r: Any) -> dict[str, Any]:
+    """``foundations`` of a run ``r`` (a :class:`pounding.result.Response`): for every
+    building on a flexible base, its footing, soil and
     impedance (springs, dashpots and the frequency they were taken at), its fixed- and
     flexible-base periods, and the peaks of the footing's sway [m], rocking [rad] and the
     soil's base shear [N] and moment [N·m] on it (``V = k_x u_f + c_x u̇_f``,

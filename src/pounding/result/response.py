@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.result.columns import IMPACT_COLUMNS
+from pounding.result.foundations import flexible_base_drifts, flexible_base_storeys
 from pounding.result.peaks import peak_abs, sampled_peak
 from pounding.result.storeys import (
     bearing_mask,
@@ -187,6 +188,8 @@ class Response:
             iy = off + 1 + 3 * np.arange(n)
             out[:, iy] = u[:, iy]
             out[:, iy[1:]] -= u[:, iy[:-1]]
+        for cols, d in flexible_base_drifts(self.model, u):
+            out[:, cols] = d
         return out
 
     @cached_property
@@ -205,8 +208,8 @@ class Response:
         """Storey stiffness [N/m] under every DOF: a shear building's ``k_j``; NaN for a
         matrix building (its ``K`` has no storey stiffness; a frame's storey shear comes from
         its restoring forces, :func:`pounding.result.storeys.frame_storey_shear`)."""
-        return np.concatenate([b.stiffnesses if hasattr(b, "stiffnesses") else np.full(b.n, np.nan)
-                               for b in self.model.buildings])
+        return np.concatenate([b.stiffnesses if hasattr(b, "stiffnesses") else
+                               flexible_base_storeys(b) for b in self.model.buildings])
 
     @cached_property
     def storey_shear(self) -> NDArray[np.float64]:
@@ -429,13 +432,27 @@ class Response:
     @property
     def peak_drift(self) -> NDArray[np.float64]:
         """Largest |storey drift| of every storey [m] (N,: the storey below each floor),
-        located inside solver steps; NaN for a DOF that is not a floor."""
-        return np.where(self.model.is_floor, self._peak(2, self.drift)[0], np.nan)
+        located inside solver steps (a building on a flexible base: the drift of its own
+        deformation, read at the output steps, :attr:`drift`); NaN for a DOF that is not a
+        floor."""
+        return np.where(self.model.is_floor, self._drift_peaks[0], np.nan)
 
     @property
     def peak_drift_time(self) -> NDArray[np.float64]:
         """Time of every storey's :attr:`peak_drift` [s] (N,)."""
-        return np.where(self.model.is_floor, self._peak(2, self.drift)[1], np.nan)
+        return np.where(self.model.is_floor, self._drift_peaks[1], np.nan)
+
+    @cached_property
+    def _drift_peaks(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        peak, when = self._peak(2, self.drift)
+        cols = np.concatenate([c for c, _ in flexible_base_drifts(self.model,
+                                                                  self.displacement[:1])]
+                              or [np.zeros(0, dtype=np.int64)])
+        if cols.size:  # (the kernel located the floors' relative drift: not these)
+            a = np.abs(self.drift[:, cols])
+            k = np.argmax(a, axis=0)
+            peak[cols], when[cols] = a[k, np.arange(cols.size)], self.time[k]
+        return peak, when
 
     @property
     def peak_drift_ratio(self) -> NDArray[np.float64]:

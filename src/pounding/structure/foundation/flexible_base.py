@@ -79,6 +79,22 @@ class Foundation:
     fixed_base_periods: NDArray[np.float64]  #: the building's on a rigid base [s]
     recovery: NDArray[np.float64]  #: (2, n) [m/m, rad/m]: u_f and φ from the DOFs
     explicit: tuple[bool, bool]  #: whether sway and rocking are DOFs of the building
+    #: the fixed-base building's storey stiffnesses [N/m] where it is a shear building (its
+    #: storey shears are ``k_j`` times the deformation drifts), else None
+    storey_stiffnesses: NDArray[np.float64] | None = None
+
+    def deformation_drifts(self, displacement: NDArray[np.float64],
+                           elevations: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The storeys' drifts of the building's own deformation [m] (nt, n_floors),
+        ``x_j − x_{j−1} − (z_j − z_{j−1}) φ`` with ``x_0 = u_f``, from its DOFs' displacement
+        histories (nt, n) (relative to the free-field ground) and its floors' elevations
+        [m] — what its storeys feel, without the footing's rigid sway and rocking."""
+        u = displacement @ self.recovery.T
+        n = elevations.size
+        x = displacement[:, :n]
+        below = np.concatenate([u[:, :1], x[:, :-1]], axis=1)
+        dz = np.diff(elevations, prepend=0.0)
+        return np.asarray(x - below - dz[None, :] * u[:, 1:2])
 
     def base_reactions(self, displacement: NDArray[np.float64],
                        velocity: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
@@ -199,8 +215,12 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     # (exactly symmetric, as the matrix building stores them)
     M_k, K_k, C_k = (0.5 * (A + A.T) for A in (M_k, K_k, C_k))
     extra = [lab for lab, d in ((SWAY_LABEL, n), (f"{SWAY_LABEL}_r", n + 1)) if d in keep]
+    storeys = (np.asarray(building.stiffnesses, dtype=float)
+               if isinstance(building, ShearBuilding) else
+               building.storey_stiffnesses() if building.is_shear_building() else None)
     foundation = Foundation(footing, soil, Impedance(k_x, k_r, c_x, c_r, omega), fixed_periods,
-                            Phi[[n, n + 1]], (footing.mass > 0.0, footing.inertia > 0.0))
+                            Phi[[n, n + 1]], (footing.mass > 0.0, footing.inertia > 0.0),
+                            storeys)
     return FlexibleBaseBuilding(
         foundation, M=M_k, K=K_k, C=C_k, labels=labels + extra,
         elevations=np.r_[z, np.zeros(len(extra))],
