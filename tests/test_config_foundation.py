@@ -65,11 +65,18 @@ def test_a_matrix_building_takes_a_flexible_base(tmp_path: Path) -> None:
                                           "soil": {"vs": 200.0, "density": 1900.0,
                                                    "poisson": 0.3}}}
     model, _, _ = parse_config(data, where="m.toml").build()
-    fixed = parse_config({**data, "building": [{k: v for k, v in data["building"][0].items()
-                                                 if k != "foundation"},
-                                                data["building"][1]]},
-                         where="m.toml").build()[0].buildings[0]
-    assert model.buildings[0].fundamental_period > fixed.fundamental_period
+    # the same building given storey by storey on the same footing: the same matrices
+    same = {"masses": [2e5, 2e5], "stiffnesses": [4e7, 2e7], "heights": [3.0, 3.0],
+            "foundation": data["building"][0]["foundation"]}
+    shear, _, _ = parse_config({**data, "building": [same, data["building"][1]]},
+                               where="m.toml").build()
+    a, b = model.buildings[0], shear.buildings[0]
+    assert isinstance(a, FlexibleBaseBuilding) and isinstance(b, FlexibleBaseBuilding)
+    for x, y in ((a.mass_matrix(), b.mass_matrix()), (a.stiffness_matrix(),
+                                                      b.stiffness_matrix()),
+                 (a.damping_matrix(), b.damping_matrix())):
+        assert np.allclose(x, y, rtol=1e-12, atol=1e-9 * np.abs(y).max())
+    assert a.foundation.storey_stiffnesses == pytest.approx([4e7, 2e7], rel=1e-12)
 
 
 @pytest.mark.parametrize("change, expected", [

@@ -168,7 +168,8 @@ def test_the_footing_rows_outside_the_band_give_the_full_band_answer(monkeypatch
     assert fast.n_impacts == full.n_impacts > 0
     for x, y in ((fast.displacement, full.displacement),
                  (fast.abs_acceleration, full.abs_acceleration),
-                 (fast.contact_force, full.contact_force), (fast.energy, full.energy)):
+                 (fast.contact_force, full.contact_force), (fast.energy, full.energy),
+                 (fast.located_peaks, full.located_peaks)):
         assert np.max(np.abs(x - y)) <= 1e-12 * np.max(np.abs(y))
     assert fast.energy_balance_error < 1e-8
 

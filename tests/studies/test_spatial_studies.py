@@ -135,3 +135,12 @@ def test_each_building_its_own_record_scaled_with_the_first() -> None:
         with pytest.raises(ValueError) as info:
             parse_config(bad, where="m.toml").build()
         assert expected in str(info.value), str(info.value)
+
+
+def test_what_is_not_modelled_yet_is_refused_in_the_file() -> None:
+    data = pair()
+    data["device"] = [{"type": "viscous", "floors": ["B1F1", "B2F1"], "c": 1e6}]
+    with pytest.raises(ValueError) as info:
+        parse_config(data, where="m.toml").build()
+    text = str(info.value)
+    assert text.startswith("m.toml: spatial: links between buildings (device[0], viscous)")

@@ -96,6 +96,15 @@ class RunConfig(Section):
             if self.in_plan:
                 raise field_error("spatial", "buildings in plan (two ground components) on "
                                              "spatially varying ground are not modelled yet")
+            frames = [i for i, b in enumerate(self.building) if b.kind == "frame"]
+            if frames:
+                raise field_error("spatial", f"yielding frames (building[{frames[0]}]) on "
+                                             "spatially varying ground are not modelled yet")
+            links = [i for i, d in enumerate(self.device) if d.type != "bumper"]
+            if links:
+                raise field_error("spatial", f"links between buildings (device[{links[0]}], "
+                                             f"{self.device[links[0]].type}) on spatially "
+                                             "varying ground are not modelled yet")
             given = self.spatial.n_buildings()
             if self.spatial.records is not None and given != nb:
                 raise field_error(("spatial", "records"),

@@ -348,7 +348,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     if exact:
         fs = km.free_steps.get(step)
         if fs is None:
-            fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step)
+            with warnings.catch_warnings():  # (an overflow is said below, in one line)
+                warnings.simplefilter("ignore", RuntimeWarning)
+                fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step)
             if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
                 raise IntegrationError(_nonfinite_text(model, motion, None, step))
             km.free_steps[step] = fs
