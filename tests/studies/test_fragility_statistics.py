@@ -282,3 +282,17 @@ def test_pounding_probability_by_hand_count():
 def test_docstring_example():
     failures, tried = doctest.testmod(fitting, verbose=False)
     assert tried >= 2 and failures == 0
+
+
+def test_no_resamples_gives_no_interval() -> None:
+    """``[bootstrap] n = 0`` (documented: no intervals): the percentile interval of zero
+    resamples is NaN, for one quantity and for a curve (it used to fail reshaping an empty
+    array, and the study with it)."""
+    from pounding.studies.fragility.bootstrap import percentile_interval
+
+    lo, hi = percentile_interval(np.zeros(0))
+    assert np.isnan(lo) and np.isnan(hi)
+    lo, hi = percentile_interval(np.zeros((0, 5)))
+    assert lo.shape == hi.shape == (5,) and np.all(np.isnan(lo)) and np.all(np.isnan(hi))
+    lo, hi = percentile_interval(np.array([[1.0, 2.0], [3.0, 4.0]]), 0.5)
+    assert lo.tolist() == [1.0, 2.0] and hi.tolist() == [3.0, 4.0]

@@ -96,7 +96,8 @@ def percentile_interval(values: ArrayLike, confidence: float = DEFAULT_CONFIDENC
     lo_q, hi_q = (1.0 - confidence) / 2.0, (1.0 + confidence) / 2.0
     lo = np.full(a.shape[1:], np.nan)
     hi = np.full(a.shape[1:], np.nan)
-    flat = a.reshape(a.shape[0], -1)
+    # (no resamples at all, [bootstrap] n = 0: every interval NaN)
+    flat = a.reshape(a.shape[0], int(np.prod(a.shape[1:], dtype=np.int64)))
     for k in range(flat.shape[1]):
         col = flat[:, k]
         col = col[~np.isnan(col)]
