@@ -82,7 +82,9 @@ def foundation_summary(r: Any) -> dict[str, Any]:
             "dashpots_at_rad_s": imp.omega,
             "fixed_base_periods_s": [float(t) for t in f.fixed_base_periods],
             "flexible_base_periods_s": [float(t) for t in bl.modes().periods],
-            "peaks": "read at the output steps"}
+            "peaks": "read at the output steps",
+            "storey_drifts": "the building's own deformation (the footing's sway and rocking "
+                             "taken out), read at the output steps"}
         v = r.velocity[:, sl] @ f.recovery.T
         power = imp.c_x * v[:, 0] ** 2 + imp.c_r * v[:, 1] ** 2
         row["soil_dashpot_work_J"] = float(np.trapezoid(power, dx=r.dt))
