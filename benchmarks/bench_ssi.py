@@ -47,10 +47,11 @@ speed     whole runs, warm (compilation excluded), alternating: (1) pounding's f
           build and the analysis loop reading every DOF and contact force each step.
 cost      where the flexible base's time goes, without pounding (gap 10 m, exact steps
           only, output step 1 ms; the kernel's own timer, and the whole call less it):
-          controls that separate the extra DOFs from the bandwidth of the footing's
-          couplings — A on a fixed base, a 7-storey A on a fixed base (10 DOFs, half-
+          controls that separate the extra DOFs from the footing's couplings to every
+          floor — A on a fixed base, a 7-storey A on a fixed base (10 DOFs, half-
           bandwidth 1), A on a massless footing (condensed: 8 DOFs, K and C dense in A's
-          block), A on the footing with mass (10 DOFs, half-bandwidth 6) — the kernel's
+          block), A on the footing with mass (10 DOFs; the kernel keeps a band of 1 and
+          the footing's entries apart, ``kernel_model.banding``: column ``bw+far``) — the kernel's
           banded product ``K u, C v`` (``rhs.band_mv``, timed in a compiled loop with the
           arrays ``simulate`` passes, as ``profile_kernel.py`` does), and the ratio
           flexible / fixed for A of 5, 10 and 20 storeys (T1 = 0.12 n s).
