@@ -439,7 +439,7 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     ws_f = st.ws_f
     u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out = out[:7]
     n = r.shape[0]
-    band_mv(fl.k_band, fl.c_band, fl.far, x, n, fl.bw, lin)
+    band_mv(fl.k_band, fl.c_band, x, n, fl.bw, lin)
     a_o = ag[o, 0]
     for i in range(n):
         u_out[o, i] = x[i]

@@ -69,11 +69,11 @@ def floor_rel_acc(j, y, ag, kg, n, fl):
         col = j + d - bw
         if 0 <= col < n:
             s += fl.k_band[d, j] * y[col] + fl.c_band[d, j] * y[n + col]
-    far = fl.far
-    for q in range(far.shape[0]):
-        if int(far[q, 0]) == j:
-            col = int(far[q, 1])
-            s += far[q, 2] * y[col] + far[q, 3] * y[n + col]
+    kb, cb = fl.k_band, fl.c_band
+    for q in range(n, kb.shape[1]):  # (the entries outside the band)
+        if int(kb[0, q]) == j:
+            col = int(kb[1, q])
+            s += kb[2, q] * y[col] + cb[2, q] * y[n + col]
     return -s * fl.m_inv[j] - fl.r[j, 0] * ag[kg, 0] - ground_rest(fl.r, j, ag, kg)
 
 
@@ -274,7 +274,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                     track_uncoupled_step(t0, dt, i, u0, v0, acc_out[k, i], u, v, aa, ag, k,
                                          r, kk, cc, mi, pk)
         else:
-            band_mv(k_band, c_band, fl.far, x1, n, bw, lin)
+            band_mv(k_band, c_band, x1, n, bw, lin)
             for i in range(n):
                 u = x1[i]
                 v = x1[n + i]

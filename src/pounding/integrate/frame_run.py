@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.integrate.kernel_model import HingeRows, KernelModel, band_storage, far_entries
+from pounding.integrate.kernel_model import HingeRows, KernelModel, kernel_bands
 from pounding.integrate.layout import (
     EVENT_TOL,
     HS_A0,
@@ -145,8 +145,7 @@ class FrameRun:
             a = np.arange(f.motion.n_floors)
             rows_i, cols_j = np.meshgrid(a, a, indexing="ij")
             f.band_rows, f.band_cols = cols_j - rows_i + bw, f.offset + rows_i
-        k_band = band_storage(km.K, bw)
-        c_band = fl.c_band if bw == fl.bw else band_storage(km.C, bw)
+        k_band, c_band = kernel_bands(km.K, km.C, bw)  # (the run's own copy of K's)
         f_dof = np.concatenate([f.offset + np.arange(f.motion.n_floors) for f in self.frames])
         self.h_dof = np.zeros((h0, width), dtype=np.int64)
         self.h_w = np.zeros((h0, width))
@@ -157,8 +156,7 @@ class FrameRun:
         self.k_band = k_band
         self.f_rows = np.zeros((f_dof.size, 3))
         self.f_rows[:, 0] = f_dof
-        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band, f_rows=self.f_rows,
-                                  far=far_entries(km.K, km.C, bw))
+        self.floors = fl._replace(bw=bw, k_band=k_band, c_band=c_band, f_rows=self.f_rows)
         self.hinges = HingeRows(self.h_dof, self.h_w, self.h_state)
         self.arrays = km.arrays._replace(floors=self.floors, hinges=self.hinges)
         self.masses = fl.m_diag

@@ -43,7 +43,7 @@ read and added by index, not in a vectorised row) — what :func:`banding` weigh
 
 def banding(K: np.ndarray, C: np.ndarray) -> tuple[int, np.ndarray]:
     """The half-bandwidth the kernel stores ``K`` and ``C`` with, and their entries outside
-    it (``far``, :attr:`Floors.far`): the bandwidth that makes ``N (2 bw + 1) + FAR_COST ·
+    it (``far``, :func:`kernel_bands`): the bandwidth that makes ``N (2 bw + 1) + FAR_COST ·
     (entries outside)`` least — the whole band for a banded building, a narrow band and a
     few rows and columns apart for a building on a flexible base (its footing's sway and
     rocking coupled to every floor), whose products would otherwise sweep a band of zeros.
@@ -63,12 +63,35 @@ def banding(K: np.ndarray, C: np.ndarray) -> tuple[int, np.ndarray]:
 
 def far_entries(K: np.ndarray, C: np.ndarray, bw: int) -> np.ndarray:
     """The entries of ``K`` and ``C`` outside half-bandwidth ``bw``: rows ``[i, j, K_ij,
-    C_ij]`` (:attr:`Floors.far`), row by row."""
+    C_ij]``, row by row."""
     i, j = np.nonzero((K != 0.0) | (C != 0.0))
     out = np.abs(i - j) > bw
     i, j = i[out], j[out]
     far = np.column_stack([i, j, K[i, j], C[i, j]]).astype(float)
     return np.ascontiguousarray(far.reshape(-1, 4))
+
+
+def kernel_bands(K: np.ndarray, C: np.ndarray, bw: int) -> tuple[np.ndarray, np.ndarray]:
+    """``K`` and ``C`` as the kernel reads them (:attr:`Floors.k_band`, ``c_band``): band
+    storage of half-bandwidth ``bw`` (N columns), then one column ``[i, j, K_ij]`` /
+    ``[i, j, C_ij]`` (and zeros below) for each entry outside the band — in the two band
+    arrays rather than an array of their own, because every array of a group is passed to
+    every call that takes it (an extra one cost the SDOF pair's contact steps 5–8 %).
+    Needs ``bw ≥ 1`` where there are such entries (three rows; :func:`banding` keeps it)."""
+    n = K.shape[0]
+    far = far_entries(K, C, bw)
+    kb = np.zeros((2 * bw + 1, n + far.shape[0]))
+    cb = np.zeros_like(kb)
+    kb[:, :n] = band_storage(K, bw)
+    cb[:, :n] = band_storage(C, bw)
+    if far.shape[0]:
+        if 2 * bw + 1 < 3:
+            raise ValueError("kernel_bands: entries outside a band of 0")
+        kb[0, n:] = cb[0, n:] = far[:, 0]
+        kb[1, n:] = cb[1, n:] = far[:, 1]
+        kb[2, n:] = far[:, 2]
+        cb[2, n:] = far[:, 3]
+    return kb, cb
 
 
 def band_storage(a: np.ndarray, bw: int) -> np.ndarray:
@@ -97,8 +120,10 @@ class Floors(NamedTuple):
     """The buildings' linear part as the kernel reads it, floor by floor (N floors)."""
 
     bw: int  #: half-bandwidth of K and C
-    k_band: np.ndarray  #: K of the linear storeys [N/m] in band storage (2 bw + 1, N)
-    c_band: np.ndarray  #: C [N·s/m] in band storage
+    #: K of the linear storeys [N/m] in band storage (2 bw + 1, N), then its m entries
+    #: outside the band as columns ``[i, j, K_ij]`` (N + m columns: :func:`kernel_bands`)
+    k_band: np.ndarray
+    c_band: np.ndarray  #: C [N·s/m] likewise, its entries outside as ``[i, j, C_ij]``
     m_diag: np.ndarray  #: lumped floor masses [kg] (N,)
     m_inv: np.ndarray  #: 1 / floor mass [1/kg] (N,)
     mr: np.ndarray  #: M R [kg], (N, G)
@@ -112,10 +137,6 @@ class Floors(NamedTuple):
     #: an RK step takes this one (two more arrays cost the SDOF pair's contact steps
     #: 3–4 %); empty without yielding frames
     f_rows: np.ndarray
-    #: the entries of K and C outside the band, rows ``[i, j, K_ij, C_ij]`` (m, 4) —
-    #: a flexible base's footing, coupled to every floor (:func:`banding`); empty for a
-    #: banded model, whose arithmetic is then unchanged
-    far: np.ndarray
 
 
 class ContactRows(NamedTuple):
@@ -298,11 +319,12 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     m_diag = np.diag(M).copy()
     if np.any(M != np.diag(m_diag)):
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
-    bw, far = banding(K, np.asarray(C))
+    bw, _ = banding(K, np.asarray(C))
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
-    floors = Floors(bw, band_storage(K, bw), band_storage(C, bw), m_diag, 1.0 / m_diag,
+    k_band, c_band = kernel_bands(K, np.asarray(C), bw)
+    floors = Floors(bw, k_band, c_band, m_diag, 1.0 / m_diag,
                     np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
-                    NO_FRAME_ROWS, far)
+                    NO_FRAME_ROWS)
     elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi)
     no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
                               np.zeros((0, ROW_BLOCK)), np.zeros(0),

@@ -98,6 +98,13 @@ scratch: the rotation and its rate at the start of the step being searched for e
 an accepted step's end is the next step's start, so each step computes the hinges'
 rotations once, not twice (:func:`pounding.integrate.events.find_event`)."""
 
+STATION_MASS: float = 1e-30
+"""The mass [kg] of a ground station's DOF (spatially varying ground,
+:mod:`pounding.integrate.stations`): its kinetic energy and the input energy of its own
+record vanish; :func:`pounding.integrate.rhs.deriv` knows a station by it, takes back what
+the contacts push on it (its motion is its record's) and counts the work its motion does
+through them as input."""
+
 FAIL_UNDERFLOW, FAIL_BUDGET, FAIL_NONFINITE, FAIL_UNKNOWN_LAW = 1, 2, 3, 4
 """Why an integration stopped: the adaptive step fell below 10⁻¹⁴ of the grid step, the
 run used up its budget of adaptive steps, the state (or an energy, which sums every

@@ -192,13 +192,12 @@ def row_jerk(i, j, ag, v_out, acc_out, fl):
             s += k_band[d, i] * v_out[j, col] + c_band[d, i] * (acc_out[j, col]
                                                                  - r[col, 0] * ag[j, 0]
                                                                  - ground_rest(r, col, ag, j))
-    far = fl.far
-    for q in range(far.shape[0]):
-        if int(far[q, 0]) == i:
-            col = int(far[q, 1])
-            s += far[q, 2] * v_out[j, col] + far[q, 3] * (acc_out[j, col]
-                                                          - r[col, 0] * ag[j, 0]
-                                                          - ground_rest(r, col, ag, j))
+    for q in range(n, k_band.shape[1]):  # (the entries outside the band)
+        if int(k_band[0, q]) == i:
+            col = int(k_band[1, q])
+            s += k_band[2, q] * v_out[j, col] + c_band[2, q] * (acc_out[j, col]
+                                                                - r[col, 0] * ag[j, 0]
+                                                                - ground_rest(r, col, ag, j))
     return -s * fl.m_inv[i]
 
 
@@ -222,15 +221,14 @@ def row_snap(i, j, j0, j1, h, ag, v_out, acc_out, fl):
                      + ground_rest(r, col, ag, j1) - ground_rest(r, col, ag, j0)) / h
             u3 = row_jerk(col, j, ag, v_out, acc_out, fl) - slope
             s += k_band[d, i] * rel + c_band[d, i] * u3
-    far = fl.far
-    for q in range(far.shape[0]):
-        if int(far[q, 0]) == i:
-            col = int(far[q, 1])
+    for q in range(n, k_band.shape[1]):  # (the entries outside the band)
+        if int(k_band[0, q]) == i:
+            col = int(k_band[1, q])
             rel = acc_out[j, col] - r[col, 0] * ag[j, 0] - ground_rest(r, col, ag, j)
             slope = (r[col, 0] * (ag[j1, 0] - ag[j0, 0])
                      + ground_rest(r, col, ag, j1) - ground_rest(r, col, ag, j0)) / h
             u3 = row_jerk(col, j, ag, v_out, acc_out, fl) - slope
-            s += far[q, 2] * rel + far[q, 3] * u3
+            s += k_band[2, q] * rel + c_band[2, q] * u3
     return -s * fl.m_inv[i]
 
 

@@ -49,6 +49,7 @@ from pounding.integrate.layout import (
     P_STOREY,
     RATE_SIDE,
     ROW_BLOCK,
+    STATION_MASS,
 )
 
 G_A0, G_A1, G_SLOPE, G_END, G_NOW = range(5)
@@ -159,12 +160,12 @@ def drift_of(lo, hi, y, n):
 
 
 @njit(**NRT_FREE)
-def band_mv(kb, cb, far, y, n, bw, lin):
+def band_mv(kb, cb, y, n, bw, lin):
     """``lin[0] = K y[:n]``, ``lin[1] = C y[n:2n]`` with K and C in band storage
-    (``kb[d, i] = K[i, i + d − bw]``) plus their few entries outside the band (``far``:
-    rows ``[i, j, K_ij, C_ij]``, :attr:`pounding.integrate.kernel_model.Floors.far`):
-    O(N·bw + far), each row of the band summed in column order, and the loop over rows
-    vectorises without reassociation."""
+    (``kb[d, i] = K[i, i + d − bw]``) plus their few entries outside the band (the
+    columns after the n-th: ``[i, j, K_ij]``, :func:`pounding.integrate.kernel_model.
+    kernel_bands`): O(N·bw + those), each row of the band summed in column order, and the
+    loop over rows vectorises without reassociation."""
     for i in range(n):
         lin[0, i] = 0.0
         lin[1, i] = 0.0
@@ -175,11 +176,11 @@ def band_mv(kb, cb, far, y, n, bw, lin):
         for i in range(lo, hi):
             lin[0, i] += kb[d, i] * y[i + off]
             lin[1, i] += cb[d, i] * y[n + i + off]
-    for q in range(far.shape[0]):
-        i = int(far[q, 0])
-        j = int(far[q, 1])
-        lin[0, i] += far[q, 2] * y[j]
-        lin[1, i] += far[q, 3] * y[n + j]
+    for q in range(n, kb.shape[1]):
+        i = int(kb[0, q])
+        j = int(kb[1, q])
+        lin[0, i] += kb[2, q] * y[j]
+        lin[1, i] += cb[2, q] * y[n + j]
 
 
 @njit(**NRT_FREE)
@@ -271,7 +272,7 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
             p_in -= v * mr[i, 0] * ag
             p_d += v * cv
     else:
-        band_mv(k_band, c_band, fl.far, y, n, bw, lin)
+        band_mv(k_band, c_band, y, n, bw, lin)
         for i in range(n):
             dy[row, i] = y[n + i]
             dy[row, n + i] = -(lin[0, i] + lin[1, i]) * m_inv[i] - r[i, 0] * ag
@@ -355,17 +356,27 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
         power[row, P_CONTACT + c] = f * rate
         if f != 0.0:
             # the force pushes the left point left and the right point right, shared to
-            # the floors with the point's weights (−w F on each); a ground station's DOF
-            # (1/m = 0: spatially varying ground, pounding.integrate.stations) is not
-            # pushed, and the work its motion does through the force is input
-            ground_rate = 0.0
+            # the floors with the point's weights (−w F on each)
             for q0 in range(0, cdof.shape[1], ROW_BLOCK):
                 for q in range(q0, q0 + ROW_BLOCK):
                     j = cdof[c, q]
                     dy[row, n + j] -= cw[c, q] * f * m_inv[j]
-                    if m_inv[j] == 0.0:
-                        ground_rate += cw[c, q] * y[n + j]
-            power[row, P_INPUT] += f * ground_rate
+    if r.shape[1] > 1:
+        # several grounds (spatially varying ground; or two components in plan, with no
+        # station): a ground station's DOF (mass STATION_MASS, pounding.integrate.stations)
+        # moves as its record says whatever the contacts push (what they pushed, Σ w F, is
+        # taken back here, out of the contact loop above, which stays as it is), and the
+        # work its motion does through them is input
+        m_diag = fl.m_diag
+        p_g = 0.0
+        for j in range(n):
+            if m_diag[j] == STATION_MASS:
+                free = 0.0
+                for g in range(r.shape[1]):
+                    free -= r[j, g] * gnd[G_NOW, g]
+                p_g += (free - dy[row, n + j]) * y[n + j]
+                dy[row, n + j] = free
+        power[row, P_INPUT] += p_g
 
 
 @njit(**NRT_FREE)
@@ -394,7 +405,7 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     for i in range(n):
         work[i] = x[n + i]
         work[n + i] = dx[n + i]
-    band_mv(fl.k_band, fl.c_band, fl.far, work, n, fl.bw, lin)
+    band_mv(fl.k_band, fl.c_band, work, n, fl.bw, lin)
     for i in range(n):
         out[i] = lin[0, i] + lin[1, i]
     for s in range(s_lo.shape[0]):

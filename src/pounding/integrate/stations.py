@@ -13,11 +13,12 @@ whose motion is prescribed: no stiffness, no damping, its acceleration the stati
 record (influence −1 in its column: ``ü = −r a_g = a_g,s``), integrated by the same exact
 and adaptive steps as the buildings — so, for records linear between their samples, exactly
 the double integral of the record from rest. It has a negligible mass
-(:data:`STATION_MASS`, so it adds nothing to the kinetic or input energy) and takes no
-force (its ``1/m`` is 0: a contact cannot push the ground). The contact rows gain the two
-stations' displacements with weights +1 (left) and −1 (right); the work a moving ground
-does through a contact force is input energy (:func:`pounding.integrate.rhs.deriv`), so the
-energy balance still closes.
+(:data:`~pounding.integrate.layout.STATION_MASS`, so it adds nothing to the kinetic or input
+energy), and no force moves it: :func:`pounding.integrate.rhs.deriv` takes back what the
+contacts push on it (outside its contact loop, which stays as it is for every other model)
+and counts the work the moving ground does through the contact forces as input energy, so
+the energy balance still closes. The contact rows gain the two stations' displacements with
+weights +1 (left) and −1 (right).
 
 Not yet: buildings in plan (two ground components), links between buildings on different
 stations, yielding frames (refused in one line).
@@ -32,17 +33,15 @@ import numpy as np
 from pounding.integrate.kernel_model import (
     ContactRows,
     KernelModel,
-    band_storage,
+    kernel_bands,
     kernel_model,
     padded_rows,
 )
+from pounding.integrate.layout import STATION_MASS
 from pounding.model import PoundingModel
 
 __all__ = ["STATION_MASS", "station_kernel_model"]
 
-STATION_MASS: float = 1e-30
-"""The mass given to a ground station's DOF [kg]: its kinetic energy and the input energy of
-its own record vanish (its ``1/m`` is set to 0 apart: no force moves it)."""
 
 _STATION_MODELS: dict[tuple[int, tuple[int, ...]], KernelModel] = {}
 
@@ -93,13 +92,14 @@ def station_kernel_model(model: PoundingModel, stations: tuple[int, ...]) -> Ker
         r[rows, stations[b]] = fl.r[rows, 0]
     r[N + np.arange(S), np.arange(S)] = -1.0
     m_diag = np.r_[fl.m_diag, np.full(S, STATION_MASS)]
-    m_inv = np.r_[fl.m_inv, np.zeros(S)]
+    m_inv = np.r_[fl.m_inv, np.ones(S)]  # (what the contacts push is taken back: rhs.deriv)
     K = np.zeros((n, n))
     K[:N, :N] = base.K
     C = np.zeros((n, n))
     C[:N, :N] = base.C
     below = np.r_[fl.below, N + np.arange(S)]  # (a station is not a floor: no drift)
-    floors = fl._replace(k_band=band_storage(K, fl.bw), c_band=band_storage(C, fl.bw),
+    k_band, c_band = kernel_bands(K, C, fl.bw)
+    floors = fl._replace(k_band=k_band, c_band=c_band,
                          m_diag=m_diag, m_inv=m_inv, mr=np.ascontiguousarray(m_diag[:, None] * r),
                          r=np.ascontiguousarray(r), below=below)
     ct = base.contacts
