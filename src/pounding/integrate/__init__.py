@@ -21,7 +21,6 @@ import contextlib
 import sys
 import time
 import warnings
-import weakref
 from collections.abc import Callable, Iterator
 from typing import NamedTuple
 
@@ -52,6 +51,7 @@ from pounding.integrate.kernel_model import (
     half_bandwidth,
     kernel_model,
     peak_margin,
+    remembered_for,
 )
 from pounding.integrate.layout import (
     FAIL_BUDGET,
@@ -212,17 +212,7 @@ cases of a sweep that share a model (:mod:`pounding.studies.sweep.builder`) chec
 def _model_notes(model: PoundingModel) -> _ModelNotes:
     """The notes of a model (fresh ones, not kept, for a model that cannot be weakly
     referenced)."""
-    key = id(model)
-    notes = _NOTES.get(key)
-    if notes is None:
-        notes = _ModelNotes(set(), {}, [])
-        try:
-            # the entry must go when the model does (before its id can be reused)
-            weakref.finalize(model, _NOTES.pop, key, None)
-        except TypeError:
-            return notes
-        _NOTES[key] = notes
-    return notes
+    return remembered_for(model, _NOTES, id(model), lambda: _ModelNotes(set(), {}, []))
 
 
 _kernel_loaded: list[bool] = []

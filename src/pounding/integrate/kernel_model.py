@@ -5,7 +5,8 @@ taken."""
 from __future__ import annotations
 
 import weakref
-from typing import NamedTuple
+from collections.abc import Callable
+from typing import Any, NamedTuple, TypeVar
 
 import numpy as np
 
@@ -259,21 +260,31 @@ like a real :class:`FreeStep`'s arrays, so that numba compiles the kernel for on
 only (not a second one, 37–56 s on 2 cores, for yielding or very large models)."""
 
 
-def kernel_model(model: PoundingModel) -> KernelModel:
-    """The model's :class:`KernelModel`, assembled on its first run and remembered until the
-    model is garbage-collected (models are frozen; they hold NumPy arrays, so they are
-    remembered by identity, not by value)."""
-    key = id(model)
-    km = _KERNEL_MODELS.get(key)
-    if km is None:
-        km = _assemble_kernel_model(model)
+_T = TypeVar("_T")
+
+
+def remembered_for(model: object, store: dict[Any, _T], key: Any, make: Callable[[], _T]) -> _T:
+    """``store[key]``, made by ``make()`` the first time and kept until ``model`` is
+    garbage-collected (models are frozen and hold NumPy arrays, so what belongs to one is
+    remembered by its identity, in ``key``, not by its value); not kept for a model that
+    cannot be weakly referenced."""
+    value = store.get(key)
+    if value is None:
+        value = make()
         try:
             # the entry must go when the model does (before its id can be reused)
-            weakref.finalize(model, _KERNEL_MODELS.pop, key, None)
+            weakref.finalize(model, store.pop, key, None)
         except TypeError:
-            return km  # a model that cannot be weakly referenced is not remembered
-        _KERNEL_MODELS[key] = km
-    return km
+            return value
+        store[key] = value
+    return value
+
+
+def kernel_model(model: PoundingModel) -> KernelModel:
+    """The model's :class:`KernelModel`, assembled on its first run and remembered until the
+    model is garbage-collected (:func:`remembered_for`)."""
+    return remembered_for(model, _KERNEL_MODELS, id(model),
+                          lambda: _assemble_kernel_model(model))
 
 
 STRUCTURES = Memo(max_items=64, max_bytes=256 << 20)

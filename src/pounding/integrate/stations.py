@@ -26,8 +26,6 @@ stations, yielding frames (refused in one line).
 
 from __future__ import annotations
 
-import weakref
-
 import numpy as np
 
 from pounding.integrate.kernel_model import (
@@ -36,6 +34,7 @@ from pounding.integrate.kernel_model import (
     kernel_bands,
     kernel_model,
     padded_rows,
+    remembered_for,
 )
 from pounding.integrate.layout import STATION_MASS
 from pounding.model import PoundingModel
@@ -75,11 +74,13 @@ def station_kernel_model(model: PoundingModel, stations: tuple[int, ...]) -> Ker
     ValueError
         For what is not modelled yet (module docstring), in one line.
     """
-    key = (id(model), stations)
-    km = _STATION_MODELS.get(key)
-    if km is not None:
-        return km
     _check(model, stations)
+    return remembered_for(model, _STATION_MODELS, (id(model), stations),
+                          lambda: _assemble(model, stations))
+
+
+def _assemble(model: PoundingModel, stations: tuple[int, ...]) -> KernelModel:
+    """:func:`station_kernel_model`, assembled."""
     base = kernel_model(model)
     N = base.n
     S = max(stations) + 1
@@ -118,12 +119,6 @@ def station_kernel_model(model: PoundingModel, stations: tuple[int, ...]) -> Ker
             dof[c.index, width:] = cdof[c.index, 0]
     dof, w = padded_rows(dof, w)
     contacts = ContactRows(dof, w, ct.gap, ct.code, ct.params)
-    km = KernelModel(n=n, nz=base.nz, K=K, C=C,
-                     arrays=base.arrays._replace(floors=floors, contacts=contacts),
-                     free_steps={}, periods_checked=set())
-    try:
-        weakref.finalize(model, _STATION_MODELS.pop, key, None)
-    except TypeError:
-        return km
-    _STATION_MODELS[key] = km
-    return km
+    return KernelModel(n=n, nz=base.nz, K=K, C=C,
+                       arrays=base.arrays._replace(floors=floors, contacts=contacts),
+                       free_steps={}, periods_checked=set())
