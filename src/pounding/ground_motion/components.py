@@ -15,14 +15,36 @@ zero over one record step after its last sample and stays zero (the rule of
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 
 from pounding.ground_motion.motion import GroundMotion
 from pounding.units import G
 
-__all__ = ["GroundMotionComponents"]
+__all__ = ["GroundMotionComponents", "records_of_one_step"]
+
+
+def records_of_one_step(records: Iterable[GroundMotion], what: str, item: str
+                        ) -> tuple[GroundMotion, ...]:
+    """``records`` as a tuple, checked: at least one, each a :class:`GroundMotion`, all of
+    one step (to 1e-12); else one line naming ``what``, the ``item`` and its value
+    (``"component 1 ('b') has dt = …"``)."""
+    recs = tuple(records)
+    if not recs:
+        raise ValueError(f"{what}: need at least one record (got none)")
+    for g, c in enumerate(recs):
+        if not isinstance(c, GroundMotion):
+            raise ValueError(f"{what}: {item} {g} must be a GroundMotion (got "
+                             f"{type(c).__name__})")
+    dt0 = recs[0].dt
+    for g, c in enumerate(recs[1:], start=1):
+        if not math.isclose(c.dt, dt0, rel_tol=1e-12, abs_tol=0.0):
+            raise ValueError(f"{what}: {item} {g} ({c.name!r}) has dt = {c.dt:g} s, {item} 0 "
+                             f"({recs[0].name!r}) dt = {dt0:g} s; resample to one step")
+    return recs
 
 
 @dataclass(frozen=True, eq=False)
@@ -48,19 +70,7 @@ class GroundMotionComponents:
     name: str = ""
 
     def __post_init__(self) -> None:
-        comps = tuple(self.components)
-        if not comps:
-            raise ValueError("ground motion components: need at least one record (got none)")
-        for g, c in enumerate(comps):
-            if not isinstance(c, GroundMotion):
-                raise ValueError(f"ground motion components: component {g} must be a "
-                                 f"GroundMotion (got {type(c).__name__})")
-        dt0 = comps[0].dt
-        for g, c in enumerate(comps[1:], start=1):
-            if not math.isclose(c.dt, dt0, rel_tol=1e-12, abs_tol=0.0):
-                raise ValueError(f"ground motion components: component {g} ({c.name!r}) has "
-                                 f"dt = {c.dt:g} s, component 0 ({comps[0].name!r}) "
-                                 f"dt = {dt0:g} s; resample to one step")
+        comps = records_of_one_step(self.components, "ground motion components", "component")
         object.__setattr__(self, "components", comps)
         if not self.name:
             object.__setattr__(self, "name", " + ".join(c.name for c in comps))

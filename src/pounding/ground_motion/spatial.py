@@ -29,6 +29,7 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
+from pounding.ground_motion.components import records_of_one_step
 from pounding.ground_motion.motion import GroundMotion
 from pounding.validation import finite, non_negative
 
@@ -74,17 +75,8 @@ class SpatialMotion(GroundMotion):
 
     def __init__(self, records: Sequence[GroundMotion], name: str | None = None,
                  description: str = "", delays: Sequence[float] | None = None) -> None:
-        recs = tuple(records)
-        if not recs:
-            raise ValueError("spatial motion: give one record per building (got none)")
-        for i, r in enumerate(recs):
-            if not isinstance(r, GroundMotion):
-                raise ValueError(f"spatial motion: records[{i}] is not a GroundMotion "
-                                 f"(got {type(r).__name__})")
-            if r.dt != recs[0].dt:
-                raise ValueError(f"spatial motion: records[{i}] ({r.name!r}) has dt = "
-                                 f"{r.dt:g} s, records[0] has {recs[0].dt:g} s; give every "
-                                 "building's record one step")
+        recs = records_of_one_step(records, "spatial motion (one record per building)",
+                                   "record")
         n = max(r.npts for r in recs)
         padded = tuple(r if r.npts == n else GroundMotion(
             r.dt, np.concatenate([r.accel, np.zeros(n - r.npts)]), r.name, r.source,

@@ -366,16 +366,18 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
         # station): a ground station's DOF (mass STATION_MASS, pounding.integrate.stations)
         # moves as its record says whatever the contacts push (what they pushed, Σ w F, is
         # taken back here, out of the contact loop above, which stays as it is), and the
-        # work its motion does through them is input
+        # work its motion does through them is input. The stations are the last DOFs: a
+        # model in plan stops at its last floor, at once
         m_diag = fl.m_diag
         p_g = 0.0
-        for j in range(n):
-            if m_diag[j] == STATION_MASS:
-                free = 0.0
-                for g in range(r.shape[1]):
-                    free -= r[j, g] * gnd[G_NOW, g]
-                p_g += (free - dy[row, n + j]) * y[n + j]
-                dy[row, n + j] = free
+        j = n - 1
+        while j >= 0 and m_diag[j] == STATION_MASS:
+            free = 0.0
+            for g in range(r.shape[1]):
+                free -= r[j, g] * gnd[G_NOW, g]
+            p_g += (free - dy[row, n + j]) * y[n + j]
+            dy[row, n + j] = free
+            j -= 1
         power[row, P_INPUT] += p_g
 
 
