@@ -100,8 +100,22 @@ def test_bad_foundations_are_one_line(change: tuple[str, Any], expected: str) ->
     assert expected in message and "\n" not in message
 
 
-def test_a_yielding_building_on_a_flexible_base_is_refused() -> None:
+def test_a_yielding_building_needs_a_footing_with_mass_and_inertia() -> None:
+    """A yielding building's footing must be a degree of freedom (no static condensation of
+    a nonlinear building): without its mass, or its inertia, one line names the key."""
     data = on_soil()
     data["building"][0]["storey_law"] = {"type": "bilinear", "yield_force": 1e6}
-    assert "building[0].foundation: a building on a flexible base stays linear here" in \
-        error_of(data)
+    model, _, _ = parse_config(data, where="m.toml").build()  # (with both: it builds)
+    assert model.buildings[0].yielding == (0, 1, 2)
+    del data["building"][0]["foundation"]["mass"]
+    message = error_of(data)
+    assert "building[0].foundation.mass: a yielding building's footing needs its mass" in \
+        message and "\n" not in message
+    data["building"][0]["foundation"]["mass"] = 2e5
+    del data["building"][0]["foundation"]["inertia"]
+    assert "building[0].foundation.inertia: a yielding building's footing needs its " \
+           "inertia" in error_of(data)
+    data["building"][0]["isolator"] = {"law": "friction-pendulum", "radius": 2.0,
+                                       "mu": 0.05, "base_mass": 1e5}
+    data["building"][0].pop("storey_law")
+    assert "building[0].foundation: not under a base-isolated building" in error_of(data)

@@ -54,7 +54,7 @@ from pounding.devices import Bumper, Link
 from pounding.devices.bumper import split_contact
 from pounding.hysteresis.base import PARAMS_SIZE as STOREY_PARAMS_SIZE
 from pounding.memo import Memo
-from pounding.structure import MatrixBuilding, ShearBuilding
+from pounding.structure import MatrixBuilding
 from pounding.structure.assembly import (
     BUILDING_TYPES,
     AssembledSystem,
@@ -486,13 +486,13 @@ class PoundingModel:
         nz = 0
         for p, b in enumerate(self.buildings):
             law = b.storey_law
-            if law is None or not isinstance(b, ShearBuilding):
+            if law is None:
                 continue  # linear storeys (a matrix building has no storey law)
             check_storey_law(law)
             prm = b.storey_law_params()
-            for r, j in enumerate(b.yielding):
-                upper.append(int(offsets[p] + j))
-                lower.append(int(offsets[p] + j - 1) if j > 0 else -1)
+            for r, (lo, hi, _, _) in enumerate(b.yielding_storey_dofs()):
+                upper.append(int(offsets[p] + hi))
+                lower.append(int(offsets[p] + lo) if lo >= 0 else -1)
                 code.append(law.code)
                 rows.append(prm[r])
                 zi.append(nz if law.has_internal_variable else -1)
@@ -511,6 +511,25 @@ class PoundingModel:
                 np.array(code, dtype=np.int64),
                 np.array(rows, dtype=float).reshape(len(rows), width),
                 np.array(zi, dtype=np.int64))
+
+    def storey_rocking(self) -> tuple[NDArray[np.int64], NDArray[np.float64]]:
+        """For every row of :meth:`storey_arrays`, the DOF of the rocking footing under it
+        (−1: none) and its lever [m]: the storey's drift is ``u[upper] − u[lower] −
+        lever · u[rock]`` (a storey of a building on a flexible base,
+        :meth:`pounding.structure.foundation.FlexibleBaseBuilding.yielding_storey_dofs`); the
+        links after the storeys have none."""
+        offsets = self.system.offsets
+        rock: list[int] = []
+        lever: list[float] = []
+        for p, b in enumerate(self.buildings):
+            if b.storey_law is None:
+                continue
+            for _, _, rk, arm in b.yielding_storey_dofs():
+                rock.append(int(offsets[p] + rk) if rk >= 0 else -1)
+                lever.append(float(arm))
+        rock += [-1] * len(self.links)
+        lever += [0.0] * len(self.links)
+        return np.array(rock, dtype=np.int64), np.array(lever, dtype=float)
 
     def linear_stiffness(self) -> NDArray[np.float64]:
         """Stiffness matrix [N/m] of the linear storeys only (yielding storeys left out: the

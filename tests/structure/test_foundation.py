@@ -246,5 +246,8 @@ def test_refusals() -> None:
         Soil(150.0, 1800.0, 0.5)
     from pounding.hysteresis.bilinear import Bilinear
 
-    with pytest.raises(ValueError, match="stays linear"):
-        flexible_base(b.with_storey_law(Bilinear(yield_force=1e6)), Footing(radius=5.0), SOIL)
+    yielding = b.with_storey_law(Bilinear(yield_force=1e6))
+    with pytest.raises(ValueError, match="foundation.mass: a yielding building's footing"):
+        flexible_base(yielding, Footing(radius=5.0), SOIL)
+    with pytest.raises(ValueError, match="foundation.inertia: a yielding building's footing"):
+        flexible_base(yielding, Footing(radius=5.0, mass=1e5), SOIL)

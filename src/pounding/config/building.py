@@ -88,9 +88,10 @@ class BuildingConfig(Section):
       (:class:`ElementConfig`), the lateral load-resisting elements. Linear: no storey law,
       no isolator. Under two horizontal components of the ground (``[record] second``).
 
-    ``foundation`` (:class:`pounding.config.foundation.FoundationConfig`) puts a linear
-    SDOF, uniform, storey-by-storey or matrix building on a footing on soil (a flexible
-    base: :func:`pounding.structure.foundation.flexible_base`).
+    ``foundation`` (:class:`pounding.config.foundation.FoundationConfig`) puts an SDOF,
+    uniform, storey-by-storey or matrix building on a footing on soil (a flexible base:
+    :func:`pounding.structure.foundation.flexible_base`); a building with ``storey_law``
+    there needs the footing's ``mass`` and ``inertia``.
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF, 5 %
     Rayleigh at modes 1 and 3 for a building in plan (the PlanBuilding's own: modes 1 and 2
@@ -170,11 +171,18 @@ class BuildingConfig(Section):
                 raise field_error("foundation", f"not yet for a building {given}: a flexible "
                                                 "base takes SDOF, uniform, storey-by-storey "
                                                 "and matrix buildings")
-            for key in ("storey_law", "isolator"):
-                if getattr(self, key) is not None:
-                    raise field_error("foundation", f"a building on a flexible base stays "
-                                                    f"linear here: give foundation or {key}, "
-                                                    "not both")
+            if self.isolator is not None:
+                raise field_error("foundation", "not under a base-isolated building: give "
+                                                "foundation or isolator, not both")
+            if self.storey_law is not None:
+                f = self.foundation
+                for key in ("mass", "inertia"):
+                    if getattr(f, key) <= 0.0:
+                        raise field_error(("foundation", key), f"a yielding building's footing "
+                                          f"needs its {key} (got {getattr(f, key):g}): its sway "
+                                          "and rocking are then degrees of freedom (only a "
+                                          "linear building's massless footing is condensed "
+                                          "out)")
         if self.isolator is not None and self.storey_law is not None:
             raise field_error("isolator", "a base-isolated building's superstructure stays "
                                           "linear: give isolator or storey_law, not both")

@@ -13,8 +13,9 @@ interaction, :mod:`pounding.structure.foundation`).
   soil's own damping of EN 1998-5 Table 4.1 for that level of shaking (default: the
   small-strain modulus, no material damping).
 
-A building on a flexible base is linear: an SDOF, uniform, storey-by-storey or matrix
-building without ``storey_law`` or ``isolator``.
+A building on a flexible base is an SDOF, uniform, storey-by-storey or matrix building,
+not base-isolated; one with ``storey_law`` (yielding storeys) needs the footing's ``mass``
+and ``inertia`` (its sway and rocking are then degrees of freedom).
 """
 
 from __future__ import annotations

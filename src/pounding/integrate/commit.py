@@ -37,7 +37,7 @@ from pounding.integrate.layout import (
     IMP_V0,
     ROW_BLOCK,
 )
-from pounding.integrate.rhs import INLINE, drift_of, gap_row, law_call, storey_call
+from pounding.integrate.rhs import INLINE, element_drift, gap_row, law_call, storey_call
 
 
 @njit(**INLINE)
@@ -46,7 +46,7 @@ def commit_storeys(x, n, el, sstate):
     (contract step 3 of :mod:`pounding.hysteresis.base`)."""
     s_lo, s_hi, s_code, s_par, s_zi = el.lo, el.hi, el.code, el.params, el.z_index
     for q in range(s_lo.shape[0]):
-        d, dr = drift_of(s_lo[q], s_hi[q], x, n)
+        d, dr = element_drift(q, s_lo[q], s_hi[q], s_par, x, n)
         zi = s_zi[q]
         sstate[q, V_C] = storey_call(s_code[q], s_par, q, d, dr,
                                      x[2 * n + zi] if zi >= 0 else 0.0,

@@ -21,6 +21,8 @@ from pounding.contact.dispatch import law_releases, release_value
 from pounding.devices.laws import DEVICE_MIN, has_rate_cusp
 from pounding.integrate.dormand_prince import rk_step
 from pounding.integrate.layout import (
+    EL_LEVER,
+    EL_ROCK,
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
     EV_GRAZE,
@@ -49,7 +51,7 @@ from pounding.integrate.layout import (
 from pounding.integrate.rhs import (
     G_END,
     NRT_FREE,
-    drift_of,
+    element_drift,
     gap_row,
     ground_at,
     hinge_row,
@@ -198,7 +200,7 @@ def event_value(kind, c, y, n, ct, el, hg):
     rotation less an end of its branch (the branch's ends) or its rate (reversals); ``ct``,
     ``el``, ``hg``: the contacts, element rows and hinge rows."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
-        return drift_of(el.lo[c], el.hi[c], y, n)[1]
+        return element_drift(c, el.lo[c], el.hi[c], el.params, y, n)[1]
     if kind >= EV_HINGE_HI:
         th, th_rate = hinge_row(c, y, n, hg)
         if kind == EV_HINGE_HI:
@@ -351,8 +353,8 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
     for s in range(s_lo.shape[0]):
         if s_code[s] >= DEVICE_MIN and not has_rate_cusp(s_code[s], s_par[s, 1]):
             continue  # a link whose force is smooth where its rate reverses: no event
-        r0 = drift_of(s_lo[s], s_hi[s], y0, n)[1]
-        r1 = drift_of(s_lo[s], s_hi[s], y1, n)[1]
+        r0 = element_drift(s, s_lo[s], s_hi[s], s_par, y0, n)[1]
+        r1 = element_drift(s, s_lo[s], s_hi[s], s_par, y1, n)[1]
         kind = EV_DRIFT_MAX if r0 > 0.0 else EV_DRIFT_MIN
         if s == skip_c and skip_kind == kind:
             continue
@@ -360,6 +362,10 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
         lo = s_lo[s]
         acc0 = k0[0, n + hi] - (k0[0, n + lo] if lo >= 0 else 0.0)
         acc1 = k1[6, n + hi] - (k1[6, n + lo] if lo >= 0 else 0.0)
+        if s_par[s, EL_ROCK] >= 0.0:  # (a storey over a rocking footing)
+            rk = int(s_par[s, EL_ROCK])
+            acc0 -= s_par[s, EL_LEVER] * k0[0, n + rk]
+            acc1 -= s_par[s, EL_LEVER] * k1[6, n + rk]
         t = rate_event(r0, acc0, r1, acc1, h, best_t)
         if t >= 0.0:
             best_t, best_c, best_k = t, s, kind

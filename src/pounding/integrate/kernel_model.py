@@ -11,7 +11,13 @@ from typing import Any, NamedTuple, TypeVar
 import numpy as np
 
 from pounding.contact.dispatch import PARAMS_SIZE as P_CONTACT_LAW
-from pounding.integrate.layout import HS_COLUMNS, ROW_BLOCK
+from pounding.integrate.layout import (
+    EL_LEVER,
+    EL_ROCK,
+    ELEMENT_PARAMS,
+    HS_COLUMNS,
+    ROW_BLOCK,
+)
 from pounding.integrate.propagator import FreeStep
 from pounding.memo import Memo
 from pounding.model import PoundingModel
@@ -160,7 +166,9 @@ class ElementRows(NamedTuple):
     lo: np.ndarray  #: DOF below (−1: the ground) (n_s,)
     hi: np.ndarray  #: DOF above (n_s,)
     code: np.ndarray  #: storey-law or link codes (n_s,)
-    params: np.ndarray  #: their constants (n_s, P)
+    #: their constants (n_s, ELEMENT_PARAMS): the law's, then a rocking footing's DOF and lever
+    #: (:data:`pounding.integrate.layout.EL_ROCK`)
+    params: np.ndarray
     z_index: np.ndarray  #: index of each row's internal variable z among the states (−1: none)
 
 
@@ -336,7 +344,12 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     floors = Floors(bw, k_band, c_band, m_diag, 1.0 / m_diag,
                     np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
                     NO_FRAME_ROWS)
-    elements = ElementRows(s_lo, s_hi, s_code, np.ascontiguousarray(s_par), s_zi)
+    rock, lever = model.storey_rocking()
+    par = np.zeros((s_lo.size, ELEMENT_PARAMS))
+    par[:, : s_par.shape[1]] = s_par  # (a law's constants: at most EL_ROCK of them)
+    par[:, EL_ROCK] = rock
+    par[:, EL_LEVER] = lever
+    elements = ElementRows(s_lo, s_hi, s_code, par, s_zi)
     no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
                               np.zeros((0, ROW_BLOCK)), np.zeros(0),
                               np.zeros(0, dtype=np.int64), np.zeros((0, P_CONTACT_LAW)))

@@ -80,6 +80,18 @@ STOP_HINGE = 1
 """``ws_i[I_STOP]``: the call returned at a located hinge event (the step to it accepted,
 ``ws_f[W_RESUME_S]`` the local time in grid step ``ws_i[I_REACHED]``)."""
 
+# ---------------------------------------------------------------- element rows
+EL_ROCK, EL_LEVER = 6, 7
+ELEMENT_PARAMS = 8
+"""Columns of an element row's constants (``ElementRows.params``, :meth:`pounding.model.
+PoundingModel.storey_arrays`): its law's constants first (at most 6 of them,
+:data:`pounding.hysteresis.base.PARAMS_SIZE`), then a third DOF its drift takes and that
+DOF's lever [m]: ``d = u[hi] − u[lo] − lever · u[rock]`` — a storey of a building on a
+flexible base, whose footing rocks by ``u[rock]`` [rad] under it
+(:mod:`pounding.structure.foundation.flexible_base`); −1 (as a float): none, and the lever
+is 0. In the constants' array, not arrays of their own: every array of a group is passed to
+every call that takes the group."""
+
 # ---------------------------------------------------------------- hinge rows (yielding frames)
 (HS_A0, HS_LO, HS_HI, HS_DIR, HS_KT, HS_Q, HS_THETA_C, HS_M_C, HS_WORK_C, HS_K_UNLOAD,
  HS_REC0, HS_WABS, HS_TH0, HS_R0, HS_TH1, HS_R1) = range(16)

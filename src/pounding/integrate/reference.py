@@ -51,6 +51,7 @@ from pounding.integrate.reference_laws import (
     maxwell_spring_rate,
     release_function,
     stored_energy,
+    storey_load,
     storey_recoverable,
     storey_shear,
 )
@@ -152,6 +153,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         st = storeys[s]
         lo_u = y[st.lower] if st.lower >= 0 else 0.0
         lo_v = y[n + st.lower] if st.lower >= 0 else 0.0
+        if st.rock >= 0:  # a storey over a rocking footing: its lever times the rocking
+            lo_u += st.lever * y[st.rock]
+            lo_v += st.lever * y[n + st.rock]
         return y[st.upper] - lo_u, y[n + st.upper] - lo_v
 
     def storey_shears(y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -192,9 +196,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
             vs, hdot = storey_shears(y)
             p_storey = 0.0
             for s, st in enumerate(storeys):
-                p[st.upper] -= vs[s]
-                if st.lower >= 0:
-                    p[st.lower] += vs[s]
+                storey_load(p, st, vs[s])
                 p_storey += vs[s] * drift(y, s)[1]
             fl, rl, zdot = link_forces(y)
             add_link_loads(p, fl)
@@ -278,9 +280,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 np.add.at(p[:, k], cdof[c], -cw[c] * f[c])
             vs = storey_shears(yt[:, k])[0]
             for s, st in enumerate(storeys):
-                p[st.upper, k] -= vs[s]
-                if st.lower >= 0:
-                    p[st.lower, k] += vs[s]
+                storey_load(p[:, k], st, vs[s])
             add_link_loads(p[:, k], link_forces(yt[:, k])[0])
         a_abs = -minv_k @ u - minv_c @ v + minv @ p
         return np.abs(np.stack([u, u - lower, a_abs]))
@@ -426,14 +426,13 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         for c in range(nc):
             np.add.at(p, cdof[c], -cw[c] * f_out[k, c])
         for s, st in enumerate(storeys):
-            p[st.upper] -= vs_out[k, s]
-            if st.lower >= 0:
-                p[st.lower] += vs_out[k, s]
+            storey_load(p, st, vs_out[k, s])
         add_link_loads(p, lf_out[k])
         acc[k] = -minv_k @ u_out[k] - minv_c @ v_out[k] + minv @ p
     recov = np.zeros(nt)
     for s, st in enumerate(storeys):
-        storey_drift = u_out[:, st.upper] - (u_out[:, st.lower] if st.lower >= 0 else 0.0)
+        storey_drift = (u_out[:, st.upper] - (u_out[:, st.lower] if st.lower >= 0 else 0.0)
+                        - (st.lever * u_out[:, st.rock] if st.rock >= 0 else 0.0))
         recov += storey_recoverable(st, storey_drift, out[:, i_h + s])
     recov_links = np.zeros(nt)
     for q, lk in enumerate(links):

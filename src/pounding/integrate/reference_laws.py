@@ -32,6 +32,7 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from pounding.contact import (
     BilinearImpact,
@@ -132,6 +133,19 @@ class Storey(NamedTuple):
     n: float = 1.0  #: Bouc–Wen: smoothness
     beta: float = 0.5  #: Bouc–Wen: loop shape
     gamma: float = 0.5  #: Bouc–Wen: loop shape
+    rock: int = -1  #: global DOF of a rocking footing under the storey (−1: none)
+    lever: float = 0.0  #: the storey's height over it [m]: drift less ``lever · φ``
+
+
+def storey_load(p: NDArray[np.float64], st: Storey, shear: float) -> None:
+    """Add a yielding storey's shear ``V`` to the loads ``p`` [N]: ``−V`` on the floor
+    above, ``+V`` on the one below, and the moment ``lever · V`` on a rocking footing under
+    it (the transpose of its drift)."""
+    p[st.upper] -= shear
+    if st.lower >= 0:
+        p[st.lower] += shear
+    if st.rock >= 0:
+        p[st.rock] += st.lever * shear
 
 
 def storeys(model: PoundingModel) -> list[Storey]:
@@ -140,26 +154,31 @@ def storeys(model: PoundingModel) -> list[Storey]:
     isolation storey); the others are in the linear stiffness matrix."""
     from pounding.hysteresis import Bilinear, BoucWen
     from pounding.structure import ShearBuilding
+    from pounding.structure.foundation import FlexibleBaseBuilding
 
     out = []
     offsets = model.system.offsets
     for p, b in enumerate(model.buildings):
-        if not isinstance(b, ShearBuilding):
-            continue  # a matrix building is linear (its storey_law is None)
         law = b.storey_law
-        if law is None:
-            continue
+        # a shear building, or one on a flexible base (its storeys over a rocking footing)
+        shear = (b if isinstance(b, ShearBuilding) else
+                 b.fixed_base if isinstance(b, FlexibleBaseBuilding) else None)
+        if law is None or not isinstance(shear, ShearBuilding):
+            continue  # (a matrix building is linear: its storey_law is None)
         ys = list(b.yielding)
-        fy = law.yield_forces(b.stiffnesses[ys])
-        for r, j in enumerate(ys):
-            lo = int(offsets[p] + j - 1) if j > 0 else -1
-            hi = int(offsets[p] + j)
-            k = float(b.stiffnesses[j])
+        fy = law.yield_forces(shear.stiffnesses[ys])
+        for r, (j, (lo_j, hi_j, rk, lever)) in enumerate(zip(ys, b.yielding_storey_dofs())):
+            lo = int(offsets[p] + lo_j) if lo_j >= 0 else -1
+            hi = int(offsets[p] + hi_j)
+            rock = int(offsets[p] + rk) if rk >= 0 else -1
+            k = float(shear.stiffnesses[j])
             if isinstance(law, Bilinear):
-                out.append(Storey("bilinear", lo, hi, k, float(fy[r]), b=law.hardening))
+                out.append(Storey("bilinear", lo, hi, k, float(fy[r]), b=law.hardening,
+                                  rock=rock, lever=float(lever)))
             elif isinstance(law, BoucWen):
                 out.append(Storey("bouc-wen", lo, hi, k, float(fy[r]), alpha=law.alpha,
-                                  n=law.n, beta=law.beta, gamma=law.gamma))
+                                  n=law.n, beta=law.beta, gamma=law.gamma, rock=rock,
+                                  lever=float(lever)))
             else:
                 raise ValueError(f"reference: no reference for storey law {law!r}")
     return out

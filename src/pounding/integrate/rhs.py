@@ -41,6 +41,8 @@ from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 from pounding.integrate.layout import (
     DELTA_EPS,
+    EL_LEVER,
+    EL_ROCK,
     HS_A0,
     P_CONTACT,
     P_DAMP,
@@ -157,6 +159,21 @@ def drift_of(lo, hi, y, n):
     if lo >= 0:
         return y[hi] - y[lo], y[n + hi] - y[n + lo]
     return y[hi], y[n + hi]
+
+
+@njit(**NRT_FREE)
+def element_drift(s, lo, hi, par, y, n):
+    """Drift and drift rate of element row ``s`` (DOFs ``lo`` and ``hi``, constants ``par``):
+    :func:`drift_of`, less its lever times the rocking of a flexible base under it
+    (``d = u[hi] − u[lo] − lever · φ``, :data:`pounding.integrate.layout.EL_ROCK`)."""
+    d, dr = drift_of(lo, hi, y, n)
+    rock = par[s, EL_ROCK]
+    if rock >= 0.0:
+        i = int(rock)
+        lever = par[s, EL_LEVER]
+        d -= lever * y[i]
+        dr -= lever * y[n + i]
+    return d, dr
 
 
 @njit(**NRT_FREE)
@@ -298,7 +315,7 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     p_s = 0.0
     p_dev = 0.0
     for s in range(s_lo.shape[0]):
-        d, dr = drift_of(s_lo[s], s_hi[s], y, n)
+        d, dr = element_drift(s, s_lo[s], s_hi[s], s_par, y, n)
         zi = s_zi[s]
         z = y[2 * n + zi] if zi >= 0 else 0.0
         v, kt, zd = storey_call(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])
@@ -307,6 +324,9 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
         dy[row, n + hi] -= v * m_inv[hi]
         if lo >= 0:
             dy[row, n + lo] += v * m_inv[lo]
+        if s_par[s, EL_ROCK] >= 0.0:  # the storey's moment V·lever on the rocking footing
+            rk = int(s_par[s, EL_ROCK])
+            dy[row, n + rk] += s_par[s, EL_LEVER] * v * m_inv[rk]
         if zi >= 0:
             dy[row, 2 * n + zi] = zd
         if s_code[s] >= DEVICE_MIN:
@@ -411,7 +431,7 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     for i in range(n):
         out[i] = lin[0, i] + lin[1, i]
     for s in range(s_lo.shape[0]):
-        d, dr = drift_of(s_lo[s], s_hi[s], x, n)
+        d, dr = element_drift(s, s_lo[s], s_hi[s], s_par, x, n)
         zi = s_zi[s]
         z = x[2 * n + zi] if zi >= 0 else 0.0
         kt = storey_call(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])[1]
@@ -419,12 +439,14 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
         if s_code[s] >= DEVICE_MIN:
             # a link's force also moves with its rate (dashpots) and its internal variable
             kr, kz = device_rate_terms(s_code[s], s_par[s, 0], s_par[s, 1], s_par[s, 2], dr)
-            vdot += kr * drift_of(s_lo[s], s_hi[s], dx, n)[1]
+            vdot += kr * element_drift(s, s_lo[s], s_hi[s], s_par, dx, n)[1]
             if zi >= 0:
                 vdot += kz * dx[2 * n + zi]
         out[s_hi[s]] += vdot
         if s_lo[s] >= 0:
             out[s_lo[s]] -= vdot
+        if s_par[s, EL_ROCK] >= 0.0:
+            out[int(s_par[s, EL_ROCK])] -= s_par[s, EL_LEVER] * vdot
     for c in range(cgap.shape[0]):
         if committed[c, V0] > 0.0:
             dsum, rate = gap_row(c, x, n, cdof, cw)

@@ -8,7 +8,7 @@ import numpy as np
 
 from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
 from pounding.integrate.kernel_model import KernelModel
-from pounding.integrate.layout import PK_COLUMNS
+from pounding.integrate.layout import EL_LEVER, EL_ROCK, PK_COLUMNS
 from pounding.integrate.workspace import KernelOutputs
 from pounding.model import PoundingModel
 
@@ -54,6 +54,8 @@ def initial_storeys(km: KernelModel, u0: np.ndarray,
     v = np.zeros_like(u0) if v0 is None else v0
     for s in range(lo.size):
         d = u0[hi[s]] - (u0[lo[s]] if lo[s] >= 0 else 0.0)
+        if par[s, EL_ROCK] >= 0.0:  # a storey over a rocking footing
+            d -= par[s, EL_LEVER] * u0[int(par[s, EL_ROCK])]
         if code[s] >= DEVICE_MIN:
             rate = v[hi[s]] - v[lo[s]]
             state[s] = (d, storey_trial(int(code[s]), par, s, d, rate, 0.0, d, 0.0)[0])
@@ -90,6 +92,9 @@ def write_initial_row(model: PoundingModel, km: KernelModel, x: np.ndarray,
     np.add.at(storey_force, el.hi, sstate[:, 1])
     lower = el.lo >= 0
     np.add.at(storey_force, el.lo[lower], -sstate[lower, 1])
+    rocking = el.params[:, EL_ROCK] >= 0.0  # the storeys' moments on rocking footings
+    np.add.at(storey_force, el.params[rocking, EL_ROCK].astype(np.int64),
+              -el.params[rocking, EL_LEVER] * sstate[rocking, 1])
     acc_out[0] = -(km.K @ u + km.C @ v + storey_force) / m_diag
     e_out[0, 1] = 0.5 * v @ (m_diag * v)
     e_out[0, 2] = 0.5 * u @ km.K @ u + sum(

@@ -268,14 +268,13 @@ class Response:
         storeys (no yield point) and for an isolation bearing (not a storey: its
         displacement is in :attr:`Result.bearings`). The peak drift is :attr:`peak_drift`
         (located inside steps)."""
-        from pounding.structure import MatrixBuilding
-
         out = np.full(self.model.n_dof, np.nan)
         peak = self.peak_drift
+        k = self._storey_stiffness()
         for off, b in zip(self.model.system.offsets, self.model.buildings):
-            fy = b.yield_forces
-            if fy is not None and not isinstance(b, MatrixBuilding):  # (a matrix building's: None)
-                out[off: off + b.n] = peak[off: off + b.n] / (fy / b.stiffnesses)
+            fy = b.yield_forces  # (None for a linear building; NaN for a linear storey)
+            if fy is not None:
+                out[off: off + b.n] = peak[off: off + b.n] / (fy / k[off: off + b.n])
         out[self.is_bearing] = np.nan
         return out
 

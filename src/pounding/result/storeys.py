@@ -162,14 +162,12 @@ def residual_storey_drift(model: PoundingModel, drift_end: NDArray[np.float64],
         Internal variables at the end (Bouc–Wen storeys' ``z`` first, in the order of the
         model's yielding storeys).
     """
-    from pounding.structure import MatrixBuilding
-
     out = np.zeros(model.n_dof)
     z_end = final_z if final_z is not None else np.zeros(0)
     zk = 0
     for off, b in zip(model.system.offsets, model.buildings):
         law = b.storey_law
-        if law is None or isinstance(b, MatrixBuilding):  # (its storey law is always None)
+        if law is None:  # (a matrix building's storey law is always None)
             continue
         prm = b.storey_law_params()
         for r, j in enumerate(b.yielding):

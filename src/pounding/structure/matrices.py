@@ -390,13 +390,21 @@ class MatrixBuilding:
         """No storey follows a storey law (empty): a matrix building is linear."""
         return ()
 
+    def yielding_storey_dofs(self) -> list[tuple[int, int, int, float]]:
+        """No yielding storeys (empty): a matrix building is linear."""
+        return []
+
+    def storey_law_params(self) -> NDArray[np.float64]:
+        """Raises: a matrix building has no storey law."""
+        raise ValueError(f"{self._who}: its storeys are linear (no storey_law)")
+
     def linear_stiffness_matrix(self) -> NDArray[np.float64]:
         """``K`` [N/m], all of it linear (the row of buildings asks every building for the
         stiffness of its linear part)."""
         return self.stiffness_matrix()
 
     @property
-    def yield_forces(self) -> None:
+    def yield_forces(self) -> NDArray[np.float64] | None:
         """None: no storey yield shears (linear)."""
         return None
 

@@ -385,6 +385,13 @@ class ShearBuilding:
         """True if some storeys follow a yielding :attr:`storey_law`."""
         return self.storey_law is not None
 
+    def yielding_storey_dofs(self) -> list[tuple[int, int, int, float]]:
+        """``(lower, upper, rock, lever)`` of every yielding storey (:attr:`yielding` order):
+        the DOFs below (−1: the ground) and above it; on a fixed base no rocking DOF (−1)
+        and no lever (0 m) (a building on a flexible base has them:
+        :meth:`pounding.structure.foundation.FlexibleBaseBuilding.yielding_storey_dofs`)."""
+        return [(j - 1 if j > 0 else -1, j, -1, 0.0) for j in self.yielding]
+
     def storey_law_params(self) -> NDArray[np.float64]:
         """Constants of the law of every yielding storey (:attr:`yielding` order), shape
         (len(yielding), P) (see :mod:`pounding.hysteresis.base`); raises if the storeys are

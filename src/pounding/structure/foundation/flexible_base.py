@@ -38,7 +38,17 @@ storey of stiffness ``k``, mass ``m`` at height ``h``,
 
 The dashpots are taken at the flexible-base building's first mode (:mod:`.impedance`). Only
 buildings whose every degree of freedom is a floor's translation along the row take a
-flexible base here (shear buildings, and matrix buildings of that kind), linear.
+flexible base here (shear buildings, and matrix buildings of that kind).
+
+A shear building with a storey law (yielding storeys) stands on a footing with mass and
+rocking inertia, whose sway and rocking are then degrees of freedom (a massless footing is
+condensed out statically, which only a linear building allows): each yielding storey's law
+reads the building's own deformation, ``d_j = x_j − x_{j−1} − h_j φ`` (``x_0 = u_f``, ``h_j``
+the storey's height), and its shear ``V_j`` acts on the floors above and below and as the
+moment ``h_j V_j`` on the footing — the row ``j`` of ``Tᵀ`` (:meth:`FlexibleBaseBuilding.
+yielding_storey_dofs`); its linear storeys and the soil are in :meth:`FlexibleBaseBuilding.
+linear_stiffness_matrix` (``Tᵀ K_lin T`` + the springs). The damping stays the fixed-base
+building's on its elastic modes, on its deformation, plus the dashpots.
 """
 
 from __future__ import annotations
@@ -112,13 +122,71 @@ class Foundation:
 class FlexibleBaseBuilding(MatrixBuilding):
     """A building on a flexible base (module docstring): a
     :class:`~pounding.structure.MatrixBuilding` whose matrices include the footing and soil,
-    and its :attr:`foundation`. Made by :func:`flexible_base`."""
+    and its :attr:`foundation`; and, when the building on it is a shear building with a
+    storey law, its yielding storeys (:attr:`storey_law`, :meth:`yielding_storey_dofs`).
+    Made by :func:`flexible_base`."""
 
     foundation: Foundation
+    #: the building on its fixed base (its storeys, their law)
+    fixed_base: ShearBuilding | MatrixBuilding
 
-    def __init__(self, foundation: Foundation, **matrices: Any) -> None:
+    def __init__(self, foundation: Foundation, fixed_base: ShearBuilding | MatrixBuilding,
+                 linear_stiffness: NDArray[np.float64] | None = None,
+                 **matrices: Any) -> None:
         super().__init__(**matrices)
         object.__setattr__(self, "foundation", foundation)
+        object.__setattr__(self, "fixed_base", fixed_base)
+        object.__setattr__(self, "_linear_k", linear_stiffness)
+
+    # ----------------------------------------------------------------- yielding storeys
+    @property
+    def storey_law(self) -> Any:  # (the fixed-base shear building's law, or None)
+        """The storey law of the building on the footing (None: linear)."""
+        return getattr(self.fixed_base, "storey_law", None)
+
+    @property
+    def is_inelastic(self) -> bool:
+        """True if the building on the footing has yielding storeys."""
+        return self.storey_law is not None
+
+    @property
+    def yielding(self) -> tuple[int, ...]:
+        """The yielding storeys (0-based; storey ``j`` under floor ``j``, the floors being
+        this building's first DOFs)."""
+        return tuple(self.fixed_base.yielding) if self.storey_law is not None else ()
+
+    def storey_law_params(self) -> NDArray[np.float64]:
+        """The constants of every yielding storey's law (the fixed-base building's)."""
+        assert isinstance(self.fixed_base, ShearBuilding)
+        return self.fixed_base.storey_law_params()
+
+    def yielding_storey_dofs(self) -> list[tuple[int, int, int, float]]:
+        """``(lower, upper, rock, lever)`` of every yielding storey: its drift is the
+        building's own deformation ``u[upper] − u[lower] − lever · φ``, with ``lower`` the
+        footing's sway DOF under the first storey and ``rock`` the footing's rocking DOF,
+        ``lever`` the storey's height [m] (module docstring: ``u = T y``)."""
+        n = len(self.floors)
+        sway, rock = n, n + 1  # (both DOFs of a footing under a yielding building)
+        z = np.r_[0.0, self.elevations[:n]]
+        return [(j - 1 if j > 0 else sway, j, rock, float(z[j + 1] - z[j]))
+                for j in self.yielding]
+
+    @property
+    def yield_forces(self) -> NDArray[np.float64] | None:
+        """The storeys' yield shears [N] under the floors (NaN for linear storeys and for
+        the footing's DOFs); None if the building is linear."""
+        fy = getattr(self.fixed_base, "yield_forces", None)
+        if fy is None:
+            return None
+        out = np.full(self.n, np.nan)
+        out[: len(self.floors)] = fy
+        return out
+
+    def linear_stiffness_matrix(self) -> NDArray[np.float64]:
+        """``Tᵀ K_lin T`` + the soil's springs [N/m]: the stiffness of the storeys that stay
+        linear (the yielding ones' shears come from their law), on the footing."""
+        k = self._linear_k  # type: ignore[attr-defined]
+        return self.stiffness_matrix() if k is None else k
 
     def __eq__(self, other: Any) -> bool:
         same = super().__eq__(other)
@@ -142,8 +210,9 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     Parameters
     ----------
     building : ShearBuilding or MatrixBuilding
-        The fixed-base building: linear, every DOF a floor's translation along the row
-        (``r`` = 1) at its elevation above the footing's base [m].
+        The fixed-base building: every DOF a floor's translation along the row (``r`` = 1)
+        at its elevation above the footing's base [m]; a shear building may yield (its
+        storey law) on a footing with mass and inertia.
     footing : Footing
         The footing, its mass and rocking inertia (zero: condensed out).
     soil : Soil
@@ -152,7 +221,8 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     Raises
     ------
     ValueError
-        If the building has a storey law, or a DOF that is not a floor's translation.
+        If the building has a storey law and the footing no mass or no rocking inertia, is
+        base-isolated, or has a DOF that is not a floor's translation.
 
     Examples
     --------
@@ -165,9 +235,15 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     0.6976
     """
     name = building.name
-    if getattr(building, "storey_law", None) is not None:
-        raise ValueError(f"building {name!r}: foundation: a building on a flexible base stays "
-                         "linear here (no storey_law)")
+    yielding = getattr(building, "storey_law", None) is not None
+    if yielding and not (footing.mass > 0.0 and footing.inertia > 0.0):
+        what = "mass" if footing.mass <= 0.0 else "inertia"
+        raise ValueError(f"building {name!r}: foundation.{what}: a yielding building's footing "
+                         f"needs its mass and rocking inertia (got {what} = 0): its sway and "
+                         "rocking are then degrees of freedom (a massless footing is condensed "
+                         "out, which only a linear building allows)")
+    if getattr(building, "isolator", None) is not None:
+        raise ValueError(f"building {name!r}: foundation: not under a base-isolated building")
     if isinstance(building, MatrixBuilding):
         r = building.influence_vector()
         if not np.all(r == 1.0) or len(building.floors) != building.n:
@@ -196,6 +272,12 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     K = T.T @ K0 @ T
     K[n, n] += k_x
     K[n + 1, n + 1] += k_r
+    K_lin = None
+    if yielding:  # (footing DOFs explicit: nothing condensed)
+        K_lin = T.T @ building.linear_stiffness_matrix() @ T
+        K_lin[n, n] += k_x
+        K_lin[n + 1, n + 1] += k_r
+        K_lin = 0.5 * (K_lin + K_lin.T)
     keep = np.r_[np.arange(n), [n] if footing.mass > 0.0 else [], [n + 1] if footing.inertia > 0.0
                  else []].astype(np.int64)
     drop = np.setdiff1d(np.arange(n + 2), keep)
@@ -222,7 +304,7 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
                             Phi[[n, n + 1]], (footing.mass > 0.0, footing.inertia > 0.0),
                             storeys)
     return FlexibleBaseBuilding(
-        foundation, M=M_k, K=K_k, C=C_k, labels=labels + extra,
+        foundation, building, K_lin, M=M_k, K=K_k, C=C_k, labels=labels + extra,
         elevations=np.r_[z, np.zeros(len(extra))],
         r=np.r_[np.ones(n), np.ones(1 if footing.mass > 0.0 else 0),
                 np.zeros(1 if footing.inertia > 0.0 else 0)],
