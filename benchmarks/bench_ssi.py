@@ -55,6 +55,13 @@ cost      where the flexible base's time goes, without pounding (gap 10 m, exact
           banded product ``K u, C v`` (``rhs.band_mv``, timed in a compiled loop with the
           arrays ``simulate`` passes, as ``profile_kernel.py`` does), and the ratio
           flexible / fixed for A of 5, 10 and 20 storeys (T1 = 0.12 n s).
+yielding  A with bilinear storeys (yield at 0.5 % drift, 5 % hardening) on the footing with
+          mass against the same A on a fixed base, beside B, with pounding and without (gap
+          10 m), output step 10 ms, ``--rounds`` alternating rounds: whole ``simulate()``
+          calls (every run adaptive: yielding storeys), the ratio flexible / fixed, impacts,
+          RK steps and the first storey's ductility (no OpenSees peer here: the yielding
+          storeys on a rocking footing are checked against the SciPy reference in
+          tests/integrate/test_flexible_base_yielding.py).
 """
 
 from __future__ import annotations
@@ -79,6 +86,7 @@ from _environment import load, parse_list, print_environment
 from _memory import keep_freed_memory
 
 from pounding.contact.spec import ContactSpec
+from pounding.hysteresis import Bilinear
 from pounding.ground_motion import GroundMotion, el_centro
 from pounding.integrate import simulate
 from pounding.model import PoundingModel
@@ -86,7 +94,7 @@ from pounding.structure import ShearBuilding
 from pounding.structure.damping import RayleighDamping
 from pounding.structure.foundation import Footing, Soil, flexible_base
 
-SECTIONS = ("model", "linear", "accuracy", "reference", "speed", "cost")
+SECTIONS = ("model", "linear", "accuracy", "reference", "speed", "cost", "yielding")
 DEFAULT_STEPS = "0.01,0.005,0.002,0.001"
 
 STOREY_HEIGHT = 3.5  #: m, both buildings
@@ -425,6 +433,42 @@ def section_speed(cases: dict[str, Case], wide: dict[str, Case], motion: GroundM
                  if case.flexible else ""))
 
 
+def section_yielding(motion: GroundMotion, rounds: int) -> None:
+    law = Bilinear(yield_drift=0.005 * STOREY_HEIGHT, hardening=0.05)
+    spec = ContactSpec("kelvin-voigt", k=K_KV, e=RESTITUTION, formula="anagnostopoulos",
+                       tension=True)
+    b = shear_building(B_STOREYS, B_MASS, B_PERIOD, "B")
+    models: dict[tuple[float, str], PoundingModel] = {}
+    for gap in (GAP, WIDE_GAP):
+        a = shear_building(A_STOREYS, A_MASS, A_PERIOD, "A").with_storey_law(law)
+        models[(gap, "flexible")] = PoundingModel([flexible_base(a, FOOTING, SOIL), b], [gap],
+                                                  spec)
+        models[(gap, "fixed")] = PoundingModel([a, b], [gap], spec)
+    print(f"\n== yielding: A with bilinear storeys (yield drift {1e3 * law.yield_drift:g} mm, "
+          f"b = {law.hardening:g}) on the footing vs on a fixed base, beside B; "
+          f"{motion.duration:.2f} s, output step 10 ms, warm, {rounds} alternating rounds ==")
+    for m in models.values():  # warm-up: compilation, the models' caches
+        simulate(m, motion, dt=1e-2)
+    walls: dict[tuple[float, str], list[float]] = {k: [] for k in models}
+    last: dict[tuple[float, str], Any] = {}
+    for _ in range(rounds):
+        for key, m in models.items():
+            t0 = time.perf_counter()
+            last[key] = simulate(m, motion, dt=1e-2)
+            walls[key].append(time.perf_counter() - t0)
+    print(f"  {'':<12} {'A on':<10} {'impacts':>7} {'RK steps':>8} {'μ storey 1':>10} "
+          f"{'whole simulate() ms, best (median–worst)':>42}  flexible / fixed")
+    for gap in (GAP, WIDE_GAP):
+        for base in ("flexible", "fixed"):
+            r = last[(gap, base)]
+            ratio = (ratio_line(walls[(gap, "flexible")], walls[(gap, "fixed")])
+                     if base == "flexible" else "")
+            label = f"gap {1e3 * gap:g} mm" if gap < 1 else f"gap {gap:g} m"
+            print(f"  {label:<12} {base:<10} {r.n_impacts:>7} {r.stats.rk_steps:>8} "
+                  f"{float(r.ductility[0]):>10.2f} {spread(walls[(gap, base)], 1e3):>42}  "
+                  f"{ratio}")
+
+
 def _catch_kernel_arguments(model: PoundingModel, motion: GroundMotion) -> dict[str, Any]:
     """The arguments ``simulate`` passes to the compiled kernel, by name (as
     ``profile_kernel.kernel_arguments``; 1 s of the record)."""
@@ -599,6 +643,8 @@ def main(argv: list[str] | None = None) -> int:
         section_speed(cases, wide, motion, args.rounds, args.opensees_rounds, args.opensees_dt)
     if "cost" in wanted:
         section_cost(motion, max(3, args.rounds // 2))
+    if "yielding" in wanted:
+        section_yielding(motion, args.rounds)
     print(f"\nend: {load()}; {time.perf_counter() - t_start:.0f} s")
     return 0
 
