@@ -2,11 +2,17 @@
 interaction, :mod:`pounding.structure.foundation`).
 
 * ``foundation = { radius = 5.0, soil = { vs = 150.0, density = 1800.0, poisson = 0.33 } }``
-  — a rigid circular surface footing of radius 5 m on a half-space;
+  — a rigid circular surface footing of radius 5 m on a half-space
+  (``embedment = 2.0``: its base 2 m below the surface);
 * ``length`` and ``width`` [m] (along the row and across it) instead of ``radius``: a
   rectangular footing;
 * ``mass`` [kg] and ``inertia`` [kg·m²] (about the rocking axis) of the footing: default 0
   (massless: condensed out of the building's matrices);
+* ``embedment`` [m]: the depth of the footing's base below the ground surface, its sidewalls
+  in contact with the soil over all of it (default 0: a surface footing); at most the
+  footing's width (a circle: 1.75 R) — Pais & Kausel's embedment factors (NIST GCR
+  12-917-21 Table 2-2b) and the sidewalls' radiation dashpots
+  (:mod:`pounding.structure.foundation.impedance`);
 * ``dashpots = false``: the soil's springs only (default: the springs and the radiation and
   material dashpots);
 * ``soil.shaking`` = ``α S`` (0.1–0.3): take the strain-compatible shear modulus and the
@@ -25,13 +31,15 @@ from typing import Annotated
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error
-from pounding.config.quantities import MAX_MASS, Length, Unit
+from pounding.config.quantities import MAX_LENGTH, MAX_MASS, Length, Unit
 from pounding.structure.foundation import Footing, Soil
+from pounding.structure.foundation.impedance import embedment_message, max_embedment
 
 __all__ = ["FoundationConfig", "SoilConfig"]
 
 MassOrZero = Annotated[float, Field(ge=0, le=MAX_MASS), Unit("kg")]
 Inertia = Annotated[float, Field(ge=0, le=MAX_MASS * 1e6), Unit("kg·m²")]
+Depth = Annotated[float, Field(ge=0, le=MAX_LENGTH), Unit("m")]
 
 
 class SoilConfig(Section):
@@ -53,6 +61,7 @@ class FoundationConfig(Section):
     mass: MassOrZero = 0.0
     inertia: Inertia = 0.0
     dashpots: bool = True
+    embedment: Depth = 0.0
     soil: SoilConfig
 
     @model_validator(mode="after")
@@ -68,11 +77,15 @@ class FoundationConfig(Section):
             raise field_error(missing, "required: give radius [m] (a circular footing) or "
                                        "length and width [m] (a rectangle: along the row and "
                                        "across it)")
+        deepest = max_embedment(self.radius, self.length, self.width)
+        if self.embedment > deepest:
+            raise field_error("embedment", embedment_message(self.embedment, deepest))
         return self
 
     def build(self) -> tuple[Footing, Soil]:
         """The ``(Footing, Soil)`` of :mod:`pounding.structure.foundation`."""
         s = self.soil
         return (Footing(radius=self.radius, length=self.length, width=self.width,
-                        mass=self.mass, inertia=self.inertia, dashpots=self.dashpots),
+                        mass=self.mass, inertia=self.inertia, dashpots=self.dashpots,
+                        embedment=self.embedment),
                 Soil(s.vs, s.density, s.poisson, s.shaking))

@@ -49,7 +49,7 @@ def _peak(values: np.ndarray, dt: float) -> tuple[float, float]:
 
 def foundation_summary(r: Any) -> dict[str, Any]:
     """``foundations`` of a run ``r`` (a :class:`pounding.result.Response`): for every
-    building on a flexible base, its footing, soil and
+    building on a flexible base, its footing (with its embedment [m]), soil and
     impedance (springs, dashpots and the frequency they were taken at), its fixed- and
     flexible-base periods, and the peaks of the footing's sway [m], rocking [rad] and the
     soil's base shear [N] and moment [N·m] on it (``V = k_x u_f + c_x u̇_f``,
@@ -70,7 +70,8 @@ def foundation_summary(r: Any) -> dict[str, Any]:
             "building": f"B{b + 1}", "name": bl.name,
             "footing": ({"radius_m": ft.radius} if ft.radius is not None else
                         {"length_m": ft.length, "width_m": ft.width})
-            | {"mass_kg": ft.mass, "rocking_inertia_kg_m2": ft.inertia,
+            | {"embedment_m": ft.embedment, "mass_kg": ft.mass,
+               "rocking_inertia_kg_m2": ft.inertia,
                "sway_dof": f.explicit[0], "rocking_dof": f.explicit[1]},
             "soil": {"vs_small_strain_m_s": soil.shear_wave_velocity,
                      "density_kg_m3": soil.density, "poisson": soil.poisson,

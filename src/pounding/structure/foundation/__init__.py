@@ -2,8 +2,9 @@
 
 * :class:`Soil` — a homogeneous half-space and its strain-compatible properties (EN 1998-5
   Table 4.1) (:mod:`.soil`).
-* :class:`Footing`, :func:`footing_stiffness`, :func:`footing_dashpots` — a rigid surface
-  footing's sway and rocking springs and dashpots (:mod:`.impedance`).
+* :class:`Footing`, :func:`footing_stiffness`, :func:`footing_dashpots` — a rigid
+  footing's sway and rocking springs and dashpots, on the surface or embedded
+  (:mod:`.impedance`).
 * :func:`flexible_base` → :class:`FlexibleBaseBuilding` — a building on its footing
   (:mod:`.flexible_base`).
 """
