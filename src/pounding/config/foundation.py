@@ -14,7 +14,9 @@ interaction, :mod:`pounding.structure.foundation`).
   small-strain modulus, no material damping).
 
 A building on a flexible base is linear: an SDOF, uniform, storey-by-storey or matrix
-building without ``storey_law`` or ``isolator``.
+building without ``storey_law`` or ``isolator``, or a building in plan (its footing centred
+under the plan, ``length`` along x and ``width`` along y, ``inertia`` about y: it also sways
+along y, rocks about x and twists; :mod:`pounding.structure.foundation.plan_base`).
 """
 
 from __future__ import annotations
