@@ -188,7 +188,7 @@ def test_torsion_dashpot_is_the_torsional_cone_wave_solution() -> None:
             th = g / z_far ** 3
             dth = np.exp(-1j * kk * z_far) * kk ** 2 * z_far / z_far ** 3 - 3 * g / z_far ** 4
 
-            def rhs(z: float, y: np.ndarray) -> list[complex]:
+            def rhs(z: float, y: np.ndarray, kk: float = kk) -> list[complex]:
                 return [y[1], -4.0 / z * y[1] - kk ** 2 * y[0]]
 
             sol = solve_ivp(rhs, (z_far, z0), [th, dth], rtol=1e-11, atol=1e-30,

@@ -49,11 +49,11 @@ def flexible_base_drifts(model: Any, displacement: np.ndarray
     return out
 
 
-def flexible_base_storeys(building: object) -> np.ndarray:
+def flexible_base_storeys(building: Any) -> np.ndarray:
     """Storey stiffness [N/m] under every DOF of a building on a flexible base that was a
     shear building (its storey shears ``k_j`` times its deformation drifts), NaN elsewhere
     (the footing's DOFs; any other matrix building)."""
-    n = int(getattr(building, "n"))
+    n = int(building.n)
     out = np.full(n, np.nan)
     if isinstance(building, FlexibleBaseBuilding):
         k = building.foundation.storey_stiffnesses

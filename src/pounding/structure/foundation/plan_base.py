@@ -187,7 +187,7 @@ class PlanFlexibleBaseBuilding(PlanMatrixBuilding):
         """``R`` (n × 2): the floors' of the plan, then the footing's sways (x, y)."""
         return np.array(self.__dict__["_influence"])
 
-    def __eq__(self, other: Any) -> bool:
+    def __eq__(self, other: object) -> bool:
         same = super().__eq__(other)
         if same is NotImplemented or not same:
             return same
@@ -261,7 +261,7 @@ def plan_flexible_base(building: PlanBuilding, footing: Footing, soil: Soil,
     True
     """
     if not isinstance(building, PlanBuilding):
-        raise ValueError(f"foundation: plan_flexible_base takes a PlanBuilding (got "
+        raise ValueError(f"foundation: plan_flexible_base takes a PlanBuilding (got "  # noqa: TRY004
                          f"{type(building).__name__})")
     name = building.name
     if centre is None:
