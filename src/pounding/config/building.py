@@ -90,8 +90,11 @@ class BuildingConfig(Section):
 
     ``foundation`` (:class:`pounding.config.foundation.FoundationConfig`) puts an SDOF,
     uniform, storey-by-storey or matrix building on a footing on soil (a flexible base:
-    :func:`pounding.structure.foundation.flexible_base`); a building with ``storey_law``
-    there needs the footing's ``mass`` and ``inertia``.
+    :func:`pounding.structure.foundation.flexible_base`; a building with ``storey_law``
+    there needs the footing's ``mass`` and ``inertia``), and a building in plan on one that
+    also sways across the row, rocks about the row's axis and twists
+    (:func:`pounding.structure.foundation.plan_flexible_base`; the footing centred under
+    the plan).
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF, 5 %
     Rayleigh at modes 1 and 3 for a building in plan (the PlanBuilding's own: modes 1 and 2
@@ -166,15 +169,14 @@ class BuildingConfig(Section):
                     raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
                                              f"positive numbers are subnormal (got {x:g})")
         if self.foundation is not None:
-            if self.kind in ("plan", "frame"):
-                given = "in plan" if self.kind == "plan" else "given as a frame"
-                raise field_error("foundation", f"not yet for a building {given}: a flexible "
-                                                "base takes SDOF, uniform, storey-by-storey "
-                                                "and matrix buildings")
+            if self.kind == "frame":
+                raise field_error("foundation", "not yet for a building given as a frame: a "
+                                                "flexible base takes SDOF, uniform, "
+                                                "storey-by-storey, matrix and plan buildings")
             if self.isolator is not None:
                 raise field_error("foundation", "not under a base-isolated building: give "
                                                 "foundation or isolator, not both")
-            if self.storey_law is not None:
+            if self.storey_law is not None and self.kind != "plan":  # (plan: refused below)
                 f = self.foundation
                 for key in ("mass", "inertia"):
                     if getattr(f, key) <= 0.0:
@@ -325,7 +327,7 @@ class BuildingConfig(Section):
                                                          "start at the model file's folder)")
 
     def _check_plan_keys(self) -> None:
-        own = {*_PLAN_KEYS, *_PLAN_ONLY, "name", "damping"}
+        own = {*_PLAN_KEYS, *_PLAN_ONLY, "name", "damping", "foundation"}
         for key in type(self).model_fields:
             if key in own or getattr(self, key) is None:
                 continue
@@ -455,6 +457,10 @@ class BuildingConfig(Section):
             b = self._make(default_name)
             if self.foundation is None:
                 return b
+            if isinstance(b, PlanBuilding):
+                from pounding.structure.foundation import plan_flexible_base
+
+                return plan_flexible_base(b, *self.foundation.build())
             from pounding.structure.foundation import flexible_base
 
             assert isinstance(b, (ShearBuilding, MatrixBuilding))

@@ -20,8 +20,11 @@ interaction, :mod:`pounding.structure.foundation`).
   small-strain modulus, no material damping).
 
 A building on a flexible base is an SDOF, uniform, storey-by-storey or matrix building,
-not base-isolated; one with ``storey_law`` (yielding storeys) needs the footing's ``mass``
-and ``inertia`` (its sway and rocking are then degrees of freedom).
+not base-isolated — one with ``storey_law`` (yielding storeys) needs the footing's ``mass``
+and ``inertia`` (its sway and rocking are then degrees of freedom) — or a building in plan
+(its footing centred under the plan, ``length`` along x and ``width`` along y, ``inertia``
+about y: it also sways along y, rocks about x and twists;
+:mod:`pounding.structure.foundation.plan_base`).
 """
 
 from __future__ import annotations

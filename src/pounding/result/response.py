@@ -19,7 +19,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.result.columns import IMPACT_COLUMNS
-from pounding.result.foundations import flexible_base_drifts, flexible_base_storeys
+from pounding.result.foundations import (
+    flexible_base_drifts,
+    flexible_base_storeys,
+    plan_deformation,
+)
 from pounding.result.peaks import peak_abs, sampled_peak
 from pounding.result.storeys import (
     bearing_mask,
@@ -247,9 +251,11 @@ class Response:
     @cached_property
     def _plan_forces(self) -> list[tuple[NDArray[np.float64], ...]]:
         """``(V_x, V_y, T)`` histories of every building in plan, (nt, floors) each."""
-        plans = [plan for bl in self.model.buildings if (plan := plan_of(bl)) is not None]
-        return [plan_storey_forces(plan, self.displacement[:, off: off + 3 * n])
-                for plan, (off, n) in zip(plans, self._plan_blocks)]
+        # (on a flexible base, the building's own deformation: the footing's motion out)
+        plans = [(plan, bl) for bl in self.model.buildings if (plan := plan_of(bl)) is not None]
+        u = self.displacement
+        return [plan_storey_forces(plan, plan_deformation(bl, u[:, off: off + bl.n]))
+                for (plan, bl), (off, _) in zip(plans, self._plan_blocks)]
 
     @cached_property
     def is_bearing(self) -> NDArray[np.bool_]:

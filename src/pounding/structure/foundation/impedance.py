@@ -384,3 +384,56 @@ def footing_dashpots(footing: Footing, soil: Soil, omega: float) -> tuple[float,
     k_x, k_r = footing_stiffness(footing, soil)
     beta = soil.damping_ratio
     return c_x + 2.0 * beta * k_x / omega, c_r + 2.0 * beta * k_r / omega
+
+
+def footing_torsion(footing: Footing, soil: Soil, omega: float) -> tuple[float, float]:
+    """The torsion spring and dashpot ``(k_t [N·m/rad], c_t [N·m·s/rad])`` of ``footing``
+    on ``soil`` about the vertical axis through its centre, the dashpot at circular
+    frequency ``omega`` [rad/s] (zero if ``footing.dashpots`` is False).
+
+    Spring, the static stiffness:
+
+    * circle of radius ``R``: ``k_t = 16 G R³ / 3`` (the elastic half-space solution;
+      Gazetas 1991, Table 15-1; Richart, Hall & Woods 1970, ch. 10; Luco 1976:
+      ``5.33 G R³``);
+    * rectangle ``2L × 2B`` (``L ≥ B``, either along the row): Pais & Kausel (1988) as
+      tabulated in NIST GCR 12-917-21 (2012) Table 2-2a,
+      ``k_t = G B³ [4.25 (L/B)^2.45 + 4.06]`` (a square: ``8.31 G B³``, 4.8 % stiffer than
+      the disk of the same polar moment of area).
+
+    Dashpot: Wolf's (1994) torsional cone, a disk of the footing's polar moment of area
+    ``J`` (``r0 = (2J/π)^¼``) on a cone of apex height ``z0 = (9π/32) r0`` carrying shear
+    waves (``V_s``). The twist ``ϑ(z)`` of the cone's disk at distance ``z`` from the apex,
+    whose polar moment is ``J (z/z0)⁴``, obeys ``ϑ'' + (4/z) ϑ' + (ω/V_s)² ϑ = 0`` — the
+    rocking cone's equation with ``V_s`` for ``c`` — and the outgoing wave gives the
+    dynamic stiffness ``S(ω) = −G J ϑ'(z0)/ϑ(z0) = k_c [1 − ⅓ b0²/(1 + b0²) + i ⅓ b0³/(1 +
+    b0²)]``, ``k_c = 3 G J/z0`` (``= 16 G r0³/3``, the disk's exact static value), ``b0 = ω z0/V_s``;
+    its imaginary part over ω is the dashpot
+
+        c_t(ω) = ρ V_s J b0² / (1 + b0²),
+
+    plus the soil's material damping ``2 β k_t / ω`` as for the other dashpots.
+
+    Examples
+    --------
+    >>> k_t, c_t = footing_torsion(Footing(radius=5.0), Soil(150.0, 1800.0, 0.33), 9.0)
+    >>> round(k_t / 1e9, 3)                          # 16 G R³ / 3
+    27.0
+    """
+    positive("omega [rad/s]", omega)
+    G, rho, vs = soil.shear_modulus, soil.density, soil.vs
+    if footing.radius is not None:
+        R = footing.radius
+        k_t = 16.0 * G * R ** 3 / 3.0
+        J = math.pi * R ** 4 / 2.0
+    else:
+        a, b = float(footing.length), float(footing.width)  # type: ignore[arg-type]
+        L, B = 0.5 * max(a, b), 0.5 * min(a, b)
+        k_t = G * B ** 3 * (4.25 * (L / B) ** 2.45 + 4.06)
+        J = a * b * (a * a + b * b) / 12.0
+    if not footing.dashpots:
+        return k_t, 0.0
+    r0 = (2.0 * J / math.pi) ** 0.25
+    b0 = omega * (9.0 * math.pi / 32.0) * r0 / vs
+    c_t = rho * vs * J * b0 ** 2 / (1.0 + b0 ** 2)
+    return k_t, c_t + 2.0 * soil.damping_ratio * k_t / omega
