@@ -221,3 +221,20 @@ def test_a_bad_embedment_is_one_line_exit_2_nothing_written(
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(err) == 1 and expected in err[0], err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["model.toml"]
+
+
+def test_the_torsion_spring_takes_its_embedment_factor() -> None:
+    """Under a building in plan the footing twists: its embedded torsion spring is the
+    surface one (Pais & Kausel's rectangle ``G B³ [4.25 (L/B)^2.45 + 4.06]``, written out
+    here) times η_zz = 1 + (1.3 + 1.32/(L/B)) (D/B)^0.9 (NIST GCR 12-917-21 Table 2-2b,
+    written out here); the dashpot stays the base's."""
+    from pounding.structure.foundation.impedance import footing_torsion
+
+    soil = Soil(150.0, 1800.0, 0.33)
+    G = soil.shear_modulus
+    L, B, D = 6.0, 4.0, 3.0  # a 12 m × 8 m footing 3 m deep
+    surface = G * B ** 3 * (4.25 * (L / B) ** 2.45 + 4.06)
+    eta = 1.0 + (1.3 + 1.32 / (L / B)) * (D / B) ** 0.9
+    k_t, c_t = footing_torsion(Footing(length=12.0, width=8.0, embedment=D), soil, 9.0)
+    assert k_t == pytest.approx(eta * surface, rel=1e-14)
+    assert c_t == footing_torsion(Footing(length=12.0, width=8.0), soil, 9.0)[1]

@@ -414,6 +414,10 @@ def footing_torsion(footing: Footing, soil: Soil, omega: float) -> tuple[float, 
 
     plus the soil's material damping ``2 β k_t / ω`` as for the other dashpots.
 
+    An embedded footing's spring is the surface one times :func:`torsion_embedment_factor`
+    (Pais & Kausel 1988, NIST GCR 12-917-21 Table 2-2b); its dashpot stays the base's cone
+    (the sidewalls' torsional radiation is not added: no formula for it was verified).
+
     Examples
     --------
     >>> k_t, c_t = footing_torsion(Footing(radius=5.0), Soil(150.0, 1800.0, 0.33), 9.0)
@@ -431,6 +435,8 @@ def footing_torsion(footing: Footing, soil: Soil, omega: float) -> tuple[float, 
         L, B = 0.5 * max(a, b), 0.5 * min(a, b)
         k_t = G * B ** 3 * (4.25 * (L / B) ** 2.45 + 4.06)
         J = a * b * (a * a + b * b) / 12.0
+    if footing.embedment > 0.0:
+        k_t *= torsion_embedment_factor(footing)
     if not footing.dashpots:
         return k_t, 0.0
     r0 = (2.0 * J / math.pi) ** 0.25
