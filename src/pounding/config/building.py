@@ -89,8 +89,10 @@ class BuildingConfig(Section):
       no isolator. Under two horizontal components of the ground (``[record] second``).
 
     ``foundation`` (:class:`pounding.config.foundation.FoundationConfig`) puts a linear
-    SDOF, uniform, storey-by-storey or matrix building on a footing on soil (a flexible
-    base: :func:`pounding.structure.foundation.flexible_base`).
+    SDOF, uniform, storey-by-storey or matrix building, or a frame, on a footing on soil (a
+    flexible base: :func:`pounding.structure.foundation.flexible_base`,
+    :func:`pounding.structure.frame_linear.frame_on_flexible_base`; a frame with plastic
+    hinges needs the footing's ``mass`` and ``inertia``).
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF, 5 %
     Rayleigh at modes 1 and 3 for a building in plan (the PlanBuilding's own: modes 1 and 2
@@ -165,11 +167,10 @@ class BuildingConfig(Section):
                     raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
                                              f"positive numbers are subnormal (got {x:g})")
         if self.foundation is not None:
-            if self.kind in ("plan", "frame"):
-                given = "in plan" if self.kind == "plan" else "given as a frame"
-                raise field_error("foundation", f"not yet for a building {given}: a flexible "
-                                                "base takes SDOF, uniform, storey-by-storey "
-                                                "and matrix buildings")
+            if self.kind == "plan":
+                raise field_error("foundation", "not yet for a building in plan: a flexible "
+                                                "base takes SDOF, uniform, storey-by-storey, "
+                                                "matrix and frame buildings")
             for key in ("storey_law", "isolator"):
                 if getattr(self, key) is not None:
                     raise field_error("foundation", f"a building on a flexible base stays "
@@ -202,7 +203,8 @@ class BuildingConfig(Section):
         kind = self.kind
         if kind == "frame":
             for key in type(self).model_fields:
-                if key not in ("name", "damping", "frame") and getattr(self, key) is not None:
+                if key not in ("name", "damping", "frame", "foundation") and \
+                        getattr(self, key) is not None:
                     raise field_error(key, f"not a key of a frame (its masses, stiffnesses "
                                            f"and heights are in frame = {{...}}) (got "
                                            f"{fmt(getattr(self, key))})")
@@ -448,7 +450,13 @@ class BuildingConfig(Section):
             if self.foundation is None:
                 return b
             from pounding.structure.foundation import flexible_base
+            from pounding.structure.frame_linear import (
+                FrameBuilding,
+                frame_on_flexible_base,
+            )
 
+            if isinstance(b, FrameBuilding):
+                return frame_on_flexible_base(b, *self.foundation.build())
             assert isinstance(b, (ShearBuilding, MatrixBuilding))
             return flexible_base(b, *self.foundation.build())
         except ValueError as exc:
