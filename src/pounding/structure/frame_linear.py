@@ -119,9 +119,6 @@ def frame_on_flexible_base(building: FrameBuilding, footing: Footing, soil: Soil
                          f"lateral masses only ({building.labels[d]!r} is a vertical or "
                          "rotational DOF with mass, which the footing's rocking would move "
                          "too: not modelled)")
-    if building.has_hinges:  # (step 1: elastic frames only)
-        raise ValueError(f"building {name!r}: foundation: not yet for a frame with plastic "
-                         "hinges")
     if building.has_hinges and not (footing.mass > 0.0 and footing.inertia > 0.0):
         raise ValueError(f"building {name!r}: foundation.mass and foundation.inertia: a frame "
                          f"with plastic hinges on a flexible base needs a footing with mass "
@@ -135,6 +132,9 @@ def frame_on_flexible_base(building: FrameBuilding, footing: Footing, soil: Soil
     object.__setattr__(out, "frame", building.frame)
     object.__setattr__(out, "gravity_state", building.gravity_state)
     object.__setattr__(out, "kept", building.kept)
+    # (its damping model, for what is said of it: the frame's own, on its fixed-base modes,
+    # in C through T; the soil's dashpots on the footing)
+    object.__setattr__(out, "damping", building.damping)
     return out
 
 
