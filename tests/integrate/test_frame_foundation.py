@@ -5,7 +5,11 @@ non-diagonal mass matrix, no ``Tᵀ K T``)."""
 
 from __future__ import annotations
 
+import json
 import math
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -243,3 +247,79 @@ def test_a_yielding_frame_on_a_massless_footing_is_refused() -> None:
                     Footing(radius=3.0, inertia=1e5)):
         with pytest.raises(ValueError, match=r"foundation\.mass and foundation\.inertia"):
             frame_on_flexible_base(b, footing, SOIL)
+
+
+MODEL_FILE = """
+name = "yielding frame on soil"
+[record]
+bundled = "el_centro"
+scale = 1.5
+
+[[building]]
+name = "on soil"
+damping = { rayleigh = [0.05, 0.05], modes = [1, 2] }
+foundation = { length = 8.0, width = 6.0,FOOTING soil = { vs = 120.0, density = 1800.0, poisson = 0.33 } }
+
+[building.frame]
+bays = [5.0]
+storey_heights = [4.0, 3.5]
+column_EI = 1.2e8
+beam_EI = 1.5e8
+floor_mass = 4.0e4
+beam_load = 1.0e4
+leaning_load = 3.0e5
+geometry = "p-delta"
+column_hinge = { type = "elastic-plastic", k0 = 1.0e11, m_y = 2.0e5 }
+beam_hinge = { type = "elastic-plastic", k0 = 1.0e11, m_y = 1.5e5 }
+
+[[building]]
+name = "fixed"
+mass = 1.2e5
+period = 0.5
+height = 7.5
+
+[contact]
+law = "kelvin-voigt"
+k = 1.0e9
+e = 0.65
+gap = 0.015
+
+[solver]
+duration = 4.0
+"""
+
+
+def _run(tmp_path: Path, footing: str) -> subprocess.CompletedProcess[str]:
+    model = tmp_path / "frame_ssi.toml"
+    model.write_text(MODEL_FILE.replace("FOOTING", footing))
+    return subprocess.run([sys.executable, "-m", "pounding", "run", str(model), "--out",
+                           str(tmp_path / "out"), "--no-figures"], capture_output=True,
+                          text=True, timeout=300)
+
+
+def test_a_yielding_frame_on_a_footing_runs_from_the_command_line(tmp_path: Path) -> None:
+    """`pounding run` on a model file with a yielding 2-storey frame on a footing beside a
+    fixed-base building: summary.json has the footing (`foundations`: its DOFs, the fixed-
+    and flexible-base periods, the peaks of sway and rocking) and the frame's hinges, and
+    the energy balances."""
+    done = _run(tmp_path, " mass = 1.5e5, inertia = 1.2e6,")
+    assert done.returncode == 0, done.stderr
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    (f,) = summary["foundations"]
+    assert f["building"] == "B1" and f["footing"]["sway_dof"] and f["footing"]["rocking_dof"]
+    assert f["flexible_base_periods_s"][0] > f["fixed_base_periods_s"][0]
+    assert summary["buildings"][0]["periods_s"][0] == pytest.approx(
+        f["flexible_base_periods_s"][0], rel=1e-12)
+    assert f["peak_sway_m"] > 0 and f["peak_rocking_rad"] > 0
+    assert summary["hinges"] and all(h["hinge"].startswith("B1H") for h in summary["hinges"])
+    assert summary["peak_hinge_rotation_rad"] > 0.003  # (they yield: θ_y ≈ 2e-6 here)
+    assert summary["energy_balance_error"] < 1e-8
+
+
+def test_a_yielding_frame_on_a_massless_footing_is_refused_from_the_command_line(
+        tmp_path: Path) -> None:
+    done = _run(tmp_path, "")
+    assert done.returncode == 2 and done.stdout == ""
+    (line,) = done.stderr.strip().splitlines()
+    assert "foundation.mass and foundation.inertia" in line and "got mass = 0 kg" in line
+    assert not (tmp_path / "out").exists()
