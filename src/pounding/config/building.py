@@ -89,12 +89,13 @@ class BuildingConfig(Section):
       no isolator. Under two horizontal components of the ground (``[record] second``).
 
     ``foundation`` (:class:`pounding.config.foundation.FoundationConfig`) puts an SDOF,
-    uniform, storey-by-storey or matrix building on a footing on soil (a flexible base:
-    :func:`pounding.structure.foundation.flexible_base`; a building with ``storey_law``
-    there needs the footing's ``mass`` and ``inertia``), and a building in plan on one that
-    also sways across the row, rocks about the row's axis and twists
-    (:func:`pounding.structure.foundation.plan_flexible_base`; the footing centred under
-    the plan).
+    uniform, storey-by-storey or matrix building, or a frame, on a footing on soil (a
+    flexible base: :func:`pounding.structure.foundation.flexible_base`,
+    :func:`pounding.structure.frame_linear.frame_on_flexible_base`; a building with
+    ``storey_law`` or a frame with plastic hinges there needs the footing's ``mass`` and
+    ``inertia``), and a building in plan on one that also sways across the row, rocks about
+    the row's axis and twists (:func:`pounding.structure.foundation.plan_flexible_base`; the
+    footing centred under the plan).
 
     ``damping`` (:class:`DampingConfig`) defaults to 5 % in every mode for an SDOF, 5 %
     Rayleigh at modes 1 and 3 for a building in plan (the PlanBuilding's own: modes 1 and 2
@@ -169,15 +170,11 @@ class BuildingConfig(Section):
                     raise field_error(where, f"must be at least {SMALLEST:.3g}: smaller "
                                              f"positive numbers are subnormal (got {x:g})")
         if self.foundation is not None:
-            if self.kind == "frame":
-                raise field_error("foundation", "not yet for a building given as a frame: a "
-                                                "flexible base takes SDOF, uniform, "
-                                                "storey-by-storey, matrix and plan buildings")
             if self.isolator is not None:
                 raise field_error("foundation", "not under a base-isolated building: give "
                                                 "foundation or isolator, not both")
-            if self.storey_law is not None and self.kind != "plan":  # (plan: refused below)
-                f = self.foundation
+            if self.storey_law is not None and self.kind not in ("plan", "frame"):
+                f = self.foundation  # (plan, frame: their storey_law is refused below)
                 for key in ("mass", "inertia"):
                     if getattr(f, key) <= 0.0:
                         raise field_error(("foundation", key), f"a yielding building's footing "
@@ -212,7 +209,8 @@ class BuildingConfig(Section):
         kind = self.kind
         if kind == "frame":
             for key in type(self).model_fields:
-                if key not in ("name", "damping", "frame") and getattr(self, key) is not None:
+                if key not in ("name", "damping", "frame", "foundation") and \
+                        getattr(self, key) is not None:
                     raise field_error(key, f"not a key of a frame (its masses, stiffnesses "
                                            f"and heights are in frame = {{...}}) (got "
                                            f"{fmt(getattr(self, key))})")
@@ -462,7 +460,13 @@ class BuildingConfig(Section):
 
                 return plan_flexible_base(b, *self.foundation.build())
             from pounding.structure.foundation import flexible_base
+            from pounding.structure.frame_linear import (
+                FrameBuilding,
+                frame_on_flexible_base,
+            )
 
+            if isinstance(b, FrameBuilding):
+                return frame_on_flexible_base(b, *self.foundation.build())
             assert isinstance(b, (ShearBuilding, MatrixBuilding))
             return flexible_base(b, *self.foundation.build())
         except ValueError as exc:

@@ -21,7 +21,9 @@ interaction, :mod:`pounding.structure.foundation`).
 
 A building on a flexible base is an SDOF, uniform, storey-by-storey or matrix building,
 not base-isolated — one with ``storey_law`` (yielding storeys) needs the footing's ``mass``
-and ``inertia`` (its sway and rocking are then degrees of freedom) — or a building in plan
+and ``inertia`` (its sway and rocking are then degrees of freedom) — a frame (one with
+plastic hinges needs them too: :func:`pounding.structure.frame_linear.
+frame_on_flexible_base`), or a building in plan
 (its footing centred under the plan, ``length`` along x and ``width`` along y, ``inertia``
 about y: it also sways along y, rocks about x and twists;
 :mod:`pounding.structure.foundation.plan_base`).

@@ -61,12 +61,30 @@ The model
    :mod:`pounding.integrate.reference_inputs`). Each record interval is integrated apart
    (``a_g`` is smooth on it).
 
+7. **A footing** (optional, ``footing``: :class:`FootingSprings`): the frame on a rigid
+   footing that sways ``u_f`` and rocks ``φ`` on springs and dashpots, assembled here from
+   Newton's law in the frame's own coordinates, apart from the compiled kernel's ``Tᵀ K T``.
+   ``u`` is then the frame's deformation, relative to its moving base, and the absolute
+   acceleration of a lateral mass at height ``z`` is ``ü + ü_f + z φ̈ + a_g``
+   (``w = [u_f, φ]``, ``G = [1, z]``)::
+
+       M (ü + G ẅ + r a_g) + C u̇ + f(u) = 0
+       M_w (ẅ + r_w a_g) + Gᵀ M (ü + G ẅ + r a_g) + C_w ẇ + K_w w = 0
+
+   (the footing's sway carries the frame's base shear, its rocking the frame's overturning
+   moment of inertia forces; ``M_w = diag(m_f, I_f)``, ``r_w = [1, 0]``), one mass matrix
+   for ``[ü, ẅ]`` factorised once. Lateral masses only; no P-Delta of the rigid rocking,
+   no rotary inertia of the floors (as the kernel's model).
+
 Energy [J], counted from the gravity state: with ``f`` the restoring
 force, ``∫ f_m·du_m = Δ(½ Uᵀ K_el U + Σ R_h) + Δ(½ Uᵀ K_geo U − Gᵀ U) + Σ H_h`` where ``R_h``
 is a hinge's recoverable energy (``law.recoverable``) and ``H_h = ∫ M_h dθ_h − ΔR_h`` its
 hysteretic energy (``∫ M dθ`` summed exactly branch by branch). So
 ``E_input = E_kinetic + E_damping + E_strain + E_gravity + E_hysteretic`` and the residual
-measures the integration.
+measures the integration. On a footing: the kinetic energy is of the masses' motion
+relative to the ground (``u̇ + G ẇ``, and the footing's), the input ``−∫ a_g (u̇ + G ẇ)ᵀ M r
++ m_f u̇_f dt``, the damping includes the dashpots' ``∫ ẇᵀ C_w ẇ dt`` and the strain the
+springs' ``½ wᵀ K_w w``.
 """
 
 from __future__ import annotations
@@ -82,10 +100,14 @@ from pounding.integrate.frame_reference_motion import Motion
 from pounding.structure.damping import ModalDamping, RayleighDamping
 from pounding.structure.frame import Frame
 from pounding.structure.frame_analysis import _mass_vector, frame_modes, gravity
-from pounding.structure.frame_stiffness import elastic_stiffness, gravity_load_vector
+from pounding.structure.frame_stiffness import (
+    FrameDofs,
+    elastic_stiffness,
+    gravity_load_vector,
+)
 
-__all__ = ["DAMPING_CHOICES", "FRAME_REFERENCE_RTOL", "FrameEnergy", "FrameReferenceResult",
-           "simulate_frame_reference"]
+__all__ = ["DAMPING_CHOICES", "FRAME_REFERENCE_RTOL", "FootingSprings", "FrameEnergy",
+           "FrameReferenceResult", "simulate_frame_reference"]
 
 FRAME_REFERENCE_RTOL: float = 1e-10
 """Default relative tolerance of ``solve_ivp``."""
@@ -95,6 +117,20 @@ DAMPING_CHOICES: tuple[str, ...] = ("rayleigh-elastic", "modal")
 
 MAX_EVENTS_PER_INTERVAL: int = 100_000
 """A bound on the events inside one record interval (a guard against an endless loop)."""
+
+
+@dataclass(frozen=True)
+class FootingSprings:
+    """A rigid footing under the frame (module docstring, item 7): its mass [kg], rocking
+    inertia [kg·m²], and the soil's springs [N/m, N·m/rad] and dashpots [N·s/m,
+    N·m·s/rad] in sway and rocking."""
+
+    mass: float
+    inertia: float
+    k_x: float
+    k_r: float
+    c_x: float = 0.0
+    c_r: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -140,6 +176,9 @@ class FrameReferenceResult:
     periods: NDArray[np.float64]  #: elastic periods under gravity [s]
     events: int  #: hinge events located and committed
     wall_time: float  #: seconds spent integrating
+    #: on a footing: its sway [m] and rocking [rad] at the output times (nt, 2), relative to
+    #: the ground (the frame's displacements above are then relative to its base); else None
+    footing: NDArray[np.float64] | None = None
 
 
 # ----------------------------------------------------------------------------- inputs
@@ -197,7 +236,8 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
                              duration: float | None = None,
                              rtol: float = FRAME_REFERENCE_RTOL,
                              damping: str = "rayleigh-elastic",
-                             method: str = "DOP853") -> FrameReferenceResult:
+                             method: str = "DOP853",
+                             footing: FootingSprings | None = None) -> FrameReferenceResult:
     """Time history of one nonlinear frame under a horizontal ground acceleration.
 
     Parameters
@@ -217,6 +257,9 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
         How ``C`` is built from ``frame.damping`` (module docstring, item 5).
     method : {"DOP853", "Radau"}
         ``solve_ivp`` method.
+    footing : FootingSprings, optional
+        A footing on soil under the frame (module docstring, item 7; default: a rigid
+        base).
 
     Returns
     -------
@@ -263,6 +306,7 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
     C, damping_text, rayleigh = _damping(frame, damping, M, Kc_el)
     Mr = M * r_m
     nm = keep.size
+    base = _Base(footing, frame, dofs, keep, M, r_m)
 
     # scales of the tolerances and of the reversal band
     v_ground = np.concatenate([[0.0], np.cumsum(0.5 * (knots[1:] + knots[:-1]) * step)])
@@ -271,6 +315,10 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
     e_scale = max(float(np.sum(Mr)) * v_scale ** 2, 1.0)
     atol = np.concatenate([np.full(nm, 1e-2 * tol * u_scale), np.full(nm, 1e-2 * tol * v_scale),
                            np.full(2, 1e-2 * tol * e_scale)])
+    if base.on_footing:
+        arm = max(float(np.max(np.abs(base.G[:, 1]))), 1.0)
+        atol = np.concatenate([atol, 1e-2 * tol * np.array([u_scale, u_scale / arm, v_scale,
+                                                              v_scale / arm])])
 
     motion = Motion(frame, dofs, g_state.base, U_g, g_state.hinges, keep, other, v_scale)
     laws, nh = motion.laws, motion.nh
@@ -282,6 +330,8 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
         u = y[:nm]
         out.u[k], out.v[k] = u, y[nm: 2 * nm]
         out.e_in[k], out.e_damp[k] = y[2 * nm], y[2 * nm + 1]
+        if base.on_footing:
+            out.w[k], out.dw[k] = y[2 * nm + 2: 2 * nm + 4], y[2 * nm + 4:]
         out.f[k] = motion.restoring(u)
         out.U[k] = motion.displacements(u)
         theta = motion.rotations(u)
@@ -294,7 +344,7 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
         out.hinge_hysteretic[k] = motion.work_done(theta) - (recoverable - recoverable_g)
         motion.peak = np.maximum(motion.peak, np.abs(theta))
 
-    y = np.zeros(2 * nm + 2)
+    y = np.zeros(2 * nm + 2 + (4 if base.on_footing else 0))
     record(0, y)
     start = time.perf_counter()
     for i in range(nt - 1):
@@ -307,6 +357,8 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
             v = y[nm: 2 * nm]
             a_g = a0 + slope * (t - t0)
             cv = C @ v
+            if base.on_footing:
+                return base.rhs(y, v, cv, motion.restoring(y[:nm]), a_g)
             acc = (-motion.restoring(y[:nm]) - cv) / M - r_m * a_g
             return np.concatenate([v, acc, [-(v @ Mr) * a_g, v @ cv]])
 
@@ -341,6 +393,11 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
     strain = quadratic(K_el) + out.recoverable
     grav = quadratic(K_geo) - (out.U - U_g) @ G
     kinetic = 0.5 * np.einsum("ki,i,ki->k", out.v, M, out.v)
+    if base.on_footing:  # (the masses' velocities relative to the ground; the springs)
+        vel = out.v + out.dw @ base.G.T
+        kinetic = (0.5 * np.einsum("ki,i,ki->k", vel, M, vel)
+                   + 0.5 * np.einsum("ki,i,ki->k", out.dw, base.M_w, out.dw))
+        strain = strain + 0.5 * np.einsum("ki,i,ki->k", out.w, base.K_w, out.w)
     hysteretic = out.hinge_hysteretic.sum(axis=1)
     residual = out.e_in - (kinetic + strain + out.e_damp + hysteretic + grav)
     energy = FrameEnergy(input=out.e_in, kinetic=kinetic, strain=strain, damping=out.e_damp,
@@ -353,7 +410,59 @@ def simulate_frame_reference(frame: Frame, ag: ArrayLike, dt: float, *,
         base_shear=out.f @ r_m, energy=energy, mass_dofs=keep, displacement=out.u,
         velocity=out.v, dof_displacements=out.U,
         gravity_floor_displacements=dofs.floor @ U_g, damping=damping_text, rayleigh=rayleigh,
-        damping_matrix=C, periods=periods, events=motion.events, wall_time=wall)
+        damping_matrix=C, periods=periods, events=motion.events, wall_time=wall,
+        footing=out.w if base.on_footing else None)
+
+
+class _Base:
+    """The frame's base (module docstring, item 7): rigid, or a footing on springs and
+    dashpots with the mass matrix of ``[ü, ẅ]`` factorised."""
+
+    def __init__(self, footing: FootingSprings | None, frame: Frame, dofs: FrameDofs,
+                 keep: NDArray[np.int64], M: NDArray[np.float64],
+                 r_m: NDArray[np.float64]) -> None:
+        import scipy.linalg
+
+        self.on_footing = footing is not None
+        if footing is None:
+            return
+        if not np.all(r_m == 1.0):
+            raise ValueError(f"{frame.name}: footing: the frame on a footing takes lateral "
+                             "masses only (a vertical or rotational mass would rock too)")
+        if not (footing.mass > 0.0 and footing.inertia > 0.0):
+            raise ValueError(f"footing: mass and inertia must be > 0 (got {footing.mass!r}, "
+                             f"{footing.inertia!r})")
+        node_of = np.full(dofs.n, -1)
+        lateral = dofs.node[:, 0]
+        node_of[lateral[lateral >= 0]] = np.flatnonzero(lateral >= 0)
+        z = frame.nodes[node_of[keep], 1] - frame.base
+        self.G = np.column_stack([np.ones(keep.size), z])  # rigid sway and rocking
+        self.M, self.r = M, r_m
+        self.M_w = np.array([footing.mass, footing.inertia])
+        self.K_w = np.array([footing.k_x, footing.k_r])
+        self.C_w = np.array([footing.c_x, footing.c_r])
+        nm = keep.size
+        Mq = np.zeros((nm + 2, nm + 2))
+        Mq[:nm, :nm] = np.diag(M)
+        Mq[:nm, nm:] = M[:, None] * self.G
+        Mq[nm:, :nm] = Mq[:nm, nm:].T
+        Mq[nm:, nm:] = np.diag(self.M_w) + self.G.T @ (M[:, None] * self.G)
+        self.factor = scipy.linalg.cho_factor(Mq)
+        self.load = np.concatenate([M * r_m, [footing.mass, 0.0] + self.G.T @ (M * r_m)])
+
+    def rhs(self, y: NDArray[np.float64], v: NDArray[np.float64], cv: NDArray[np.float64],
+            f: NDArray[np.float64], a_g: float) -> NDArray[np.float64]:
+        """``[u̇, ü, Ė_input, Ė_damping, ẇ, ẅ]`` (module docstring, item 7)."""
+        import scipy.linalg
+
+        nm = v.size
+        w, dw = y[2 * nm + 2: 2 * nm + 4], y[2 * nm + 4:]
+        cw = self.C_w * dw
+        force = np.concatenate([-f - cv, -self.K_w * w - cw]) - self.load * a_g
+        acc = scipy.linalg.cho_solve(self.factor, force)
+        vel = v + self.G @ dw  # the masses' velocity relative to the ground
+        e_in = -a_g * (vel @ (self.M * self.r) + self.M_w[0] * dw[0])
+        return np.concatenate([v, acc[:nm], [e_in, v @ cv + dw @ cw], dw, acc[nm:]])
 
 
 class _Outputs:
@@ -365,3 +474,4 @@ class _Outputs:
         self.U = np.zeros((nt, n))
         self.theta, self.moment = np.zeros((nt, nh)), np.zeros((nt, nh))
         self.recoverable, self.hinge_hysteretic = np.zeros(nt), np.zeros((nt, nh))
+        self.w, self.dw = np.zeros((nt, 2)), np.zeros((nt, 2))

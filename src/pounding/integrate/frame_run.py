@@ -16,6 +16,16 @@ it, :data:`pounding.integrate.kernel_model.STRUCTURES`):
   direction that branch holds for, its moment line and its committed point and work
   (:data:`pounding.integrate.layout.HS_A0` …).
 
+A frame on a flexible base (:class:`~pounding.structure.frame_linear.FlexibleBaseFrame`, its
+footing's sway and rocking DOFs of their own) is the block ``y = [x, u_f, φ]`` of its DOFs
+and its footing's; its hinges live in its own deformation ``u = T y`` (``T = [I | −1 |
+−z]``), so the kernel is given the configuration in ``y``: the block's stiffness ``K_y =
+Tᵀ K_c T + diag(0, k_x, k_φ)`` (the footing's rows and columns coupled to every DOF of the
+frame), ``f0_y = Tᵀ f0`` and hinge rows ``A_h T`` over the whole block; its work
+``½ yᵀ K_y y + f0_yᵀ y + c`` is the frame's ``½ uᵀ K_c u + f0ᵀ u + c`` plus the soil
+springs' energy. The frame's motion (:class:`FrameMotion`) stays in ``u``; its drifts,
+member moments and restoring forces are read from ``u``.
+
 The kernel locates every hinge event (a rotation reaching an end of its branch, a one-way
 branch reversing) on real Runge–Kutta steps like a contact event, accepts the step to it
 and returns (``ws_i[I_STOP]``); :class:`FrameRun` then moves the frame's hinges along their
@@ -91,6 +101,11 @@ class _Frame:
     rows: slice  #: its hinge rows
     motion: FrameMotion
     first: int  #: its first row in ``Floors.f_rows``
+    #: ``T`` (n_floors, size): its own DOFs' displacement ``u = T y`` from its block's ``y``
+    #: (the identity on a fixed base; ``[I | −1 | −z]`` on a footing)
+    T: NDArray[np.float64]
+    #: the soil's springs on its block's DOFs [N/m, N·m/rad] (size,), zero on a fixed base
+    soil: NDArray[np.float64]
     band_rows: NDArray[np.int64]  #: where its K_c's entries go in the banded stiffness
     band_cols: NDArray[np.int64]
     heights: NDArray[np.float64]  #: its storeys' heights [m]
@@ -99,6 +114,29 @@ class _Frame:
     #: restoring force ``R = K u + f0``, as ``(t, P, p0, K, f0)``
     taken: list[tuple[float, NDArray[np.float64], NDArray[np.float64], NDArray[np.float64],
                       NDArray[np.float64]]] = field(default_factory=list)
+
+    @property
+    def size(self) -> int:
+        """Its block's DOFs: its own, then its footing's sway and rocking (if on one)."""
+        return int(self.T.shape[1])
+
+
+def _base_transform(building: object, n_own: int
+                    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``(T, soil)`` of a yielding frame (:class:`_Frame`): on a fixed base the identity and
+    no springs; on a flexible base (:class:`~pounding.structure.frame_linear.
+    FlexibleBaseFrame`, its footing's sway and rocking DOFs of their own) the foundation's
+    ``T = [I | −1 | −z]`` and the springs ``k_x``, ``k_φ`` on the footing's DOFs."""
+    foundation = getattr(building, "foundation", None)
+    if foundation is None:
+        return np.eye(n_own), np.zeros(n_own)
+    T = np.asarray(foundation.deformation, dtype=float)
+    if T.shape != (n_own, n_own + 2) or not all(foundation.explicit):
+        raise ValueError(f"building {getattr(building, 'name', '')!r}: foundation.mass and "
+                         "foundation.inertia: a frame with plastic hinges on a flexible base "
+                         "needs its footing's sway and rocking as DOFs (mass and inertia > 0)")
+    imp = foundation.impedance
+    return T, np.concatenate([np.zeros(n_own), [imp.k_x, imp.k_r]])
 
 
 class FrameRun:
@@ -129,30 +167,31 @@ class FrameRun:
             motion = FrameMotion(bl.frame, bl.gravity_state, bl.kept)
             rows = slice(h0, h0 + motion.n_hinges)
             h0 += motion.n_hinges
+            T, soil = _base_transform(bl, motion.n_floors)
             no_band = np.zeros((0, 0), dtype=np.int64)  # (set below, once the band is known)
             self.frames.append(_Frame(b, int(model.system.offsets[b]), rows, motion, first,
-                                      no_band, no_band,
+                                      T, soil, no_band, no_band,
                                       np.diff(bl.elevations[:len(bl.floors)], prepend=0.0)))
-            first += motion.n_floors
+            first += T.shape[1]
         self.n_hinges = h0
-        nf_max = max(f.motion.n_floors for f in self.frames)
-        width = -(-nf_max // ROW_BLOCK) * ROW_BLOCK
+        size_max = max(f.size for f in self.frames)
+        width = -(-size_max // ROW_BLOCK) * ROW_BLOCK
         fl = km.floors
-        # the frames' condensed stiffness is full over their floors: a band wide enough
-        bw = max(fl.bw, nf_max - 1)
+        # the frames' condensed stiffness is full over their blocks: a band wide enough
+        bw = max(fl.bw, size_max - 1)
         self.bw = bw
         for f in self.frames:
-            a = np.arange(f.motion.n_floors)
+            a = np.arange(f.size)
             rows_i, cols_j = np.meshgrid(a, a, indexing="ij")
             f.band_rows, f.band_cols = cols_j - rows_i + bw, f.offset + rows_i
         k_band, c_band = kernel_bands(km.K, km.C, bw)  # (the run's own copy of K's)
-        f_dof = np.concatenate([f.offset + np.arange(f.motion.n_floors) for f in self.frames])
+        f_dof = np.concatenate([f.offset + np.arange(f.size) for f in self.frames])
         self.h_dof = np.zeros((h0, width), dtype=np.int64)
         self.h_w = np.zeros((h0, width))
         self.h_state = np.zeros((h0, HS_COLUMNS))
         for f in self.frames:
             self.h_dof[f.rows] = f.offset  # (padding: weight 0 on the first floor)
-            self.h_dof[f.rows, :f.motion.n_floors] = f.offset + np.arange(f.motion.n_floors)
+            self.h_dof[f.rows, :f.size] = f.offset + np.arange(f.size)
         self.k_band = k_band
         self.f_rows = np.zeros((f_dof.size, 3))
         self.f_rows[:, 0] = f_dof
@@ -181,27 +220,34 @@ class FrameRun:
         ValueError
             If the frames' floors are given an initial displacement.
         """
-        n = self.n
         for f in self.frames:
-            sl = self._floors(f)
+            sl = self._block(f)
             if np.any(x[sl] != 0.0):
                 raise ValueError(f"initial_displacement: frame {f.motion.frame.name!r} (building "
                                  f"B{f.building + 1}) starts displaced; a yielding frame starts "
                                  "at rest in its gravity state (give it an initial velocity "
                                  "instead)")
-            u = x[sl]
-            v = x[n + f.offset: n + f.offset + f.motion.n_floors]
+            y = x[sl]
+            dy = self._rates(f, x)
             m = self.masses[sl]
             C = self.C[sl, sl]
             R = self.R[sl]
+            T, soil = f.T, f.soil
 
-            def acceleration(cfg: Configuration, u: NDArray[np.float64] = u,
-                             v: NDArray[np.float64] = v, m: NDArray[np.float64] = m,
-                             C: NDArray[np.float64] = C,
-                             R: NDArray[np.float64] = R) -> NDArray[np.float64]:
-                return -(cfg.K @ u + cfg.f0 + C @ v) / m - R @ ag0
+            def acceleration(cfg: Configuration, y: NDArray[np.float64] = y,
+                             dy: NDArray[np.float64] = dy, m: NDArray[np.float64] = m,
+                             C: NDArray[np.float64] = C, R: NDArray[np.float64] = R,
+                             T: NDArray[np.float64] = T, soil: NDArray[np.float64] = soil
+                             ) -> NDArray[np.float64]:
+                # (the block's accelerations in the configuration, then the frame's own)
+                force = T.T @ (cfg.K @ (T @ y) + cfg.f0) + soil * y + C @ dy
+                return T @ (-force / m - R @ ag0)
 
-            f.motion.configure(v, acceleration, self.rate_tol, fallback=-(R @ ag_next))
+            v = T @ dy
+            # (at rest, which way the ground will push the frame's own DOFs: as on a fixed
+            # base — on a footing the block's first acceleration is rigid, T r = 0)
+            fallback = -(R[:f.motion.n_floors] @ ag_next)
+            f.motion.configure(v, acceleration, self.rate_tol, fallback=fallback)
             self._write(f, 0.0)
 
     def initial_row(self, x: NDArray[np.float64], rotation: NDArray[np.float64],
@@ -211,7 +257,7 @@ class FrameRun:
         for f in self.frames:
             cfg = f.motion.config
             assert cfg is not None
-            theta = cfg.A @ x[self._floors(f)] + cfg.a0
+            theta = cfg.A @ self._own(f, x) + cfg.a0
             rotation[f.rows] = theta
             moment[f.rows] = cfg.tangents * theta + cfg.q
             self._track(f, theta, 0.0)
@@ -241,14 +287,12 @@ class FrameRun:
                              f"t = {t:.6f} s ({count} events at that instant) without "
                              "settling; check its hinge laws (a branch of zero length, or "
                              "a tangent that leaves its joints with no stiffness)")
-        n = self.n
         for f in self.frames:
-            sl = self._floors(f)
-            u = x[sl]
+            u = self._own(f, x)
             if not (f.rows.start <= row < f.rows.stop or self._due(f, x)):
                 continue
-            v = x[n + f.offset: n + f.offset + f.motion.n_floors]
-            a = f_x[n + f.offset: n + f.offset + f.motion.n_floors]
+            v = f.T @ self._rates(f, x)
+            a = f.T @ self._rates(f, f_x)
             event = row - f.rows.start if f.rows.start <= row < f.rows.stop else None
             theta = f.motion.commit(u, land=f.motion.landing(u, v, self.theta_tol, event))
             self._track(f, theta, t)
@@ -270,11 +314,11 @@ class FrameRun:
         tolerance), or moving against its one-way branch?"""
         cfg = f.motion.config
         assert cfg is not None
-        u = x[self._floors(f)]
-        v = x[self.n + f.offset: self.n + f.offset + f.motion.n_floors]
+        u = self._own(f, x)
+        v = f.T @ self._rates(f, x)
         theta = cfg.A @ u + cfg.a0
         rate = cfg.A @ v
-        wabs = np.sum(np.abs(cfg.A), axis=1)
+        wabs = np.sum(np.abs(cfg.A @ f.T), axis=1)  # (as the kernel's HS_WABS)
         tol = self.theta_tol * wabs
         past = (theta >= cfg.upper - tol) | (theta <= cfg.lower + tol)
         against = cfg.directions * rate < -self.rate_tol * wabs
@@ -287,7 +331,7 @@ class FrameRun:
         moments at the output steps of ``displacement`` (nt, n) [m], evenly spaced to
         ``t_end``."""
         for f in self.frames:
-            theta = f.motion.commit(x[self._floors(f)])
+            theta = f.motion.commit(self._own(f, x))
             self._track(f, theta, t_end)
         if rotation.size:
             # (the largest sample of each hinge first, then where it is only for the hinges
@@ -302,14 +346,20 @@ class FrameRun:
         floors = np.full(self.n, np.nan)
         for f in self.frames:
             try:
-                floors[self._floors(f)] = f.motion.residual_floors(x[self._floors(f)])
+                unloaded = f.motion.residual_floors(self._own(f, x))
             except ValueError:  # unloaded, a mechanism: no residual position (NaN)
-                pass
+                continue
+            # (unloaded, the soil's springs carry nothing: the footing back at rest, y = u)
+            floors[self._block(f)] = np.concatenate([unloaded,
+                                                     np.zeros(f.size - unloaded.size)])
         moments = np.concatenate([self._end_moments(f, displacement, t_end)
                                   for f in self.frames], axis=1)
         restoring = np.full(displacement.shape, np.nan)
         for f in self.frames:
-            restoring[:, self._floors(f)] = self._restoring(f, displacement, t_end)
+            own = self._restoring(f, displacement, t_end)
+            # (on the block's DOFs: Tᵀ R and the soil's springs — the frame's own DOFs R)
+            restoring[:, self._block(f)] = (own @ f.T
+                                            + displacement[:, self._block(f)] * f.soil)
         capped = np.concatenate([f.motion.capped for f in self.frames])
         return HingeOutputs(self.peak.copy(), self.peak_time.copy(), residual, dissipated,
                             self.events, floors, moments, capped, restoring)
@@ -352,7 +402,7 @@ class FrameRun:
         spaced to ``t_end``, with ``(L, c) = linear(taken)`` of the configuration frame ``f``
         was in at each step."""
         nt = displacement.shape[0]
-        u = displacement[:, self._floors(f)]
+        u = displacement[:, self._block(f)] @ f.T.T
         times = np.array([c[0] for c in f.taken])
         at = np.arange(nt) * (t_end / max(nt - 1, 1))
         which = np.searchsorted(times, at + 1e-12 * max(t_end, 1.0), side="right") - 1
@@ -375,7 +425,7 @@ class FrameRun:
             Naming the frame, the storey, its drift and the time.
         """
         for f in self.frames:
-            u = x[self._floors(f)][:f.heights.size]  # (the floors come first)
+            u = self._own(f, x)[:f.heights.size]  # (the floors come first)
             drift = u.copy()
             drift[1:] -= u[:-1]
             ratio = np.abs(drift) / f.heights
@@ -396,8 +446,19 @@ class FrameRun:
         assert cfg is not None
         return float(0.5 * u @ cfg.K @ u + cfg.f0 @ u) + f.work_constant
 
-    def _floors(self, f: _Frame) -> slice:
-        return slice(f.offset, f.offset + f.motion.n_floors)
+    @staticmethod
+    def _block(f: _Frame) -> slice:
+        """Frame ``f``'s block of DOFs (its own, then its footing's)."""
+        return slice(f.offset, f.offset + f.size)
+
+    def _rates(self, f: _Frame, x: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The velocity part of state ``x`` (or accelerations of f(x)) on ``f``'s block."""
+        return x[self.n + f.offset: self.n + f.offset + f.size]
+
+    @staticmethod
+    def _own(f: _Frame, x: NDArray[np.float64]) -> NDArray[np.float64]:
+        """Frame ``f``'s own DOFs' displacements ``u = T y`` [m] at state ``x``."""
+        return f.T @ x[f.offset: f.offset + f.size]
 
     def _track(self, f: _Frame, theta: NDArray[np.float64], t: float) -> None:
         a = np.abs(theta)
@@ -413,13 +474,15 @@ class FrameRun:
         cfg = m.config
         assert cfg is not None
         f.taken.append((t, cfg.P, cfg.p0, cfg.K, cfg.f0))
-        nf = m.n_floors
-        # band storage: kb[d, i] = K[i, i + d − bw]
-        self.k_band[f.band_rows, f.band_cols] = cfg.K
-        self.f_rows[f.first: f.first + nf, 1] = cfg.f0
+        size = f.size
+        T = f.T
+        # band storage: kb[d, i] = K[i, i + d − bw]; over the block, Tᵀ K T + the springs
+        self.k_band[f.band_rows, f.band_cols] = T.T @ cfg.K @ T + np.diag(f.soil)
+        self.f_rows[f.first: f.first + size, 1] = T.T @ cfg.f0
         self.f_rows[f.first, 2] = f.work_constant
         hs = self.h_state[f.rows]
-        self.h_w[f.rows, :nf] = cfg.A
+        A = cfg.A @ T
+        self.h_w[f.rows, :size] = A
         hs[:, HS_A0] = cfg.a0
         hs[:, HS_LO] = cfg.lower
         hs[:, HS_HI] = cfg.upper
@@ -431,5 +494,5 @@ class FrameRun:
         hs[:, HS_WORK_C] = m.work
         hs[:, HS_K_UNLOAD] = m.unloading_stiffness()
         hs[:, HS_REC0] = m.recoverable0
-        hs[:, HS_WABS] = np.sum(np.abs(cfg.A), axis=1)
+        hs[:, HS_WABS] = np.sum(np.abs(A), axis=1)
         self.h_state[f.rows] = hs

@@ -22,11 +22,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from pounding.structure.foundation.flexible_base import (
+    FlexibleBaseBuilding,
+    flexible_base,
+)
+from pounding.structure.foundation.impedance import Footing
+from pounding.structure.foundation.soil import Soil
 from pounding.structure.frame import LEVEL_TOL, Frame
 from pounding.structure.frame_analysis import FrameState, frame_modes, gravity
 from pounding.structure.matrices import MatrixBuilding
 
-__all__ = ["FrameBuilding", "frame_matrix_building"]
+__all__ = ["FlexibleBaseFrame", "FrameBuilding", "frame_matrix_building",
+           "frame_on_flexible_base"]
 
 
 class FrameBuilding(MatrixBuilding):
@@ -59,6 +66,76 @@ class FrameBuilding(MatrixBuilding):
     def hinge_labels(self) -> list[str]:
         """``'H1'``, ``'H2'``, … for the hinges in the frame's order."""
         return [f"H{h + 1}" for h in range(len(self.frame.hinges))]
+
+
+class FlexibleBaseFrame(FlexibleBaseBuilding, FrameBuilding):
+    """A frame on a flexible base (:func:`frame_on_flexible_base`): the
+    :class:`~pounding.structure.foundation.FlexibleBaseBuilding` of its
+    :class:`FrameBuilding` — its DOFs the frame's (relative to the free-field ground) then the
+    footing's sway and rocking where they have mass — with the frame and its gravity state.
+
+    The frame's own deformation, in which its hinges, member forces and drifts live, is
+    ``u = T y`` (:attr:`deformation`, ``foundation.deformation``): its DOFs less the
+    footing's rigid sway and rocking."""
+
+    @property
+    def frame_dofs(self) -> int:
+        """How many of the building's DOFs are the frame's (the first ones)."""
+        return int(self.kept.size)
+
+    @property
+    def deformation(self) -> np.ndarray:
+        """``T`` (frame_dofs, n): the frame's own deformation ``u = T y`` from the DOFs."""
+        T = self.foundation.deformation
+        assert T is not None
+        return T
+
+
+def frame_on_flexible_base(building: FrameBuilding, footing: Footing, soil: Soil
+                           ) -> FlexibleBaseFrame:
+    """The frame ``building`` on ``footing`` on ``soil``
+    (:func:`~pounding.structure.foundation.flexible_base`): ``u = T y``, ``T = [I | −1 |
+    −z]`` over the frame's DOFs (each a lateral translation at its elevation ``z`` above
+    the frame's base), ``K_y = Tᵀ K T + diag(0, k_x, k_φ)``, ``C_y`` likewise,
+    ``M_y = diag(M, m_f, I_f)``.
+
+    An elastic frame takes any footing (a massless one condensed out); a frame with plastic
+    hinges needs the footing's sway and rocking as DOFs of their own (its hinge
+    configurations change ``K`` in ``Tᵀ K T``, which a static condensation fixed at the
+    start would not follow).
+
+    Raises
+    ------
+    ValueError
+        If a DOF with mass is not lateral (vertical or rotational masses: the footing's
+        rocking would move them too), or if a frame with hinges stands on a footing
+        without mass or without rocking inertia.
+    """
+    name = building.name
+    lateral = np.asarray(building.r) == 1.0
+    if not np.all(lateral):
+        d = int(np.argmin(lateral))
+        raise ValueError(f"building {name!r}: foundation: a frame on a flexible base takes "
+                         f"lateral masses only ({building.labels[d]!r} is a vertical or "
+                         "rotational DOF with mass, which the footing's rocking would move "
+                         "too: not modelled)")
+    if building.has_hinges and not (footing.mass > 0.0 and footing.inertia > 0.0):
+        raise ValueError(f"building {name!r}: foundation.mass and foundation.inertia: a frame "
+                         f"with plastic hinges on a flexible base needs a footing with mass "
+                         f"and rocking inertia, > 0 both (got mass = {footing.mass:g} kg, "
+                         f"inertia = {footing.inertia:g} kg·m²): its sway and rocking are then "
+                         "DOFs, coupled to the frame in each configuration of its hinges")
+    fb = flexible_base(building, footing, soil)
+    out = FlexibleBaseFrame(fb.foundation, building, M=fb.M, K=fb.K, C=fb.damping_matrix(),
+                            labels=fb.labels, elevations=fb.elevations, r=fb.r, name=fb.name,
+                            floors=fb.floors, faces=dict(fb.faces) or None)
+    object.__setattr__(out, "frame", building.frame)
+    object.__setattr__(out, "gravity_state", building.gravity_state)
+    object.__setattr__(out, "kept", building.kept)
+    # (its damping model, for what is said of it: the frame's own, on its fixed-base modes,
+    # in C through T; the soil's dashpots on the footing)
+    object.__setattr__(out, "damping", building.damping)
+    return out
 
 
 def frame_matrix_building(frame: Frame) -> FrameBuilding:

@@ -38,7 +38,11 @@ storey of stiffness ``k``, mass ``m`` at height ``h``,
 
 The dashpots are taken at the flexible-base building's first mode (:mod:`.impedance`). Only
 buildings whose every degree of freedom is a floor's translation along the row take a
-flexible base here (shear buildings, and matrix buildings of that kind).
+flexible base here (shear buildings, matrix buildings of that kind — their floors first, then
+any other lateral DOF such as a column node of a frame without rigid floors, each at its
+elevation — and frames, :func:`pounding.structure.frame_linear.frame_on_flexible_base`).
+Linear, except a frame with plastic hinges (:mod:`pounding.integrate.frame_run`) and a shear
+building with a storey law, each on a footing with mass and rocking inertia.
 
 A shear building with a storey law (yielding storeys) stands on a footing with mass and
 rocking inertia, whose sway and rocking are then degrees of freedom (a massless footing is
@@ -92,6 +96,9 @@ class Foundation:
     #: the fixed-base building's storey stiffnesses [N/m] where it is a shear building (its
     #: storey shears are ``k_j`` times the deformation drifts), else None
     storey_stiffnesses: NDArray[np.float64] | None = None
+    #: (n_0, n) [m/m, m/rad]: the fixed-base building's own deformation ``u = T y`` (its n_0
+    #: DOFs relative to the footing's sway and rocking) from the DOFs ``y``
+    deformation: NDArray[np.float64] | None = None
 
     def deformation_drifts(self, displacement: NDArray[np.float64],
                            elevations: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -165,7 +172,7 @@ class FlexibleBaseBuilding(MatrixBuilding):
         building's own deformation ``u[upper] − u[lower] − lever · φ``, with ``lower`` the
         footing's sway DOF under the first storey and ``rock`` the footing's rocking DOF,
         ``lever`` the storey's height [m] (module docstring: ``u = T y``)."""
-        n = len(self.floors)
+        n = self.fixed_base.n  # (a shear building: its DOFs are its floors)
         sway, rock = n, n + 1  # (both DOFs of a footing under a yielding building)
         z = np.r_[0.0, self.elevations[:n]]
         return [(j - 1 if j > 0 else sway, j, rock, float(z[j + 1] - z[j]))
@@ -210,9 +217,10 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     Parameters
     ----------
     building : ShearBuilding or MatrixBuilding
-        The fixed-base building: every DOF a floor's translation along the row (``r`` = 1)
-        at its elevation above the footing's base [m]; a shear building may yield (its
-        storey law) on a footing with mass and inertia.
+        The fixed-base building: every DOF a translation along the row (``r`` = 1) at its
+        elevation above the footing's base [m], the floors first (a matrix building's floors
+        and faces carry over); a shear building may yield (its storey law) on a footing
+        with mass and inertia.
     footing : Footing
         The footing, its mass and rocking inertia (zero: condensed out).
     soil : Soil
@@ -244,13 +252,17 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
                          "out, which only a linear building allows)")
     if getattr(building, "isolator", None) is not None:
         raise ValueError(f"building {name!r}: foundation: not under a base-isolated building")
+    floors: list[int] = list(range(building.n))
+    faces = None
     if isinstance(building, MatrixBuilding):
         r = building.influence_vector()
-        if not np.all(r == 1.0) or len(building.floors) != building.n:
+        floors = [int(f) for f in building.floors]
+        if not np.all(r == 1.0) or floors != list(range(len(floors))):
             raise ValueError(f"building {name!r}: foundation: every degree of freedom must be "
-                             "a floor's translation along the row (r = 1) to take a flexible "
-                             "base")
+                             "a translation along the row (r = 1), the floors first, to take "
+                             "a flexible base")
         labels = list(building.labels)
+        faces = dict(building.faces) or None
     else:
         labels = [f"F{j + 1}" for j in range(building.n)]
     M0 = building.mass_matrix()
@@ -302,10 +314,10 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
                building.storey_stiffnesses() if building.is_shear_building() else None)
     foundation = Foundation(footing, soil, Impedance(k_x, k_r, c_x, c_r, omega), fixed_periods,
                             Phi[[n, n + 1]], (footing.mass > 0.0, footing.inertia > 0.0),
-                            storeys)
+                            storeys, T @ Phi)
     return FlexibleBaseBuilding(
         foundation, building, K_lin, M=M_k, K=K_k, C=C_k, labels=labels + extra,
         elevations=np.r_[z, np.zeros(len(extra))],
         r=np.r_[np.ones(n), np.ones(1 if footing.mass > 0.0 else 0),
                 np.zeros(1 if footing.inertia > 0.0 else 0)],
-        name=name, floors=list(range(n)))
+        name=name, floors=floors, faces=faces)
