@@ -154,3 +154,13 @@ gap = 0.01
     assert bad.returncode == 2
     assert "foundation.mass" in bad.stderr and "Traceback" not in bad.stderr
     assert not (tmp_path / "bad").exists()
+
+
+def test_every_law_leaves_the_rocking_columns_free() -> None:
+    """An element row's constants are its law's (at most hysteresis.base.PARAMS_SIZE of
+    them, links padded to the same width) and then the rocking DOF and lever: the columns
+    must not overlap (integrate.layout.EL_ROCK, EL_LEVER)."""
+    from pounding.hysteresis.base import PARAMS_SIZE
+    from pounding.integrate.layout import EL_LEVER, EL_ROCK, ELEMENT_PARAMS
+
+    assert PARAMS_SIZE <= EL_ROCK < EL_LEVER < ELEMENT_PARAMS

@@ -14,6 +14,12 @@ from pounding.contact.base import ContactLaw
 __all__ = ["Contact", "ContactPoint"]
 
 
+MOVING_BASE = -3
+"""``ContactPoint.lower`` of the lowest storey of a building on a flexible base whose foot
+the kinematics cannot follow (a massless footing, or an embedded one): a floor there is a
+contact point, a column point between it and the ground is refused."""
+
+
 @dataclass(frozen=True)
 class ContactPoint:
     """Where a contact element meets one building: a floor slab, or a column between floors.
@@ -59,6 +65,14 @@ class ContactPoint:
     def __post_init__(self) -> None:
         if self.lower is None:
             object.__setattr__(self, "lower", self.upper - 1)
+        if self.lower == MOVING_BASE and self.xi != 1.0:
+            raise ValueError(
+                f"contact point at ξ = {self.xi:.3g} of storey {self.upper + 1} of building "
+                f"{self.building + 1}: the foot of that storey moves with a footing the "
+                "contact cannot follow (a massless footing, condensed out, or an embedded one, "
+                "rocking about its base below the ground): a floor-to-column contact in the "
+                "ground storey of a building on a flexible base needs a surface footing with "
+                "mass (its sway a DOF), or floor_to_column = false")
 
     @property
     def is_floor(self) -> bool:

@@ -345,8 +345,11 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
                     np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
                     NO_FRAME_ROWS)
     rock, lever = model.storey_rocking()
+    if s_par.shape[1] > EL_ROCK:  # (a law with more constants would overwrite the rocking)
+        raise AssertionError(f"element rows: {s_par.shape[1]} law constants, the layout "
+                             f"keeps {EL_ROCK} (integrate.layout.EL_ROCK)")
     par = np.zeros((s_lo.size, ELEMENT_PARAMS))
-    par[:, : s_par.shape[1]] = s_par  # (a law's constants: at most EL_ROCK of them)
+    par[:, : s_par.shape[1]] = s_par
     par[:, EL_ROCK] = rock
     par[:, EL_LEVER] = lever
     elements = ElementRows(s_lo, s_hi, s_code, par, s_zi)

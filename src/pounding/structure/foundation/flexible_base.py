@@ -63,6 +63,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from pounding.contact.geometry import MOVING_BASE
 from pounding.structure.foundation.impedance import (
     Footing,
     Impedance,
@@ -103,14 +104,17 @@ class Foundation:
     def deformation_drifts(self, displacement: NDArray[np.float64],
                            elevations: NDArray[np.float64]) -> NDArray[np.float64]:
         """The storeys' drifts of the building's own deformation [m] (nt, n_floors),
-        ``x_j − x_{j−1} − (z_j − z_{j−1}) φ`` with ``x_0 = u_f``, from its DOFs' displacement
+        ``x_j − x_{j−1} − (z_j − z_{j−1}) φ`` with ``x_0 = u_f`` and ``z_0 = −D`` (the
+        footing's base, about which it rocks, ``D`` below the ground), from its DOFs' displacement
         histories (nt, n) (relative to the free-field ground) and its floors' elevations
         [m] — what its storeys feel, without the footing's rigid sway and rocking."""
         u = displacement @ self.recovery.T
         n = elevations.size
         x = displacement[:, :n]
         below = np.concatenate([u[:, :1], x[:, :-1]], axis=1)
-        dz = np.diff(elevations, prepend=0.0)
+        # (the rocking turns about the footing's base, D below the ground: storey 1's lever
+        # is z_1 + D, as the footing's rigid motion moves the ground storey's foot by D φ)
+        dz = np.diff(elevations, prepend=-self.footing.embedment)
         return np.asarray(x - below - dz[None, :] * u[:, 1:2])
 
     def base_reactions(self, displacement: NDArray[np.float64],
@@ -174,7 +178,7 @@ class FlexibleBaseBuilding(MatrixBuilding):
         ``lever`` the storey's height [m] (module docstring: ``u = T y``)."""
         n = self.fixed_base.n  # (a shear building: its DOFs are its floors)
         sway, rock = n, n + 1  # (both DOFs of a footing under a yielding building)
-        z = np.r_[0.0, self.elevations[:n]]
+        z = np.r_[-self.foundation.footing.embedment, self.elevations[:n]]  # (from its base)
         return [(j - 1 if j > 0 else sway, j, rock, float(z[j + 1] - z[j]))
                 for j in self.yielding]
 
@@ -188,6 +192,20 @@ class FlexibleBaseBuilding(MatrixBuilding):
         out = np.full(self.n, np.nan)
         out[: len(self.floors)] = fy
         return out
+
+    def face_below(self, side: str) -> NDArray[np.int64]:
+        """:meth:`MatrixBuilding.face_below`, except below the lowest DOF of the face: the
+        foot of the ground storey moves with the footing, ``u_f + D φ``, not with the
+        ground — the footing's sway DOF for a surface footing with mass (a column point of
+        the ground storey between it and the floor above moves as their interpolation,
+        exactly: the rocking's part is linear in the height too), else
+        :data:`~pounding.contact.geometry.MOVING_BASE` (a column point there is refused)."""
+        below = super().face_below(side)
+        low = int(self.face_dofs(side)[0])
+        sway = self.fixed_base.n  # (the footing's sway DOF, where it is one)
+        explicit = self.foundation.explicit[0] and self.foundation.footing.embedment == 0.0
+        below[low] = sway if explicit else MOVING_BASE
+        return below
 
     def linear_stiffness_matrix(self) -> NDArray[np.float64]:
         """``Tᵀ K_lin T`` + the soil's springs [N/m]: the stiffness of the storeys that stay
@@ -275,7 +293,7 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
     T = np.zeros((n, n + 2))
     T[:, :n] = np.eye(n)
     T[:, n] = -1.0
-    T[:, n + 1] = -z
+    T[:, n + 1] = -(z + footing.embedment)  # (levers from the footing's base, D below ground)
     k_x, k_r = footing_stiffness(footing, soil)
     M = np.zeros((n + 2, n + 2))
     M[:n, :n] = M0

@@ -284,7 +284,8 @@ def plan_flexible_base(building: PlanBuilding, footing: Footing, soil: Soil,
     K0 = building.stiffness_matrix()
     C0 = building.damping_matrix()
     fixed_periods = 2.0 * np.pi / eigenmodes(M0, K0)[0]
-    z = np.asarray(building.floor_levels, dtype=float)
+    # (levers from the footing's base, about which it rocks, D below the ground)
+    z = np.asarray(building.floor_levels, dtype=float) + footing.embedment
     X = building.mass_centres[:, 0] - x0
     Y = building.mass_centres[:, 1] - y0
     A = np.zeros((m, 5))
