@@ -75,7 +75,7 @@ from pounding.structure.matrices import MatrixBuilding
 from pounding.structure.modal import eigenmodes
 from pounding.structure.shear_building import ShearBuilding
 
-__all__ = ["FlexibleBaseBuilding", "Foundation", "flexible_base"]
+__all__ = ["FlexibleBaseBuilding", "Foundation", "flexible_base", "static_shape"]
 
 SWAY_LABEL = "Fdn"
 """The label of a footing's sway DOF (its rocking: ``Fdn_r``)."""
@@ -224,6 +224,20 @@ class FlexibleBaseBuilding(MatrixBuilding):
     __hash__ = None
 
 
+def static_shape(K: NDArray[np.float64], keep: NDArray[np.int64]) -> NDArray[np.float64]:
+    """The static shape ``Φ`` (n × n_keep) that gives every DOF from the kept ones,
+    ``y = Φ y_keep``: the identity on the kept DOFs, ``−K_dd⁻¹ K_dk`` on the dropped ones
+    (Guyan's static condensation of a massless footing's DOFs; the reduced matrices are
+    ``Φᵀ A Φ``)."""
+    n = K.shape[0]
+    drop = np.setdiff1d(np.arange(n), keep)
+    Phi = np.zeros((n, keep.size))
+    Phi[keep, np.arange(keep.size)] = 1.0
+    if drop.size:
+        Phi[drop] = -np.linalg.solve(K[np.ix_(drop, drop)], K[np.ix_(drop, keep)])
+    return Phi
+
+
 def _first_omega(M: NDArray[np.float64], K: NDArray[np.float64]) -> float:
     return float(eigenmodes(M, K)[0][0])
 
@@ -310,12 +324,7 @@ def flexible_base(building: ShearBuilding | MatrixBuilding, footing: Footing,
         K_lin = 0.5 * (K_lin + K_lin.T)
     keep = np.r_[np.arange(n), [n] if footing.mass > 0.0 else [], [n + 1] if footing.inertia > 0.0
                  else []].astype(np.int64)
-    drop = np.setdiff1d(np.arange(n + 2), keep)
-    # the static shape: every DOF of y from the kept ones, y = Φ y_keep
-    Phi = np.zeros((n + 2, keep.size))
-    Phi[keep, np.arange(keep.size)] = 1.0
-    if drop.size:
-        Phi[drop] = -np.linalg.solve(K[np.ix_(drop, drop)], K[np.ix_(drop, keep)])
+    Phi = static_shape(K, keep)  # every DOF of y from the kept ones, y = Φ y_keep
     M_k = Phi.T @ M @ Phi
     K_k = Phi.T @ K @ Phi
     omega = _first_omega(M_k, K_k)

@@ -50,7 +50,8 @@ axis (the rocking axis of the row); about x, by default that times the ratio of 
 second moments of area (1 for a circle, ``(width/length)²`` for a rectangle: a thin
 uniform plate); about the vertical, by default their sum (a thin plate's polar moment).
 Either may be given (``inertias``). A DOF whose inertia is zero is condensed out
-statically as in the plane case (:func:`condense`).
+statically as in the plane case
+(:func:`~pounding.structure.foundation.flexible_base.static_shape`).
 
 Outputs: the footing's motion and the soil's reactions on it
 (:meth:`PlanFoundation.base_reactions`), and the building's own deformation
@@ -67,6 +68,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.structure.foundation.flexible_base import static_shape
 from pounding.structure.foundation.impedance import (
     Footing,
     footing_dashpots,
@@ -79,23 +81,10 @@ from pounding.structure.plan import PlanBuilding
 from pounding.structure.plan_row import PlanMatrixBuilding
 
 __all__ = ["FOOTING_DOFS", "PlanFlexibleBaseBuilding", "PlanFoundation", "PlanImpedance",
-           "condense", "plan_flexible_base"]
+           "plan_flexible_base"]
 
 FOOTING_DOFS: tuple[str, ...] = ("Fdn_x", "Fdn_y", "Fdn_rx", "Fdn_ry", "Fdn_t")
 """The labels of the footing's DOFs: sway along x and y, rocking about x and y, torsion."""
-
-
-def condense(K: NDArray[np.float64], keep: NDArray[np.int64]) -> NDArray[np.float64]:
-    """The static shape ``Φ`` (n × n_keep) that gives every DOF from the kept ones,
-    ``y = Φ y_keep``: the identity on the kept DOFs, ``−K_dd⁻¹ K_dk`` on the dropped ones
-    (Guyan's static condensation of the massless DOFs; the reduced matrices are ``Φᵀ A Φ``)."""
-    n = K.shape[0]
-    drop = np.setdiff1d(np.arange(n), keep)
-    Phi = np.zeros((n, keep.size))
-    Phi[keep, np.arange(keep.size)] = 1.0
-    if drop.size:
-        Phi[drop] = -np.linalg.solve(K[np.ix_(drop, drop)], K[np.ix_(drop, keep)])
-    return Phi
 
 
 @dataclass(frozen=True)
@@ -309,7 +298,7 @@ def plan_flexible_base(building: PlanBuilding, footing: Footing, soil: Soil,
     k_t = footing_torsion(footing, soil, 1.0)[0]  # (the spring: any frequency)
     springs = (k_x, k_y, k_rx, k_ry, k_t)
     K[m:, m:] += np.diag(springs)
-    Phi = condense(K, keep)
+    Phi = static_shape(K, keep)
     M_k, K_k = Phi.T @ M @ Phi, Phi.T @ K @ Phi
     omega = float(eigenmodes(M_k, K_k)[0][0])
     c_x, c_ry = footing_dashpots(footing, soil, omega)
