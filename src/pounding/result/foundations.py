@@ -12,8 +12,43 @@ import numpy as np
 
 from pounding.structure.foundation import FlexibleBaseBuilding, PlanFlexibleBaseBuilding
 
-__all__ = ["flexible_base_drifts", "flexible_base_storeys", "foundation_summary",
-           "plan_deformation"]
+__all__ = ["flexible_base_drifts", "flexible_base_storeys", "footing_dofs", "footing_rotations",
+           "foundation_summary", "plan_deformation"]
+
+
+def _footing_local(building: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The footing's DOFs of one building on a flexible base (its DOFs after those of the
+    building on it), and which of them are rotations [rad] (a row building's rocking; in
+    plan the rockings about x and y and the torsion); empty for any other building."""
+    if isinstance(building, PlanFlexibleBaseBuilding):
+        m = building.foundation.rigid.shape[0]  # (the floors' u_x, u_y, θ come first)
+        kinds = [k for k, e in enumerate(building.foundation.explicit) if e]
+        return m + np.arange(len(kinds)), np.array([k >= 2 for k in kinds], dtype=bool)
+    if isinstance(building, FlexibleBaseBuilding):
+        sway, rock = building.foundation.explicit
+        n0 = int(building.n) - int(sway) - int(rock)
+        return n0 + np.arange(int(sway) + int(rock)), np.array([False] * int(sway)
+                                                             + [True] * int(rock), dtype=bool)
+    return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=bool)
+
+
+def footing_dofs(model: Any) -> np.ndarray:
+    """The global DOFs of every footing of the model's buildings on a flexible base (its
+    sway, rocking, torsion: DOFs of the model, but no floors), ascending; empty without
+    one."""
+    out = [int(off) + _footing_local(bl)[0] for bl, off in zip(model.buildings,
+                                                              model.system.offsets)]
+    return np.concatenate(out).astype(np.int64) if out else np.zeros(0, dtype=np.int64)
+
+
+def footing_rotations(model: Any) -> np.ndarray:
+    """The global DOFs of the footings' rotations [rad] (a row building's rocking
+    ``Fdn_r``; in plan ``Fdn_rx``, ``Fdn_ry``, ``Fdn_t``), ascending; empty without one."""
+    out = []
+    for bl, off in zip(model.buildings, model.system.offsets):
+        dofs, rotation = _footing_local(bl)
+        out.append(int(off) + dofs[rotation])
+    return np.concatenate(out).astype(np.int64) if out else np.zeros(0, dtype=np.int64)
 
 
 def plan_deformation(building: Any, displacement: np.ndarray) -> np.ndarray:
