@@ -110,8 +110,10 @@ def test_an_elastic_frame_on_a_footing_reports_its_own_deformation() -> None:
     """An elastic 3-storey frame without rigid floors on a footing under El Centro: the
     storey drifts reported are the frame's own (its floors less the footing's sway and
     rocking, ``x_j − x_{j−1} − Δz φ``, ``x_0 = u_f``), its storey shears the sum of its
-    restoring forces ``K u`` above each storey (u = T y) — the base shear equals the
-    soil's base shear less the footing's inertia and the dashpot; the energy balances."""
+    restoring forces ``K u`` above each storey (u = T y); the footing is in horizontal
+    equilibrium at every output step, the frame's base shear plus its damping force on
+    the footing being the soil's reaction ``k_x u_f + c_x u̇_f`` plus the footing's inertia
+    ``m_f (ü_f + a_g)`` (from the run's accelerations); the energy balances."""
     b = frame_matrix_building(_three_storeys(rigid_floors=False))
     fb = frame_on_flexible_base(b, Footing(length=12.0, width=8.0, mass=2.0e5,
                                            inertia=3.0e6), SOIL)
@@ -130,7 +132,16 @@ def test_an_elastic_frame_on_a_footing_reports_its_own_deformation() -> None:
     base = R.sum(axis=1)
     assert np.max(np.abs(res.storey_shear[:, floors[0]] - base)) <= 1e-9 * np.max(np.abs(base))
     # the footing: m_f (ü_f + a_g) = −(k_x u_f + c_x u̇_f) + (the frame's base shear + its
-    # damping force on the footing)
+    # damping force on the footing), with the footing's absolute acceleration the run's
+    v = res.velocity
+    u_dot = v[:, :n] - v[:, n:n + 1] - z[None, :] * v[:, n + 1:n + 2]
+    frame_on_footing = base + (u_dot @ b.damping_matrix().T).sum(axis=1)
+    imp = fb.foundation.impedance
+    soil = imp.k_x * u_f + imp.c_x * v[:, n]
+    inertia = fb.foundation.footing.mass * res.abs_acceleration[:, n]
+    np.testing.assert_allclose(soil + inertia, frame_on_footing, rtol=0.0,
+                               atol=1e-9 * np.max(np.abs(soil)))
+    assert np.max(np.abs(inertia)) > 0.05 * np.max(np.abs(soil))  # (the inertia matters)
     assert res.energy_balance_error < 1e-7
     assert np.max(np.abs(phi)) > 0 and np.max(np.abs(drift)) > 1e-3
 

@@ -269,3 +269,22 @@ def test_imk_keys_are_checked(tmp_path: Path, change: str, says: str) -> None:
     text = IMK_PORTAL.replace(change, replacement, 1)
     with pytest.raises(ValueError, match=says):
         load_pushover(_write(tmp_path, text))
+
+
+def test_a_frame_on_a_foundation_is_refused_and_nothing_written(tmp_path: Path) -> None:
+    """A pushover is on a fixed base: a frame with ``foundation`` is refused in one line
+    naming the field (exit 2, no folder), not pushed as if the footing were not there."""
+    model = tmp_path / "soil.toml"
+    model.write_text(PORTAL.read_text(encoding="utf-8").replace(
+        "[building.frame]",
+        'foundation = { length = 8.0, width = 6.0, mass = 1.5e5, inertia = 1.2e6, '
+        'soil = { vs = 60.0, density = 1800.0, poisson = 0.33 } }\n\n[building.frame]', 1),
+        encoding="utf-8")
+    assert "foundation = {" in model.read_text(encoding="utf-8")
+    code, out = _run("pushover", str(model), "--out", str(tmp_path / "p"))
+    assert code == 2
+    lines = [ln for ln in out.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "Traceback" not in out
+    assert lines[0].endswith("building[0].foundation: a pushover is on a fixed base; remove "
+                             "foundation to push the frame")
+    assert not (tmp_path / "p").exists()

@@ -113,6 +113,11 @@ def load_pushover(path: str | os.PathLike[str], *, building: str | None = None
             key = "--building" if building is not None else "pushover.building"
             raise ValueError(f"{where}: {key}: no frame named {wanted!r} (frames: {names})")
         i, chosen = named[0]
+    if chosen.foundation is not None:
+        # (the pushover's base shear is its supports' reactions: a footing on soil would
+        # rotate and sway under it, which the event-to-event push does not model)
+        raise ValueError(f"{where}: building[{i}].foundation: a pushover is on a fixed base; "
+                         "remove foundation to push the frame")
     try:
         with prefixed(f"building[{i}]", BuildingConfig.model_fields):
             frame = chosen.build_frame(f"B{i + 1}")

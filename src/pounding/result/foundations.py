@@ -12,8 +12,30 @@ import numpy as np
 
 from pounding.structure.foundation import FlexibleBaseBuilding, PlanFlexibleBaseBuilding
 
-__all__ = ["flexible_base_drifts", "flexible_base_storeys", "foundation_summary",
+__all__ = ["flexible_base_drifts", "flexible_base_storeys", "footing_dofs", "foundation_summary",
            "plan_deformation"]
+
+
+def _footing_local(building: Any) -> np.ndarray:
+    """The footing's DOFs of one building on a flexible base (its DOFs after those of the
+    building on it: a row building's sway and rocking, in plan its sways, rockings and
+    torsion, those that are DOFs); empty for any other building."""
+    if isinstance(building, PlanFlexibleBaseBuilding):
+        m = building.foundation.rigid.shape[0]  # (the floors' u_x, u_y, θ come first)
+        return m + np.arange(sum(bool(e) for e in building.foundation.explicit))
+    if isinstance(building, FlexibleBaseBuilding):
+        n0 = int(building.fixed_base.n)
+        return np.arange(n0, int(building.n))
+    return np.zeros(0, dtype=np.int64)
+
+
+def footing_dofs(model: Any) -> np.ndarray:
+    """The global DOFs of every footing of the model's buildings on a flexible base (its
+    sway, rocking, torsion: DOFs of the model, but no floors), ascending; empty without
+    one."""
+    out = [int(off) + _footing_local(bl)
+           for bl, off in zip(model.buildings, model.system.offsets)]
+    return np.concatenate(out).astype(np.int64) if out else np.zeros(0, dtype=np.int64)
 
 
 def plan_deformation(building: Any, displacement: np.ndarray) -> np.ndarray:
@@ -88,7 +110,9 @@ units of its spring and dashpot, as the summary's keys spell them."""
 
 def _plan_row(r: Any, b: int, bl: PlanFlexibleBaseBuilding, off: int) -> dict[str, Any]:
     """The ``foundations`` row of building ``b`` in plan on a flexible base: its footing
-    (centre, inertias, which motions are DOFs), soil and five springs and dashpots, the
+    (its size and embedment [m], mass [kg], rocking and torsion inertias [kg·m²], which
+    motions are DOFs, ``sway_x_dof`` … ``torsion_dof``, as a row building's ``sway_dof``
+    and ``rocking_dof``; and its centre [m]), soil and five springs and dashpots, the
     periods, and the peaks of the footing's sway along x and y [m], rocking about x and y
     and torsion [rad], and of the soil's reactions on it: base shears [N], base moments
     about x and y and base torque [N·m] (``k y_f + c ẏ_f``), read at the output steps;
@@ -102,11 +126,12 @@ def _plan_row(r: Any, b: int, bl: PlanFlexibleBaseBuilding, off: int) -> dict[st
         "building": f"B{b + 1}", "name": bl.name,
         "footing": ({"radius_m": ft.radius} if ft.radius is not None else
                     {"length_m": ft.length, "width_m": ft.width})
-        | {"centre_m": [f.centre[0], f.centre[1]], "mass_kg": ft.mass,
-           "inertia_about_x_kg_m2": f.inertias[0], "inertia_about_y_kg_m2": f.inertias[1],
-           "inertia_about_z_kg_m2": f.inertias[2],
-           "dofs": [k for k, e in zip(("sway_x", "sway_y", "rocking_about_x",
-                                       "rocking_about_y", "torsion"), f.explicit) if e]},
+        | {"embedment_m": ft.embedment, "mass_kg": ft.mass,
+           "rocking_inertia_about_x_kg_m2": f.inertias[0],
+           "rocking_inertia_about_y_kg_m2": f.inertias[1],
+           "torsion_inertia_kg_m2": f.inertias[2]}
+        | {f"{name}_dof": bool(e) for (name, *_), e in zip(_PLAN_KEYS, f.explicit)}
+        | {"centre_m": [f.centre[0], f.centre[1]]},
         "soil": _soil_row(f.soil)}
     for (name, _, _, _, k_unit, c_unit), k, c in zip(_PLAN_KEYS, imp.springs, imp.dashpots):
         row[f"k_{name}_{k_unit}"] = k

@@ -181,7 +181,12 @@ class Response:
         elevation in a matrix building); NaN for a DOF that is not a floor — except the
         ``u_y`` DOFs of a building in plan, which hold the drift of the floors' centres of
         mass along y (its ``u_x`` DOFs are its floors, their drift along x). A base slab's
-        drift is its isolation bearing's displacement (:attr:`Result.bearings`)."""
+        drift is its isolation bearing's displacement (:attr:`Result.bearings`). A building
+        on a flexible base has the drifts of its own deformation, not its floors less the
+        floor below: ``x_j − x_{j−1} − (z_j − z_{j−1}) φ`` with ``x_0 = u_f``, the footing's
+        sway and rocking taken out (in plan: along x and y at the centres of mass, the
+        footing's rigid motion taken out;
+        :func:`pounding.result.foundations.flexible_base_drifts`)."""
         u = self.displacement
         below = self.model.floor_below()
         out = u.copy()

@@ -103,15 +103,21 @@ def history_variables(result: Response) -> HistoryVariables:
     data = {
         "ground_acceleration": var(result.ground, ground_dims, "m/s^2", "ground acceleration"),
         "displacement": var(result.displacement, ("time", "floor"), "m",
-                            "floor displacement relative to the ground"),
+                            "floor displacement relative to the ground (in rad where "
+                            "dof_unit is rad: a rotation)"),
         "velocity": var(result.velocity, ("time", "floor"), "m/s",
-                        "floor velocity relative to the ground"),
+                        "floor velocity relative to the ground (in rad/s where dof_unit is "
+                        "rad: a rotation)"),
         "absolute_acceleration": var(result.abs_acceleration, ("time", "floor"), "m/s^2",
-                                     "absolute floor acceleration"),
+                                     "absolute floor acceleration (in rad/s^2 where "
+                                     "dof_unit is rad: a rotation)"),
         "drift": var(result.drift, ("time", "floor"), "m",
-                     "storey drift (floor minus floor below; a building in plan: along x "
-                     "under its x DOFs, along y under its y DOFs, at the centres of mass; "
-                     "under a base slab: its isolation bearing's displacement, also "
+                     "storey drift (floor minus floor below; a building on a flexible "
+                     "base: of its own deformation, x_j - x_(j-1) - (z_j - z_(j-1)) phi with "
+                     "x_0 = u_f, the footing's sway and rocking taken out; a building in "
+                     "plan: along x under its x DOFs, along y under its y DOFs, at the "
+                     "centres of mass (on a flexible base: of its own deformation); under a "
+                     "base slab: its isolation bearing's displacement, also "
                      "bearing_displacement; NaN: not a floor)"),
         "storey_shear": var(result.storey_shear, ("time", "floor"), "N",
                             "storey shear (a building in plan: from its lateral elements, "
@@ -187,8 +193,18 @@ def history_variables(result: Response) -> HistoryVariables:
                              "a degree of freedom that is not a floor)"),
         "dof_name": Variable(("floor",), np.array(model.dof_names(), dtype=object),
                              {"long_name": "the degree of freedom's name in its building (a "
-                                           "matrix building's labels; a DOF that is not a "
-                                           "floor translation, a rotation say, is in rad)"}),
+                                           "matrix building's labels; a footing's Fdn, "
+                                           "Fdn_r, ...; a DOF that is not a floor "
+                                           "translation, a rotation say, is in rad: "
+                                           "dof_unit)"}),
+        "dof_unit": Variable(("floor",), np.array(model.dof_units(), dtype=object),
+                             {"long_name": "unit of the degree of freedom's displacement: m "
+                                           "(a translation), rad (a rotation: a building in "
+                                           "plan's θ, a footing's rocking Fdn_r, Fdn_rx, "
+                                           "Fdn_ry and torsion Fdn_t, a frame node's r), '' "
+                                           "(a DOF of a building given as matrices that is "
+                                           "no floor: as its matrices take it); its velocity "
+                                           "per s, its acceleration per s^2"}),
         "contact_elevation": var(rounded_length([c.elevation for c in contacts]), ("contact",), "m",
                                  "elevation of the contact"),
     }

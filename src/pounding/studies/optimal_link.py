@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 if TYPE_CHECKING:
     from pounding.ground_motion import GroundMotion
@@ -23,17 +24,35 @@ if TYPE_CHECKING:
 __all__ = ["RESPONSES", "LinkOptimum", "optimal_link_coefficient"]
 
 
+def _roof(model: PoundingModel) -> int:
+    """The global DOF of the first building's roof: its highest floor (not its last DOF,
+    which is a footing's rocking on a flexible base, or a matrix building's rotation)."""
+    off, n = int(model.system.offsets[0]), int(model.buildings[0].n)
+    floors = np.flatnonzero(model.is_floor[off:off + n])
+    levels = np.asarray(model.buildings[0].floor_levels, dtype=float)[floors]
+    return off + int(floors[int(np.argmax(levels))])
+
+
+def _largest(r: Result, values: NDArray[np.float64]) -> float:
+    """The largest of a per-DOF peak over the DOFs that are no footing's (a footing's sway
+    and rocking are DOFs, no floors: :func:`pounding.result.foundations.footing_dofs`)."""
+    from pounding.result.foundations import footing_dofs
+
+    return float(np.max(np.delete(values, footing_dofs(r.model))))
+
+
 RESPONSES: dict[str, Callable[[Result], float]] = {
     "peak_drift_ratio": lambda r: float(np.nanmax(r.peak_drift_ratio)),  # storeys only
-    "peak_displacement": lambda r: float(np.max(r.peak_displacement)),
-    "peak_abs_acceleration": lambda r: float(np.max(r.peak_abs_acceleration)),
+    "peak_displacement": lambda r: _largest(r, r.peak_displacement),
+    "peak_abs_acceleration": lambda r: _largest(r, r.peak_abs_acceleration),
     "peak_contact_force": lambda r: float(r.peak_contact_force.max()) if r.peak_contact_force.size
     else 0.0,
     "rms_displacement_B1": lambda r: float(np.sqrt(np.mean(
-        r.displacement[:, r.model.system.offsets[0] + r.model.buildings[0].n - 1] ** 2))),
+        r.displacement[:, _roof(r.model)] ** 2))),
 }
-"""Named responses :func:`optimal_link_coefficient` can minimise (largest over all floors;
-``rms_displacement_B1``: root-mean-square roof displacement of the first building)."""
+"""Named responses :func:`optimal_link_coefficient` can minimise (largest over all floors,
+a footing's sway and rocking left out; ``rms_displacement_B1``: root-mean-square
+displacement of the first building's roof, its highest floor)."""
 
 
 @dataclass(frozen=True)

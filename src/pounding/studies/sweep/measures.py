@@ -28,8 +28,10 @@ MEASURES: dict[str, str] = {
 }
 """Measures of every case (column → type): impacts (all contacts), largest contact force,
 energy dissipated in the contacts and put in by the ground at the end, relative
-energy-balance error, largest storey drift / storey height over all storeys, largest
-absolute floor acceleration over all floors (of the per-floor columns), PGA of the
+energy-balance error, largest storey drift / storey height over all storeys (of a building
+on a flexible base: the drift of its own deformation, the footing's sway and rocking taken
+out, as :attr:`pounding.result.Result.drift`), largest absolute floor acceleration over all
+floors (of the per-floor columns), PGA of the
 record as applied, whether the impact table overflowed; with yielding storeys the
 hysteretic energy at the end, the largest storey ductility demand and the largest
 |residual drift| (null, null and 0 for linear storeys; a frame with plastic hinges has its
@@ -41,7 +43,10 @@ buildings the energy they dissipated and the largest |force| of any (null withou
 
 FLOOR_MEASURES: tuple[str, ...] = ("peak_displacement_m", "peak_drift_m", "peak_abs_accel_m_s2")
 """Per-floor measures, one column per floor: ``<measure>_B1F1``, ``<measure>_B1F2``, …
-(floor displacement relative to the ground, storey drift, absolute floor acceleration)."""
+(floor displacement relative to the ground, storey drift, absolute floor acceleration),
+labelled as :meth:`pounding.model.PoundingModel.dof_labels`. A footing's sway and rocking
+(``B1Fdn``, ``B1Fdn_r``, …) are DOFs but no floors: they have no columns (they are in
+``summary.json``'s ``foundations`` of a single run)."""
 
 
 class _Layout(NamedTuple):
@@ -50,10 +55,15 @@ class _Layout(NamedTuple):
 
     floor_columns: tuple[tuple[str, ...], ...]
     """The per-floor column names, one tuple per :data:`FLOOR_MEASURES`."""
+    dofs: np.ndarray
+    """The DOFs that have per-floor columns (every DOF but a footing's), in their order."""
     heights: np.ndarray
     """Storey height of every floor [m] (N,)."""
     below: np.ndarray
     """The floor below each floor (−1: the ground), as :func:`pounding.integrate.floor_below`."""
+    flexible: bool
+    """Whether some building stands on a flexible base (its storeys' drifts are those of its
+    own deformation: :func:`pounding.result.foundations.flexible_base_drifts`)."""
     inelastic: bool
     """Whether any storey yields."""
     hinges: bool
@@ -72,6 +82,8 @@ def _layout(model: Any) -> _Layout:
     key = id(model)
     layout = _LAYOUTS.get(key)
     if layout is None:
+        from pounding.result.foundations import footing_dofs
+
         labels = model.dof_labels()
         below = model.floor_below()  # −2: not a floor (a matrix building's rotation, say)
         own = below == -2
@@ -82,9 +94,13 @@ def _layout(model: Any) -> _Layout:
         from pounding.result import bearing_mask
 
         heights[bearing_mask(model)] = np.nan
-        layout = _Layout(tuple(tuple(f"{name}_{lb}" for lb in labels)
-                               for name in FLOOR_MEASURES), heights, below,
-                         bool(model.is_inelastic), bool(model.yielding_frames),
+        # a footing's sway and rocking are DOFs but no floors: no per-floor columns
+        footings = footing_dofs(model)
+        dofs = np.setdiff1d(np.arange(len(labels)), footings)
+        layout = _Layout(tuple(tuple(f"{name}_{labels[j]}" for j in dofs)
+                               for name in FLOOR_MEASURES), dofs, heights, below,
+                         bool(footings.size), bool(model.is_inelastic),
+                         bool(model.yielding_frames),
                          any(c.struck is not None for c in model.contacts))
         try:
             # the entry must go when the model does (before its id can be reused)
@@ -117,6 +133,16 @@ def result_row(result: Any) -> dict[str, Any]:
     e = result.energy
     pcf = result.peak_contact_force
     drift = abs_max_drift(result.displacement, layout.below)
+    if layout.flexible:
+        # a building on a flexible base: its storeys' drifts are those of its own
+        # deformation, the footing's sway and rocking taken out (as Result.drift), read at
+        # the output steps (as Result.peak_drift reads them)
+        from pounding.result.foundations import flexible_base_drifts
+
+        floor = result.model.is_floor
+        for cols, d in flexible_base_drifts(result.model, result.displacement):
+            mine = floor[cols]
+            drift[cols[mine]] = np.abs(d[:, mine]).max(axis=0)
     accel = abs_max_columns(result.abs_acceleration)
     inelastic = layout.inelastic
     shear_ratio = result.column_shear_ratio if layout.struck else None
@@ -127,7 +153,7 @@ def result_row(result: Any) -> dict[str, Any]:
         "energy_input_J": float(e[-1, 0]),
         "energy_balance_error": float(result.energy_balance_error),
         "peak_drift_ratio": float(np.nanmax(drift / layout.heights)),
-        "peak_floor_accel_m_s2": float(accel.max()),
+        "peak_floor_accel_m_s2": float(accel[layout.dofs].max()),
         "record_pga_g": float(result.motion.pga_g),
         "impact_overflow": bool(result.stats.impact_overflow),
         # not applicable → null (not NaN: a null compares equal, so tables stay comparable)
@@ -145,6 +171,6 @@ def result_row(result: Any) -> dict[str, Any]:
     }
     for names, values in zip(layout.floor_columns,
                              (result.peak_displacement, drift, accel)):
-        for name, v in zip(names, values.tolist()):
+        for name, v in zip(names, values[layout.dofs].tolist()):
             row[name] = v
     return row
