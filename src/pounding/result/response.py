@@ -444,20 +444,34 @@ class Response:
         """Largest |storey drift| of every storey [m] (N,: the storey below each floor),
         located inside solver steps (a building on a flexible base: the drift of its own
         deformation, read at the output steps, :attr:`drift`); NaN for a DOF that is not a
-        floor."""
-        return np.where(self.model.is_floor, self._drift_peaks[0], np.nan)
+        floor; a building in plan: along x under its ``u_x`` DOFs, along y under its ``u_y``
+        DOFs (read at the output steps), none under ``θ``)."""
+        return np.where(self._drifts, self._drift_peaks[0], np.nan)
 
     @property
     def peak_drift_time(self) -> NDArray[np.float64]:
         """Time of every storey's :attr:`peak_drift` [s] (N,)."""
-        return np.where(self.model.is_floor, self._drift_peaks[1], np.nan)
+        return np.where(self._drifts, self._drift_peaks[1], np.nan)
+
+    @cached_property
+    def _plan_y(self) -> NDArray[np.int64]:
+        """The ``u_y`` DOFs of the buildings in plan (their drifts along y)."""
+        return np.concatenate([off + 1 + 3 * np.arange(n) for off, n in self._plan_blocks]
+                              or [np.zeros(0, dtype=np.int64)]).astype(np.int64)
+
+    @cached_property
+    def _drifts(self) -> NDArray[np.bool_]:
+        """True under every DOF with a storey drift: the floors, and a plan's ``u_y``."""
+        out = np.array(self.model.is_floor, dtype=bool)
+        out[self._plan_y] = True
+        return out
 
     @cached_property
     def _drift_peaks(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         peak, when = self._peak(2, self.drift)
         cols = np.concatenate([c for c, _ in flexible_base_drifts(self.model,
                                                                   self.displacement[:1])]
-                              or [np.zeros(0, dtype=np.int64)])
+                              + [self._plan_y])
         if cols.size:  # (the kernel located the floors' relative drift: not these)
             a = np.abs(self.drift[:, cols])
             k = np.argmax(a, axis=0)
@@ -469,7 +483,9 @@ class Response:
         """:attr:`peak_drift` over the storey height [-] (N,); NaN for a DOF that is not a
         floor and under a base slab (its isolation bearing is no storey:
         :attr:`Result.bearings`)."""
-        ratio = self.peak_drift / np.concatenate([b.heights for b in self.model.buildings])
+        heights = np.concatenate([b.heights for b in self.model.buildings])
+        heights[self._plan_y] = heights[self._plan_y - 1]  # (a plan's u_y: its storey's)
+        ratio = self.peak_drift / heights
         return np.where(self.is_bearing, np.nan, ratio)
 
     @property

@@ -42,9 +42,16 @@ largest struck-column shear over its storey's peak shear (null without); with li
 buildings the energy they dissipated and the largest |force| of any (null without)."""
 
 FLOOR_MEASURES: tuple[str, ...] = ("peak_displacement_m", "peak_drift_m", "peak_abs_accel_m_s2")
+ROTATION_NAMES: dict[str, str] = {"peak_displacement_m": "peak_rotation_rad",
+                                  "peak_drift_m": "peak_twist_rad",
+                                  "peak_abs_accel_m_s2": "peak_abs_accel_rad_s2"}
+"""The per-floor measures' names for a floor's rotation (a building in plan's ``θ``): its
+peak rotation, the peak twist of the storey under it (``θ_j − θ_{j−1}``) and its peak
+angular acceleration, in radians."""
 """Per-floor measures, one column per floor: ``<measure>_B1F1``, ``<measure>_B1F2``, …
 (floor displacement relative to the ground, storey drift, absolute floor acceleration),
-labelled as :meth:`pounding.model.PoundingModel.dof_labels`. A footing's sway and rocking
+labelled as :meth:`pounding.model.PoundingModel.dof_labels` (a building in plan: ``_B1F1x``,
+``_B1F1y``, and its rotation's under :data:`ROTATION_NAMES`). A footing's sway and rocking
 (``B1Fdn``, ``B1Fdn_r``, …) are DOFs but no floors: they have no columns (they are in
 ``summary.json``'s ``foundations`` of a single run)."""
 
@@ -57,6 +64,8 @@ class _Layout(NamedTuple):
     """The per-floor column names, one tuple per :data:`FLOOR_MEASURES`."""
     dofs: np.ndarray
     """The DOFs that have per-floor columns (every DOF but a footing's), in their order."""
+    translations: np.ndarray
+    """Those of them that translate (in m; not a floor's rotation θ in rad)."""
     heights: np.ndarray
     """Storey height of every floor [m] (N,)."""
     below: np.ndarray
@@ -83,12 +92,23 @@ def _layout(model: Any) -> _Layout:
     layout = _LAYOUTS.get(key)
     if layout is None:
         from pounding.result.foundations import footing_dofs
+        from pounding.structure.plan_row import PlanMatrixBuilding
 
         labels = model.dof_labels()
         below = model.floor_below()  # −2: not a floor (a matrix building's rotation, say)
+        heights = np.concatenate([b.heights for b in model.buildings]).astype(float)
+        rotation = np.array([u == "rad" for u in model.dof_units()])
+        for off, b in zip(model.system.offsets, model.buildings):
+            if isinstance(b, PlanMatrixBuilding):
+                # a floor in plan: its u_y and θ over the floor below's (its u_x is a floor
+                # of floor_below), u_y's drift over the storey's height, θ's twist none
+                n = b.plan.n_floors
+                for c in (1, 2):
+                    d = int(off) + c + 3 * np.arange(n)
+                    below[d] = np.r_[-1, d[:-1]]
+                    heights[d] = heights[d - c] if c == 1 else np.nan
         own = below == -2
         below[own] = np.flatnonzero(own)  # drift u − u = 0, over a NaN height: left out
-        heights = np.concatenate([b.heights for b in model.buildings]).astype(float)
         # an isolation bearing under a base slab is no storey: no drift ratio
         # (pounding.result.bearing_mask)
         from pounding.result import bearing_mask
@@ -97,8 +117,10 @@ def _layout(model: Any) -> _Layout:
         # a footing's sway and rocking are DOFs but no floors: no per-floor columns
         footings = footing_dofs(model)
         dofs = np.setdiff1d(np.arange(len(labels)), footings)
-        layout = _Layout(tuple(tuple(f"{name}_{labels[j]}" for j in dofs)
-                               for name in FLOOR_MEASURES), dofs, heights, below,
+        layout = _Layout(tuple(tuple(f"{ROTATION_NAMES[name] if rotation[j] else name}_"
+                                     f"{labels[j]}" for j in dofs)
+                               for name in FLOOR_MEASURES), dofs,
+                         np.setdiff1d(dofs, np.flatnonzero(rotation)), heights, below,
                          bool(footings.size), bool(model.is_inelastic),
                          bool(model.yielding_frames),
                          any(c.struck is not None for c in model.contacts))
@@ -153,7 +175,7 @@ def result_row(result: Any) -> dict[str, Any]:
         "energy_input_J": float(e[-1, 0]),
         "energy_balance_error": float(result.energy_balance_error),
         "peak_drift_ratio": float(np.nanmax(drift / layout.heights)),
-        "peak_floor_accel_m_s2": float(accel[layout.dofs].max()),
+        "peak_floor_accel_m_s2": float(accel[layout.translations].max()),
         "record_pga_g": float(result.motion.pga_g),
         "impact_overflow": bool(result.stats.impact_overflow),
         # not applicable → null (not NaN: a null compares equal, so tables stay comparable)
