@@ -119,7 +119,7 @@ def test_third_party_check_case():
 @pytest.mark.parametrize("skew", [0.0, 30.0, 60.0])
 def test_within_two_percent_of_the_si_edition(length, height, skew):
     """The SI edition's rounded form N = (200 + 0.0017 L + 0.0067 H)(1 + 0.000125 S^2) mm
-    (quoted in Khan, Bridge and Highway Structure Rehabilitation and Repair, p. 106; the same
+    (quoted in Bridge and Highway Structure Rehabilitation and Repair, p. 106; the same
     form in KDS 24 17 11 4.2.8(3) with L, H in m: 200 + 1.67 L + 6.66 H): each coefficient is
     within 2 % of the exact conversion, so N is too."""
     rounded_mm = (200.0 + 0.0017 * length * 1e3 + 0.0067 * height * 1e3) * (
