@@ -166,8 +166,7 @@ def aashto_lrfd_required_support_length(deck_length_m: float, column_height_m: f
     """Minimum support length of AASHTO LRFD Art. 4.7.4.4: the percentage times N [m].
 
     ``N_req = p/100 · N`` with N of Eq. 4.7.4.4-1 (:func:`aashto_empirical_support_length`)
-    and p of Table 4.7.4.4-1 (:func:`aashto_lrfd_support_length_percent`). The article asks
-    for this at expansion bearings without restrainers, STUs or dampers.
+    and p of Table 4.7.4.4-1 (:func:`aashto_lrfd_support_length_percent`).
 
     Parameters
     ----------
