@@ -116,7 +116,9 @@ class WallConfig(LawConfig):
 
     @model_validator(mode="after")
     def _law_keys(self) -> WallConfig:  # type: ignore[override]
-        law_keys = sorted(self.model_fields_set - WALL_KEYS - {"law"})
+        # (a key at its default, as a written-out model file has them, says nothing)
+        law_keys = sorted(k for k in self.model_fields_set - WALL_KEYS - {"law"}
+                          if getattr(self, k) != type(self).model_fields[k].default)
         if self.law is None:
             if law_keys:
                 raise field_error(law_keys[0], f"a key of the wall's own contact law (got "
