@@ -95,7 +95,7 @@ def one_mass(spec: ContactSpec, v0: float, duration: float, rtol: float | None =
     sdof = ShearBuilding.sdof(1.0e6, period=1.0e7, damping_ratio=0.0, height=1.0)
     model = PoundingModel([sdof], [], ContactSpec("linear-spring", k=1.0),
                           walls=[MoatWall(1.0, 0.01, contact=spec)])
-    quiet = GroundMotion(dt=0.01, accel=np.zeros(int(round(duration / 0.01)) + 1))
+    quiet = GroundMotion(dt=0.01, accel=np.zeros(round(duration / 0.01) + 1))
     kw = {} if rtol is None else {"rtol": rtol}
     return simulate(model, quiet, duration=duration, initial_velocity=np.array([v0]), **kw)
 

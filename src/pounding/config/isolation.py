@@ -115,7 +115,7 @@ class WallConfig(LawConfig):
         return None if v is None else known_law(v)
 
     @model_validator(mode="after")
-    def _law_keys(self) -> WallConfig:  # type: ignore[override]
+    def _law_keys(self) -> WallConfig:
         # (a key at its default, as a written-out model file has them, says nothing)
         law_keys = sorted(k for k in self.model_fields_set - WALL_KEYS - {"law"}
                           if getattr(self, k) != type(self).model_fields[k].default)

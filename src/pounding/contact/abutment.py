@@ -103,7 +103,7 @@ class AbutmentBackfill(ContactLaw):
         object.__setattr__(self, "delta_ult", max(yu, fu / k))
 
     @classmethod
-    def caltrans(cls, width: float, height: float) -> "AbutmentBackfill":
+    def caltrans(cls, width: float, height: float) -> AbutmentBackfill:
         """Caltrans SDC's elastic–perfectly-plastic backfill of a backwall ``width`` ×
         ``height`` [m]: ``K = K_i w (h/5.5 ft)``, ``F_ult = w h · 5.0 ksf · (h/5.5 ft)``
         (in SI, :data:`SDC_STIFFNESS_PER_WIDTH`, :data:`SDC_PASSIVE_PRESSURE`,
@@ -116,7 +116,7 @@ class AbutmentBackfill(ContactLaw):
         return cls(k, fu, fu / k)
 
     @classmethod
-    def elastic_plastic(cls, k: float, capacity: float) -> "AbutmentBackfill":
+    def elastic_plastic(cls, k: float, capacity: float) -> AbutmentBackfill:
         """The elastic–perfectly-plastic backfill of stiffness ``k`` [N/m] and capacity
         [N]."""
         kk = positive("k", k)
@@ -124,7 +124,7 @@ class AbutmentBackfill(ContactLaw):
         return cls(kk, fu, fu / kk)
 
     @classmethod
-    def hyperbolic(cls, k_max: float, capacity: float, delta_ult: float) -> "AbutmentBackfill":
+    def hyperbolic(cls, k_max: float, capacity: float, delta_ult: float) -> AbutmentBackfill:
         """Shamsabadi et al.'s (2007) hyperbolic backfill: initial stiffness ``k_max``
         [N/m], ``F_ult = capacity`` [N] reached at ``delta_ult`` [m]."""
         return cls(positive("k", k_max), capacity, delta_ult)
