@@ -25,11 +25,15 @@ LAWS: dict[str, type[ContactLaw]] = {
 }
 """Every contact law class, keyed by the name used in configs and on the command line."""
 
-LAW_NAMES: tuple[str, ...] = (
+IMPACT_LAW_NAMES: tuple[str, ...] = (
     "linear-spring", "kelvin-voigt", "modified-kelvin-voigt", "hertz", "hunt-crossley",
-    "hertzdamp", "nonlinear-viscoelastic", "naderpour", "bilinear-impact", "abutment",
+    "hertzdamp", "nonlinear-viscoelastic", "naderpour", "bilinear-impact",
 )
-"""Names :func:`make_law` accepts. ``hertzdamp`` is Hunt–Crossley with the
+"""The impact laws: those the single-collision commands (``pounding collide``) offer."""
+
+LAW_NAMES: tuple[str, ...] = (*IMPACT_LAW_NAMES, "abutment")
+"""Names :func:`make_law` accepts: the impact laws and the abutment backfill (a wall's law in
+a model file; :mod:`pounding.contact.abutment`). ``hertzdamp`` is Hunt–Crossley with the
 Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with ζ of seed eq 39."""
 
 DEFAULT_FORMULA: dict[str, str] = {
