@@ -104,13 +104,13 @@ def test_an_option_means_the_same_in_every_command() -> None:
 def test_the_names_of_every_choice_are_the_librarys() -> None:
     from pounding.contact.bilinear import BILINEAR_FORMULAS
     from pounding.contact.calibration import FIT_LAWS
-    from pounding.contact.factory import LAW_NAMES
+    from pounding.contact.factory import IMPACT_LAW_NAMES, LAW_NAMES
     from pounding.contact.restitution import FORMULAS
     from pounding.spectra.scaling import METHODS
     from pounding.studies.sweep import HISTORY_FORMATS
     from pounding.units import ACCELERATION_UNITS, acceleration_factor
 
-    assert [law.value for law in opt.Law] == list(LAW_NAMES)
+    assert [law.value for law in opt.Law] == list(IMPACT_LAW_NAMES)
     assert set(FIT_LAWS) <= set(LAW_NAMES)
     assert {f.value for f in opt.Formula} == {"exact", *FORMULAS, *BILINEAR_FORMULAS}
     assert {u.value for u in opt.Units} <= set(ACCELERATION_UNITS)

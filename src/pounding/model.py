@@ -28,8 +28,8 @@ columns, the ground's x and y components (run it under a
 :class:`~pounding.ground_motion.GroundMotionComponents`).
 
 Rigid moat walls (:class:`pounding.structure.wall.MoatWall`) may stand at the ends of the row;
-the floors of the end building at or below a wall's top strike it, with the same contact law
-and the wall's gap (contacts ``'B1F1-W'``, ``'W-B1F1'``, after the buildings' contacts).
+the floors of the end building at or below a wall's top strike it, with the model's contact law
+(or the wall's own: an abutment's backfill) and the wall's gap (contacts ``'B1F1-W'``, ``'W-B1F1'``, after the buildings' contacts).
 
 For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
 their shear comes from their storey law, and the stiffness matrix handed to the kernel

@@ -8,7 +8,14 @@ from typing import Annotated
 from pydantic import Field, field_validator, model_validator
 
 from pounding.config.base import Section, field_error, fmt
-from pounding.config.quantities import DampingCoefficient, Gap, HertzStiffness, Length, Stiffness
+from pounding.config.quantities import (
+    DampingCoefficient,
+    Force,
+    Gap,
+    HertzStiffness,
+    Length,
+    Stiffness,
+)
 from pounding.contact.factory import LAW_NAMES
 from pounding.model import ContactSpec
 
@@ -22,6 +29,8 @@ LAW_FIELDS: dict[str, frozenset[str]] = {
     "nonlinear-viscoelastic": frozenset({"k_h", "e", "formula", "zeta"}),
     "naderpour": frozenset({"k_h", "e", "formula", "zeta"}),
     "bilinear-impact": frozenset({"k_h", "e", "formula", "delta_m", "n", "a"}),
+    "abutment": frozenset({"backbone", "k", "capacity", "delta_ult", "backwall_width",
+                           "backwall_height"}),
 }
 """The ``[contact]`` keys each law reads (:func:`pounding.contact.factory.make_law`); giving
 another is an error rather than being silently ignored."""
@@ -30,14 +39,26 @@ CONTACT_COMMON = frozenset({"law", "gap", "gaps", "floor_to_column", "level_tole
 """``[contact]`` keys of every law."""
 
 
+def known_law(v: str) -> str:
+    """The law's key (lower case), or a ValueError naming the law asked for and the laws."""
+    key = v.strip().lower()
+    if key not in LAW_NAMES:
+        close = difflib.get_close_matches(key, LAW_NAMES, n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise ValueError(f"unknown law {v!r}{hint}; choose one of {', '.join(LAW_NAMES)}")
+    return key
+
+
 class LawConfig(Section):
     """A contact law in a model file: ``law`` and the keys it reads.
 
     ``law`` is a name of :data:`pounding.contact.factory.LAW_NAMES`; the other keys are
     those of :class:`pounding.model.ContactSpec` (``k`` [N/m], ``k_h`` [N/m^n], ``e`` [-],
     ``formula``, ``c`` [N·s/m], ``zeta`` [-], ``chi`` [-], ``n`` [-], ``tension``,
-    ``delta_m`` [m], ``a`` [-]); only the keys the law reads are accepted (:data:`LAW_FIELDS`).
-    The ``rubber`` of a bumper (``[[device]]``) is one.
+    ``delta_m`` [m], ``a`` [-]; the abutment backfill's ``backbone``, ``capacity`` [N],
+    ``delta_ult`` [m], ``backwall_width`` [m], ``backwall_height`` [m]); only the keys the
+    law reads are accepted (:data:`LAW_FIELDS`). The ``rubber`` of a bumper
+    (``[[device]]``) is one, and so is a ``[[wall]]``'s own law.
     """
 
     law: str
@@ -52,16 +73,16 @@ class LawConfig(Section):
     tension: bool = False
     delta_m: Length | None = None
     a: Annotated[float, Field(gt=0, lt=1)] = 0.1
+    backbone: str | None = None
+    capacity: Force | None = None
+    delta_ult: Length | None = None
+    backwall_width: Length | None = None
+    backwall_height: Length | None = None
 
     @field_validator("law")
     @classmethod
     def _known_law(cls, v: str) -> str:
-        key = v.strip().lower()
-        if key not in LAW_NAMES:
-            close = difflib.get_close_matches(key, LAW_NAMES, n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
-            raise ValueError(f"unknown law {v!r}{hint}; choose one of {', '.join(LAW_NAMES)}")
-        return key
+        return known_law(v)
 
     @model_validator(mode="after")
     def _law_keys(self) -> LawConfig:

@@ -16,7 +16,10 @@ the isolation storey under it (:meth:`pounding.structure.ShearBuilding.base_isol
 ``[[wall]]`` is a rigid moat wall at one end of the row
 (:class:`pounding.structure.wall.MoatWall`): ``height`` [m] of its top, ``gap`` [m] to the
 building next to it, ``side = "right"`` (default; right of the last building) or
-``"left"``, and ``name`` (default ``"W"``). Its contacts use the ``[contact]`` law. A
+``"left"``, and ``name`` (default ``"W"``). Its contacts use the ``[contact]`` law unless
+the wall gives its own, with the keys of ``[contact]``: ``law`` and the keys that law reads
+(an abutment: ``law = "abutment", backbone = "caltrans", backwall_width = 12.0,
+backwall_height = 2.0``, :class:`pounding.contact.abutment.AbutmentBackfill`). A
 flexible wall is a one-storey ``[[building]]`` of the wall's height, mass and stiffness
 standing in the row (:func:`pounding.structure.wall.flexible_wall`).
 """
@@ -25,9 +28,10 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from pounding.config.base import Section, check_bouc_wen_shape, field_error, fmt
+from pounding.config.contact import LAW_FIELDS, LawConfig, known_law
 from pounding.config.quantities import (
     DampingCoefficient,
     Force,
@@ -91,16 +95,55 @@ class IsolatorConfig(Section):
         return BilinearIsolator(**kw)
 
 
-class WallConfig(Section):
-    """``[[wall]]``: a rigid moat wall at one end of the row (module docstring)."""
+WALL_KEYS = frozenset({"height", "gap", "side", "name"})
+"""``[[wall]]`` keys of the wall itself; the others are its own contact law's."""
 
+
+class WallConfig(LawConfig):
+    """``[[wall]]``: a rigid moat wall at one end of the row, with an optional contact law of
+    its own (``law`` and its keys, as ``[contact]``; module docstring)."""
+
+    law: str | None = None  # type: ignore[assignment]
     height: Length
     gap: Gap
     side: Literal["right", "left"] = "right"
     name: Annotated[str, Field(min_length=1)] = "W"
 
+    @field_validator("law")
+    @classmethod
+    def _known_law(cls, v: str | None) -> str | None:  # type: ignore[override]
+        return None if v is None else known_law(v)
+
+    @model_validator(mode="after")
+    def _law_keys(self) -> WallConfig:
+        # (a key at its default, as a written-out model file has them, says nothing)
+        law_keys = sorted(k for k in self.model_fields_set - WALL_KEYS - {"law"}
+                          if getattr(self, k) != type(self).model_fields[k].default)
+        if self.law is None:
+            if law_keys:
+                raise field_error(law_keys[0], f"a key of the wall's own contact law (got "
+                                               f"{fmt(getattr(self, law_keys[0]))}); give "
+                                               "the law too (law = \"abutment\", ...)")
+            return self
+        used = LAW_FIELDS[self.law]
+        for key in law_keys:
+            if key not in used:
+                raise field_error(key, f"not used by the {self.law} law (got "
+                                       f"{fmt(getattr(self, key))}); it reads "
+                                       f"{', '.join(sorted(used))}")
+        return self
+
+    def spec(self) -> Any:
+        """The wall's own :class:`pounding.contact.spec.ContactSpec`, or None (its contacts
+        follow ``[contact]``)."""
+        from pounding.contact.spec import ContactSpec
+
+        if self.law is None:
+            return None
+        return ContactSpec(**self.model_dump(exclude=set(WALL_KEYS), exclude_none=True))
+
     def build(self) -> Any:
         """The :class:`pounding.structure.wall.MoatWall`."""
         from pounding.structure.wall import MoatWall
 
-        return MoatWall(self.height, self.gap, self.side, self.name)
+        return MoatWall(self.height, self.gap, self.side, self.name, contact=self.spec())

@@ -116,9 +116,12 @@ class RunConfig(Section):
                                   f"{len(self.spatial.positions)}: "
                                   f"{fmt(self.spatial.positions)})")
         if self.contact is None:
-            if self.wall:
-                raise field_error("contact", "required with a [[wall]]: a [contact] table "
-                                              "with the law its impacts follow")
+            lawless = [i for i, w in enumerate(self.wall) if w.law is None]
+            if lawless:
+                raise field_error("contact", f"required with a [[wall]] without a law of its "
+                                              f"own (wall[{lawless[0]}]): a [contact] table "
+                                              "with the law its impacts follow, or law = "
+                                              "... in the wall's table")
             if nb > 1:
                 raise field_error("contact", f"required with {nb} buildings: a [contact] "
                                               "table with law, its parameters and gap(s)")

@@ -16,6 +16,7 @@ from pounding.lazy import lazy_exports
 _EXPORTS: dict[str, str] = {
     **{name: "pounding.contact.base" for name in ("ContactLaw", "ContactResponse",
                                                     "m_effective")},
+    "AbutmentBackfill": "pounding.contact.abutment",
     "BilinearImpact": "pounding.contact.bilinear",
     "LAWS": "pounding.contact.factory",
     **{name: "pounding.contact.hertz" for name in ("Hertz", "HuntCrossley",
@@ -29,6 +30,7 @@ _EXPORTS: dict[str, str] = {
 """Public name → the module that defines it."""
 
 __all__ = [
+    "AbutmentBackfill",
     "BilinearImpact",
     "ContactLaw",
     "ContactResponse",
@@ -52,6 +54,7 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.contact.abutment import AbutmentBackfill
     from pounding.contact.base import ContactLaw, ContactResponse, m_effective
     from pounding.contact.bilinear import BilinearImpact
     from pounding.contact.factory import LAWS

@@ -10,7 +10,9 @@ State vector (float64, length :data:`STATE_SIZE`)
 ``state[V0]``
     impact velocity of the current impact [m/s]; 0 while the gap is open.
 ``state[SLIP]``
-    plastic offset of the bilinear element's elasto-plastic branch [m] (0 for other laws).
+    plastic offset of the bilinear element's elasto-plastic branch [m]; the abutment
+    backfill's permanent set [m], which outlasts its impact (:func:`keeps_set` laws:
+    the kernel keeps it when the gap opens); 0 for other laws.
 ``state[DMAX]``
     largest penetration reached in the current impact [m].
 """
@@ -33,3 +35,4 @@ HERTZ: int = 3
 HUNT_CROSSLEY: int = 4
 NONLINEAR_VISCOELASTIC: int = 5
 BILINEAR_IMPACT: int = 6
+ABUTMENT: int = 7

@@ -19,6 +19,7 @@ import numpy as np
 from numba import njit
 
 from pounding.contact.codes import (
+    ABUTMENT,
     BILINEAR_IMPACT,
     DMAX,
     HERTZ,
@@ -32,6 +33,8 @@ from pounding.contact.codes import (
     V0,
 )
 from pounding.contact.kernels import (
+    abutment_backbone,
+    abutment_trial,
     bilinear_impact_trial,
     hertz_trial,
     hunt_crossley_trial,
@@ -48,7 +51,7 @@ CONTACT_LAW_CODES: dict[int, str] = {
     LINEAR_SPRING: "linear spring", KELVIN_VOIGT: "Kelvin-Voigt",
     MODIFIED_KELVIN_VOIGT: "modified Kelvin-Voigt", HERTZ: "Hertz",
     HUNT_CROSSLEY: "Hunt-Crossley", NONLINEAR_VISCOELASTIC: "nonlinear viscoelastic",
-    BILINEAR_IMPACT: "bilinear impact",
+    BILINEAR_IMPACT: "bilinear impact", ABUTMENT: "abutment backfill",
 }
 """The codes :func:`law_trial` implements, each with its law (a branch apiece)."""
 
@@ -93,16 +96,27 @@ def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
         return nonlinear_viscoelastic_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == BILINEAR_IMPACT:
         return bilinear_impact_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
+    if code == ABUTMENT:
+        return abutment_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     return np.nan, np.nan, np.nan, v0, slip, dmax
 
 
 @njit(cache=True, inline="always")
 def has_linear_spring(code):
     """True for the laws whose spring is linear in δ (∂F/∂δ bounded at δ = 0): linear
-    spring, Kelvin–Voigt, modified Kelvin–Voigt, bilinear impact. The Hertz family's is not
-    (a Hertz-damped law's ∂F/∂δ is unbounded at δ = 0 while approaching)."""
+    spring, Kelvin–Voigt, modified Kelvin–Voigt, bilinear impact, abutment backfill (its
+    backbone's slope at δ = 0 is K). The Hertz family's is not (a Hertz-damped law's ∂F/∂δ
+    is unbounded at δ = 0 while approaching)."""
     return (code == LINEAR_SPRING or code == KELVIN_VOIGT or code == MODIFIED_KELVIN_VOIGT
-            or code == BILINEAR_IMPACT)
+            or code == BILINEAR_IMPACT or code == ABUTMENT)
+
+
+@njit(cache=True, inline="always")
+def keeps_set(code):
+    """True for a law whose ``state[SLIP]`` is a permanent set that outlasts its impact
+    (the abutment backfill): the kernel keeps it when the gap opens and at the next onset,
+    where it zeroes every other law's state."""
+    return code == ABUTMENT
 
 
 @njit(cache=True, inline="always")
@@ -172,6 +186,10 @@ def stored_energy(code, p0, p1, p2, delta, slip):
         kp = p0 - p1
         fp = min(max(kp * (delta - slip), 0.0), kp * p2)
         return 0.5 * p1 * delta * delta + 0.5 * fp * fp / kp
+    if code == ABUTMENT:
+        # the elastic part F²/(2K) of the force on the line K (δ − set) or the backbone
+        f = min(p0 * (delta - slip), abutment_backbone(p0, p1, p2, delta)[0])
+        return 0.5 * f * f / p0 if f > 0.0 else 0.0
     return np.nan
 
 

@@ -5,6 +5,7 @@ with the formula that turns it into damping.
 
 from __future__ import annotations
 
+from pounding.contact.abutment import AbutmentBackfill, make_abutment
 from pounding.contact.base import ContactLaw, m_effective
 from pounding.contact.bilinear import BILINEAR_FORMULAS, BilinearImpact
 from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
@@ -20,14 +21,19 @@ LAWS: dict[str, type[ContactLaw]] = {
     "hunt-crossley": HuntCrossley,
     "nonlinear-viscoelastic": NonlinearViscoelastic,
     "bilinear-impact": BilinearImpact,
+    "abutment": AbutmentBackfill,
 }
 """Every contact law class, keyed by the name used in configs and on the command line."""
 
-LAW_NAMES: tuple[str, ...] = (
+IMPACT_LAW_NAMES: tuple[str, ...] = (
     "linear-spring", "kelvin-voigt", "modified-kelvin-voigt", "hertz", "hunt-crossley",
     "hertzdamp", "nonlinear-viscoelastic", "naderpour", "bilinear-impact",
 )
-"""Names :func:`make_law` accepts. ``hertzdamp`` is Hunt–Crossley with the
+"""The impact laws: those the single-collision commands (``pounding collide``) offer."""
+
+LAW_NAMES: tuple[str, ...] = (*IMPACT_LAW_NAMES, "abutment")
+"""Names :func:`make_law` accepts: the impact laws and the abutment backfill (a wall's law in
+a model file; :mod:`pounding.contact.abutment`). ``hertzdamp`` is Hunt–Crossley with the
 Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with ζ of seed eq 39."""
 
 DEFAULT_FORMULA: dict[str, str] = {
@@ -93,7 +99,10 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
              e: float | None = None, formula: str | None = None, c: float | None = None,
              zeta: float | None = None, chi: float | None = None, m1: float | None = None,
              m2: float | None = None, n: float = 1.5, tension: bool = False,
-             delta_m: float | None = None, a: float = 0.1) -> ContactLaw:
+             delta_m: float | None = None, a: float = 0.1, backbone: str | None = None,
+             capacity: float | None = None, delta_ult: float | None = None,
+             backwall_width: float | None = None,
+             backwall_height: float | None = None) -> ContactLaw:
     """Build a contact law by name.
 
     Parameters
@@ -124,12 +133,31 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
         Bilinear element: assumed maximum penetration [m].
     a : float
         Bilinear element: yield ratio δy/δm.
+    backbone, capacity, delta_ult, backwall_width, backwall_height
+        Abutment backfill (:func:`pounding.contact.abutment.make_abutment`): the backbone
+        (``caltrans`` from the backwall's width and height [m], ``elastic-plastic`` from
+        ``k`` and ``capacity`` [N], ``hyperbolic`` from ``k``, ``capacity`` and
+        ``delta_ult`` [m]).
 
     Returns
     -------
     ContactLaw
     """
     law = choice("law", name, LAW_NAMES)
+    abutment_keys = {"backbone": backbone, "capacity": capacity, "delta_ult": delta_ult,
+                     "backwall_width": backwall_width, "backwall_height": backwall_height}
+    if law == "abutment":
+        for key, value in (("k_h", k_h), ("e", e), ("formula", formula), ("c", c),
+                           ("zeta", zeta), ("chi", chi), ("delta_m", delta_m)):
+            if value is not None:
+                raise ValueError(f"{key}: not read by the abutment law (got {value!r}); its "
+                                 "backfill dissipates by yielding, not by a dashpot")
+        return make_abutment(backbone, k=k, capacity=capacity, delta_ult=delta_ult,
+                             backwall_width=backwall_width, backwall_height=backwall_height)
+    for key, value in abutment_keys.items():
+        if value is not None:
+            raise ValueError(f"{key}: read only by the abutment law (got {value!r} for the "
+                             f"{law} law)")
     if formula is not None and law == "naderpour" and formula != "naderpour":
         resolve_formula(law, formula)  # 'exact': says which law has the exact ζ
         raise ValueError(f"formula: the naderpour law uses eq 39 (got {formula!r})")

@@ -143,3 +143,44 @@ def bilinear_impact_trial(k1, k2, dy, delta, rate, v0, slip, dmax):
     if fp < 0.0:
         return k2 * delta, k2, 0.0, v0, delta, dmax
     return k2 * delta + fp, k1, 0.0, v0, slip, dmax
+
+
+# --------------------------------------------------------------------------- abutment backfill
+@njit(cache=True, inline="always", error_model="numpy")
+def abutment_backbone(k, fu, yu, delta):
+    """The backfill's backbone ``F = min(δ/(A + B δ), F_ult)`` and its slope, with
+    ``A = 1/K`` and ``B = max(1/F_ult − 1/(K δ_ult), 0)`` (params ``[K, F_ult, δ_ult]``;
+    :class:`pounding.contact.abutment.AbutmentBackfill`)."""
+    b = max(1.0 / fu - 1.0 / (k * yu), 0.0)
+    den = 1.0 + k * b * delta
+    fb = k * delta / den
+    if fb >= fu:
+        return fu, 0.0
+    return fb, k / (den * den)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def abutment_trial(k, fu, yu, delta, rate, v0, slip, dmax):
+    """Abutment backfill (params: [K, F_ult, δ_ult]; ``slip`` its permanent set).
+
+    Loading follows the backbone (:func:`abutment_backbone`); unloading and reloading the
+    line ``F = K (δ − set)``; no tension, so below the set the force is zero and the gap is
+    larger by the set. Unlike every other law the set is *not* reset while the gap is open
+    or at the onset of the next impact (:func:`pounding.contact.dispatch.keeps_set`). The
+    return mapping ``F = max(min(K (δ − set), backbone(δ)), 0)`` is exact for any monotonic
+    increment: the backbone's slope never exceeds ``K``.
+    """
+    if delta <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0, slip, 0.0
+    if v0 <= 0.0:
+        v0 = max(rate, V0_MIN)
+        dmax = 0.0
+    if delta > dmax:
+        dmax = delta
+    fe = k * (delta - slip)
+    if fe <= 0.0:
+        return 0.0, 0.0, 0.0, v0, slip, dmax
+    fb, kb = abutment_backbone(k, fu, yu, delta)
+    if fe >= fb:
+        return fb, kb, 0.0, v0, delta - fb / k, dmax
+    return fe, k, 0.0, v0, slip, dmax

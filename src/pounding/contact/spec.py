@@ -42,6 +42,15 @@ class ContactSpec:
         Bilinear element: assumed maximum penetration [m].
     a : float
         Bilinear element: yield ratio δy/δm (Muthukumar's 0.1).
+    backbone : str, optional
+        Abutment backfill: ``"caltrans"`` (default), ``"elastic-plastic"`` or
+        ``"hyperbolic"`` (:func:`pounding.contact.abutment.make_abutment`).
+    capacity : float, optional
+        Abutment backfill: ultimate passive force [N].
+    delta_ult : float, optional
+        Abutment backfill, hyperbolic: penetration at the capacity [m].
+    backwall_width, backwall_height : float, optional
+        Abutment backfill, Caltrans: the backwall's width and height [m].
     """
 
     law: str
@@ -56,6 +65,11 @@ class ContactSpec:
     tension: bool = False
     delta_m: float | None = None
     a: float = 0.1
+    backbone: str | None = None
+    capacity: float | None = None
+    delta_ult: float | None = None
+    backwall_width: float | None = None
+    backwall_height: float | None = None
 
     def __post_init__(self) -> None:
         # build once with unit masses so a bad spec fails here, naming its field
@@ -68,10 +82,13 @@ class ContactSpec:
         pull."""
         from pounding.contact.factory import resolve_formula
 
-        units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m"}
+        units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m",
+                 "capacity": " N", "delta_ult": " m", "backwall_width": " m",
+                 "backwall_height": " m"}
         formula = resolve_formula(self.law, self.formula, self.tension)
-        parts = []
-        for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m"):
+        parts = [f"{self.backbone or 'caltrans'} backbone"] if self.law == "abutment" else []
+        for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m", "capacity", "delta_ult",
+                     "backwall_width", "backwall_height"):
             value = getattr(self, name)
             if value is not None:
                 via = f" via {formula}{self._exactness()}" if name == "e" and formula else ""
@@ -107,7 +124,9 @@ class ContactSpec:
         return CONTACT_LAWS.get((repr(self), repr(m1), repr(m2)), lambda: make_law(
             self.law, k=self.k, k_h=self.k_h, e=self.e, formula=self.formula, c=self.c,
             zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n, tension=self.tension,
-            delta_m=self.delta_m, a=self.a))
+            delta_m=self.delta_m, a=self.a, backbone=self.backbone, capacity=self.capacity,
+            delta_ult=self.delta_ult, backwall_width=self.backwall_width,
+            backwall_height=self.backwall_height))
 
 
 CONTACT_LAWS = Memo(max_items=256)

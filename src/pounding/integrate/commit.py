@@ -16,6 +16,7 @@ import numpy as np
 from numba import njit
 
 from pounding.contact.codes import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
+from pounding.contact.dispatch import keeps_set
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.events import hermite_max
 from pounding.integrate.layout import (
@@ -84,7 +85,8 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
             # end of a step whose other event, closer than the time resolution, ended it
             # with this gap already closed)
             committed[c, V0] = max(rate, V0_MIN)
-            committed[c, SLIP] = 0.0
+            if not keeps_set(ccode[c]):  # (the abutment's backfill keeps its set)
+                committed[c, SLIP] = 0.0
             committed[c, DMAX] = max(delta, 0.0)
             state_changed = True
             f0 = law_call(ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2],
@@ -132,8 +134,10 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
                         imp[row, IMP_E] = max(-rate, 0.0) / committed[c, V0]
                     imp[row, IMP_ENERGY] = wc[c] - w_start[c]
                 imp_row[c] = -1
+                kept = committed[c, SLIP] if keeps_set(ccode[c]) else 0.0
                 for q in range(STATE_SIZE):
                     committed[c, q] = 0.0
+                committed[c, SLIP] = kept  # a permanent set outlasts its impact
                 state_changed = True
                 ws_i[I_NEVENTS] += 1
             else:
@@ -152,6 +156,10 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
                 df1 = kd * rate + kr * rel_acc
                 h = t_now - last_f[c, 0]
                 fin, where = hermite_max(last_f[c, 1], last_f[c, 2], f, df1, h)
+                if keeps_set(ccode[c]) and fin > cparams[c, 1]:
+                    # the backfill's force has a kink where it meets its backbone (a
+                    # plateau at the capacity): the cubic overshoots it, the force cannot
+                    fin = cparams[c, 1]
                 fmax = f
                 t_max = t_now
                 if fin > f:

@@ -46,6 +46,7 @@ from pounding.integrate.reference_inputs import (
 from pounding.integrate.reference_laws import (
     Storey,
     contact_force,
+    keeps_set,
     link_force,
     link_recoverable,
     maxwell_spring_rate,
@@ -110,7 +111,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     gap = np.array([c.gap for c in contacts])
     laws = [c.law for c in contacts]
     v0s = np.zeros(nc)  # closing velocity of each contact's impact (0: open)
-    slips = np.zeros(nc)  # the bilinear element's committed plastic offset
+    slips = np.zeros(nc)  # the bilinear element's plastic offset; the backfill's set
     phase = np.zeros(nc, dtype=int)  # +1 approaching, −1 restitution (closed contacts)
     # laws clipped at F = 0 before δ = 0 (Kelvin–Voigt without tension): where the clip
     # bites, an event; released[c] while the clipped force is zero
@@ -384,9 +385,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                     c = tag[1]
                     d, rate = kin(y, c)
                     v0s[c] = max(rate, V0_MIN)  # contract step 3: the closing velocity
-                    slips[c] = 0.0
+                    slips[c] = slips[c] if keeps_set(laws[c]) else 0.0
                     phase[c] = 1
-                    f0 = contact_force(laws[c], d, rate, v0s[c], 0.0)[0]
+                    f0 = contact_force(laws[c], d, rate, v0s[c], slips[c])[0]
                     impacts.append([c, t, np.nan, v0s[c], f0, t, 0.0, np.nan, np.nan])
                     open_row[c] = len(impacts) - 1
                     w_start[c] = y[i_e + 4 + c]
@@ -400,7 +401,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                     row[8] = y[i_e + 4 + c] - w_start[c]
                     open_row[c] = -1
                     v0s[c] = 0.0
-                    slips[c] = 0.0
+                    slips[c] = slips[c] if keeps_set(laws[c]) else 0.0
                     phase[c] = 0
                     released[c] = False
                 else:

@@ -16,7 +16,12 @@ onset; the contract of :mod:`pounding.contact.base`):
 * the bilinear impact element (Muthukumar 2003): a spring ``K2`` beside an elastic–
   perfectly-plastic spring of stiffness ``K1 − K2`` and yield force ``(K1 − K2) δy`` whose
   force cannot be negative; its plastic offset is the state carried from one committed
-  instant to the next.
+  instant to the next;
+* the abutment backfill (Caltrans SDC; Shamsabadi et al. 2007): the force is the least of
+  the line ``K (δ − s)`` and the backbone ``min(δ/(1/K + B δ), F_ult)``,
+  ``B = 1/F_ult − 1/(K δ_ult)``, and never negative; ``s``, the backfill's permanent set,
+  moves to ``δ − F/K`` while the force is on the backbone and, unlike the others' state,
+  is kept from one impact to the next (:func:`keeps_set`).
 
 Storey laws: the bilinear storey in rate form (``V̇ = k ḋ`` elastic, ``b k ḋ`` on the yield
 branch, switched at located events) and the Bouc–Wen storey's evolution law (Wen 1976),
@@ -35,6 +40,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.contact import (
+    AbutmentBackfill,
     BilinearImpact,
     Hertz,
     HuntCrossley,
@@ -88,7 +94,27 @@ def contact_force(law: ContactLaw, delta: float, rate: float, v0: float,
         if plastic < 0.0:  # unloaded past zero force: the offset follows the other way
             return law.K2 * d, d
         return law.K2 * d + plastic, slip
+    if isinstance(law, AbutmentBackfill):
+        return _backfill(law, d, slip)
     raise ValueError(f"reference: no reference force for contact law {type(law).__name__}")
+
+
+def _backfill(law: AbutmentBackfill, d: float, s: float) -> tuple[float, float]:
+    """Force [N] of the abutment backfill at penetration ``d`` [m] with permanent set ``s``
+    [m], and the set after it."""
+    if d <= s:  # inside the set: the backfill does not pull
+        return 0.0, s
+    b = 1.0 / law.capacity - 1.0 / (law.K * law.delta_ult)
+    envelope = min(d / (1.0 / law.K + max(b, 0.0) * d), law.capacity)
+    line = law.K * (d - s)
+    if line >= envelope:  # on the backbone: the set grows
+        return envelope, d - envelope / law.K
+    return line, s
+
+
+def keeps_set(law: ContactLaw) -> bool:
+    """True for a law whose state outlasts its impact (the abutment backfill's set)."""
+    return isinstance(law, AbutmentBackfill)
 
 
 def stored_energy(law: ContactLaw, delta: float, slip: float) -> float:
@@ -107,6 +133,9 @@ def stored_energy(law: ContactLaw, delta: float, slip: float) -> float:
         kp = law.K1 - law.K2
         plastic = min(max(kp * (delta - slip), 0.0), kp * law.delta_y)
         return 0.5 * law.K2 * delta**2 + 0.5 * plastic**2 / kp
+    if isinstance(law, AbutmentBackfill):
+        force = _backfill(law, delta, slip)[0]
+        return 0.5 * force**2 / law.K  # what unloading along K gives back
     raise ValueError(f"reference: no reference energy for contact law {type(law).__name__}")
 
 

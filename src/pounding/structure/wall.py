@@ -25,6 +25,12 @@ Two idealisations are in use and both are here:
   ``gaps``: the building's floors below its top strike its "column" at ``ξ = z / H``
   (a wall deflecting linearly up its height), a floor level with its top strikes its top.
 
+A rigid wall may carry a contact law of its own (``MoatWall(contact=ContactSpec(...))``),
+used for its contacts only; without one its contacts follow the model's. An abutment is
+such a wall: its backwall across the gap from the deck's end, its backfill's passive
+resistance the law (``ContactSpec("abutment", ...)``,
+:class:`pounding.contact.abutment.AbutmentBackfill`).
+
 Which floors strike a wall: every floor of the neighbouring building at or below the wall's
 top (within the model's ``level_tolerance``), typically only the base slab; with
 ``floor_to_column`` the top edge of a wall that stops between two floors also strikes the
@@ -65,17 +71,21 @@ class MoatWall:
         Right of the last building (default) or left of the first.
     name : str
         Label of the wall in contact labels (``'B1F1-W'``, ``'W-B1F1'``).
+    contact : ContactSpec, optional
+        The contact law of this wall's contacts (an abutment's backfill:
+        ``ContactSpec("abutment", ...)``); None (default): the model's.
 
     Examples
     --------
     >>> MoatWall(height=1.0, gap=0.15)
-    MoatWall(height=1.0, gap=0.15, side='right', name='W')
+    MoatWall(height=1.0, gap=0.15, side='right', name='W', contact=None)
     """
 
     height: float
     gap: float
     side: str = "right"
     name: str = "W"
+    contact: ContactSpec | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "height", positive("height", self.height))
@@ -83,6 +93,9 @@ class MoatWall:
         object.__setattr__(self, "side", choice("side", self.side, SIDES))
         if not isinstance(self.name, str) or not self.name:
             raise ValueError(f"name: the wall needs a non-empty label (got {self.name!r})")
+        if self.contact is not None and not isinstance(self.contact, ContactSpec):
+            raise ValueError(f"contact: expected a ContactSpec or None (got "
+                             f"{type(self.contact).__name__})")
 
 
 @dataclass(frozen=True)
@@ -159,7 +172,8 @@ def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
                   start: int) -> tuple[Contact, ...]:
     """The contacts of every wall (in the order of ``walls``) with the end building of the
     row ``buildings`` beside it, numbered from ``start``; the building on the left of a
-    contact is the left point. ``contact`` builds each contact's law; ``floor_to_column``
+    contact is the left point. ``contact`` builds each contact's law, unless the wall has a
+    law of its own (:attr:`MoatWall.contact`); ``floor_to_column``
     and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`). The building
     beside a wall is planar (a ``ValueError`` naming the wall otherwise, as
     :func:`check_walls`)."""
@@ -168,8 +182,9 @@ def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
     for i, wall in enumerate(walls):
         b, building = _neighbour(i, wall, buildings)
         wp = WallPoint(name=wall.name)
+        spec = contact if wall.contact is None else wall.contact
         for z, point in wall_points(wall, building, b, floor_to_column, tol):
-            law = contact.build(point.effective_mass(building.masses), math.inf)
+            law = spec.build(point.effective_mass(building.masses), math.inf)
             left, right = (wp, point) if wall.side == "left" else (point, wp)
             pair = -1 if wall.side == "left" else last
             out.append(Contact(start + len(out), pair, left, right, z, wall.gap, law))
