@@ -88,11 +88,11 @@ def test_the_compiled_dispatchers_return_nan_for_an_unknown_code_and_a_number_fo
     for code in (3, 9, 99):  # neither a storey law nor a link
         assert math.isnan(storey_trial(code, sp, 0, 1e-3, 0.1, 0.0, 0.0, 0.0)[0])
         assert math.isnan(storey_recoverable(code, sp, 0, 1e-3, 0.0, 1e4))
-    for fn in (lambda c: device_trial(c, 1e7, 1e5, 1.0, 1e-3, 0.1, 0.0)[0],
+    for fn in (lambda c: device_trial(c, 1e7, 1e5, 1.0, 0.0, 1e-3, 0.1, 0.0)[0],
                lambda c: device_rate_terms(c, 1e7, 1e5, 1.0, 0.1)[0],
-               lambda c: device_stored(c, 1e7, 1e5, 1.0, 1e-3, 0.0)):
+               lambda c: device_stored(c, 1e7, 1e5, 1.0, 0.0, 1e-3, 0.0)):
         assert all(math.isfinite(fn(code)) for code in DEVICE_CODES)
-        assert math.isnan(fn(13))
+        assert math.isnan(fn(14))
 
 
 def test_a_model_with_a_law_of_unknown_code_is_refused_where_it_is_built():
