@@ -250,7 +250,7 @@ class Link:
             parts = [f"k = {format_value(float(self.k), 'N/m')}",  # type: ignore[arg-type]
                      f"slack = {float(self.slack) * 1e3:.3g} mm"]  # type: ignore[arg-type]
             parts.append("elastic" if self.yield_force is None
-                         else f"F_y = {format_value(self.yield_force, 'N')}")
+                         else f"F_y = {format_value(float(self.yield_force), 'N')}")
             if self.hardening:
                 parts.append(f"b = {self.hardening:g}")
             return f"restrainer link {self.name}: {', '.join(parts)}"
@@ -258,7 +258,7 @@ class Link:
         parts = []
         if self.k is not None:
             parts.append(f"k = {format_value(self.k, 'N/m')}")
-        parts.append(f"c = {format_value(self.c, unit)}")
+        parts.append(f"c = {format_value(float(self.c), unit)}")  # type: ignore[arg-type]
         if self.alpha != 1.0:
             parts.append(f"α = {self.alpha:g}")
         return f"{self.kind} link {self.name}: {', '.join(parts)}"

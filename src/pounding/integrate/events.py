@@ -18,7 +18,12 @@ from numba import njit
 
 from pounding.contact.codes import V0
 from pounding.contact.dispatch import law_releases, release_value
-from pounding.devices.laws import DEVICE_MIN, RESTRAINER, has_rate_cusp, restrainer_kinks
+from pounding.devices.laws import (
+    DEVICE_MIN,
+    RESTRAINER,
+    has_rate_cusp,
+    restrainer_kinks,
+)
 from pounding.integrate.dormand_prince import rk_step
 from pounding.integrate.layout import (
     EL_LEVER,
