@@ -118,7 +118,7 @@ def test_the_kernel_stops_at_a_law_code_it_does_not_implement(row):
                        "storey": (km.elements.code, 0, "yielding storey 1"),
                        "link": (km.elements.code, 1, "link B1F1-B2F1")}[row]
     kept = array[i]
-    array[i] = 99 if row == "contact" else 13
+    array[i] = 99 if row == "contact" else 14
     try:
         with pytest.raises(IntegrationError, match=rf"^solver: {where} has law code "
                                                    rf"{array[i]}, which no compiled law"):

@@ -7,8 +7,8 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error
-from pounding.config.quantities import Force, Gap, Length, PositiveDamping, Stiffness
 from pounding.config.contact import LawConfig
+from pounding.config.quantities import Force, Gap, Length, PositiveDamping, Stiffness
 from pounding.devices import Bumper, Link
 
 _LINK_KEYS = {"viscous": {"c", "alpha"}, "kelvin": {"c", "k"}, "maxwell": {"c", "k", "alpha"},
@@ -70,7 +70,8 @@ class DeviceConfig(Section):
                                   float(self.compression_limit),  # type: ignore[arg-type]
                                   self.rubber.spec()))
             elif self.type == "restrainer":
-                out.append(Link(pair, "restrainer", k=self.k, slack=self.slack,
+                out.append(Link(pair, "restrainer",  # type: ignore[arg-type]
+                                k=self.k, slack=self.slack,
                                 yield_force=self.yield_force,
                                 hardening=0.0 if self.hardening is None else self.hardening))
             else:

@@ -255,7 +255,7 @@ def restrainer_event(s, y0, k0, y1, k1, h, n, el, skip_c, skip_kind, best_t):
                                         y0[2 * n + zi], k0[0, 2 * n + zi])
     e1, er1, g1, gr1 = restrainer_kinks(par[s, 0], par[s, 1], par[s, 2], par[s, 3], d1, r1,
                                         y1[2 * n + zi], k1[6, 2 * n + zi])
-    best_k = 0
+    best_k: int | np.int64 = 0  # (the event kinds are NumPy integers)
     bound = 0.25 * h * (abs(er0) + abs(er1))  # the cubic stays within this of its ends
     if e0 <= 0.0:
         if max(e0, e1) + bound > 0.0 and not (s == skip_c and skip_kind == EV_TAUT):
