@@ -88,11 +88,11 @@ def test_the_compiled_dispatchers_return_nan_for_an_unknown_code_and_a_number_fo
     for code in (3, 9, 99):  # neither a storey law nor a link
         assert math.isnan(storey_trial(code, sp, 0, 1e-3, 0.1, 0.0, 0.0, 0.0)[0])
         assert math.isnan(storey_recoverable(code, sp, 0, 1e-3, 0.0, 1e4))
-    for fn in (lambda c: device_trial(c, 1e7, 1e5, 1.0, 1e-3, 0.1, 0.0)[0],
+    for fn in (lambda c: device_trial(c, 1e7, 1e5, 1.0, 0.0, 1e-3, 0.1, 0.0)[0],
                lambda c: device_rate_terms(c, 1e7, 1e5, 1.0, 0.1)[0],
-               lambda c: device_stored(c, 1e7, 1e5, 1.0, 1e-3, 0.0)):
+               lambda c: device_stored(c, 1e7, 1e5, 1.0, 0.0, 1e-3, 0.0)):
         assert all(math.isfinite(fn(code)) for code in DEVICE_CODES)
-        assert math.isnan(fn(13))
+        assert math.isnan(fn(14))
 
 
 def test_a_model_with_a_law_of_unknown_code_is_refused_where_it_is_built():
@@ -118,7 +118,7 @@ def test_the_kernel_stops_at_a_law_code_it_does_not_implement(row):
                        "storey": (km.elements.code, 0, "yielding storey 1"),
                        "link": (km.elements.code, 1, "link B1F1-B2F1")}[row]
     kept = array[i]
-    array[i] = 99 if row == "contact" else 13
+    array[i] = 99 if row == "contact" else 14
     try:
         with pytest.raises(IntegrationError, match=rf"^solver: {where} has law code "
                                                    rf"{array[i]}, which no compiled law"):

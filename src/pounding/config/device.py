@@ -7,11 +7,13 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error
-from pounding.config.quantities import Length, PositiveDamping, Stiffness
 from pounding.config.contact import LawConfig
+from pounding.config.quantities import Force, Gap, Length, PositiveDamping, Stiffness
 from pounding.devices import Bumper, Link
 
-_LINK_KEYS = {"viscous": {"c", "alpha"}, "kelvin": {"c", "k"}, "maxwell": {"c", "k", "alpha"}}
+_LINK_KEYS = {"viscous": {"c", "alpha"}, "kelvin": {"c", "k"}, "maxwell": {"c", "k", "alpha"},
+              "restrainer": {"k", "slack", "yield_force", "hardening"}}
+_OPTIONAL = {"alpha", "yield_force", "hardening"}
 _BUMPER_KEYS = {"thickness", "compression_limit", "rubber"}
 
 
@@ -19,8 +21,11 @@ class DeviceConfig(Section):
     """``[[device]]``: one device.
 
     ``type`` is ``viscous`` (``c`` [N·(s/m)^α], ``alpha`` [-], default 1), ``kelvin`` (``k``
-    [N/m], ``c`` [N·s/m]), ``maxwell`` (``k``, ``c``, ``alpha``) — links between two floors of
-    different buildings (:class:`pounding.devices.Link`) — or ``bumper``: a pad of
+    [N/m], ``c`` [N·s/m]), ``maxwell`` (``k``, ``c``, ``alpha``), ``restrainer`` (a bridge's
+    cable restrainer across a joint, tension only: ``k`` [N/m], ``slack`` [m],
+    ``yield_force`` [N] — none: elastic — and ``hardening`` [-], default 0) — links between
+    two floors of different buildings (:class:`pounding.devices.Link`) — or ``bumper``: a
+    pad of
     ``thickness`` [m] in the gap of a contact that bottoms out at ``compression_limit`` (a
     fraction of the thickness), with its own contact law ``rubber`` (a table like
     ``[contact]`` without gaps; :class:`pounding.devices.Bumper`). ``floors`` names the two
@@ -29,11 +34,14 @@ class DeviceConfig(Section):
     shared floor level of every pair of neighbours).
     """
 
-    type: Literal["viscous", "kelvin", "maxwell", "bumper"]
+    type: Literal["viscous", "kelvin", "maxwell", "restrainer", "bumper"]
     floors: Annotated[list[str], Field(min_length=2, max_length=2)] | Literal["all"]
     c: PositiveDamping | None = None
     alpha: Annotated[float, Field(gt=0, le=2)] | None = None
     k: Stiffness | None = None
+    slack: Gap | None = None
+    yield_force: Force | None = None
+    hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
     thickness: Length | None = None
     compression_limit: Annotated[float, Field(gt=0, lt=1)] | None = None
     rubber: LawConfig | None = None
@@ -45,7 +53,7 @@ class DeviceConfig(Section):
             raise field_error(key, f"not used by a {self.type} device; it reads "
                                     f"{', '.join(sorted(used))}")
         required = (_BUMPER_KEYS if self.type == "bumper"
-                    else _LINK_KEYS[self.type] - {"alpha"})
+                    else _LINK_KEYS[self.type] - _OPTIONAL)
         for key in sorted(required - self.model_fields_set):
             raise field_error(key, f"required by a {self.type} device")
         return self
@@ -61,6 +69,11 @@ class DeviceConfig(Section):
                 out.append(Bumper(pair, float(self.thickness),  # type: ignore[arg-type]
                                   float(self.compression_limit),  # type: ignore[arg-type]
                                   self.rubber.spec()))
+            elif self.type == "restrainer":
+                out.append(Link(pair, "restrainer",  # type: ignore[arg-type]
+                                k=self.k, slack=self.slack,
+                                yield_force=self.yield_force,
+                                hardening=0.0 if self.hardening is None else self.hardening))
             else:
                 out.append(Link(pair, self.type, c=float(self.c),  # type: ignore[arg-type]
                                 alpha=1.0 if self.alpha is None else self.alpha, k=self.k))

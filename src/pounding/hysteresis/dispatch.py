@@ -54,7 +54,7 @@ def storey_trial(code, sp, s, d, rate, z, d_c, v_c):
     other code returns NaN.
     """
     if code >= DEVICE_MIN:
-        return device_trial(code, sp[s, 0], sp[s, 1], sp[s, 2], d, rate, z)
+        return device_trial(code, sp[s, 0], sp[s, 1], sp[s, 2], sp[s, 3], d, rate, z)
     if code == BILINEAR:
         return bilinear_trial(sp[s, 0], sp[s, 1], sp[s, 2], sp[s, 3], sp[s, 4], sp[s, 5],
                               d, rate, z, d_c, v_c)
@@ -70,7 +70,7 @@ def storey_trial(code, sp, s, d, rate, z, d_c, v_c):
 def storey_recoverable(code, sp, s, d, z, v):
     """Elastic energy [J] storey ``s`` gives back when unloaded to zero shear (contract 5)."""
     if code >= DEVICE_MIN:
-        return device_stored(code, sp[s, 0], sp[s, 1], sp[s, 2], d, z)
+        return device_stored(code, sp[s, 0], sp[s, 1], sp[s, 2], sp[s, 3], d, z)
     k = sp[s, 0]
     if code == BILINEAR:
         return 0.5 * v * v / k

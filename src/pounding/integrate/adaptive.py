@@ -43,8 +43,10 @@ from pounding.integrate.layout import (
     EV_DRIFT_MIN,
     EV_GRAZE,
     EV_HINGE_HI,
+    EV_HINGE_TURN_UP,
     EV_ONSET,
     EV_SEPARATION,
+    EV_TAUT,
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
@@ -348,8 +350,9 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             if ns > 0:
                 commit_storeys(x, n, el, sstate)
             was_event = ev_c >= 0
-            hinge_event = ev_kind >= EV_HINGE_HI
-            if ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN or hinge_event:
+            hinge_event = EV_HINGE_HI <= ev_kind <= EV_HINGE_TURN_UP
+            if (ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN or hinge_event
+                    or ev_kind >= EV_TAUT):  # (a restrainer's corner)
                 ws_i[I_NEVENTS] += 1
                 if hinge_event:
                     ws_i[I_STOP_ROW] = ev_c

@@ -18,7 +18,12 @@ from numba import njit
 
 from pounding.contact.codes import V0
 from pounding.contact.dispatch import law_releases, release_value
-from pounding.devices.laws import DEVICE_MIN, has_rate_cusp
+from pounding.devices.laws import (
+    DEVICE_MIN,
+    RESTRAINER,
+    has_rate_cusp,
+    restrainer_kinks,
+)
 from pounding.integrate.dormand_prince import rk_step
 from pounding.integrate.layout import (
     EL_LEVER,
@@ -36,6 +41,9 @@ from pounding.integrate.layout import (
     EV_RELEASE,
     EV_RELOADING,
     EV_SEPARATION,
+    EV_SLACK,
+    EV_TAUT,
+    EV_YIELD,
     EVENT_TOL,
     HS_DIR,
     HS_HI,
@@ -201,6 +209,8 @@ def event_value(kind, c, y, n, ct, el, hg):
     ``el``, ``hg``: the contacts, element rows and hinge rows."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return element_drift(c, el.lo[c], el.hi[c], el.params, y, n)[1]
+    if kind >= EV_TAUT:
+        return restrainer_value(kind, c, y, n, el)
     if kind >= EV_HINGE_HI:
         th, th_rate = hinge_row(c, y, n, hg)
         if kind == EV_HINGE_HI:
@@ -214,6 +224,64 @@ def event_value(kind, c, y, n, ct, el, hg):
     if kind == EV_RELEASE or kind == EV_REENGAGE:
         return release_value(ct.params[c, 0], ct.params[c, 1], d - ct.gap[c], v)
     return d - ct.gap[c]
+
+
+@njit(**NRT_FREE)
+def restrainer_value(kind, c, y, n, el):
+    """Event function [m] of restrainer row c at state y: its elastic elongation (the slack
+    taken up or given back, ``EV_TAUT`` / ``EV_SLACK``) or its margin to yield
+    (``EV_YIELD``), :func:`pounding.devices.laws.restrainer_kinks`."""
+    par = el.params
+    d = element_drift(c, el.lo[c], el.hi[c], par, y, n)[0]
+    e, _, g, _ = restrainer_kinks(par[c, 0], par[c, 1], par[c, 2], par[c, 3], d, 0.0,
+                                  y[2 * n + el.z_index[c]], 0.0)
+    return g if kind == EV_YIELD else e
+
+
+@njit(**NRT_FREE)
+def restrainer_event(s, y0, k0, y1, k1, h, n, el, skip_c, skip_kind, best_t):
+    """The first corner of restrainer row s inside a step (``(time, kind)``, or ``(−1, 0)``
+    if none earlier than ``best_t``): the slack taken up (``EV_TAUT``) or given back
+    (``EV_SLACK``), or yield (``EV_YIELD``), from the cubic Hermite of each event function
+    (:func:`pounding.devices.laws.restrainer_kinks`) through its values and rates at the
+    step's ends (``k0`` row 0: f(y0); ``k1`` row 6: f(y1))."""
+    par = el.params
+    zi = el.z_index[s]
+    lo = el.lo[s]
+    hi = el.hi[s]
+    d0, r0 = element_drift(s, lo, hi, par, y0, n)
+    d1, r1 = element_drift(s, lo, hi, par, y1, n)
+    e0, er0, g0, gr0 = restrainer_kinks(par[s, 0], par[s, 1], par[s, 2], par[s, 3], d0, r0,
+                                        y0[2 * n + zi], k0[0, 2 * n + zi])
+    e1, er1, g1, gr1 = restrainer_kinks(par[s, 0], par[s, 1], par[s, 2], par[s, 3], d1, r1,
+                                        y1[2 * n + zi], k1[6, 2 * n + zi])
+    best_k: int | np.int64 = 0  # (the event kinds are NumPy integers)
+    bound = 0.25 * h * (abs(er0) + abs(er1))  # the cubic stays within this of its ends
+    if e0 <= 0.0:
+        if max(e0, e1) + bound > 0.0 and not (s == skip_c and skip_kind == EV_TAUT):
+            t = hermite_root(e0, er0, e1, er1, h, UPWARD)
+            if e1 > 0.0 and t < 0.0:
+                t = h
+            if 0.0 < t < best_t:
+                best_t, best_k = t, EV_TAUT
+    else:
+        if min(e0, e1) - bound <= 0.0 and not (s == skip_c and skip_kind == EV_SLACK):
+            t = hermite_root(e0, er0, e1, er1, h, DOWNWARD)
+            if e1 <= 0.0 and t < 0.0:
+                t = h
+            if 0.0 < t < best_t:
+                best_t, best_k = t, EV_SLACK
+        bound = 0.25 * h * (abs(gr0) + abs(gr1))
+        if (g0 <= 0.0 and max(g0, g1) + bound > 0.0
+                and not (s == skip_c and skip_kind == EV_YIELD)):
+            t = hermite_root(g0, gr0, g1, gr1, h, UPWARD)
+            if g1 > 0.0 and t < 0.0:
+                t = h
+            if 0.0 < t < best_t:
+                best_t, best_k = t, EV_YIELD
+    if best_k == 0:
+        return -1.0, 0
+    return best_t, best_k
 
 
 @njit(**NRT_FREE)
@@ -284,7 +352,8 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
     8 / 9 the unclipped force ``k δ + c δ̇`` of a releasing law turning negative / positive
     (released before δ = 0 / engaged again), 10 / 11 a frame's hinge rotation reaching the
     upper / lower end of its branch, 12 / 13 a hinge on a one-way branch reversing (its
-    rate turning negative / positive); (−1, −1, 0) if none. The hinges' rotations and rates
+    rate turning negative / positive), 14 / 15 / 16 a restrainer's slack taken up / given
+    back / its yield (:func:`restrainer_event`); (−1, −1, 0) if none. The hinges' rotations and rates
     at ``y0`` are read from their rows' ``HS_TH0``, ``HS_R0`` (the caller's: see
     :func:`hinge_start`), those at ``y1`` left in ``HS_TH1``, ``HS_R1``. ``ct``, ``el``, ``hg``: the
     contacts, element rows and hinge rows.
@@ -351,6 +420,11 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
                     if t >= 0.0:
                         best_t, best_c, best_k = t, c, kind
     for s in range(s_lo.shape[0]):
+        if s_code[s] == RESTRAINER:
+            t, kind = restrainer_event(s, y0, k0, y1, k1, h, n, el, skip_c, skip_kind, best_t)
+            if t >= 0.0:
+                best_t, best_c, best_k = t, s, kind
+            continue
         if s_code[s] >= DEVICE_MIN and not has_rate_cusp(s_code[s], s_par[s, 1]):
             continue  # a link whose force is smooth where its rate reverses: no event
         r0 = element_drift(s, s_lo[s], s_hi[s], s_par, y0, n)[1]
@@ -491,7 +565,8 @@ def is_upward(kind):
     minimum, a released contact engaging again, a hinge reaching the upper end of its
     branch or turning to rotate positively)?"""
     return (kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
-            or kind == EV_REENGAGE or kind == EV_HINGE_HI or kind == EV_HINGE_TURN_UP)
+            or kind == EV_REENGAGE or kind == EV_HINGE_HI or kind == EV_HINGE_TURN_UP
+            or kind == EV_TAUT or kind == EV_YIELD)
 
 
 @njit(**NRT_FREE)

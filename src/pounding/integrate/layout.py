@@ -51,6 +51,10 @@ branch's other bound (:mod:`pounding.hysteresis.hinges`)."""
 EV_HINGE_TURN_DOWN, EV_HINGE_TURN_UP = np.int64(12), np.int64(13)
 """A hinge on a branch that holds for one direction only (``HS_DIR`` +1 / −1) reversing: its
 rotation rate θ̇ turning negative / positive."""
+EV_TAUT, EV_SLACK, EV_YIELD = np.int64(14), np.int64(15), np.int64(16)
+"""A cable restrainer's corners (:func:`pounding.devices.laws.restrainer_kinks`): its elastic
+elongation ``e`` turning positive (the slack taken up) / back to ≤ 0 (slack again), its
+margin to yield turning positive (it yields). Element-row events, like ``EV_DRIFT_*``."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
 (W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE,

@@ -150,7 +150,7 @@ def check_link_periods(model: PoundingModel, step: float) -> None:
         if link.k is not None:
             times.append((2.0 * math.pi * math.sqrt(m_eff / link.k),
                           f"a spring of {link.k:.3g} N/m", "rings with a period of"))
-        if link.alpha == 1.0:
+        if link.c is not None and link.alpha == 1.0:
             times.append((2.0 * math.pi * m_eff / link.c, f"a dashpot of {link.c:.3g} N·s/m",
                           "decays in"))
         for time, what, verb in times:

@@ -5,7 +5,8 @@ production runs. It integrates the full first-order system ``[u, u̇, h, E_in, E
 W_storey, W_c]`` with ``DOP853`` at tight tolerance, one record interval at a time (the
 ground acceleration is linear on each), and stops at every located event — a gap closing
 or opening, the penetration rate changing sign inside a contact, a clipped contact force
-returning to zero or rising from it, a storey yielding or unloading — to commit the state there (contract steps 3–4) and restart. Peak forces are
+returning to zero or rising from it, a storey yielding or unloading, a cable restrainer
+going taut, slack, yielding or unloading — to commit the state there (contract steps 3–4) and restart. Peak forces are
 found on the dense output of each segment and refined with a bounded scalar search.
 
 Nothing here comes from the compiled kernel's side: the contact, storey and link laws are
@@ -32,6 +33,7 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
 from pounding.contact.codes import V0_MIN
+from pounding.devices import Link
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.integrate.reference_inputs import (
     check_components,
@@ -44,6 +46,9 @@ from pounding.integrate.reference_inputs import (
     output_times,
 )
 from pounding.integrate.reference_laws import (
+    RESTRAINER_SLACK,
+    RESTRAINER_TAUT,
+    RESTRAINER_YIELDING,
     Storey,
     contact_force,
     keeps_set,
@@ -51,6 +56,9 @@ from pounding.integrate.reference_laws import (
     link_recoverable,
     maxwell_spring_rate,
     release_function,
+    restrainer_force,
+    restrainer_switches,
+    spring_stiffness,
     stored_energy,
     storey_load,
     storey_recoverable,
@@ -130,6 +138,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     l_hi = [hi for _, hi in model.link_dofs]
     l_zi = list(np.cumsum([lk.kind == "maxwell" for lk in links]) - 1)
     nzl = sum(lk.kind == "maxwell" for lk in links)
+    # a cable restrainer's branch and plastic elongation [m] change only at its events
+    rst_branch = np.full(len(links), RESTRAINER_SLACK)
+    rst_plastic = np.zeros(len(links))
     i_h = 2 * n                 # hysteretic states
     i_z = 2 * n + ns            # Maxwell links' spring deformations
     i_e = 2 * n + ns + nzl      # E_in, E_visc, W_storey, W_links, W_c...
@@ -175,6 +186,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
             d = y[l_hi[q]] - y[l_lo[q]]
             rate[q] = y[n + l_hi[q]] - y[n + l_lo[q]]
             z = y[i_z + l_zi[q]] if lk.kind == "maxwell" else 0.0
+            if lk.kind == "restrainer":
+                f[q] = restrainer_force(lk, d, rst_plastic[q], rst_branch[q])
+                continue
             f[q] = link_force(lk, d, rate[q], z)
             if lk.kind == "maxwell":
                 zdot[l_zi[q]] = maxwell_spring_rate(lk, rate[q], z)
@@ -258,10 +272,29 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 def evl(t: float, y: NDArray[np.float64], q: int = q) -> float:
                     return y[n + l_hi[q]] - y[n + l_lo[q]]
                 evs.append(StopEvent(evl, -going, ("link", q, 0)))
+            if lk.kind == "restrainer":
+                for w, (after, _, way) in enumerate(restrainer_switches(
+                        lk, 0.0, rst_plastic[q], rst_branch[q])):
+                    def evs_r(t: float, y: NDArray[np.float64], q: int = q, w: int = w,
+                              lk: Link = lk) -> float:
+                        d = y[l_hi[q]] - y[l_lo[q]]
+                        return restrainer_switches(lk, d, rst_plastic[q], rst_branch[q])[w][1]
+                    evs.append(StopEvent(evs_r, float(way), ("restrainer", q, after)))
+                if rst_branch[q] == RESTRAINER_YIELDING:
+                    def evu_r(t: float, y: NDArray[np.float64], q: int = q) -> float:
+                        return y[n + l_hi[q]] - y[n + l_lo[q]]
+                    evs.append(StopEvent(evu_r, -1.0, ("rst_unload", q, 0)))
         return evs
 
     y = np.zeros(i_e + 4 + nc)
     y[: 2 * n] = initial_state(model, initial_displacement, initial_velocity)
+    for q, lk in enumerate(links):
+        if lk.kind == "restrainer":
+            opening = y[l_hi[q]] - y[l_lo[q]]
+            if opening > lk.yield_elongation:
+                raise ValueError("initial_displacement: the reference starts restrainers "
+                                 "within their elastic range")
+            rst_branch[q] = RESTRAINER_TAUT if opening > lk.slack else RESTRAINER_SLACK
     if ns and np.any(y[:n] != 0.0):
         raise ValueError("initial_displacement: the reference starts yielding storeys at rest "
                          "only")
@@ -361,7 +394,7 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
             # there now (to 1e-12 of the velocity scale) is handled here too.
             handled = [first] + [
                 k for k, ev in enumerate(evs)
-                if k != first and ev.tag[0] in ("rate", "unload", "link")
+                if k != first and ev.tag[0] in ("rate", "unload", "link", "rst_unload")
                 and abs(ev(t, y)) <= 1e-12 * v_scale
                 and np.sign(ev(t, y_before)) == -ev.direction]
             for kev in handled:
@@ -369,6 +402,16 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 tag = evs[kev].tag
                 if tag[0] == "link":
                     pass  # (a fluid damper's rate changed sign: the step restarts there)
+                elif tag[0] == "restrainer":
+                    rst_branch[tag[1]] = tag[2]
+                elif tag[0] == "rst_unload":
+                    # off the backbone: the cable is longer by what it yielded
+                    q = tag[1]
+                    lk = links[q]
+                    d = y[l_hi[q]] - y[l_lo[q]]
+                    f = restrainer_force(lk, d, 0.0, RESTRAINER_YIELDING)
+                    rst_plastic[q] = d - float(lk.slack) - f / spring_stiffness(lk)  # type: ignore[arg-type]
+                    rst_branch[q] = RESTRAINER_TAUT
                 elif tag[0] == "yield":
                     yld[tag[1]] = tag[2]
                 elif tag[0] == "unload":
@@ -419,6 +462,13 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
                 impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
     wall = time.perf_counter() - start
+    for q, lk in enumerate(links):
+        if lk.kind == "restrainer" and rst_branch[q] == RESTRAINER_YIELDING:
+            # (still on the backbone: its plastic elongation so far, as if it unloaded now)
+            opening = y[l_hi[q]] - y[l_lo[q]]
+            rst_plastic[q] = (opening - float(lk.slack)  # type: ignore[arg-type]
+                              - restrainer_force(lk, opening, 0.0, RESTRAINER_YIELDING)
+                              / spring_stiffness(lk))
     u_out = out[:, :n]
     v_out = out[:, n:2 * n]
     acc = np.empty((nt, n))
@@ -437,6 +487,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         recov += storey_recoverable(st, storey_drift, out[:, i_h + s])
     recov_links = np.zeros(nt)
     for q, lk in enumerate(links):
+        if lk.kind == "restrainer":
+            recov_links += lf_out[:, q] ** 2 / (2.0 * spring_stiffness(lk))  # F²/(2k)
+            continue
         z = out[:, i_z + l_zi[q]] if lk.kind == "maxwell" else np.zeros(nt)
         recov_links += link_recoverable(lk, u_out[:, l_hi[q]] - u_out[:, l_lo[q]], z)
     energy = np.zeros((nt, len(ENERGY_NAMES)))
@@ -455,7 +508,10 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                   velocity=v_out, abs_acceleration=acc, penetration=pen, contact_force=f_out,
                   energy=energy, impact_array=imp, stats=stats, yielding_shear=vs_out,
                   final_z=np.array([out[-1, i_h + s] for s, st in enumerate(storeys)
-                                    if st.kind != "bilinear"] + list(out[-1, i_z:i_e])),
+                                    if st.kind != "bilinear"]
+                                   + [out[-1, i_z + l_zi[q]] if lk.kind == "maxwell"
+                                      else rst_plastic[q] for q, lk in enumerate(links)
+                                      if lk.has_internal_variable]),
                   link_force=lf_out,
                   located_peaks=peaks)
 

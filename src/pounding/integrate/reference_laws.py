@@ -27,7 +27,11 @@ Storey laws: the bilinear storey in rate form (``V̇ = k ḋ`` elastic, ``b k �
 branch, switched at located events) and the Bouc–Wen storey's evolution law (Wen 1976),
 each with its own state integrated with the motion. Links: ``F = c |ḋ|^α sgn ḋ``
 (viscous), ``k d + c ḋ`` (Kelvin), and ``F = k z`` with ``ż = ḋ − sgn F (|F|/c)^(1/α)``
-(Maxwell).
+(Maxwell); a cable restrainer on three branches switched at located events (slack ``F = 0``,
+taut ``F = k (d − s₀ − s_p)``, yielding on the bilinear backbone ``F_y + b k (d − s₀ −
+F_y/k)``), its plastic elongation ``s_p`` read off the backbone where it unloads
+(DesRoches & Fenves 2000), instead of the kernel's plastic elongation integrated with the
+motion.
 """
 
 from __future__ import annotations
@@ -243,27 +247,76 @@ def spring_stiffness(link: Link) -> float:
     return float(link.k)
 
 
+def dashpot_coefficient(link: Link) -> float:
+    """Coefficient ``c`` of a link's dashpot (:class:`Link` requires one but for a
+    restrainer)."""
+    if link.c is None:
+        raise ValueError(f"reference: the {link.kind} link {link.name} has no dashpot c")
+    return float(link.c)
+
+
 def link_force(link: Link, d: float, rate: float, z: float) -> float:
     """Force [N] of a link at relative displacement ``d`` [m] and rate ``ḋ`` [m/s] (a
     Maxwell link: at its spring's deformation ``z`` [m])."""
     if link.kind == "viscous":
-        return math.copysign(link.c * abs(rate) ** link.alpha, rate) if rate != 0.0 else 0.0
+        return math.copysign(dashpot_coefficient(link) * abs(rate) ** link.alpha, rate) if rate != 0.0 else 0.0
     if link.kind == "kelvin":
-        return spring_stiffness(link) * d + link.c * rate
+        return spring_stiffness(link) * d + dashpot_coefficient(link) * rate
     if link.kind == "maxwell":
         return spring_stiffness(link) * z
+    if link.kind == "restrainer":
+        raise ValueError("reference: a restrainer's force depends on its branch "
+                         "(restrainer_force)")
     raise ValueError(f"reference: no reference for link kind {link.kind!r}")
+
+
+RESTRAINER_SLACK, RESTRAINER_TAUT, RESTRAINER_YIELDING = 0, 1, 2
+"""The reference's branches of a cable restrainer."""
+
+
+def restrainer_force(link: Link, d: float, plastic: float, branch: int) -> float:
+    """Force [N] of a cable restrainer at opening ``d`` [m] on ``branch``: 0 slack; taut
+    ``k (d − slack − s_p)`` (``plastic``: its plastic elongation ``s_p`` [m]); yielding,
+    the bilinear backbone ``F_y + b k (d − slack − F_y/k)``."""
+    k = spring_stiffness(link)
+    slack = float(link.slack)  # type: ignore[arg-type]
+    if branch == RESTRAINER_SLACK:
+        return 0.0
+    if branch == RESTRAINER_TAUT:
+        return k * (d - slack - plastic)
+    fy = float(link.yield_force)  # type: ignore[arg-type]
+    return fy + link.hardening * k * (d - slack - fy / k)
+
+
+def restrainer_switches(link: Link, d: float, plastic: float, branch: int
+                        ) -> list[tuple[int, float, int]]:
+    """The restrainer's ways off ``branch`` at opening ``d``: ``(branch after, value,
+    direction)`` with ``value`` the event function [N] (its zero the switch) crossing in
+    ``direction``:
+    slack → taut where ``k (d − slack − s_p)`` turns positive; taut → slack where it turns
+    back, taut → yielding where it reaches the backbone (the rate-driven way off the yield
+    branch, the opening's rate turning negative, is the caller's)."""
+    k = spring_stiffness(link)
+    elastic = k * (d - float(link.slack) - plastic)  # type: ignore[arg-type]
+    if branch == RESTRAINER_SLACK:
+        return [(RESTRAINER_TAUT, elastic, 1)]
+    out = [(RESTRAINER_SLACK, elastic, -1)]
+    if branch == RESTRAINER_TAUT and link.yield_force is not None:
+        out.append((RESTRAINER_YIELDING, elastic - restrainer_force(link, d, plastic, RESTRAINER_YIELDING),
+                    1))
+    return out
 
 
 def maxwell_spring_rate(link: Link, rate: float, z: float) -> float:
     """``ż`` [m/s] of a Maxwell link: the relative velocity less the dashpot's,
     ``sgn F (|F|/c)^(1/α)`` with ``F = k z``."""
     f = spring_stiffness(link) * z
-    return rate - math.copysign((abs(f) / link.c) ** (1.0 / link.alpha), f)
+    return rate - math.copysign((abs(f) / dashpot_coefficient(link)) ** (1.0 / link.alpha), f)
 
 
 def link_recoverable(link: Link, d: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """Elastic energy [J] of a link's spring: ``½ k d²`` (Kelvin), ``½ k z²`` (Maxwell)."""
+    """Elastic energy [J] of a link's spring: ``½ k d²`` (Kelvin), ``½ k z²`` (Maxwell); a
+    restrainer's ``F²/(2k)`` is the caller's (from its force on its branch)."""
     if link.kind == "kelvin":
         return 0.5 * spring_stiffness(link) * d**2
     if link.kind == "maxwell":
