@@ -100,7 +100,7 @@ def test_bridge_row_joints_abutments_restrainers() -> None:
     assert model.element_labels() == ["B1P1", "B2Br1", "B2Br2"]
     assert model.yielding_storeys == () and model.is_inelastic
     assert model.link_dofs == ((0, 2),) and model.links[0].name == "R1"
-    lo, hi, code, _, zi = model.storey_arrays()
+    lo, hi, _, _, zi = model.storey_arrays()
     assert list(lo) == [-1, 3, 4, 0] and list(hi) == [1, 2, 2, 2]
     assert list(zi) == [-1, 0, 1, -1]
     assert model.dof_units() == ["m"] * 5

@@ -243,7 +243,7 @@ class BridgeConfig(Section):
     """``[bridge]``: frames, joints, abutments (module docstring)."""
 
     frame: Annotated[list[FrameConfig], Field(min_length=1)]
-    joint: list[JointConfig] = []
+    joint: list[JointConfig] = Field(default_factory=list)
     abutment_gaps: Annotated[list[Gap | Literal["none"]],
                              Field(min_length=2, max_length=2)] | None = None
     deck_elevation: Length | None = None
@@ -274,6 +274,6 @@ class BridgeConfig(Section):
         abutments = tuple(None if g == "none" else Abutment(float(g)) for g in gaps)
         restrainers = [Restrainer(j, joint.restrainer.model_dump(exclude_none=True))
                        for j, joint in enumerate(self.joint) if joint.restrainer is not None]
-        return Bridge(frames, [joint.gap for joint in self.joint],
+        return Bridge(tuple(frames), tuple(joint.gap for joint in self.joint),
                       abutments=abutments,  # type: ignore[arg-type]
-                      restrainers=restrainers, name=name)
+                      restrainers=tuple(restrainers), name=name)

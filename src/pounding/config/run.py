@@ -64,7 +64,7 @@ class RunConfig(Section):
     name: str = "model"
     description: str | None = None
     record: RecordConfig
-    building: list[BuildingConfig] = []
+    building: list[BuildingConfig] = Field(default_factory=list)
     bridge: BridgeConfig | None = None  #: ``[bridge]``: frames of a bridge, in place of buildings
     contact: ContactConfig | None = None
     device: list[DeviceConfig] = []
@@ -147,6 +147,7 @@ class RunConfig(Section):
                 raise field_error(key, f"a model file with a [bridge] has no [[{key}]]: its "
                                        "frames are the row, its abutments the walls, its "
                                        "restrainers the links")
+        assert self.bridge is not None
         if self.spatial is not None and any(j.restrainer is not None for j in self.bridge.joint):
             raise field_error("spatial", "restrainers (links) on spatially varying ground are "
                                          "not modelled yet")

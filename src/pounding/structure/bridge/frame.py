@@ -47,7 +47,6 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -336,11 +335,11 @@ class BridgeFrame(MatrixBuilding):
                 f"{len(self.piers)} pier(s); T1 = {t[0]:.3f} s"
                 + (f", T2 = {t[1]:.3f} s" if t.size > 1 else ""))
 
-    def __eq__(self, other: Any) -> bool:
+    def __eq__(self, other: object) -> bool:
         same = super().__eq__(other)
         if same is NotImplemented or not same:
             return same
         return (isinstance(other, BridgeFrame) and self.piers == other.piers
                 and self.bearings == other.bearings and self.zeta == other.zeta)
 
-    __hash__ = None  # type: ignore[assignment]
+    __hash__ = None
