@@ -56,7 +56,7 @@ from pounding.config.quantities import (
 )
 from pounding.config.storeys import StoreyLawConfig
 
-__all__ = ["BearingConfig", "BridgeConfig", "FrameConfig", "JointConfig", "PierConfig"]
+__all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "PierConfig"]
 
 FlexuralRigidity = Annotated[float, Field(gt=0, le=1e15)]
 """A column's ``EI`` [N·m²]."""
@@ -164,7 +164,7 @@ class PierConfig(Section):
         return pier_stiffness(self.EI, self.height, self.fixity, self.columns or 1)
 
 
-class FrameConfig(Section):
+class BridgeFrameConfig(Section):
     """``[[bridge.frame]]``: one deck segment on its piers (module docstring)."""
 
     spans: Annotated[list[Length], Field(min_length=1)]
@@ -175,7 +175,7 @@ class FrameConfig(Section):
     name: str | None = None
 
     @model_validator(mode="after")
-    def _mass(self) -> FrameConfig:
+    def _mass(self) -> BridgeFrameConfig:
         if (self.deck_mass is None) == (self.deck_mass_per_length is None):
             raise field_error("deck_mass_per_length", "give the deck's mass per length "
                                                       "[kg/m] or deck_mass [kg] (one of them)")
@@ -242,7 +242,7 @@ class JointConfig(Section):
 class BridgeConfig(Section):
     """``[bridge]``: frames, joints, abutments (module docstring)."""
 
-    frame: Annotated[list[FrameConfig], Field(min_length=1)]
+    frame: Annotated[list[BridgeFrameConfig], Field(min_length=1)]
     joint: list[JointConfig] = Field(default_factory=list)
     abutment_gaps: Annotated[list[Gap | Literal["none"]],
                              Field(min_length=2, max_length=2)] | None = None
@@ -268,7 +268,7 @@ class BridgeConfig(Section):
         z = self.deck_elevation or max(p.height for f in self.frame for p in f.pier)
         frames = []
         for j, f in enumerate(self.frame):
-            with prefixed(f"frame[{j}]", FrameConfig.model_fields):
+            with prefixed(f"frame[{j}]", BridgeFrameConfig.model_fields):
                 frames.append(f.build(z, self.zeta, f"B{j + 1}"))
         gaps = self.abutment_gaps or ["none", "none"]
         abutments = tuple(None if g == "none" else Abutment(float(g)) for g in gaps)
