@@ -87,6 +87,8 @@ class RunConfig(Section):
         if self.bridge is not None:
             return self._bridge_keys()
         if not self.building:
+            if "building" in self.model_fields_set:  # (given, and empty)
+                raise field_error("building", "must hold at least 1 value(s) (got [])")
             raise field_error("building", "required: one [[building]] table or more (or a "
                                           "[bridge])")
         nb = len(self.building)
