@@ -31,9 +31,12 @@ Rigid moat walls (:class:`pounding.structure.wall.MoatWall`) may stand at the en
 the floors of the end building at or below a wall's top strike it, with the model's contact law
 (or the wall's own: an abutment's backfill) and the wall's gap (contacts ``'B1F1-W'``, ``'W-B1F1'``, after the buildings' contacts).
 
-For the kernel the model also lists its yielding storeys (:meth:`PoundingModel.storey_arrays`):
-their shear comes from their storey law, and the stiffness matrix handed to the kernel
-(:meth:`PoundingModel.linear_stiffness`) holds only the linear storeys.
+For the kernel the model also lists its nonlinear elements as element rows
+(:attr:`PoundingModel.element_rows`, :meth:`PoundingModel.storey_arrays`): a shear
+building's yielding storeys, all with the building's storey law, and the piers and
+bearings of a bridge frame (:mod:`pounding.structure.bridge`), each with a law of its own;
+their forces come from their laws, and the stiffness matrix handed to the kernel
+(:meth:`PoundingModel.linear_stiffness`) holds only the linear elements.
 """
 
 from __future__ import annotations
@@ -67,6 +70,8 @@ from pounding.structure.assembly import (
     floor_below,
     floor_dofs,
 )
+from pounding.structure.bridge import Bridge, BridgeFrame
+from pounding.structure.element_rows import ElementRow, element_rows
 from pounding.structure.plan import PlanBuilding
 from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
 from pounding.structure.wall import MoatWall, check_walls, wall_contacts
@@ -221,6 +226,16 @@ class PoundingModel:
             check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
         self._check_law_codes()
 
+    @classmethod
+    def from_bridge(cls, bridge: Bridge, contact: ContactSpec,
+                    level_tolerance: float = 0.1) -> PoundingModel:
+        """The model of a bridge along its axis (:class:`pounding.structure.bridge.Bridge`):
+        its frames as the row's buildings, its joints as the gaps, its abutments as walls at
+        the ends and its restrainers as links, every contact deck to deck (or deck to
+        abutment) with ``contact``."""
+        return cls(contact=contact, level_tolerance=level_tolerance,
+                   **bridge.model_arguments())
+
     def _check_law_codes(self) -> None:
         """Every law the model's contacts, bumpers and storeys are built with is one the
         compiled kernel implements: a law class with a code of its own would otherwise be
@@ -234,6 +249,9 @@ class PoundingModel:
                    for i, dev in enumerate(self.devices) if isinstance(dev, Bumper)]
         checks += [(f"buildings[{i}].storey_law", check_storey_law, lambda b=b: b.storey_law)
                    for i, b in enumerate(self.buildings) if b.storey_law is not None]
+        checks += [(f"buildings[{p}].{row.label}", check_storey_law, lambda row=row: row.law)
+                   for p, row in self.element_rows
+                   if getattr(self.buildings[p], "storey_law", None) is None]
         for where, check, law in checks:
             try:
                 check(law())
@@ -458,14 +476,31 @@ class PoundingModel:
                 np.array([c.law.code for c in cs], dtype=np.int64), params)
 
     @cached_property
+    def element_rows(self) -> tuple[tuple[int, ElementRow], ...]:
+        """``(building index, row)`` of every nonlinear element of the buildings, left to
+        right and in each building's order: a shear building's yielding storeys (one law for
+        all), a bridge frame's piers and bearings (a law each;
+        :func:`pounding.structure.element_rows.element_rows`). The row's DOFs are its
+        building's own."""
+        return tuple((p, row) for p, b in enumerate(self.buildings) for row in element_rows(b))
+
+    def element_labels(self) -> list[str]:
+        """``'B1F1'`` (a yielding storey), ``'B2P1'`` (a bridge frame's pier 1), ``'B2Br1'``
+        (its bearing 1) … for every row of :attr:`element_rows`."""
+        return [f"B{p + 1}{row.label}" for p, row in self.element_rows]
+
+    @cached_property
     def yielding_storeys(self) -> tuple[tuple[int, int], ...]:
-        """``(building, storey index)`` of every storey with a storey law, in DOF order."""
-        return tuple((p, j) for p, b in enumerate(self.buildings) for j in b.yielding)
+        """``(building, storey index)`` of every element row that is a storey (its shear
+        fills that storey's column of the per-floor outputs), in DOF order; a bridge
+        frame's piers and bearings are element rows but no storeys."""
+        return tuple((p, row.storey) for p, row in self.element_rows if row.storey >= 0)
 
     def storey_arrays(self) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64],
                                      NDArray[np.float64], NDArray[np.int64]]:
-        """The yielding storeys, and then the links between buildings, as plain arrays for
-        the compiled kernel (element rows of one kind).
+        """The element rows (:attr:`element_rows`: yielding storeys, a bridge frame's piers
+        and bearings, each row with its own law), and then the links between buildings, as
+        plain arrays for the compiled kernel.
 
         Returns
         -------
@@ -484,19 +519,15 @@ class PoundingModel:
         lower, upper, code, zi = [], [], [], []
         rows: list[NDArray[np.float64]] = []
         nz = 0
-        for p, b in enumerate(self.buildings):
-            law = b.storey_law
-            if law is None:
-                continue  # linear storeys (a matrix building has no storey law)
+        for p, row in self.element_rows:
+            law = row.law
             check_storey_law(law)
-            prm = b.storey_law_params()
-            for r, (lo, hi, _, _) in enumerate(b.yielding_storey_dofs()):
-                upper.append(int(offsets[p] + hi))
-                lower.append(int(offsets[p] + lo) if lo >= 0 else -1)
-                code.append(law.code)
-                rows.append(prm[r])
-                zi.append(nz if law.has_internal_variable else -1)
-                nz += 1 if law.has_internal_variable else 0
+            upper.append(int(offsets[p] + row.upper))
+            lower.append(int(offsets[p] + row.lower) if row.lower >= 0 else -1)
+            code.append(law.code)
+            rows.append(row.params)
+            zi.append(nz if law.has_internal_variable else -1)
+            nz += 1 if law.has_internal_variable else 0
         # the links: rows of the same kind after the storeys, from the left end (lower) to
         # the right end (upper), so the "drift" is u_right − u_left
         width = rows[0].size if rows else STOREY_PARAMS_SIZE
@@ -521,12 +552,9 @@ class PoundingModel:
         offsets = self.system.offsets
         rock: list[int] = []
         lever: list[float] = []
-        for p, b in enumerate(self.buildings):
-            if b.storey_law is None:
-                continue
-            for _, _, rk, arm in b.yielding_storey_dofs():
-                rock.append(int(offsets[p] + rk) if rk >= 0 else -1)
-                lever.append(float(arm))
+        for p, row in self.element_rows:
+            rock.append(int(offsets[p] + row.rock) if row.rock >= 0 else -1)
+            lever.append(float(row.lever))
         rock += [-1] * len(self.links)
         lever += [0.0] * len(self.links)
         return np.array(rock, dtype=np.int64), np.array(lever, dtype=float)
@@ -592,6 +620,8 @@ class PoundingModel:
                     unit = "rad"
                 elif frame and label.startswith("N"):
                     unit = "rad" if label.endswith("r") else "m"
+                elif isinstance(bl, BridgeFrame):
+                    unit = "m"  # (its deck and pier caps: translations along the axis)
                 elif (floor[k] or not isinstance(bl, MatrixBuilding) or frame
                       or isinstance(bl, PlanMatrixBuilding | FlexibleBaseBuilding)):
                     unit = "m"  # (a flexible base's building: every DOF a translation)

@@ -70,6 +70,8 @@ def print_run_summary(out: Any) -> None:
         what = ("bearings" if r.is_bearing.any() and len(model.yielding_storeys)
                 == int(r.is_bearing.sum()) else "yielding storeys"
                 + (" and bearings" if r.is_bearing.any() else ""))
+        if not model.yielding_storeys:  # (a bridge's frames: their piers and bearings)
+            what = "piers and bearings"
         rows.append((f"hysteretic, {what} [{eu}]", number(fin["hysteretic"] * ef)))
     if "hinge_hysteretic_energy_J" in s:
         rows.append((f"hysteretic, frames' plastic hinges [{eu}]",

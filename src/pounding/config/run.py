@@ -10,6 +10,7 @@ from typing import Annotated, Any, NamedTuple
 from pydantic import Field, PrivateAttr, model_validator
 
 from pounding.config.base import Section, field_error, fmt, prefixed
+from pounding.config.bridge import BridgeConfig
 from pounding.config.building import BuildingConfig
 from pounding.config.contact import CONTACT_COMMON, LAW_FIELDS, ContactConfig
 from pounding.config.device import DeviceConfig
@@ -63,7 +64,8 @@ class RunConfig(Section):
     name: str = "model"
     description: str | None = None
     record: RecordConfig
-    building: Annotated[list[BuildingConfig], Field(min_length=1)]
+    building: list[BuildingConfig] = Field(default_factory=list)
+    bridge: BridgeConfig | None = None  #: ``[bridge]``: frames of a bridge, in place of buildings
     contact: ContactConfig | None = None
     device: list[DeviceConfig] = []
     wall: list[WallConfig] = []
@@ -82,6 +84,13 @@ class RunConfig(Section):
 
     @model_validator(mode="after")
     def _pairs(self) -> RunConfig:
+        if self.bridge is not None:
+            return self._bridge_keys()
+        if not self.building:
+            if "building" in self.model_fields_set:  # (given, and empty)
+                raise field_error("building", "must hold at least 1 value(s) (got [])")
+            raise field_error("building", "required: one [[building]] table or more (or a "
+                                          "[bridge])")
         nb = len(self.building)
         if not self.in_plan:
             for key in ("second", "second_file", "incidence"):
@@ -136,6 +145,32 @@ class RunConfig(Section):
                                f"{len(self.contact.gaps)}: {self.contact.gaps})")
         return self
 
+    def _bridge_keys(self) -> RunConfig:
+        """A bridge's file: no buildings or walls beside it, a contact law without gaps."""
+        for key in ("building", "wall", "device"):
+            if getattr(self, key):
+                raise field_error(key, f"a model file with a [bridge] has no [[{key}]]: its "
+                                       "frames are the row, its abutments the walls, its "
+                                       "restrainers the links")
+        assert self.bridge is not None
+        if self.spatial is not None and any(j.restrainer is not None for j in self.bridge.joint):
+            raise field_error("spatial", "restrainers (links) on spatially varying ground are "
+                                         "not modelled yet")
+        if self.contact is None:
+            raise field_error("contact", "required with a [bridge]: a [contact] table with the "
+                                         "law of the impacts at the joints and abutments")
+        for key in ("gap", "gaps"):
+            if getattr(self.contact, key) is not None:
+                raise field_error(("contact", key), f"the gaps of a bridge are its joints' and "
+                                                    f"abutments' (bridge.joint[].gap, "
+                                                    f"bridge.abutment_gaps); got "
+                                                    f"{fmt(getattr(self.contact, key))}")
+        for key in ("second", "second_file", "incidence"):
+            if getattr(self.record, key) is not None:
+                raise field_error(("record", key), "a bridge along its axis is shaken by one "
+                                                   "component (the record's)")
+        return self
+
     @property
     def source(self) -> Path | None:
         """The file this was read from, if any."""
@@ -155,6 +190,8 @@ class RunConfig(Section):
         A :class:`ValueError` from a constructor of the library is re-raised prefixed
         with the path of the section at fault (``building[1]: ...``).
         """
+        if self.bridge is not None:
+            return self._build_bridge()
         buildings = []
         for i, b in enumerate(self.building):
             with prefixed(f"building[{i}]", BuildingConfig.model_fields):
@@ -217,6 +254,27 @@ class RunConfig(Section):
                     "contact.floor_to_column = false floors meet only at equal levels")
         with prefixed("record", RecordConfig.model_fields):
             motion = self.record.load(components=self.in_plan)
+        if self.spatial is not None:
+            assert isinstance(motion, GroundMotion)
+            with prefixed("spatial", SpatialConfig.model_fields):
+                motion = self.spatial.apply(motion, self.record.factor_of(motion))
+        return Built(model, motion, self.solver.kwargs())
+
+    def _build_bridge(self) -> Built:
+        """:meth:`build` of a file with a ``[bridge]``."""
+        assert self.bridge is not None and self.contact is not None
+        with prefixed("bridge", BridgeConfig.model_fields):
+            bridge = self.bridge.build(self.name)
+        with prefixed("contact", ContactConfig.model_fields):
+            spec = self.contact.spec()
+        try:
+            model = PoundingModel.from_bridge(bridge, spec,
+                                              level_tolerance=self.contact.level_tolerance)
+            model.contacts  # noqa: B018  (builds every contact law with its deck masses)
+        except ValueError as exc:
+            raise ValueError(f"bridge: {exc}") from exc
+        with prefixed("record", RecordConfig.model_fields):
+            motion = self.record.load(components=False)
         if self.spatial is not None:
             assert isinstance(motion, GroundMotion)
             with prefixed("spatial", SpatialConfig.model_fields):

@@ -455,7 +455,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     stats = SolverStats(solver="kernel", rtol=rtol, rk_steps=int(ws_i[I_NSTEPS]),
                         rejected=int(ws_i[I_NREJECT]), events=int(ws_i[I_NEVENTS]),
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
-    n_storey_rows = len(model.yielding_storeys)
+    n_storey_rows = len(model.element_rows)
     u_out, v_out, acc_out = out.u, out.v, out.acc
     if stations is not None:  # (the buildings' DOFs; the grounds' are not reported)
         u_out, v_out, acc_out = (np.ascontiguousarray(a[:, :n_model])
@@ -536,8 +536,9 @@ def _unknown_law_text(model: PoundingModel, km: KernelModel, row: int) -> str:
             int(km.contacts.code[row]), CONTACT_LAW_CODES
     else:
         s = row - nc
-        n_storeys = len(model.yielding_storeys)
-        what = (f"yielding storey {s + 1}" if s < n_storeys
+        n_storeys = len(model.element_rows)
+        what = ((f"yielding storey {s + 1}" if model.element_rows[s][1].storey >= 0
+                 else f"element {model.element_labels()[s]}") if s < n_storeys
                 else f"link {model.links[s - n_storeys].name}")
         code = int(km.elements.code[s])
         codes = DEVICE_CODES if code >= DEVICE_MIN else STOREY_LAW_CODES

@@ -25,11 +25,12 @@ refused before anything is allocated."""
 
 def history_bytes(model: PoundingModel, nt: int) -> int:
     """Bytes of the histories a run of ``nt`` output times writes: displacement, velocity,
-    acceleration of every floor, penetration and force of every contact, shear of every
-    yielding storey, rotation and moment of every hinge of a yielding frame, the energies
-    and the ground acceleration (each of its G components), 8 bytes each."""
+    acceleration of every floor, penetration and force of every contact, force of every
+    element row (yielding storey, a bridge's pier or bearing), rotation and moment of every
+    hinge of a yielding frame, the energies and the ground acceleration (each of its G
+    components), 8 bytes each."""
     n, nc = model.n_dof, len(model.contacts)
-    ns = len(model.yielding_storeys)
+    ns = len(model.element_rows)
     nh = len(model.hinge_labels())
     r = np.asarray(model.system.r)
     g = 1 if r.ndim == 1 else r.shape[1]

@@ -182,38 +182,30 @@ def storey_load(p: NDArray[np.float64], st: Storey, shear: float) -> None:
 
 
 def storeys(model: PoundingModel) -> list[Storey]:
-    """The yielding storeys, read from the building definitions (not the kernel arrays):
-    only the storeys that follow their building's law (a base-isolated building: its
-    isolation storey); the others are in the linear stiffness matrix."""
+    """The element rows (:attr:`PoundingModel.element_rows`: yielding storeys, a bridge
+    frame's piers and bearings), each read from its own law and constants ``[k, F_y, …]``
+    (not the kernel arrays): only the elements that follow a law (a base-isolated
+    building: its isolation storey); the others are in the linear stiffness matrix."""
     from pounding.hysteresis import Bilinear, BoucWen
-    from pounding.structure import ShearBuilding
-    from pounding.structure.foundation import FlexibleBaseBuilding
+    from pounding.hysteresis.base import P_FY, P_K
 
     out = []
     offsets = model.system.offsets
-    for p, b in enumerate(model.buildings):
-        law = b.storey_law
-        # a shear building, or one on a flexible base (its storeys over a rocking footing)
-        shear = (b if isinstance(b, ShearBuilding) else
-                 b.fixed_base if isinstance(b, FlexibleBaseBuilding) else None)
-        if law is None or not isinstance(shear, ShearBuilding):
-            continue  # (a matrix building is linear: its storey_law is None)
-        ys = list(b.yielding)
-        fy = law.yield_forces(shear.stiffnesses[ys])
-        for r, (j, (lo_j, hi_j, rk, lever)) in enumerate(zip(ys, b.yielding_storey_dofs())):
-            lo = int(offsets[p] + lo_j) if lo_j >= 0 else -1
-            hi = int(offsets[p] + hi_j)
-            rock = int(offsets[p] + rk) if rk >= 0 else -1
-            k = float(shear.stiffnesses[j])
-            if isinstance(law, Bilinear):
-                out.append(Storey("bilinear", lo, hi, k, float(fy[r]), b=law.hardening,
-                                  rock=rock, lever=float(lever)))
-            elif isinstance(law, BoucWen):
-                out.append(Storey("bouc-wen", lo, hi, k, float(fy[r]), alpha=law.alpha,
-                                  n=law.n, beta=law.beta, gamma=law.gamma, rock=rock,
-                                  lever=float(lever)))
-            else:
-                raise ValueError(f"reference: no reference for storey law {law!r}")
+    for p, row in model.element_rows:
+        law = row.law
+        lo = int(offsets[p] + row.lower) if row.lower >= 0 else -1
+        hi = int(offsets[p] + row.upper)
+        rock = int(offsets[p] + row.rock) if row.rock >= 0 else -1
+        k, fy = float(row.params[P_K]), float(row.params[P_FY])
+        if isinstance(law, Bilinear):
+            out.append(Storey("bilinear", lo, hi, k, fy, b=law.hardening, rock=rock,
+                              lever=float(row.lever)))
+        elif isinstance(law, BoucWen):
+            out.append(Storey("bouc-wen", lo, hi, k, fy, alpha=law.alpha, n=law.n,
+                              beta=law.beta, gamma=law.gamma, rock=rock,
+                              lever=float(row.lever)))
+        else:
+            raise ValueError(f"reference: no reference for storey law {law!r}")
     return out
 
 

@@ -80,7 +80,9 @@ def _result_from(r: RunFolder) -> Any:
     if energy.shape[1] < len(ENERGY_NAMES):  # runs saved before the hysteretic column
         energy = np.pad(energy, ((0, 0), (0, len(ENERGY_NAMES) - energy.shape[1])))
     yielding = None
-    if model.is_inelastic:
+    if "element_force" in ds.variables:  # (every element row's force, a bridge's too)
+        yielding = a("element_force")
+    elif model.is_inelastic:
         offsets = model.system.offsets
         cols = [offsets[p] + j for p, j in model.yielding_storeys]
         yielding = a("storey_shear")[:, cols]

@@ -27,6 +27,7 @@ from pounding.result.foundations import (
 from pounding.result.peaks import peak_abs, sampled_peak
 from pounding.result.storeys import (
     bearing_mask,
+    element_residual_deformation,
     frame_storey_shear,
     plan_of,
     plan_storey_forces,
@@ -88,10 +89,10 @@ class Response:
         Peak force [N] and number of impacts of each contact, kept by the solver even when
         the impact table overflows (derived from the table when not given).
     yielding_shear : ndarray (nt, n_s), optional
-        Shear [N] of every yielding storey (:attr:`PoundingModel.yielding_storeys` order),
-        from its storey law.
+        Force [N] of every element row (:attr:`PoundingModel.element_rows` order: yielding
+        storeys, a bridge frame's piers and bearings), from its law.
     final_z : ndarray (n_z,), optional
-        Internal variables at the end: Bouc–Wen storeys' ``z`` (for the residual drift),
+        Internal variables at the end: Bouc–Wen rows' ``z`` (for the residual drift),
         then Maxwell links' spring deformations [m].
     link_force : ndarray (nt, n_l), optional
         Force [N] of every link between buildings (:attr:`PoundingModel.links` order),
@@ -235,7 +236,7 @@ class Response:
         if cols.size:
             if self.yielding_shear is None:
                 raise ValueError("result: the model has yielding storeys but no yielding_shear")
-            out[:, cols] = self.yielding_shear
+            out[:, cols] = self.yielding_shear[:, self._storey_rows()]
         for (off, n), (vx, vy, _) in zip(self._plan_blocks, self._plan_forces):
             ix = off + 3 * np.arange(n)
             out[:, ix], out[:, ix + 1] = vx, vy
@@ -272,6 +273,47 @@ class Response:
     def _yielding_columns(self) -> NDArray[np.int64]:
         offsets = self.model.system.offsets
         return np.array([offsets[p] + j for p, j in self.model.yielding_storeys], dtype=np.int64)
+
+    def _storey_rows(self) -> NDArray[np.int64]:
+        """The element rows that are storeys (:attr:`PoundingModel.yielding_storeys` order)."""
+        return np.array([r for r, (_, row) in enumerate(self.model.element_rows)
+                         if row.storey >= 0], dtype=np.int64)
+
+    @cached_property
+    def element_deformation(self) -> NDArray[np.float64]:
+        """Deformation [m] (nt, n_e) of every element row (:attr:`PoundingModel.element_rows`:
+        yielding storeys, a bridge frame's piers and bearings; names
+        :meth:`PoundingModel.element_labels`): ``u[upper] − u[lower] − lever · u[rock]``
+        (a pier's drift, a bearing's displacement, a storey's drift)."""
+        model, u = self.model, self.displacement
+        out = np.zeros((u.shape[0], len(model.element_rows)))
+        offsets = model.system.offsets
+        for r, (p, row) in enumerate(model.element_rows):
+            out[:, r] = u[:, offsets[p] + row.upper]
+            if row.lower >= 0:
+                out[:, r] -= u[:, offsets[p] + row.lower]
+            if row.rock >= 0:
+                out[:, r] -= row.lever * u[:, offsets[p] + row.rock]
+        return out
+
+    @property
+    def element_force(self) -> NDArray[np.float64]:
+        """Force [N] (nt, n_e) of every element row from its law (a pier's shear, a
+        bearing's force, a storey's shear), positive when it resists a positive
+        :attr:`element_deformation`."""
+        if self.yielding_shear is None:
+            return np.zeros((self.displacement.shape[0], len(self.model.element_rows)))
+        return self.yielding_shear
+
+    @cached_property
+    def element_residual_deformation(self) -> NDArray[np.float64]:
+        """Every element row's deformation at the end unloaded to zero force along its law's
+        unloading stiffness [m] (n_e,) (:func:`~pounding.result.storeys.
+        element_residual_deformation`)."""
+        if not self.model.element_rows:
+            return np.zeros(0)
+        return element_residual_deformation(self.model, self.element_deformation[-1],
+                                            self.element_force[-1], self.final_z)
 
     @cached_property
     def ductility(self) -> NDArray[np.float64]:

@@ -24,8 +24,10 @@ from pounding.result.files import save_result
 from pounding.result.response import Response
 from pounding.result.storey_peaks import (
     BearingPeaks,
+    BridgeElementPeaks,
     PlanStoreys,
     bearing_peaks,
+    bridge_element_peaks,
     plan_storeys,
 )
 from pounding.result.summary import summarize
@@ -90,6 +92,15 @@ class Result(Response):
         and force with their times, residual displacement
         (:class:`pounding.result.BearingPeaks`); empty without one."""
         return bearing_peaks(self)
+
+    @cached_property
+    def bridge_elements(self) -> list[BridgeElementPeaks]:
+        """Every pier and bearing of the bridge frames (:mod:`pounding.structure.bridge`):
+        its kind and law, peak deformation (a pier's drift, a bearing's displacement) with
+        its time, peak force (a pier's shear) and residual deformation
+        (:class:`pounding.result.storey_peaks.BridgeElementPeaks`); empty without a bridge
+        frame."""
+        return bridge_element_peaks(self)
 
     def history_variables(self) -> HistoryVariables:
         """Every time history and per-floor result as named variables with dimensions, units

@@ -1,5 +1,5 @@
-"""The storey tables of a run: every isolation bearing, and every building in plan floor by
-floor, with their peaks and times (:attr:`pounding.result.Result.bearings`,
+"""The storey tables of a run: every isolation bearing, every building in plan floor by
+floor, and every pier and bearing of a bridge frame, with their peaks and times (:attr:`pounding.result.Result.bearings`,
 :attr:`pounding.result.Result.plan_storeys`; the summary and the NetCDF file read them).
 
 Functions of a :class:`~pounding.result.response.Response` (its peaks and histories); the
@@ -20,7 +20,8 @@ from pounding.result.storeys import bearing_law, plan_of
 if TYPE_CHECKING:
     from pounding.result.response import Response
 
-__all__ = ["BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys"]
+__all__ = ["BearingPeaks", "BridgeElementPeaks", "PlanStoreys", "bearing_peaks",
+           "bridge_element_histories", "bridge_element_peaks", "plan_storeys"]
 
 
 class BearingPeaks(NamedTuple):
@@ -140,4 +141,78 @@ def plan_storeys(result: Response) -> list[PlanStoreys]:
             result.peak_drift[ix], result.peak_drift_time[ix], dy, dy_t,
             sx, sx_t, sy, sy_t, st, st_t, acc[ix], acc_t[ix], acc[iy], acc_t[iy],
             bool(plan.elements)))
+    return out
+
+
+class BridgeElementPeaks(NamedTuple):
+    """One pier or bearing of a bridge frame (:func:`bridge_element_peaks`)."""
+
+    building: int
+    """0-based building (frame) index."""
+    label: str
+    """``'B1P1'`` (frame 1, pier 1), ``'B2Br1'`` (frame 2, bearing 1)."""
+    kind: str
+    """``pier``, or the bearing's kind (``elastomeric``, ``isolator``, ``sliding``)."""
+    law: str
+    """``linear`` or its law (:meth:`~pounding.hysteresis.base.StoreyLaw.describe`)."""
+    height: float
+    """A pier's height [m] (its cap's elevation); NaN for a bearing."""
+    peak_deformation: float
+    """Largest |deformation| [m]: a pier's drift (cap relative to the ground), a bearing's
+    displacement (deck relative to the cap)."""
+    peak_deformation_time: float
+    """Its time [s]."""
+    peak_force: float
+    """Largest |force| [N]: a pier's shear, a bearing's force (a linear element's spring
+    ``k d`` plus its own dashpot ``c ḋ``; a nonlinear one's law, plus its dashpot)."""
+    residual_deformation: float
+    """Deformation at the end unloaded along its law's unloading stiffness [m] (0 for a
+    linear element)."""
+
+
+def bridge_element_histories(result: Response) -> list[tuple[int, str, NDArray[np.float64],
+                                                              NDArray[np.float64]]]:
+    """``(building, label, deformation (nt,), force (nt,))`` of every pier and bearing of the
+    bridge frames of the row, linear or not, in each frame's order (piers, then bearings):
+    the deformation ``u[upper] − u[lower]`` [m] from the displacements, the force [N] from
+    the element's law (its element row's) or its spring, plus its own dashpot."""
+    from pounding.structure.bridge import BridgeFrame
+
+    model = result.model
+    u, v = result.displacement, result.velocity
+    rows = {(p, row.label): r for r, (p, row) in enumerate(model.element_rows)}
+    out = []
+    for p, (off, bl) in enumerate(zip(model.system.offsets, model.buildings)):
+        if not isinstance(bl, BridgeFrame):
+            continue
+        for label, _, lo, hi, k, law, c in bl.elements():
+            d = u[:, off + hi] - (u[:, off + lo] if lo >= 0 else 0.0)
+            rate = v[:, off + hi] - (v[:, off + lo] if lo >= 0 else 0.0)
+            f = (result.element_force[:, rows[(p, label)]] if law is not None else k * d)
+            out.append((p, f"B{p + 1}{label}", d, f + c * rate))
+    return out
+
+
+def bridge_element_peaks(result: Response) -> list[BridgeElementPeaks]:
+    """Every pier and bearing of the bridge frames with its peaks (at the output steps)
+    and residual deformation (:func:`bridge_element_histories`)."""
+    from pounding.structure.bridge import BridgeFrame
+
+    model = result.model
+    residual = dict(zip(model.element_labels(), result.element_residual_deformation))
+    kinds = {}
+    for p, bl in enumerate(model.buildings):
+        if isinstance(bl, BridgeFrame):
+            for label, kind, _, hi, _, law, _ in bl.elements():
+                height = float(bl.elevations[hi]) if kind == "pier" else float("nan")
+                kinds[f"B{p + 1}{label}"] = (kind, law, height)
+    out = []
+    t = result.time
+    for p, label, d, f in bridge_element_histories(result):
+        kind, law, height = kinds[label]
+        j = int(np.argmax(np.abs(d)))
+        out.append(BridgeElementPeaks(
+            p, label, kind, "linear" if law is None else law.describe(),
+            float(height), float(np.abs(d[j])), float(t[j]), float(np.max(np.abs(f))),
+            float(residual.get(label, 0.0))))
     return out

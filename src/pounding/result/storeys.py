@@ -159,24 +159,40 @@ def residual_storey_drift(model: PoundingModel, drift_end: NDArray[np.float64],
     drift_end, shear_end : ndarray (N,)
         Storey drift [m] and shear [N] at the end of the run.
     final_z : ndarray (n_z,), optional
-        Internal variables at the end (Bouc–Wen storeys' ``z`` first, in the order of the
-        model's yielding storeys).
+        Internal variables at the end (Bouc–Wen rows' ``z`` first, in the order of the
+        model's element rows).
     """
     out = np.zeros(model.n_dof)
     z_end = final_z if final_z is not None else np.zeros(0)
     zk = 0
-    for off, b in zip(model.system.offsets, model.buildings):
-        law = b.storey_law
-        if law is None:  # (a matrix building's storey law is always None)
-            continue
-        prm = b.storey_law_params()
-        for r, j in enumerate(b.yielding):
-            col = off + j
-            z = 0.0
-            if law.has_internal_variable:
-                z = float(z_end[zk]) if zk < z_end.size else 0.0
-                zk += 1
-            out[col] = drift_end[col] - shear_end[col] / law.unloading_stiffness(prm[r], z)
+    offsets = model.system.offsets
+    for p, row in model.element_rows:  # (z counted over every row, storey or not)
+        z = 0.0
+        if row.law.has_internal_variable:
+            z = float(z_end[zk]) if zk < z_end.size else 0.0
+            zk += 1
+        if row.storey < 0:
+            continue  # a bridge frame's pier or bearing: no storey column
+        col = offsets[p] + row.storey
+        out[col] = drift_end[col] - shear_end[col] / row.law.unloading_stiffness(row.params, z)
+    return out
+
+
+def element_residual_deformation(model: PoundingModel, deformation_end: NDArray[np.float64],
+                                 force_end: NDArray[np.float64],
+                                 final_z: NDArray[np.float64] | None) -> NDArray[np.float64]:
+    """Residual deformation [m] of every element row (:attr:`PoundingModel.element_rows`):
+    unloaded from its state at the end to zero force along its law's unloading stiffness,
+    ``d_end − V_end / k_unload`` (as :func:`residual_storey_drift` for a storey)."""
+    out = np.zeros(len(model.element_rows))
+    z_end = final_z if final_z is not None else np.zeros(0)
+    zk = 0
+    for r, (_, row) in enumerate(model.element_rows):
+        z = 0.0
+        if row.law.has_internal_variable:
+            z = float(z_end[zk]) if zk < z_end.size else 0.0
+            zk += 1
+        out[r] = deformation_end[r] - force_end[r] / row.law.unloading_stiffness(row.params, z)
     return out
 
 

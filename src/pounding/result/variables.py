@@ -153,6 +153,14 @@ def history_variables(result: Response) -> HistoryVariables:
                                 "(NaN: linear storey, or an isolation bearing)")
         data["residual_drift"] = var(result.residual_drift, ("floor",), "m",
                                      "residual storey drift after elastic unloading")
+    if any(row.storey < 0 for _, row in model.element_rows):  # a bridge frame's elements
+        data["element_deformation"] = var(result.element_deformation, ("time", "element"), "m",
+                                          "deformation of each nonlinear element (a pier's "
+                                          "drift, a bearing's displacement, a yielding "
+                                          "storey's drift)")
+        data["element_force"] = var(result.element_force, ("time", "element"), "N",
+                                    "force of each nonlinear element from its law (a pier's "
+                                    "shear, a bearing's force, a yielding storey's shear)")
     if any(c.struck is not None for c in contacts):
         data["column_shear"] = var(result.column_shear, ("time", "contact"), "N",
                                    "shear demand on the struck column of a "
@@ -246,6 +254,12 @@ def history_variables(result: Response) -> HistoryVariables:
                                         {"long_name": "member end: building, member number "
                                                       "in its frame, end i (its first node) "
                                                       "or j (B1E3i)"})
+    if "element_force" in data:
+        coords["element"] = Variable(("element",), np.array(model.element_labels(),
+                                                            dtype=object),
+                                     {"long_name": "nonlinear element: building and its name "
+                                                   "there (B1F2: storey 2; B2P1: pier 1, "
+                                                   "B2Br1: bearing 1 of a bridge frame)"})
     if model.links:
         coords["link"] = Variable(("link",), np.array([lk.name for lk in model.links],
                                                       dtype=object), {})

@@ -1,0 +1,279 @@
+"""``[bridge]``: a bridge along its axis, written by hand (in place of ``[[building]]``).
+
+Frames left to right, the joints between them, the abutments at the ends (SI units)::
+
+    [bridge]
+    abutment_gaps = [0.05, 0.05]      # [m] left, right backwall gaps (leave out: free ends)
+    zeta = 0.05                       # damping ratio of every frame's modes 1 and 2
+
+    [[bridge.frame]]
+    spans = [36.0, 36.0]              # [m] span lengths of the deck segment
+    deck_mass_per_length = 1.8e4      # [kg/m] (or deck_mass [kg], the whole segment)
+    bearing = { type = "elastomeric", stiffness = 4.0e7, damping = 0.0 }
+    [[bridge.frame.pier]]
+    height = 9.0                      # [m] the cap (bearing seat) above the ground
+    EI = 2.5e10                       # [N m²] one column's (or stiffness [N/m])
+    fixity = "fixed"                  # "cantilever" (3EI/H³) or "fixed" (12EI/H³)
+    columns = 2                       # columns of the bent (default 1)
+    mass = 1.0e5                      # [kg] the cap and its share of the columns
+    law = { type = "bilinear", yield_force = 4.0e6, hardening = 0.02 }   # optional
+
+    [[bridge.joint]]                  # one per joint, between frame j and j + 1
+    gap = 0.025                       # [m]
+    restrainer = { kind = "kelvin", k = 2.0e7, c = 0.0 }   # optional
+
+Bearing ``type``: ``elastomeric`` (``stiffness`` [N/m], ``damping`` [N·s/m]),
+``lead-rubber`` (``pre_yield_stiffness``, ``post_yield_stiffness`` [N/m],
+``characteristic_strength`` or ``yield_force`` [N]), ``friction-pendulum`` (``radius``
+[m], ``mu``), ``sliding`` (a flat PTFE slider: ``mu``); the friction bearings take
+``yield_displacement`` [m] (default 0.5 mm) and carry an equal share of the deck's weight.
+A ``bearing`` table of a pier overrides the frame's. Pier ``law``: the ``storey_law`` table
+of a ``[[building]]`` (``bilinear`` or ``bouc-wen``; ``yield_drift_ratio`` is of the pier's
+height). Restrainer ``kind``: a link of ``[[device]]`` (``kelvin``: ``k``, ``c``;
+``viscous``: ``c``, ``alpha``; ``maxwell``: ``k``, ``c``, ``alpha``).
+
+The ``[contact]`` table gives the law of every impact (deck to deck, deck to abutment)
+without ``gap``: the gaps are the joints' and abutments'. The frames are buildings ``B1``,
+``B2`` … of every output, the deck their floor ``F1`` (:mod:`pounding.structure.bridge`).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, model_validator
+
+from pounding.config.base import Ratio, Section, field_error, fmt, prefixed
+from pounding.config.quantities import (
+    DampingCoefficient,
+    Force,
+    Gap,
+    Length,
+    Mass,
+    PositiveDamping,
+    Stiffness,
+    StiffnessOrZero,
+)
+from pounding.config.storeys import StoreyLawConfig
+
+__all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "PierConfig"]
+
+FlexuralRigidity = Annotated[float, Field(gt=0, le=1e15)]
+"""A column's ``EI`` [N·m²]."""
+
+_BEARING_KEYS: dict[str, tuple[set[str], set[str]]] = {  # type: (required, optional)
+    "elastomeric": ({"stiffness"}, {"damping"}),
+    "lead-rubber": ({"pre_yield_stiffness", "post_yield_stiffness"},
+                    {"characteristic_strength", "yield_force", "damping"}),
+    "friction-pendulum": ({"radius", "mu"}, {"yield_displacement", "damping"}),
+    "sliding": ({"mu"}, {"yield_displacement", "damping"}),
+}
+
+
+class BearingConfig(Section):
+    """``bearing = {...}``: the bearing between a pier's cap and the deck (module
+    docstring)."""
+
+    type: Literal["elastomeric", "lead-rubber", "friction-pendulum", "sliding"]
+    stiffness: Stiffness | None = None
+    damping: DampingCoefficient | None = None
+    pre_yield_stiffness: Stiffness | None = None
+    post_yield_stiffness: StiffnessOrZero | None = None
+    characteristic_strength: Force | None = None
+    yield_force: Force | None = None
+    radius: Length | None = None
+    mu: Annotated[float, Field(gt=0, lt=1)] | None = None
+    yield_displacement: Length | None = None
+
+    @model_validator(mode="after")
+    def _keys(self) -> BearingConfig:
+        need, may = _BEARING_KEYS[self.type]
+        for key in sorted(self.model_fields_set - need - may - {"type"}):
+            raise field_error(key, f"not a constant of a {self.type} bearing (got "
+                                    f"{fmt(getattr(self, key))}); it reads "
+                                    f"{', '.join(sorted(need | may))}")
+        for key in sorted(need):
+            if getattr(self, key) is None:
+                raise field_error(key, f"required for a {self.type} bearing")
+        if self.type == "lead-rubber" and ((self.characteristic_strength is None)
+                                           == (self.yield_force is None)):
+            raise field_error("characteristic_strength", "give characteristic_strength [N] "
+                                                         "or yield_force [N] (one of them)")
+        return self
+
+    def build(self, weight: float) -> Any:
+        """The :class:`pounding.structure.bridge.Bearing` carrying ``weight`` [N]."""
+        from pounding.hysteresis.isolators import BilinearIsolator, FrictionPendulum
+        from pounding.structure.bridge import Bearing
+
+        c = self.damping or 0.0
+        y = self.yield_displacement or 5e-4
+        if self.type == "elastomeric":
+            assert self.stiffness is not None
+            return Bearing.elastomeric(self.stiffness, c)
+        if self.type == "sliding":
+            assert self.mu is not None
+            return Bearing.sliding(self.mu, weight, y, c)
+        if self.type == "friction-pendulum":
+            assert self.radius is not None and self.mu is not None
+            return Bearing.isolator(FrictionPendulum(self.radius, self.mu, weight=weight,
+                                                     yield_displacement=y), c)
+        assert self.pre_yield_stiffness is not None and self.post_yield_stiffness is not None
+        return Bearing.isolator(BilinearIsolator(
+            self.pre_yield_stiffness, self.post_yield_stiffness,
+            characteristic_strength=self.characteristic_strength,
+            yield_force=self.yield_force), c)
+
+
+class PierConfig(Section):
+    """``[[bridge.frame.pier]]``: one pier (module docstring)."""
+
+    height: Length
+    mass: Mass
+    stiffness: Stiffness | None = None
+    EI: FlexuralRigidity | None = None
+    fixity: Literal["cantilever", "fixed"] | None = None
+    columns: Annotated[int, Field(ge=1, le=100)] | None = None
+    law: StoreyLawConfig | None = None
+    bearing: BearingConfig | None = None
+
+    @model_validator(mode="after")
+    def _stiffness(self) -> PierConfig:
+        if (self.stiffness is None) == (self.EI is None):
+            raise field_error("stiffness", "give the pier's lateral stiffness [N/m] or its "
+                                           "columns' EI [N m²] with fixity (one of them)")
+        if self.EI is None:
+            for key in ("fixity", "columns"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"goes with EI, not with stiffness (got "
+                                           f"{fmt(getattr(self, key))})")
+        elif self.fixity is None:
+            raise field_error("fixity", 'required with EI: "cantilever" (3EI/H³, free to '
+                                        'rotate at the cap) or "fixed" (12EI/H³)')
+        if self.law is not None:
+            self.law.check_storeys(1)
+        return self
+
+    def lateral_stiffness(self) -> float:
+        """The pier's lateral stiffness at the cap [N/m]."""
+        from pounding.structure.bridge import pier_stiffness
+
+        if self.stiffness is not None:
+            return self.stiffness
+        assert self.EI is not None and self.fixity is not None
+        return pier_stiffness(self.EI, self.height, self.fixity, self.columns or 1)
+
+
+class BridgeFrameConfig(Section):
+    """``[[bridge.frame]]``: one deck segment on its piers (module docstring)."""
+
+    spans: Annotated[list[Length], Field(min_length=1)]
+    deck_mass_per_length: Annotated[float, Field(gt=0, le=1e7)] | None = None
+    deck_mass: Mass | None = None
+    bearing: BearingConfig | None = None
+    pier: Annotated[list[PierConfig], Field(min_length=1)]
+    name: str | None = None
+
+    @model_validator(mode="after")
+    def _mass(self) -> BridgeFrameConfig:
+        if (self.deck_mass is None) == (self.deck_mass_per_length is None):
+            raise field_error("deck_mass_per_length", "give the deck's mass per length "
+                                                      "[kg/m] or deck_mass [kg] (one of them)")
+        for i, p in enumerate(self.pier):
+            if p.bearing is None and self.bearing is None:
+                raise field_error(("pier", i, "bearing"), "required: a bearing table here or "
+                                                         "one for the whole frame")
+        return self
+
+    @property
+    def mass(self) -> float:
+        """The deck segment's mass [kg]."""
+        if self.deck_mass is not None:
+            return self.deck_mass
+        assert self.deck_mass_per_length is not None
+        return self.deck_mass_per_length * sum(self.spans)
+
+    def build(self, deck_elevation: float, zeta: float, name: str) -> Any:
+        """The :class:`pounding.structure.bridge.BridgeFrame`."""
+        from pounding.hysteresis.isolators import GRAVITY
+        from pounding.structure.bridge import BridgeFrame, Pier
+
+        piers, bearings = [], []
+        share = self.mass * GRAVITY / len(self.pier)  # (each bearing's weight)
+        for i, p in enumerate(self.pier):
+            with prefixed(f"pier[{i}]", PierConfig.model_fields):
+                law = p.law.build([p.height]) if p.law is not None else None
+                piers.append(Pier(p.height, p.lateral_stiffness(), p.mass, law))
+                bearing = p.bearing if p.bearing is not None else self.bearing
+                assert bearing is not None
+                bearings.append(bearing.build(share))
+        return BridgeFrame(self.mass, piers, bearings, deck_elevation=deck_elevation,
+                           zeta=zeta, name=self.name or name)
+
+
+class RestrainerConfig(Section):
+    """``restrainer = {...}`` of a joint: a link between the two decks (module
+    docstring)."""
+
+    kind: Literal["kelvin", "viscous", "maxwell"]
+    k: Stiffness | None = None
+    c: PositiveDamping
+    alpha: Annotated[float, Field(gt=0, le=2)] | None = None
+
+    @model_validator(mode="after")
+    def _keys(self) -> RestrainerConfig:
+        if self.kind == "viscous" and self.k is not None:
+            raise field_error("k", f"a viscous restrainer has no spring (got {fmt(self.k)})")
+        if self.kind != "viscous" and self.k is None:
+            raise field_error("k", f"required for a {self.kind} restrainer [N/m]")
+        if self.kind == "kelvin" and self.alpha not in (None, 1.0):
+            raise field_error("alpha", f"a kelvin restrainer is linear (got "
+                                       f"{fmt(self.alpha)})")
+        return self
+
+
+class JointConfig(Section):
+    """``[[bridge.joint]]``: the expansion joint between two frames."""
+
+    gap: Gap
+    restrainer: RestrainerConfig | None = None
+
+
+class BridgeConfig(Section):
+    """``[bridge]``: frames, joints, abutments (module docstring)."""
+
+    frame: Annotated[list[BridgeFrameConfig], Field(min_length=1)]
+    joint: list[JointConfig] = Field(default_factory=list)
+    abutment_gaps: Annotated[list[Gap | Literal["none"]],
+                             Field(min_length=2, max_length=2)] | None = None
+    deck_elevation: Length | None = None
+    zeta: Ratio = 0.05
+
+    @model_validator(mode="after")
+    def _joints(self) -> BridgeConfig:
+        if len(self.joint) != len(self.frame) - 1:
+            raise field_error("joint", f"need {len(self.frame) - 1} [[bridge.joint]] table(s) "
+                                       f"for {len(self.frame)} frames, one between each pair "
+                                       f"(got {len(self.joint)})")
+        tallest = max(p.height for f in self.frame for p in f.pier)
+        if self.deck_elevation is not None and self.deck_elevation < tallest:
+            raise field_error("deck_elevation", f"below the tallest pier's cap ({tallest:g} m; "
+                                                f"got {fmt(self.deck_elevation)})")
+        return self
+
+    def build(self, name: str = "bridge") -> Any:
+        """The :class:`pounding.structure.bridge.Bridge` named ``name``."""
+        from pounding.structure.bridge import Abutment, Bridge, Restrainer
+
+        z = self.deck_elevation or max(p.height for f in self.frame for p in f.pier)
+        frames = []
+        for j, f in enumerate(self.frame):
+            with prefixed(f"frame[{j}]", BridgeFrameConfig.model_fields):
+                frames.append(f.build(z, self.zeta, f"B{j + 1}"))
+        gaps = self.abutment_gaps or ["none", "none"]
+        abutments = tuple(None if g == "none" else Abutment(float(g)) for g in gaps)
+        restrainers = [Restrainer(j, joint.restrainer.model_dump(exclude_none=True))
+                       for j, joint in enumerate(self.joint) if joint.restrainer is not None]
+        return Bridge(tuple(frames), tuple(joint.gap for joint in self.joint),
+                      abutments=abutments,  # type: ignore[arg-type]
+                      restrainers=tuple(restrainers), name=name)

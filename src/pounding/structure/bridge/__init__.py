@@ -1,0 +1,13 @@
+"""Bridges along their axis: frames (deck segments on piers through bearings) in a row,
+pounding across their expansion joints and against the abutments.
+
+* :class:`BridgeFrame`, :class:`Pier`, :class:`Bearing`, :func:`pier_stiffness` — one frame
+  (:mod:`pounding.structure.bridge.frame`);
+* :class:`Bridge` — the frames, joints, abutments and restrainers, and the
+  :class:`~pounding.model.PoundingModel` they make (:mod:`pounding.structure.bridge.bridge`).
+"""
+
+from pounding.structure.bridge.bridge import Abutment, Bridge, Restrainer
+from pounding.structure.bridge.frame import Bearing, BridgeFrame, Pier, pier_stiffness
+
+__all__ = ["Abutment", "Bearing", "Bridge", "BridgeFrame", "Pier", "Restrainer", "pier_stiffness"]

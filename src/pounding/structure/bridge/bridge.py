@@ -1,0 +1,208 @@
+"""A bridge along its axis: frames in a row, expansion joints, abutments and restrainers.
+
+The longitudinal model of a multi-frame bridge (DesRoches & Fenves 2000, "Design of seismic
+cable hinge restrainers for bridges", J. Struct. Eng. 126(4):500–509; Caltrans SDC 2.0
+§4.1.2's frames between expansion joints) maps onto the row of buildings of
+:class:`pounding.model.PoundingModel`:
+
+* each **frame** (:class:`~pounding.structure.bridge.frame.BridgeFrame`) is a building of the
+  row, left to right along the axis; its deck is what its neighbours strike;
+* each **expansion joint** is the gap between two neighbouring decks (the row's ``gaps``):
+  deck-to-deck contacts with the model's contact law (floor to floor only, the decks at one
+  elevation);
+* each **abutment** is a rigid wall at an end of the row
+  (:class:`~pounding.structure.wall.MoatWall`, its top at the deck's elevation) with the gap
+  between the end deck and its backwall, struck with the model's contact law. The backfill's
+  own passive resistance (Caltrans SDC 2.0 §7.8.1) is a law a wall does not have yet:
+  :attr:`Abutment.law` is where it will go, refused until then;
+* each **restrainer** is a link between the decks on either side of a joint
+  (:class:`~pounding.devices.Link`, kinds ``kelvin``, ``viscous``, ``maxwell`` today; a
+  tension-only, slack, yielding restrainer law is a kind to come: :class:`Restrainer` passes
+  its keywords to :class:`~pounding.devices.Link` unchanged);
+* each frame stands on its own ground: under a
+  :class:`~pounding.ground_motion.spatial.SpatialMotion` with one record per building, each
+  frame feels its own (the abutments move with the ground of the row's reference).
+
+A :class:`Bridge` holds these and gives the model's arguments
+(:meth:`Bridge.model_arguments`; :meth:`pounding.model.PoundingModel.from_bridge` builds the
+model: the structure layer does not import the model).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any
+
+from pounding.devices.link import Link
+from pounding.structure.bridge.frame import BridgeFrame
+from pounding.structure.wall import MoatWall
+from pounding.validation import non_negative
+
+__all__ = ["Abutment", "Bridge", "Restrainer"]
+
+
+@dataclass(frozen=True)
+class Abutment:
+    """An abutment at one end of the bridge: a backwall the end deck strikes.
+
+    Parameters
+    ----------
+    gap : float
+        Gap between the end deck and the backwall at rest [m].
+    law : optional
+        The backfill's own force–deformation law: not modelled yet (a rigid wall struck
+        with the model's contact law); must be None.
+    """
+
+    gap: float
+    law: Any = None
+
+    def __post_init__(self) -> None:
+        non_negative("gap", self.gap)
+        if self.law is not None:
+            raise ValueError("law: an abutment's own backfill law is not modelled yet; the "
+                             "abutment is a rigid wall struck with the contact law")
+
+    def wall(self, height: float, side: str, name: str) -> MoatWall:
+        """The rigid wall of this abutment, its top at ``height`` [m] (the deck's)."""
+        return MoatWall(height=height, gap=self.gap, side=side, name=name)
+
+
+@dataclass(frozen=True)
+class Restrainer:
+    """Restrainers across joint ``joint`` (0-based: between frames ``joint`` and
+    ``joint + 1``), lumped into one link between the two decks.
+
+    Parameters
+    ----------
+    joint : int
+        The joint (0-based).
+    link : mapping
+        Keywords of :class:`pounding.devices.Link` but ``floors``: ``kind`` and its
+        constants (``kind="kelvin", k=…, c=…``); a new link kind (a tension-only restrainer)
+        takes its own keywords here.
+    """
+
+    joint: int
+    link: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if not (isinstance(self.joint, int) and self.joint >= 0):
+            raise ValueError(f"joint: need a joint index ≥ 0 (got {self.joint!r})")
+        object.__setattr__(self, "link", MappingProxyType(dict(self.link)))
+
+    def build(self, name: str = "") -> Link:
+        """The link between deck ``joint`` (``B<joint+1>F1``) and the next."""
+        left, right = f"B{self.joint + 1}F1", f"B{self.joint + 2}F1"
+        kw = dict(self.link)
+        kw.setdefault("name", name or f"R{self.joint + 1}")
+        return Link((left, right), **kw)
+
+
+@dataclass(frozen=True)
+class Bridge:
+    """Frames in a row along the bridge's axis, the joints between them, the abutments at
+    its ends and the restrainers across the joints (module docstring).
+
+    Parameters
+    ----------
+    frames : sequence of BridgeFrame
+        Left to right (at least one), every deck at one elevation.
+    joint_gaps : sequence of float
+        Gap of every expansion joint [m], ``len(frames) − 1`` values.
+    abutments : (Abutment or None, Abutment or None)
+        Left and right abutment (None: no abutment on that side, a free end).
+    restrainers : sequence of Restrainer
+        Restrainers across the joints (none by default).
+    name : str
+        A label.
+    """
+
+    frames: tuple[BridgeFrame, ...]
+    joint_gaps: tuple[float, ...]
+    abutments: tuple[Abutment | None, Abutment | None] = (None, None)
+    restrainers: tuple[Restrainer, ...] = ()
+    name: str = "bridge"
+
+    def __post_init__(self) -> None:
+        frames = tuple(self.frames)
+        if not frames:
+            raise ValueError("frames: give at least one BridgeFrame")
+        for i, f in enumerate(frames):
+            if not isinstance(f, BridgeFrame):
+                raise ValueError(f"frames[{i}]: expected a BridgeFrame (got "
+                                 f"{type(f).__name__})")
+        z0 = self.deck_elevation_of(frames[0])
+        for i, f in enumerate(frames[1:], start=1):
+            z = self.deck_elevation_of(f)
+            if abs(z - z0) > 1e-9 * max(1.0, z0):
+                raise ValueError(f"frames[{i}]: deck at {z:g} m, frames[0]'s at {z0:g} m; the "
+                                 "decks meet at the joints at one level: give every frame "
+                                 "the same deck_elevation")
+        gaps = tuple(self.joint_gaps)
+        if len(gaps) != len(frames) - 1:
+            raise ValueError(f"joint_gaps: need {len(frames) - 1} value(s) for {len(frames)} "
+                             f"frames (got {len(gaps)})")
+        gaps = tuple(non_negative(f"joint_gaps[{i}]", g) for i, g in enumerate(gaps))
+        ab = tuple(self.abutments)
+        if len(ab) != 2 or not all(a is None or isinstance(a, Abutment) for a in ab):
+            raise ValueError("abutments: give (left, right), each an Abutment or None")
+        rs = tuple(self.restrainers)
+        for i, r in enumerate(rs):
+            if not isinstance(r, Restrainer):
+                raise ValueError(f"restrainers[{i}]: expected a Restrainer")
+            if r.joint >= len(gaps):
+                raise ValueError(f"restrainers[{i}].joint: no joint {r.joint} ({len(gaps)} "
+                                 f"joint(s), numbered from 0)")
+        object.__setattr__(self, "frames", frames)
+        object.__setattr__(self, "joint_gaps", gaps)
+        object.__setattr__(self, "abutments", ab)
+        object.__setattr__(self, "restrainers", rs)
+
+    @staticmethod
+    def deck_elevation_of(frame: BridgeFrame) -> float:
+        """The elevation of a frame's deck [m]."""
+        return float(frame.elevations[frame.deck_dof])
+
+    @property
+    def deck_elevation(self) -> float:
+        """The decks' elevation [m]."""
+        return self.deck_elevation_of(self.frames[0])
+
+    def walls(self) -> list[MoatWall]:
+        """The abutments' walls: ``A1`` left of the first frame, ``A2`` right of the last."""
+        out = []
+        for abut, side, name in zip(self.abutments, ("left", "right"), ("A1", "A2")):
+            if abut is not None:
+                out.append(abut.wall(self.deck_elevation, side, name))
+        return out
+
+    def links(self) -> list[Link]:
+        """The restrainers as links (``R1`` across joint 1, …; a second one across the same
+        joint ``R1b``)."""
+        seen: dict[int, int] = {}
+        out = []
+        for r in self.restrainers:
+            k = seen.get(r.joint, 0)
+            seen[r.joint] = k + 1
+            name = f"R{r.joint + 1}" + ("" if k == 0 else chr(ord("a") + k))
+            out.append(r.build(name))
+        return out
+
+    def model_arguments(self) -> dict[str, Any]:
+        """The keyword arguments of :class:`pounding.model.PoundingModel` but the contact:
+        the frames as buildings, the joints as gaps, the abutments as walls, the
+        restrainers as devices, contacts floor to floor (deck to deck) only."""
+        return {"buildings": list(self.frames), "gaps": list(self.joint_gaps),
+                "walls": self.walls(), "devices": self.links(), "name": self.name,
+                "floor_to_column": False}
+
+    def describe(self) -> str:
+        """One line: frames, joints, abutments, restrainers."""
+        ab = ", ".join(f"{side} gap {a.gap * 1e3:g} mm" for a, side in
+                       zip(self.abutments, ("left", "right")) if a is not None) or "none"
+        return (f"{len(self.frames)} frame(s), joints "
+                f"{[round(g * 1e3, 3) for g in self.joint_gaps]} mm, abutments: {ab}, "
+                f"{len(self.restrainers)} restrainer(s)")

@@ -1,0 +1,156 @@
+"""Bridges in time: a linear and a yielding two-frame bridge against the SciPy reference
+and their energy balance, the piers' and bearings' outputs, and the ``[bridge]`` section of
+a model file (the example runs; bad values are refused in one line, exit 2)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pounding.config.load import load_config, parse_config
+from pounding.contact.spec import ContactSpec
+from pounding.example_files import example_path
+from pounding.ground_motion import el_centro
+from pounding.hysteresis import Bilinear
+from pounding.integrate import simulate
+from pounding.integrate.reference import simulate_reference
+from pounding.model import PoundingModel
+from pounding.structure.bridge import Abutment, Bearing, Bridge, BridgeFrame, Pier
+
+KV = ContactSpec("kelvin-voigt", k=1.0e9, e=0.6)
+
+
+def _bridge(pier_law=None, slider: bool = False) -> PoundingModel:
+    f1 = BridgeFrame(2.0e6, [Pier(8.0, 5.0e7, 1.0e5, pier_law)],
+                     Bearing.elastomeric(2.0e7, 1.0e5))
+    b2 = Bearing.sliding(0.08, 1.5e7) if slider else Bearing.elastomeric(6.0e7)
+    f2 = BridgeFrame(3.0e6, [Pier(8.0, 8.0e7, 1.5e5), Pier(6.0, 1.2e8, 1.0e5)], b2,
+                     deck_elevation=8.0)
+    return PoundingModel.from_bridge(
+        Bridge([f1, f2], [0.015], abutments=(Abutment(0.03), Abutment(0.03))), KV)
+
+
+def _compare(model: PoundingModel, scale: float, duration: float):
+    record = el_centro().scaled(scale)
+    res = simulate(model, record, duration=duration)
+    ref = simulate_reference(model, record, duration=duration)
+    return res, ref
+
+
+@pytest.mark.slow  # a reference comparison (pyproject.toml: markers)
+def test_linear_two_frame_bridge_matches_the_reference() -> None:
+    """Two linear frames (elastomeric bearings) pounding across their joint and on the
+    abutments: kernel and SciPy reference agree to 1e-6 of the peak displacement, impact
+    for impact, and both balance energy to 1e-8."""
+    res, ref = _compare(_bridge(), 1.5, 3.0)
+    assert res.n_impacts == ref.n_impacts > 0
+    assert set(np.flatnonzero(res.impacts_per_contact)) >= {0}  # (the joint is struck)
+    scale = np.abs(ref.displacement).max()
+    assert np.abs(res.displacement - ref.displacement).max() < 1e-6 * scale
+    np.testing.assert_allclose(res.peak_contact_force, ref.peak_contact_force, rtol=1e-5)
+    assert res.energy_balance_error < 1e-8 and ref.energy_balance_error < 1e-8
+
+
+@pytest.mark.slow
+def test_yielding_pier_and_sliders_match_the_reference() -> None:
+    """A bilinear pier (it yields) and sliding bearings (they slide), each with its own
+    law in one model: kernel and reference agree; the pier's force never passes its
+    bilinear envelope and the sliders' never pass μW."""
+    law = Bilinear(yield_force=1.0e6, hardening=0.05)
+    res, ref = _compare(_bridge(law, slider=True), 1.5, 3.0)
+    assert res.n_impacts == ref.n_impacts > 0
+    scale = np.abs(ref.displacement).max()
+    assert np.abs(res.displacement - ref.displacement).max() < 1e-6 * scale
+    np.testing.assert_allclose(res.element_force, ref.element_force, atol=2e-5 * 1.2e6)
+    pier, sliders = res.element_force[:, 0], res.element_force[:, 1:]
+    d = res.element_deformation[:, 0]
+    assert np.abs(d).max() > 1.0e6 / 5.0e7  # (past its yield drift)
+    assert np.all(np.abs(pier) <= 1.0e6 + 0.05 * 5.0e7 * np.abs(d) + 1e-6)
+    assert np.abs(sliders).max() <= 0.08 * 1.5e7 * (1 + 1e-9)
+    assert res.energy_balance_error < 1e-8
+
+
+def test_bridge_elements_report_every_pier_and_bearing() -> None:
+    """Result.bridge_elements lists the linear elements too: a linear pier's shear is
+    k × its drift, a bearing's displacement the deck less its cap; the yielding pier's
+    force its law's."""
+    model = _bridge(Bilinear(yield_force=1.0e6, hardening=0.05))
+    res = simulate(model, el_centro().scaled(1.5), duration=2.0)
+    table = {e.label: e for e in res.bridge_elements}
+    assert list(table) == ["B1P1", "B1Br1", "B2P1", "B2P2", "B2Br1", "B2Br2"]
+    u = res.displacement
+    assert table["B2P2"].peak_deformation == pytest.approx(np.abs(u[:, 4]).max(), rel=1e-12)
+    assert table["B2P2"].peak_force == pytest.approx(1.2e8 * np.abs(u[:, 4]).max(), rel=1e-12)
+    assert table["B2Br1"].peak_deformation == pytest.approx(np.abs(u[:, 2] - u[:, 3]).max())
+    assert table["B1P1"].peak_force == pytest.approx(np.abs(res.element_force[:, 0]).max())
+    assert table["B2P2"].height == 6.0 and table["B2Br1"].kind == "elastomeric"
+
+
+def test_example_bridge_file_builds_the_bridge() -> None:
+    """examples/bridge_two_frames.toml: two frames, one joint, two abutments; the pier of
+    frame 1 from 2 × 12 EI/H³ and its bilinear law, frame 2's sliders carrying half the
+    deck's weight each."""
+    model = load_config(example_path("bridge_two_frames.toml")).build().model
+    assert [c.label for c in model.contacts] == ["B1F1-B2F1", "A1-B1F1", "B2F1-A2"]
+    f1 = model.buildings[0]
+    assert f1.piers[0].stiffness == pytest.approx(2 * 12 * 3.1e9 / 9.0**3)
+    assert f1.deck_mass == pytest.approx(72.0 * 1.7e4)
+    assert model.element_labels() == ["B1P1", "B2Br1"]
+    assert model.element_rows[1][1].params[1] == pytest.approx(0.06 * 60.0 * 1.7e4 * 9.80665)
+
+
+BASE = """
+[record]
+bundled = "el_centro"
+[contact]
+law = "kelvin-voigt"
+k = 1e9
+e = 0.6
+[bridge]
+abutment_gaps = [0.05, 0.05]
+[[bridge.frame]]
+spans = [30.0]
+deck_mass_per_length = 1.5e4
+bearing = { type = "elastomeric", stiffness = 3e7 }
+[[bridge.frame.pier]]
+height = 8.0
+stiffness = 6e7
+mass = 1e5
+"""
+
+
+@pytest.mark.parametrize("edit, message", [
+    (("stiffness = 6e7", "stiffness = -6e7"), "bridge.frame[0].pier[0].stiffness"),
+    (("stiffness = 6e7", "EI = 3e9"), "bridge.frame[0].pier[0].fixity: required with EI"),
+    (('type = "elastomeric", stiffness = 3e7', 'type = "sliding", stiffness = 3e7'),
+     "bridge.frame[0].bearing.stiffness: not a constant of a sliding bearing"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05]"), "bridge.abutment_gaps"),
+    (("e = 0.6", "e = 0.6\ngap = 0.02"), "contact.gap: the gaps of a bridge"),
+    (("deck_mass_per_length = 1.5e4", "deck_mass = 1e6\ndeck_mass_per_length = 1.5e4"),
+     "bridge.frame[0].deck_mass_per_length: give"),
+])
+def test_bad_bridge_values_name_the_field(edit, message) -> None:
+    import tomllib
+
+    text = BASE.replace(*edit)
+    assert text != BASE
+    with pytest.raises(ValueError) as info:
+        parse_config(tomllib.loads(text))
+    assert message in str(info.value), str(info.value)
+
+
+def test_bad_bridge_file_exits_2_in_one_line(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text(BASE + "\n[[bridge.joint]]\ngap = 0.02\n", encoding="utf-8")
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-m", "pounding", "run", str(bad), "--out", str(out)],
+                          capture_output=True, text=True, check=False, env={**__import__("os").environ,
+                                                               "POUNDING_SKIP_BROWSER": "1"})
+    assert done.returncode == 2
+    lines = [ln for ln in done.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "bridge.joint" in lines[0] and "Traceback" not in done.stderr
+    assert not out.exists()
