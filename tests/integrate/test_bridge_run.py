@@ -154,3 +154,48 @@ def test_bad_bridge_file_exits_2_in_one_line(tmp_path: Path) -> None:
     lines = [ln for ln in done.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and "bridge.joint" in lines[0] and "Traceback" not in done.stderr
     assert not out.exists()
+
+
+TWO_FRAMES = BASE.replace("[bridge]\n", "[bridge]\nabutment_law = { law = \"abutment\", "
+                          "backbone = \"caltrans\", backwall_width = 12.0, "
+                          "backwall_height = 2.0 }\n") + """
+[[bridge.frame]]
+spans = [30.0]
+deck_mass_per_length = 1.5e4
+bearing = { type = "elastomeric", stiffness = 1e7 }
+[[bridge.frame.pier]]
+height = 8.0
+stiffness = 2e7
+mass = 1e5
+[[bridge.joint]]
+gap = 0.02
+restrainer = { kind = "restrainer", k = 1.76e7, slack = 0.0127, yield_force = 1.76e6 }
+"""
+
+
+def test_a_bridge_with_cable_restrainers_and_backfill_abutments() -> None:
+    """`[bridge]` with a cable restrainer across the joint and the Caltrans backfill at both
+    abutments: the joint's link is the tension-only restrainer, the backwalls' contacts use
+    the abutment law (its stiffness K_abut = K_i w h/h_ref written out here: 50 kip/in/ft
+    = 2.8728e7 N/m per m, h_ref = 5.5 ft), and a run balances its energy."""
+    import tomllib
+
+    from pounding.devices.laws import RESTRAINER
+
+    model, motion, _ = parse_config(tomllib.loads(TWO_FRAMES)).build()
+    (link,) = model.links
+    assert link.kind == "restrainer" and link.code == RESTRAINER
+    walls = [c for c in model.contacts if c.label.startswith("A") or c.label.endswith("A2")]
+    assert len(walls) == 2
+    k_abut = 50 * 4448.2216152605 / 0.0254 / 0.3048 * 12.0 * 2.0 / (5.5 * 0.3048)
+    for c in walls:
+        assert type(c.law).__name__ == "AbutmentBackfill"
+        assert c.law.K == pytest.approx(k_abut, rel=1e-6)
+    res = simulate(model, motion.scaled(2.0), duration=6.0, dt=0.005)
+    assert res.peak_contact_force[[c.index for c in walls]].max() > 0  # (backfill reached)
+    assert res.link_peak_force.max() > 0  # (the cables went taut)
+    # (1.2e-8 measured: the backfill's re-contact at its set is not a located event)
+    assert res.energy_balance_error < 1e-7
+    bad = TWO_FRAMES.replace("slack = 0.0127", "slack = 0.0127, c = 1e5")
+    with pytest.raises(ValueError, match="bridge.joint\\[0\\].restrainer.c: a cable restrainer"):
+        parse_config(tomllib.loads(bad))

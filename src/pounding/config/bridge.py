@@ -20,7 +20,7 @@ Frames left to right, the joints between them, the abutments at the ends (SI uni
 
     [[bridge.joint]]                  # one per joint, between frame j and j + 1
     gap = 0.025                       # [m]
-    restrainer = { kind = "kelvin", k = 2.0e7, c = 0.0 }   # optional
+    restrainer = { kind = "restrainer", k = 1.76e7, slack = 0.0127, yield_force = 1.76e6 }
 
 Bearing ``type``: ``elastomeric`` (``stiffness`` [N/m], ``damping`` [N·s/m]),
 ``lead-rubber`` (``pre_yield_stiffness``, ``post_yield_stiffness`` [N/m],
@@ -29,8 +29,14 @@ Bearing ``type``: ``elastomeric`` (``stiffness`` [N/m], ``damping`` [N·s/m]),
 ``yield_displacement`` [m] (default 0.5 mm) and carry an equal share of the deck's weight.
 A ``bearing`` table of a pier overrides the frame's. Pier ``law``: the ``storey_law`` table
 of a ``[[building]]`` (``bilinear`` or ``bouc-wen``; ``yield_drift_ratio`` is of the pier's
-height). Restrainer ``kind``: a link of ``[[device]]`` (``kelvin``: ``k``, ``c``;
-``viscous``: ``c``, ``alpha``; ``maxwell``: ``k``, ``c``, ``alpha``).
+height). Restrainer ``kind`` (optional): ``restrainer``, cables — ``k`` [N/m], ``slack``
+[m], ``yield_force`` [N] (leave out: elastic), ``hardening`` [-] — or a link of
+``[[device]]`` (``kelvin``: ``k``, ``c``; ``viscous``: ``c``, ``alpha``; ``maxwell``: ``k``,
+``c``, ``alpha``). ``abutment_law`` (optional): the backfill's law at both abutments, as
+``[contact]``'s keys — ``{ law = "abutment", backbone = "caltrans", backwall_width = 12.0,
+backwall_height = 2.0 }`` (or ``backbone = "hyperbolic"``, ``k``, ``capacity``,
+``delta_ult``; :mod:`pounding.contact.abutment`); without it the backwalls are rigid walls
+struck with ``[contact]``'s law.
 
 The ``[contact]`` table gives the law of every impact (deck to deck, deck to abutment)
 without ``gap``: the gaps are the joints' and abutments'. The frames are buildings ``B1``,
@@ -54,6 +60,7 @@ from pounding.config.quantities import (
     Stiffness,
     StiffnessOrZero,
 )
+from pounding.config.contact import LawConfig
 from pounding.config.storeys import StoreyLawConfig
 
 __all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "PierConfig"]
@@ -215,13 +222,33 @@ class RestrainerConfig(Section):
     """``restrainer = {...}`` of a joint: a link between the two decks (module
     docstring)."""
 
-    kind: Literal["kelvin", "viscous", "maxwell"]
+    kind: Literal["restrainer", "kelvin", "viscous", "maxwell"]
     k: Stiffness | None = None
-    c: PositiveDamping
+    c: PositiveDamping | None = None
     alpha: Annotated[float, Field(gt=0, le=2)] | None = None
+    slack: Gap | None = None
+    yield_force: Force | None = None
+    hardening: Annotated[float, Field(ge=0, lt=1)] | None = None
 
     @model_validator(mode="after")
     def _keys(self) -> RestrainerConfig:
+        cable = ("slack", "yield_force", "hardening")
+        if self.kind == "restrainer":
+            for key in ("c", "alpha"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"a cable restrainer has no dashpot (got "
+                                           f"{fmt(getattr(self, key))}): k, slack, "
+                                           "yield_force, hardening")
+            if self.k is None:
+                raise field_error("k", "required for a cable restrainer [N/m] (the cables' "
+                                       "axial stiffness)")
+            return self
+        for key in cable:
+            if getattr(self, key) is not None:
+                raise field_error(key, f"a key of kind = \"restrainer\" (got "
+                                       f"{fmt(getattr(self, key))})")
+        if self.c is None:
+            raise field_error("c", f"required for a {self.kind} restrainer [N·s/m]")
         if self.kind == "viscous" and self.k is not None:
             raise field_error("k", f"a viscous restrainer has no spring (got {fmt(self.k)})")
         if self.kind != "viscous" and self.k is None:
@@ -246,6 +273,7 @@ class BridgeConfig(Section):
     joint: list[JointConfig] = Field(default_factory=list)
     abutment_gaps: Annotated[list[Gap | Literal["none"]],
                              Field(min_length=2, max_length=2)] | None = None
+    abutment_law: LawConfig | None = None
     deck_elevation: Length | None = None
     zeta: Ratio = 0.05
 
@@ -271,7 +299,11 @@ class BridgeConfig(Section):
             with prefixed(f"frame[{j}]", BridgeFrameConfig.model_fields):
                 frames.append(f.build(z, self.zeta, f"B{j + 1}"))
         gaps = self.abutment_gaps or ["none", "none"]
-        abutments = tuple(None if g == "none" else Abutment(float(g)) for g in gaps)
+        law = None
+        if self.abutment_law is not None:
+            with prefixed("abutment_law", LawConfig.model_fields):
+                law = self.abutment_law.spec()
+        abutments = tuple(None if g == "none" else Abutment(float(g), law) for g in gaps)
         restrainers = [Restrainer(j, joint.restrainer.model_dump(exclude_none=True))
                        for j, joint in enumerate(self.joint) if joint.restrainer is not None]
         return Bridge(tuple(frames), tuple(joint.gap for joint in self.joint),

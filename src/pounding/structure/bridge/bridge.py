@@ -12,13 +12,14 @@ cable hinge restrainers for bridges", J. Struct. Eng. 126(4):500–509; Caltrans
   elevation);
 * each **abutment** is a rigid wall at an end of the row
   (:class:`~pounding.structure.wall.MoatWall`, its top at the deck's elevation) with the gap
-  between the end deck and its backwall, struck with the model's contact law. The backfill's
-  own passive resistance (Caltrans SDC 2.0 §7.8.1) is a law a wall does not have yet:
-  :attr:`Abutment.law` is where it will go, refused until then;
+  between the end deck and its backwall, struck with the model's contact law, or with the
+  backfill's own passive resistance (:attr:`Abutment.law`: the ``abutment`` contact law,
+  Caltrans SDC's elastic–perfectly-plastic backbone or a hyperbolic one,
+  :mod:`pounding.contact.abutment`);
 * each **restrainer** is a link between the decks on either side of a joint
-  (:class:`~pounding.devices.Link`, kinds ``kelvin``, ``viscous``, ``maxwell`` today; a
-  tension-only, slack, yielding restrainer law is a kind to come: :class:`Restrainer` passes
-  its keywords to :class:`~pounding.devices.Link` unchanged);
+  (:class:`~pounding.devices.Link`: the cable restrainer, kind ``restrainer`` — tension only,
+  slack, yielding — or a ``kelvin``, ``viscous`` or ``maxwell`` device; :class:`Restrainer`
+  passes its keywords to :class:`~pounding.devices.Link` unchanged);
 * each frame stands on its own ground: under a
   :class:`~pounding.ground_motion.spatial.SpatialMotion` with one record per building, each
   frame feels its own (the abutments move with the ground of the row's reference).
@@ -37,6 +38,7 @@ from typing import Any
 
 from pounding.devices.link import Link
 from pounding.structure.bridge.frame import BridgeFrame
+from pounding.contact.spec import ContactSpec
 from pounding.structure.wall import MoatWall
 from pounding.validation import non_negative
 
@@ -51,23 +53,25 @@ class Abutment:
     ----------
     gap : float
         Gap between the end deck and the backwall at rest [m].
-    law : optional
-        The backfill's own force–deformation law: not modelled yet (a rigid wall struck
-        with the model's contact law); must be None.
+    law : ContactSpec, optional
+        The backfill's own force–deformation law (``ContactSpec("abutment", ...)``: the
+        Caltrans SDC or hyperbolic backbone, :mod:`pounding.contact.abutment`); None: the
+        backwall is a rigid wall struck with the model's contact law.
     """
 
     gap: float
-    law: Any = None
+    law: ContactSpec | None = None
 
     def __post_init__(self) -> None:
         non_negative("gap", self.gap)
-        if self.law is not None:
-            raise ValueError("law: an abutment's own backfill law is not modelled yet; the "
-                             "abutment is a rigid wall struck with the contact law")
+        if self.law is not None and not isinstance(self.law, ContactSpec):
+            raise ValueError(f"law: expected a ContactSpec or None (got "
+                             f"{type(self.law).__name__})")
 
     def wall(self, height: float, side: str, name: str) -> MoatWall:
-        """The rigid wall of this abutment, its top at ``height`` [m] (the deck's)."""
-        return MoatWall(height=height, gap=self.gap, side=side, name=name)
+        """The wall of this abutment, its top at ``height`` [m] (the deck's), struck with
+        its own law where it has one."""
+        return MoatWall(height=height, gap=self.gap, side=side, name=name, contact=self.law)
 
 
 @dataclass(frozen=True)
@@ -81,8 +85,8 @@ class Restrainer:
         The joint (0-based).
     link : mapping
         Keywords of :class:`pounding.devices.Link` but ``floors``: ``kind`` and its
-        constants (``kind="kelvin", k=…, c=…``); a new link kind (a tension-only restrainer)
-        takes its own keywords here.
+        constants (``kind="restrainer", k=…, slack=…, yield_force=…, hardening=…`` for cables;
+        ``kind="kelvin", k=…, c=…`` …).
     """
 
     joint: int
