@@ -8,7 +8,7 @@ from pathlib import Path
 from pounding.integrate import default_step_budget
 from pounding.result import ENERGY_NAMES
 from pounding.studies.sweep.hinge_measures import HINGE_MEASURES
-from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
+from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES, ROTATION_NAMES
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 
@@ -25,6 +25,9 @@ def test_the_sweep_table_lists_every_column_in_the_order_written() -> None:
         first = row.split("|")[1]
         names += re.findall(r"`([^`]+)`", first) or [first.strip()]
     floor = [n.removesuffix("_B<b>F<f>") for n in names if n.endswith("_B<b>F<f>")]
+    # a floor's rotation in plan: its own names, in radians (ROTATION_NAMES), in one row
+    rotation = [n.removesuffix("_B<b>F<f>θ") for n in names if n.endswith("_B<b>F<f>θ")]
+    assert rotation == [ROTATION_NAMES[m] for m in FLOOR_MEASURES]
     assert names[:2] == ["case_index", "case_id"]
     assert names[2] == "one per parameter"
     assert names[3:5] == ["status", "error"]
@@ -34,7 +37,8 @@ def test_the_sweep_table_lists_every_column_in_the_order_written() -> None:
     assert names[after:after + len(HINGE_MEASURES)] == list(HINGE_MEASURES)
     assert floor == list(FLOOR_MEASURES)
     assert names[-1] == "wall_time_s"
-    assert len(names) == 5 + len(MEASURES) + len(HINGE_MEASURES) + len(FLOOR_MEASURES) + 1
+    assert len(names) == (5 + len(MEASURES) + len(HINGE_MEASURES) + 2 * len(FLOOR_MEASURES)
+                          + 1)
 
 
 def test_every_energy_term_is_named_where_the_docs_list_them() -> None:

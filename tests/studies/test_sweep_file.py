@@ -42,9 +42,10 @@ GRID = '[grid]\n"contact.gap" = [0.01]\n'
     ('[random]\nn = 2\nseed = 1\n"contact.gap" = { log = [0.0, 0.05] }\n',
      "random.contact.gap.log: needs low > 0 (got [0.0, 0.05])"),
     ('[grid]\n"contact.gapp" = [0.01]\n', "grid.contact.gapp: unknown key 'gapp'; did you mean "
-                                         "'gap'? (keys here: a, c, chi, delta_m, e, "
-                                         "floor_to_column, formula, gap, gaps, k, k_h, law, "
-                                         "level_tolerance, n, tension, zeta)"),
+                                         "'gap'? (keys here: a, backbone, backwall_height, "
+                                         "backwall_width, c, capacity, chi, delta_m, "
+                                         "delta_ult, e, floor_to_column, formula, gap, gaps, "
+                                         "k, k_h, law, level_tolerance, n, tension, zeta)"),
     ('[list]\n"building.5.period" = [0.5]\n',
      "list.building.5.period: building.5: need an index 0 … 1 or * (every one)"),
     ('[random]\nn = 2\nseed = 1\n"building.0.n_storeys" = { int = [1.5, 3] }\n',
