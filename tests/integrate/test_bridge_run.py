@@ -199,3 +199,34 @@ def test_a_bridge_with_cable_restrainers_and_backfill_abutments() -> None:
     bad = TWO_FRAMES.replace("slack = 0.0127", "slack = 0.0127, c = 1e5")
     with pytest.raises(ValueError, match="bridge.joint\\[0\\].restrainer.c: a cable restrainer"):
         parse_config(tomllib.loads(bad))
+
+
+def test_restrainers_keep_a_narrow_seat_from_unseating() -> None:
+    """The two-frame bridge under El Centro × 2: without restrainers the joint opens by
+    about 150 mm and a 100 mm seat is lost; with the cables it opens about 73 mm and the deck
+    stays seated; at AASHTO LRFD's minimum support length (zone 4: 150 % of N with L the
+    frame's 30 m deck, H its 8 m pier) it stays seated either way. The openings are the
+    decks' relative displacements, written out here."""
+    import tomllib
+
+    from pounding.result.bridge_seats import seat_checks, seat_openings
+    from pounding.structure.seat_width import aashto_lrfd_required_support_length
+
+    need = aashto_lrfd_required_support_length(30.0, 8.0, 0.0, 4, 0.4)
+    assert need == pytest.approx(1.5 * (0.2032 + 30.0 / 600 + 8.0 / 150), rel=1e-12)
+    margins = {}
+    for label, text in (("with", TWO_FRAMES),
+                        ("without", TWO_FRAMES.replace("restrainer = {", "# restrainer = {"))):
+        model, motion, _ = parse_config(tomllib.loads(text)).build()
+        res = simulate(model, motion.scaled(2.0), duration=20.0, dt=0.005)
+        names, openings = seat_openings(res)
+        u = res.displacement
+        decks = [0, model.system.offsets[1]]
+        np.testing.assert_array_equal(openings[:, 1], u[:, decks[1]] - u[:, decks[0]])
+        assert names == ["A1", "J1", "A2"]
+        narrow = seat_checks(res, [None, 0.10, None], [None, need, None])
+        at_code = seat_checks(res, [need] * 3, [need] * 3)
+        margins[label] = narrow[0].margin_m
+        assert narrow[0].seat == "J1" and not narrow[0].meets_minimum
+        assert all(c.meets_minimum and not c.unseated for c in at_code)
+    assert margins["without"] < -0.02 and margins["with"] > 0.02
