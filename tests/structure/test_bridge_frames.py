@@ -114,7 +114,7 @@ def test_bridge_row_joints_abutments_restrainers() -> None:
                     [0.02]), "joint_gaps: need 0 value(s)"),
     (lambda: BridgeFrame(1e6, [Pier(8.0, 1e7, 1e4)], [Bearing.elastomeric(1e7)] * 2),
      "bearings: need one Bearing per pier"),
-    (lambda: Abutment(0.05, law="backfill"), "law: an abutment's own backfill law"),
+    (lambda: Abutment(0.05, law="backfill"), "law: expected a ContactSpec or None (got str)"),
     (lambda: pier_stiffness(1e9, 8.0, "pinned"), "fixity: 'pinned'"),
 ])
 def test_bad_bridges_are_refused_in_one_line(bad, message) -> None:
