@@ -77,7 +77,14 @@ from pounding.contact.spec import ContactSpec
 from pounding.ground_motion import GroundMotion, el_centro
 from pounding.integrate import simulate
 from pounding.model import PoundingModel
-from pounding.structure.bridge import Abutment, Bearing, Bridge, BridgeFrame, Pier, Restrainer
+from pounding.structure.bridge import (
+    Abutment,
+    Bearing,
+    Bridge,
+    BridgeFrame,
+    Pier,
+    Restrainer,
+)
 
 SECTIONS = ("model", "accuracy", "speed", "cost")
 WIDE_GAP = 10.0  #: m: nothing touches
