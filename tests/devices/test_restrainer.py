@@ -227,3 +227,27 @@ def test_a_restrainer_refuses_what_it_does_not_have():
         Link(("B1F1", "B2F1"), "restrainer", k=1e7)
     with pytest.raises(ValueError, match="^slack: only a restrainer"):
         Link(("B1F1", "B2F1"), "kelvin", c=1e5, k=1e7, slack=0.01)
+
+
+def test_each_links_dissipated_energy_leaves_out_what_its_springs_hold() -> None:
+    """A taut elastic restrainer beside a Maxwell link at the end of a run: the restrainer
+    has dissipated nothing (its cables hold F²/(2k), given back), the Maxwell link its
+    dashpot's work (its spring's z is its own, not the restrainer's elongation), and their
+    sum is the solver's `links` energy to the trapezoidal rule's order."""
+    from pounding.contact.spec import ContactSpec
+    from pounding.devices import Link
+    from pounding.ground_motion import el_centro
+    from pounding.integrate import simulate
+    from pounding.model import PoundingModel
+    from pounding.structure import ShearBuilding
+
+    a = ShearBuilding.sdof(2e5, period=0.5, name="A")
+    b = ShearBuilding.sdof(3e5, period=1.0, name="B")
+    links = [Link(("B1F1", "B2F1"), "restrainer", k=2e7, slack=0.0),
+             Link(("B1F1", "B2F1"), "maxwell", k=1e7, c=1e5, name="M")]
+    model = PoundingModel([a, b], [0.5], ContactSpec("kelvin-voigt", k=1e9, e=0.6),
+                          devices=links)
+    res = simulate(model, el_centro(), duration=3.3, dt=0.001)
+    assert res.link_force[-1, 0] > 1e5  # (taut at the end: its cables hold energy)
+    assert abs(res.link_dissipated[0]) < 1e-4 * res.energy[-1, 7]
+    assert res.link_dissipated.sum() == pytest.approx(res.energy[-1, 7], rel=1e-4)

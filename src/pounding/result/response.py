@@ -625,6 +625,10 @@ class Response:
             elif link.kind == "maxwell":
                 stored[i] = 0.5 * float(link.k) * z_links[iz] ** 2  # type: ignore[arg-type]
                 iz += 1
+            elif link.kind == "restrainer":  # its cables' elastic energy F²/(2k) (its z
+                k = float(link.k)  # type: ignore[arg-type]  # is its plastic elongation)
+                stored[i] = self.link_force[-1, i] ** 2 / (2.0 * k)
+                iz += 1
         return work - stored
 
     @property
