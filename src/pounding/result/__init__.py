@@ -37,8 +37,8 @@ _EXPORTS: dict[str, str] = {
         "abs_max_columns", "abs_max_drift", "energy_residual_max")},
     **{name: "pounding.result.storeys" for name in (
         "bearing_law", "bearing_mask", "floor_name", "plan_storey_forces")},
-    **{name: "pounding.result.response" for name in ("ContactPeak", "Response",
-                                                      "SolverStats")},
+    "ContactPeak": "pounding.result.contact_response",
+    **{name: "pounding.result.response" for name in ("Response", "SolverStats")},
     **{name: "pounding.result.storey_peaks" for name in (
         "BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys")},
     **{name: "pounding.result.variables" for name in (
@@ -85,6 +85,7 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
     from pounding.result.columns import ENERGY_NAMES, IMPACT_COLUMNS
+    from pounding.result.contact_response import ContactPeak
     from pounding.result.demands import DEMANDS, Demand
     from pounding.result.files import IMPACTS_CSV_COLUMNS, save_result
     from pounding.result.peaks import peak_abs
@@ -93,7 +94,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
         abs_max_drift,
         energy_residual_max,
     )
-    from pounding.result.response import ContactPeak, Response, SolverStats
+    from pounding.result.response import Response, SolverStats
     from pounding.result.result import Result
     from pounding.result.storey_peaks import (
         BearingPeaks,
