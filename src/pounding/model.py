@@ -70,7 +70,8 @@ from pounding.structure.assembly import (
     floor_below,
     floor_dofs,
 )
-from pounding.structure.bridge import Bridge, BridgeFrame
+from pounding.structure.bridge import Bridge
+from pounding.structure.dof_names import dof_labels, dof_units
 from pounding.structure.element_rows import ElementRow, element_rows
 from pounding.structure.plan import PlanBuilding
 from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
@@ -572,64 +573,14 @@ class PoundingModel:
         return k
 
     def dof_labels(self) -> list[str]:
-        """``'B1F1'``, ``'B1F2'``, … for every degree of freedom (1-based): ``F<j>`` is the
-        building's DOF ``j`` (a matrix building's own labels: :meth:`dof_names`); of a
-        building in plan, its floor and direction, ``'B2F3x'``, ``'B2F3y'``, ``'B2F3θ'``
-        (building 2, floor 3), as its contacts name its floors; of a frame, its own labels
-        (its floors ``F1`` … first, then its nodes' DOFs with mass, ``'B1N6x'``); of a
-        building on a flexible base, its footing's DOFs after its own: ``'B1Fdn'`` (sway)
-        and ``'B1Fdn_r'`` (rocking), in plan ``'B1Fdn_x'``, ``'B1Fdn_y'``, ``'B1Fdn_rx'``,
-        ``'B1Fdn_ry'``, ``'B1Fdn_t'`` (:mod:`pounding.structure.foundation`)."""
-        from pounding.structure.foundation import FlexibleBaseBuilding
-
-        out = []
-        for b, bl in enumerate(self.buildings):
-            if isinstance(bl, MatrixBuilding) and (isinstance(bl, PlanMatrixBuilding)
-                                                   or getattr(bl, "frame", None) is not None):
-                names = list(bl.labels)
-            elif isinstance(bl, FlexibleBaseBuilding):  # its DOFs, then the footing's
-                n0 = int(bl.fixed_base.n)
-                names = [f"F{j + 1}" for j in range(n0)] + list(bl.labels[n0:])
-            else:
-                names = [f"F{j + 1}" for j in range(bl.n)]
-            out += [f"B{b + 1}{name}" for name in names]
-        return out
+        """``'B1F1'``, ``'B1F2'``, … for every degree of freedom
+        (:func:`pounding.structure.dof_names.dof_labels`)."""
+        return dof_labels(self.buildings)
 
     def dof_units(self) -> list[str]:
-        """The unit of every degree of freedom's displacement: ``'m'`` for a translation
-        (every floor; a building in plan's ``u_x``, ``u_y``; a footing's sway; a frame
-        node's ``x``, ``y``), ``'rad'`` for a rotation (a building in plan's ``θ``, a
-        footing's rocking and torsion, ``Fdn_r``, ``Fdn_rx``, ``Fdn_ry``, ``Fdn_t``; a frame
-        node's ``r``), ``''`` for a DOF of a building given as matrices that is no floor
-        (its matrices say what it is). Its velocity is in that unit per second, its
-        acceleration per second squared."""
-        from pounding.structure.foundation import FlexibleBaseBuilding
-        from pounding.structure.foundation.flexible_base import SWAY_LABEL
-        from pounding.structure.foundation.plan_base import FOOTING_DOFS
-
-        rotations = {f"{SWAY_LABEL}_r", *FOOTING_DOFS[2:]}
-        out = []
-        floor = self.is_floor
-        k = 0
-        for bl in self.buildings:
-            frame = getattr(bl, "frame", None) is not None
-            for j in range(bl.n):
-                label = bl.labels[j] if isinstance(bl, MatrixBuilding) else ""
-                if label in rotations or (isinstance(bl, PlanMatrixBuilding)
-                                          and label.endswith("θ")):
-                    unit = "rad"
-                elif frame and label.startswith("N"):
-                    unit = "rad" if label.endswith("r") else "m"
-                elif isinstance(bl, BridgeFrame):
-                    unit = "m"  # (its deck and pier caps: translations along the axis)
-                elif (floor[k] or not isinstance(bl, MatrixBuilding) or frame
-                      or isinstance(bl, PlanMatrixBuilding | FlexibleBaseBuilding)):
-                    unit = "m"  # (a flexible base's building: every DOF a translation)
-                else:
-                    unit = ""
-                out.append(unit)
-                k += 1
-        return out
+        """The unit of every degree of freedom's displacement, ``'m'``, ``'rad'`` or ``''``
+        (:func:`pounding.structure.dof_names.dof_units`)."""
+        return dof_units(self.buildings, self.is_floor)
 
     def dof_names(self) -> list[str]:
         """Every DOF's name in its building: a matrix building's labels, ``'F1'``, ``'F2'``,
