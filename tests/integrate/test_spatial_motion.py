@@ -14,6 +14,7 @@ from pounding.ground_motion.spatial import SpatialMotion, delayed, wave_passage
 from pounding.integrate import simulate
 from pounding.model import PoundingModel
 from pounding.structure import ShearBuilding
+from pounding.structure.wall import MoatWall
 
 A = ShearBuilding.sdof(2e5, period=0.5)
 B = ShearBuilding.sdof(3e5, period=1.0)
@@ -148,3 +149,85 @@ def test_refusals() -> None:
         SpatialMotion([ec, GroundMotion(0.02, ec.accel[::2])])
     with pytest.raises(ValueError, match="apparent_velocity"):
         wave_passage(ec, [0.0, 1.0], 0.0)
+
+
+def _walls_reference(k_contact: float, gaps: tuple[float, float],
+                     grounds: list[GroundMotion], t_end: float,
+                     t_out: np.ndarray) -> np.ndarray:
+    """Building A (SDOF) between a wall on each side, the building and the two walls each
+    on its own ground, in absolute coordinates (the building X on u_g, the walls at u_l and
+    u_r): linear springs k_contact in compression across δ_l = u_l − X − gap_l and
+    δ_r = X − u_r − gap_r; solve_ivp restarted at every contact event; the state
+    [X, V, u_g, v_g, u_l, v_l, u_r, v_r] at ``t_out``."""
+    m = 2e5
+    k, c = A.stiffness_matrix()[0, 0], A.damping_matrix()[0, 0]
+    times = [g.time for g in grounds]
+    acc = [g.accel for g in grounds]
+
+    def ag(i: int, t: float) -> float:
+        return float(np.interp(t, times[i], acc[i], right=0.0))
+
+    def rhs(t: float, y: np.ndarray) -> list[float]:
+        X, V, u, w, ul, wl, ur, wr = y
+        f_l = k_contact * max(ul - X - gaps[0], 0.0)
+        f_r = k_contact * max(X - ur - gaps[1], 0.0)
+        a = (-k * (X - u) - c * (V - w) + f_l - f_r) / m
+        return [V, a, w, ag(0, t), wl, ag(1, t), wr, ag(2, t)]
+
+    def left(t: float, y: np.ndarray) -> float:
+        return y[4] - y[0] - gaps[0]
+
+    def right(t: float, y: np.ndarray) -> float:
+        return y[0] - y[6] - gaps[1]
+
+    left.terminal = right.terminal = True  # type: ignore[attr-defined]
+    t, y = 0.0, np.zeros(8)
+    out = np.zeros((8, t_out.size))
+    while t < t_end:
+        sol = solve_ivp(rhs, (t, t_end), y, events=[left, right], rtol=1e-11, atol=1e-14,
+                        method="DOP853", max_step=float(grounds[0].dt), dense_output=True)
+        t_new, y_new = float(sol.t[-1]), sol.y[:, -1].copy()
+        if t_new <= t + 1e-12:  # (stopped by the event it started on: step past it)
+            sol = solve_ivp(rhs, (t, min(t + 1e-6, t_end)), y, rtol=1e-11, atol=1e-14,
+                            method="DOP853", dense_output=True)
+            t_new, y_new = float(sol.t[-1]), sol.y[:, -1].copy()
+        inside = (t_out >= t) & (t_out <= t_new)
+        if inside.any():
+            out[:, inside] = sol.sol(t_out[inside])
+        t, y = t_new, y_new
+    return out
+
+
+def test_walls_on_their_own_grounds_against_an_absolute_reference() -> None:
+    """A building between two walls (an abutment at each end of a bridge), the waves
+    reaching the left wall 0.02 s and the right wall 0.04 s after the building: its motion,
+    both walls' contact forces and the energy balance against the absolute reference."""
+    dt = 0.005
+    t = np.arange(0, 4.0 + dt / 2, dt)
+    sine = GroundMotion(dt, 3.0 * np.sin(2 * np.pi * 1.5 * t) * np.exp(-0.2 * t), "sine")
+    k_c, gaps = 1e8, (0.01, 0.012)
+    walls = [MoatWall(height=3.0, gap=gaps[0], side="left"),
+             MoatWall(height=3.0, gap=gaps[1], side="right")]
+    model = PoundingModel([A], [], ContactSpec("linear-spring", k=k_c), walls=walls)
+    w = wave_passage(sine, [0.0, 20.0, 40.0], apparent_velocity=1000.0).with_walls(
+        ["left", "right"])
+    assert w.delays == (0.0,) and dict(w.wall_delays) == pytest.approx(
+        {"left": 0.02, "right": 0.04})
+    res = simulate(model, w, dt=dt, duration=4.0, rtol=1e-10)
+    yy = _walls_reference(k_c, gaps, [w.records[0], w.walls["left"], w.walls["right"]],
+                          4.0, res.time)
+    rel = yy[0] - yy[2]
+    assert np.max(np.abs(res.displacement[:, 0] - rel)) < 1e-6 * np.max(np.abs(rel))
+    f_l = k_c * np.maximum(yy[4] - yy[0] - gaps[0], 0.0)
+    f_r = k_c * np.maximum(yy[0] - yy[6] - gaps[1], 0.0)
+    assert f_l.max() > 0 and f_r.max() > 0  # (both walls struck)
+    for col, f_ref in ((0, f_l), (1, f_r)):
+        assert np.max(np.abs(res.contact_force[:, col] - f_ref)) < 2e-6 * f_ref.max(), col
+    assert res.energy_balance_error < 1e-9
+    # on the building's ground (no walls' own): a different run
+    same = simulate(model, SpatialMotion([w.records[0]]), dt=dt, duration=4.0, rtol=1e-10)
+    assert np.max(np.abs(same.displacement[:, 0] - res.displacement[:, 0])) > 1e-3 * np.max(
+        np.abs(rel))
+    with pytest.raises(ValueError, match="no wall on its right"):
+        simulate(PoundingModel([A], [], ContactSpec("linear-spring", k=k_c), walls=walls[:1]),
+                 w, dt=dt, duration=1.0)

@@ -144,3 +144,83 @@ def test_what_is_not_modelled_yet_is_refused_in_the_file() -> None:
         parse_config(data, where="m.toml").build()
     text = str(info.value)
     assert text.startswith("m.toml: spatial: links between buildings (device[0], viscous)")
+
+
+def walled() -> dict[str, Any]:
+    """One building between two moat walls (a deck between abutments), each wall 40 m from
+    the building along the row."""
+    return {
+        "name": "walls on their grounds",
+        "record": {"bundled": "el_centro", "duration": 12.0},
+        "building": [{"mass": 2e5, "period": 0.5, "height": 3.0}],
+        "wall": [{"height": 3.0, "gap": 0.02, "side": "left"},
+                 {"height": 3.0, "gap": 0.02, "side": "right"}],
+        "contact": {"law": "kelvin-voigt", "k": 9.3e8, "e": 0.65},
+        "spatial": {"positions": [40.0], "apparent_velocity": 200.0,
+                    "wall_positions": {"left": 0.0, "right": 80.0}},
+    }
+
+
+def test_walls_given_their_own_grounds_in_the_file() -> None:
+    """``wall_positions``: the walls' records are the record delayed by their own travel
+    times (the waves reach the left wall first: 0, 0.2 s the building, 0.4 s the right
+    wall); a side without a wall, a side that is not one, and wall_positions with records are
+    refused in one line naming the key."""
+    model, motion, _ = parse_config(walled(), where="m.toml").build()
+    assert isinstance(motion, SpatialMotion)
+    assert motion.delays == pytest.approx((0.2,))
+    assert dict(motion.wall_delays) == pytest.approx({"left": 0.0, "right": 0.4})
+    ec = el_centro().trimmed(12.0)
+    assert np.array_equal(motion.walls["left"].accel[: ec.npts], ec.accel)
+    assert np.array_equal(motion.records[0].accel[20: 20 + ec.npts], ec.accel)
+    assert motion.wall_stations() == {"left": 1, "right": 2}
+    # or each wall its own record, scaled with the row's
+    data = {**walled(), "record": {"bundled": "el_centro", "pga_g": 0.5}}
+    data["spatial"] = {"records": [], "wall_records": {"right": {"bundled": "el_centro",
+                                                                 "duration": 10.0}}}
+    data["building"] = walled()["building"] * 2
+    data["contact"] = {**walled()["contact"], "gap": 0.02}
+    data["spatial"]["records"] = [{"bundled": "el_centro"}]
+    _, motion, _ = parse_config(data, where="m.toml").build()
+    factor = 0.5 / el_centro().pga_g
+    n = int(round(10.0 / ec.dt)) + 1
+    assert list(motion.walls) == ["right"]
+    assert np.allclose(motion.walls["right"].accel[:n], factor * el_centro().accel[:n],
+                       rtol=1e-14)
+    for change, expected in (
+            ({"wall": walled()["wall"][:1]},
+             "spatial.wall_positions.right: the row has no wall on its right"),
+            ({"spatial": {**walled()["spatial"], "wall_positions": {"top": 1.0}}},
+             "spatial.wall_positions.top: a wall's side is left or right"),
+            ({"building": walled()["building"] * 2, "contact": {**walled()["contact"], "gap": 0.02},
+              "spatial": {"records": [{"bundled": "el_centro"}],
+                          "wall_positions": {"left": 0.0}}},
+             "spatial.wall_positions: with positions only")):
+        bad = {**walled(), **change}
+        with pytest.raises(ValueError) as info:
+            parse_config(bad, where="m.toml").build()
+        assert expected in str(info.value), str(info.value)
+
+
+def test_the_critical_gap_to_a_wall_on_its_own_ground() -> None:
+    """The gap study under walls on their own grounds: the critical gap to each wall adds
+    the wall's ground to the building's; the coupled run with both gaps at 1.001 × theirs
+    does not pound, with the left one at 0.99 × it pounds the left wall."""
+    model, motion, _ = parse_config(walled(), where="m.toml").build()
+    study = critical_gaps(model, motion, dt=0.005)
+    crit = {name: float(v) for name, v in zip(study.gap_names, study.critical[0])}
+    uniform = critical_gaps(model, motion.records[0], dt=0.005)
+    assert abs(crit["W-B1"] - float(uniform.critical[0, 0])) > 0.05 * crit["W-B1"]
+    a = ShearBuilding.sdof(2e5, period=0.5, height=3.0)
+    spec = ContactSpec("kelvin-voigt", k=9.3e8, e=0.65)
+
+    def run(left: float, right: float) -> Any:
+        from pounding.structure.wall import MoatWall
+        walls = [MoatWall(height=3.0, gap=left, side="left"),
+                 MoatWall(height=3.0, gap=right, side="right")]
+        return simulate(PoundingModel([a], [], spec, walls=walls), motion, dt=0.005,
+                        duration=12.0)
+
+    assert run(1.001 * crit["W-B1"], 1.001 * crit["B1-W"]).n_impacts == 0
+    below = run(0.99 * crit["W-B1"], 1.001 * crit["B1-W"])
+    assert below.n_impacts > 0 and set(below.impacts["contact"]) == {"W-B1F1"}

@@ -258,6 +258,7 @@ class RunConfig(Section):
             assert isinstance(motion, GroundMotion)
             with prefixed("spatial", SpatialConfig.model_fields):
                 motion = self.spatial.apply(motion, self.record.factor_of(motion))
+            _walls_on_their_ground(self.spatial, model)
         return Built(model, motion, self.solver.kwargs())
 
     def _build_bridge(self) -> Built:
@@ -279,6 +280,7 @@ class RunConfig(Section):
             assert isinstance(motion, GroundMotion)
             with prefixed("spatial", SpatialConfig.model_fields):
                 motion = self.spatial.apply(motion, self.record.factor_of(motion))
+            _walls_on_their_ground(self.spatial, model)
         return Built(model, motion, self.solver.kwargs())
 
     # ------------------------------------------------------------------ writing
@@ -369,3 +371,14 @@ def _npz_has_c(path: str | None) -> bool:
 
     with np.load(path, allow_pickle=False) as archive:
         return "C" in archive.files
+
+
+def _walls_on_their_ground(spatial: SpatialConfig, model: PoundingModel) -> None:
+    """A wall given a ground of its own (``[spatial] wall_positions`` / ``wall_records``)
+    must stand at that end of the row."""
+    sides = {w.side for w in model.walls}
+    for side in spatial.wall_sides():
+        if side not in sides:
+            key = "wall_positions" if spatial.wall_positions is not None else "wall_records"
+            raise ValueError(f"spatial.{key}.{side}: the row has no wall on its {side} "
+                             f"(walls: {', '.join(sorted(sides)) or 'none'})")

@@ -18,6 +18,11 @@ motion, :mod:`pounding.ground_motion.spatial` and :mod:`pounding.ground_motion.c
 
 Without ``records`` the ``[record]`` is the recorded motion (scaled as it says) and every
 building's motion follows from it.
+
+The walls at the ends of the row (``[[wall]]``, a bridge's abutments) stand on their
+building's ground unless given their own: ``wall_positions = { left = …, right = … }`` [m]
+with ``positions`` (their motions made with the buildings', one coherent set), or
+``wall_records = { left = { … }, right = { … } }`` with ``records``.
 """
 
 from __future__ import annotations
@@ -48,9 +53,22 @@ class SpatialConfig(Section):
     recorded_at: Annotated[int, Field(ge=0)] = 0
     seed: Annotated[int, Field(ge=0)] = 0
     beta: Annotated[float, Field(ge=0, le=1.0), Unit("s/m")] | None = None
+    wall_positions: dict[str, Position] | None = None
+    wall_records: dict[str, RecordConfig] | None = None
 
     @model_validator(mode="after")
     def _consistent(self) -> SpatialConfig:
+        for key in ("wall_positions", "wall_records"):
+            for side in getattr(self, key) or {}:
+                if side not in ("left", "right"):
+                    raise field_error((key, side), f"a wall's side is left or right (got "
+                                                   f"{side!r})")
+        if self.wall_positions is not None and self.positions is None:
+            raise field_error("wall_positions", "with positions only (with records, give the "
+                                                "walls' own: wall_records = { left = { … } })")
+        if self.wall_records is not None and self.records is None:
+            raise field_error("wall_records", "with records only (with positions, give the "
+                                              "walls' places: wall_positions = { left = … })")
         if self.records is not None:
             for key in ("positions", "apparent_velocity", "beta"):
                 if getattr(self, key) is not None:
@@ -59,11 +77,14 @@ class SpatialConfig(Section):
             if self.coherency != "none":
                 raise field_error("coherency", "not with records (each building's own record "
                                                "is given)")
-            for i, r in enumerate(self.records):
+            tables: list[tuple[tuple[str | int, ...], RecordConfig]] = [
+                *((("records", i), r) for i, r in enumerate(self.records)),
+                *((("wall_records", s), r) for s, r in (self.wall_records or {}).items())]
+            for where, r in tables:
                 for key in ("scale", "pga_g", "sa_g", "saavg_g", "second", "second_file",
                             "incidence"):
                     if getattr(r, key) is not None:
-                        raise field_error(("records", i, key),
+                        raise field_error((*where, key),
                                           "not here: every building's record is scaled by "
                                           "[record]'s factor (give it there)")
             return self
@@ -95,28 +116,44 @@ class SpatialConfig(Section):
         assert self.positions is not None
         return len(self.positions)
 
+    def wall_sides(self) -> list[str]:
+        """The sides of the walls given a ground of their own (left first)."""
+        given = self.wall_positions or self.wall_records or {}
+        return [s for s in ("left", "right") if s in given]
+
     def apply(self, record: GroundMotion, factor: float = 1.0) -> SpatialMotion:
-        """Every building's motion from ``record`` (module docstring); ``factor``: what
-        ``[record]``'s scaling multiplied its record by (for ``records``)."""
+        """Every building's (and wall's) motion from ``record`` (module docstring);
+        ``factor``: what ``[record]``'s scaling multiplied its record by (for ``records``)."""
         from pounding.ground_motion.coherency import coherent_motions
         from pounding.ground_motion.spatial import wave_passage
 
+        sides = self.wall_sides()
         if self.records is not None:
             others = []
             for i, r in enumerate(self.records):
                 with prefixed(f"records[{i}]", RecordConfig.model_fields):
                     others.append(r.load().scaled(factor))
-            return SpatialMotion([record, *others], description="each building's own record")
+            walls = {}
+            for side in sides:
+                assert self.wall_records is not None
+                with prefixed(f"wall_records.{side}", RecordConfig.model_fields):
+                    walls[side] = self.wall_records[side].load().scaled(factor)
+            return SpatialMotion([record, *others], description="each building's own record",
+                                 walls=walls)
         assert self.positions is not None
-
+        positions = [*self.positions,
+                     *(self.wall_positions[s] for s in sides
+                       if self.wall_positions is not None)]
         if self.coherency == "none":
             assert self.apparent_velocity is not None
-            return wave_passage(record, self.positions, self.apparent_velocity)
-        if self.beta is not None:
-            return coherent_motions(record, self.positions, coherency=self.coherency,
-                                    apparent_velocity=self.apparent_velocity,
-                                    recorded_at=self.recorded_at, seed=self.seed,
-                                    beta=self.beta)
-        return coherent_motions(record, self.positions, coherency=self.coherency,
-                                apparent_velocity=self.apparent_velocity,
-                                recorded_at=self.recorded_at, seed=self.seed)
+            motion = wave_passage(record, positions, self.apparent_velocity)
+        elif self.beta is not None:
+            motion = coherent_motions(record, positions, coherency=self.coherency,
+                                      apparent_velocity=self.apparent_velocity,
+                                      recorded_at=self.recorded_at, seed=self.seed,
+                                      beta=self.beta)
+        else:
+            motion = coherent_motions(record, positions, coherency=self.coherency,
+                                      apparent_velocity=self.apparent_velocity,
+                                      recorded_at=self.recorded_at, seed=self.seed)
+        return motion.with_walls(sides) if sides else motion

@@ -13,6 +13,12 @@ on different grounds sees their grounds' relative displacement:
 of each ground's acceleration — exactly, for records linear between their samples
 (:func:`pounding.integrate.simulate`).
 
+The rigid walls at the ends of the row (moat walls, a bridge's abutments) stand on their
+building's ground unless the motion gives them their own (:attr:`SpatialMotion.walls`, by
+side): an abutment 60 m from the first pier feels the waves at its own time, and the backwall
+contact sees ``δ = u_g,wall − (u_1 + u_g,1) − gap`` on the left,
+``(u_n + u_g,n) − u_g,wall − gap`` on the right.
+
 * :func:`delayed` — a record arriving ``τ`` later: exact (a shift by whole samples) when
   ``τ`` is a multiple of the step, the record's linear interpolant sampled at ``t − τ``
   otherwise;
@@ -24,7 +30,8 @@ of each ground's acceleration — exactly, for records linear between their samp
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from types import MappingProxyType
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -52,11 +59,19 @@ class SpatialMotion(GroundMotion):
         Default: the first record's name with ``" (spatially varying)"``.
     description : str
         How the records were made (a delay, a coherency model …), for the outputs.
+    delays : sequence of float, optional
+        Each building's delay [s] (for the outputs; default 0).
+    walls : mapping, optional
+        The ground of the row's end walls by side (``"left"``, ``"right"``): a wall not
+        given stands on its building's ground.
+    wall_delays : mapping, optional
+        Their delays [s] (for the outputs; default 0).
 
     Raises
     ------
     ValueError
-        If there is no record or the steps differ (one line naming the record).
+        If there is no record or the steps differ (one line naming the record), or a wall's
+        side is not left or right.
 
     Examples
     --------
@@ -72,11 +87,20 @@ class SpatialMotion(GroundMotion):
     records: tuple[GroundMotion, ...]
     description: str
     delays: tuple[float, ...]
+    walls: Mapping[str, GroundMotion]
+    wall_delays: Mapping[str, float]
 
     def __init__(self, records: Sequence[GroundMotion], name: str | None = None,
-                 description: str = "", delays: Sequence[float] | None = None) -> None:
-        recs = records_of_one_step(records, "spatial motion (one record per building)",
-                                   "record")
+                 description: str = "", delays: Sequence[float] | None = None,
+                 walls: Mapping[str, GroundMotion] | None = None,
+                 wall_delays: Mapping[str, float] | None = None) -> None:
+        sides = [side for side in ("left", "right") if walls and side in walls]
+        for side in walls or {}:
+            if side not in ("left", "right"):
+                raise ValueError(f"walls: a wall's side is 'left' or 'right' (got {side!r})")
+        recs = records_of_one_step(
+            [*records, *(walls[s] for s in sides)] if walls else records,
+            "spatial motion (one record per building)", "record")
         n = max(r.npts for r in recs)
         padded = tuple(r if r.npts == n else GroundMotion(
             r.dt, np.concatenate([r.accel, np.zeros(n - r.npts)]), r.name, r.source,
@@ -85,18 +109,38 @@ class SpatialMotion(GroundMotion):
         super().__init__(first.dt, first.accel,
                          name if name is not None else f"{first.name} (spatially varying)",
                          first.source, first.units_read, first.metadata)
+        nb = len(padded) - len(sides)
         frozen_set = object.__setattr__
-        frozen_set(self, "records", padded)
+        frozen_set(self, "records", padded[:nb])
         frozen_set(self, "description", description)
         frozen_set(self, "delays", tuple(float(d) for d in delays) if delays is not None
-                   else (0.0,) * len(padded))
+                   else (0.0,) * nb)
+        frozen_set(self, "walls", MappingProxyType(dict(zip(sides, padded[nb:]))))
+        frozen_set(self, "wall_delays", MappingProxyType(
+            {s: float((wall_delays or {}).get(s, 0.0)) for s in sides}))
+
+    def _like(self, records: Sequence[GroundMotion], walls: Mapping[str, GroundMotion],
+              name: str) -> SpatialMotion:
+        return SpatialMotion(records, name, self.description, self.delays, walls,
+                             self.wall_delays)
 
     def stations(self) -> tuple[list[int], list[GroundMotion]]:
         """``(station of each building, the stations' records)``: buildings whose records
-        are equal (same samples) share a station, numbered in order of first appearance."""
+        are equal (same samples) share a station, numbered in order of first appearance;
+        then the walls' (:meth:`wall_stations`)."""
+        index, distinct = self._stations()
+        return index[:len(self.records)], distinct
+
+    def wall_stations(self) -> dict[str, int]:
+        """The station of each wall with a ground of its own, by side (numbered with the
+        buildings', :meth:`stations`)."""
+        index, _ = self._stations()
+        return dict(zip(self.walls, index[len(self.records):]))
+
+    def _stations(self) -> tuple[list[int], list[GroundMotion]]:
         index: list[int] = []
         distinct: list[GroundMotion] = []
-        for r in self.records:
+        for r in (*self.records, *self.walls.values()):
             for s, d in enumerate(distinct):
                 if d is r or np.array_equal(d.accel, r.accel):
                     index.append(s)
@@ -107,9 +151,10 @@ class SpatialMotion(GroundMotion):
         return index, distinct
 
     def scaled(self, factor: float) -> SpatialMotion:
-        """Every building's record multiplied by ``factor``."""
-        return SpatialMotion([r.scaled(factor) for r in self.records],
-                             f"{self.name} x {factor:g}", self.description, self.delays)
+        """Every building's (and wall's) record multiplied by ``factor``."""
+        return self._like([r.scaled(factor) for r in self.records],
+                          {s: r.scaled(factor) for s, r in self.walls.items()},
+                          f"{self.name} x {factor:g}")
 
     def scaled_to_pga(self, pga_g: float) -> SpatialMotion:
         """Every record scaled by the factor that brings the first to ``pga_g`` [g]."""
@@ -117,15 +162,28 @@ class SpatialMotion(GroundMotion):
 
     def trimmed(self, t_end: float) -> SpatialMotion:
         """Every record cut after ``t_end`` [s]."""
-        return SpatialMotion([r.trimmed(t_end) for r in self.records], self.name,
-                             self.description, self.delays)
+        return self._like([r.trimmed(t_end) for r in self.records],
+                          {s: r.trimmed(t_end) for s, r in self.walls.items()}, self.name)
+
+    def with_walls(self, sides: Sequence[str]) -> SpatialMotion:
+        """The last ``len(sides)`` records taken as the grounds of the walls on ``sides``
+        (a motion made for the buildings' positions followed by the walls')."""
+        nb = len(self.records) - len(sides)
+        if nb < 1:
+            raise ValueError(f"walls: {len(sides)} wall(s) and {len(self.records)} records "
+                             "leave no building")
+        return SpatialMotion(self.records[:nb], self.name, self.description, self.delays[:nb],
+                             dict(zip(sides, self.records[nb:])),
+                             dict(zip(sides, self.delays[nb:])))
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, SpatialMotion):
             return NotImplemented
-        return len(self.records) == len(other.records) and all(
-            a.dt == b.dt and np.array_equal(a.accel, b.accel)
-            for a, b in zip(self.records, other.records))
+        mine = (*self.records, *self.walls.values())
+        theirs = (*other.records, *other.walls.values())
+        return (len(self.records) == len(other.records) and list(self.walls) == list(other.walls)
+                and all(a.dt == b.dt and np.array_equal(a.accel, b.accel)
+                        for a, b in zip(mine, theirs)))
 
     __hash__ = object.__hash__  # (records are read-only; identity, as GroundMotion)
 

@@ -304,8 +304,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     notes = _model_notes(model)
     # spatially varying ground: each building on its station's ground (one station: the
     # plain model under that record)
-    stations, station_records = _stations(model, motion)
-    km = kernel_model(model) if stations is None else station_kernel_model(model, stations)
+    stations, station_records, wall_stations = _stations(model, motion)
+    km = (kernel_model(model) if stations is None
+          else station_kernel_model(model, stations, wall_stations))
     n_model = model.n_dof
     if (step, t_end) not in notes.checked:
         check_history_size(model, t_end, step)
@@ -482,19 +483,20 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
 
 
 def _stations(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
-              ) -> tuple[tuple[int, ...] | None, list[GroundMotion]]:
-    """The station of each building and the stations' records under a
-    :class:`~pounding.ground_motion.spatial.SpatialMotion` with more than one distinct record
-    (:mod:`pounding.integrate.stations`); ``(None, [])`` otherwise."""
+              ) -> tuple[tuple[int, ...] | None, list[GroundMotion], tuple[tuple[str, int], ...]]:
+    """The station of each building, the stations' records and the walls' own stations
+    ((side, station) pairs) under a :class:`~pounding.ground_motion.spatial.SpatialMotion`
+    with more than one distinct record (:mod:`pounding.integrate.stations`);
+    ``(None, [], ())`` otherwise."""
     if not isinstance(motion, SpatialMotion):
-        return None, []
+        return None, [], ()
     index, records = motion.stations()
     if len(index) != len(model.buildings):
         raise ValueError(f"motion: a spatially varying motion needs one record per building "
                          f"({len(model.buildings)}; got {len(index)})")
     if len(records) == 1:
-        return None, []
-    return tuple(index), records
+        return None, [], ()
+    return tuple(index), records, tuple(motion.wall_stations().items())
 
 
 def _failure_text(model: PoundingModel, km: KernelModel,

@@ -20,6 +20,12 @@ and counts the work the moving ground does through the contact forces as input e
 the energy balance still closes. The contact rows gain the two stations' displacements with
 weights +1 (left) and −1 (right).
 
+A wall at an end of the row (a moat wall, a bridge's abutment) stands on its building's
+ground, or on a station of its own where the motion gives it one
+(:attr:`~pounding.ground_motion.spatial.SpatialMotion.walls`): its contact rows then gain
+the wall's station and the building's, ``δ = u_g,wall − (u_1 + u_g,1) − gap`` on the left,
+``(u_n + u_g,n) − u_g,wall − gap`` on the right.
+
 Not yet: buildings in plan (two ground components), links between buildings on different
 stations, yielding frames (refused in one line).
 """
@@ -61,11 +67,13 @@ def _check(model: PoundingModel, stations: tuple[int, ...]) -> None:
                              "differently shaken buildings are not modelled yet")
 
 
-def station_kernel_model(model: PoundingModel, stations: tuple[int, ...]) -> KernelModel:
+def station_kernel_model(model: PoundingModel, stations: tuple[int, ...],
+                         wall_stations: tuple[tuple[str, int], ...] = ()) -> KernelModel:
     """The model's :class:`~pounding.integrate.kernel_model.KernelModel` with each building
-    on the ground of its station ``stations[b]`` (0 … S − 1) and the S stations' ground
-    displacements as DOFs ``N … N + S − 1`` (module docstring); remembered like
-    :func:`~pounding.integrate.kernel_model.kernel_model`.
+    on the ground of its station ``stations[b]`` (0 … S − 1), the walls on the sides of
+    ``wall_stations`` on theirs ((side, station) pairs; the others on their building's
+    ground), and the S stations' ground displacements as DOFs ``N … N + S − 1`` (module
+    docstring); remembered like :func:`~pounding.integrate.kernel_model.kernel_model`.
 
     Raises
     ------
@@ -73,15 +81,21 @@ def station_kernel_model(model: PoundingModel, stations: tuple[int, ...]) -> Ker
         For what is not modelled yet (module docstring), in one line.
     """
     _check(model, stations)
-    return remembered_for(model, _STATION_MODELS, (id(model), stations),
-                          lambda: _assemble(model, stations))
+    sides = {w.side for w in model.walls}
+    for side, _ in wall_stations:
+        if side not in sides:
+            raise ValueError(f"motion: a ground for the {side} wall, but the row has no wall "
+                             f"on its {side}")
+    return remembered_for(model, _STATION_MODELS, (id(model), stations, wall_stations),
+                          lambda: _assemble(model, stations, dict(wall_stations)))
 
 
-def _assemble(model: PoundingModel, stations: tuple[int, ...]) -> KernelModel:
+def _assemble(model: PoundingModel, stations: tuple[int, ...],
+              wall_stations: dict[str, int]) -> KernelModel:
     """:func:`station_kernel_model`, assembled."""
     base = kernel_model(model)
     N = base.n
-    S = max(stations) + 1
+    S = max([*stations, *wall_stations.values()]) + 1
     n = N + S
     fl = base.floors
     r = np.zeros((n, S))
@@ -106,10 +120,18 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...]) -> KernelModel:
     nc, width = cdof.shape
     dof = np.concatenate([cdof, np.zeros((nc, 2), dtype=np.int64)], axis=1)
     w = np.concatenate([cw, np.zeros((nc, 2))], axis=1)
+    last = len(model.buildings) - 1
     for c in model.contacts:
-        if c.on_wall:
-            continue  # (a moat wall stands on its building's ground)
-        left, right = stations[c.pair], stations[c.pair + 1]
+        if c.on_wall:  # (on its own station, or on its building's ground)
+            side = "left" if c.left.building < 0 else "right"
+            if side not in wall_stations:
+                continue
+            if side == "left":
+                left, right = wall_stations["left"], stations[0]
+            else:
+                left, right = stations[last], wall_stations["right"]
+        else:
+            left, right = stations[c.pair], stations[c.pair + 1]
         if left != right:
             dof[c.index, width:] = (N + left, N + right)
             w[c.index, width:] = (1.0, -1.0)

@@ -197,16 +197,22 @@ def building_summary(r: Response) -> list[dict[str, Any]]:
 def spatial_summary(r: Response) -> dict[str, Any]:
     """``spatial``: under a spatially varying motion
     (:class:`~pounding.ground_motion.spatial.SpatialMotion`), how the buildings' motions were
-    made, and each building's record with its delay [s] and its PGA [g]; empty otherwise."""
+    made, and each building's record with its delay [s] and its PGA [g] (and each end wall's
+    on a ground of its own, ``walls``); empty otherwise."""
     from pounding.ground_motion.spatial import SpatialMotion
 
     m = r.motion
     if not isinstance(m, SpatialMotion):
         return {}
-    return {"spatial": {"how": m.description or "one record per building",
-                        "buildings": [{"building": f"B{b + 1}", "record": rec.name,
-                                       "delay_s": d, "pga_g": rec.pga_g}
-                                      for b, (rec, d) in enumerate(zip(m.records, m.delays))]}}
+    out: dict[str, Any] = {
+        "how": m.description or "one record per building",
+        "buildings": [{"building": f"B{b + 1}", "record": rec.name, "delay_s": d,
+                       "pga_g": rec.pga_g}
+                      for b, (rec, d) in enumerate(zip(m.records, m.delays))]}
+    if m.walls:
+        out["walls"] = [{"side": side, "record": rec.name, "delay_s": m.wall_delays[side],
+                         "pga_g": rec.pga_g} for side, rec in m.walls.items()]
+    return {"spatial": out}
 
 
 def bearing_summary(r: Response) -> dict[str, Any]:

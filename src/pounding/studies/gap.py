@@ -335,26 +335,29 @@ def _own_record(motion: GroundMotion | GroundMotionComponents, building: int
 
 
 def _grounds(motion: object, n_buildings: int, dt: float, nt: int
-             ) -> list[tuple[FloatArray, FloatArray]]:
+             ) -> tuple[list[tuple[FloatArray, FloatArray]],
+                        dict[str, tuple[FloatArray, FloatArray]]]:
     """Each building's ground displacement [m] and velocity [m/s] at the ``nt`` output
-    steps ``dt`` apart: all zero under one record;
-    under a :class:`~pounding.ground_motion.spatial.SpatialMotion` its record integrated
-    exactly (linear between samples, from rest), as the time stepper integrates it (the
-    absolute ground displacement: only differences between grounds enter a gap)."""
+    steps ``dt`` apart, and those of the end walls on a ground of their own (by side): all
+    zero under one record; under a :class:`~pounding.ground_motion.spatial.SpatialMotion`
+    its record integrated exactly (linear between samples, from rest), as the time stepper
+    integrates it (the absolute ground displacement: only differences between grounds enter
+    a gap)."""
     from pounding.ground_motion.spatial import SpatialMotion
 
     zero = np.zeros(nt)
     if not isinstance(motion, SpatialMotion):
-        return [(zero, zero)] * n_buildings
+        return [(zero, zero)] * n_buildings, {}
     from pounding.integrate.grid import ground_on_grid
 
-    out = []
-    for rec in motion.records:
+    def integrated(rec: GroundMotion) -> tuple[FloatArray, FloatArray]:
         a = ground_on_grid(rec, dt, (nt - 1) * dt)[:nt]
         v = np.concatenate([[0.0], np.cumsum(0.5 * dt * (a[:-1] + a[1:]))])
         u = np.concatenate([[0.0], np.cumsum(dt * v[:-1] + dt * dt * (2 * a[:-1] + a[1:]) / 6)])
-        out.append((u, v))
-    return out
+        return u, v
+
+    return ([integrated(rec) for rec in motion.records],
+            {side: integrated(rec) for side, rec in motion.walls.items()})
 
 
 def _alone(building: ShearBuilding) -> PoundingModel:
@@ -494,22 +497,22 @@ def critical_gaps(model: PoundingModel,
         step = runs[0].dt
         durs[i] = runs[0].end
 
-        grounds = _grounds(ms[i], len(runs), step, runs[0].n)
+        grounds, wall_grounds = _grounds(ms[i], len(runs), step, runs[0].n)
 
-        def point(p: ContactPoint, other: ContactPoint) -> tuple[FloatArray, ...]:
+        def point(p: ContactPoint, other: ContactPoint, side: str) -> tuple[FloatArray, ...]:
             """The point's displacement and velocity relative to its ground, and its
-            ground's (a wall stands on the ground of the building beside it)."""
+            ground's (a wall stands on its own ground, or on the building's beside it)."""
             if isinstance(p, WallPoint):
                 zero = np.zeros(runs[0].n)
-                return (zero, zero, *grounds[other.building])
+                return (zero, zero, *wall_grounds.get(side, grounds[other.building]))
             run = runs[p.building]
             return (p.of(run.displacement), p.of(run.velocity), *grounds[p.building])
 
         for k, c in enumerate(cs):
             # contact points: a floor, a column point between two floors (interpolated), a
             # façade point of a floor in plan (with the floor's rotation), or a wall
-            ul, vl, ugl, vgl = point(c.left, c.right)
-            ur, vr, ugr, vgr = point(c.right, c.left)
+            ul, vl, ugl, vgl = point(c.left, c.right, "left")
+            ur, vr, ugr, vgr = point(c.right, c.left, "right")
             d, dd = ul + ugl - ur - ugr, vl + vgl - vr - vgr
             top, when = hermite_max(d, dd, step)
             low, _ = hermite_max(-d, -dd, step)
