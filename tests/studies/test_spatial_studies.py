@@ -137,13 +137,16 @@ def test_each_building_its_own_record_scaled_with_the_first() -> None:
         assert expected in str(info.value), str(info.value)
 
 
-def test_what_is_not_modelled_yet_is_refused_in_the_file() -> None:
+def test_a_link_between_buildings_on_different_grounds_in_the_file() -> None:
+    """A link across the pair under wave passage builds (no longer refused) and its
+    elongation in the run includes the grounds' offset."""
     data = pair()
     data["device"] = [{"type": "viscous", "floors": ["B1F1", "B2F1"], "c": 1e6}]
-    with pytest.raises(ValueError) as info:
-        parse_config(data, where="m.toml").build()
-    text = str(info.value)
-    assert text.startswith("m.toml: spatial: links between buildings (device[0], viscous)")
+    model, motion, kw = parse_config(data, where="m.toml").build()
+    res = simulate(model, motion.trimmed(3.0), duration=3.0)
+    assert res.link_ground is not None
+    rel = res.displacement[:, 1] - res.displacement[:, 0]
+    assert np.max(np.abs(res.link_displacement[:, 0] - rel)) > 1e-4  # (the grounds moved)
 
 
 def walled() -> dict[str, Any]:

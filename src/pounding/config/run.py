@@ -109,11 +109,6 @@ class RunConfig(Section):
             if frames:
                 raise field_error("spatial", f"yielding frames (building[{frames[0]}]) on "
                                              "spatially varying ground are not modelled yet")
-            links = [i for i, d in enumerate(self.device) if d.type != "bumper"]
-            if links:
-                raise field_error("spatial", f"links between buildings (device[{links[0]}], "
-                                             f"{self.device[links[0]].type}) on spatially "
-                                             "varying ground are not modelled yet")
             given = self.spatial.n_buildings()
             if self.spatial.records is not None and given != nb:
                 raise field_error(("spatial", "records"),
@@ -153,9 +148,6 @@ class RunConfig(Section):
                                        "frames are the row, its abutments the walls, its "
                                        "restrainers the links")
         assert self.bridge is not None
-        if self.spatial is not None and any(j.restrainer is not None for j in self.bridge.joint):
-            raise field_error("spatial", "restrainers (links) on spatially varying ground are "
-                                         "not modelled yet")
         if self.contact is None:
             raise field_error("contact", "required with a [bridge]: a [contact] table with the "
                                          "law of the impacts at the joints and abutments")

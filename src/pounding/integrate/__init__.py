@@ -81,7 +81,7 @@ from pounding.integrate.periods import (
     stiff_frame_rate,
 )
 from pounding.integrate.propagator import FreeStep, free_step
-from pounding.integrate.stations import station_kernel_model
+from pounding.integrate.stations import link_stations, station_kernel_model
 from pounding.integrate.start import (
     final_peaks,
     initial_peaks,
@@ -458,15 +458,24 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                         impact_overflow=bool(ws_i[I_OVERFLOW] == 1), wall_time=wall)
     n_storey_rows = len(model.element_rows)
     u_out, v_out, acc_out = out.u, out.v, out.acc
+    link_ground = None
     if stations is not None:  # (the buildings' DOFs; the grounds' are not reported)
         u_out, v_out, acc_out = (np.ascontiguousarray(a[:, :n_model])
                                  for a in (out.u, out.v, out.acc))
         pk = np.ascontiguousarray(pk[:n_model])
+        crossing = link_stations(model, stations)
+        if crossing:  # (each link's grounds' offset: the DOFs after the stations)
+            link_ground = np.zeros((2, out.u.shape[0], len(model.links)))
+            first = n - len(crossing)
+            for q, (i, _, _) in enumerate(crossing):
+                link_ground[0, :, i] = out.u[:, first + q]
+                link_ground[1, :, i] = out.v[:, first + q]
     return Result(model=model, motion=motion, dt=step, ground=ground,
                   displacement=u_out, velocity=v_out, abs_acceleration=acc_out,
                   penetration=out.pen, contact_force=out.force, energy=out.energy,
                   yielding_shear=out.element_force[:, :n_storey_rows],
                   link_force=out.element_force[:, n_storey_rows:], final_z=x[2 * n:].copy(),
+                  link_ground=link_ground,
                   impact_array=out.impacts[: min(n_imp, cap)].copy(), stats=stats,
                   contact_peak=out.peak_force, contact_peak_time=out.peak_force_time,
                   contact_impacts=out.impact_count, located_peaks=pk,

@@ -26,8 +26,15 @@ ground, or on a station of its own where the motion gives it one
 the wall's station and the building's, ``δ = u_g,wall − (u_1 + u_g,1) − gap`` on the left,
 ``(u_n + u_g,n) − u_g,wall − gap`` on the right.
 
-Not yet: buildings in plan (two ground components), links between buildings on different
-stations, yielding frames (refused in one line).
+A link between buildings on different stations (a bridge's restrainers across a joint
+between frames on their own grounds) stretches by ``(u_right + u_g,right) − (u_left +
+u_g,left)``: its row reads one more prescribed DOF, the grounds' offset
+``u_g,right − u_g,left`` (its record the difference of the two stations'; after the
+stations), through the slot a storey over a rocking footing uses for the footing
+(:data:`~pounding.integrate.layout.EL_ROCK` with lever −1); what the link pushes on it is
+taken back like a contact's, and its work through the moving grounds is input.
+
+Not yet: buildings in plan (two ground components), yielding frames (refused in one line).
 """
 
 from __future__ import annotations
@@ -42,10 +49,10 @@ from pounding.integrate.kernel_model import (
     padded_rows,
     remembered_for,
 )
-from pounding.integrate.layout import STATION_MASS
+from pounding.integrate.layout import EL_LEVER, EL_ROCK, STATION_MASS
 from pounding.model import PoundingModel
 
-__all__ = ["STATION_MASS", "station_kernel_model"]
+__all__ = ["STATION_MASS", "link_stations", "station_kernel_model"]
 
 
 _STATION_MODELS: dict[tuple[int, tuple[int, ...]], KernelModel] = {}
@@ -59,12 +66,6 @@ def _check(model: PoundingModel, stations: tuple[int, ...]) -> None:
     if model.yielding_frames:
         raise ValueError("motion: yielding frames on spatially varying ground are not modelled "
                          "yet; give one record for the row")
-    for link in model.links:
-        b = {e[0] for e in link.ends}
-        if len({stations[i] for i in b}) > 1:
-            raise ValueError(f"motion: link {link.name} joins buildings on different grounds "
-                             f"({', '.join(f'B{i + 1}' for i in sorted(b))}); links between "
-                             "differently shaken buildings are not modelled yet")
 
 
 def station_kernel_model(model: PoundingModel, stations: tuple[int, ...],
@@ -90,13 +91,29 @@ def station_kernel_model(model: PoundingModel, stations: tuple[int, ...],
                           lambda: _assemble(model, stations, dict(wall_stations)))
 
 
+def link_stations(model: PoundingModel, stations: tuple[int, ...]
+                  ) -> list[tuple[int, int, int]]:
+    """``(link, left station, right station)`` of every link whose ends stand on different
+    grounds (its left end the row's ``lo`` DOF, :meth:`PoundingModel.storey_arrays`)."""
+    ends = np.asarray(model.system.offsets)
+    out = []
+    for i, (lo, hi) in enumerate(model.link_dofs):
+        b_lo = int(np.searchsorted(ends, lo, side="right")) - 1
+        b_hi = int(np.searchsorted(ends, hi, side="right")) - 1
+        if stations[b_lo] != stations[b_hi]:
+            out.append((i, stations[b_lo], stations[b_hi]))
+    return out
+
+
 def _assemble(model: PoundingModel, stations: tuple[int, ...],
               wall_stations: dict[str, int]) -> KernelModel:
     """:func:`station_kernel_model`, assembled."""
     base = kernel_model(model)
     N = base.n
     S = max([*stations, *wall_stations.values()]) + 1
-    n = N + S
+    crossing = link_stations(model, stations)
+    Q = len(crossing)
+    n = N + S + Q
     fl = base.floors
     r = np.zeros((n, S))
     offsets = model.system.offsets
@@ -104,13 +121,22 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...],
         rows = slice(int(offsets[b]), int(offsets[b]) + bl.n)
         r[rows, stations[b]] = fl.r[rows, 0]
     r[N + np.arange(S), np.arange(S)] = -1.0
-    m_diag = np.r_[fl.m_diag, np.full(S, STATION_MASS)]
-    m_inv = np.r_[fl.m_inv, np.ones(S)]  # (what the contacts push is taken back: rhs.deriv)
+    el = base.elements
+    par = el.params.copy()
+    first_link = el.lo.size - len(model.links)
+    for q, (i, left, right) in enumerate(crossing):
+        # the grounds' offset u_g,right − u_g,left: ü = a_g,right − a_g,left
+        r[N + S + q, right] -= 1.0
+        r[N + S + q, left] += 1.0
+        par[first_link + i, EL_ROCK] = N + S + q
+        par[first_link + i, EL_LEVER] = -1.0
+    m_diag = np.r_[fl.m_diag, np.full(S + Q, STATION_MASS)]
+    m_inv = np.r_[fl.m_inv, np.ones(S + Q)]  # (what is pushed on them is taken back: rhs)
     K = np.zeros((n, n))
     K[:N, :N] = base.K
     C = np.zeros((n, n))
     C[:N, :N] = base.C
-    below = np.r_[fl.below, N + np.arange(S)]  # (a station is not a floor: no drift)
+    below = np.r_[fl.below, N + np.arange(S + Q)]  # (a station is not a floor: no drift)
     k_band, c_band = kernel_bands(K, C, fl.bw)
     floors = fl._replace(k_band=k_band, c_band=c_band,
                          m_diag=m_diag, m_inv=m_inv, mr=np.ascontiguousarray(m_diag[:, None] * r),
@@ -140,5 +166,6 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...],
     dof, w = padded_rows(dof, w)
     contacts = ContactRows(dof, w, ct.gap, ct.code, ct.params)
     return KernelModel(n=n, nz=base.nz, K=K, C=C,
-                       arrays=base.arrays._replace(floors=floors, contacts=contacts),
+                       arrays=base.arrays._replace(floors=floors, contacts=contacts,
+                                                   elements=el._replace(params=par)),
                        free_steps={}, periods_checked=set())

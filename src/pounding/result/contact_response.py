@@ -34,6 +34,7 @@ class ContactsAndLinks:
     contact_impacts: NDArray[np.int64] | None
     contact_peak_time: NDArray[np.float64] | None
     link_force: NDArray[np.float64] | None
+    link_ground: NDArray[np.float64] | None
     final_z: NDArray[np.float64] | None
     energy: NDArray[np.float64]
 
@@ -104,19 +105,24 @@ class ContactsAndLinks:
 
     @property
     def link_displacement(self) -> NDArray[np.float64]:
-        """Relative displacement of every link, right floor less left floor [m] (nt, n_l)."""
-        return self._link_kinematics(self.displacement)
+        """Relative displacement of every link, right floor less left floor [m] (nt, n_l)
+        (with the grounds' offset for a link between buildings on different grounds,
+        :attr:`link_ground`)."""
+        return self._link_kinematics(self.displacement, 0)
 
     @property
     def link_velocity(self) -> NDArray[np.float64]:
         """Rate of :attr:`link_displacement` [m/s] (nt, n_l)."""
-        return self._link_kinematics(self.velocity)
+        return self._link_kinematics(self.velocity, 1)
 
-    def _link_kinematics(self, floors: NDArray[np.float64]) -> NDArray[np.float64]:
+    def _link_kinematics(self, floors: NDArray[np.float64], which: int
+                         ) -> NDArray[np.float64]:
         cols = self.model.link_dofs
         out = np.zeros((floors.shape[0], len(cols)))
         for i, (lo, hi) in enumerate(cols):
             out[:, i] = floors[:, hi] - floors[:, lo]
+        if self.link_ground is not None:
+            out += self.link_ground[which]
         return out
 
     @property

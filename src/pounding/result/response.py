@@ -99,6 +99,10 @@ class Response(ContactsAndLinks):
     link_force : ndarray (nt, n_l), optional
         Force [N] of every link between buildings (:attr:`PoundingModel.links` order),
         positive when it resists the right floor moving away from the left one.
+    link_ground : ndarray (2, nt, n_l), optional
+        Each link's grounds' offset ``u_g,right − u_g,left`` [m] and its rate [m/s] when
+        links join buildings on different grounds (spatially varying motion; zero columns
+        for a link on one ground); None otherwise.
     contact_peak_time : ndarray (n_c,), optional
         Time of each contact's peak force [s].
     hinge_rotation, hinge_moment : ndarray (nt, n_h), optional
@@ -155,6 +159,9 @@ class Response(ContactsAndLinks):
     contact_peak_time: NDArray[np.float64] | None = field(default=None, repr=False)
     located_peaks: NDArray[np.float64] | None = field(default=None, repr=False)
     link_force: NDArray[np.float64] | None = field(default=None, repr=False)
+    #: each link's grounds' offset u_g,right − u_g,left [m] and its rate [m/s]
+    #: (2, nt, n_l) when links join buildings on different grounds; None otherwise
+    link_ground: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_moment: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_peak_rotation: NDArray[np.float64] | None = field(default=None, repr=False)

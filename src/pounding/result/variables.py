@@ -171,7 +171,8 @@ def history_variables(result: Response) -> HistoryVariables:
                                  "right floor moving away from the left one)")
         data["link_displacement"] = var(result.link_displacement, ("time", "link"), "m",
                                         "relative displacement across each link "
-                                        "(right floor minus left floor)")
+                                        "(right floor minus left floor, with their "
+                                        "grounds' offset on different grounds)")
     hinges = hinge_table(result)
     if hinges and result.hinge_rotation is not None and result.hinge_moment is not None:
         data["hinge_rotation"] = var(result.hinge_rotation, ("time", "hinge"), "rad",
