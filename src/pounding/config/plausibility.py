@@ -36,8 +36,8 @@ MAX_PLAUSIBLE_SEAT_WIDTH = 3.0
 """Widest plausible seat of a bridge deck at a joint or an abutment [m].
 
 Seats are a few tenths of a metre to a little over one: AASHTO LRFD Art. 4.7.4.4's
-minimum, 150 % of (8 + 0.02 L + 0.08 H) in, is 0.9 m for a 300 m deck on 30 m columns
-(pounding.structure.seat_width). Above 3 m the number is most likely millimetres or
+empirical N = (8 + 0.02 L + 0.08 H) in is 0.90 m for a 300 m deck on 30 m columns, and its
+highest-zone minimum, 150 % of N, 1.35 m (pounding.structure.seat_width). Above 3 m the number is most likely millimetres or
 centimetres written as metres (``seat_width = 600`` for 600 mm)."""
 
 MIN_PLAUSIBLE_FLOOR_MASS = 1000.0
