@@ -75,3 +75,30 @@ def test_the_command_line_prints_a_warning_line_and_runs(tmp_path: Path,
                    "separation of buildings; is it in mm or cm?"]
     summary = json.loads((tmp_path / "out" / "summary.json").read_text(encoding="utf-8"))
     assert summary["warnings"] == [err[0].removeprefix("warning: ")]
+
+
+@pytest.mark.parametrize("path, value, expected", [
+    (("bridge", "joint", 0, "seat_width"), 600.0,
+     "m.toml: bridge.joint[0].seat_width: 600 m is wider than 3 m, more than any seat of a "
+     "bridge; is it in mm or cm?"),
+    (("bridge", "abutment_seat_widths"), [0.75, 75.0],
+     "m.toml: bridge.abutment_seat_widths[1]: 75 m is wider than 3 m, more than any seat of a "
+     "bridge; is it in mm or cm?"),
+    (("bridge", "joint", 0, "gap"), 25.0,
+     "m.toml: bridge.joint[0].gap: 25 m is wider than 2 m, more than any joint of a bridge; "
+     "is it in mm or cm?"),
+    (("bridge", "abutment_gaps"), [50.0, 0.05],
+     "m.toml: bridge.abutment_gaps[0]: 50 m is wider than 2 m, more than any joint of a "
+     "bridge; is it in mm or cm?"),
+])
+def test_a_bridge_gap_or_seat_in_the_wrong_unit_is_warned_of(path: tuple[Any, ...], value: Any,
+                                                             expected: str) -> None:
+    """A bridge's joint and abutment gaps and its seat widths in mm or cm written as m (the
+    gaps were not checked before: no warning)."""
+    import tomllib
+
+    doc = tomllib.loads((EXAMPLES / "bridge_two_frames.toml").read_text(encoding="utf-8"))
+    with pytest.warns(PlausibilityWarning) as caught:
+        cfg = parse_config(replaced(doc, path, value), EXAMPLES, where="m.toml")
+    assert [str(w.message) for w in caught] == [expected]
+    assert cfg.plausibility == (expected,)

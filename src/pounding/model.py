@@ -173,6 +173,10 @@ class PoundingModel:
         Rigid walls fixed to the ground at the ends of the row
         (:class:`pounding.structure.wall.MoatWall`, at most one a side); their contacts
         come after the buildings' (labels such as ``'B1F1-W'``). None by default.
+    bridge : Bridge, optional
+        The bridge the row was made of (:meth:`from_bridge` passes it; its frames are the
+        buildings): kept for what is read after a run, its seats
+        (:func:`pounding.result.bridge_seats.seat_checks`). None by default.
 
     Examples
     --------
@@ -193,11 +197,12 @@ class PoundingModel:
     level_tolerance: float
     devices: tuple[Link | Bumper, ...]
     walls: tuple[MoatWall, ...]
+    bridge: Bridge | None
 
     def __init__(self, buildings: Sequence[Building | PlanBuilding], gaps: Sequence[float],
                  contact: ContactSpec, name: str = "model", floor_to_column: bool = True,
                  level_tolerance: float = 0.1, devices: Sequence[Link | Bumper] = (),
-                 walls: Sequence[MoatWall] = ()) -> None:
+                 walls: Sequence[MoatWall] = (), bridge: Bridge | None = None) -> None:
         if len(buildings) < 1:
             raise ValueError("buildings: give at least one building")
         # a building in plan stands in the row as its matrix building (which keeps the plan)
@@ -225,6 +230,12 @@ class PoundingModel:
         frozen_set(self, "walls", tuple(walls))
         if self.walls:
             check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
+        if bridge is not None and not (isinstance(bridge, Bridge)
+                                       and len(bridge.frames) == len(row)
+                                       and all(f is b for f, b in zip(bridge.frames, row))):
+            raise ValueError("bridge: the buildings must be the bridge's frames, in order "
+                             "(PoundingModel.from_bridge)")
+        frozen_set(self, "bridge", bridge)
         self._check_law_codes()
 
     @classmethod

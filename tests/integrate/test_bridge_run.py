@@ -230,3 +230,148 @@ def test_restrainers_keep_a_narrow_seat_from_unseating() -> None:
         assert narrow[0].seat == "J1" and not narrow[0].meets_minimum
         assert all(c.meets_minimum and not c.unseated for c in at_code)
     assert margins["without"] < -0.02 and margins["with"] > 0.02
+
+
+SEATED = (TWO_FRAMES.replace('bundled = "el_centro"', 'bundled = "el_centro"\nscale = 2.0')
+          .replace("[bridge]\n", "[bridge]\nabutment_seat_widths = [0.5, 0.5]\nseat_clause = "
+                   "{ clause = \"aashto-lrfd\", seismic_zone = 4 }\n")
+          .replace("[[bridge.joint]]\ngap = 0.02\n", "[[bridge.joint]]\ngap = 0.02\n"
+                   "seat_width = 0.10\n")
+          + "[solver]\nduration = 20.0\ndt = 0.005\n")
+"""The two-frame bridge of the worked example with seats: 0.5 m at the abutments, 0.10 m at
+the joint (narrower than AASHTO LRFD's zone-4 minimum), under El Centro × 2 for 20 s."""
+
+
+def test_a_deck_unseats_without_restrainers_and_stays_seated_with_them(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The seats given in the model file, end to end: without restrainers `pounding run`
+    reports the joint's seat lost (negative margin) in summary.json and in a plain line;
+    with the cables the same seat keeps a positive margin (Result.seats). The peak opening
+    is the decks' relative displacement written out here, the margin the width less it,
+    the minimum AASHTO's 150 % of N with L = 30 m and H = 8 m."""
+    import json
+    import tomllib
+
+    from pounding.cli import main
+    from pounding.result import SEAT_FIELDS
+
+    need = 1.5 * (0.2032 + 30.0 / 600.0 + 8.0 / 150.0)  # 0.4598 m at every seat
+    without = SEATED.replace("restrainer = {", "# restrainer = {")
+    model_file = tmp_path / "bridge.toml"
+    model_file.write_text(without, encoding="utf-8")
+    capsys.readouterr()
+    assert main(["run", str(model_file), "--out", str(tmp_path / "out"), "--no-figures"]) == 0
+    printed = " ".join(capsys.readouterr().out.split())
+    seats = json.loads((tmp_path / "out" / "summary.json").read_text())["seats"]
+    assert [s["name"] for s in seats] == ["A1", "J1", "A2"]
+    assert all(tuple(s) == SEAT_FIELDS for s in seats)
+    j1 = seats[1]
+    # the same run in Python: the joint's opening is u(B2F1) - u(B1F1)
+    model, motion, solver = parse_config(tomllib.loads(without)).build()
+    res = simulate(model, motion, **solver)
+    u = res.displacement
+    opening = u[:, model.system.offsets[1]] - u[:, 0]
+    assert j1["peak_opening_m"] == pytest.approx(opening.max(), rel=1e-9)
+    assert j1["peak_opening_time_s"] == pytest.approx(res.time[np.argmax(opening)])
+    assert j1["margin_m"] == pytest.approx(0.10 - opening.max(), rel=1e-9)
+    assert j1["margin_m"] < -0.02 and j1["unseated"] is True
+    assert j1["required_m"] == pytest.approx(need, rel=1e-12)
+    assert j1["meets_minimum"] is False
+    assert (j1["deck_length_m"], j1["pier_height_m"]) == (30.0, 8.0)
+    assert j1["clause"].startswith("AASHTO LRFD Art. 4.7.4.4")
+    a1 = seats[0]
+    assert a1["peak_opening_m"] == pytest.approx(max(u[:, 0].max(), 0.0), rel=1e-9)
+    assert not a1["unseated"] and a1["meets_minimum"] is True
+    assert "Seats (peak openings at the output steps)" in printed
+    assert "Unseated at seat J1 (between B1 and B2)" in printed
+    assert "Seat J1 (between B1 and B2) is 100.0 mm wide, narrower than the 459.8 mm" in printed
+    assert "Unseated at seat A1" not in printed
+    assert [c.margin_m for c in res.seats] == pytest.approx([s["margin_m"] for s in seats])
+
+    model, motion, solver = parse_config(tomllib.loads(SEATED)).build()
+    kept = simulate(model, motion, **solver).seats
+    assert kept[1].seat == "J1" and not kept[1].unseated and kept[1].margin_m > 0.02
+    assert kept[1].peak_relative_displacement_m < j1["peak_opening_m"] - 0.05
+
+
+def test_seats_appear_only_where_the_model_gives_widths() -> None:
+    """No `seats` in the summary of a bridge without seat widths, nor of buildings; a seat
+    without a clause has null requirement fields."""
+    import tomllib
+
+    model, motion, _ = parse_config(tomllib.loads(BASE)).build()
+    res = simulate(model, motion, duration=1.0, dt=0.01)
+    assert "seats" not in res.summary() and res.seats == []
+    plain = BASE.replace("abutment_gaps = [0.05, 0.05]",
+                         "abutment_gaps = [0.05, 0.05]\nabutment_seat_widths = [\"none\", 0.4]")
+    model, motion, _ = parse_config(tomllib.loads(plain)).build()
+    (a2,) = simulate(model, motion, duration=1.0, dt=0.01).summary()["seats"]
+    assert a2["name"] == "A2" and a2["width_m"] == 0.4
+    assert a2["required_m"] is a2["clause"] is a2["meets_minimum"] is None
+    assert a2["margin_m"] == pytest.approx(0.4 - a2["peak_opening_m"])
+    buildings = load_config(example_path("seed_sdof_pair.toml")).build()
+    assert "seats" not in simulate(buildings.model, buildings.motion, duration=0.5).summary()
+
+
+@pytest.mark.parametrize("edit, message", [
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, \"none\"]\n"
+      "abutment_seat_widths = [0.5, 0.5]"),
+     'bridge.abutment_seat_widths[1]: a seat 0.5 m wide at an end with no abutment'),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, -0.5]"), "bridge.abutment_seat_widths[1]"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "seat_clause = { clause = \"aashto-lrfd\", seismic_zone = 4 }"),
+     "bridge.seat_clause: no seat has a width to check against it"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"aashto-lrfd\", "
+      "seismic_zone = 1 }"), "bridge.seat_clause.acceleration_coefficient: required in "
+                             "seismic zone 1"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"aashto-lrfd\", "
+      "seismic_zone = 5 }"), "bridge.seat_clause.seismic_zone"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"aashto-lrfd\", "
+      "seismic_zone = 4, skew = 90.0 }"), "bridge.seat_clause.skew"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"aashto-lrfd\", "
+      "seismic_zone = 4, name = \"x\" }"),
+     'bridge.seat_clause.name: not a key of clause = "aashto-lrfd"'),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"given\", name = "
+      "\"Caltrans SDC\", required = [0.76] }"),
+     "bridge.seat_clause.required: need 2 value(s), one per seat"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"given\", name = "
+      "\"Caltrans SDC\", required = [0.76, \"none\"] }"),
+     "bridge.seat_clause.required[1]: the seat has a width (0.5 m) but \"none\" here"),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"given\", "
+      "required = [0.76, 0.76] }"), "bridge.seat_clause.name: required with clause = \"given\""),
+    (("abutment_gaps = [0.05, 0.05]", "abutment_gaps = [0.05, 0.05]\n"
+      "abutment_seat_widths = [0.5, 0.5]\nseat_clause = { clause = \"caltrans-sdc\" }"),
+     "bridge.seat_clause.clause"),
+])
+def test_bad_seat_values_name_the_field(edit, message) -> None:
+    import tomllib
+
+    text = BASE.replace(*edit)
+    assert text != BASE
+    with pytest.raises(ValueError) as info:
+        parse_config(tomllib.loads(text))
+    assert message in str(info.value), str(info.value)
+
+
+def test_a_bad_joint_seat_width_exits_2_in_one_line(tmp_path: Path,
+                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    from pounding.cli import main
+
+    bad = tmp_path / "bad.toml"
+    bad.write_text(TWO_FRAMES.replace("gap = 0.02\n", "gap = 0.02\nseat_width = -0.3\n"),
+                   encoding="utf-8")
+    capsys.readouterr()
+    code = main(["run", str(bad), "--out", str(tmp_path / "out"), "--no-figures"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1, err
+    assert err[0].startswith("error: ") and "bridge.joint[0].seat_width" in err[0]
+    assert "-0.3" in err[0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]

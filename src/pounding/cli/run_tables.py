@@ -94,6 +94,7 @@ def print_run_summary(out: Any) -> None:
     _print_hinges(s, units)
     _print_contacts(r, units)
     _print_links(r, units)
+    _print_seats(s)
     console.print(Text.assemble("outputs in ", (str(out.out_dir), "bold"), ": ",
                                 ", ".join(sorted(p.name for p in out.files.values()))))
 
@@ -365,3 +366,52 @@ def _print_links(r: Any, units: tuple[float, str, float, str]) -> None:
     rows = [[link.name, link.readable().split(": ", 1)[1], number(f * ff), number(e * ef)]
             for link, f, e in zip(model.links, r.link_peak_force, r.link_dissipated)]
     print_table(console, "Links between buildings", cols, rows)
+
+
+def _seat_where(name: str, n_frames: int) -> str:
+    """``"A1 (under B1's left end)"``, ``"J1 (between B1 and B2)"``."""
+    if name == "A1":
+        return "A1 (under B1's left end)"
+    if name == "A2":
+        return f"A2 (under B{n_frames}'s right end)"
+    j = int(name[1:])
+    return f"{name} (between B{j} and B{j + 1})"
+
+
+def _print_seats(s: dict[str, Any]) -> None:
+    """The seats of a bridge (summary ``seats``): width, the clause's minimum, peak opening
+    and margin, in mm; a plain line for every seat lost or narrower than the minimum."""
+    seats = s.get("seats")
+    if not seats:
+        return
+    clauses = sorted({x["clause"] for x in seats if x["clause"] is not None})
+
+    def mm(v: float | None) -> str:
+        return "–" if v is None else number(1e3 * v)
+
+    cols = [Col("seat", "left"), Col("width [mm]"), Col("required [mm]"),
+            Col("peak opening [mm]"), Col("at t [s]"), Col("margin [mm]"),
+            Col("state", "left")]
+    rows = [[x["name"], mm(x["width_m"]), mm(x["required_m"]), mm(x["peak_opening_m"]),
+             "–" if x["peak_opening_time_s"] is None else f"{x['peak_opening_time_s']:.3f}",
+             mm(x["margin_m"]),
+             Text("UNSEATED", style="bold red") if x["unseated"] else "seated"]
+            for x in seats]
+    caption = ("margin = width − peak opening; required: " + "; ".join(clauses)
+               if clauses else "margin = width − peak opening; no clause checked")
+    print_table(console, "Seats (peak openings at the output steps)", cols, rows,
+                caption=caption)
+    n = len(s.get("buildings", [])) or 1
+    for x in seats:
+        where = _seat_where(x["name"], n)
+        if x["unseated"]:
+            console.print(Text(
+                f"Unseated at seat {where}: it opened {mm(x['peak_opening_m'])} mm at "
+                f"{x['peak_opening_time_s']:.3f} s, more than its {mm(x['width_m'])} mm seat "
+                f"(margin {mm(x['margin_m'])} mm): the deck resting there came off it.",
+                style="bold red"))
+        if x["meets_minimum"] is False:
+            console.print(Text(
+                f"Seat {where} is {mm(x['width_m'])} mm wide, narrower than the "
+                f"{mm(x['required_m'])} mm {x['clause']} asks.", style="yellow"))
+

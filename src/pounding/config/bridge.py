@@ -21,6 +21,17 @@ Frames left to right, the joints between them, the abutments at the ends (SI uni
     [[bridge.joint]]                  # one per joint, between frame j and j + 1
     gap = 0.025                       # [m]
     restrainer = { kind = "restrainer", k = 1.76e7, slack = 0.0127, yield_force = 1.76e6 }
+    seat_width = 0.60                 # [m] the seat under the joint (optional)
+
+Seats (optional): ``seat_width`` [m] of a joint, ``abutment_seat_widths = [left, right]``
+[m] (``"none"``: not checked; needs the abutment), and the clause their minimum is checked
+against, ``seat_clause``: ``{ clause = "aashto-lrfd", seismic_zone = 4,
+acceleration_coefficient = 0.4, skew = 0.0 }`` (AASHTO LRFD Art. 4.7.4.4; zone 1–4,
+A_s [g] — required in zone 1 —, skew [degrees]; L and H from the frames' spans and piers,
+:mod:`pounding.structure.bridge.seats`) or ``{ clause = "given", name = "...", required =
+[...] }`` (a required width [m] for every seat, ``A1``, ``J1`` …, ``A2``, ``"none"`` where
+not checked, from the clause ``name``). A run reports every seat's peak opening and margin
+(``summary.json``: ``seats``).
 
 Bearing ``type``: ``elastomeric`` (``stiffness`` [N/m], ``damping`` [N·s/m]),
 ``lead-rubber`` (``pre_yield_stiffness``, ``post_yield_stiffness`` [N/m],
@@ -63,7 +74,8 @@ from pounding.config.quantities import (
 from pounding.config.contact import LawConfig
 from pounding.config.storeys import StoreyLawConfig
 
-__all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "PierConfig"]
+__all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "PierConfig",
+           "SeatClauseConfig"]
 
 FlexuralRigidity = Annotated[float, Field(gt=0, le=1e15)]
 """A column's ``EI`` [N·m²]."""
@@ -215,7 +227,7 @@ class BridgeFrameConfig(Section):
                 assert bearing is not None
                 bearings.append(bearing.build(share))
         return BridgeFrame(self.mass, piers, bearings, deck_elevation=deck_elevation,
-                           zeta=zeta, name=self.name or name)
+                           zeta=zeta, name=self.name or name, spans=self.spans)
 
 
 class RestrainerConfig(Section):
@@ -260,10 +272,63 @@ class RestrainerConfig(Section):
 
 
 class JointConfig(Section):
-    """``[[bridge.joint]]``: the expansion joint between two frames."""
+    """``[[bridge.joint]]``: the expansion joint between two frames (and the width of the
+    seat under it, checked after a run)."""
 
     gap: Gap
     restrainer: RestrainerConfig | None = None
+    seat_width: Length | None = None
+
+
+SeatWidth = Length | Literal["none"]
+"""A seat width [m], or ``"none"``: a seat not checked."""
+
+_CLAUSE_KEYS: dict[str, tuple[set[str], set[str]]] = {  # clause: (required, optional)
+    "aashto-lrfd": ({"seismic_zone"}, {"acceleration_coefficient", "skew"}),
+    "given": ({"name", "required"}, set()),
+}
+
+
+class SeatClauseConfig(Section):
+    """``seat_clause = {...}`` of ``[bridge]``: the clause the seat widths are checked
+    against (module docstring, :mod:`pounding.structure.seat_width`)."""
+
+    clause: Literal["aashto-lrfd", "given"]
+    seismic_zone: Annotated[int, Field(ge=1, le=4)] | None = None
+    acceleration_coefficient: Annotated[float, Field(ge=0, le=5)] | None = None
+    skew: Annotated[float, Field(ge=0, lt=90)] | None = None
+    name: Annotated[str, Field(min_length=1, max_length=200)] | None = None
+    required: list[SeatWidth] | None = None
+
+    @model_validator(mode="after")
+    def _keys(self) -> SeatClauseConfig:
+        need, may = _CLAUSE_KEYS[self.clause]
+        for key in sorted(self.model_fields_set - need - may - {"clause"}):
+            raise field_error(key, f"not a key of clause = \"{self.clause}\" (got "
+                                    f"{fmt(getattr(self, key))}); it reads "
+                                    f"{', '.join(sorted(need | may))}")
+        for key in sorted(need):
+            if getattr(self, key) is None:
+                raise field_error(key, f"required with clause = \"{self.clause}\"")
+        if (self.clause == "aashto-lrfd" and self.seismic_zone == 1
+                and self.acceleration_coefficient is None):
+            raise field_error("acceleration_coefficient", "required in seismic zone 1: A_s "
+                                                          "[g] sets 75 % or 100 % of N")
+        if self.name is not None and not self.name.strip():
+            raise field_error("name", "name the clause the required widths come from")
+        return self
+
+    def build(self) -> Any:
+        """The clause object (:mod:`pounding.structure.seat_width`)."""
+        from pounding.structure.seat_width import AashtoLrfdSeatClause, GivenSeatWidths
+
+        if self.clause == "given":
+            assert self.name is not None and self.required is not None
+            return GivenSeatWidths(self.name, [None if w == "none" else float(w)
+                                               for w in self.required])
+        assert self.seismic_zone is not None
+        return AashtoLrfdSeatClause(self.seismic_zone, self.acceleration_coefficient or 0.0,
+                                    self.skew or 0.0)
 
 
 class BridgeConfig(Section):
@@ -274,6 +339,9 @@ class BridgeConfig(Section):
     abutment_gaps: Annotated[list[Gap | Literal["none"]],
                              Field(min_length=2, max_length=2)] | None = None
     abutment_law: LawConfig | None = None
+    abutment_seat_widths: Annotated[list[SeatWidth],
+                                    Field(min_length=2, max_length=2)] | None = None
+    seat_clause: SeatClauseConfig | None = None
     deck_elevation: Length | None = None
     zeta: Ratio = 0.05
 
@@ -287,7 +355,43 @@ class BridgeConfig(Section):
         if self.deck_elevation is not None and self.deck_elevation < tallest:
             raise field_error("deck_elevation", f"below the tallest pier's cap ({tallest:g} m; "
                                                 f"got {fmt(self.deck_elevation)})")
+        self._check_seats()
         return self
+
+    def seat_widths(self) -> list[float | None]:
+        """The width of every seat [m], ``A1``, ``J1`` …, ``A2`` (None: not checked)."""
+        ends = self.abutment_seat_widths or ["none", "none"]
+        return [None if ends[0] == "none" else float(ends[0]),
+                *(j.seat_width for j in self.joint),
+                None if ends[1] == "none" else float(ends[1])]
+
+    def _check_seats(self) -> None:
+        gaps = self.abutment_gaps or ["none", "none"]
+        for side, (width, gap) in enumerate(zip(self.abutment_seat_widths or [], gaps)):
+            if width != "none" and gap == "none":
+                raise field_error(("abutment_seat_widths", side),
+                                  f"a seat {fmt(width)} m wide at an end with no abutment "
+                                  f"(abutment_gaps[{side}] is \"none\" or not given); give "
+                                  "the abutment's gap, or \"none\" here")
+        widths = self.seat_widths()
+        clause = self.seat_clause
+        if clause is None:
+            return
+        if all(w is None for w in widths):
+            raise field_error("seat_clause", "no seat has a width to check against it: give "
+                                             "joint[].seat_width or abutment_seat_widths")
+        if clause.clause == "given":
+            assert clause.required is not None
+            if len(clause.required) != len(widths):
+                raise field_error(("seat_clause", "required"),
+                                  f"need {len(widths)} value(s), one per seat (left "
+                                  f"abutment, {len(widths) - 2} joint(s), right abutment; "
+                                  f"\"none\" where not checked), got {len(clause.required)}")
+            for i, (w, need) in enumerate(zip(widths, clause.required)):
+                if w is not None and need == "none":
+                    raise field_error(("seat_clause", "required", i),
+                                      f"the seat has a width ({w:g} m) but \"none\" here: "
+                                      "give its required width [m]")
 
     def build(self, name: str = "bridge") -> Any:
         """The :class:`pounding.structure.bridge.Bridge` named ``name``."""
@@ -306,6 +410,13 @@ class BridgeConfig(Section):
         abutments = tuple(None if g == "none" else Abutment(float(g), law) for g in gaps)
         restrainers = [Restrainer(j, joint.restrainer.model_dump(exclude_none=True))
                        for j, joint in enumerate(self.joint) if joint.restrainer is not None]
+        clause = None
+        if self.seat_clause is not None:
+            with prefixed("seat_clause", SeatClauseConfig.model_fields):
+                clause = self.seat_clause.build()
+        widths = self.seat_widths()
         return Bridge(tuple(frames), tuple(joint.gap for joint in self.joint),
                       abutments=abutments,  # type: ignore[arg-type]
-                      restrainers=tuple(restrainers), name=name)
+                      restrainers=tuple(restrainers), name=name,
+                      seat_widths=tuple(widths) if any(w is not None for w in widths) else (),
+                      seat_clause=clause)

@@ -19,7 +19,7 @@ from pounding.config.base import fmt
 if TYPE_CHECKING:
     from pounding.config.run import Built, RunConfig
 
-__all__ = ["MAX_PLAUSIBLE_GAP", "MIN_PLAUSIBLE_FLOOR_MASS", "MIN_PLAUSIBLE_PERIOD",
+__all__ = ["MAX_PLAUSIBLE_GAP", "MAX_PLAUSIBLE_SEAT_WIDTH", "MIN_PLAUSIBLE_FLOOR_MASS", "MIN_PLAUSIBLE_PERIOD",
            "MAX_PLAUSIBLE_PERIOD", "MAX_PLAUSIBLE_PGA_G", "MAX_PLAUSIBLE_FRICTION",
            "plausibility_warnings"]
 
@@ -31,6 +31,14 @@ Codes ask for separations of the order of the buildings' peak displacements: ASC
 SRSS, giving centimetres for low-rise buildings and tens of centimetres for tall ones; a
 moat is as wide as the isolators' displacement capacity (0.2–1 m). Above 2 m the number
 is most likely millimetres or centimetres written as metres (``gap = 40`` for 40 mm)."""
+
+MAX_PLAUSIBLE_SEAT_WIDTH = 3.0
+"""Widest plausible seat of a bridge deck at a joint or an abutment [m].
+
+Seats are a few tenths of a metre to a little over one: AASHTO LRFD Art. 4.7.4.4's
+empirical N = (8 + 0.02 L + 0.08 H) in is 0.90 m for a 300 m deck on 30 m columns, and its
+highest-zone minimum, 150 % of N, 1.35 m (pounding.structure.seat_width). Above 3 m the number is most likely millimetres or
+centimetres written as metres (``seat_width = 600`` for 600 mm)."""
 
 MIN_PLAUSIBLE_FLOOR_MASS = 1000.0
 """Lightest plausible floor (or base slab) [kg].
@@ -76,6 +84,7 @@ def plausibility_warnings(cfg: RunConfig, built: Built) -> list[str]:
     ``<key>: <value> …, the probable mistake``; none for a plausible model."""
     out: list[str] = []
     out += _gaps(cfg)
+    out += _bridge_lengths(cfg)
     out += _masses(cfg, built)
     out += _periods(cfg, built)
     out += _pga(cfg, built)
@@ -95,6 +104,31 @@ def _gaps(cfg: RunConfig) -> list[str]:
         if gap > MAX_PLAUSIBLE_GAP:
             out.append(f"{key}: {fmt(gap)} m is wider than {fmt(MAX_PLAUSIBLE_GAP)} m, more "
                        f"than any separation of buildings; is it in mm or cm?")
+    return out
+
+
+def _bridge_lengths(cfg: RunConfig) -> list[str]:
+    """A bridge's joint and abutment gaps (as :func:`_gaps`) and its seat widths."""
+    bridge = cfg.bridge
+    if bridge is None:
+        return []
+    out = []
+    gaps = [(f"bridge.joint[{j}].gap", joint.gap) for j, joint in enumerate(bridge.joint)]
+    gaps += [(f"bridge.abutment_gaps[{i}]", g)
+             for i, g in enumerate(bridge.abutment_gaps or []) if g != "none"]
+    for key, gap in gaps:
+        if float(gap) > MAX_PLAUSIBLE_GAP:
+            out.append(f"{key}: {fmt(float(gap))} m is wider than {fmt(MAX_PLAUSIBLE_GAP)} m, "
+                       "more than any joint of a bridge; is it in mm or cm?")
+    seats = [(f"bridge.joint[{j}].seat_width", joint.seat_width)
+             for j, joint in enumerate(bridge.joint) if joint.seat_width is not None]
+    seats += [(f"bridge.abutment_seat_widths[{i}]", w)
+              for i, w in enumerate(bridge.abutment_seat_widths or []) if w != "none"]
+    for key, width in seats:
+        if float(width) > MAX_PLAUSIBLE_SEAT_WIDTH:
+            out.append(f"{key}: {fmt(float(width))} m is wider than "
+                       f"{fmt(MAX_PLAUSIBLE_SEAT_WIDTH)} m, more than any seat of a bridge; "
+                       "is it in mm or cm?")
     return out
 
 

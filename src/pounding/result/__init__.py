@@ -9,6 +9,8 @@ modules below are how the package is built, each importing only those under it:
   in NumPy and compiled (numba);
 * :mod:`~pounding.result.storeys` — storeys as an engineer reads them: isolation bearings,
   storey forces of buildings in plan, floor names;
+* :mod:`~pounding.result.bridge_seats` — a bridge's seats: their openings, peaks and
+  margins against the seat widths (:func:`seat_checks`);
 * :mod:`~pounding.result.response` — :class:`Response`, the arrays of a run and every
   quantity derived from them (drifts, shears, peaks, impacts per contact, energies);
 * :mod:`~pounding.result.storey_peaks` — the bearing and plan tables of a response;
@@ -37,6 +39,8 @@ _EXPORTS: dict[str, str] = {
         "abs_max_columns", "abs_max_drift", "energy_residual_max")},
     **{name: "pounding.result.storeys" for name in (
         "bearing_law", "bearing_mask", "floor_name", "plan_storey_forces")},
+    **{name: "pounding.result.bridge_seats" for name in (
+        "SEAT_FIELDS", "seat_checks", "seat_openings", "seat_summary")},
     "ContactPeak": "pounding.result.contact_response",
     **{name: "pounding.result.response" for name in ("Response", "SolverStats")},
     **{name: "pounding.result.storey_peaks" for name in (
@@ -61,6 +65,7 @@ __all__ = [
     "HistoryVariables",
     "PlanStoreys",
     "Response",
+    "SEAT_FIELDS",
     "Result",
     "SolverStats",
     "Variable",
@@ -76,6 +81,9 @@ __all__ = [
     "plan_storey_forces",
     "plan_storeys",
     "save_result",
+    "seat_checks",
+    "seat_openings",
+    "seat_summary",
     "summarize",
 ]
 
@@ -84,6 +92,12 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.result.bridge_seats import (
+        SEAT_FIELDS,
+        seat_checks,
+        seat_openings,
+        seat_summary,
+    )
     from pounding.result.columns import ENERGY_NAMES, IMPACT_COLUMNS
     from pounding.result.contact_response import ContactPeak
     from pounding.result.demands import DEMANDS, Demand

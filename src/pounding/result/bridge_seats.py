@@ -12,6 +12,11 @@ support:
 The peak opening is the largest of these at the output steps (0 if the seat only closed);
 the margin is the seat width less it (negative: the deck came off its seat,
 :func:`pounding.structure.seat_width.unseating_margin`).
+
+A model made of a :class:`~pounding.structure.bridge.Bridge` keeps it
+(:attr:`pounding.model.PoundingModel.bridge`): its seat widths and clause
+(:meth:`~pounding.structure.bridge.Bridge.seats`) are what :func:`seat_checks` reads by
+default, and what ``summary.json`` lists under ``seats`` (:func:`seat_summary`).
 """
 
 from __future__ import annotations
@@ -23,7 +28,12 @@ import numpy as np
 
 from pounding.structure.seat_width import AASHTO_LRFD_CLAUSE, SeatCheck, check_seat
 
-__all__ = ["seat_checks", "seat_openings"]
+__all__ = ["SEAT_FIELDS", "seat_checks", "seat_openings", "seat_summary"]
+
+SEAT_FIELDS: tuple[str, ...] = (
+    "name", "width_m", "required_m", "clause", "peak_opening_m", "peak_opening_time_s",
+    "margin_m", "unseated", "meets_minimum", "deck_length_m", "pier_height_m")
+"""The keys of each seat in ``summary.json``'s ``seats`` (:func:`seat_summary`)."""
 
 
 def _decks(result: Any) -> list[int]:
@@ -47,43 +57,95 @@ def seat_openings(result: Any) -> tuple[list[str], np.ndarray]:
     return names, openings
 
 
-def seat_checks(result: Any, seat_widths: Sequence[float | None],
-                required: Sequence[float | None],
+def _peaks(result: Any) -> tuple[list[str], np.ndarray, np.ndarray]:
+    """The seats' names, peak openings [m] (≥ 0) and their times [s] (NaN where the seat
+    never opened)."""
+    names, openings = seat_openings(result)
+    k = np.argmax(openings, axis=0)
+    peaks = openings[k, np.arange(openings.shape[1])]
+    times = np.where(peaks > 0.0, np.asarray(result.time)[k], np.nan)
+    return names, np.maximum(peaks, 0.0), times
+
+
+def seat_checks(result: Any, seat_widths: Sequence[float | None] | None = None,
+                required: Sequence[float | None] | None = None,
                 clause: str = AASHTO_LRFD_CLAUSE) -> list[SeatCheck]:
     """Every seat's check: its width, the minimum the clause asks, the peak opening of the
-    run and the margin.
+    run, when it peaked, and the margin.
 
     Parameters
     ----------
     result : pounding.result.Result
         A run of a bridge (every building a :class:`~pounding.structure.bridge.BridgeFrame`).
-    seat_widths : sequence of float or None
+    seat_widths : sequence of float or None, optional
         Seat width [m] of the left abutment, each joint left to right, the right abutment
-        (``n_frames + 1`` values; None: a seat not checked, e.g. a free end).
-    required : sequence of float or None
-        The minimum width the clause asks at each seat [m] (e.g.
+        (``n_frames + 1`` values; None: a seat not checked, e.g. a free end). Default: the
+        widths and clause of the bridge the model was made of
+        (:meth:`pounding.structure.bridge.Bridge.seats`; ``required`` and ``clause`` are
+        then not read).
+    required : sequence of float or None, optional
+        With ``seat_widths``: the minimum width the clause asks at each seat [m] (e.g.
         :func:`pounding.structure.seat_width.aashto_lrfd_required_support_length`), in the
-        same order (None where the seat is not checked).
+        same order (None where the seat is not checked); leave out: no clause.
     clause : str
         The clause ``required`` is from.
 
     Returns
     -------
     list of SeatCheck
-        One per seat with a width (``margin_m`` < 0: unseated).
+        One per seat with a width (``margin_m`` < 0: unseated), ``A1``, ``J1`` …, ``A2``.
+
+    Raises
+    ------
+    ValueError
+        The model is not a bridge, or (without ``seat_widths``) was not made from a
+        :class:`~pounding.structure.bridge.Bridge`; a list of the wrong length.
     """
-    names, openings = seat_openings(result)
-    for what, values in (("seat_widths", seat_widths), ("required", required)):
+    names, peaks, times = _peaks(result)
+    if seat_widths is None:
+        bridge = getattr(result.model, "bridge", None)
+        if bridge is None:
+            raise ValueError("seat_checks: the model was not made from a Bridge "
+                             "(PoundingModel.from_bridge); give seat_widths")
+        return [check_seat(s.name, s.width_m, float(peaks[s.index]), s.required_m, s.clause,
+                           peak_time_s=_time(times[s.index]), deck_length_m=s.deck_length_m,
+                           pier_height_m=s.pier_height_m)
+                for s in bridge.seats()]
+    needs = [None] * len(names) if required is None else required
+    for what, values in (("seat_widths", seat_widths), ("required", needs)):
         if len(values) != len(names):
             raise ValueError(f"{what}: need {len(names)} (left abutment, {len(names) - 2} "
                              f"joint(s), right abutment; None for a seat not checked), got "
                              f"{len(values)}")
-    peaks = np.maximum(openings.max(axis=0), 0.0)
     out = []
-    for name, width, peak, need in zip(names, seat_widths, peaks, required):
+    for i, (name, width, peak, need) in enumerate(zip(names, seat_widths, peaks, needs)):
         if width is None:
             continue
-        if need is None:
+        if need is None and required is not None:
             raise ValueError(f"required: seat {name} has a width but no required width")
-        out.append(check_seat(name, float(width), float(peak), float(need), clause))
+        out.append(check_seat(name, float(width), float(peak),
+                              None if need is None else float(need), clause,
+                              peak_time_s=_time(times[i])))
     return out
+
+
+def _time(t: float) -> float | None:
+    return None if not np.isfinite(t) else float(t)
+
+
+def seat_summary(result: Any) -> list[dict[str, Any]] | None:
+    """The seats of a bridge run as ``summary.json`` lists them: one dict a seat with a
+    width (keys :data:`SEAT_FIELDS`: ``name``; ``width_m``, ``required_m``,
+    ``peak_opening_m``, ``margin_m``, ``deck_length_m``, ``pier_height_m`` [m];
+    ``peak_opening_time_s`` [s]; ``clause``; ``unseated``, ``meets_minimum``; null where
+    there is no clause, or the seat never opened); None when the model is not a bridge or
+    gives no seat width."""
+    bridge = getattr(result.model, "bridge", None)
+    if bridge is None or not bridge.seats():
+        return None
+    return [{"name": c.seat, "width_m": c.width_m, "required_m": c.required_m,
+             "clause": c.clause, "peak_opening_m": c.peak_relative_displacement_m,
+             "peak_opening_time_s": c.peak_time_s, "margin_m": c.margin_m,
+             "unseated": c.unseated, "meets_minimum": c.meets_minimum,
+             "deck_length_m": c.deck_length_m, "pier_height_m": c.pier_height_m}
+            for c in seat_checks(result)]

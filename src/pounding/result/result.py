@@ -19,6 +19,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pounding.result.bridge_seats import seat_checks
 from pounding.result.columns import IMPACT_COLUMNS, rounded_length
 from pounding.result.files import save_result
 from pounding.result.response import Response
@@ -37,6 +38,8 @@ if TYPE_CHECKING:
     import pandas as pd
     import xarray as xr
 
+    from pounding.structure.seat_width import SeatCheck
+
 __all__ = ["Result"]
 
 
@@ -46,9 +49,19 @@ class Result(Response):
 
     Its data and derived quantities are those of :class:`~pounding.result.response.Response`
     (same fields, same constructor); a result adds :attr:`impacts`, :attr:`bearings`,
-    :attr:`plan_storeys`, :meth:`history_variables`, :meth:`to_dataset`, :meth:`summary` and
-    :meth:`save`.
+    :attr:`seats`, :attr:`plan_storeys`, :meth:`history_variables`, :meth:`to_dataset`,
+    :meth:`summary` and :meth:`save`.
     """
+
+    @cached_property
+    def seats(self) -> list[SeatCheck]:
+        """The seats of a bridge with a width (``A1``, ``J1`` …, ``A2``): width, the
+        clause's minimum, peak opening and its time, margin [m, s]
+        (:class:`~pounding.structure.seat_width.SeatCheck`,
+        :func:`pounding.result.bridge_seats.seat_checks`); empty when the model was not made
+        from a :class:`~pounding.structure.bridge.Bridge` with seat widths."""
+        bridge = getattr(self.model, "bridge", None)
+        return seat_checks(self) if bridge is not None and bridge.seats() else []
 
     @cached_property
     def impacts(self) -> pd.DataFrame:

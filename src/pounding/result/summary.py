@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from pounding.result.bridge_seats import seat_summary
 from pounding.result.columns import ENERGY_NAMES, rounded_length
 from pounding.result.foundations import foundation_summary
 from pounding.result.storey_peaks import bearing_peaks, plan_storeys
@@ -18,7 +19,7 @@ if TYPE_CHECKING:
     from pounding.result.response import Response
 
 __all__ = ["bearing_summary", "building_summary", "hinge_summary", "inelastic_summary",
-           "summarize"]
+           "seats_summary", "summarize"]
 
 
 def summarize(r: Response) -> dict[str, Any]:
@@ -85,6 +86,7 @@ def summarize(r: Response) -> dict[str, Any]:
         **hinge_summary(r),
         **foundation_summary(r),
         **spatial_summary(r),
+        **seats_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
                    "rejected": r.stats.rejected, "events": r.stats.events,
                    "impact_table_overflow": r.stats.impact_overflow,
@@ -111,6 +113,14 @@ def floor_rotations(r: Response) -> list[tuple[int, int, str, float, float]]:
             out.append((b, k, f"B{b + 1}{bl.labels[j]}", float(peak[off + j]),
                         float(time[off + j])))
     return out
+
+
+def seats_summary(r: Response) -> dict[str, Any]:
+    """``seats``: each seat of a bridge with a width, its requirement, peak opening and
+    margin (:func:`pounding.result.bridge_seats.seat_summary`), if the model gives seat
+    widths."""
+    seats = seat_summary(r)
+    return {} if seats is None else {"seats": seats}
 
 
 def rotation_summary(r: Response) -> dict[str, Any]:

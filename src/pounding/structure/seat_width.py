@@ -27,15 +27,24 @@ The SI edition of AASHTO rounds these to (200 mm + 0.0017 L + 0.0067 H); against
 form the exact conversion used here is 1.6 % larger in the constant (203.2 mm), 2.0 % smaller
 in the L term and 0.5 % smaller in the H term, so the two differ by less than 2 %.
 
-Not implemented, for want of a source read (see docs/bridges.md): the AASHTO Guide
-Specifications for LRFD Seismic Bridge Design §4.12 (percentages by SDC and the SDC D
-equation) and the Caltrans Seismic Design Criteria seat-width equations.
+A bridge's seats are checked against a clause object
+(:attr:`pounding.structure.bridge.Bridge.seat_clause`): :class:`AashtoLrfdSeatClause`
+(the article above, its zone, A_s and skew) or
+:class:`GivenSeatWidths` (the widths another clause asks, computed by the engineer and
+stated with the clause's name).
+
+Not implemented, for want of a source that could be read and checked (see
+docs/bridges.md): the AASHTO Guide Specifications for LRFD Seismic Bridge Design §4.12
+(percentages by SDC and the SDC D equation) and the Caltrans Seismic Design Criteria
+seat-width equations; give their widths with :class:`GivenSeatWidths`.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import ClassVar
 
 INCH_M: float = 0.0254
 """One inch in metres (exact, international inch of 1959)."""
@@ -187,6 +196,92 @@ def aashto_lrfd_required_support_length(deck_length_m: float, column_height_m: f
                                                              skew_deg)
 
 
+# ============================================================= the clause of a bridge's seats
+@dataclass(frozen=True)
+class AashtoLrfdSeatClause:
+    """AASHTO LRFD Art. 4.7.4.4 at a bridge's seats: the percentage of Table 4.7.4.4-1 of
+    the empirical support length N (:func:`aashto_lrfd_required_support_length`).
+
+    Parameters
+    ----------
+    seismic_zone : int
+        The seismic zone of AASHTO LRFD Art. 3.10.6 (1, 2, 3 or 4).
+    acceleration_coefficient : float
+        A_s [g], ≥ 0 (read in zone 1 only; default 0).
+    skew_deg : float
+        S, the skew of the supports [degrees], in [0, 90) (default 0), the same at every
+        seat.
+
+    Examples
+    --------
+    >>> clause = AashtoLrfdSeatClause(seismic_zone=4, acceleration_coefficient=0.4)
+    >>> round(clause.required(60.96, 7.62), 5)   # L = 200 ft, H = 25 ft: 150 % of 14 in
+    0.5334
+    """
+
+    seismic_zone: int
+    acceleration_coefficient: float = 0.0
+    skew_deg: float = 0.0
+
+    key: ClassVar[str] = "aashto-lrfd"
+    """The clause's name in a model file (``seat_clause = { clause = "aashto-lrfd" }``)."""
+
+    name: ClassVar[str] = AASHTO_LRFD_CLAUSE
+    """The clause as a :class:`SeatCheck` names it."""
+
+    def __post_init__(self) -> None:
+        aashto_lrfd_support_length_percent(self.seismic_zone, self.acceleration_coefficient)
+        _skew("skew_deg", self.skew_deg)
+
+    def required(self, deck_length_m: float, column_height_m: float) -> float:
+        """The minimum support length [m] for a deck of length L and columns of average
+        height H [m] (:func:`aashto_lrfd_required_support_length`)."""
+        return aashto_lrfd_required_support_length(deck_length_m, column_height_m,
+                                                   self.skew_deg, self.seismic_zone,
+                                                   self.acceleration_coefficient)
+
+
+@dataclass(frozen=True)
+class GivenSeatWidths:
+    """Required seat widths stated seat by seat, with the clause they come from: for a
+    clause this module does not implement (the AASHTO Guide Specifications §4.12, the
+    Caltrans SDC), computed by the engineer.
+
+    Parameters
+    ----------
+    clause : str
+        The clause the widths come from, as the outputs name it (e.g. ``"Caltrans SDC 2.0,
+        computed by hand"``); not empty.
+    required : sequence of float or None
+        The required width of every seat of the bridge [m], > 0: the left abutment, each
+        joint left to right, the right abutment (None at a seat not checked).
+    """
+
+    clause: str
+    required: tuple[float | None, ...]
+
+    key: ClassVar[str] = "given"
+    """The clause's name in a model file (``seat_clause = { clause = "given", ... }``)."""
+
+    def __init__(self, clause: str, required: Sequence[float | None]) -> None:
+        if not isinstance(clause, str) or not clause.strip():
+            raise ValueError(f"clause: name the clause the required widths come from (got "
+                             f"{clause!r})")
+        values = tuple(None if w is None else _positive_length(f"required[{i}]", w)
+                       for i, w in enumerate(required))
+        object.__setattr__(self, "clause", clause.strip())
+        object.__setattr__(self, "required", values)
+
+    @property
+    def name(self) -> str:
+        """The clause as a :class:`SeatCheck` names it."""
+        return self.clause
+
+
+SeatClause = AashtoLrfdSeatClause | GivenSeatWidths
+"""A clause a bridge's seats are checked against."""
+
+
 # ================================================================================ the margin
 def unseating_margin(peak_opening_m: float, seat_width_m: float) -> float:
     """Unseating margin of a seat: seat width − peak opening of the joint [m].
@@ -227,22 +322,29 @@ class SeatCheck:
         The seat's label (e.g. ``"A1"``, ``"J2"``).
     width_m : float
         Seat width provided [m].
-    required_m : float
-        Minimum seat width of the clause [m].
-    clause : str
-        The clause ``required_m`` comes from.
+    required_m : float or None
+        Minimum seat width of the clause [m] (None: no clause checked).
+    clause : str or None
+        The clause ``required_m`` comes from (None: no clause).
     peak_relative_displacement_m : float
         Peak opening at the seat [m] (see :func:`unseating_margin`).
     margin_m : float
         ``width_m − peak_relative_displacement_m`` [m]; negative: unseated.
+    peak_time_s : float or None
+        When the opening peaked [s] (None: not known, or the seat never opened).
+    deck_length_m, pier_height_m : float or None
+        The L and H the clause was evaluated with [m] (None where it reads neither).
     """
 
     seat: str
     width_m: float
-    required_m: float
-    clause: str
+    required_m: float | None
+    clause: str | None
     peak_relative_displacement_m: float
     margin_m: float
+    peak_time_s: float | None = None
+    deck_length_m: float | None = None
+    pier_height_m: float | None = None
 
     @property
     def unseated(self) -> bool:
@@ -250,13 +352,16 @@ class SeatCheck:
         return self.margin_m < 0.0
 
     @property
-    def meets_minimum(self) -> bool:
-        """True when the seat is at least as wide as the clause requires."""
-        return self.width_m >= self.required_m
+    def meets_minimum(self) -> bool | None:
+        """True when the seat is at least as wide as the clause requires (None: no
+        clause)."""
+        return None if self.required_m is None else self.width_m >= self.required_m
 
 
-def check_seat(seat: str, width_m: float, peak_opening_m: float, required_m: float,
-               clause: str = AASHTO_LRFD_CLAUSE) -> SeatCheck:
+def check_seat(seat: str, width_m: float, peak_opening_m: float, required_m: float | None,
+               clause: str | None = AASHTO_LRFD_CLAUSE, *, peak_time_s: float | None = None,
+               deck_length_m: float | None = None,
+               pier_height_m: float | None = None) -> SeatCheck:
     """Build the :class:`SeatCheck` of one seat from a run's peak opening.
 
     Parameters
@@ -267,11 +372,14 @@ def check_seat(seat: str, width_m: float, peak_opening_m: float, required_m: flo
         Seat width provided [m], > 0.
     peak_opening_m : float
         Peak opening of the joint at the seat [m], finite.
-    required_m : float
+    required_m : float or None
         Minimum seat width of the clause [m], ≥ 0 (e.g. from
-        :func:`aashto_lrfd_required_support_length`).
-    clause : str
+        :func:`aashto_lrfd_required_support_length`); None: no clause (``clause`` is then
+        None too).
+    clause : str or None
         The clause ``required_m`` comes from.
+    peak_time_s, deck_length_m, pier_height_m : float, optional
+        When the opening peaked [s]; the L and H [m] the requirement was evaluated with.
 
     Returns
     -------
@@ -282,18 +390,24 @@ def check_seat(seat: str, width_m: float, peak_opening_m: float, required_m: flo
     ValueError
         On a bad width, opening or requirement; the message names it and its value.
     """
-    required = _length("required_m", required_m)
+    required = None if required_m is None else _length("required_m", required_m)
     margin = unseating_margin(peak_opening_m, width_m)
     return SeatCheck(seat=str(seat), width_m=float(width_m), required_m=required,
-                     clause=clause, peak_relative_displacement_m=float(peak_opening_m),
-                     margin_m=margin)
+                     clause=None if required is None else clause,
+                     peak_relative_displacement_m=float(peak_opening_m), margin_m=margin,
+                     peak_time_s=None if peak_time_s is None else float(peak_time_s),
+                     deck_length_m=None if deck_length_m is None else float(deck_length_m),
+                     pier_height_m=None if pier_height_m is None else float(pier_height_m))
 
 
 __all__ = [
     "AASHTO_LRFD_CLAUSE",
     "FOOT_M",
     "INCH_M",
+    "AashtoLrfdSeatClause",
+    "GivenSeatWidths",
     "SeatCheck",
+    "SeatClause",
     "aashto_empirical_support_length",
     "aashto_lrfd_required_support_length",
     "aashto_lrfd_support_length_percent",

@@ -4,10 +4,14 @@ pounding across their expansion joints and against the abutments.
 * :class:`BridgeFrame`, :class:`Pier`, :class:`Bearing`, :func:`pier_stiffness` — one frame
   (:mod:`pounding.structure.bridge.frame`);
 * :class:`Bridge` — the frames, joints, abutments and restrainers, and the
-  :class:`~pounding.model.PoundingModel` they make (:mod:`pounding.structure.bridge.bridge`).
+  :class:`~pounding.model.PoundingModel` they make (:mod:`pounding.structure.bridge.bridge`);
+* :class:`Seat` — a seat with its width and a clause's minimum, the L and H it read
+  (:mod:`pounding.structure.bridge.seats`).
 """
 
 from pounding.structure.bridge.bridge import Abutment, Bridge, Restrainer
 from pounding.structure.bridge.frame import Bearing, BridgeFrame, Pier, pier_stiffness
+from pounding.structure.bridge.seats import Seat
 
-__all__ = ["Abutment", "Bearing", "Bridge", "BridgeFrame", "Pier", "Restrainer", "pier_stiffness"]
+__all__ = ["Abutment", "Bearing", "Bridge", "BridgeFrame", "Pier", "Restrainer", "Seat",
+           "pier_stiffness"]

@@ -22,7 +22,11 @@ cable hinge restrainers for bridges", J. Struct. Eng. 126(4):500–509; Caltrans
   passes its keywords to :class:`~pounding.devices.Link` unchanged);
 * each frame stands on its own ground: under a
   :class:`~pounding.ground_motion.spatial.SpatialMotion` with one record per building, each
-  frame feels its own (the abutments move with the ground of the row's reference).
+  frame feels its own (the abutments move with the ground of the row's reference);
+* each **seat** (abutment ``A1``, joint ``J1`` …, abutment ``A2``) may have a width, checked
+  after a run against its peak opening and against a clause's minimum
+  (:attr:`Bridge.seat_widths`, :attr:`Bridge.seat_clause`, :meth:`Bridge.seats`,
+  :mod:`pounding.structure.bridge.seats`).
 
 A :class:`Bridge` holds these and gives the model's arguments
 (:meth:`Bridge.model_arguments`; :meth:`pounding.model.PoundingModel.from_bridge` builds the
@@ -38,9 +42,11 @@ from typing import Any
 
 from pounding.devices.link import Link
 from pounding.structure.bridge.frame import BridgeFrame
+from pounding.structure.bridge.seats import Seat, seat_names, seats_of
 from pounding.contact.spec import ContactSpec
+from pounding.structure.seat_width import AashtoLrfdSeatClause, GivenSeatWidths, SeatClause
 from pounding.structure.wall import MoatWall
-from pounding.validation import non_negative
+from pounding.validation import non_negative, positive
 
 __all__ = ["Abutment", "Bridge", "Restrainer"]
 
@@ -97,6 +103,10 @@ class Restrainer:
             raise ValueError(f"joint: need a joint index ≥ 0 (got {self.joint!r})")
         object.__setattr__(self, "link", MappingProxyType(dict(self.link)))
 
+    def __reduce__(self) -> tuple[type, tuple[int, dict[str, Any]]]:
+        # a mapping proxy cannot be pickled (copy, multiprocessing): it travels as a dict
+        return (Restrainer, (self.joint, dict(self.link)))
+
     def build(self, name: str = "") -> Link:
         """The link between deck ``joint`` (``B<joint+1>F1``) and the next."""
         left, right = f"B{self.joint + 1}F1", f"B{self.joint + 2}F1"
@@ -122,6 +132,14 @@ class Bridge:
         Restrainers across the joints (none by default).
     name : str
         A label.
+    seat_widths : sequence of float or None
+        The seat width of every seat [m], > 0: the left abutment, each joint left to right,
+        the right abutment (``len(frames) + 1`` values; None: a seat not checked); empty
+        (the default): no seat is checked. A seat at an end needs an abutment there.
+    seat_clause : AashtoLrfdSeatClause or GivenSeatWidths, optional
+        The clause whose minimum widths the seats are checked against
+        (:mod:`pounding.structure.seat_width`); None: the margins alone. Needs seat widths;
+        AASHTO LRFD's needs the spans of every frame under a checked seat.
     """
 
     frames: tuple[BridgeFrame, ...]
@@ -129,6 +147,8 @@ class Bridge:
     abutments: tuple[Abutment | None, Abutment | None] = (None, None)
     restrainers: tuple[Restrainer, ...] = ()
     name: str = "bridge"
+    seat_widths: tuple[float | None, ...] = ()
+    seat_clause: SeatClause | None = None
 
     def __post_init__(self) -> None:
         frames = tuple(self.frames)
@@ -164,6 +184,46 @@ class Bridge:
         object.__setattr__(self, "joint_gaps", gaps)
         object.__setattr__(self, "abutments", ab)
         object.__setattr__(self, "restrainers", rs)
+        object.__setattr__(self, "seat_widths", self._checked_seat_widths())
+        self._check_seat_clause()
+
+    def _checked_seat_widths(self) -> tuple[float | None, ...]:
+        widths = tuple(self.seat_widths)
+        if not widths:
+            return ()
+        names = seat_names(len(self.frames))
+        if len(widths) != len(names):
+            raise ValueError(f"seat_widths: need {len(names)} value(s), one per seat "
+                             f"({', '.join(names)}; None where not checked), got {len(widths)}")
+        out = tuple(None if w is None else positive(f"seat_widths[{i}]", w)
+                    for i, w in enumerate(widths))
+        for i, side in ((0, 0), (len(names) - 1, 1)):
+            if out[i] is not None and self.abutments[side] is None:
+                raise ValueError(f"seat_widths[{i}]: seat {names[i]} is at an end with no "
+                                 f"abutment (abutments[{side}] is None); give the abutment "
+                                 "(a large gap if its backwall is never reached) or no width")
+        return out
+
+    def _check_seat_clause(self) -> None:
+        clause = self.seat_clause
+        if clause is None:
+            return
+        if not isinstance(clause, AashtoLrfdSeatClause | GivenSeatWidths):
+            raise ValueError(f"seat_clause: expected an AashtoLrfdSeatClause or "
+                             f"GivenSeatWidths (got {type(clause).__name__})")
+        if not any(w is not None for w in self.seat_widths):
+            raise ValueError("seat_clause: no seat has a width to check against it "
+                             "(seat_widths)")
+        names = seat_names(len(self.frames))
+        if isinstance(clause, GivenSeatWidths):
+            if len(clause.required) != len(names):
+                raise ValueError(f"seat_clause.required: need {len(names)} value(s), one per "
+                                 f"seat ({', '.join(names)}), got {len(clause.required)}")
+            for i, (w, need) in enumerate(zip(self.seat_widths, clause.required)):
+                if w is not None and need is None:
+                    raise ValueError(f"seat_clause.required[{i}]: seat {names[i]} has a width "
+                                     "but no required width")
+        self.seats()  # (a frame without spans under an AASHTO-checked seat)
 
     @staticmethod
     def deck_elevation_of(frame: BridgeFrame) -> float:
@@ -195,13 +255,22 @@ class Bridge:
             out.append(r.build(name))
         return out
 
+    def seats(self) -> list[Seat]:
+        """Every seat with a width, its requirement under :attr:`seat_clause` and the L and
+        H it was evaluated with (:func:`pounding.structure.bridge.seats.seats_of`); empty
+        without seat widths."""
+        if not self.seat_widths:
+            return []
+        return seats_of(self.frames, self.seat_widths, self.seat_clause)
+
     def model_arguments(self) -> dict[str, Any]:
         """The keyword arguments of :class:`pounding.model.PoundingModel` but the contact:
         the frames as buildings, the joints as gaps, the abutments as walls, the
-        restrainers as devices, contacts floor to floor (deck to deck) only."""
+        restrainers as devices, contacts floor to floor (deck to deck) only, and the
+        bridge itself (the model keeps it: its seats are read after a run)."""
         return {"buildings": list(self.frames), "gaps": list(self.joint_gaps),
                 "walls": self.walls(), "devices": self.links(), "name": self.name,
-                "floor_to_column": False}
+                "floor_to_column": False, "bridge": self}
 
     def describe(self) -> str:
         """One line: frames, joints, abutments, restrainers."""

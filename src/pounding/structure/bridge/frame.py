@@ -212,18 +212,31 @@ class BridgeFrame(MatrixBuilding):
         Damping ratio of the frame's modes 1 and 2 (default 0.05; module docstring).
     name : str
         A label.
+    spans : sequence of float, optional
+        The span lengths of the deck segment [m], left to right (its length along the axis
+        is their sum, :attr:`deck_length`: the ``L`` of a seat-width clause,
+        :mod:`pounding.structure.seat_width`); None if not given (the dynamics do not read
+        it).
 
     Examples
     --------
-    >>> frame = BridgeFrame(2.0e6, [Pier(8.0, 5.0e7, 1.0e5)], Bearing.elastomeric(2.0e7))
-    >>> frame.labels, frame.n
-    (('deck', 'cap1'), 2)
+    >>> frame = BridgeFrame(2.0e6, [Pier(8.0, 5.0e7, 1.0e5)], Bearing.elastomeric(2.0e7),
+    ...                     spans=[30.0, 30.0])
+    >>> frame.labels, frame.n, frame.deck_length
+    (('deck', 'cap1'), 2, 60.0)
     """
 
     def __init__(self, deck_mass: float, piers: Sequence[Pier],
                  bearings: Bearing | Sequence[Bearing], deck_elevation: float | None = None,
-                 zeta: float = 0.05, name: str = "") -> None:
+                 zeta: float = 0.05, name: str = "",
+                 spans: Sequence[float] | None = None) -> None:
         positive("deck_mass", deck_mass)
+        spans_ = None if spans is None else tuple(float(s) for s in spans)
+        if spans_ is not None:
+            if not spans_:
+                raise ValueError("spans: give at least one span length [m] (or None)")
+            for i, s in enumerate(spans_):
+                positive(f"spans[{i}]", s)
         piers_ = tuple(piers)
         if not piers_ or not all(isinstance(p, Pier) for p in piers_):
             raise ValueError("piers: give at least one Pier")
@@ -262,6 +275,7 @@ class BridgeFrame(MatrixBuilding):
                          C=C, name=name, floors=[0], faces={"left": [0], "right": [0]})
         frozen = object.__setattr__
         frozen(self, "deck_mass", float(deck_mass))
+        frozen(self, "spans", spans_)
         frozen(self, "piers", piers_)
         frozen(self, "bearings", bearings_)
         frozen(self, "zeta", float(zeta))
@@ -272,10 +286,23 @@ class BridgeFrame(MatrixBuilding):
 
     # ----------------------------------------------------------------- the elements
     deck_mass: float
+    spans: tuple[float, ...] | None
     piers: tuple[Pier, ...]
     bearings: tuple[Bearing, ...]
     zeta: float
     rayleigh: tuple[float, float]
+
+    @property
+    def deck_length(self) -> float | None:
+        """Length of the deck segment along the axis [m]: the sum of its :attr:`spans`
+        (None if they were not given)."""
+        return None if self.spans is None else float(sum(self.spans))
+
+    @property
+    def mean_pier_height(self) -> float:
+        """The average height of the frame's piers [m] (:attr:`Pier.height`, the cap above
+        the ground): the ``H`` of a seat-width clause."""
+        return float(np.mean([p.height for p in self.piers]))
 
     @property
     def deck_dof(self) -> int:
@@ -340,6 +367,7 @@ class BridgeFrame(MatrixBuilding):
         if same is NotImplemented or not same:
             return same
         return (isinstance(other, BridgeFrame) and self.piers == other.piers
-                and self.bearings == other.bearings and self.zeta == other.zeta)
+                and self.bearings == other.bearings and self.zeta == other.zeta
+                and self.spans == other.spans)
 
     __hash__ = None
