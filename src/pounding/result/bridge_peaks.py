@@ -21,7 +21,7 @@ the abutments walls at the ends, the restrainers links between decks. Here:
   by ``−u_n``; closing is the opposite);
 * **restrainer** — peak force [N] and its time, the largest joint opening it saw, and for a
   cable restrainer whether it yielded (the opening passed ``slack + F_y / k``,
-  :meth:`pounding.devices.Link.yield_elongation`) and its plastic elongation at the end.
+  :attr:`pounding.devices.Link.yield_elongation`) and its plastic elongation at the end.
 
 An element's force is its law's (or its spring's ``k d``) plus its own dashpot ``c ḋ``
 (:func:`pounding.result.storey_peaks.bridge_element_histories`): the Rayleigh damping of the
@@ -327,7 +327,7 @@ def _restrainers(result: Response) -> list[RestrainerPeaks]:
             iz += 1
         cable = link.kind == "restrainer"
         fy = float(link.yield_force) if cable and link.yield_force is not None else float("nan")
-        y_open = float(link.yield_elongation()) if cable else float("nan")
+        y_open = float(link.yield_elongation) if cable else float("nan")
         peak_open = float(max(opening[:, i].max(), 0.0))
         y_open = y_open if np.isfinite(y_open) else float("nan")
         # yielded: its plastic elongation grew (exact, at the solver's steps); without it
