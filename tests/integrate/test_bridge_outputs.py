@@ -17,7 +17,14 @@ from pounding.hysteresis import Bilinear
 from pounding.integrate import simulate
 from pounding.model import PoundingModel
 from pounding.result.files import json_ready
-from pounding.structure.bridge import Abutment, Bearing, Bridge, BridgeFrame, Pier, Restrainer
+from pounding.structure.bridge import (
+    Abutment,
+    Bearing,
+    Bridge,
+    BridgeFrame,
+    Pier,
+    Restrainer,
+)
 
 KV = ContactSpec("kelvin-voigt", k=1.0e9, e=0.6)
 CABLES = {"kind": "restrainer", "k": 2.0e7, "slack": 0.01, "yield_force": 6.0e5,
@@ -64,8 +71,9 @@ def test_element_forces_balance_the_deck_and_the_caps(run) -> None:
     − (a₀M + a₁K_lin)v`` at the deck — and its pier's shear what balances its cap,
     ``F_p = F_b − m_c ü_abs − (a₀M + a₁K_lin)v`` at the cap: the equations of motion the
     kernel integrated, assembled here from the frame's matrices, not from the element
-    table. The histories agree to 1.4e-15 of the peak (asserted: 1e-9), a linear pier's shear is k × its drift,
-    the drift ratio its drift over its height, the yielding pier's ductility over 1."""
+    table. The histories agree to 1.4e-15 of the peak (asserted: 1e-9); a linear pier's
+    shear is k × its drift, the drift ratio its drift over its height, the yielding pier's
+    ductility over 1."""
     res = run
     bp = res.bridge
     assert [f.label for f in bp.frames] == ["B1", "B2"]

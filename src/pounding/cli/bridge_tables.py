@@ -14,8 +14,9 @@ import numpy as np
 
 from pounding.cli.app import console
 from pounding.cli.tables import Col, building_label, number, print_table
+from pounding.result.bridge_peaks import element_law_words
 
-__all__ = ["bridge_forces", "law_words", "print_bridge_tables"]
+__all__ = ["bridge_forces", "print_bridge_tables"]
 
 
 def _t(value: float) -> str:
@@ -25,18 +26,6 @@ def _t(value: float) -> str:
 
 def _mm(value: float) -> str:
     return number(1e3 * value)
-
-
-def law_words(law: str, yield_force: float, kind: str, units: tuple[float, str, float, str]
-              ) -> str:
-    """A pier's or bearing's law in a few words: ``linear``, ``bilinear, F_y 2000 kN``,
-    ``friction μW 600.2 kN`` (a sliding bearing)."""
-    ff, fu, _, _ = units
-    if not np.isfinite(yield_force):
-        return "linear"
-    if kind == "sliding":
-        return f"friction μW {number(yield_force * ff)} {fu}"
-    return f"{law.split('(')[0]}, F_y {number(yield_force * ff)} {fu}"
 
 
 def bridge_forces(bridge: Any) -> list[float]:
@@ -76,7 +65,8 @@ def _print_piers(bridge: Any, units: tuple[float, str, float, str]) -> None:
             Col("stiffness [kN/mm]"), Col("peak drift [mm]"), Col("drift ratio [%]"),
             Col("at t [s]"), Col(f"peak shear [{fu}]"), Col("at t [s]"), Col("ductility"),
             Col("residual drift [mm]")]
-    rows = [[p.label, law_words(p.law, p.yield_force, "pier", units), f"{p.height:g}", number(1e-6 * p.stiffness), _mm(p.peak_drift),
+    rows = [[p.label, element_law_words(p.law, p.yield_force, "pier"), f"{p.height:g}",
+             number(1e-6 * p.stiffness), _mm(p.peak_drift),
              number(100 * p.peak_drift_ratio, 3), _t(p.peak_drift_time),
              number(p.peak_shear * ff), _t(p.peak_shear_time),
              number(p.ductility, 3) if np.isfinite(p.ductility) else "–",
@@ -91,7 +81,8 @@ def _print_bearings(bridge: Any, units: tuple[float, str, float, str]) -> None:
     cols = [Col("bearing", "left"), Col("kind", "left"), Col("law", "left", wrap=True),
             Col("peak displacement [mm]"), Col("at t [s]"), Col(f"peak force [{fu}]"),
             Col("at t [s]"), Col("residual displacement [mm]")]
-    rows = [[b.label, b.kind, law_words(b.law, b.yield_force, b.kind, units), _mm(b.peak_displacement), _t(b.peak_displacement_time),
+    rows = [[b.label, b.kind, element_law_words(b.law, b.yield_force, b.kind),
+             _mm(b.peak_displacement), _t(b.peak_displacement_time),
              number(b.peak_force * ff), _t(b.peak_force_time),
              f"{1e3 * b.residual_displacement:+.2f}"] for b in bridge.bearings]
     print_table(console, "Bearings: deck relative to the pier cap", cols, rows, keys=1,
@@ -113,7 +104,7 @@ def _print_seats(r: Any, bridge: Any, units: tuple[float, str, float, str]) -> N
         if s.kind == "joint":
             between = f"B{s.position} – B{s.position + 1}"
         else:
-            between = f"abutment – B1" if s.position == 0 else f"B{n} – abutment"
+            between = "abutment – B1" if s.position == 0 else f"B{n} – abutment"
         hit = s.impacts > 0
         rows.append([s.name, between, number(1e3 * s.gap), str(s.impacts),
                      number(s.peak_force * ff) if hit else "–",

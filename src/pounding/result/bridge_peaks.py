@@ -42,8 +42,8 @@ from pounding.result.storey_peaks import BridgeElementPeaks, bridge_element_peak
 if TYPE_CHECKING:
     from pounding.result.response import Response
 
-__all__ = ["BridgePeaks", "FramePeaks", "RestrainerPeaks", "SeatPeaks", "bridge_peaks",
-           "bridge_summary", "is_bridge"]
+__all__ = ["BridgeBearingPeaks", "BridgePeaks", "FramePeaks", "PierPeaks", "RestrainerPeaks",
+           "SeatPeaks", "bridge_peaks", "bridge_summary", "element_law_words", "is_bridge"]
 
 
 class FramePeaks(NamedTuple):
@@ -221,6 +221,28 @@ class BridgePeaks(NamedTuple):
     def bearings(self) -> list[BridgeBearingPeaks]:
         """Every bearing, frame by frame."""
         return [b for f in self.frames for b in f.bearings]
+
+
+def element_law_words(law: str, yield_force: float | None, kind: str) -> str:
+    """A pier's or bearing's law in a few words for a table: ``linear``, ``bilinear, F_y
+    2000 kN``, ``friction μW 600.2 kN`` (a sliding bearing); forces in kN, MN from 100 MN.
+
+    Parameters
+    ----------
+    law : str
+        Its law as :attr:`PierPeaks.law` gives it (``linear`` or ``name(constants)``).
+    yield_force : float or None
+        Its law's ``F_y`` [N] (None or NaN: linear).
+    kind : str
+        ``pier`` or the bearing's kind (``elastomeric``, ``isolator``, ``sliding``).
+    """
+    if yield_force is None or not np.isfinite(yield_force):
+        return "linear"
+    factor, unit = (1e-6, "MN") if abs(yield_force) >= 1e8 else (1e-3, "kN")
+    value = f"{yield_force * factor:.4g} {unit}"
+    if kind == "sliding":
+        return f"friction μW {value}"
+    return f"{law.split('(')[0]}, F_y {value}"
 
 
 def is_bridge(model: Any) -> bool:
