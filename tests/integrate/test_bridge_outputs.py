@@ -189,3 +189,81 @@ def test_a_row_of_buildings_has_no_bridge_view() -> None:
                            ShearBuilding.uniform(1, 3e5, 1.2e7)], [0.02], KV)
     res = simulate(model, el_centro(), duration=1.0)
     assert res.bridge is None and "bridge" not in res.summary()
+
+
+# ------------------------------------------------------------------------ figures
+def test_bridge_figures_replace_the_storey_figures(run_restrained) -> None:
+    """A bridge's run draws its elevation and element figures in place of the storeys'
+    envelope and hysteresis figures (a blank page before); a row of buildings never
+    draws them."""
+    from pounding.plot.registry import RUN_FIGURES, figures_for
+
+    assert list(figures_for(run_restrained)) == [
+        "bridge_figure", "displacement_figure", "force_figure", "hysteresis_figure",
+        "bridge_element_figure", "energy_figure"]
+    assert RUN_FIGURES["bridge_figure"].file == "bridge.png"
+    assert RUN_FIGURES["bridge_element_figure"].file == "bridge_elements.png"
+
+
+def test_elevation_draws_the_seats_envelope_to_scale(run_restrained) -> None:
+    """The elevation to scale from the spans (frame 1: 2 × 30 m, frame 2: 2 × 25 m): piers
+    at the supports between spans (30 m, 85 m), seats at 0, 60 and 110 m. Below, each
+    seat's largest opening (up) and closing (down) in mm, the gap dashed at −gap, the seat
+    width at +width, and J1 (72 mm open against a 60 mm seat) marked unseated."""
+    from pounding.plot.bridge import bridge_layout, plot_bridge_elevation
+
+    res = run_restrained
+    spans = [[30.0, 30.0], [25.0, 25.0]]
+    layout = bridge_layout(res, spans)
+    assert layout.to_scale and layout.piers == ((30.0,), (85.0,))
+    assert layout.seats == (0.0, 60.0, 110.0)
+    assert not bridge_layout(res).to_scale  # (the frames carry no spans)
+    fig = plot_bridge_elevation(res, seat_widths={"J1": 0.06}, spans=spans)
+    top, bottom = fig.axes
+    assert sorted({round(float(ln.get_xdata()[0]), 9) for ln in top.get_lines()
+                   if ln.get_linewidth() == 3.5}) == [30.0, 85.0]
+    seats = {s.name: s for s in res.bridge.seats}
+    bars = {}
+    for ln in bottom.get_lines():
+        x, y = ln.get_xdata(), ln.get_ydata()
+        if ln.get_color() in ("tab:blue", "tab:orange"):
+            bars[(float(x[0]), ln.get_color())] = float(y[1])
+    for s, x in zip(seats.values(), layout.seats):
+        assert bars[(x, "tab:blue")] == pytest.approx(1e3 * s.peak_opening, rel=1e-12)
+        assert bars[(x, "tab:orange")] == pytest.approx(-1e3 * s.peak_closing, rel=1e-12)
+    gaps = sorted(float(ln.get_ydata()[0]) for ln in bottom.get_lines()
+                  if ln.get_linestyle() == "--")
+    assert gaps == pytest.approx([-40.0, -40.0, -20.0])
+    widths = [float(ln.get_ydata()[0]) for ln in bottom.get_lines() if ln.get_color() == "k"]
+    assert widths == pytest.approx([60.0])
+    assert seats["J1"].peak_opening > 0.06
+    assert "unseated" in [t.get_text() for t in bottom.texts]
+    assert bottom.get_ylabel().startswith("relative displacement [mm]")
+    assert bottom.get_xlabel() == "along the bridge [m]"
+    texts = " ".join(t.get_text() for t in top.texts)
+    assert "J1\ngap 20 mm, 10 impacts" in texts and "R1 612.8 kN (yielded)" in texts
+
+
+def test_element_figure_draws_each_element_in_mm_and_kn(run_restrained) -> None:
+    """One panel per pier and bearing (a row per frame), one per restrainer: the deformation
+    in mm against the force in kN, sample for sample; the yield forces dashed."""
+    from pounding.plot.bridge import plot_bridge_elements
+    from pounding.result.storey_peaks import bridge_element_histories
+
+    res = run_restrained
+    fig = plot_bridge_elements(res)
+    drawn = [ax for ax in fig.axes if ax.axison]
+    assert [ax.get_title().split(":")[0].split(" ")[0] for ax in drawn] == [
+        "B1P1", "B1Br1", "B2P1", "B2Br1", "R1"]
+    histories = {label: (d, f) for _, label, d, f in bridge_element_histories(res)}
+    for ax in drawn[:4]:
+        d, f = histories[ax.get_title().split(":")[0].split(" ")[0]]
+        loop = ax.get_lines()[0]
+        np.testing.assert_allclose(loop.get_xdata(), 1e3 * d, rtol=1e-14)
+        np.testing.assert_allclose(loop.get_ydata(), 1e-3 * f, rtol=1e-14)
+        assert ax.get_ylabel() in ("force [kN]", "")
+    dashed = sorted(float(ln.get_ydata()[0]) for ln in drawn[2].get_lines()
+                    if ln.get_linestyle() == "--")
+    assert dashed == pytest.approx([-1500.0, 1500.0])
+    restrainer = drawn[4].get_lines()[0]
+    np.testing.assert_allclose(restrainer.get_ydata(), 1e-3 * res.link_force[:, 0], rtol=1e-14)
