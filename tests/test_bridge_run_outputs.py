@@ -107,7 +107,7 @@ def test_report_has_a_bridge_section(printed, tmp_path: Path) -> None:
     """The report's Bridge section: the elevation drawn with the seat widths of
     summary.json's ``seats``, the element tables in mm and kN, the seat margins with the
     unseated seat warned; the Figures section leaves the elevation to it; no storey table
-    in the headline numbers."""
+    in the headline numbers, frames (not buildings of storeys) in the Model section."""
     import shutil
 
     _, out = printed
@@ -133,6 +133,9 @@ def test_report_has_a_bridge_section(printed, tmp_path: Path) -> None:
     assert "Unseated: J1" in bridge and "Narrower than the clause&#x27;s minimum: J1" in bridge
     figures = _section(html, "figures", "impacts")
     assert "bridge_elements.png of the run" in figures and "bridge.png" not in figures
+    model = _section(html, "model", "record")
+    assert "Frames, left to right" in model and "Buildings, left to right" not in model
+    assert "<td>B1Br1 (elastomeric)</td>" in model
     headline = _section(html, "summary", "bridge")
     assert "largest deck displacement [m]" in headline
     assert "Peak response of each building" not in headline

@@ -13,9 +13,9 @@ from typing import Any
 
 from pounding.report.format import Block, Figure, Note, Table, kv_table, png_bytes
 from pounding.report.run_folder import RunFolder
-from pounding.result.bridge_peaks import element_law_words
+from pounding.result.bridge_peaks import element_law_words, is_bridge
 
-__all__ = ["BRIDGE_FIGURE", "bridge_section"]
+__all__ = ["BRIDGE_FIGURE", "bridge_model_tables", "bridge_section"]
 
 BRIDGE_FIGURE = "bridge_figure"
 """The key of the elevation figure (:data:`pounding.plot.registry.RUN_FIGURES`): the
@@ -216,4 +216,39 @@ def _seats(seats: list[dict[str, Any]]) -> list[Block]:
                         "width).", "warn"))
     if short:
         out.append(Note(f"Narrower than the clause's minimum: {', '.join(short)}.", "warn"))
+    return out
+
+
+def bridge_model_tables(model: Any) -> list[Block]:
+    """The Model section's tables of a bridge (every building a bridge frame), in place of
+    the buildings' storeys: each frame's deck, piers and bearings, and the restrainers;
+    empty for a model of buildings."""
+    if not is_bridge(model):
+        return []
+    t = Table(("frame", "deck mass [t]", "deck at [m]", "element", "height [m]",
+               "stiffness [kN/mm]", "law", "dashpot [kN·s/m]", "T1, T2 [s]", "damping"),
+              caption="Frames, left to right: the deck on its piers (ground → cap) through its "
+                      "bearings (cap → deck); stiffness the initial one; periods on it")
+    for p, frame in enumerate(model.buildings):
+        periods = ", ".join(f"{x:.3f}" for x in frame.modes().periods[:2])
+        damping = (f"Rayleigh ζ = {frame.zeta:g} at modes 1, 2 (on the linear elements) "
+                   "+ the bearings' dashpots")
+        for k, (label, kind, lo, hi, stiffness, law, c) in enumerate(frame.elements()):
+            fy = float(law.yield_forces([stiffness])[0]) if law is not None else None
+            first = k == 0
+            t.add(f"B{p + 1}" if first else "", _f(frame.deck_mass, 1e-3) if first else "",
+                  _f(float(frame.elevations[frame.deck_dof])) if first else "",
+                  f"B{p + 1}{label} ({kind})",
+                  _f(float(frame.elevations[hi])) if kind == "pier" else "",
+                  _f(stiffness, 1e-6),
+                  element_law_words(law.describe() if law is not None else "linear", fy,
+                                    kind),
+                  _f(c, 1e-3) if c else "", periods if first else "",
+                  damping if first else "")
+    out: list[Block] = [t]
+    if model.links:
+        r = Table(("restrainer", "between", "law"), caption="Restrainers across the joints")
+        for link in model.links:
+            r.add(link.name, " – ".join(link.floors), link.readable().split(": ", 1)[-1])
+        out.append(r)
     return out
