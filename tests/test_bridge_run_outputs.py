@@ -149,3 +149,22 @@ def test_report_without_seats_says_they_were_not_checked(printed) -> None:
     bridge = _section(html, "bridge", "model")
     assert "Seat margins: not checked in this run" in bridge
     assert "bridge.png of the run" in bridge
+
+
+def test_report_of_a_bridge_folder_without_its_model(printed, tmp_path: Path) -> None:
+    """Without model.toml the page still knows a bridge's figures from summary.json's
+    ``bridge`` block: a missing bridge_elements.png is warned about, the storeys' figures
+    are not asked for, the elevation comes from the folder."""
+    import shutil
+
+    from pounding.report import render_report
+
+    _, out = printed
+    folder = tmp_path / "run"
+    shutil.copytree(out, folder)
+    (folder / "model.toml").unlink()
+    (folder / "bridge_elements.png").unlink()
+    html = render_report(folder)
+    assert "bridge_elements.png is not in the folder and could not be regenerated" in html
+    assert "envelopes.png" not in html and "storeys.png" not in html
+    assert "bridge.png of the run" in _section(html, "bridge", "model")

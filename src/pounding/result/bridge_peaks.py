@@ -62,7 +62,9 @@ class FramePeaks(NamedTuple):
     deck_elevation: float
     """[m]."""
     spans: tuple[float, ...] | None
-    """Span lengths [m] where the frame carries them (``BridgeFrame.spans``), else None."""
+    """Span lengths [m] where the frame carries them (a ``spans`` attribute; a
+    ``deck_length`` alone as one span); None where it does not (a frame built from
+    ``[bridge]`` today)."""
     periods: tuple[float, ...]
     """The frame's natural periods on its initial stiffness [s], longest first."""
     peak_deck_displacement: float
@@ -278,7 +280,9 @@ def _frames(result: Response) -> list[FramePeaks]:
                     e.label, e.kind, e.law, e.peak_deformation, e.peak_deformation_time,
                     e.peak_force, e.peak_force_time, e.residual_deformation, fy))
         i = int(off) + bl.deck_dof
-        spans = getattr(bl, "spans", None)
+        # its spans where the frame keeps them (else its deck length as one "span")
+        length = getattr(bl, "deck_length", None)
+        spans = getattr(bl, "spans", None) or ([length] if length else None)
         out.append(FramePeaks(
             p, f"B{p + 1}", bl.name or f"B{p + 1}", labels[i], float(bl.deck_mass),
             float(bl.elevations[bl.deck_dof]),
