@@ -189,6 +189,12 @@ def test_a_row_of_buildings_has_no_bridge_view() -> None:
                            ShearBuilding.uniform(1, 3e5, 1.2e7)], [0.02], KV)
     res = simulate(model, el_centro(), duration=1.0)
     assert res.bridge is None and "bridge" not in res.summary()
+    from pounding.plot.bridge import plot_bridge_elevation
+    from pounding.plot.registry import figures_for
+
+    assert not {"bridge_figure", "bridge_element_figure"} & set(figures_for(res))
+    with pytest.raises(ValueError, match="not a bridge"):
+        plot_bridge_elevation(res)
 
 
 # ------------------------------------------------------------------------ figures

@@ -29,7 +29,7 @@ from pounding.plot.layout import (
     plain_ticks,
     titled_figure,
 )
-from pounding.result import Result
+from pounding.result import BridgePeaks, Result
 
 __all__ = ["BridgeLayout", "bridge_layout", "force_scale", "plot_bridge_elements",
            "plot_bridge_elevation"]
@@ -56,6 +56,15 @@ class BridgeLayout(NamedTuple):
     0 the left abutment, ``j`` the joint after frame ``j``, ``n`` the right abutment."""
 
 
+def _bridge_of(result: Result) -> BridgePeaks:
+    """The bridge of ``result``; a ``ValueError`` for a model of buildings."""
+    bridge = result.bridge
+    if bridge is None:
+        raise ValueError("bridge figure: the model is not a bridge (every building a "
+                         "BridgeFrame)")
+    return bridge
+
+
 def bridge_layout(result: Result,
                   spans: Sequence[Sequence[float] | None] | None = None) -> BridgeLayout:
     """The elevation's geometry of the bridge of ``result``.
@@ -75,10 +84,7 @@ def bridge_layout(result: Result,
         at the supports between them when it has one pier fewer than spans, else spread
         evenly; joints at the frames' ends (their gaps are drawn as marks, not to scale).
     """
-    bridge = result.bridge
-    if bridge is None:
-        raise ValueError("bridge figure: the model is not a bridge (every building a "
-                         "BridgeFrame)")
+    bridge = _bridge_of(result)
     frames = bridge.frames
     given = list(spans) if spans is not None else [f.spans for f in frames]
     if len(given) != len(frames):
@@ -132,7 +138,7 @@ def plot_bridge_elevation(result: Result, seat_widths: Mapping[str, float] | Non
     spans : sequence, optional
         Span lengths [m] per frame (:func:`bridge_layout`).
     """
-    bridge = result.bridge
+    bridge = _bridge_of(result)
     layout = bridge_layout(result, spans)
     model = result.model
     widths = {str(k): float(v) for k, v in (seat_widths or {}).items()}
@@ -164,7 +170,7 @@ def _seat_label(seat: Any) -> str:
 
 
 def _draw_elevation(ax: Any, result: Result, layout: BridgeLayout, force: Any) -> None:
-    bridge = result.bridge
+    bridge = _bridge_of(result)
     z_deck = max(f.deck_elevation for f in bridge.frames)
     depth = 0.12 * z_deck
     total = layout.frame_ends[-1][1] - layout.frame_ends[0][0]
@@ -219,7 +225,7 @@ def _draw_elevation(ax: Any, result: Result, layout: BridgeLayout, force: Any) -
 
 def _draw_envelope(ax: Any, result: Result, layout: BridgeLayout,
                    widths: Mapping[str, float]) -> None:
-    bridge = result.bridge
+    bridge = _bridge_of(result)
     total = layout.frame_ends[-1][1] - layout.frame_ends[0][0]
     tick = 0.025 * total
     ax.axhline(0.0, color="0.6", lw=0.6)
@@ -270,14 +276,12 @@ def plot_bridge_elements(result: Result) -> Figure:
     element's yield force is dashed."""
     from pounding.result.storey_peaks import bridge_element_histories
 
-    bridge = result.bridge
-    if bridge is None:
-        raise ValueError("bridge figure: the model is not a bridge (every building a "
-                         "BridgeFrame)")
+    bridge = _bridge_of(result)
     histories = {label: (d, f) for _, label, d, f in bridge_element_histories(result)}
     rows: list[list[tuple[str, Any]]] = []
-    for f in bridge.frames:
-        items = [("pier", p) for p in f.piers] + [("bearing", b) for b in f.bearings]
+    for fr in bridge.frames:
+        items: list[tuple[str, Any]] = ([("pier", p) for p in fr.piers]
+                                        + [("bearing", b) for b in fr.bearings])
         items.sort(key=lambda it: -(it[1].peak_shear if it[0] == "pier" else it[1].peak_force))
         chosen = items[:MAX_ELEMENT_COLUMNS]
         chosen.sort(key=lambda it: (it[0] != "pier", it[1].label))

@@ -44,7 +44,7 @@ _EXPORTS: dict[str, str] = {
     **{name: "pounding.result.storey_peaks" for name in (
         "BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys")},
     **{name: "pounding.result.bridge_peaks" for name in (
-        "BridgePeaks", "bridge_peaks", "bridge_summary", "is_bridge")},
+        "BridgePeaks", "bridge_summary", "is_bridge")},
     **{name: "pounding.result.variables" for name in (
         "HistoryVariables", "Variable", "history_variables")},
     **{name: "pounding.result.demands" for name in ("DEMANDS", "Demand")},
@@ -74,7 +74,6 @@ __all__ = [
     "bearing_law",
     "bearing_mask",
     "bearing_peaks",
-    "bridge_peaks",
     "bridge_summary",
     "energy_residual_max",
     "floor_name",
@@ -94,7 +93,6 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
     from pounding.result.bridge_peaks import (
         BridgePeaks,
-        bridge_peaks,
         bridge_summary,
         is_bridge,
     )

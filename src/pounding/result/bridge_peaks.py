@@ -31,7 +31,7 @@ the output steps; the deck's and the contacts' inside solver steps.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 import numpy as np
 
@@ -41,6 +41,7 @@ from pounding.result.storey_peaks import BridgeElementPeaks, bridge_element_peak
 
 if TYPE_CHECKING:
     from pounding.result.response import Response
+    from pounding.structure.bridge import BridgeFrame
 
 __all__ = ["BridgeBearingPeaks", "BridgePeaks", "FramePeaks", "PierPeaks", "RestrainerPeaks",
            "SeatPeaks", "bridge_peaks", "bridge_summary", "element_law_words", "is_bridge"]
@@ -266,7 +267,8 @@ def _frames(result: Response) -> list[FramePeaks]:
     elements: dict[str, BridgeElementPeaks] = {e.label: e for e in bridge_element_peaks(result)}
     labels = model.dof_labels()
     out = []
-    for p, (off, bl) in enumerate(zip(model.system.offsets, model.buildings)):
+    frames = cast("list[BridgeFrame]", list(model.buildings))  # (is_bridge: all frames)
+    for p, (off, bl) in enumerate(zip(model.system.offsets, frames)):
         piers, bearings = [], []
         for label, kind, _, _, k, law, _ in bl.elements():
             e = elements[f"B{p + 1}{label}"]
