@@ -25,7 +25,6 @@ from pounding.plot.layout import (
     TITLE_SIZE,
     Scale,
     axes_grid,
-    place_legend,
     plain_ticks,
     titled_figure,
 )
@@ -134,21 +133,27 @@ def plot_bridge_elevation(result: Result, seat_widths: Mapping[str, float] | Non
     result : Result
         A bridge run.
     seat_widths : mapping of str to float, optional
-        Seat width [m] by seat name (``A1``, ``J1``, …, ``A2``), drawn on the opening side.
+        Seat width [m] by seat name (``A1``, ``J1``, …, ``A2``), drawn on the opening side;
+        default those of the result's seat checks where it has them (a ``seats`` attribute
+        of checks with ``seat`` and ``width_m``, as a bridge given seat widths has).
     spans : sequence, optional
         Span lengths [m] per frame (:func:`bridge_layout`).
     """
     bridge = _bridge_of(result)
     layout = bridge_layout(result, spans)
     model = result.model
-    widths = {str(k): float(v) for k, v in (seat_widths or {}).items()}
+    if seat_widths is None:  # the run's own seat checks, where it has them
+        seat_widths = {str(c.seat): float(c.width_m)
+                       for c in (getattr(result, "seats", None) or [])
+                       if getattr(c, "width_m", None) is not None}
+    widths = {str(k): float(v) for k, v in seat_widths.items()}
     forces = [p.peak_shear for p in bridge.piers] + [r.peak_force for r in bridge.restrainers]
     force = force_scale(max(forces, default=0.0))
     fig, extra = titled_figure(
         model.name, "elevation, and the envelope of the relative displacement at the joints "
         "and abutments" + ("" if layout.to_scale else " (schematic along the axis: no spans "
-                                                        "in the model)"), 9.0, 6.4)
-    top, bottom = axes_grid(fig, 2, 1, left=0.85, right=0.25, top=0.55 + extra, bottom=0.6,
+                                                        "in the model)"), 9.0, 6.7)
+    top, bottom = axes_grid(fig, 2, 1, left=0.85, right=0.25, top=0.55 + extra, bottom=0.9,
                             hspace=0.35, height_ratios=[1.15, 1.0], sharex=True)[:, 0]
     _draw_elevation(top, result, layout, force)
     _draw_envelope(bottom, result, layout, widths)
@@ -259,13 +264,15 @@ def _draw_envelope(ax: Any, result: Result, layout: BridgeLayout,
             if seat.peak_opening > width:
                 ax.text(x - 1.2 * tick, w, "unseated", color="tab:red", fontsize=LEGEND_SIZE,
                         ha="right", va="center", fontweight="bold")
-        ax.text(x, 0.02, seat.name, fontsize=LEGEND_SIZE + 1, ha="center", va="bottom",
+        ax.text(x, 0.97, seat.name, fontsize=LEGEND_SIZE + 1, ha="center", va="top",
                 color="0.2", transform=ax.get_xaxis_transform())
-    top, bottom = 1.3 * max(highest), 1.3 * max(lowest)
+    top, bottom = 1.4 * max(highest), 1.25 * max(lowest)  # (the seats' names on top)
     ax.set_ylim(-bottom if bottom > 0 else -1.0, top if top > 0 else 1.0)
     ax.set_ylabel(f"relative displacement [{MM.unit}]\n(+ opening, − closing)")
     ax.grid(True, axis="y", alpha=0.3)
-    place_legend(ax, fontsize=LEGEND_SIZE)
+    # under the axis label, in the page's bottom margin: never over a bar
+    ax.legend(fontsize=LEGEND_SIZE, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=4,
+              frameon=False)
 
 
 def plot_bridge_elements(result: Result) -> Figure:
