@@ -22,13 +22,15 @@ from pounding.io.manifest import MANIFEST_FILE
 from pounding.plot.loops import plot_hysteresis
 from pounding.plot.response import plot_contact_forces, plot_displacements, plot_energy
 from pounding.result import IMPACT_COLUMNS, IMPACTS_CSV_COLUMNS
+from pounding.plot.registry import RUN_FIGURES
 from pounding.run_file import FIGURE_FILES, OUTPUT_FILES, run, run_config
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"
 # the files of a run of a model with linear storeys (no storey hysteresis figure)
 ALL_FILES = sorted([*OUTPUT_FILES.values(),
-                    *(name for key, name in FIGURE_FILES.items() if key != "storey_figure")])
+                    *(name for key, name in FIGURE_FILES.items()
+                      if key != "storey_figure" and RUN_FIGURES[key].bridge is not True)])
 # ... and the manifest of the files a run wrote (what --overwrite may replace)
 IN_FOLDER = sorted([MANIFEST_FILE, *ALL_FILES])
 
@@ -80,10 +82,11 @@ def test_run_seed_example_writes_everything(tmp_path: Path,
     summary = json.loads((out / "summary.json").read_text())
     assert summary["n_impacts"] == 26 and summary["model"] == "seed SDOF pair"
     assert summary["energy_balance_error"] < 1e-6
-    for name in FIGURE_FILES.values():
-        if name != "storeys.png":
+    for key, name in FIGURE_FILES.items():
+        if name != "storeys.png" and RUN_FIGURES[key].bridge is not True:
             assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert not (out / "storeys.png").exists()  # linear storeys: no storey hysteresis
+    assert not (out / "bridge.png").exists()  # no bridge
     # the copy of the model file runs again as it is
     assert main(["run", str(out / "model.toml"), "--out", str(tmp_path / "again"),
                  "--no-figures"]) == 0

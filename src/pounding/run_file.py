@@ -160,7 +160,8 @@ def run(input: str | os.PathLike[str], out: str | os.PathLike[str] | None = None
         ``impacts.csv``, ``summary.json`` (:meth:`pounding.result.Result.save`),
         ``model.toml`` (the configuration as read, record path made absolute) and, unless
         turned off, the PNG figures of the model
-        (:func:`pounding.plot.registry.figures_for`: five, six with yielding storeys).
+        (:func:`pounding.plot.registry.figures_for`: five, six with yielding storeys; a
+        bridge: its elevation and element figures in place of the storeys' two).
     overwrite : bool
         Replace an existing output folder (else it is an error): only an empty one or an
         earlier output of pounding, holding nothing but the files its manifest lists.

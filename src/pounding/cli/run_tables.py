@@ -1,5 +1,6 @@
 """The tables `pounding run` prints after a run: the run, its buildings, their storeys (and
-the isolation bearings apart), the contacts and the links.
+the isolation bearings apart), the contacts and the links; of a bridge, its frames, piers,
+bearings, joints and abutments, and restrainers instead (:mod:`pounding.cli.bridge_tables`).
 
 One unit per quantity on the screen: displacements, drifts and gaps in mm, forces in kN (MN
 when they reach 100 MN), energies in kJ (MJ), elevations in m. Names are printed as typed
@@ -16,6 +17,7 @@ import numpy as np
 from rich.text import Text
 
 from pounding.cli.app import console
+from pounding.cli.bridge_tables import bridge_forces, print_bridge_tables
 from pounding.cli.tables import (
     Col,
     building_label,
@@ -46,9 +48,11 @@ def print_run_summary(out: Any) -> None:
     r = out.result
     model = r.model
     s = r.summary()
+    bridge = r.bridge  # (None unless every building is a bridge frame)
     forces = [s["peak_contact_force_N"], *np.nan_to_num(r.peak_storey_shear, nan=0.0),
               *(x.peak_force for x in r.bearings),
-              *(r.link_peak_force if model.links else [])]
+              *(r.link_peak_force if model.links else []),
+              *(bridge_forces(bridge) if bridge is not None else [])]
     ff, fu = force_scale(max(forces, default=0.0))
     fin = s["energy_final_J"]
     ef, eu = energy_scale(max(abs(fin["input"]), s["contact_dissipated_J"]))
@@ -57,7 +61,11 @@ def print_run_summary(out: Any) -> None:
     rows: list[tuple[str | Text, Any]] = [
         ("record", Text(f"{r.motion.name}, PGA {r.motion.pga_g:.3f} g")),
         ("simulated / output step [s]", f"{s['duration_s']:g} / {r.dt:g}"),
-        ("buildings / contacts", f"{len(model.buildings)} / {len(model.contacts)}")]
+        (("frames / joints / abutments / restrainers",
+          f"{len(bridge.frames)} / {len(bridge.frames) - 1} / "
+          f"{sum(x.kind == 'abutment' for x in bridge.seats)} / {len(bridge.restrainers)}")
+         if bridge is not None else
+         ("buildings / contacts", f"{len(model.buildings)} / {len(model.contacts)}"))]
     if model.contacts:
         rows.append(("contact law", model.contact.describe()))
     rows.append(("impacts", str(r.n_impacts)))
@@ -87,13 +95,16 @@ def print_run_summary(out: Any) -> None:
                 [Col("quantity", "left", wrap=True), Col("value", "left", wrap=True)], rows,
                 show_header=False)
 
-    _print_buildings(r, units)
-    _print_bearings(r, units)
-    _print_storeys(r, units)
-    _print_plan_storeys(r, units)
-    _print_hinges(s, units)
-    _print_contacts(r, units)
-    _print_links(r, units)
+    if bridge is not None:  # its frames, piers, bearings, joints and restrainers
+        print_bridge_tables(r, units)
+    else:
+        _print_buildings(r, units)
+        _print_bearings(r, units)
+        _print_storeys(r, units)
+        _print_plan_storeys(r, units)
+        _print_hinges(s, units)
+        _print_contacts(r, units)
+        _print_links(r, units)
     _print_seats(s)
     console.print(Text.assemble("outputs in ", (str(out.out_dir), "bold"), ": ",
                                 ", ".join(sorted(p.name for p in out.files.values()))))

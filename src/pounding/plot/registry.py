@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from pounding.model import PoundingModel
     from pounding.result import Result
 
-__all__ = ["RunFigure", "RUN_FIGURES", "figures_for"]
+__all__ = ["RUN_FIGURES", "RunFigure", "figures_for", "is_bridge_model"]
 
 
 class RunFigure(NamedTuple):
@@ -33,12 +33,17 @@ class RunFigure(NamedTuple):
         ``"module:function"`` drawing it from a :class:`pounding.result.Result`.
     yielding_only : bool
         Drawn only for models with yielding storeys.
+    bridge : bool or None
+        True: drawn only for a bridge (every building a bridge frame,
+        :mod:`pounding.structure.bridge`); False: never for a bridge (a figure of storeys);
+        None: for every model.
     """
 
     file: str
     caption: str
     function: str
     yielding_only: bool = False
+    bridge: bool | None = None
 
     def make(self, result: Result) -> Figure:
         """Draw the figure of ``result`` (imports its module on first use)."""
@@ -48,9 +53,14 @@ class RunFigure(NamedTuple):
 
 
 RUN_FIGURES: dict[str, RunFigure] = {
+    "bridge_figure": RunFigure(
+        "bridge.png", "The bridge's elevation (piers' peak drift and shear; joints' and "
+        "abutments' gaps and impacts) and the envelope of the relative displacement at "
+        "every joint and abutment seat", "pounding.plot.bridge:plot_bridge_elevation",
+        bridge=True),
     "envelope_figure": RunFigure(
         "envelopes.png", "Peak displacement, storey drift ratio and storey shear against "
-        "height", "pounding.plot.envelope:plot_envelopes"),
+        "height", "pounding.plot.envelope:plot_envelopes", bridge=False),
     "displacement_figure": RunFigure(
         "displacements.png", "Floor displacements, ground acceleration below",
         "pounding.plot.response:plot_displacements"),
@@ -62,7 +72,11 @@ RUN_FIGURES: dict[str, RunFigure] = {
         "pounding.plot.loops:plot_hysteresis"),
     "storey_figure": RunFigure(
         "storeys.png", "Storey shear against drift of the yielding storeys (hysteresis)",
-        "pounding.plot.loops:plot_storey_hysteresis", yielding_only=True),
+        "pounding.plot.loops:plot_storey_hysteresis", yielding_only=True, bridge=False),
+    "bridge_element_figure": RunFigure(
+        "bridge_elements.png", "Pier shear against drift, bearing force against "
+        "displacement, restrainer force against the joint's opening",
+        "pounding.plot.bridge:plot_bridge_elements", bridge=True),
     "energy_figure": RunFigure(
         "energy.png", "Energy balance", "pounding.plot.response:plot_energy"),
 }
@@ -74,7 +88,17 @@ def figures_for(subject: Result | PoundingModel) -> dict[str, RunFigure]:
     """The figures of a run of ``subject`` (a result or its model), in page order: all of
     :data:`RUN_FIGURES` except the storey hysteresis figure when no storey can yield (a
     linear storey's shear against drift is a straight line of slope ``k``, nothing to
-    read)."""
+    read); of a bridge (every building a bridge frame) its elevation and element figures
+    in place of the storeys' envelope and hysteresis, of any other model not those."""
     model = subject.model if hasattr(subject, "model") else subject
     yielding = bool(model.is_inelastic)
-    return {key: fig for key, fig in RUN_FIGURES.items() if yielding or not fig.yielding_only}
+    bridge = is_bridge_model(model)
+    return {key: fig for key, fig in RUN_FIGURES.items()
+            if (yielding or not fig.yielding_only)
+            and (fig.bridge is None or fig.bridge == bridge)}
+
+
+def is_bridge_model(model: PoundingModel) -> bool:
+    """True if every building of ``model`` is a bridge frame
+    (:class:`~pounding.structure.bridge.BridgeFrame`: one with a deck)."""
+    return bool(model.buildings) and all(hasattr(b, "deck_dof") for b in model.buildings)

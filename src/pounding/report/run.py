@@ -2,7 +2,7 @@
 
 The model and record sections are in :mod:`pounding.report.run_inputs`, the figures in
 :mod:`pounding.report.run_figures`, the energy balance and gap check in
-:mod:`pounding.report.run_checks`.
+:mod:`pounding.report.run_checks`, a bridge's section in :mod:`pounding.report.run_bridge`.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ import numpy as np
 
 from pounding.report.format import Block, Cards, Note, PageSection, Table, kv_table, num
 from pounding.report.page import render_page
+from pounding.report.run_bridge import BRIDGE_FIGURE, bridge_section
 from pounding.report.run_checks import energy_section, gap_check_section
 from pounding.report.run_figures import figures_section
 from pounding.report.run_folder import RunFolder, read_run
@@ -50,11 +51,14 @@ def render_run(folder: Path) -> str:
     sub = (f"Run report — record {record}"
            + (f", PGA {pga:.3f} g" if isinstance(pga, (int, float)) else "")
            + f"; folder {folder.resolve().name}")
+    bridge = bridge_section(r)  # (a bridge's run only)
     sections = [
         PageSection("summary", "Headline numbers", _headline_section(r)),
+        *([PageSection("bridge", "Bridge", bridge)] if bridge else []),
         PageSection("model", "Model", model_section(r)),
         PageSection("record", "Record", record_section(r)),
-        PageSection("figures", "Figures", figures_section(r)),
+        PageSection("figures", "Figures",
+                    figures_section(r, skip=(BRIDGE_FIGURE,) if bridge else ())),
         PageSection("impacts", "Impact table", _impacts_section(r)),
         PageSection("energy", "Energy balance", energy_section(r)),
         PageSection("gap-check", "Gap check", gap_check_section(r)),
@@ -76,10 +80,12 @@ def _headline_section(r: RunFolder) -> list[Block]:
     # a building in plan: along y too (its floor labels above are along x)
     pdisp += [row["peak_displacement_y_m"] for b in s.get("buildings", []) or []
               for row in b.get("storeys", []) if row.get("peak_displacement_y_m") is not None]
+    bridge = isinstance(s.get("bridge"), dict)
     out: list[Block] = [Cards([
         ("impacts", num(s.get("n_impacts"))),
         ("peak contact force [N]", num(s.get("peak_contact_force_N"))),
-        ("largest floor displacement [m]", num(max(pdisp)) if pdisp else "–"),
+        (f"largest {'deck' if bridge else 'floor'} displacement [m]",
+         num(max(pdisp)) if pdisp else "–"),
         ("dissipated in contacts [J]", num(s.get("contact_dissipated_J"))),
         ("energy-balance error [of peak input]", f"{e_err:.2e}" if isinstance(e_err, float)
          else "–"),
@@ -94,9 +100,10 @@ def _headline_section(r: RunFolder) -> list[Block]:
             diss = float(np.nansum(rows["energy_dissipated"])) if n else 0.0
             t.add(label, n, f, diss)
         out.append(t)
-    out.append(_response_table(r))
-    out += _bearing_tables(r)
-    out += _plan_tables(r)
+    if not bridge:  # (a bridge's frames, piers and bearings: the Bridge section)
+        out.append(_response_table(r))
+        out += _bearing_tables(r)
+        out += _plan_tables(r)
     items = [("solver", solver.get("name")), ("relative tolerance rtol [-]", solver.get("rtol")),
              ("adaptive steps through contacts", solver.get("rk_steps")),
              ("rejected steps", solver.get("rejected")),

@@ -10,23 +10,29 @@ from pounding.report.format import Block, Figure, Note, png_bytes
 from pounding.report.run_folder import RunFolder
 from pounding.result import ENERGY_NAMES
 
-__all__ = ["figures_section"]
+__all__ = ["figures_section", "result_from"]
 
 
-def figures_section(r: RunFolder) -> list[Block]:
-    """Each figure a run of this model has: the folder's PNG, else regenerated from
-    ``timehistories.nc`` and ``impacts.csv`` when the model can be rebuilt, else a warning."""
+def figures_section(r: RunFolder, skip: tuple[str, ...] = ()) -> list[Block]:
+    """Each figure a run of this model has (but the keys ``skip``, shown in a section of
+    their own): the folder's PNG, else regenerated from ``timehistories.nc`` and
+    ``impacts.csv`` when the model can be rebuilt, else a warning."""
     from pounding.plot.registry import RUN_FIGURES, figures_for
 
     parts: list[Block] = []
     result = None
     why_not = ""
-    # the figures a run of this model has (no storey hysteresis without yielding storeys);
-    # model unknown: those in the folder and those every run has
+    # the figures a run of this model has (no storey hysteresis without yielding storeys;
+    # a bridge's in place of the storeys'); model unknown: those in the folder and those
+    # every run of its kind (a bridge: summary.json has its block) has
+    bridge = "bridge" in r.summary
     wanted = (figures_for(r.built.model) if r.built is not None else
               {k: f for k, f in RUN_FIGURES.items()
-               if not f.yielding_only or (r.folder / f.file).is_file()})
-    for fig in wanted.values():
+               if (r.folder / f.file).is_file()
+               or (not f.yielding_only and f.bridge in (None, bridge))})
+    for key, fig in wanted.items():
+        if key in skip:
+            continue
         name, caption = fig.file, fig.caption
         path = r.folder / name
         if path.is_file():
@@ -37,7 +43,7 @@ def figures_section(r: RunFolder) -> list[Block]:
                 why_not = r.build_error or "the model is unknown"
             else:
                 try:
-                    result = _result_from(r)
+                    result = result_from(r)
                 except (ValueError, KeyError) as exc:
                     why_not = f"the results could not be reloaded ({exc})"
         if result is not None:
@@ -50,8 +56,9 @@ def figures_section(r: RunFolder) -> list[Block]:
     return parts
 
 
-def _result_from(r: RunFolder) -> Any:
-    """A :class:`pounding.result.Result` rebuilt from the folder (for missing figures)."""
+def result_from(r: RunFolder) -> Any:
+    """A :class:`pounding.result.Result` rebuilt from the folder (for figures it lacks);
+    the folder's model must have been rebuilt (``r.built``)."""
     from pounding.result import IMPACT_COLUMNS, Result, SolverStats
 
     model, motion = r.built.model, r.built.motion
@@ -90,4 +97,5 @@ def _result_from(r: RunFolder) -> Any:
                   displacement=a("displacement"), velocity=a("velocity"),
                   abs_acceleration=a("absolute_acceleration"), penetration=a("penetration"),
                   contact_force=a("contact_force"), energy=energy, impact_array=arr,
-                  stats=stats, yielding_shear=yielding)
+                  stats=stats, yielding_shear=yielding,
+                  link_force=a("link_force") if "link_force" in ds.variables else None)

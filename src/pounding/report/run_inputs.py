@@ -9,6 +9,7 @@ import numpy as np
 
 from pounding.report.format import (Block, Figure, Note, Pre, Table, kv_table, num, png_bytes,
                                     with_unit)
+from pounding.report.run_bridge import bridge_model_tables
 from pounding.report.run_folder import RunFolder
 
 __all__ = ["CONTACT_UNITS", "model_section", "record_section"]
@@ -36,7 +37,10 @@ def model_section(r: RunFolder) -> list[Block]:
     desc = r.toml.get("description") or ""
     name = r.toml.get("name") or r.summary.get("model", "")
     parts.append(kv_table([("model name", str(name)), ("description", str(desc) or "–")]))
-    if r.built is not None:
+    bridge = bridge_model_tables(r.built.model) if r.built is not None else []
+    if bridge:  # a bridge's frames, piers, bearings and restrainers, not storeys
+        parts += bridge
+    elif r.built is not None:
         model = r.built.model
         t = Table(("building", "name", "storeys", "height [m]", "total mass [kg]",
                    "floor masses [kg]", "storey stiffnesses [N/m]", "T1 [s]",

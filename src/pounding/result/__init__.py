@@ -14,6 +14,8 @@ modules below are how the package is built, each importing only those under it:
 * :mod:`~pounding.result.response` — :class:`Response`, the arrays of a run and every
   quantity derived from them (drifts, shears, peaks, impacts per contact, energies);
 * :mod:`~pounding.result.storey_peaks` — the bearing and plan tables of a response;
+* :mod:`~pounding.result.bridge_peaks` — a bridge run element by element (frames, piers,
+  bearings, joints and abutments, restrainers);
 * :mod:`~pounding.result.variables` — its histories as named variables with units (what
   the NetCDF file and the xarray Dataset hold);
 * :mod:`~pounding.result.summary` — its headline numbers (``summary.json``);
@@ -45,6 +47,8 @@ _EXPORTS: dict[str, str] = {
     **{name: "pounding.result.response" for name in ("Response", "SolverStats")},
     **{name: "pounding.result.storey_peaks" for name in (
         "BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys")},
+    **{name: "pounding.result.bridge_peaks" for name in (
+        "BridgePeaks", "bridge_summary", "is_bridge")},
     **{name: "pounding.result.variables" for name in (
         "HistoryVariables", "Variable", "history_variables")},
     **{name: "pounding.result.demands" for name in ("DEMANDS", "Demand")},
@@ -61,6 +65,7 @@ __all__ = [
     "IMPACTS_CSV_COLUMNS",
     "IMPACT_COLUMNS",
     "BearingPeaks",
+    "BridgePeaks",
     "ContactPeak",
     "HistoryVariables",
     "PlanStoreys",
@@ -74,9 +79,11 @@ __all__ = [
     "bearing_law",
     "bearing_mask",
     "bearing_peaks",
+    "bridge_summary",
     "energy_residual_max",
     "floor_name",
     "history_variables",
+    "is_bridge",
     "peak_abs",
     "plan_storey_forces",
     "plan_storeys",
@@ -92,6 +99,11 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.result.bridge_peaks import (
+        BridgePeaks,
+        bridge_summary,
+        is_bridge,
+    )
     from pounding.result.bridge_seats import (
         SEAT_FIELDS,
         seat_checks,

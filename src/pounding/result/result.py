@@ -19,6 +19,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pounding.result.bridge_peaks import BridgePeaks, bridge_peaks
 from pounding.result.bridge_seats import seat_checks
 from pounding.result.columns import IMPACT_COLUMNS, rounded_length
 from pounding.result.files import save_result
@@ -49,8 +50,8 @@ class Result(Response):
 
     Its data and derived quantities are those of :class:`~pounding.result.response.Response`
     (same fields, same constructor); a result adds :attr:`impacts`, :attr:`bearings`,
-    :attr:`seats`, :attr:`plan_storeys`, :meth:`history_variables`, :meth:`to_dataset`,
-    :meth:`summary` and :meth:`save`.
+    :attr:`seats`, :attr:`plan_storeys`, :attr:`bridge_elements`, :attr:`bridge`,
+    :meth:`history_variables`, :meth:`to_dataset`, :meth:`summary` and :meth:`save`.
     """
 
     @cached_property
@@ -114,6 +115,14 @@ class Result(Response):
         (:class:`pounding.result.storey_peaks.BridgeElementPeaks`); empty without a bridge
         frame."""
         return bridge_element_peaks(self)
+
+    @cached_property
+    def bridge(self) -> BridgePeaks | None:
+        """A bridge run element by element: every frame's deck, piers and bearings, every
+        joint and abutment (impacts, the envelope of its opening and closing), every
+        restrainer, with their peaks (:class:`pounding.result.bridge_peaks.BridgePeaks`);
+        None unless every building is a bridge frame."""
+        return bridge_peaks(self)
 
     def history_variables(self) -> HistoryVariables:
         """Every time history and per-floor result as named variables with dimensions, units

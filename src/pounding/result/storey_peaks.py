@@ -168,6 +168,8 @@ class BridgeElementPeaks(NamedTuple):
     residual_deformation: float
     """Deformation at the end unloaded along its law's unloading stiffness [m] (0 for a
     linear element)."""
+    peak_force_time: float
+    """When the force peaked [s]."""
 
 
 def bridge_element_histories(result: Response) -> list[tuple[int, str, NDArray[np.float64],
@@ -211,8 +213,9 @@ def bridge_element_peaks(result: Response) -> list[BridgeElementPeaks]:
     for p, label, d, f in bridge_element_histories(result):
         kind, law, height = kinds[label]
         j = int(np.argmax(np.abs(d)))
+        jf = int(np.argmax(np.abs(f)))
         out.append(BridgeElementPeaks(
             p, label, kind, "linear" if law is None else law.describe(),
-            float(height), float(np.abs(d[j])), float(t[j]), float(np.max(np.abs(f))),
-            float(residual.get(label, 0.0))))
+            float(height), float(np.abs(d[j])), float(t[j]), float(np.abs(f[jf])),
+            float(residual.get(label, 0.0)), float(t[jf])))
     return out

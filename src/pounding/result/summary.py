@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from pounding.result.bridge_peaks import bridge_summary
 from pounding.result.bridge_seats import seat_summary
 from pounding.result.columns import ENERGY_NAMES, rounded_length
 from pounding.result.foundations import foundation_summary
@@ -86,6 +87,7 @@ def summarize(r: Response) -> dict[str, Any]:
         **hinge_summary(r),
         **foundation_summary(r),
         **spatial_summary(r),
+        **bridge_summary(r),
         **seats_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
                    "rejected": r.stats.rejected, "events": r.stats.events,
