@@ -210,10 +210,11 @@ def demand_table(cases: StudyCases, table: Any
     NaN, as for a failed run."""
     ng, nr, nl = len(cases.gaps), len(cases.records), len(cases.levels)
     df = table.sort_values("case_index")
-    if len(df) != len(cases.rows) + len(cases.needed_rows):
-        raise ValueError(f"results: {len(df)} rows for "
-                         f"{len(cases.rows) + len(cases.needed_rows)} runs of the study")
-    df = df.iloc[:len(cases.rows)]  # (a bridge's runs without joint contact follow)
+    bridge = getattr(cases, "bridge", None)  # (a bridge's runs without joint contact follow)
+    n_runs = len(cases.rows) + len(getattr(cases, "needed_rows", ()))
+    if len(df) != n_runs:
+        raise ValueError(f"results: {len(df)} rows for {n_runs} runs of the study")
+    df = df.iloc[:len(cases.rows)]
     ok = (df["status"] == "ok").to_numpy()
     idx = np.array(cases.rows)
     has_hinges = "strength_lost" in df.columns
@@ -245,11 +246,11 @@ def demand_table(cases: StudyCases, table: Any
         if DEMANDS[key].exceeded_by_collapse:
             col = np.where(collapsed, np.inf, col)
         out[key] = grid(col)
-    if cases.bridge is not None:  # a bridge: the largest opening of any seat
+    if bridge is not None:  # a bridge: the largest opening of any seat
         from pounding.studies.fragility.bridge import joint_demand
 
-        out["seat_opening"] = grid(joint_demand(LimitStateSpec(demand="seat_opening", limit=0.0),
-                                                cases.bridge, df))
+        every = LimitStateSpec(demand="seat_opening", limit=0.0)
+        out["seat_opening"] = grid(joint_demand(every, bridge, df))
     failures = [f"{_where(cases, r, li, g)}: {msg}"
                 for (r, li, g), good, gone, msg in zip(cases.rows, ok, lost, df["error"])
                 if not good and not gone]
