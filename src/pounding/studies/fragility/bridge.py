@@ -20,7 +20,8 @@ from one of buildings in three things (``docs/bridges.md``, "Studies"):
   :func:`pounding.studies.gap.critical_gaps`, runs each building alone instead, which
   leaves out the abutments and would refuse the restrainers.) The code gaps beside it are
   ABS, SRSS and DDC of the decks' mean peak displacements in the same runs, with the CQC
-  correlation of the two frames' fundamental modes, largest over the joints.
+  correlation of the two frames' fundamental modes, largest over the joints
+  (:func:`pounding.studies.fragility.gaps.bridge_needed_gaps`).
 * **Seats.** ``"seat_opening"`` is the peak opening of a seat [m] (every seat by default,
   or the one named by ``joint``: ``J1`` …, ``A1``, ``A2``), and the limit the seat width:
   P(unseating | IM) for that width. Against the seat width, at every level, the
@@ -42,9 +43,8 @@ from numpy.typing import NDArray
 
 from pounding.studies.fragility.study import LimitStateSpec
 
-__all__ = ["NO_CONTACT_GAP", "BridgeLayout", "SeatWidths", "bridge_layout",
-           "bridge_needed_gaps", "check_joint", "joint_demand", "joint_pounding",
-           "seat_widths"]
+__all__ = ["NO_CONTACT_GAP", "BridgeLayout", "SeatWidths", "bridge_layout", "check_joint",
+           "joint_demand", "joint_pounding", "seat_widths"]
 
 FloatArray = NDArray[np.float64]
 
@@ -173,59 +173,6 @@ def joint_demand(spec: LimitStateSpec, layout: BridgeLayout, table: Any) -> Floa
 def joint_pounding(layout: BridgeLayout, table: Any) -> FloatArray:
     """Whether each run pounded at any expansion joint (1.0, 0.0; NaN: failed)."""
     return joint_demand(LimitStateSpec(demand="pounding", joint="joints"), layout, table)
-
-
-def bridge_needed_gaps(cases: Any, table: Any) -> Any:
-    """The gap the joints need at each level (module docstring), from the runs without
-    joint contact that follow the study's runs in its sweep's table.
-
-    Returns
-    -------
-    pounding.studies.fragility.gaps.NeededGaps
-        ``needed`` (n_records, n_levels) [m]: the largest closing of any expansion joint,
-        NaN where the run failed (listed in ``stopped``) or closed a joint by half of
-        :data:`NO_CONTACT_GAP` or more; ``code``: ABS, SRSS, DDC at the gap level, largest
-        over the joints; ``scaled`` False.
-    """
-    from pounding.studies.fragility.gaps import NeededGaps
-    from pounding.studies.separation_rules import code_gaps, cqc_correlation
-
-    layout: BridgeLayout = cases.bridge
-    df = table.sort_values("case_index").iloc[len(cases.rows):]
-    if len(df) != len(cases.needed_rows):
-        raise ValueError(f"results: {len(df)} rows without joint contact for "
-                         f"{len(cases.needed_rows)} such runs of the study")
-    ok = (df["status"] == "ok").to_numpy()
-    closing = np.column_stack([df[f"peak_closing_m_J{j + 1}"].to_numpy(dtype=float,
-                                                                     na_value=np.nan)
-                               for j in range(layout.n_joints)]).max(axis=1)
-    reached = ok & (closing >= 0.5 * NO_CONTACT_GAP)
-    closing = np.where(ok & ~reached, closing, np.nan)
-    nr, nl = len(cases.records), len(cases.needed_levels)
-    idx = np.array(cases.needed_rows)
-    grid = np.full((nr, nl), np.nan)
-    grid[idx[:, 0], idx[:, 1]] = closing
-    at = float(cases.config.gap_at())
-    ia = cases.needed_levels.index(at)
-    stopped = [f"{cases.records[r]} at {cases.needed_levels[li]:g} g, without joint contact: "
-               + (str(msg) if not good else f"a joint closed by {c:.3g} m")
-               for (r, li), good, far, msg, c in zip(cases.needed_rows, ok, reached,
-                                                     df["error"], closing)
-               if not good or far]
-    # the code gaps of every joint from the decks' mean peaks at the gap level
-    at_rows = (idx[:, 1] == ia) & ok
-    peaks = [df[f"peak_displacement_m_{d}"].to_numpy(dtype=float, na_value=np.nan)[at_rows]
-             for d in layout.decks]
-    code = {"ABS": np.nan, "SRSS": np.nan, "DDC": np.nan}
-    if at_rows.any():
-        u = np.array([p.mean() for p in peaks])
-        rho = [cqc_correlation(layout.periods[j], layout.periods[j + 1], layout.zetas[j],
-                               layout.zetas[j + 1]) for j in range(layout.n_joints)]
-        rules = code_gaps(u[:-1], u[1:], rho)
-        code = {k: float(np.max(v)) for k, v in rules.items()}
-    levels = np.asarray(cases.levels, dtype=float)
-    return NeededGaps(levels, grid[:, :len(levels)], at, grid[:, ia], code, scaled=False,
-                      stopped=tuple(stopped))
 
 
 @dataclass(frozen=True)

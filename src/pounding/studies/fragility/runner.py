@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from pounding.progress import Progress
-from pounding.studies.fragility.gaps import needed_gaps
+from pounding.studies.fragility.gaps import bridge_needed_gaps, needed_gaps
 from pounding.studies.fragility.cases import StudyCases, study_cases
 
 __all__ = ["FragilityOutcome", "run_study"]
@@ -94,8 +94,6 @@ def run_study(input: str | os.PathLike[str] | StudyCases,
     t2 = time.perf_counter()
     table = load_results(res.results)
     if gaps is None:
-        from pounding.studies.fragility.bridge import bridge_needed_gaps
-
         gaps = bridge_needed_gaps(cases, table)
     result = analyse(cases, table, gaps)
     files = write_outputs(cases, result, figures=True if figures is None else figures)
