@@ -66,7 +66,8 @@ STATUS_TEXT = {FIT_OK: "fitted",
                FIT_NONE: "never exceeded: the median is above the highest level",
                FIT_ALL: "exceeded in every run: the median is below the lowest level",
                FIT_SEPARATED: "separated data: beta -> 0, the median lies between two levels",
-               FIT_FAILED: "not fitted (too few exceedances)"}
+               FIT_FAILED: "not fitted (too few exceedances, or no trend with the "
+                           "intensity)"}
 
 
 def _num(x: Any) -> Any:
