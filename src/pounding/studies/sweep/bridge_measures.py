@@ -13,7 +13,9 @@ right abutment). Per seat the row holds:
   ``u_{j+1} − u_j`` at joint ``j``, ``u_1`` at the left abutment, ``−u_n`` at the right one;
   0 if it only closed), read at the output steps through
   :func:`~pounding.result.bridge_seats.seat_openings`: the demand the seat width is checked
-  against (unseating);
+  against (unseating). (Under a spatially varying motion ``seat_openings`` reads the decks'
+  displacements relative to their own grounds, without the grounds' difference, which the
+  closing below includes.)
 * ``peak_closing_m_<seat>`` — the largest closing of the joint [m] (``u_j − u_{j+1}``; at the
   abutments the deck end toward the backwall), located between output steps on the cubic
   Hermite interpolant of the closing and its rate
