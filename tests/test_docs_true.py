@@ -7,6 +7,7 @@ from pathlib import Path
 
 from pounding.integrate import default_step_budget
 from pounding.result import ENERGY_NAMES
+from pounding.studies.sweep.bridge_measures import BRIDGE_MEASURES
 from pounding.studies.sweep.hinge_measures import HINGE_MEASURES
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES, ROTATION_NAMES
 
@@ -36,9 +37,14 @@ def test_the_sweep_table_lists_every_column_in_the_order_written() -> None:
     after = 5 + len(MEASURES)
     assert names[after:after + len(HINGE_MEASURES)] == list(HINGE_MEASURES)
     assert floor == list(FLOOR_MEASURES)
+    # then, for a bridge only, its seats' and restrainers' columns, in the table's order
+    bridge = [n.split("_<")[0] for n in names if n.endswith(("_<seat>", "_<restrainer>"))]
+    assert bridge == list(BRIDGE_MEASURES)
+    assert names[-1 - len(bridge):-1] == [f"{n}_<restrainer>" if n == "peak_force_N"
+                                          else f"{n}_<seat>" for n in BRIDGE_MEASURES]
     assert names[-1] == "wall_time_s"
     assert len(names) == (5 + len(MEASURES) + len(HINGE_MEASURES) + 2 * len(FLOOR_MEASURES)
-                          + 1)
+                          + len(BRIDGE_MEASURES) + 1)
 
 
 def test_every_energy_term_is_named_where_the_docs_list_them() -> None:

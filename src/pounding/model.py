@@ -41,6 +41,7 @@ their forces come from their laws, and the stiffness matrix handed to the kernel
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -75,7 +76,7 @@ from pounding.structure.dof_names import dof_labels, dof_units
 from pounding.structure.element_rows import ElementRow, element_rows
 from pounding.structure.plan import PlanBuilding
 from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
-from pounding.structure.wall import MoatWall, check_walls, wall_contacts
+from pounding.structure.wall import MoatWall, WallPoint, check_walls, wall_contacts
 from pounding.validation import non_negative, positive
 
 __all__ = ["CONTACT_LAWS", "SYSTEMS", "Contact", "ContactPoint", "ContactSpec", "PoundingModel",
@@ -226,7 +227,6 @@ class PoundingModel:
         frozen_set(self, "gaps", tuple(non_negative(f"gaps[{i}]", g)
                                        for i, g in enumerate(gaps)))
         frozen_set(self, "devices", tuple(devices))
-        self._check_devices()
         frozen_set(self, "walls", tuple(walls))
         if self.walls:
             check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
@@ -236,6 +236,7 @@ class PoundingModel:
             raise ValueError("bridge: the buildings must be the bridge's frames, in order "
                              "(PoundingModel.from_bridge)")
         frozen_set(self, "bridge", bridge)
+        self._check_devices()
         self._check_law_codes()
 
     @classmethod
@@ -273,7 +274,7 @@ class PoundingModel:
     def _check_devices(self) -> None:
         """Every device is a Link or a Bumper on floors that exist; a bumper sits in a
         floor-to-floor contact, at most one in each."""
-        seen: set[str] = set()
+        seen: set[frozenset[str]] = set()
         for i, dev in enumerate(self.devices):
             if isinstance(dev, Link):
                 for label, (b, f) in zip(dev.floors, dev.ends):
@@ -285,16 +286,20 @@ class PoundingModel:
                                          f"building B{b + 1} (DOF {f + 1} is not among its "
                                          "floors)")
             elif isinstance(dev, Bumper):
-                if dev.label in seen:
+                ends = frozenset(dev.floors)
+                if ends in seen:
                     raise ValueError(f"devices[{i}]: a second bumper in {dev.label}")
-                seen.add(dev.label)
-                bare = {c.label: c for c in self._bare_contacts}
-                if dev.label not in bare:
+                seen.add(ends)
+                bare = [c for c in self._bare_contacts + self._wall_contacts
+                        if c.is_floor_to_floor]
+                where = next((c for c in bare if dev.sits_in(c)), None)
+                if where is None:
                     raise ValueError(f"devices[{i}].floors: {dev.label} is not a floor-to-floor "
-                                     f"contact of this model (contacts: "
-                                     f"{', '.join(bare) or 'none'})")
+                                     f"contact of this model (contacts"
+                                     f"{', with the walls' if self.walls else ''}: "
+                                     f"{', '.join(c.label for c in bare) or 'none'})")
                 try:
-                    dev.gaps(bare[dev.label].gap)
+                    dev.gaps(where.gap)
                 except ValueError as exc:
                     raise ValueError(f"devices[{i}].{exc}") from exc
             else:
@@ -356,23 +361,30 @@ class PoundingModel:
 
     @cached_property
     def contacts(self) -> tuple[Contact, ...]:
-        """Every contact, pair by pair, bottom to top (see :func:`contact_points`); where a
-        bumper sits, its pad (``…/bumper``) and then the building contact moved to where the
-        pad bottoms out (:func:`pounding.devices.bumper.split_contact`); then the contacts
-        with the walls (:func:`pounding.structure.wall.wall_contacts`)."""
-        bumpers = {d.label: d for d in self.devices if isinstance(d, Bumper)}
+        """Every contact, pair by pair, bottom to top (see :func:`contact_points`), then the
+        contacts with the walls (:func:`pounding.structure.wall.wall_contacts`); where a
+        bumper sits (between two floors, or on a wall), its pad (``…/bumper``) and then the
+        contact moved to where the pad bottoms out
+        (:func:`pounding.devices.bumper.split_contact`)."""
+        bumpers = [d for d in self.devices if isinstance(d, Bumper)]
         out: list[Contact] = []
-        for c in self._bare_contacts:
-            bumper = bumpers.get(c.label)
+        for c in self._bare_contacts + self._wall_contacts:
+            bumper = next((d for d in bumpers if c.is_floor_to_floor and d.sits_in(c)), None)
             if bumper is None:  # renumbered after a bumper's pad
-                out.append(replace(c, index=len(out)) if bumpers else c)
+                out.append(replace(c, index=len(out)) if c.index != len(out) else c)
                 continue
-            a, b = self.buildings[c.left.building], self.buildings[c.right.building]
-            rubber = bumper.rubber.build(c.left.effective_mass(a.masses),
-                                         c.right.effective_mass(b.masses))
+            rubber = bumper.rubber.build(*(math.inf if isinstance(p, WallPoint) else
+                                           p.effective_mass(self.buildings[p.building].masses)
+                                           for p in (c.left, c.right)))
             out.extend(split_contact(c, bumper, rubber, len(out)))
-        return tuple(out) + wall_contacts(self.walls, self.buildings, self.contact,
-                                          self.floor_to_column, self.level_tolerance, len(out))
+        return tuple(out)
+
+    @cached_property
+    def _wall_contacts(self) -> tuple[Contact, ...]:
+        """The contacts of the walls, without bumpers, numbered after the buildings'
+        (:func:`pounding.structure.wall.wall_contacts`)."""
+        return wall_contacts(self.walls, self.buildings, self.contact, self.floor_to_column,
+                             self.level_tolerance, len(self._bare_contacts))
 
     @property
     def links(self) -> tuple[Link, ...]:

@@ -66,7 +66,8 @@ _NAME_UNITS: dict[str, str] = {
     "h_max": "s", "n_impacts": "-", "impacts": "-", "energy_balance_error": "-",
     "restitution": "-", "drift_ratio": "-", "case": "-", "touched": "-", "pounding": "-",
     "peak_drift_ratio": "-", "impact_overflow": "-", "case_index": "-", "max_ductility": "-",
-    "max_column_shear_ratio": "-", "level_tolerance": "m",
+    "max_column_shear_ratio": "-", "level_tolerance": "m", "slack": "m",
+    "yield_force": "N", "abutment_gaps": "m",
 }
 """Units of the columns and model-file keys whose name does not end in a unit."""
 
@@ -80,8 +81,12 @@ _KEY_NAMES: dict[str, str] = {
     "stiffness": "storey stiffness", "stiffnesses": "storey stiffnesses",
     "period": "period T1", "height": "storey height", "heights": "storey heights",
     "n_storeys": "storeys", "rtol": "relative tolerance", "h_max": "largest step",
-    "level_tolerance": "level tolerance",
+    "level_tolerance": "level tolerance", "slack": "restrainer slack",
+    "yield_force": "yield force", "abutment_gaps": "abutment gap",
 }
+_RESTRAINER_NAMES: dict[str, str] = {"k": "stiffness k", "c": "dashpot c", "slack": "slack",
+                                     "alpha": "exponent α", "hardening": "hardening ratio"}
+"""Readable names of a bridge restrainer's keys (``bridge.joint.N.restrainer.<key>``)."""
 """Readable names of model-file keys (the last part of a sweep's parameter path)."""
 
 _PATH_NAMES: dict[str, str] = {
@@ -98,12 +103,14 @@ _MEASURE_NAMES: dict[str, str] = {
     "max_residual_drift": "largest residual drift",
     "max_column_shear_ratio": "largest column shear over storey shear",
     "peak_abs_accel": "peak absolute acceleration",
+    "peak_force": "peak force",
 }
 """Readable names of sweep measures (``docs/sweep.md``) without their unit suffix, where
 replacing ``_`` by a space does not do."""
 
-_FLOOR = re.compile(r"_(B\d+F\d+)$")
-"""The floor of a per-floor column: ``<measure>_B1F2``."""
+_FLOOR = re.compile(r"_(B\d+F\d+|[AJ]\d+|R\d+[a-z]?)$")
+"""The floor of a per-floor column, ``<measure>_B1F2``; or a bridge's seat or restrainer
+(``<measure>_J1``, ``_A2``, ``_R1``: :mod:`pounding.studies.sweep.bridge_measures`)."""
 
 
 def unit_of(column: str, units: dict[str, str] | None = None) -> str | None:
@@ -125,7 +132,8 @@ def unit_of(column: str, units: dict[str, str] | None = None) -> str | None:
     """
     if units and column in units:
         return units[column]
-    base = _FLOOR.sub("", column.split(".")[-1])
+    parts = column.split(".")
+    base = _FLOOR.sub("", parts[-2] if len(parts) > 2 and parts[-1].isdigit() else parts[-1])
     if base in _NAME_UNITS:
         return _NAME_UNITS[base]
     if re.search(r"\[([^\]]+)\]\s*$", column):
@@ -154,13 +162,24 @@ def column_name(column: str) -> str:
     """
     parts = column.split(".")
     if len(parts) > 1:  # a parameter path: table.key or building.N.key
-        key = parts[-1]
+        item = parts[-1] if parts[-1].isdigit() else None  # an item of a list
+        key = parts[-2] if item is not None else parts[-1]
         name = (_PATH_NAMES.get(f"{parts[0]}.{key}") or _KEY_NAMES.get(key)
                 or key.replace("_", " "))
         if parts[0] == "building" and len(parts) > 2:
             which = parts[1]
             name = (f"B{int(which) + 1} {name}" if which.isdigit()
                     else f"{name} (every building)" if which == "*" else name)
+        if parts[0] == "bridge":  # joint N's gap or restrainer, abutment gap N
+            if "restrainer" in parts[:-1]:
+                name = "restrainer " + _RESTRAINER_NAMES.get(key, key.replace("_", " "))
+            joint = parts.index("joint") + 1 if "joint" in parts else 0
+            if joint and joint < len(parts):
+                which = parts[joint]
+                name = (f"J{int(which) + 1} {name}" if which.isdigit()
+                        else f"{name} (every joint)" if which == "*" else name)
+            elif item is not None and key == "abutment_gaps":
+                name = f"A{int(item) + 1} {name}"
         return name
     m = _FLOOR.search(column)
     base = column[:m.start()] if m else column

@@ -296,3 +296,24 @@ def test_no_resamples_gives_no_interval() -> None:
     assert lo.shape == hi.shape == (5,) and np.all(np.isnan(lo)) and np.all(np.isnan(hi))
     lo, hi = percentile_interval(np.array([[1.0, 2.0], [3.0, 4.0]]), 0.5)
     assert lo.tolist() == [1.0, 2.0] and hi.tolist() == [3.0, 4.0]
+
+
+def test_counts_without_a_trend_are_no_fit() -> None:
+    """The same fraction at every level (8 of 9 records pound at every level: one record
+    never does): the likelihood's maximum is at β → ∞, θ → 0, so there is no fragility.
+    It used to be reported as fitted (θ = 1e-300 g, β = 9e15; overflow warnings printed by
+    the study); now it is not fitted, in one line, without a warning."""
+    import warnings
+
+    from pounding.studies.fragility.fitting import FIT_FAILED, MAX_BETA, probit_mle
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        med, beta, status = probit_mle([0.25, 0.5, 1.0], [9, 9, 9], [[8, 8, 8], [3, 3, 3]])
+    assert status.tolist() == [FIT_FAILED, FIT_FAILED] and np.isnan(med).all()
+    with pytest.raises(ValueError, match=r"^n_exceed: the likelihood could not be maximised, "
+                                         r"or the counts show no trend with the intensity"):
+        fit_lognormal_mle([0.25, 0.5, 1.0], 9, [8, 8, 8])
+    # a shallow but real trend is still fitted (β below the bound)
+    theta, beta = fit_lognormal_mle([0.1, 1.0, 10.0, 100.0], 100, [20, 35, 52, 68])
+    assert 1.0 < beta < MAX_BETA and 1.0 < theta < 100.0

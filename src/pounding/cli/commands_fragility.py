@@ -77,11 +77,23 @@ def _print(res: Any) -> None:
     for name, _, gm, lo, hi, pe, pf in _gap_rows(cases, a):
         ci = f" ({1000 * lo:.0f} – {1000 * hi:.0f})" if lo == lo else ""
         gap_rows.append((literal(name), f"{1000 * gm:.1f}{ci}", f"{pe:.2f}", f"{pf:.3f}"))
-    print_table(console, f"gap at {cases.im_label.replace(' [g]', '')} = {ga.needed.at:g} g "
-                         f"(needed gaps: lognormal θ = {1000 * ga.median:.1f} mm, β = "
-                         f"{ga.beta:.3f})",
+    joints = "joint gap" if cases.bridge is not None else "gap"
+    print_table(console, f"{joints} at {cases.im_label.replace(' [g]', '')} = "
+                         f"{ga.needed.at:g} g (needed gaps: lognormal θ = "
+                         f"{1000 * ga.median:.1f} mm, β = {ga.beta:.3f})",
                 [Col("gap from", "left", wrap=True), Col("gap [mm]"), Col("P(pounding), records"),
                  Col("P(pounding), lognormal")], gap_rows)
+    if a.seats is not None:
+        from pounding.studies.fragility.outputs import seat_rows
+
+        seats = [(f"{x:g}", f"{1000 * med:.1f}", f"{beta:.3f}",
+                  f"{1000 * w:.1f}" + (f" ({1000 * lo:.0f} – {1000 * hi:.0f})" if lo == lo
+                                       else ""), f"{1000 * wr:.1f}")
+                 for x, _, med, beta, w, lo, hi, wr in seat_rows(cases, a)]
+        print_table(console, f"seat width for P(unseating) = {a.seats.target:g} (every seat "
+                             "as wide; from the records' largest seat opening)",
+                    [Col(cases.im_label), Col("opening θ [mm]"), Col("β [-]"),
+                     Col("width, lognormal [mm]"), Col("width, records [mm]")], seats)
     if a.hinges is not None and a.hinges.collapses:
         console.print(Text(f"{len(a.hinges.collapses)} run(s) collapsed (a frame lost its "
                            "strength, or a storey drifted by more than its height): counted as "

@@ -51,8 +51,9 @@ def _print(res: Any) -> None:
     from pounding.units import G
 
     s = res.summary
-    forces = [s[c].abs().max() for c in ("peak_impact_force_N", "peak_pad_force_N",
-                                         "peak_storey_shear_N")]
+    bridge = "peak_seat_opening_m" in s.columns  # a bridge: its piers carry the shear
+    shear = "peak_pier_shear_N" if bridge else "peak_storey_shear_N"
+    forces = [s[c].abs().max() for c in ("peak_impact_force_N", "peak_pad_force_N", shear)]
     f_scale, f_unit = force_scale(max(forces))
     energies = [s[c].abs().max() for c in ("contact_dissipated_J", "pads_dissipated_J",
                                            "links_dissipated_J")]
@@ -60,18 +61,24 @@ def _print(res: Any) -> None:
     cols = [Col("option", "left", wrap=True), Col("impacts"),
             Col(f"peak impact force [{f_unit}]"), Col("pad impacts"),
             Col(f"peak pad force [{f_unit}]"), Col("peak drift ratio [%]"),
-            Col(f"peak storey shear [{f_unit}]"), Col("peak floor accel. [g]"),
+            Col(f"peak {'pier' if bridge else 'storey'} shear [{f_unit}]"),
+            Col("peak floor accel. [g]"),
             Col(f"dissipated in contacts [{e_unit}]"), Col(f"dissipated by pads [{e_unit}]"),
             Col(f"dissipated by links [{e_unit}]")]
-    rows = [(literal(name), f"{r['n_impacts']:.1f}",
-             number(r["peak_impact_force_N"] * f_scale), f"{r['n_pad_impacts']:.1f}",
-             number(r["peak_pad_force_N"] * f_scale), number(100 * r["peak_drift_ratio"], 3),
-             number(r["peak_storey_shear_N"] * f_scale),
-             number(r["peak_abs_accel_m_s2"] / G, 3),
-             number(r["contact_dissipated_J"] * e_scale),
-             number(r["pads_dissipated_J"] * e_scale),
-             number(r["links_dissipated_J"] * e_scale))
-            for name, r in s.iterrows()]
+    if bridge:
+        cols[5:5] = [Col("peak seat opening [mm]")]
+    rows = []
+    for name, r in s.iterrows():
+        row = [literal(name), f"{r['n_impacts']:.1f}",
+               number(r["peak_impact_force_N"] * f_scale), f"{r['n_pad_impacts']:.1f}",
+               number(r["peak_pad_force_N"] * f_scale), number(100 * r["peak_drift_ratio"], 3),
+               number(r[shear] * f_scale), number(r["peak_abs_accel_m_s2"] / G, 3),
+               number(r["contact_dissipated_J"] * e_scale),
+               number(r["pads_dissipated_J"] * e_scale),
+               number(r["links_dissipated_J"] * e_scale)]
+        if bridge:
+            row[5:5] = [number(1000 * r["peak_seat_opening_m"], 4)]
+        rows.append(tuple(row))
     print_table(console, f"retrofit options (mean over {int(s['records'].iloc[0])} "
                          "record(s))", cols, rows)
     console.print(Text.assemble("results in ", (str(res.out_dir), "bold"), ": "

@@ -142,11 +142,10 @@ class RunConfig(Section):
 
     def _bridge_keys(self) -> RunConfig:
         """A bridge's file: no buildings or walls beside it, a contact law without gaps."""
-        for key in ("building", "wall", "device"):
+        for key in ("building", "wall"):
             if getattr(self, key):
                 raise field_error(key, f"a model file with a [bridge] has no [[{key}]]: its "
-                                       "frames are the row, its abutments the walls, its "
-                                       "restrainers the links")
+                                       "frames are the row, its abutments the walls")
         assert self.bridge is not None
         if self.contact is None:
             raise field_error("contact", "required with a [bridge]: a [contact] table with the "
@@ -260,12 +259,30 @@ class RunConfig(Section):
             bridge = self.bridge.build(self.name)
         with prefixed("contact", ContactConfig.model_fields):
             spec = self.contact.spec()
+        # [[device]] beside the bridge's own restrainers: links between decks, bumpers in a
+        # joint's gap or at a backwall (floors = "all": at every joint)
+        devices: list[Any] = []
+        owner: list[int] = []
+        joints = [(f"B{j + 1}F1", f"B{j + 2}F1") for j in range(len(bridge.frames) - 1)]
+        for i, d in enumerate(self.device):
+            with prefixed(f"device[{i}]", DeviceConfig.model_fields):
+                made = d.build(joints)
+            devices.extend(made)
+            owner.extend([i] * len(made))
+        arguments = bridge.model_arguments()
+        own = len(arguments["devices"])  # the restrainers come first
+        arguments["devices"] = [*arguments["devices"], *devices]
         try:
-            model = PoundingModel.from_bridge(bridge, spec,
-                                              level_tolerance=self.contact.level_tolerance)
+            model = PoundingModel(contact=spec, level_tolerance=self.contact.level_tolerance,
+                                  **arguments)
             model.contacts  # noqa: B018  (builds every contact law with its deck masses)
         except ValueError as exc:
-            raise ValueError(f"bridge: {exc}") from exc
+            text = str(exc)
+            found = re.match(r"devices\[(\d+)\]", text)
+            if found and int(found[1]) >= own:  # a [[device]] of the file
+                raise ValueError(f"device[{owner[int(found[1]) - own]}]"
+                                 + text[found.end():]) from exc
+            raise ValueError(f"bridge: {text}") from exc
         with prefixed("record", RecordConfig.model_fields):
             motion = self.record.load(components=False)
         if self.spatial is not None:

@@ -26,7 +26,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
-from pounding.devices.link import parse_floor
+from pounding.devices.link import _FLOOR, parse_floor
 
 if TYPE_CHECKING:
     from pounding.contact.base import ContactLaw
@@ -47,7 +47,8 @@ class Bumper:
     ----------
     floors : (str, str)
         The contact's two floors, e.g. ``("B1F3", "B2F3")`` (which floor carries the pad does
-        not change the motion).
+        not change the motion); or a floor and a wall's name, ``("A1", "B1F1")``: a pad on
+        the wall (a bridge's backwall) where that floor strikes it.
     thickness : float
         Pad thickness t [m], at most the gap.
     compression_limit : float
@@ -66,8 +67,18 @@ class Bumper:
         if not isinstance(self.floors, (tuple, list)) or len(self.floors) != 2:
             raise ValueError(f"floors: give the contact's two floor labels, e.g. "
                              f"['B1F3', 'B2F3'] (got {self.floors!r})")
-        ends = sorted((parse_floor(f), str(f).strip().upper()) for f in self.floors)
-        object.__setattr__(self, "floors", (ends[0][1], ends[1][1]))
+        texts = [str(f).strip() for f in self.floors]
+        walls = [t for t in texts if _FLOOR.match(t.upper()) is None]
+        if len(walls) == 2 or "" in walls:
+            raise ValueError(f"floors: give two floor labels like 'B1F3' (building and floor "
+                             f"numbers from 1), or a floor and a wall's name like ['A1', "
+                             f"'B1F1'] (got {self.floors!r})")
+        if walls:  # a floor and a wall, in the order given
+            object.__setattr__(self, "floors", tuple(t if t in walls else t.upper()
+                                                     for t in texts))
+        else:
+            ends = sorted((parse_floor(f), str(f).strip().upper()) for f in self.floors)
+            object.__setattr__(self, "floors", (ends[0][1], ends[1][1]))
         if not (math.isfinite(self.thickness) and self.thickness > 0):
             raise ValueError(f"thickness: must be finite and > 0 [m] (got {self.thickness!r})")
         if not (math.isfinite(self.compression_limit) and 0 < self.compression_limit < 1):
@@ -76,8 +87,13 @@ class Bumper:
 
     @property
     def label(self) -> str:
-        """The contact it sits in: ``"B1F3-B2F3"``."""
+        """The contact it sits in: ``"B1F3-B2F3"`` (``"A1-B1F1"``: on wall A1)."""
         return f"{self.floors[0]}-{self.floors[1]}"
+
+    def sits_in(self, contact: Contact) -> bool:
+        """Whether this pad sits in ``contact``: its two ends are the contact's two points
+        (floors, or a floor and a wall), in either order."""
+        return {contact.left.label(), contact.right.label()} == set(self.floors)
 
     @property
     def bottoming(self) -> float:

@@ -96,6 +96,18 @@ _GRID_MEMO: "weakref.WeakKeyDictionary[object, dict[tuple[float, float], np.ndar
     weakref.WeakKeyDictionary())
 
 
+def ground_displacement_on_grid(record: GroundMotion, dt: float, nt: int
+                                ) -> tuple[np.ndarray, np.ndarray]:
+    """The ground's displacement [m] and velocity [m/s] at ``nt`` grid points ``dt`` apart,
+    from rest: the record (as :func:`ground_on_grid` puts it on the grid, linear between
+    the points) integrated exactly — as the time stepper integrates a ground station's
+    motion (:mod:`pounding.integrate.stations`)."""
+    a = ground_on_grid(record, dt, (nt - 1) * dt)[:nt]
+    v = np.concatenate([[0.0], np.cumsum(0.5 * dt * (a[:-1] + a[1:]))])
+    u = np.concatenate([[0.0], np.cumsum(dt * v[:-1] + dt * dt * (2 * a[:-1] + a[1:]) / 6)])
+    return u, v
+
+
 def n_ground_components(motion: GroundMotion | GroundMotionComponents) -> int:
     """G of a motion: 1 for a :class:`GroundMotion`."""
     return motion.n_components if isinstance(motion, GroundMotionComponents) else 1

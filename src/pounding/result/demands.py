@@ -45,11 +45,14 @@ DEMANDS: dict[str, Demand] = {
                                largest=1.0, exceeded_by_collapse=True),
     "collapse": Demand("collapse", "collapse", "-", 1.0, binary=True,
                        exceeded_by_collapse=True),
+    "seat_opening": Demand("seat_opening", "peak seat opening", "m", 1.0, largest=100.0),
 }
 """The demands a limit state can be put on. ``limit`` is given in the unit shown: impact
 force in MN (at most 1e7 MN, the weight of 1e12 kg), drift ratio in % (at most 100: a
 drift of the whole storey height), floor acceleration in g (at most 100), a number of
 impacts (at most a million), a ductility (at most 1000) or a plastic hinge rotation
-``|θ − M/k0|`` in rad (at most 1). ``pounding`` and ``collapse`` are yes/no: collapse is a
+``|θ − M/k0|`` in rad (at most 1), or a bridge's peak seat opening in m (at most 100: the
+limit is the seat width; :mod:`pounding.result.bridge_seats`). ``pounding`` and
+``collapse`` are yes/no: collapse is a
 hinge of a frame past its IMK capping rotation, a peak storey drift ratio beyond a drift
 limit, or a run stopped because a frame lost its strength (:mod:`pounding.studies.fragility`)."""

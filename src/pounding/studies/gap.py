@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
 from pounding.contact.geometry import Contact, ContactPoint
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
@@ -40,6 +40,7 @@ from pounding.progress import Progress
 from pounding.spectra import DesignSpectrum, fundamental_mode, spectral_displacements
 from pounding.structure import ShearBuilding
 from pounding.structure.wall import WallPoint
+from pounding.studies.between_steps import ground_histories, hermite_max, wall_ground_histories
 from pounding.studies.separation_rules import RULES, code_gaps, cqc_correlation
 
 if TYPE_CHECKING:
@@ -50,6 +51,7 @@ __all__ = [
     "GapStudy",
     "critical_gaps",
     "gap_label",
+    "ground_histories",
     "fundamental_mode",
     "hermite_max",
     "spectral_displacements",
@@ -59,64 +61,6 @@ FloatArray = NDArray[np.float64]
 
 
 # ============================================================================ simulation
-def hermite_max(y: ArrayLike, dy: ArrayLike, dt: float) -> tuple[FloatArray, FloatArray]:
-    """Largest value and its time of the piecewise cubic Hermite interpolant of samples.
-
-    On each step ``[t_k, t_k + dt]`` the cubic matching ``y`` and its derivative ``dy`` at
-    both ends is maximised exactly (its stationary points are the roots of a quadratic), so
-    a peak between samples is not missed. The interpolation error is at most
-    ``dt⁴ max|y''''| / 384``.
-
-    Parameters
-    ----------
-    y, dy : array_like, shape (nt,) or (nt, m)
-        Samples at ``k·dt`` and their time derivatives, column by column.
-    dt : float
-        Sample step [s].
-
-    Returns
-    -------
-    value, time : ndarray, shape (m,) (or scalars' 0-d arrays for 1-D input)
-    """
-    Y = np.asarray(y, dtype=float)
-    D = np.asarray(dy, dtype=float)
-    one = Y.ndim == 1
-    if one:
-        Y, D = Y[:, None], D[:, None]
-    nt = Y.shape[0]
-    if nt == 1:
-        val, tm = Y[0].copy(), np.zeros(Y.shape[1])
-        return (val[0], tm[0]) if one else (val, tm)
-    y0, y1 = Y[:-1], Y[1:]
-    m0, m1 = D[:-1] * dt, D[1:] * dt
-    # p(s) = a s³ + b s² + c s + y0 on s ∈ [0, 1]
-    a = 2.0 * y0 + m0 - 2.0 * y1 + m1
-    b = -3.0 * y0 - 2.0 * m0 + 3.0 * y1 - m1
-    c = m0
-    A, B, C = 3.0 * a, 2.0 * b, c
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        disc = B * B - 4.0 * A * C
-        sq = np.sqrt(np.maximum(disc, 0.0))
-        q = -0.5 * (B + np.where(B >= 0.0, sq, -sq))
-        s1 = np.where(A != 0.0, q / A, np.nan)
-        s2 = np.where(q != 0.0, C / q, np.nan)
-    ok = disc >= 0.0
-    best = np.maximum(y0, y1)
-    sbest = np.where(y1 > y0, 1.0, 0.0)
-    for s in (s1, s2):
-        valid = ok & np.isfinite(s) & (s > 0.0) & (s < 1.0)
-        ss = np.where(valid, s, 0.0)
-        p = ((a * ss + b) * ss + c) * ss + y0
-        better = valid & (p > best)
-        best = np.where(better, p, best)
-        sbest = np.where(better, ss, sbest)
-    k = np.argmax(best, axis=0)
-    cols = np.arange(Y.shape[1])
-    val = best[k, cols]
-    tm = (k + sbest[k, cols]) * dt
-    return (val[0], tm[0]) if one else (val, tm)
-
-
 @dataclass(frozen=True, eq=False)
 class GapStudy:
     """Critical gaps by simulation, per record and per shared floor level.
@@ -334,32 +278,6 @@ def _own_record(motion: GroundMotion | GroundMotionComponents, building: int
     return motion.records[building] if isinstance(motion, SpatialMotion) else motion
 
 
-def _grounds(motion: object, n_buildings: int, dt: float, nt: int
-             ) -> tuple[list[tuple[FloatArray, FloatArray]],
-                        dict[str, tuple[FloatArray, FloatArray]]]:
-    """Each building's ground displacement [m] and velocity [m/s] at the ``nt`` output
-    steps ``dt`` apart, and those of the end walls on a ground of their own (by side): all
-    zero under one record; under a :class:`~pounding.ground_motion.spatial.SpatialMotion`
-    its record integrated exactly (linear between samples, from rest), as the time stepper
-    integrates it (the absolute ground displacement: only differences between grounds enter
-    a gap)."""
-    from pounding.ground_motion.spatial import SpatialMotion
-
-    zero = np.zeros(nt)
-    if not isinstance(motion, SpatialMotion):
-        return [(zero, zero)] * n_buildings, {}
-    from pounding.integrate.grid import ground_on_grid
-
-    def integrated(rec: GroundMotion) -> tuple[FloatArray, FloatArray]:
-        a = ground_on_grid(rec, dt, (nt - 1) * dt)[:nt]
-        v = np.concatenate([[0.0], np.cumsum(0.5 * dt * (a[:-1] + a[1:]))])
-        u = np.concatenate([[0.0], np.cumsum(dt * v[:-1] + dt * dt * (2 * a[:-1] + a[1:]) / 6)])
-        return u, v
-
-    return ([integrated(rec) for rec in motion.records],
-            {side: integrated(rec) for side, rec in motion.walls.items()})
-
-
 def _alone(building: ShearBuilding) -> PoundingModel:
     return PoundingModel([building], [], ContactSpec("linear-spring", k=1.0),
                          name=building.name or "building")
@@ -497,7 +415,8 @@ def critical_gaps(model: PoundingModel,
         step = runs[0].dt
         durs[i] = runs[0].end
 
-        grounds, wall_grounds = _grounds(ms[i], len(runs), step, runs[0].n)
+        grounds = ground_histories(ms[i], len(runs), step, runs[0].n)
+        wall_grounds = wall_ground_histories(ms[i], step, runs[0].n)
 
         def point(p: ContactPoint, other: ContactPoint, side: str) -> tuple[FloatArray, ...]:
             """The point's displacement and velocity relative to its ground, and its

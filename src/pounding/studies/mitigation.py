@@ -45,7 +45,7 @@ if TYPE_CHECKING:
 
     from pounding.result import Result
 
-__all__ = ["MEASURES", "MitigationOutcome", "MitigationStudy", "OptionConfig",
+__all__ = ["BRIDGE_MEASURES", "MEASURES", "MitigationOutcome", "MitigationStudy", "OptionConfig",
            "load_mitigation", "measure_row", "run_mitigation", "summarise"]
 
 MEASURES: dict[str, str] = {
@@ -62,6 +62,18 @@ MEASURES: dict[str, str] = {
     "peak_link_force_N": "largest |force| of any link [N]",
 }
 """Columns of the comparison table, each for one option under one record."""
+
+BRIDGE_MEASURES: dict[str, str] = {
+    "peak_seat_opening_m": "largest opening of any seat (joints and abutments) [m]",
+    "peak_joint_opening_m": "largest opening of any expansion joint [m]",
+    "peak_pier_shear_N": "largest shear of any pier [N]",
+    "peak_bearing_displacement_m": "largest displacement of any bearing [m]",
+}
+"""Columns added for a bridge (:mod:`pounding.structure.bridge`): its seats' openings —
+what unseats a deck (:func:`pounding.result.bridge_seats.seat_openings`) — and its piers'
+and bearings' peaks (:attr:`pounding.result.Result.bridge_elements`). A bridge's frames
+have no storeys: its ``peak_storey_shear_N`` is empty, its ``peak_drift_ratio`` that of
+the decks (their displacement over the deck's elevation)."""
 
 
 class OptionConfig(Section):
@@ -193,6 +205,11 @@ def _case_error(text: str, option: int, record: int, base_devices: int, own_reco
 
 
 def measure_row(result: "Result") -> dict[str, float]:
+    """The :data:`MEASURES` of one run (and, for a bridge, its :data:`BRIDGE_MEASURES`)."""
+    return {**_measures(result), **_bridge_row(result)}
+
+
+def _measures(result: "Result") -> dict[str, float]:
     """The :data:`MEASURES` of one run."""
     from pounding.result.foundations import footing_dofs
 
@@ -221,6 +238,26 @@ def measure_row(result: "Result") -> dict[str, float]:
     }
 
 
+def _bridge_row(result: "Result") -> dict[str, float]:
+    """A bridge's :data:`BRIDGE_MEASURES` of one run; ``{}`` for buildings."""
+    from pounding.studies.sweep.bridge_measures import is_bridge
+
+    if not is_bridge(result.model):
+        return {}
+    from pounding.result.bridge_seats import seat_openings
+
+    names, openings = seat_openings(result)
+    joints = [i for i, n in enumerate(names) if n.startswith("J")]
+    elements = result.bridge_elements
+    return {
+        "peak_seat_opening_m": float(max(openings.max(), 0.0)),
+        "peak_joint_opening_m": float(max(openings[:, joints].max(), 0.0)) if joints else 0.0,
+        "peak_pier_shear_N": _largest([e.peak_force for e in elements if e.kind == "pier"]),
+        "peak_bearing_displacement_m": _largest([e.peak_deformation for e in elements
+                                                 if e.kind != "pier"]),
+    }
+
+
 def _largest(values: Any) -> float:
     """The largest value that is not NaN; NaN if there is none (no warning)."""
     v = np.asarray(values, dtype=float)
@@ -231,7 +268,8 @@ def _largest(values: Any) -> float:
 def summarise(table: "pd.DataFrame") -> "pd.DataFrame":
     """Per option (in the study's order), the mean of every measure over the records."""
     order = list(dict.fromkeys(table["option"]))
-    out = table.groupby("option", sort=False)[list(MEASURES)].mean()
+    columns = list(MEASURES) + [c for c in BRIDGE_MEASURES if c in table.columns]
+    out = table.groupby("option", sort=False)[columns].mean()
     out.insert(0, "records", table.groupby("option", sort=False)["record"].count())
     return out.loc[order]
 

@@ -17,7 +17,8 @@ The modules, one concept each: :mod:`.fitting` (the fits: :func:`fit_lognormal_m
 :mod:`.ida` (IDA curves, capacities, fractiles), :mod:`.bootstrap` (intervals),
 :mod:`.gap_probability` (P(pounding | gap) and the gap for a probability), :mod:`.study`
 (the study file), :mod:`.cases` (the study's runs as a sweep), :mod:`.gaps` (the gaps the
-records need), :mod:`.analysis` (the answers), :mod:`.outputs` (the folder) and
+records need), :mod:`.bridge` (a bridge's joints and seats: the seat width for a probability
+of unseating), :mod:`.analysis` (the answers), :mod:`.outputs` (the folder) and
 :mod:`.runner` (running it all).
 
 Names are imported on first use (PEP 562): ``import pounding.studies.fragility.fitting``
@@ -45,7 +46,10 @@ _EXPORTS: dict[str, str] = {
     "pounding_probability": "pounding.studies.fragility.gap_probability",
     "pounding_probability_fit": "pounding.studies.fragility.gap_probability",
     "NeededGaps": "pounding.studies.fragility.gaps",
+    "bridge_needed_gaps": "pounding.studies.fragility.gaps",
     "needed_gaps": "pounding.studies.fragility.gaps",
+    "SeatWidths": "pounding.studies.fragility.bridge",
+    "seat_widths": "pounding.studies.fragility.bridge",
     "capacities": "pounding.studies.fragility.ida",
     "exceedance_counts": "pounding.studies.fragility.ida",
     "ida_fractiles": "pounding.studies.fragility.ida",
@@ -78,7 +82,8 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
         pounding_probability,
         pounding_probability_fit,
     )
-    from pounding.studies.fragility.gaps import NeededGaps, needed_gaps
+    from pounding.studies.fragility.bridge import SeatWidths, seat_widths
+    from pounding.studies.fragility.gaps import NeededGaps, bridge_needed_gaps, needed_gaps
     from pounding.studies.fragility.ida import capacities, exceedance_counts, ida_fractiles
     from pounding.studies.fragility.runner import FragilityOutcome, run_study
     from pounding.result.demands import DEMANDS
@@ -88,8 +93,10 @@ __all__ = [
     "DEMANDS",
     "FragilityOutcome",
     "NeededGaps",
+    "SeatWidths",
     "StudyConfig",
     "StudyCases",
+    "bridge_needed_gaps",
     "capacities",
     "censored_lognormal_mle",
     "empirical_gap",
@@ -107,5 +114,6 @@ __all__ = [
     "pounding_probability_fit",
     "probit_mle",
     "run_study",
+    "seat_widths",
     "study_cases",
 ]

@@ -144,6 +144,11 @@ class FragilityAnalysis:
     """One line per failed run: record, level, message."""
     hinges: HingeRuns | None = None
     """What the frames' plastic hinges did in every run (None: a model without them)."""
+    seats: Any = None
+    """A bridge's seat widths for the target probability of unseating at every level
+    (:class:`~pounding.studies.fragility.bridge.SeatWidths`), from its runs at the first
+    gap of :attr:`gaps` (the base model's joint gaps, else the first of ``[gap] values``);
+    None for buildings."""
 
 
 @dataclass(frozen=True)
@@ -205,8 +210,11 @@ def demand_table(cases: StudyCases, table: Any
     NaN, as for a failed run."""
     ng, nr, nl = len(cases.gaps), len(cases.records), len(cases.levels)
     df = table.sort_values("case_index")
-    if len(df) != len(cases.rows):
-        raise ValueError(f"results: {len(df)} rows for {len(cases.rows)} runs of the study")
+    bridge = getattr(cases, "bridge", None)  # (a bridge's runs without joint contact follow)
+    n_runs = len(cases.rows) + len(getattr(cases, "needed_rows", ()))
+    if len(df) != n_runs:
+        raise ValueError(f"results: {len(df)} rows for {n_runs} runs of the study")
+    df = df.iloc[:len(cases.rows)]
     ok = (df["status"] == "ok").to_numpy()
     idx = np.array(cases.rows)
     has_hinges = "strength_lost" in df.columns
@@ -238,6 +246,11 @@ def demand_table(cases: StudyCases, table: Any
         if DEMANDS[key].exceeded_by_collapse:
             col = np.where(collapsed, np.inf, col)
         out[key] = grid(col)
+    if bridge is not None:  # a bridge: the largest opening of any seat
+        from pounding.studies.fragility.bridge import joint_demand
+
+        every = LimitStateSpec(demand="seat_opening", limit=0.0)
+        out["seat_opening"] = grid(joint_demand(every, bridge, df))
     failures = [f"{_where(cases, r, li, g)}: {msg}"
                 for (r, li, g), good, gone, msg in zip(cases.rows, ok, lost, df["error"])
                 if not good and not gone]
@@ -317,6 +330,8 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
                     demands["drift"][gi], ls.collapse_drift_percent / 100.0,
                     *((hinges.past_cap[gi], hinges.strength_lost[gi]) if hinges else ()))
                 v = v[has_run]
+            elif ls.joint is not None:  # a bridge's demand at one joint or seat
+                v = _at_joint(cases, table, ls)[gi][has_run]
             elif ls.demand not in demands:
                 raise ValueError(f"limit_state: demand \"{ls.demand}\" has no value in the "
                                  "runs (ductility needs yielding storeys, a plastic rotation "
@@ -331,10 +346,32 @@ def analyse(cases: StudyCases, table: Any, gaps: NeededGaps) -> FragilityAnalysi
                 ls, g, exceed, n_runs, n_exc, cap, cen,
                 fit_from_stripes(levels, exceed, boot, bs.confidence),
                 fit_from_capacities(cap, cen, boot, bs.confidence)))
-    gap = _gap_analysis(cases, gaps, demands, boot[:, :], has_run)
+    checked = demands
+    seats = None
+    if cases.bridge is not None:  # the gap analysis is the joints': pounding at a joint
+        from pounding.studies.fragility.bridge import seat_widths
+
+        checked = dict(demands, pounding=_at_joint(
+            cases, table, LimitStateSpec(demand="pounding", joint="joints")))
+        seats = seat_widths(demands["seat_opening"][0][has_run], cfg.gap.target, boot,
+                            bs.confidence)
+    gap = _gap_analysis(cases, gaps, checked, boot[:, :], has_run)
     return FragilityAnalysis(cases, levels, list(cases.records), list(cases.gaps), demands,
                              fractiles, results, gap, len(cases.rows), len(failures), failures,
-                             hinges)
+                             hinges, seats)
+
+
+def _at_joint(cases: StudyCases, table: Any, spec: LimitStateSpec) -> FloatArray:
+    """A bridge's demand at the joints or seats a limit state names, every run:
+    (n_gaps, n_records, n_levels) [SI], NaN for a failed run
+    (:func:`~pounding.studies.fragility.bridge.joint_demand`)."""
+    from pounding.studies.fragility.bridge import joint_demand
+
+    df = table.sort_values("case_index").iloc[:len(cases.rows)]
+    idx = np.array(cases.rows)
+    a = np.full((len(cases.gaps), len(cases.records), len(cases.levels)), np.nan)
+    a[idx[:, 2], idx[:, 0], idx[:, 1]] = joint_demand(spec, cases.bridge, df)
+    return a
 
 
 def _gap_analysis(cases: StudyCases, ng: NeededGaps, demands: dict[str, FloatArray],
@@ -373,6 +410,8 @@ def _check(cases: StudyCases, needed: FloatArray, demands: dict[str, FloatArray]
     out: dict[str, Any] = {}
     base_gaps = [float(x) for x in cases.sweep.base.get("contact", {}).get("gaps", [])] or \
         [float(cases.sweep.base.get("contact", {}).get("gap", np.nan))]
+    if cases.bridge is not None:  # a bridge's: its joints' (``pounding``: at a joint)
+        base_gaps = list(cases.bridge.joint_gaps)
     for gi, g in enumerate(cases.gaps):
         value = g if g is not None else (base_gaps[0] if len(set(base_gaps)) == 1 else None)
         if value is None or not np.isfinite(value):

@@ -86,11 +86,22 @@ class StudyCases:
     sweep: Any
     rows: list[tuple[int, int, int]] = field(repr=False, default_factory=list)
     record_note: str = ""
+    bridge: Any = None
+    """A bridge's :class:`~pounding.studies.fragility.bridge.BridgeLayout` (None: buildings):
+    its runs set every joint's gap, and after them come its runs without joint contact."""
+    needed_rows: list[tuple[int, int]] = field(repr=False, default_factory=list)
+    """A bridge's runs without joint contact, after the study's :attr:`rows` in the sweep:
+    record and index in :attr:`needed_levels` of each."""
+    needed_levels: list[float] = field(default_factory=list)
+    """The levels of those runs [g]: the study's, and the gap analysis' if it is none of
+    them."""
 
-    def case_values(self, record: int, level: float, gap: float | None = None
-                    ) -> tuple[list[str], list[Any]]:
+    def case_values(self, record: int, level: float, gap: float | None = None,
+                    joint_contact: bool = True) -> tuple[list[str], list[Any]]:
         """The sweep parameters and their values for ``record`` at ``level`` (any level,
-        not only those of the study) and ``gap``."""
+        not only those of the study) and ``gap`` (None: the base model's). A bridge's case
+        sets the gap of every joint (``gap``, else the base model's; without
+        ``joint_contact``, :data:`~pounding.studies.fragility.bridge.NO_CONTACT_GAP`)."""
         params = [self.source_key]
         values: list[Any] = [self.sources[record]]
         if self.factors is not None:
@@ -101,7 +112,13 @@ class StudyCases:
             params.append({"pga": "record.pga_g", "sa": "record.sa_g",
                            "saavg": "record.saavg_g"}[self.config.intensity.measure])
             values.append(float(level))
-        if gap is not None:
+        if self.bridge is not None:
+            from pounding.studies.fragility.bridge import NO_CONTACT_GAP
+
+            params += self.bridge.params()
+            values += [NO_CONTACT_GAP if not joint_contact else
+                       float(gap) if gap is not None else g for g in self.bridge.joint_gaps]
+        elif gap is not None:
             params.append("contact.gap")
             values.append(float(gap))
         return params, values
@@ -176,6 +193,15 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     model_file = here / cfg.base
     base_cfg = load_config(model_file)
     model, _, _ = base_cfg.build()
+    from pounding.studies.fragility.bridge import bridge_layout, check_joint
+
+    bridge = bridge_layout(model)
+    if bridge is not None and bridge.n_joints == 0:
+        raise ValueError(f"{where}: base: the bridge of {model_file} has one frame; a "
+                         "fragility study of a bridge needs an expansion joint (two frames "
+                         "or more)")
+    for i, ls in enumerate(cfg.limit_state):
+        check_joint(ls, bridge, where, i, cfg.base)
     if len(model.buildings) < 2:
         raise ValueError(f"{where}: base: {model_file} has one building; a fragility study of "
                          "pounding needs two or more buildings"
@@ -230,13 +256,15 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
                        sources=sources, levels=levels,
                        gaps=list(cfg.gap.values) if cfg.gap.values else [None],
                        im_label=_im_label(cfg, saavg), saavg_range=saavg, factors=None,
-                       im_target=None, periods=periods, sweep=None, record_note=note)
+                       im_target=None, periods=periods, sweep=None, record_note=note,
+                       bridge=bridge)
     if cfg.suite.scaling is not None:
         factors, im_target = _suite_factors(cases, base, here, model_file.parent, where)
         cases.factors, cases.im_target = factors, im_target
     first_params, first_values = cases.case_values(0, levels[0])
     for p, v in zip(first_params, first_values):
-        rec[p.split(".")[1]] = v
+        if p.startswith("record."):
+            rec[p.split(".")[1]] = v
     rows: list[tuple[int, int, int]] = []
     cols: dict[str, list[Any]] = {p: [] for p in cases.case_values(0, levels[0],
                                                                    cases.gaps[0])[0]}
@@ -247,6 +275,15 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
                 for p, v in zip(params, values):
                     cols[p].append(v)
                 rows.append((ri, li, gi))
+    if bridge is not None:  # the runs that find the gap the joints need
+        at = cfg.gap_at()
+        cases.needed_levels = list(levels) + ([] if at in levels else [at])
+        for ri in range(len(names)):
+            for li, x in enumerate(cases.needed_levels):
+                params, values = cases.case_values(ri, x, joint_contact=False)
+                for p, v in zip(params, values):
+                    cols[p].append(v)
+                cases.needed_rows.append((ri, li))
     data: dict[str, Any] = {"name": cfg.name, "base": base, "list": cols,
             "histories": cfg.run.histories or False}
     if cfg.run.batch_size is not None:

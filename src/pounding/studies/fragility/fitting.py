@@ -43,7 +43,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["FIT_OK", "FIT_NONE", "FIT_ALL", "FIT_SEPARATED", "FIT_FAILED",
+__all__ = ["FIT_OK", "FIT_NONE", "FIT_ALL", "FIT_SEPARATED", "FIT_FAILED", "MAX_BETA",
            "censored_lognormal_mle", "fit_lognormal_mle", "ida_moments", "lognormal_cdf",
            "probit_mle"]
 
@@ -52,10 +52,18 @@ FloatArray = NDArray[np.float64]
 FIT_OK, FIT_NONE, FIT_ALL, FIT_SEPARATED, FIT_FAILED = 0, 1, 2, 3, 4
 """Status of a fit: fitted; no run exceeds (θ above every level: +inf); every run exceeds
 (θ below every level: 0); separated data (β → 0, θ between the two levels that separate
-them); not fitted (too few data, or the iteration did not converge)."""
+them); not fitted (too few data, no trend with the intensity, or the iteration did not
+converge)."""
 
 _MAX_ITER = 200
 _TOL = 1e-12
+
+MAX_BETA = 10.0
+"""The largest β of a fit on the stripes: beyond it the counts show no trend with the
+intensity (a fraction about the same at every level: over a factor 10 of the intensity the
+fitted probability moves by less than Φ(ln 10/20) − Φ(−ln 10/20) = 0.092), whose maximum
+of the likelihood lies at β → ∞ with θ → 0 or ∞; such a fit is :data:`FIT_FAILED`, not a
+median and a β that mean nothing."""
 
 
 def lognormal_cdf(x: ArrayLike, median: ArrayLike, beta: ArrayLike) -> FloatArray:
@@ -123,7 +131,8 @@ def probit_mle(im: ArrayLike, n_runs: ArrayLike, n_exceed: ArrayLike
     median, beta : ndarray, shape (m,)
         θ [IM units] and β; for a status other than :data:`FIT_OK`: ``(inf, nan)`` no
         exceedance, ``(0, nan)`` all exceed, ``(θ*, 0)`` separated data with ``θ*`` the
-        geometric mean of the two levels that separate them, ``(nan, nan)`` failed.
+        geometric mean of the two levels that separate them, ``(nan, nan)`` failed (or no
+        trend with the intensity: β beyond :data:`MAX_BETA`).
     status : ndarray of int, shape (m,)
         :data:`FIT_OK`, :data:`FIT_NONE`, :data:`FIT_ALL`, :data:`FIT_SEPARATED` or
         :data:`FIT_FAILED`.
@@ -150,8 +159,10 @@ def probit_mle(im: ArrayLike, n_runs: ArrayLike, n_exceed: ArrayLike
     todo = ~(none | every | sep)
     if todo.any():
         c0, c1, ok = _newton_probit(x, n[todo], z[todo])
-        b = np.where(ok & (c1 > 0), 1.0 / np.where(c1 > 0, c1, 1.0), np.nan)
-        t = np.where(ok & (c1 > 0), np.exp(-c0 * b), np.nan)
+        trend = ok & (c1 > 1.0 / MAX_BETA)  # (no trend: β → ∞, :data:`MAX_BETA`)
+        b = np.where(trend, 1.0 / np.where(trend, c1, 1.0), np.nan)
+        with np.errstate(over="ignore"):
+            t = np.where(trend, np.exp(-c0 * b), np.nan)
         med[todo], beta[todo] = t, b
         status[todo] = np.where(np.isfinite(b), FIT_OK, FIT_FAILED)
     return med, beta, status
@@ -194,8 +205,9 @@ def _newton(p0: FloatArray, p1: FloatArray, loglik: Any, derivatives: Any,
     ll = loglik(p0, p1)
     done = np.zeros(m, dtype=bool)
     for _ in range(_MAX_ITER):
-        g0, g1, h00, h01, h11 = derivatives(p0, p1)
-        det = h00 * h11 - h01 * h01
+        with np.errstate(over="ignore", invalid="ignore"):  # (a row gone astray: bad)
+            g0, g1, h00, h01, h11 = derivatives(p0, p1)
+            det = h00 * h11 - h01 * h01
         with np.errstate(divide="ignore", invalid="ignore"):
             d0 = -(h11 * g0 - h01 * g1) / det
             d1 = -(h00 * g1 - h01 * g0) / det
@@ -248,7 +260,8 @@ def fit_lognormal_mle(im: ArrayLike, n_runs: ArrayLike, n_exceed: ArrayLike
     ------
     ValueError
         Bad input (one line naming the argument), or data with no finite MLE: no
-        exceedance at all, exceedance in every run, or separated data (β → 0).
+        exceedance at all, exceedance in every run, separated data (β → 0), or no trend
+        with the intensity (β beyond :data:`MAX_BETA`).
 
     Examples
     --------
@@ -270,8 +283,9 @@ def fit_lognormal_mle(im: ArrayLike, n_runs: ArrayLike, n_exceed: ArrayLike
                          "level than every non-exceedance): the likelihood grows as beta -> "
                          f"0 with the median near {med[0]:.4g}; no finite estimate")
     if s != FIT_OK:
-        raise ValueError("n_exceed: the likelihood could not be maximised (got counts "
-                         f"{z.tolist()} of {n.tolist()})")
+        raise ValueError("n_exceed: the likelihood could not be maximised, or the counts "
+                         f"show no trend with the intensity (beta beyond {MAX_BETA:g}) (got "
+                         f"counts {z.tolist()} of {n.tolist()})")
     return float(med[0]), float(beta[0])
 
 

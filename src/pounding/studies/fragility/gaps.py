@@ -13,7 +13,7 @@ from numpy.typing import NDArray
 
 from pounding.studies.fragility.cases import StudyCases
 
-__all__ = ["NeededGaps", "needed_gaps"]
+__all__ = ["NeededGaps", "bridge_needed_gaps", "needed_gaps"]
 
 FloatArray = NDArray[np.float64]
 
@@ -116,3 +116,59 @@ def _study_at(cases: StudyCases, level: float, every_record_may_stop: bool = Fal
             return None, needed, stopped
         raise error
     return critical_gaps(model, ran, **kw), needed, stopped
+
+
+def bridge_needed_gaps(cases: StudyCases, table: Any) -> NeededGaps:
+    """The gap a bridge's joints need at each level, from the runs without joint contact
+    that follow the study's runs in its sweep's table (:mod:`.bridge`): the largest closing
+    of any expansion joint in a run where no joint is reached. With every joint's gap above
+    it the decks never meet at a joint (the run with contact is that run until they first
+    meet); with one below, they do.
+
+    Returns
+    -------
+    NeededGaps
+        ``needed`` (n_records, n_levels) [m]: the largest closing of any expansion joint,
+        NaN where the run failed (listed in ``stopped``) or closed a joint by half of
+        :data:`NO_CONTACT_GAP` or more; ``code``: ABS, SRSS, DDC at the gap level, largest
+        over the joints; ``scaled`` False.
+    """
+    from pounding.studies.fragility.bridge import NO_CONTACT_GAP
+    from pounding.studies.separation_rules import code_gaps, cqc_correlation
+
+    layout = cases.bridge
+    df = table.sort_values("case_index").iloc[len(cases.rows):]
+    if len(df) != len(cases.needed_rows):
+        raise ValueError(f"results: {len(df)} rows without joint contact for "
+                         f"{len(cases.needed_rows)} such runs of the study")
+    ok = (df["status"] == "ok").to_numpy()
+    closing = np.column_stack([df[f"peak_closing_m_J{j + 1}"].to_numpy(dtype=float,
+                                                                     na_value=np.nan)
+                               for j in range(layout.n_joints)]).max(axis=1)
+    reached = ok & (closing >= 0.5 * NO_CONTACT_GAP)
+    closing = np.where(ok & ~reached, closing, np.nan)
+    nr, nl = len(cases.records), len(cases.needed_levels)
+    idx = np.array(cases.needed_rows)
+    grid = np.full((nr, nl), np.nan)
+    grid[idx[:, 0], idx[:, 1]] = closing
+    at = float(cases.config.gap_at())
+    ia = cases.needed_levels.index(at)
+    stopped = [f"{cases.records[r]} at {cases.needed_levels[li]:g} g, without joint contact: "
+               + (str(msg) if not good else f"a joint closed by {c:.3g} m")
+               for (r, li), good, far, msg, c in zip(cases.needed_rows, ok, reached,
+                                                     df["error"], closing)
+               if not good or far]
+    # the code gaps of every joint from the decks' mean peaks at the gap level
+    at_rows = (idx[:, 1] == ia) & ok
+    peaks = [df[f"peak_displacement_m_{d}"].to_numpy(dtype=float, na_value=np.nan)[at_rows]
+             for d in layout.decks]
+    code = {"ABS": np.nan, "SRSS": np.nan, "DDC": np.nan}
+    if at_rows.any():
+        u = np.array([p.mean() for p in peaks])
+        rho = [cqc_correlation(layout.periods[j], layout.periods[j + 1], layout.zetas[j],
+                               layout.zetas[j + 1]) for j in range(layout.n_joints)]
+        rules = code_gaps(u[:-1], u[1:], rho)
+        code = {k: float(np.max(v)) for k, v in rules.items()}
+    levels = np.asarray(cases.levels, dtype=float)
+    return NeededGaps(levels, grid[:, :len(levels)], at, grid[:, ia], code, scaled=False,
+                      stopped=tuple(stopped))

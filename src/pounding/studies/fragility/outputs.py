@@ -12,7 +12,9 @@
 * ``gap.csv`` — the gaps for the target probability and the code gaps at the gap level,
   each with its probability of pounding;
 * ``needed_gaps.csv`` — the gap each record needs at each level [m]: a column
-  ``gap_m_at_<level>_g`` per level;
+  ``gap_m_at_<level>_g`` per level (a bridge: at its joints, :mod:`.bridge`);
+* ``seat_widths.csv`` — a bridge's seat width for the target probability of unseating at
+  every level, from the records' largest seat opening (:func:`.bridge.seat_widths`);
 * figures (:mod:`pounding.plot.fragility`): ``ida.png``, ``fragility.png``,
   ``pounding_vs_gap.png``, ``pounding_surface.png``.
 
@@ -50,19 +52,22 @@ from pounding.studies.fragility.gap_probability import (
     pounding_probability_fit,
 )
 
-__all__ = ["FIGURES", "STUDY_FILE", "TABLES", "write_outputs"]
+__all__ = ["BRIDGE_TABLES", "FIGURES", "STUDY_FILE", "TABLES", "seat_rows", "write_outputs"]
 
 STUDY_FILE = "fragility.json"
 """The file that makes a folder a fragility study's output."""
 
 TABLES = ("fragility.csv", "counts.csv", "ida.csv", "gap.csv", "needed_gaps.csv")
+BRIDGE_TABLES = ("seat_widths.csv",)
+"""A bridge study's tables beside :data:`TABLES`."""
 FIGURES = ("ida.png", "fragility.png", "pounding_vs_gap.png", "pounding_surface.png")
 
 STATUS_TEXT = {FIT_OK: "fitted",
                FIT_NONE: "never exceeded: the median is above the highest level",
                FIT_ALL: "exceeded in every run: the median is below the lowest level",
                FIT_SEPARATED: "separated data: beta -> 0, the median lies between two levels",
-               FIT_FAILED: "not fitted (too few exceedances)"}
+               FIT_FAILED: "not fitted (too few exceedances, or no trend with the "
+                           "intensity)"}
 
 
 def _num(x: Any) -> Any:
@@ -142,9 +147,35 @@ def summary(cases: StudyCases, a: FragilityAnalysis) -> dict[str, Any]:
                 "scaled_from_gap_level": ga.needed.scaled, "check": ga.check,
                 **({"uncoupled_runs_stopped": list(ga.needed.stopped[:100])}
                    if ga.needed.stopped else {})},
+        **({"seats": _seats(cases, a)} if a.seats is not None else {}),
         "bootstrap": cfg.bootstrap.model_dump(),
         "runs": runs,
     }
+
+
+def _seats(cases: StudyCases, a: FragilityAnalysis) -> dict[str, Any]:
+    """A bridge's ``seats`` of ``fragility.json``: the seat width for the target
+    probability of unseating at every level."""
+    s = a.seats
+    return {"what": "the seat width [m] a seat needs (every seat as wide) for the target "
+                    "probability of unseating, from the records' largest seat opening",
+            "gap_m": cases.gaps[0], "target_probability": s.target,
+            "joint_gaps_m": list(cases.bridge.joint_gaps) if cases.gaps[0] is None else None,
+            "levels_g": list(cases.levels),
+            "lognormal_median_m": [_num(v) for v in s.median],
+            "lognormal_beta": [_num(v) for v in s.beta],
+            "width_for_target_lognormal_m": [_num(v) for v in s.width_fit],
+            "width_for_target_lognormal_ci_m": [[_num(v) for v in s.width_fit_ci[0]],
+                                                [_num(v) for v in s.width_fit_ci[1]]],
+            "width_for_target_records_m": [_num(v) for v in s.width_records]}
+
+
+def seat_rows(cases: StudyCases, a: FragilityAnalysis) -> list[list[Any]]:
+    """The rows of ``seat_widths.csv``: per level, the lognormal fit of the records' largest
+    seat opening and the seat width for the target probability of unseating."""
+    s = a.seats
+    return [[x, s.target, s.median[j], s.beta[j], s.width_fit[j], s.width_fit_ci[0, j],
+             s.width_fit_ci[1, j], s.width_records[j]] for j, x in enumerate(cases.levels)]
 
 
 def _fragility_rows(cases: StudyCases, a: FragilityAnalysis) -> list[list[Any]]:
@@ -194,7 +225,8 @@ def write_outputs(cases: StudyCases, a: FragilityAnalysis, figures: bool = True)
 
     out = cases.out
     man = Manifest(out)
-    names = [*TABLES, STUDY_FILE, *(FIGURES if figures else ())]
+    names = [*TABLES, *(BRIDGE_TABLES if a.seats is not None else ()), STUDY_FILE,
+             *(FIGURES if figures else ())]
     for name in names:
         man.check_free(out / name)
     stage = make_temporary_folder(out, "fragility", "stage", holds=names)
@@ -247,6 +279,10 @@ def _write_all(cases: StudyCases, a: FragilityAnalysis, out: Path, figures: bool
     write_text(out / "needed_gaps.csv", _csv(
         [[name] + list(row) for name, row in zip(cases.records, ng.needed)],
         ["record"] + [f"gap_m_at_{x:g}_g" for x in cases.levels]))
+    if a.seats is not None:
+        write_text(out / "seat_widths.csv", _csv(seat_rows(cases, a), [
+            "level_g", "p_unseating", "opening_median_m", "opening_beta", "width_lognormal_m",
+            "width_lo_m", "width_hi_m", "width_records_m"]))
     write_text(out / STUDY_FILE, json.dumps(summary(cases, a), indent=2, allow_nan=False) + "\n")
     if figures:
         from pounding.plot import save_figure

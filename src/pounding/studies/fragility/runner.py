@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from pounding.progress import Progress
-from pounding.studies.fragility.gaps import needed_gaps
+from pounding.studies.fragility.gaps import bridge_needed_gaps, needed_gaps
 from pounding.studies.fragility.cases import StudyCases, study_cases
 
 __all__ = ["FragilityOutcome", "run_study"]
@@ -84,14 +84,17 @@ def run_study(input: str | os.PathLike[str] | StudyCases,
     r = cases.config.run
     # the gaps first: a model the solver refuses (one line) is refused before the sweep
     # writes anything
+    # (a bridge's: from its runs without joint contact, cases of the sweep itself)
     t0 = time.perf_counter()
-    gaps = needed_gaps(cases)
+    gaps = needed_gaps(cases) if cases.bridge is None else None
     t1 = time.perf_counter()
     res = run_sweep(cases.sweep, cases.out, overwrite=overwrite, progress=progress,
                     scheduler=scheduler or r.scheduler, n_workers=n_workers or r.workers,
                     batch_size=batch_size)
     t2 = time.perf_counter()
     table = load_results(res.results)
+    if gaps is None:
+        gaps = bridge_needed_gaps(cases, table)
     result = analyse(cases, table, gaps)
     files = write_outputs(cases, result, figures=True if figures is None else figures)
     t3 = time.perf_counter()

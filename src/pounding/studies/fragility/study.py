@@ -7,6 +7,7 @@ each). See ``docs/fragility.md``.
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -16,8 +17,8 @@ from pounding.config.base import Section, field_error, fmt
 from pounding.config.quantities import Duration, Gap, Intensity, Period, Step
 from pounding.result.demands import DEMANDS
 
-__all__ = ["COLLAPSE_DRIFT", "IntensitySpec", "LimitStateSpec", "StudyConfig",
-           "load_study", "parse_study"]
+__all__ = ["COLLAPSE_DRIFT", "IntensitySpec", "JOINT_DEMANDS", "LimitStateSpec",
+           "StudyConfig", "load_study", "parse_study"]
 
 
 MAX_WORKERS = 1024
@@ -94,15 +95,29 @@ Cornell (2002) take as the collapse capacity of an IDA curve that has not flatte
 it."""
 
 
+JOINT_DEMANDS = ("pounding", "impacts", "impact_force", "seat_opening")
+"""The demands a bridge's limit state may put at one joint (``joint``)."""
+
+JOINT_NAME = re.compile(r"J[1-9]\d*|A[12]|joints|abutments")
+"""``joint`` of a limit state: an expansion joint, an abutment, or every one of either."""
+
+
 class LimitStateSpec(Section):
     """``[[limit_state]]``: ``demand`` (a key of :data:`DEMANDS`), ``limit`` in the demand's
     unit (not for the yes/no demands ``"pounding"`` and ``"collapse"``), ``drift_limit`` [%]
-    of ``"collapse"`` (default :data:`COLLAPSE_DRIFT`), and an optional ``name``."""
+    of ``"collapse"`` (default :data:`COLLAPSE_DRIFT`), ``joint`` (a bridge: the seat or
+    joint the demand is read at, :data:`JOINT_NAME`; default every contact for impacts,
+    every seat for ``"seat_opening"``), and an optional ``name``.
+
+    ``"seat_opening"`` is a bridge's peak seat opening [m] (the deck end moving off its
+    seat, :func:`pounding.result.bridge_seats.seat_openings`) and its ``limit`` the seat
+    width [m]: the limit state is unseating."""
 
     demand: Literal["pounding", "impacts", "impact_force", "drift", "acceleration",
-                    "ductility", "plastic_rotation", "collapse"]
+                    "ductility", "plastic_rotation", "collapse", "seat_opening"]
     limit: Annotated[float, Field(ge=0)] | None = None
     drift_limit: Annotated[float, Field(gt=0, le=100)] | None = None
+    joint: str | None = None
     name: str | None = None
 
     @model_validator(mode="after")
@@ -116,6 +131,16 @@ class LimitStateSpec(Section):
             raise field_error("limit", f"demand \"collapse\" is yes or no; it takes no limit "
                                        f"(got {self.limit:g}); its storey drift ratio is "
                                        f"drift_limit [%] (default {COLLAPSE_DRIFT:g})")
+        if self.joint is not None:
+            if self.demand not in JOINT_DEMANDS:
+                raise field_error("joint", f"only for a bridge's demands "
+                                           f"{', '.join(JOINT_DEMANDS)} (got {fmt(self.joint)} "
+                                           f"with demand \"{self.demand}\")")
+            if JOINT_NAME.fullmatch(self.joint) is None:
+                raise field_error("joint", "an expansion joint (\"J1\", \"J2\", …), an "
+                                           "abutment (\"A1\" left, \"A2\" right), \"joints\" "
+                                           "(every expansion joint) or \"abutments\" (got "
+                                           f"{fmt(self.joint)})")
         if self.drift_limit is not None and self.demand != "collapse":
             raise field_error("drift_limit", f"only for demand \"collapse\" (got "
                                              f"{self.drift_limit:g}); a limit on the drift "
@@ -140,9 +165,10 @@ class LimitStateSpec(Section):
         d = DEMANDS[self.demand]
         if self.demand == "collapse":
             return f"collapse (drift > {self.collapse_drift_percent:g} % or a hinge past its cap)"
+        at = f" at {self.joint}" if self.joint else ""
         if self.limit is None:
-            return "pounding"
-        return f"{d.label} > {self.limit:g} {d.unit}".replace(" -", "")
+            return f"pounding{at}"
+        return f"{d.label}{at} > {self.limit:g} {d.unit}".replace(" -", "")
 
     @property
     def limit_si(self) -> float:

@@ -2,9 +2,9 @@
 what the cases of one sweep have in common.
 
 The cases of a sweep differ in a parameter or two, and each part of a run depends on one
-group of keys of the model file only: the model (buildings, contacts and their laws,
-devices) on ``building``, ``contact``, ``device`` and ``name``; the ground motion on ``record``
-and ``spatial``; the solver
+group of keys of the model file only: the model (buildings or a bridge, contacts and their
+laws, devices, walls) on ``building``, ``bridge``, ``contact``, ``device``, ``wall`` and
+``name``; the ground motion on ``record`` and ``spatial``; the solver
 options on ``solver`` (``output`` and ``description`` change no run). A
 :class:`CaseBuilder` remembers, for each group, what the cases it built made of it, keyed
 by the case's values of that group's parameters: a case whose every group was seen in a
@@ -34,12 +34,15 @@ from pounding.studies.sweep.overrides import _copy, apply_overrides
 
 __all__ = ["CaseBuilder", "case_builder"]
 
-_GROUPS: dict[str, str] = {"building": "model", "contact": "model", "device": "model",
-                           "name": "model", "record": "record", "spatial": "record"}
+_GROUPS: dict[str, str] = {"record": "record", "spatial": "record", "solver": "solver",
+                           "output": "solver", "description": "solver"}
 """The group of each table of a model file (by the first key of a parameter path); every
-other table (``solver``, ``output``, ``description``) is in the group ``"solver"``. The
+other table (``building``, ``bridge``, ``contact``, ``device``, ``wall``, ``name``, and any
+table added later) is in the group ``"model"``: a table not named here is taken to shape
+the model, so a case of a new value is never put together from another's model. The
 ground motion depends on ``record`` and on ``spatial`` (each building's motion made from
-the record)."""
+the record); the solver options on ``solver``, and ``output`` and ``description`` change
+no run."""
 
 MAX_PARTS = 256
 """Most parts a :class:`CaseBuilder` remembers per group."""
@@ -81,7 +84,7 @@ class CaseBuilder:
         self.base = _copy(base)
         self.base_dir = Path(base_dir)
         self.params = tuple(params)
-        group = [_GROUPS.get(p.split(".")[0], "solver") for p in self.params]
+        group = [_GROUPS.get(p.split(".")[0], "model") for p in self.params]
         self._columns = {g: tuple(i for i, x in enumerate(group) if x == g)
                          for g in ("model", "record", "solver")}
         self._parts = {"model": Memo(max_items=max_parts, max_bytes=MAX_MODEL_BYTES),

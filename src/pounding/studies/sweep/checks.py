@@ -125,12 +125,14 @@ def _validate(base: dict[str, Any], base_dir: Path, params: Sequence[str],
 
 
 def _size_key(cfg: Any) -> str:
-    """What decides the memory of a run: structure, record, output step and duration (not
-    the contact law, its gaps, the record's scale, or the tolerances)."""
+    """What decides the memory of a run: structure (buildings or a bridge), record, output
+    step and duration (not the contact law, its gaps, the record's scale, or the
+    tolerances)."""
     data = cfg.model_dump(mode="json", exclude_none=True)
     contact = data.get("contact") or {}
     record = {k: v for k, v in data["record"].items() if k not in ("scale", "pga_g")}
-    return _canon({"building": data["building"], "record": record,
+    return _canon({"building": data["building"], "bridge": data.get("bridge"),
+                   "record": record,
                    "solver": [data["solver"].get("dt"), data["solver"].get("duration")],
                    "contact": [contact.get("floor_to_column"), contact.get("level_tolerance")]})
 

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from pounding.studies.sweep.builder import CaseBuilder, case_builder
+from pounding.studies.sweep.bridge_measures import bridge_row
 from pounding.studies.sweep.hinge_measures import hinge_row, stopped_row
 from pounding.studies.sweep.measures import result_row
 
@@ -71,7 +72,8 @@ def run_case(base: dict[str, Any], base_dir: str | os.PathLike[str], params: Seq
     the measures and ``wall_time_s``; with plastic hinges their measures
     (:data:`~pounding.studies.sweep.hinge_measures.HINGE_MEASURES`), of which
     ``strength_lost`` is true for a run that stopped (``"error"``) because a frame lost its
-    strength.
+    strength; for a bridge its joints', abutments' and restrainers' columns
+    (:mod:`~pounding.studies.sweep.bridge_measures`).
 
     Parameters
     ----------
@@ -103,7 +105,7 @@ def _run(builder: CaseBuilder, values: Sequence[Any], history: bool) -> tuple[di
     try:
         result = _simulate(builder, values)
         row: dict[str, Any] = {"status": "ok", "error": None, **result_row(result),
-                               **hinge_row(result)}
+                               **hinge_row(result), **bridge_row(result)}
         if history:
             dataset = result.to_dataset()
     except Exception as exc:  # noqa: BLE001  (recorded in the table, the sweep goes on)

@@ -26,6 +26,12 @@ _EXCLUSIVE: dict[tuple[str, str], tuple[str, ...]] = {
     ("record", "bundled"): ("file", "dt", "units"),
     ("building", "period"): ("stiffness",),
     ("building", "stiffness"): ("period",),
+    # a bridge's pier: its lateral stiffness, or its columns' EI with fixity and columns;
+    # a frame's deck: its whole mass, or its mass per length
+    ("bridge", "stiffness"): ("EI", "fixity", "columns"),
+    ("bridge", "EI"): ("stiffness",),
+    ("bridge", "deck_mass"): ("deck_mass_per_length",),
+    ("bridge", "deck_mass_per_length"): ("deck_mass",),
 }
 """Setting the key on the left removes the keys on the right from the base (they are
 alternatives in a model file: setting ``record.scale`` replaces a base ``pga_g``, or a base
@@ -47,7 +53,8 @@ def apply_overrides(base: dict[str, Any], params: Sequence[str],
     params : sequence of str
         Dotted paths (``"contact.gap"``, ``"building.*.period"``, …).
     values : sequence
-        One value per path.
+        One value per path. A path may end in an item of a list
+        (``"bridge.abutment_gaps.0"``, ``"contact.gaps.*"``): that item is set.
 
     Returns
     -------
@@ -60,10 +67,13 @@ def apply_overrides(base: dict[str, Any], params: Sequence[str],
     set_contact: set[str] = set()
     for path, value in zip(params, values):
         parts = path.split(".")
+        key = parts[-1]
         for node in _parents(data, parts[:-1]):
-            key = parts[-1]
-            section = parts[0]
-            for other in _EXCLUSIVE.get((section, key), ()):
+            if isinstance(node, list):  # an item of a list: "bridge.abutment_gaps.0"
+                for i in (range(len(node)) if key == "*" else [int(key)]):
+                    node[i] = _copy(value)
+                continue
+            for other in _EXCLUSIVE.get((parts[0], key), ()):
                 node.pop(other, None)
             node[key] = _copy(value)
         if parts[0] == "contact" and len(parts) == 2:

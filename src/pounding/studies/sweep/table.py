@@ -7,6 +7,7 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pounding.studies.sweep.bridge_measures import BRIDGE_MEASURES, bridge_column_key
 from pounding.studies.sweep.cases import _canon
 from pounding.studies.sweep.hinge_measures import HINGE_MEASURES
 from pounding.studies.sweep.measures import FLOOR_MEASURES, MEASURES
@@ -75,6 +76,11 @@ def _consolidate(sweep: Sweep, rows: dict[str, dict[str, Any]]) -> Any:
     floor_cols = sorted((k for k in names if k.startswith(FLOOR_MEASURES)), key=_floor_key)
     for name in floor_cols:
         cols[name] = pa.array([r.get(name) for r in recs], pa.float64())
+    bridge = sorted((k for k in names if k not in cols and bridge_column_key(k) is not None),
+                    key=lambda k: bridge_column_key(k) or ())
+    for name in bridge:  # a bridge's seats and restrainers
+        typ = BRIDGE_MEASURES[next(p for p in BRIDGE_MEASURES if name.startswith(p + "_"))]
+        cols[name] = pa.array([r.get(name) for r in recs], types[typ])
     cols["wall_time_s"] = pa.array([r.get("wall_time_s") for r in recs], pa.float64())
     meta = {"pounding.sweep": _canon({"name": sweep.name, "params": list(sweep.params),
                                       "fingerprint": sweep.fingerprint,
