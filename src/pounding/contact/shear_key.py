@@ -126,7 +126,8 @@ class ShearKey(ContactLaw):
     def backbone(self, delta: float) -> float:
         """The force [N] of a key loaded monotonically to penetration ``delta`` [m]: ``k δ``
         up to ``F_c``, ``F_c`` up to ``δ_u`` (exclusive), 0 from there (and for δ ≤ 0)."""
-        if delta <= 0.0 or (self.breaks and delta >= self.fracture_displacement):  # type: ignore[operator]
+        du = self.fracture_displacement
+        if delta <= 0.0 or (du is not None and delta >= du):
             return 0.0
         return min(self.k * delta, self.capacity)
 

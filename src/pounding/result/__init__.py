@@ -12,6 +12,7 @@ modules below are how the package is built, each importing only those under it:
 * :mod:`~pounding.result.response` — :class:`Response`, the arrays of a run and every
   quantity derived from them (drifts, shears, peaks, impacts per contact, energies);
 * :mod:`~pounding.result.storey_peaks` — the bearing and plan tables of a response;
+* :mod:`~pounding.result.bridge_keys` — the shear keys of a run (peak force, set, failure);
 * :mod:`~pounding.result.variables` — its histories as named variables with units (what
   the NetCDF file and the xarray Dataset hold);
 * :mod:`~pounding.result.summary` — its headline numbers (``summary.json``);
@@ -38,6 +39,7 @@ _EXPORTS: dict[str, str] = {
     **{name: "pounding.result.storeys" for name in (
         "bearing_law", "bearing_mask", "floor_name", "plan_storey_forces")},
     "ContactPeak": "pounding.result.contact_response",
+    **{name: "pounding.result.bridge_keys" for name in ("KeyState", "shear_keys")},
     **{name: "pounding.result.response" for name in ("Response", "SolverStats")},
     **{name: "pounding.result.storey_peaks" for name in (
         "BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys")},
@@ -59,6 +61,7 @@ __all__ = [
     "BearingPeaks",
     "ContactPeak",
     "HistoryVariables",
+    "KeyState",
     "PlanStoreys",
     "Response",
     "Result",
@@ -76,6 +79,7 @@ __all__ = [
     "plan_storey_forces",
     "plan_storeys",
     "save_result",
+    "shear_keys",
     "summarize",
 ]
 
@@ -84,6 +88,7 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported eagerly
+    from pounding.result.bridge_keys import KeyState, shear_keys
     from pounding.result.columns import ENERGY_NAMES, IMPACT_COLUMNS
     from pounding.result.contact_response import ContactPeak
     from pounding.result.demands import DEMANDS, Demand

@@ -4,10 +4,20 @@ pounding across their expansion joints and against the abutments.
 * :class:`BridgeFrame`, :class:`Pier`, :class:`Bearing`, :func:`pier_stiffness` — one frame
   (:mod:`pounding.structure.bridge.frame`);
 * :class:`Bridge` — the frames, joints, abutments and restrainers, and the
-  :class:`~pounding.model.PoundingModel` they make (:mod:`pounding.structure.bridge.bridge`).
+  :class:`~pounding.model.PoundingModel` they make (:mod:`pounding.structure.bridge.bridge`);
+* :class:`TransverseBridge`, :class:`ShearKeys` — the frames across the axis, held by shear
+  keys at the abutments and joints (:mod:`pounding.structure.bridge.transverse`).
 """
 
-from pounding.structure.bridge.bridge import Abutment, Bridge, Restrainer
+from pounding.structure.bridge.bridge import (
+    CALTRANS_PILE_STIFFNESS,
+    Abutment,
+    Bridge,
+    Restrainer,
+    abutment_piles,
+)
 from pounding.structure.bridge.frame import Bearing, BridgeFrame, Pier, pier_stiffness
+from pounding.structure.bridge.transverse import ShearKeys, TransverseBridge
 
-__all__ = ["Abutment", "Bearing", "Bridge", "BridgeFrame", "Pier", "Restrainer", "pier_stiffness"]
+__all__ = ["CALTRANS_PILE_STIFFNESS", "Abutment", "Bearing", "Bridge", "BridgeFrame", "Pier",
+           "Restrainer", "ShearKeys", "TransverseBridge", "abutment_piles", "pier_stiffness"]
