@@ -217,6 +217,27 @@ def test_bad_transverse_values_name_the_field(edit, message) -> None:
     assert message in str(info.value), str(info.value)
 
 
+def test_abutment_piles_from_the_model_file() -> None:
+    """``abutment_piles`` along the axis: a ``…/piles`` contact behind each abutment's gap,
+    3 × 40 kip/in by default (linear), or elastic–perfectly-plastic with a yield force a
+    pile."""
+    long = BASE.replace('direction = "transverse"\n', "").replace(
+        "abutment_keys = { gap = 0.02, k = 5e8, capacity = 1.5e6, fracture_displacement = 0.05 }",
+        "abutment_gaps = [0.05, 0.04]\nabutment_piles = { count = 3 }") + \
+        '[contact]\nlaw = "linear-spring"\nk = 1e9\n'
+    model = parse_config(tomllib.loads(long)).build().model
+    assert [c.label for c in model.contacts] == ["A1-B1F1", "A1-B1F1/piles", "B1F1-A2",
+                                                 "B1F1-A2/piles"]
+    assert [c.gap for c in model.contacts] == [0.05, 0.05, 0.04, 0.04]
+    piles = model.contacts[1].law
+    assert type(piles).__name__ == "LinearSpring"
+    assert piles.k == pytest.approx(3 * 40.0 * 4448.2216152605 / 0.0254, rel=1e-12)
+    yielding = long.replace("count = 3", "count = 3, stiffness = 5e6, yield_force = 1.5e5")
+    law = parse_config(tomllib.loads(yielding)).build().model.contacts[1].law
+    assert (type(law).__name__, law.k, law.capacity, law.fracture_displacement) == (
+        "ShearKey", 1.5e7, 4.5e5, None)
+
+
 def test_bad_piles_and_a_bad_file_exit_2_in_one_line(tmp_path: Path, capsys) -> None:
     """``abutment_piles`` with no pile, and a key table's unknown key, from the command
     line: exit status 2, one line naming the field and value, nothing written."""
