@@ -15,9 +15,8 @@ import pounding.result
 PACKAGE = Path(pounding.result.__file__).parent
 
 ORDER = ("columns", "demands", "peaks", "reductions", "storeys", "foundations", "bridge_seats",
-         "contact_response", "response", "storey_peaks", "bridge_peaks",
-         "variables", "summary", "files",
-         "result")
+         "contact_response", "response", "storey_peaks", "bridge_peaks", "bridge_keys",
+         "variables", "summary", "files", "result")
 """The modules of :mod:`pounding.result`, bottom first: each may import only those before it."""
 
 

@@ -27,6 +27,12 @@ floors' rotations in the contacts' kinematics, and the model's influence matrix 
 columns, the ground's x and y components (run it under a
 :class:`~pounding.ground_motion.GroundMotionComponents`).
 
+A gap of ``math.inf`` says the two neighbours never meet: no contacts between them (the
+decks of a bridge in its transverse direction slide past each other,
+:mod:`pounding.structure.bridge.transverse`). *Stops* (:class:`pounding.structure.stops.Stop`)
+are one-sided contacts the row does not make — a floor against the ground, or against a floor
+of another building, engaged one given way (a deck's shear keys) — after the walls'.
+
 Rigid moat walls (:class:`pounding.structure.wall.MoatWall`) may stand at the ends of the row;
 the floors of the end building at or below a wall's top strike it, with the model's contact law
 (or the wall's own: an abutment's backfill) and the wall's gap (contacts ``'B1F1-W'``, ``'W-B1F1'``, after the buildings' contacts).
@@ -71,11 +77,12 @@ from pounding.structure.assembly import (
     floor_below,
     floor_dofs,
 )
-from pounding.structure.bridge import Bridge
+from pounding.structure.bridge import Bridge, TransverseBridge
 from pounding.structure.dof_names import dof_labels, dof_units
 from pounding.structure.element_rows import ElementRow, element_rows
 from pounding.structure.plan import PlanBuilding
 from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
+from pounding.structure.stops import Stop, stop_contacts
 from pounding.structure.wall import MoatWall, WallPoint, check_walls, wall_contacts
 from pounding.validation import non_negative, positive
 
@@ -155,7 +162,8 @@ class PoundingModel:
         matrix building needs a diagonal (lumped) ``M`` and floors at distinct elevations
         above the ground.
     gaps : sequence of float
-        Separation gap between each pair of neighbours [m], ``len(buildings) − 1`` values.
+        Separation gap between each pair of neighbours [m], ``len(buildings) − 1`` values;
+        ``math.inf``: the pair never meets (no contacts between them).
     contact : ContactSpec
         The contact law used at every contact.
     name : str
@@ -178,6 +186,10 @@ class PoundingModel:
         The bridge the row was made of (:meth:`from_bridge` passes it; its frames are the
         buildings): kept for what is read after a run, its seats
         (:func:`pounding.result.bridge_seats.seat_checks`). None by default.
+    stops : sequence of Stop
+        One-sided contacts of a floor against the ground or another building's floor
+        (:class:`pounding.structure.stops.Stop`: a bridge deck's shear keys), after the
+        walls'. None by default.
 
     Examples
     --------
@@ -199,11 +211,13 @@ class PoundingModel:
     devices: tuple[Link | Bumper, ...]
     walls: tuple[MoatWall, ...]
     bridge: Bridge | None
+    stops: tuple[Stop, ...]
 
     def __init__(self, buildings: Sequence[Building | PlanBuilding], gaps: Sequence[float],
                  contact: ContactSpec, name: str = "model", floor_to_column: bool = True,
                  level_tolerance: float = 0.1, devices: Sequence[Link | Bumper] = (),
-                 walls: Sequence[MoatWall] = (), bridge: Bridge | None = None) -> None:
+                 walls: Sequence[MoatWall] = (), bridge: Bridge | None = None,
+                 stops: Sequence[Stop] = ()) -> None:
         if len(buildings) < 1:
             raise ValueError("buildings: give at least one building")
         # a building in plan stands in the row as its matrix building (which keeps the plan)
@@ -224,12 +238,15 @@ class PoundingModel:
         frozen_set(self, "name", name)
         frozen_set(self, "floor_to_column", floor_to_column)
         frozen_set(self, "level_tolerance", positive("level_tolerance", level_tolerance))
-        frozen_set(self, "gaps", tuple(non_negative(f"gaps[{i}]", g)
+        frozen_set(self, "gaps", tuple(math.inf if g == math.inf
+                                       else non_negative(f"gaps[{i}]", g)
                                        for i, g in enumerate(gaps)))
         frozen_set(self, "devices", tuple(devices))
         frozen_set(self, "walls", tuple(walls))
         if self.walls:
             check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
+        frozen_set(self, "stops", tuple(stops))
+        stop_contacts(self.stops, self.buildings, 0)  # (a stop off the row: one line)
         if bridge is not None and not (isinstance(bridge, Bridge)
                                        and len(bridge.frames) == len(row)
                                        and all(f is b for f, b in zip(bridge.frames, row))):
@@ -240,12 +257,15 @@ class PoundingModel:
         self._check_law_codes()
 
     @classmethod
-    def from_bridge(cls, bridge: Bridge, contact: ContactSpec,
+    def from_bridge(cls, bridge: Bridge | TransverseBridge, contact: ContactSpec,
                     level_tolerance: float = 0.1) -> PoundingModel:
         """The model of a bridge along its axis (:class:`pounding.structure.bridge.Bridge`):
         its frames as the row's buildings, its joints as the gaps, its abutments as walls at
         the ends and its restrainers as links, every contact deck to deck (or deck to
-        abutment) with ``contact``."""
+        abutment) with ``contact``; or across it
+        (:class:`pounding.structure.bridge.TransverseBridge`): its frames as buildings that
+        never meet, its shear keys as stops (``contact``: the model's law, which no contact
+        uses but the stops' own laws are named in outputs)."""
         return cls(contact=contact, level_tolerance=level_tolerance,
                    **bridge.model_arguments())
 
@@ -323,6 +343,8 @@ class PoundingModel:
         """The contacts of the buildings, without bumpers."""
         out: list[Contact] = []
         for p, (a, b) in enumerate(zip(self.buildings[:-1], self.buildings[1:])):
+            if self.gaps[p] == math.inf:
+                continue  # (neighbours that never meet)
             if isinstance(a, PlanMatrixBuilding) or isinstance(b, PlanMatrixBuilding):
                 out.extend(self._plan_pair_contacts(p, a, b, len(out)))
                 continue
@@ -365,7 +387,8 @@ class PoundingModel:
         contacts with the walls (:func:`pounding.structure.wall.wall_contacts`); where a
         bumper sits (between two floors, or on a wall), its pad (``…/bumper``) and then the
         contact moved to where the pad bottoms out
-        (:func:`pounding.devices.bumper.split_contact`)."""
+        (:func:`pounding.devices.bumper.split_contact`); then the stops'
+        (:func:`pounding.structure.stops.stop_contacts`)."""
         bumpers = [d for d in self.devices if isinstance(d, Bumper)]
         out: list[Contact] = []
         for c in self._bare_contacts + self._wall_contacts:
@@ -377,7 +400,7 @@ class PoundingModel:
                                            p.effective_mass(self.buildings[p.building].masses)
                                            for p in (c.left, c.right)))
             out.extend(split_contact(c, bumper, rubber, len(out)))
-        return tuple(out)
+        return tuple(out) + stop_contacts(self.stops, self.buildings, len(out))
 
     @cached_property
     def _wall_contacts(self) -> tuple[Contact, ...]:

@@ -44,8 +44,9 @@ GRID = '[grid]\n"contact.gap" = [0.01]\n'
     ('[grid]\n"contact.gapp" = [0.01]\n', "grid.contact.gapp: unknown key 'gapp'; did you mean "
                                          "'gap'? (keys here: a, backbone, backwall_height, "
                                          "backwall_width, c, capacity, chi, delta_m, "
-                                         "delta_ult, e, floor_to_column, formula, gap, gaps, "
-                                         "k, k_h, law, level_tolerance, n, tension, zeta)"),
+                                         "delta_ult, e, floor_to_column, formula, "
+                                         "fracture_displacement, gap, gaps, k, k_h, law, "
+                                         "level_tolerance, n, tension, zeta)"),
     ('[list]\n"building.5.period" = [0.5]\n',
      "list.building.5.period: building.5: need an index 0 … 1 or * (every one)"),
     ('[random]\nn = 2\nseed = 1\n"building.0.n_storeys" = { int = [1.5, 3] }\n',

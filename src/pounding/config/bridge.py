@@ -49,9 +49,34 @@ backwall_height = 2.0 }`` (or ``backbone = "hyperbolic"``, ``k``, ``capacity``,
 ``delta_ult``; :mod:`pounding.contact.abutment`); without it the backwalls are rigid walls
 struck with ``[contact]``'s law.
 
+``abutment_piles`` (optional): the abutments' piles in parallel with the backfill behind
+the same gap, ``{ count = 3, stiffness = 7.0e6, yield_force = 1.78e5 }`` — per pile: its
+stiffness [N/m] (default 40 kip/in, :data:`pounding.structure.bridge.CALTRANS_PILE_STIFFNESS`)
+and, optionally, its yield force [N] (elastic–perfectly-plastic); their force is the
+contact ``…/piles``.
+
 The ``[contact]`` table gives the law of every impact (deck to deck, deck to abutment)
 without ``gap``: the gaps are the joints' and abutments'. The frames are buildings ``B1``,
 ``B2`` … of every output, the deck their floor ``F1`` (:mod:`pounding.structure.bridge`).
+
+**Across the axis** (``direction = "transverse"``,
+:class:`pounding.structure.bridge.TransverseBridge`): the same frames, every number of the
+transverse direction (a pier's transverse ``stiffness``, or ``EI`` with the bent's
+``fixity``; the bearings' transverse laws); the decks do not strike each other, they are
+held by shear keys::
+
+    [bridge]
+    direction = "transverse"
+    abutment_keys = { gap = 0.02, k = 5.0e8, capacity = 1.5e6, fracture_displacement = 0.05 }
+
+    [[bridge.joint]]                  # optional: keys at an in-span joint
+    shear_key = { gap = 0.02, k = 3.0e8, capacity = 1.0e6 }
+
+A key table: ``gap`` [m] each side, ``k`` [N/m], ``capacity`` [N], ``fracture_displacement``
+[m] (leave out: the key never breaks; :class:`pounding.contact.shear_key.ShearKey`). No
+``[contact]`` table (the keys have their own law), no ``abutment_gaps``, ``abutment_law``,
+``abutment_piles``, joint ``gap`` or ``restrainer``; ``[[bridge.joint]]`` tables are given
+for every joint or for none.
 """
 
 from __future__ import annotations
@@ -74,8 +99,8 @@ from pounding.config.quantities import (
 from pounding.config.contact import LawConfig
 from pounding.config.storeys import StoreyLawConfig
 
-__all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "PierConfig",
-           "SeatClauseConfig"]
+__all__ = ["BearingConfig", "BridgeConfig", "BridgeFrameConfig", "JointConfig", "KeyConfig",
+           "PierConfig", "PilesConfig", "SeatClauseConfig"]
 
 FlexuralRigidity = Annotated[float, Field(gt=0, le=1e15)]
 """A column's ``EI`` [N·m²]."""
@@ -271,12 +296,47 @@ class RestrainerConfig(Section):
         return self
 
 
-class JointConfig(Section):
-    """``[[bridge.joint]]``: the expansion joint between two frames (and the width of the
-    seat under it, checked after a run)."""
+class KeyConfig(Section):
+    """A pair of shear keys (``abutment_keys``, a joint's ``shear_key``): ``gap`` [m] each
+    side, ``k`` [N/m], ``capacity`` [N], ``fracture_displacement`` [m] (leave out: never
+    breaks)."""
 
     gap: Gap
+    k: Stiffness
+    capacity: Force
+    fracture_displacement: Length | None = None
+
+    def build(self) -> Any:
+        """The :class:`pounding.structure.bridge.ShearKeys`."""
+        from pounding.structure.bridge import ShearKeys
+
+        return ShearKeys.of(self.gap, self.k, self.capacity, self.fracture_displacement)
+
+
+class PilesConfig(Section):
+    """``abutment_piles = {...}``: the piles under each abutment, per pile (module
+    docstring)."""
+
+    count: Annotated[int, Field(ge=1, le=1000)]
+    stiffness: Stiffness | None = None
+    yield_force: Force | None = None
+
+    def spec(self) -> Any:
+        """The piles' :class:`~pounding.contact.spec.ContactSpec`
+        (:func:`pounding.structure.bridge.abutment_piles`)."""
+        from pounding.structure.bridge import CALTRANS_PILE_STIFFNESS, abutment_piles
+
+        return abutment_piles(self.count, self.stiffness or CALTRANS_PILE_STIFFNESS,
+                              self.yield_force)
+
+
+class JointConfig(Section):
+    """``[[bridge.joint]]``: the expansion joint between two frames: its ``gap`` and
+    ``restrainer`` along the axis, its ``shear_key`` across it."""
+
+    gap: Gap | None = None
     restrainer: RestrainerConfig | None = None
+    shear_key: KeyConfig | None = None
     seat_width: Length | None = None
 
 
@@ -342,12 +402,57 @@ class BridgeConfig(Section):
     abutment_seat_widths: Annotated[list[SeatWidth],
                                     Field(min_length=2, max_length=2)] | None = None
     seat_clause: SeatClauseConfig | None = None
+    abutment_piles: PilesConfig | None = None
+    abutment_keys: KeyConfig | None = None
+    direction: Literal["longitudinal", "transverse"] = "longitudinal"
     deck_elevation: Length | None = None
     zeta: Ratio = 0.05
 
+    @property
+    def transverse(self) -> bool:
+        """True for a model across the bridge's axis."""
+        return self.direction == "transverse"
+
+    @model_validator(mode="after")
+    def _direction(self) -> BridgeConfig:
+        """The keys of the other direction are refused, naming them."""
+        if self.transverse:
+            for key in ("abutment_gaps", "abutment_law", "abutment_piles"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"a key of the longitudinal model (got "
+                                           f"{fmt(getattr(self, key))}); across the axis the "
+                                           "abutments hold the decks by their shear keys: "
+                                           "abutment_keys")
+            for j, joint in enumerate(self.joint):
+                for key in ("gap", "restrainer"):
+                    if getattr(joint, key) is not None:
+                        raise field_error(("joint", j, key),
+                                          f"a key of the longitudinal model (got "
+                                          f"{fmt(getattr(joint, key))}); across the axis the "
+                                          "decks slide past each other at a joint: shear_key")
+            if self.joint and len(self.joint) != len(self.frame) - 1:
+                raise field_error("joint", f"give {len(self.frame) - 1} [[bridge.joint]] "
+                                           f"table(s) for {len(self.frame)} frames, or none "
+                                           f"(got {len(self.joint)})")
+            return self
+        if self.abutment_keys is not None:
+            raise field_error("abutment_keys", 'shear keys hold the decks across the axis: '
+                                               'direction = "transverse"')
+        for j, joint in enumerate(self.joint):
+            if joint.shear_key is not None:
+                raise field_error(("joint", j, "shear_key"), 'shear keys hold the decks '
+                                  'across the axis: direction = "transverse"')
+            if joint.gap is None:
+                raise field_error(("joint", j, "gap"), "required: the joint's gap [m]")
+        if self.abutment_piles is not None and not any(
+                g != "none" for g in (self.abutment_gaps or ["none", "none"])):
+            raise field_error("abutment_piles", "piles stand under an abutment: give "
+                                                "abutment_gaps")
+        return self
+
     @model_validator(mode="after")
     def _joints(self) -> BridgeConfig:
-        if len(self.joint) != len(self.frame) - 1:
+        if not self.transverse and len(self.joint) != len(self.frame) - 1:
             raise field_error("joint", f"need {len(self.frame) - 1} [[bridge.joint]] table(s) "
                                        f"for {len(self.frame)} frames, one between each pair "
                                        f"(got {len(self.joint)})")
@@ -394,20 +499,37 @@ class BridgeConfig(Section):
                                       "give its required width [m]")
 
     def build(self, name: str = "bridge") -> Any:
-        """The :class:`pounding.structure.bridge.Bridge` named ``name``."""
-        from pounding.structure.bridge import Abutment, Bridge, Restrainer
+        """The :class:`pounding.structure.bridge.Bridge` named ``name`` (across the axis: the
+        :class:`~pounding.structure.bridge.TransverseBridge`)."""
+        from pounding.structure.bridge import Abutment, Bridge, Restrainer, TransverseBridge
 
         z = self.deck_elevation or max(p.height for f in self.frame for p in f.pier)
         frames = []
         for j, f in enumerate(self.frame):
             with prefixed(f"frame[{j}]", BridgeFrameConfig.model_fields):
                 frames.append(f.build(z, self.zeta, f"B{j + 1}"))
+        if self.transverse:
+            keys = None
+            if self.abutment_keys is not None:
+                with prefixed("abutment_keys", KeyConfig.model_fields):
+                    keys = self.abutment_keys.build()
+            joint_keys = []
+            for j, joint in enumerate(self.joint):
+                with prefixed(f"joint[{j}].shear_key", KeyConfig.model_fields):
+                    joint_keys.append(None if joint.shear_key is None
+                                      else joint.shear_key.build())
+            return TransverseBridge(tuple(frames), (keys, keys), tuple(joint_keys), name=name)
         gaps = self.abutment_gaps or ["none", "none"]
         law = None
         if self.abutment_law is not None:
             with prefixed("abutment_law", LawConfig.model_fields):
                 law = self.abutment_law.spec()
-        abutments = tuple(None if g == "none" else Abutment(float(g), law) for g in gaps)
+        piles = None
+        if self.abutment_piles is not None:
+            with prefixed("abutment_piles", PilesConfig.model_fields):
+                piles = self.abutment_piles.spec()
+        abutments = tuple(None if g == "none" else Abutment(float(g), law, piles)
+                          for g in gaps)
         restrainers = [Restrainer(j, joint.restrainer.model_dump(exclude_none=True))
                        for j, joint in enumerate(self.joint) if joint.restrainer is not None]
         clause = None
@@ -415,7 +537,7 @@ class BridgeConfig(Section):
             with prefixed("seat_clause", SeatClauseConfig.model_fields):
                 clause = self.seat_clause.build()
         widths = self.seat_widths()
-        return Bridge(tuple(frames), tuple(joint.gap for joint in self.joint),
+        return Bridge(tuple(frames), tuple(joint.gap for joint in self.joint),  # type: ignore[misc]
                       abutments=abutments,  # type: ignore[arg-type]
                       restrainers=tuple(restrainers), name=name,
                       seat_widths=tuple(widths) if any(w is not None for w in widths) else (),

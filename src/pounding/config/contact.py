@@ -31,6 +31,7 @@ LAW_FIELDS: dict[str, frozenset[str]] = {
     "bilinear-impact": frozenset({"k_h", "e", "formula", "delta_m", "n", "a"}),
     "abutment": frozenset({"backbone", "k", "capacity", "delta_ult", "backwall_width",
                            "backwall_height"}),
+    "shear-key": frozenset({"k", "capacity", "fracture_displacement"}),
 }
 """The ``[contact]`` keys each law reads (:func:`pounding.contact.factory.make_law`); giving
 another is an error rather than being silently ignored."""
@@ -56,7 +57,8 @@ class LawConfig(Section):
     those of :class:`pounding.model.ContactSpec` (``k`` [N/m], ``k_h`` [N/m^n], ``e`` [-],
     ``formula``, ``c`` [N·s/m], ``zeta`` [-], ``chi`` [-], ``n`` [-], ``tension``,
     ``delta_m`` [m], ``a`` [-]; the abutment backfill's ``backbone``, ``capacity`` [N],
-    ``delta_ult`` [m], ``backwall_width`` [m], ``backwall_height`` [m]); only the keys the
+    ``delta_ult`` [m], ``backwall_width`` [m], ``backwall_height`` [m]; the shear key's
+    ``capacity`` [N] and ``fracture_displacement`` [m]); only the keys the
     law reads are accepted (:data:`LAW_FIELDS`). The ``rubber`` of a bumper
     (``[[device]]``) is one, and so is a ``[[wall]]``'s own law.
     """
@@ -78,6 +80,7 @@ class LawConfig(Section):
     delta_ult: Length | None = None
     backwall_width: Length | None = None
     backwall_height: Length | None = None
+    fracture_displacement: Length | None = None
 
     @field_validator("law")
     @classmethod

@@ -113,7 +113,8 @@ def _bridge_lengths(cfg: RunConfig) -> list[str]:
     if bridge is None:
         return []
     out = []
-    gaps = [(f"bridge.joint[{j}].gap", joint.gap) for j, joint in enumerate(bridge.joint)]
+    gaps = [(f"bridge.joint[{j}].gap", joint.gap) for j, joint in enumerate(bridge.joint)
+            if joint.gap is not None]  # (across the axis a joint has keys, not a gap)
     gaps += [(f"bridge.abutment_gaps[{i}]", g)
              for i, g in enumerate(bridge.abutment_gaps or []) if g != "none"]
     for key, gap in gaps:

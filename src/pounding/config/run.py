@@ -147,10 +147,21 @@ class RunConfig(Section):
                 raise field_error(key, f"a model file with a [bridge] has no [[{key}]]: its "
                                        "frames are the row, its abutments the walls")
         assert self.bridge is not None
-        if self.contact is None:
+        if self.bridge.transverse:
+            if self.contact is not None:
+                raise field_error("contact", "a bridge across its axis has no [contact] table: "
+                                             "its decks do not strike each other, its keys "
+                                             "have their own law (bridge.abutment_keys, "
+                                             "bridge.joint[].shear_key)")
+            if self.spatial is not None:
+                raise field_error("spatial", "a bridge across its axis on spatially varying "
+                                             "ground is not modelled yet: give one record")
+        if self.contact is None and not self.bridge.transverse:
             raise field_error("contact", "required with a [bridge]: a [contact] table with the "
                                          "law of the impacts at the joints and abutments")
         for key in ("gap", "gaps"):
+            if self.contact is None:
+                break
             if getattr(self.contact, key) is not None:
                 raise field_error(("contact", key), f"the gaps of a bridge are its joints' and "
                                                     f"abutments' (bridge.joint[].gap, "
@@ -254,11 +265,17 @@ class RunConfig(Section):
 
     def _build_bridge(self) -> Built:
         """:meth:`build` of a file with a ``[bridge]``."""
-        assert self.bridge is not None and self.contact is not None
+        assert self.bridge is not None
         with prefixed("bridge", BridgeConfig.model_fields):
             bridge = self.bridge.build(self.name)
-        with prefixed("contact", ContactConfig.model_fields):
-            spec = self.contact.spec()
+        if self.contact is not None:
+            with prefixed("contact", ContactConfig.model_fields):
+                spec = self.contact.spec()
+            tolerance = self.contact.level_tolerance
+        else:  # (across the axis: the keys' law names the model's contacts)
+            stops = bridge.stops()
+            spec = stops[0].law if stops else ContactSpec("linear-spring", k=1.0)
+            tolerance = 0.1
         # [[device]] beside the bridge's own restrainers: links between decks, bumpers in a
         # joint's gap or at a backwall (floors = "all": at every joint)
         devices: list[Any] = []
@@ -270,11 +287,10 @@ class RunConfig(Section):
             devices.extend(made)
             owner.extend([i] * len(made))
         arguments = bridge.model_arguments()
-        own = len(arguments["devices"])  # the restrainers come first
-        arguments["devices"] = [*arguments["devices"], *devices]
+        own = len(arguments.get("devices", ()))  # the restrainers come first
+        arguments["devices"] = [*arguments.get("devices", ()), *devices]
         try:
-            model = PoundingModel(contact=spec, level_tolerance=self.contact.level_tolerance,
-                                  **arguments)
+            model = PoundingModel(contact=spec, level_tolerance=tolerance, **arguments)
             model.contacts  # noqa: B018  (builds every contact law with its deck masses)
         except ValueError as exc:
             text = str(exc)

@@ -26,6 +26,7 @@ _EXPORTS: dict[str, str] = {
                                                       "ModifiedKelvinVoigt")},
     **{name: "pounding.contact.restitution" for name in ("FORMULAS", "DampingFormula",
                                                            "formula")},
+    "ShearKey": "pounding.contact.shear_key",
 }
 """Public name → the module that defines it."""
 
@@ -43,6 +44,7 @@ __all__ = [
     "LinearSpring",
     "ModifiedKelvinVoigt",
     "NonlinearViscoelastic",
+    "ShearKey",
     "formula",
     "hertzdamp",
     "m_effective",
@@ -67,3 +69,4 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
     )
     from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
     from pounding.contact.restitution import FORMULAS, DampingFormula, formula
+    from pounding.contact.shear_key import ShearKey

@@ -11,8 +11,9 @@ State vector (float64, length :data:`STATE_SIZE`)
     impact velocity of the current impact [m/s]; 0 while the gap is open.
 ``state[SLIP]``
     plastic offset of the bilinear element's elasto-plastic branch [m]; the abutment
-    backfill's permanent set [m], which outlasts its impact (:func:`keeps_set` laws:
-    the kernel keeps it when the gap opens); 0 for other laws.
+    backfill's and the shear key's permanent set [m], which outlasts its impact
+    (:func:`keeps_set` laws: the kernel keeps it when the gap opens) — a broken shear
+    key's is ``+∞`` (:data:`BROKEN`); 0 for other laws.
 ``state[DMAX]``
     largest penetration reached in the current impact [m].
 """
@@ -36,3 +37,8 @@ HUNT_CROSSLEY: int = 4
 NONLINEAR_VISCOELASTIC: int = 5
 BILINEAR_IMPACT: int = 6
 ABUTMENT: int = 7
+SHEAR_KEY: int = 8
+
+BROKEN: float = float("inf")
+"""``state[SLIP]`` of a shear key that has broken off: a set of ``+∞``, so the key never
+pushes again (:mod:`pounding.contact.shear_key`)."""

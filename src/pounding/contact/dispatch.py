@@ -20,6 +20,7 @@ from numba import njit
 
 from pounding.contact.codes import (
     ABUTMENT,
+    BROKEN,
     BILINEAR_IMPACT,
     DMAX,
     HERTZ,
@@ -28,6 +29,7 @@ from pounding.contact.codes import (
     LINEAR_SPRING,
     MODIFIED_KELVIN_VOIGT,
     NONLINEAR_VISCOELASTIC,
+    SHEAR_KEY,
     SLIP,
     STATE_SIZE,
     V0,
@@ -42,6 +44,7 @@ from pounding.contact.kernels import (
     linear_spring_trial,
     modified_kelvin_voigt_trial,
     nonlinear_viscoelastic_trial,
+    shear_key_trial,
 )
 
 PARAMS_SIZE: int = 3
@@ -52,6 +55,7 @@ CONTACT_LAW_CODES: dict[int, str] = {
     MODIFIED_KELVIN_VOIGT: "modified Kelvin-Voigt", HERTZ: "Hertz",
     HUNT_CROSSLEY: "Hunt-Crossley", NONLINEAR_VISCOELASTIC: "nonlinear viscoelastic",
     BILINEAR_IMPACT: "bilinear impact", ABUTMENT: "abutment backfill",
+    SHEAR_KEY: "shear key",
 }
 """The codes :func:`law_trial` implements, each with its law (a branch apiece)."""
 
@@ -98,6 +102,8 @@ def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
         return bilinear_impact_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     if code == ABUTMENT:
         return abutment_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
+    if code == SHEAR_KEY:
+        return shear_key_trial(p0, p1, p2, delta, rate, v0, slip, dmax)
     return np.nan, np.nan, np.nan, v0, slip, dmax
 
 
@@ -105,18 +111,41 @@ def law_trial(code, p0, p1, p2, delta, rate, v0, slip, dmax):
 def has_linear_spring(code):
     """True for the laws whose spring is linear in δ (∂F/∂δ bounded at δ = 0): linear
     spring, Kelvin–Voigt, modified Kelvin–Voigt, bilinear impact, abutment backfill (its
-    backbone's slope at δ = 0 is K). The Hertz family's is not (a Hertz-damped law's ∂F/∂δ
-    is unbounded at δ = 0 while approaching)."""
+    backbone's slope at δ = 0 is K), shear key. The Hertz family's is not (a Hertz-damped
+    law's ∂F/∂δ is unbounded at δ = 0 while approaching)."""
     return (code == LINEAR_SPRING or code == KELVIN_VOIGT or code == MODIFIED_KELVIN_VOIGT
-            or code == BILINEAR_IMPACT or code == ABUTMENT)
+            or code == BILINEAR_IMPACT or code == ABUTMENT or code == SHEAR_KEY)
 
 
 @njit(cache=True, inline="always")
 def keeps_set(code):
     """True for a law whose ``state[SLIP]`` is a permanent set that outlasts its impact
-    (the abutment backfill): the kernel keeps it when the gap opens and at the next onset,
-    where it zeroes every other law's state."""
-    return code == ABUTMENT
+    (the abutment backfill, the shear key — whose set says also whether it has broken
+    off): the kernel keeps it when the gap opens and at the next onset, where it zeroes
+    every other law's state."""
+    return code == ABUTMENT or code == SHEAR_KEY
+
+
+@njit(cache=True, inline="always")
+def can_break(code, p2, slip):
+    """True for a shear key that is intact and breaks off at a fracture deformation
+    (params ``[k, F_c, δ_u]``, ``δ_u > 0``; its ``slip`` not :data:`BROKEN`): the kernel
+    locates the instant its penetration reaches ``δ_u`` (:func:`fracture_value`)."""
+    return code == SHEAR_KEY and p2 > 0.0 and slip != BROKEN
+
+
+@njit(cache=True, inline="always")
+def is_broken(code, slip):
+    """True for a shear key that has broken off (its ``slip`` :data:`BROKEN`): its gap
+    closing again is no impact — it has nothing left to push with."""
+    return code == SHEAR_KEY and slip == BROKEN
+
+
+@njit(cache=True, inline="always")
+def fracture_value(p2, delta):
+    """The event function of a key's fracture, ``δ − δ_u`` [m]: it crosses zero upward
+    where the key breaks off (:func:`can_break`). Its rate is the penetration's."""
+    return delta - p2
 
 
 @njit(cache=True, inline="always")
@@ -189,6 +218,11 @@ def stored_energy(code, p0, p1, p2, delta, slip):
     if code == ABUTMENT:
         # the elastic part F²/(2K) of the force on the line K (δ − set) or the backbone
         f = min(p0 * (delta - slip), abutment_backbone(p0, p1, p2, delta)[0])
+        return 0.5 * f * f / p0 if f > 0.0 else 0.0
+    if code == SHEAR_KEY:
+        # F²/(2k) of the force on the line k (δ − set), capped at the capacity; a broken
+        # key (set +∞) holds nothing
+        f = min(p0 * (delta - slip), p1)
         return 0.5 * f * f / p0 if f > 0.0 else 0.0
     return np.nan
 

@@ -11,6 +11,7 @@ from pounding.contact.bilinear import BILINEAR_FORMULAS, BilinearImpact
 from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
 from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
 from pounding.contact.restitution import FORMULAS, formula as get_formula
+from pounding.contact.shear_key import ShearKey
 from pounding.validation import choice
 
 LAWS: dict[str, type[ContactLaw]] = {
@@ -22,6 +23,7 @@ LAWS: dict[str, type[ContactLaw]] = {
     "nonlinear-viscoelastic": NonlinearViscoelastic,
     "bilinear-impact": BilinearImpact,
     "abutment": AbutmentBackfill,
+    "shear-key": ShearKey,
 }
 """Every contact law class, keyed by the name used in configs and on the command line."""
 
@@ -31,9 +33,10 @@ IMPACT_LAW_NAMES: tuple[str, ...] = (
 )
 """The impact laws: those the single-collision commands (``pounding collide``) offer."""
 
-LAW_NAMES: tuple[str, ...] = (*IMPACT_LAW_NAMES, "abutment")
-"""Names :func:`make_law` accepts: the impact laws and the abutment backfill (a wall's law in
-a model file; :mod:`pounding.contact.abutment`). ``hertzdamp`` is Hunt–Crossley with the
+LAW_NAMES: tuple[str, ...] = (*IMPACT_LAW_NAMES, "abutment", "shear-key")
+"""Names :func:`make_law` accepts: the impact laws, the abutment backfill (a wall's law in
+a model file; :mod:`pounding.contact.abutment`) and the sacrificial shear key (a bridge's,
+:mod:`pounding.contact.shear_key`). ``hertzdamp`` is Hunt–Crossley with the
 Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with ζ of seed eq 39."""
 
 DEFAULT_FORMULA: dict[str, str] = {
@@ -102,7 +105,8 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
              delta_m: float | None = None, a: float = 0.1, backbone: str | None = None,
              capacity: float | None = None, delta_ult: float | None = None,
              backwall_width: float | None = None,
-             backwall_height: float | None = None) -> ContactLaw:
+             backwall_height: float | None = None,
+             fracture_displacement: float | None = None) -> ContactLaw:
     """Build a contact law by name.
 
     Parameters
@@ -138,17 +142,33 @@ def make_law(name: str, *, k: float | None = None, k_h: float | None = None,
         (``caltrans`` from the backwall's width and height [m], ``elastic-plastic`` from
         ``k`` and ``capacity`` [N], ``hyperbolic`` from ``k``, ``capacity`` and
         ``delta_ult`` [m]).
+    fracture_displacement : float
+        Shear key (``k`` [N/m], ``capacity`` [N]): the penetration at which it breaks off
+        [m] (:class:`pounding.contact.shear_key.ShearKey`; None: it never breaks).
 
     Returns
     -------
     ContactLaw
     """
     law = choice("law", name, LAW_NAMES)
+    damping_keys = (("k_h", k_h), ("e", e), ("formula", formula), ("c", c), ("zeta", zeta),
+                    ("chi", chi), ("delta_m", delta_m))
+    if law == "shear-key":
+        for key, value in (*damping_keys, ("backbone", backbone), ("delta_ult", delta_ult),
+                           ("backwall_width", backwall_width),
+                           ("backwall_height", backwall_height)):
+            if value is not None:
+                raise ValueError(f"{key}: not read by the shear-key law (got {value!r}); it "
+                                 "reads k, capacity, fracture_displacement")
+        return ShearKey(_need("k", k, law), _need("capacity", capacity, law),
+                        fracture_displacement)
+    if fracture_displacement is not None:
+        raise ValueError(f"fracture_displacement: read only by the shear-key law (got "
+                         f"{fracture_displacement!r} for the {law} law)")
     abutment_keys = {"backbone": backbone, "capacity": capacity, "delta_ult": delta_ult,
                      "backwall_width": backwall_width, "backwall_height": backwall_height}
     if law == "abutment":
-        for key, value in (("k_h", k_h), ("e", e), ("formula", formula), ("c", c),
-                           ("zeta", zeta), ("chi", chi), ("delta_m", delta_m)):
+        for key, value in damping_keys:
             if value is not None:
                 raise ValueError(f"{key}: not read by the abutment law (got {value!r}); its "
                                  "backfill dissipates by yielding, not by a dashpot")

@@ -184,3 +184,36 @@ def abutment_trial(k, fu, yu, delta, rate, v0, slip, dmax):
     if fe >= fb:
         return fb, kb, 0.0, v0, delta - fb / k, dmax
     return fe, k, 0.0, v0, slip, dmax
+
+
+# --------------------------------------------------------------------------- shear key
+@njit(cache=True, inline="always", error_model="numpy")
+def shear_key_trial(k, fc, du, delta, rate, v0, slip, dmax):
+    """Sacrificial shear key (params: [k, F_c, δ_u]; ``slip`` its permanent set, ``+∞`` once
+    it has broken off; :class:`pounding.contact.shear_key.ShearKey`).
+
+    Elastic ``F = k (δ − set)`` up to the capacity ``F_c``, then perfectly plastic (the set
+    grows to ``δ − F_c/k``); unloading and reloading at ``k``, no tension. When the
+    penetration reaches the fracture deformation ``δ_u`` (``δ_u > 0``; 0: it never breaks)
+    the key breaks off: the trial state says so (set ``+∞``) while the force stays on the
+    intact branch, so the force drops only where the caller commits that state — at the
+    located event (:func:`pounding.contact.dispatch.fracture_value`), never inside a step.
+    A broken key pushes nothing, ever again. Like the abutment backfill, its set outlasts an
+    impact (:func:`pounding.contact.dispatch.keeps_set`).
+    """
+    if delta <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0, slip, 0.0
+    if slip == np.inf:  # broken off: nothing, however far the deck goes
+        return 0.0, 0.0, 0.0, v0, slip, max(dmax, delta)
+    if v0 <= 0.0:
+        v0 = max(rate, V0_MIN)
+        dmax = 0.0
+    if delta > dmax:
+        dmax = delta
+    broken = du > 0.0 and delta >= du
+    fe = k * (delta - slip)
+    if fe <= 0.0:
+        return 0.0, 0.0, 0.0, v0, np.inf if broken else slip, dmax
+    if fe >= fc:  # on the plateau: the set follows
+        return fc, 0.0, 0.0, v0, np.inf if broken else delta - fc / k, dmax
+    return fe, k, 0.0, v0, np.inf if broken else slip, dmax

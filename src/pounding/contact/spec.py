@@ -46,11 +46,14 @@ class ContactSpec:
         Abutment backfill: ``"caltrans"`` (default), ``"elastic-plastic"`` or
         ``"hyperbolic"`` (:func:`pounding.contact.abutment.make_abutment`).
     capacity : float, optional
-        Abutment backfill: ultimate passive force [N].
+        Abutment backfill: ultimate passive force [N]; shear key: its capacity [N].
     delta_ult : float, optional
         Abutment backfill, hyperbolic: penetration at the capacity [m].
     backwall_width, backwall_height : float, optional
         Abutment backfill, Caltrans: the backwall's width and height [m].
+    fracture_displacement : float, optional
+        Shear key (``k``, ``capacity``): the penetration at which it breaks off [m] (None:
+        it never breaks; :class:`pounding.contact.shear_key.ShearKey`).
     """
 
     law: str
@@ -70,6 +73,7 @@ class ContactSpec:
     delta_ult: float | None = None
     backwall_width: float | None = None
     backwall_height: float | None = None
+    fracture_displacement: float | None = None
 
     def __post_init__(self) -> None:
         # build once with unit masses so a bad spec fails here, naming its field
@@ -84,11 +88,11 @@ class ContactSpec:
 
         units = {"k": " N/m", "k_h": f" N/m^{self.n:g}", "c": " N·s/m", "delta_m": " m",
                  "capacity": " N", "delta_ult": " m", "backwall_width": " m",
-                 "backwall_height": " m"}
+                 "backwall_height": " m", "fracture_displacement": " m"}
         formula = resolve_formula(self.law, self.formula, self.tension)
         parts = [f"{self.backbone or 'caltrans'} backbone"] if self.law == "abutment" else []
         for name in ("k", "k_h", "e", "c", "zeta", "chi", "delta_m", "capacity", "delta_ult",
-                     "backwall_width", "backwall_height"):
+                     "backwall_width", "backwall_height", "fracture_displacement"):
             value = getattr(self, name)
             if value is not None:
                 via = f" via {formula}{self._exactness()}" if name == "e" and formula else ""
@@ -126,7 +130,8 @@ class ContactSpec:
             zeta=self.zeta, chi=self.chi, m1=m1, m2=m2, n=self.n, tension=self.tension,
             delta_m=self.delta_m, a=self.a, backbone=self.backbone, capacity=self.capacity,
             delta_ult=self.delta_ult, backwall_width=self.backwall_width,
-            backwall_height=self.backwall_height))
+            backwall_height=self.backwall_height,
+            fracture_displacement=self.fracture_displacement))
 
 
 CONTACT_LAWS = Memo(max_items=256)

@@ -47,6 +47,7 @@ from pounding.integrate.layout import (
     EV_ONSET,
     EV_SEPARATION,
     EV_TAUT,
+    EV_YIELD,
     FAIL_BUDGET,
     FAIL_NONFINITE,
     FAIL_UNDERFLOW,
@@ -352,7 +353,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             was_event = ev_c >= 0
             hinge_event = EV_HINGE_HI <= ev_kind <= EV_HINGE_TURN_UP
             if (ev_kind == EV_DRIFT_MAX or ev_kind == EV_DRIFT_MIN or hinge_event
-                    or ev_kind >= EV_TAUT):  # (a restrainer's corner)
+                    or EV_TAUT <= ev_kind <= EV_YIELD):  # (a restrainer's corner)
                 ws_i[I_NEVENTS] += 1
                 if hinge_event:
                     ws_i[I_STOP_ROW] = ev_c

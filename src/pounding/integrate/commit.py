@@ -5,7 +5,8 @@ A law's state changes only here: at the end of an accepted adaptive step, and at
 event — contact onset (``v0`` committed at the located instant, contract step 3), separation
 (the impact's row closed: end time, restitution, dissipated energy), a clipped law's release
 (its impact's end and restitution; the force evaluated again on the new branch) or engaging
-again, or an ordinary step
+again, a shear key breaking off (its impact's end; its force zero from there, and its gap
+closing again no impact), or an ordinary step
 through a contact (the law's trial state committed; the largest force inside the step taken
 from the cubic Hermite of the force and its rate at the step's two ends, with its time).
 """
@@ -16,7 +17,7 @@ import numpy as np
 from numba import njit
 
 from pounding.contact.codes import DMAX, SLIP, STATE_SIZE, V0, V0_MIN
-from pounding.contact.dispatch import keeps_set
+from pounding.contact.dispatch import is_broken, keeps_set
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.events import hermite_max
 from pounding.integrate.layout import (
@@ -80,6 +81,8 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
     for c in range(nc):
         dsum, rate = gap_row(c, x, n, cdof, cw)
         delta = dsum - cgap[c]
+        if is_broken(ccode[c], committed[c, SLIP]) and committed[c, V0] == 0.0:
+            continue  # a broken-off shear key: its gap closing again is no impact
         if (c == ev_c and ev_kind == EV_ONSET) or (committed[c, V0] == 0.0 and delta > 0.0):
             # contact onset (contract step 3): commit v0 at the located instant (or at the
             # end of a step whose other event, closer than the time resolution, ended it
@@ -144,6 +147,10 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
                 f, kd, kr, tv0, tslip, tdmax = law_call(
                     ccode[c], cparams[c, 0], cparams[c, 1], cparams[c, 2], delta, rate,
                     committed[c, V0], committed[c, SLIP], committed[c, DMAX])
+                # a shear key that breaks off here (at its located event, EV_FRACTURE):
+                # its force drops to zero, its impact ends
+                broke = is_broken(ccode[c], tslip) and not is_broken(ccode[c],
+                                                                     committed[c, SLIP])
                 committed[c, V0] = tv0
                 committed[c, SLIP] = tslip
                 committed[c, DMAX] = tdmax
@@ -178,6 +185,12 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
                 last_f[c, 0] = t_now
                 last_f[c, 1] = f
                 last_f[c, 2] = df1
+                if broke:
+                    state_changed = True
+                    last_f[c, 1] = 0.0  # (from here on the key pushes nothing)
+                    last_f[c, 2] = 0.0
+                    if row >= 0 and np.isnan(imp[row, IMP_END]):
+                        imp[row, IMP_END] = t_now
                 if ev_c == c:
                     ws_i[I_NEVENTS] += 1
                     if ev_kind == EV_RELEASE or ev_kind == EV_REENGAGE:

@@ -16,8 +16,14 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.contact.codes import V0
-from pounding.contact.dispatch import law_releases, release_value
+from pounding.contact.codes import SLIP, V0
+from pounding.contact.dispatch import (
+    can_break,
+    fracture_value,
+    is_broken,
+    law_releases,
+    release_value,
+)
 from pounding.devices.laws import (
     DEVICE_MIN,
     RESTRAINER,
@@ -30,6 +36,7 @@ from pounding.integrate.layout import (
     EL_ROCK,
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
+    EV_FRACTURE,
     EV_GRAZE,
     EV_HINGE_HI,
     EV_HINGE_LO,
@@ -205,13 +212,14 @@ def event_value(kind, c, y, n, ct, el, hg):
     """Event function: δ of contact c (onset, separation), δ̇ (phase switches, the peak of
     an open gap's penetration), the unclipped force of a releasing law (release, engaging
     again), the drift rate of element row c (drift reversals), or of hinge row c its
-    rotation less an end of its branch (the branch's ends) or its rate (reversals); ``ct``,
+    rotation less an end of its branch (the branch's ends) or its rate (reversals), or
+    a shear key's penetration less its fracture deformation (fracture); ``ct``,
     ``el``, ``hg``: the contacts, element rows and hinge rows."""
     if kind == EV_DRIFT_MAX or kind == EV_DRIFT_MIN:
         return element_drift(c, el.lo[c], el.hi[c], el.params, y, n)[1]
-    if kind >= EV_TAUT:
+    if EV_TAUT <= kind <= EV_YIELD:
         return restrainer_value(kind, c, y, n, el)
-    if kind >= EV_HINGE_HI:
+    if EV_HINGE_HI <= kind <= EV_HINGE_TURN_UP:
         th, th_rate = hinge_row(c, y, n, hg)
         if kind == EV_HINGE_HI:
             return th - hg.state[c, HS_HI]
@@ -223,6 +231,8 @@ def event_value(kind, c, y, n, ct, el, hg):
         return v
     if kind == EV_RELEASE or kind == EV_REENGAGE:
         return release_value(ct.params[c, 0], ct.params[c, 1], d - ct.gap[c], v)
+    if kind == EV_FRACTURE:
+        return fracture_value(ct.params[c, 2], d - ct.gap[c])
     return d - ct.gap[c]
 
 
@@ -353,7 +363,9 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
     (released before δ = 0 / engaged again), 10 / 11 a frame's hinge rotation reaching the
     upper / lower end of its branch, 12 / 13 a hinge on a one-way branch reversing (its
     rate turning negative / positive), 14 / 15 / 16 a restrainer's slack taken up / given
-    back / its yield (:func:`restrainer_event`); (−1, −1, 0) if none. The hinges' rotations and rates
+    back / its yield (:func:`restrainer_event`), 17 a shear key breaking off (its penetration
+    reaching its fracture deformation; a broken key's gap closing is not searched);
+    (−1, −1, 0) if none. The hinges' rotations and rates
     at ``y0`` are read from their rows' ``HS_TH0``, ``HS_R0`` (the caller's: see
     :func:`hinge_start`), those at ``y1`` left in ``HS_TH1``, ``HS_R1``. ``ct``, ``el``, ``hg``: the
     contacts, element rows and hinge rows.
@@ -381,6 +393,8 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
         if committed[c, V0] == 0.0:
             if max(d0, d1) + bound + 0.125 * h * h * (abs(acc0) + abs(acc1)) <= -graze_tol:
                 continue
+            if is_broken(ccode[c], committed[c, SLIP]):
+                continue  # (a broken-off shear key: its gap closing is no impact)
             # A gap open at both ends whose rate turns from closing to opening peaks inside
             # the step: any touch there is a graze, decided at the peak located on real
             # steps. (The cubic's root is no estimate of it: the real gap may be closed for
@@ -419,6 +433,17 @@ def find_event(y0, k0, y1, k1, h, n, ct, el, hg, committed, skip_c, skip_kind, g
                                    best_t)
                     if t >= 0.0:
                         best_t, best_c, best_k = t, c, kind
+            if (can_break(ccode[c], cparams[c, 2], committed[c, SLIP])
+                    and not (c == skip_c and skip_kind == EV_FRACTURE)):
+                # a shear key reaching its fracture deformation: it breaks off there
+                g0 = fracture_value(cparams[c, 2], d0)
+                g1 = fracture_value(cparams[c, 2], d1)
+                if max(g0, g1) + bound > 0.0:
+                    t = hermite_root(g0, r0, g1, r1, h, UPWARD)
+                    if g1 > 0.0 and t < 0.0:
+                        t = h
+                    if 0.0 < t < best_t:
+                        best_t, best_c, best_k = t, c, EV_FRACTURE
     for s in range(s_lo.shape[0]):
         if s_code[s] == RESTRAINER:
             t, kind = restrainer_event(s, y0, k0, y1, k1, h, n, el, skip_c, skip_kind, best_t)
@@ -566,7 +591,7 @@ def is_upward(kind):
     branch or turning to rotate positively)?"""
     return (kind == EV_ONSET or kind == EV_RELOADING or kind == EV_DRIFT_MIN
             or kind == EV_REENGAGE or kind == EV_HINGE_HI or kind == EV_HINGE_TURN_UP
-            or kind == EV_TAUT or kind == EV_YIELD)
+            or kind == EV_TAUT or kind == EV_YIELD or kind == EV_FRACTURE)
 
 
 @njit(**NRT_FREE)

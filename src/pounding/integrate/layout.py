@@ -55,6 +55,10 @@ EV_TAUT, EV_SLACK, EV_YIELD = np.int64(14), np.int64(15), np.int64(16)
 """A cable restrainer's corners (:func:`pounding.devices.laws.restrainer_kinks`): its elastic
 elongation ``e`` turning positive (the slack taken up) / back to ≤ 0 (slack again), its
 margin to yield turning positive (it yields). Element-row events, like ``EV_DRIFT_*``."""
+EV_FRACTURE = np.int64(17)
+"""A closed shear key's penetration reaching its fracture deformation (``δ − δ_u`` turning
+positive, :func:`pounding.contact.dispatch.fracture_value`): it breaks off, its force drops
+to zero there. A contact event."""
 
 # ---------------------------------------------------------------- workspace scalars / counters
 (W_H, W_E_INPUT, W_E_DAMP, W_E_STOREY, W_ERR_OLD, W_PEAK_MARGIN, W_E_DEVICE,

@@ -51,6 +51,7 @@ from pounding.integrate.reference_laws import (
     RESTRAINER_YIELDING,
     Storey,
     contact_force,
+    fracture_penetration,
     keeps_set,
     link_force,
     link_recoverable,
@@ -125,6 +126,9 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
     # bites, an event; released[c] while the clipped force is zero
     release = [release_function(law) for law in laws]
     released = np.zeros(nc, dtype=bool)
+    # shear keys: the penetration at which each breaks off (None: never); a broken key's
+    # set is +inf (reference_laws._key)
+    fracture = [fracture_penetration(law) for law in laws]
     storeys = yielding_storeys(model)
     ns = len(storeys)
     yld = np.zeros(ns, dtype=int)  # bilinear: 0 elastic, ±1 on the yield branch
@@ -231,7 +235,14 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         for c in range(nc):
             def ev(t: float, y: NDArray[np.float64], c: int = c) -> float:
                 return kin(y, c)[0]
-            evs.append(StopEvent(ev, 1.0 if v0s[c] == 0.0 else -1.0, ("gap", c, 0)))
+            broken = slips[c] == np.inf
+            if not (broken and v0s[c] == 0.0):  # (a broken-off key closing is no impact)
+                evs.append(StopEvent(ev, 1.0 if v0s[c] == 0.0 else -1.0, ("gap", c, 0)))
+            if v0s[c] > 0.0 and fracture[c] is not None and not broken:
+                def evf(t: float, y: NDArray[np.float64], c: int = c,
+                        du: float = fracture[c]) -> float:  # type: ignore[assignment]
+                    return kin(y, c)[0] - du
+                evs.append(StopEvent(evf, 1.0, ("fracture", c, 0)))
             if v0s[c] > 0.0:
                 def evr(t: float, y: NDArray[np.float64], c: int = c) -> float:
                     return kin(y, c)[1]
@@ -424,6 +435,15 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                     row = impacts[open_row[c]]
                     row[2] = t if released[c] else np.nan
                     row[7] = max(-kin(y, c)[1], 0.0) / v0s[c] if released[c] else np.nan
+                elif tag[0] == "fracture":
+                    # the key breaks off: its force drops to zero for good, its impact ends
+                    c = tag[1]
+                    d, rate = kin(y, c)
+                    row = impacts[open_row[c]]
+                    row[6] = max(row[6], d)
+                    if np.isnan(row[2]):
+                        row[2] = t
+                    slips[c] = np.inf
                 elif tag[0] == "gap" and v0s[tag[1]] == 0.0:
                     c = tag[1]
                     d, rate = kin(y, c)

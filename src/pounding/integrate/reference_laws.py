@@ -21,7 +21,12 @@ onset; the contract of :mod:`pounding.contact.base`):
   the line ``K (δ − s)`` and the backbone ``min(δ/(1/K + B δ), F_ult)``,
   ``B = 1/F_ult − 1/(K δ_ult)``, and never negative; ``s``, the backfill's permanent set,
   moves to ``δ − F/K`` while the force is on the backbone and, unlike the others' state,
-  is kept from one impact to the next (:func:`keeps_set`).
+  is kept from one impact to the next (:func:`keeps_set`);
+* the shear key (:class:`~pounding.contact.shear_key.ShearKey`): the least of the line
+  ``k (δ − s)`` and its capacity ``F_c``, never negative, its set ``s`` moving to
+  ``δ − F_c/k`` on the plateau and kept from one impact to the next; where ``δ`` reaches
+  its fracture deformation (an event, :func:`fracture_penetration`) it breaks off for good
+  (its set ``+∞``: no force, and its gap closing again is no impact).
 
 Storey laws: the bilinear storey in rate form (``V̇ = k ḋ`` elastic, ``b k ḋ`` on the yield
 branch, switched at located events) and the Bouc–Wen storey's evolution law (Wen 1976),
@@ -52,6 +57,7 @@ from pounding.contact import (
     LinearSpring,
     ModifiedKelvinVoigt,
     NonlinearViscoelastic,
+    ShearKey,
 )
 from pounding.contact.base import ContactLaw
 from pounding.devices import Link
@@ -100,6 +106,8 @@ def contact_force(law: ContactLaw, delta: float, rate: float, v0: float,
         return law.K2 * d + plastic, slip
     if isinstance(law, AbutmentBackfill):
         return _backfill(law, d, slip)
+    if isinstance(law, ShearKey):
+        return _key(law, d, slip)
     raise ValueError(f"reference: no reference force for contact law {type(law).__name__}")
 
 
@@ -116,9 +124,29 @@ def _backfill(law: AbutmentBackfill, d: float, s: float) -> tuple[float, float]:
     return line, s
 
 
+def _key(law: ShearKey, d: float, s: float) -> tuple[float, float]:
+    """Force [N] of an intact (``s`` finite) or broken (``s = +∞``) shear key at penetration
+    ``d`` [m] with permanent set ``s`` [m], and the set after it."""
+    if d <= s:  # inside the set (or broken off): it does not pull
+        return 0.0, s
+    line = law.k * (d - s)
+    if line >= law.capacity:  # on the plateau: the set grows
+        return law.capacity, d - law.capacity / law.k
+    return line, s
+
+
 def keeps_set(law: ContactLaw) -> bool:
-    """True for a law whose state outlasts its impact (the abutment backfill's set)."""
-    return isinstance(law, AbutmentBackfill)
+    """True for a law whose state outlasts its impact (the abutment backfill's set, the
+    shear key's set and whether it has broken off)."""
+    return isinstance(law, (AbutmentBackfill, ShearKey))
+
+
+def fracture_penetration(law: ContactLaw) -> float | None:
+    """The penetration [m] at which a shear key breaks off (an event of the reference);
+    None for a key that never breaks and for every other law."""
+    if isinstance(law, ShearKey):
+        return law.fracture_displacement
+    return None
 
 
 def stored_energy(law: ContactLaw, delta: float, slip: float) -> float:
@@ -140,6 +168,9 @@ def stored_energy(law: ContactLaw, delta: float, slip: float) -> float:
     if isinstance(law, AbutmentBackfill):
         force = _backfill(law, delta, slip)[0]
         return 0.5 * force**2 / law.K  # what unloading along K gives back
+    if isinstance(law, ShearKey):
+        force = _key(law, delta, slip)[0]
+        return 0.5 * force**2 / law.k
     raise ValueError(f"reference: no reference energy for contact law {type(law).__name__}")
 
 

@@ -157,7 +157,9 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...],
             else:
                 left, right = stations[last], wall_stations["right"]
         else:
-            left, right = stations[c.pair], stations[c.pair + 1]
+            # (the stations of the points' own buildings: a stop's left point may be the
+            # right building of its pair, a transverse bridge's key between decks)
+            left, right = stations[c.left.building], stations[c.right.building]
         if left != right:
             dof[c.index, width:] = (N + left, N + right)
             w[c.index, width:] = (1.0, -1.0)

@@ -16,6 +16,7 @@ modules below are how the package is built, each importing only those under it:
 * :mod:`~pounding.result.storey_peaks` — the bearing and plan tables of a response;
 * :mod:`~pounding.result.bridge_peaks` — a bridge run element by element (frames, piers,
   bearings, joints and abutments, restrainers);
+* :mod:`~pounding.result.bridge_keys` — the shear keys of a run (peak force, set, failure);
 * :mod:`~pounding.result.variables` — its histories as named variables with units (what
   the NetCDF file and the xarray Dataset hold);
 * :mod:`~pounding.result.summary` — its headline numbers (``summary.json``);
@@ -44,6 +45,7 @@ _EXPORTS: dict[str, str] = {
     **{name: "pounding.result.bridge_seats" for name in (
         "SEAT_FIELDS", "seat_checks", "seat_openings", "seat_summary")},
     "ContactPeak": "pounding.result.contact_response",
+    **{name: "pounding.result.bridge_keys" for name in ("KeyState", "shear_keys")},
     **{name: "pounding.result.response" for name in ("Response", "SolverStats")},
     **{name: "pounding.result.storey_peaks" for name in (
         "BearingPeaks", "PlanStoreys", "bearing_peaks", "plan_storeys")},
@@ -68,6 +70,7 @@ __all__ = [
     "BridgePeaks",
     "ContactPeak",
     "HistoryVariables",
+    "KeyState",
     "PlanStoreys",
     "Response",
     "SEAT_FIELDS",
@@ -91,6 +94,7 @@ __all__ = [
     "seat_checks",
     "seat_openings",
     "seat_summary",
+    "shear_keys",
     "summarize",
 ]
 
@@ -110,6 +114,7 @@ if TYPE_CHECKING:  # what type checkers and IDEs see: the same names, imported e
         seat_openings,
         seat_summary,
     )
+    from pounding.result.bridge_keys import KeyState, shear_keys
     from pounding.result.columns import ENERGY_NAMES, IMPACT_COLUMNS
     from pounding.result.contact_response import ContactPeak
     from pounding.result.demands import DEMANDS, Demand

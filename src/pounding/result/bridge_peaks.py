@@ -31,6 +31,8 @@ the output steps; the deck's and the contacts' inside solver steps.
 
 from __future__ import annotations
 
+import math
+
 from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 import numpy as np
@@ -250,10 +252,13 @@ def element_law_words(law: str, yield_force: float | None, kind: str) -> str:
 
 def is_bridge(model: Any) -> bool:
     """True if every building of ``model`` is a bridge frame
-    (:class:`~pounding.structure.bridge.BridgeFrame`)."""
+    (:class:`~pounding.structure.bridge.BridgeFrame`) of a bridge along its axis (across it
+    the frames never meet and shear keys hold them: :attr:`Result.shear_keys`)."""
     from pounding.structure.bridge import BridgeFrame
 
-    return bool(model.buildings) and all(isinstance(b, BridgeFrame) for b in model.buildings)
+    across = bool(getattr(model, "stops", ())) or any(g == math.inf for g in model.gaps)
+    return (bool(model.buildings) and not across
+            and all(isinstance(b, BridgeFrame) for b in model.buildings))
 
 
 def _argmax(values: np.ndarray, time: np.ndarray) -> tuple[float, float]:

@@ -37,7 +37,12 @@ SEAT_FIELDS: tuple[str, ...] = (
 
 
 def _decks(result: Any) -> list[int]:
-    """The global DOF of every deck, left to right (every building a bridge frame)."""
+    """The global DOF of every deck, left to right (every building a bridge frame, along
+    the bridge's axis)."""
+    model = result.model
+    if getattr(model, "stops", ()) or any(g == float("inf") for g in model.gaps):
+        raise ValueError("seats: a bridge across its axis has no seats to unseat from (its "
+                         "shear keys: Result.shear_keys)")
     out = []
     for off, b in zip(result.model.system.offsets, result.model.buildings):
         deck = getattr(b, "deck_dof", None)

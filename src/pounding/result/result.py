@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 from pounding.result.bridge_peaks import BridgePeaks, bridge_peaks
 from pounding.result.bridge_seats import seat_checks
+from pounding.result.bridge_keys import KeyState, shear_keys
 from pounding.result.columns import IMPACT_COLUMNS, rounded_length
 from pounding.result.files import save_result
 from pounding.result.response import Response
@@ -123,6 +124,13 @@ class Result(Response):
         restrainer, with their peaks (:class:`pounding.result.bridge_peaks.BridgePeaks`);
         None unless every building is a bridge frame."""
         return bridge_peaks(self)
+
+    @cached_property
+    def shear_keys(self) -> list[KeyState]:
+        """Every shear key (a bridge across its axis): its peak force and deformation, its
+        set, whether and when it broke off (:class:`pounding.result.KeyState`); empty
+        without keys."""
+        return shear_keys(self)
 
     def history_variables(self) -> HistoryVariables:
         """Every time history and per-floor result as named variables with dimensions, units

@@ -11,6 +11,7 @@ from numpy.typing import NDArray
 
 from pounding.result.bridge_peaks import bridge_summary
 from pounding.result.bridge_seats import seat_summary
+from pounding.result.bridge_keys import key_summary
 from pounding.result.columns import ENERGY_NAMES, rounded_length
 from pounding.result.foundations import foundation_summary
 from pounding.result.storey_peaks import bearing_peaks, plan_storeys
@@ -89,6 +90,7 @@ def summarize(r: Response) -> dict[str, Any]:
         **spatial_summary(r),
         **bridge_summary(r),
         **seats_summary(r),
+        **key_summary(r),
         "solver": {"name": r.stats.solver, "rtol": r.stats.rtol, "rk_steps": r.stats.rk_steps,
                    "rejected": r.stats.rejected, "events": r.stats.events,
                    "impact_table_overflow": r.stats.impact_overflow,

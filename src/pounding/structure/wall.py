@@ -29,7 +29,10 @@ A rigid wall may carry a contact law of its own (``MoatWall(contact=ContactSpec(
 used for its contacts only; without one its contacts follow the model's. An abutment is
 such a wall: its backwall across the gap from the deck's end, its backfill's passive
 resistance the law (``ContactSpec("abutment", ...)``,
-:class:`pounding.contact.abutment.AbutmentBackfill`).
+:class:`pounding.contact.abutment.AbutmentBackfill`). The abutment's piles stand in
+parallel with the backfill behind the same gap (``MoatWall(piles=ContactSpec(...))``): a
+second contact at each of the wall's points with the piles' own law, tagged ``piles``
+(labels ``'B2F1-A2/piles'``), so the pile group's force is an output of its own.
 
 Which floors strike a wall: every floor of the neighbouring building at or below the wall's
 top (within the model's ``level_tolerance``), typically only the base slab; with
@@ -74,11 +77,15 @@ class MoatWall:
     contact : ContactSpec, optional
         The contact law of this wall's contacts (an abutment's backfill:
         ``ContactSpec("abutment", ...)``); None (default): the model's.
+    piles : ContactSpec, optional
+        A law in parallel behind the same gap (an abutment's piles: a ``linear-spring`` of
+        the pile group's stiffness, or a ``shear-key`` without fracture for piles that
+        yield), as contacts of their own tagged ``piles``; None (default): none.
 
     Examples
     --------
     >>> MoatWall(height=1.0, gap=0.15)
-    MoatWall(height=1.0, gap=0.15, side='right', name='W', contact=None)
+    MoatWall(height=1.0, gap=0.15, side='right', name='W', contact=None, piles=None)
     """
 
     height: float
@@ -86,6 +93,7 @@ class MoatWall:
     side: str = "right"
     name: str = "W"
     contact: ContactSpec | None = None
+    piles: ContactSpec | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "height", positive("height", self.height))
@@ -93,9 +101,11 @@ class MoatWall:
         object.__setattr__(self, "side", choice("side", self.side, SIDES))
         if not isinstance(self.name, str) or not self.name:
             raise ValueError(f"name: the wall needs a non-empty label (got {self.name!r})")
-        if self.contact is not None and not isinstance(self.contact, ContactSpec):
-            raise ValueError(f"contact: expected a ContactSpec or None (got "
-                             f"{type(self.contact).__name__})")
+        for key in ("contact", "piles"):
+            value = getattr(self, key)
+            if value is not None and not isinstance(value, ContactSpec):
+                raise ValueError(f"{key}: expected a ContactSpec or None (got "
+                                 f"{type(value).__name__})")
 
 
 @dataclass(frozen=True)
@@ -173,7 +183,8 @@ def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
     """The contacts of every wall (in the order of ``walls``) with the end building of the
     row ``buildings`` beside it, numbered from ``start``; the building on the left of a
     contact is the left point. ``contact`` builds each contact's law, unless the wall has a
-    law of its own (:attr:`MoatWall.contact`); ``floor_to_column``
+    law of its own (:attr:`MoatWall.contact`), and after each contact the wall's piles' own
+    (:attr:`MoatWall.piles`, tagged ``piles``); ``floor_to_column``
     and ``tol`` [m] are the model's (:class:`pounding.model.PoundingModel`). The building
     beside a wall is planar (a ``ValueError`` naming the wall otherwise, as
     :func:`check_walls`)."""
@@ -184,10 +195,14 @@ def wall_contacts(walls: Sequence[MoatWall], buildings: Sequence[Building],
         wp = WallPoint(name=wall.name)
         spec = contact if wall.contact is None else wall.contact
         for z, point in wall_points(wall, building, b, floor_to_column, tol):
-            law = spec.build(point.effective_mass(building.masses), math.inf)
+            m = point.effective_mass(building.masses)
             left, right = (wp, point) if wall.side == "left" else (point, wp)
             pair = -1 if wall.side == "left" else last
-            out.append(Contact(start + len(out), pair, left, right, z, wall.gap, law))
+            out.append(Contact(start + len(out), pair, left, right, z, wall.gap,
+                               spec.build(m, math.inf)))
+            if wall.piles is not None:  # (in parallel behind the same gap)
+                out.append(Contact(start + len(out), pair, left, right, z, wall.gap,
+                                   wall.piles.build(m, math.inf), tag="piles"))
     return tuple(out)
 
 

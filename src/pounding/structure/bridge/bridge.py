@@ -15,7 +15,8 @@ cable hinge restrainers for bridges", J. Struct. Eng. 126(4):500–509; Caltrans
   between the end deck and its backwall, struck with the model's contact law, or with the
   backfill's own passive resistance (:attr:`Abutment.law`: the ``abutment`` contact law,
   Caltrans SDC's elastic–perfectly-plastic backbone or a hyperbolic one,
-  :mod:`pounding.contact.abutment`);
+  :mod:`pounding.contact.abutment`), and its piles in parallel behind the same gap
+  (:attr:`Abutment.piles`, :func:`abutment_piles`);
 * each **restrainer** is a link between the decks on either side of a joint
   (:class:`~pounding.devices.Link`: the cable restrainer, kind ``restrainer`` — tension only,
   slack, yielding — or a ``kelvin``, ``viscous`` or ``maxwell`` device; :class:`Restrainer`
@@ -48,7 +49,7 @@ from pounding.structure.seat_width import AashtoLrfdSeatClause, GivenSeatWidths,
 from pounding.structure.wall import MoatWall
 from pounding.validation import non_negative, positive
 
-__all__ = ["Abutment", "Bridge", "Restrainer"]
+__all__ = ["CALTRANS_PILE_STIFFNESS", "Abutment", "Bridge", "Restrainer", "abutment_piles"]
 
 
 @dataclass(frozen=True)
@@ -63,21 +64,54 @@ class Abutment:
         The backfill's own force–deformation law (``ContactSpec("abutment", ...)``: the
         Caltrans SDC or hyperbolic backbone, :mod:`pounding.contact.abutment`); None: the
         backwall is a rigid wall struck with the model's contact law.
+    piles : ContactSpec, optional
+        The abutment's piles, in parallel with the backfill behind the same gap
+        (:func:`abutment_piles`: a linear spring of the pile group's stiffness, or
+        elastic–perfectly-plastic); their force is the contact ``…/piles``. None: none.
     """
 
     gap: float
     law: ContactSpec | None = None
+    piles: ContactSpec | None = None
 
     def __post_init__(self) -> None:
         non_negative("gap", self.gap)
-        if self.law is not None and not isinstance(self.law, ContactSpec):
-            raise ValueError(f"law: expected a ContactSpec or None (got "
-                             f"{type(self.law).__name__})")
+        for key in ("law", "piles"):
+            value = getattr(self, key)
+            if value is not None and not isinstance(value, ContactSpec):
+                raise ValueError(f"{key}: expected a ContactSpec or None (got "
+                                 f"{type(value).__name__})")
 
     def wall(self, height: float, side: str, name: str) -> MoatWall:
         """The wall of this abutment, its top at ``height`` [m] (the deck's), struck with
-        its own law where it has one."""
-        return MoatWall(height=height, gap=self.gap, side=side, name=name, contact=self.law)
+        its own law where it has one, its piles behind the same gap."""
+        return MoatWall(height=height, gap=self.gap, side=side, name=name, contact=self.law,
+                        piles=self.piles)
+
+
+CALTRANS_PILE_STIFFNESS: float = 40.0 * 4448.2216152605 / 0.0254
+"""Stiffness of one abutment pile, 40 kip/in in SI [N/m]: 7.0051e6 (7.0 kN/mm). The value
+Caltrans gives for a standard abutment pile, as used in the OpenSees bridge models of the
+Nielson (2005) tradition (BridgePM's ``materials.tcl``: "7kN/mm ... per pile"); the Caltrans
+text itself was not read here."""
+
+
+def abutment_piles(count: int, stiffness: float = CALTRANS_PILE_STIFFNESS,
+                   yield_force: float | None = None) -> ContactSpec:
+    """The law of ``count`` piles under an abutment acting together: a linear spring of
+    ``count × stiffness`` [N/m] (default :data:`CALTRANS_PILE_STIFFNESS` a pile), or, with
+    a ``yield_force`` [N] a pile, elastic–perfectly-plastic at ``count × yield_force``
+    (the shear-key law without fracture: unloading at the stiffness, its set kept).
+
+    >>> abutment_piles(3).describe()
+    'linear-spring: k = 2.10152e+07 N/m'
+    """
+    if not (isinstance(count, int) and count >= 1):
+        raise ValueError(f"count: need a whole number of piles >= 1 (got {count!r})")
+    k = count * positive("stiffness", stiffness)
+    if yield_force is None:
+        return ContactSpec("linear-spring", k=k)
+    return ContactSpec("shear-key", k=k, capacity=count * positive("yield_force", yield_force))
 
 
 @dataclass(frozen=True)

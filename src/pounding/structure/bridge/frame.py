@@ -4,7 +4,9 @@ A longitudinal bridge model is a row of *frames* (deck segments between expansio
 that pound across the joints (:mod:`pounding.structure.bridge.bridge`). One frame is
 
 * the **deck**: a rigid mass, one DOF along the bridge's axis at the deck's elevation
-  (DOF 0, ``F1`` in outputs);
+  (DOF 0, ``F1`` in outputs) — or across it, in a transverse model
+  (:mod:`pounding.structure.bridge.transverse`: every element's numbers then of that
+  direction);
 * a **cap** per pier (DOF ``i``, ``F(i+1)``): the pier cap's mass and the share of the column
   that moves with it (given);
 * a **pier** per cap: an element between the ground and the cap, linear (``stiffness``,
