@@ -459,10 +459,17 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     n_storey_rows = len(model.element_rows)
     u_out, v_out, acc_out = out.u, out.v, out.acc
     link_ground = None
+    ground_motion = None
+    wall_motion: dict[str, np.ndarray] = {}
     if stations is not None:  # (the buildings' DOFs; the grounds' are not reported)
         u_out, v_out, acc_out = (np.ascontiguousarray(a[:, :n_model])
                                  for a in (out.u, out.v, out.acc))
         pk = np.ascontiguousarray(pk[:n_model])
+        # each building's ground and each wall's on its own, as the kernel stepped them
+        ground_motion = np.stack([out.u[:, n_model + np.array(stations)],
+                                  out.v[:, n_model + np.array(stations)]])
+        wall_motion = {side: np.stack([out.u[:, n_model + s], out.v[:, n_model + s]])
+                       for side, s in wall_stations}
         crossing = link_stations(model, stations)
         if crossing:  # (each link's grounds' offset: the DOFs after the stations)
             link_ground = np.zeros((2, out.u.shape[0], len(model.links)))
@@ -475,7 +482,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
                   penetration=out.pen, contact_force=out.force, energy=out.energy,
                   yielding_shear=out.element_force[:, :n_storey_rows],
                   link_force=out.element_force[:, n_storey_rows:], final_z=x[2 * n:].copy(),
-                  link_ground=link_ground,
+                  link_ground=link_ground, building_ground=ground_motion,
+                  wall_ground=wall_motion or None,
                   impact_array=out.impacts[: min(n_imp, cap)].copy(), stats=stats,
                   contact_peak=out.peak_force, contact_peak_time=out.peak_force_time,
                   contact_impacts=out.impact_count, located_peaks=pk,

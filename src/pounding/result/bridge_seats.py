@@ -9,6 +9,9 @@ support:
 * the seat at joint ``j`` (between decks ``j`` and ``j + 1``) opens by ``u_{j+1} − u_j``;
 * the right abutment's seat, under the last deck's right end, opens by ``−u_n``.
 
+On spatially varying ground each deck's ground motion is added (and the abutments' own
+where they stand on their own ground): the opening is between the decks' total motions.
+
 The peak opening is the largest of these at the output steps (0 if the seat only closed);
 the margin is the seat width less it (negative: the deck came off its seat,
 :func:`pounding.structure.seat_width.unseating_margin`).
@@ -55,11 +58,20 @@ def _decks(result: Any) -> list[int]:
 
 def seat_openings(result: Any) -> tuple[list[str], np.ndarray]:
     """The seats' names (``A1``, ``J1``, …, ``A2``) and their openings [m] (nt, n_seats)
-    at the output steps (module docstring)."""
+    at the output steps (module docstring); on spatially varying ground with the grounds'
+    relative displacement (``Result.building_ground``, ``Result.wall_ground``)."""
     u = result.displacement[:, _decks(result)]
     names = ["A1"] + [f"J{j + 1}" for j in range(u.shape[1] - 1)] + ["A2"]
-    openings = np.column_stack([u[:, 0], np.diff(u, axis=1), -u[:, -1]])
-    return names, openings
+    grounds = getattr(result, "building_ground", None)
+    if grounds is None:
+        return names, np.column_stack([u[:, 0], np.diff(u, axis=1), -u[:, -1]])
+    # on different grounds: the decks' motion plus their grounds', against the abutments'
+    # grounds (their frame's unless on their own)
+    x = u + grounds[0]
+    walls = getattr(result, "wall_ground", None) or {}
+    left = walls["left"][0] if "left" in walls else grounds[0][:, 0]
+    right = walls["right"][0] if "right" in walls else grounds[0][:, -1]
+    return names, np.column_stack([x[:, 0] - left, np.diff(x, axis=1), right - x[:, -1]])
 
 
 def _peaks(result: Any) -> tuple[list[str], np.ndarray, np.ndarray]:

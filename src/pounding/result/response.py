@@ -103,6 +103,11 @@ class Response(ContactsAndLinks):
         Each link's grounds' offset ``u_g,right − u_g,left`` [m] and its rate [m/s] when
         links join buildings on different grounds (spatially varying motion; zero columns
         for a link on one ground); None otherwise.
+    building_ground : ndarray (2, nt, n_b), optional
+        Each building's ground displacement [m] and velocity [m/s] from rest when the
+        buildings stand on different grounds (spatially varying motion); None otherwise.
+    wall_ground : dict, optional
+        The same (2, nt) of each end wall on a ground of its own, by side.
     contact_peak_time : ndarray (n_c,), optional
         Time of each contact's peak force [s].
     hinge_rotation, hinge_moment : ndarray (nt, n_h), optional
@@ -162,6 +167,11 @@ class Response(ContactsAndLinks):
     #: each link's grounds' offset u_g,right − u_g,left [m] and its rate [m/s]
     #: (2, nt, n_l) when links join buildings on different grounds; None otherwise
     link_ground: NDArray[np.float64] | None = field(default=None, repr=False)
+    #: each building's ground displacement [m] and velocity [m/s] from rest (2, nt, n_b)
+    #: when the buildings stand on different grounds; None otherwise
+    building_ground: NDArray[np.float64] | None = field(default=None, repr=False)
+    #: the end walls' on grounds of their own, by side ((2, nt) each); None otherwise
+    wall_ground: dict[str, NDArray[np.float64]] | None = field(default=None, repr=False)
     hinge_rotation: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_moment: NDArray[np.float64] | None = field(default=None, repr=False)
     hinge_peak_rotation: NDArray[np.float64] | None = field(default=None, repr=False)

@@ -13,9 +13,8 @@ right abutment). Per seat the row holds:
   ``u_{j+1} − u_j`` at joint ``j``, ``u_1`` at the left abutment, ``−u_n`` at the right one;
   0 if it only closed), read at the output steps through
   :func:`~pounding.result.bridge_seats.seat_openings`: the demand the seat width is checked
-  against (unseating). (Under a spatially varying motion ``seat_openings`` reads the decks'
-  displacements relative to their own grounds, without the grounds' difference, which the
-  closing below includes.)
+  against (unseating), with the grounds' relative displacement under a spatially varying
+  motion (as the closing below).
 * ``peak_closing_m_<seat>`` — the largest closing of the joint [m] (``u_j − u_{j+1}``; at the
   abutments the deck end toward the backwall), located between output steps on the cubic
   Hermite interpolant of the closing and its rate
@@ -55,9 +54,12 @@ _SEAT = re.compile(r"(A)(\d+)|(J)(\d+)")
 
 
 def is_bridge(model: Any) -> bool:
-    """Whether every building of the model is a bridge frame (it has a deck)."""
-    return bool(model.buildings) and all(getattr(b, "deck_dof", None) is not None
-                                         for b in model.buildings)
+    """Whether the model is a bridge along its axis
+    (:func:`pounding.result.bridge_peaks.is_bridge`: every building a bridge frame; across
+    the axis there are no seats, its keys are :attr:`Result.shear_keys`)."""
+    from pounding.result.bridge_peaks import is_bridge as along_the_axis
+
+    return along_the_axis(model)
 
 
 def _seat_of(contact: Any, n_frames: int) -> str:
@@ -93,6 +95,12 @@ def bridge_row(result: Any) -> dict[str, Any]:
     u = np.asarray(result.displacement)[:, decks]
     v = np.asarray(result.velocity)[:, decks]
     ground_u, ground_v = _grounds(result, len(decks), u.shape[0])
+    # the abutments' grounds: their own, or their end deck's
+    walls_ground = getattr(result, "wall_ground", None) or {}
+    wall_u = {"A1": walls_ground["left"][0] if "left" in walls_ground else ground_u[:, 0],
+              "A2": walls_ground["right"][0] if "right" in walls_ground else ground_u[:, -1]}
+    wall_v = {"A1": walls_ground["left"][1] if "left" in walls_ground else ground_v[:, 0],
+              "A2": walls_ground["right"][1] if "right" in walls_ground else ground_v[:, -1]}
     u, v = u + ground_u, v + ground_v
     walls = {w.name for w in model.walls}
     for s, name in enumerate(names):
@@ -102,9 +110,9 @@ def bridge_row(result: Any) -> dict[str, Any]:
             row[f"peak_impact_force_N_{name}"] = float(peaks[at].max()) if at else 0.0
         row[f"peak_opening_m_{name}"] = float(max(openings[:, s].max(), 0.0))
         if name == "A1":
-            closing, rate = -u[:, 0], -v[:, 0]
+            closing, rate = wall_u["A1"] - u[:, 0], wall_v["A1"] - v[:, 0]
         elif name == "A2":
-            closing, rate = u[:, -1], v[:, -1]
+            closing, rate = u[:, -1] - wall_u["A2"], v[:, -1] - wall_v["A2"]
         else:
             j = int(name[1:]) - 1
             closing, rate = u[:, j] - u[:, j + 1], v[:, j] - v[:, j + 1]
@@ -119,8 +127,12 @@ def bridge_row(result: Any) -> dict[str, Any]:
 
 def _grounds(result: Any, n: int, nt: int) -> tuple[np.ndarray, np.ndarray]:
     """Each deck's ground displacement and velocity at the output steps (n_t, n): zero
-    under one record; under a spatially varying motion each frame's own
+    under one record; under a spatially varying motion each frame's own, as the run
+    stepped it (``Result.building_ground``), else integrated from the records
     (:func:`pounding.studies.between_steps.ground_histories`)."""
+    stepped = getattr(result, "building_ground", None)
+    if stepped is not None:
+        return np.asarray(stepped[0]), np.asarray(stepped[1])
     from pounding.studies.between_steps import ground_histories
 
     grounds = ground_histories(result.motion, n, float(result.dt), nt)
