@@ -43,7 +43,7 @@ from numpy.typing import NDArray
 
 from pounding.studies.fragility.study import LimitStateSpec
 
-__all__ = ["NO_CONTACT_GAP", "BridgeLayout", "SeatWidths", "bridge_layout", "check_joint",
+__all__ = ["NO_CONTACT_GAP", "BridgeSeatsLayout", "SeatWidths", "bridge_layout", "check_joint",
            "joint_demand", "joint_pounding", "seat_widths"]
 
 FloatArray = NDArray[np.float64]
@@ -55,7 +55,7 @@ out)."""
 
 
 @dataclass(frozen=True)
-class BridgeLayout:
+class BridgeSeatsLayout:
     """What a study needs of a bridge model.
 
     Attributes
@@ -91,8 +91,8 @@ class BridgeLayout:
         return [f"bridge.joint.{j}.gap" for j in range(self.n_joints)]
 
 
-def bridge_layout(model: Any) -> BridgeLayout | None:
-    """The :class:`BridgeLayout` of a bridge model; None for any other model."""
+def bridge_layout(model: Any) -> BridgeSeatsLayout | None:
+    """The :class:`BridgeSeatsLayout` of a bridge model; None for any other model."""
     from pounding.spectra import fundamental_mode
     from pounding.studies.sweep.bridge_measures import is_bridge
 
@@ -102,12 +102,12 @@ def bridge_layout(model: Any) -> BridgeLayout | None:
     decks = tuple(labels[int(off) + int(b.deck_dof)]
                   for off, b in zip(model.system.offsets, model.buildings))
     modes = [fundamental_mode(b) for b in model.buildings]
-    return BridgeLayout(tuple(float(g) for g in model.gaps), tuple(w.name for w in model.walls),
+    return BridgeSeatsLayout(tuple(float(g) for g in model.gaps), tuple(w.name for w in model.walls),
                         decks, tuple(float(m[0]) for m in modes),
                         tuple(float(m[1]) for m in modes))
 
 
-def check_joint(spec: LimitStateSpec, layout: BridgeLayout | None, where: str, i: int,
+def check_joint(spec: LimitStateSpec, layout: BridgeSeatsLayout | None, where: str, i: int,
                 base: str) -> None:
     """Refuse, in one line, a limit state's ``joint`` (or a seat opening) the base model
     does not have."""
@@ -135,7 +135,7 @@ def check_joint(spec: LimitStateSpec, layout: BridgeLayout | None, where: str, i
                          f"opening is demand \"seat_opening\" (got '{joint}')")
 
 
-def _seats(spec: LimitStateSpec, layout: BridgeLayout) -> list[str]:
+def _seats(spec: LimitStateSpec, layout: BridgeSeatsLayout) -> list[str]:
     """The seats a limit state reads: those named by ``joint`` (every seat without one); an
     abutment is struck only where it has a backwall."""
     joint = spec.joint
@@ -157,7 +157,7 @@ _PREFIX = {"pounding": "n_impacts", "impacts": "n_impacts",
 state may read at a joint."""
 
 
-def joint_demand(spec: LimitStateSpec, layout: BridgeLayout, table: Any) -> FloatArray:
+def joint_demand(spec: LimitStateSpec, layout: BridgeSeatsLayout, table: Any) -> FloatArray:
     """A limit state's demand in every row of ``table`` (the study's runs) [SI]: the sum of
     the impacts, or the largest force or opening, over the seats it names; NaN where the
     run failed. For ``"pounding"``: 1.0 where it pounded there, else 0.0."""
@@ -170,7 +170,7 @@ def joint_demand(spec: LimitStateSpec, layout: BridgeLayout, table: Any) -> Floa
     return np.where(ok, out, np.nan)
 
 
-def joint_pounding(layout: BridgeLayout, table: Any) -> FloatArray:
+def joint_pounding(layout: BridgeSeatsLayout, table: Any) -> FloatArray:
     """Whether each run pounded at any expansion joint (1.0, 0.0; NaN: failed)."""
     return joint_demand(LimitStateSpec(demand="pounding", joint="joints"), layout, table)
 

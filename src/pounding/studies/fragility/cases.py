@@ -87,7 +87,7 @@ class StudyCases:
     rows: list[tuple[int, int, int]] = field(repr=False, default_factory=list)
     record_note: str = ""
     bridge: Any = None
-    """A bridge's :class:`~pounding.studies.fragility.bridge.BridgeLayout` (None: buildings):
+    """A bridge's :class:`~pounding.studies.fragility.bridge.BridgeSeatsLayout` (None: buildings):
     its runs set every joint's gap, and after them come its runs without joint contact."""
     needed_rows: list[tuple[int, int]] = field(repr=False, default_factory=list)
     """A bridge's runs without joint contact, after the study's :attr:`rows` in the sweep:
