@@ -39,6 +39,7 @@ from pounding.integrate.layout import (
     E_INPUT,
     E_KINETIC,
     E_STRAIN,
+    EL_FOLDED,
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
     EV_GRAZE,
@@ -458,6 +459,8 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     recov_dev = 0.0
     for q in range(s_lo.shape[0]):
         vs_out[o, q] = sstate[q, V_C]
+        if s_par[q, EL_FOLDED] != 0.0:
+            continue  # (a linear link in K: its spring's energy is in es)
         zi = s_zi[q]
         e_q = recoverable_call(s_code[q], s_par, q, sstate[q, D_C],
                                x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])

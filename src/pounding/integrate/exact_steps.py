@@ -22,18 +22,23 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from pounding.devices.laws import device_trial
+from pounding.hysteresis.base import V_C
 from pounding.integrate.events import touch_possible
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
     E_CONTACT_WORK,
     E_DAMPING,
+    E_DEVICE,
     E_HYSTERETIC,
     E_INPUT,
     E_KINETIC,
     E_STRAIN,
+    EL_FOLDED,
     PK_A,
     ROW_BLOCK,
     W_E_DAMP,
+    W_E_DEVICE,
     W_E_INPUT,
     W_E_STOREY,
     W_PEAK_MARGIN,
@@ -43,7 +48,7 @@ from pounding.integrate.peaks import (
     track_exact_step,
     track_uncoupled_step,
 )
-from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row, ground_rest
+from pounding.integrate.rhs import INLINE, NRT_FREE, band_mv, gap_row, ground_rest
 
 
 @njit(**NRT_FREE)
@@ -107,8 +112,38 @@ def ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1):
     return e
 
 
+@njit(**INLINE)
+def block_link_work(p, nb, n, ng, x, acc, ag, k):
+    """The energy the links' dashpots folded into C dissipate over the exact step from grid
+    point k in the block of floors ``p … p + nb − 1``, less its terms in the ground alone
+    (:func:`ground_quadratic` of ``dev_aa``): ``zᵀ (Q_xx z) + Σ_g (2 Q_x,a0,g · z) a0_g +
+    (2 Q_x,a1,g · z) a1_g`` from the block's sweep ``acc``
+    (:class:`pounding.integrate.propagator.FreeStep`)."""
+    nb2 = 2 * nb
+    q = nb2 + 2 * ng  # where the dissipation form's numbers start
+    e = 0.0
+    for j in range(nb):
+        e += x[p + j] * acc[q + j] + x[n + p + j] * acc[q + nb + j]
+    for g in range(ng):
+        e += acc[q + nb2 + 2 * g] * ag[k, g] + acc[q + nb2 + 2 * g + 1] * ag[k + 1, g]
+    return e
+
+
+@njit(**INLINE)
+def ground_quadratic(qa, ag, k):
+    """``Σ_gq qa[0,g,q] a0_g a0_q + qa[1,g,q] a0_g a1_q + qa[2,g,q] a1_g a1_q`` of the ground
+    components at grid points k and k + 1."""
+    e = 0.0
+    ng = qa.shape[1]
+    for g in range(ng):
+        for q in range(ng):
+            e += (qa[0, g, q] * ag[k, g] * ag[k, q] + qa[1, g, q] * ag[k, g] * ag[k + 1, q]
+                  + qa[2, g, q] * ag[k + 1, g] * ag[k + 1, q])
+    return e
+
+
 @njit(**NRT_FREE)
-def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
+def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     """Exact grid steps from grid point ``k`` while every gap stays open, writing the
     outputs and peaks of each; returns the grid point whose step could close a gap (that
     step not taken: the caller re-takes it with RK) or ``k1``, or ``−(k + 1)`` if the step
@@ -128,7 +163,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     """
     dt = run.dt
     ag = run.ag
-    blk, fops, g0, g1, faa = fs
+    blk, fops, g0, g1, faa, frows, dev_aa = fs
     bw = fl.bw
     k_band = fl.k_band
     c_band = fl.c_band
@@ -153,6 +188,16 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     e_in = ws_f[W_E_INPUT]
     e_d = ws_f[W_E_DAMP]
     e_h = ws_f[W_E_STOREY]
+    e_dev = ws_f[W_E_DEVICE]
+    s_lo, s_hi, s_code, s_par = el.lo, el.hi, el.code, el.params
+    sstate = st.storeys
+    vs_out = out.element_force
+    ns = s_lo.shape[0]
+    # blocks whose columns hold the dissipation form of links' dashpots folded into C
+    links_dissipate = False
+    for b in range(nblk):
+        if frows[b] > 2 * (blk[b + 1] - blk[b]) + 2:
+            links_dissipate = True
     e_prev = e_out[k, E_KINETIC] + e_out[k, E_STRAIN]
     wsum = 0.0  # contact work does not change while every gap is open
     for c in range(nc):
@@ -167,6 +212,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
         # columns of the block operator (each row accumulates in a fixed order)
         lin_i0 = 0.0
         lin_i1 = 0.0
+        e_links = 0.0
         if nblk == n:
             # every floor a block of its own (a row of SDOF oscillators): no block loop
             for i in range(n):
@@ -183,12 +229,12 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                     lin_i1 += w1
                     continue
                 nb2 = 2 * nb
-                rows = nb2 + 2
+                rows = frows[b]
                 for ir in range(nb):
                     acc[ir] = g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1
                     acc[nb + ir] = g0[n + p + ir, 0] * a0 + g1[n + p + ir, 0] * a1
-                acc[nb2] = 0.0
-                acc[nb2 + 1] = 0.0
+                for ir in range(nb2, rows):
+                    acc[ir] = 0.0
                 # columns of floor j's displacement and velocity together; the loop over rows
                 # vectorises without reassociation
                 for j in range(nb):
@@ -201,6 +247,8 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                     x1[n + p + ir] = acc[nb + ir]
                 lin_i0 += acc[nb2]
                 lin_i1 += acc[nb2 + 1]
+                if rows > nb2 + 2:
+                    e_links += block_link_work(p, nb, n, ng, x, acc, ag, k)
         e_rest = 0.0
         if ng > 1:
             e_rest = ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1)
@@ -223,6 +271,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
                     ws_f[W_E_INPUT] = e_in
                     ws_f[W_E_DAMP] = e_d
+                    ws_f[W_E_DEVICE] = e_dev
                     if bw != 0 and k - 1 >= k_entry:
                         # the last exact step's acceleration peaks, whose test needed the
                         # sample after it
@@ -235,6 +284,8 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                   + (faa[0, 0, 0] * a0 * a0 + faa[1, 0, 0] * a0 * a1 + faa[2, 0, 0] * a1 * a1))
         e_step += e_rest
         e_in += e_step
+        if links_dissipate:
+            e_links += ground_quadratic(dev_aa, ag, k)
         # outputs at grid point k + 1: no contact force, no yielding storey, so the absolute
         # acceleration is ü + r a_g = −M⁻¹(K u + C u̇); and the peaks over the step: a
         # floor's step is examined only where its velocity or drift rate changes sign, or
@@ -312,16 +363,34 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                                          acc_out, pk)
             for i in range(2 * n):
                 x[i] = x1[i]
+        if ns > 0:
+            # the links' forces: those folded into K and C their law's ``k d + c ḋ`` at the
+            # step's end (as the adaptive steps commit it), any other row its committed
+            # force (a slack restrainer's zero); written out here, where a call cost the
+            # SDOF pair's linked exact steps more than the rest of them
+            for q in range(ns):
+                if s_par[q, EL_FOLDED] != 0.0:
+                    lo = s_lo[q]
+                    hi = s_hi[q]
+                    vs_out[o, q] = device_trial(s_code[q], s_par[q, 0], s_par[q, 1],
+                                                s_par[q, 2], s_par[q, 3], x1[hi] - x1[lo],
+                                                x1[n + hi] - x1[n + lo], 0.0)[0]
+                else:
+                    vs_out[o, q] = sstate[q, V_C]
         # nothing but the viscous dampers takes energy out (every gap open, linear
         # storeys): the step's viscous work is the input work less the change of kinetic
-        # and strain energy, exactly
+        # and strain energy, exactly — the links' dashpots' share of it their own
         e_d += e_step - ((ek + es) - e_prev)
+        if links_dissipate:
+            e_d -= e_links
+            e_dev += e_links
         e_prev = ek + es
         if not abs(e_d) < np.inf:
             # the state (every entry of it is in ek + es) or the input stopped being a
             # finite number: stop here (the caller reports it)
             ws_f[W_E_INPUT] = e_in
             ws_f[W_E_DAMP] = e_d
+            ws_f[W_E_DEVICE] = e_dev
             return -(k + 1)
         for c in range(nc):
             gd[c] = gd1[c]
@@ -336,7 +405,10 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
         e_out[o, E_CONTACT_WORK] = wsum
         e_out[o, E_CONTACT_STORED] = 0.0
         e_out[o, E_HYSTERETIC] = e_h
+        if ns > 0:
+            e_out[o, E_DEVICE] = e_dev  # (a slack restrainer's cables hold nothing)
         k += 1
     ws_f[W_E_INPUT] = e_in
     ws_f[W_E_DAMP] = e_d
+    ws_f[W_E_DEVICE] = e_dev
     return k

@@ -104,8 +104,8 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         below each floor, −1 the ground), its contacts (DOFs and signed weights of every
         contact row (n_c, W: any width), gaps [m], law codes and constants) and its element
         rows (yielding storeys and links: DOF below, −1 the ground, and above, law code and
-        constants, index of the row's ``z`` among the extra states, −1 none; empty for
-        linear buildings without links, and only then may ``exact`` be true).
+        constants, index of the row's ``z`` among the extra states, −1 none; ``exact`` may
+        be true only if every row is a linear link folded into K and C).
     fs : :class:`pounding.integrate.propagator.FreeStep`
         The exact step over dt (blocks, block operators, Γ0 and Γ1 (2N, G), input-energy
         coefficients of the products of the ground components (3, G, G); unused unless
@@ -160,7 +160,7 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         if ws_i[I_MODE] == 0:
             # exact steps while every gap stays open; stops at the step in which one could
             # close (x, gd and gr are then those of grid point k)
-            k = free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc)
+            k = free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc)
             if k < 0:
                 ws_i[I_FAILED] = FAIL_NONFINITE
                 ws_i[I_FAIL_STEP] = -k - 1

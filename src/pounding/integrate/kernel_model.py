@@ -12,6 +12,7 @@ import numpy as np
 
 from pounding.contact.dispatch import PARAMS_SIZE as P_CONTACT_LAW
 from pounding.integrate.layout import (
+    EL_FOLDED,
     EL_LEVER,
     EL_ROCK,
     ELEMENT_PARAMS,
@@ -213,8 +214,10 @@ class KernelModel(NamedTuple):
 
     n: int  #: floors (degrees of freedom)
     nz: int  #: internal variables of the yielding storeys and links (Bouc–Wen, Maxwell z)
-    K: np.ndarray  #: stiffness of the linear storeys [N/m], (N, N)
-    C: np.ndarray  #: damping [N·s/m], (N, N)
+    #: stiffness of the linear storeys and of the springs of the links folded into it
+    #: (:func:`fold_linear_links`) [N/m], (N, N)
+    K: np.ndarray
+    C: np.ndarray  #: damping, the folded links' dashpots included [N·s/m], (N, N)
     arrays: KernelArrays  #: what the compiled kernel reads
     #: exact grid steps already built, by step [s] (shared by the models of the same
     #: buildings, :data:`STRUCTURES`)
@@ -222,6 +225,17 @@ class KernelModel(NamedTuple):
     #: output steps [s] whose building and link periods passed their check
     #: (:mod:`pounding.integrate.periods`; shared like ``free_steps``)
     periods_checked: set[float]
+    #: the dashpots of the links folded into C alone [N·s/m], (N, N) — what the exact step
+    #: counts as the links' dissipated energy (:func:`pounding.integrate.propagator.
+    #: compute_free_step`); None without folded links
+    C_links: np.ndarray | None = None
+
+    @property
+    def exact_allowed(self) -> bool:
+        """True if the model's element rows let contact-free steps be exact: none, or only
+        links folded into K and C (:func:`fold_linear_links`)."""
+        par = self.elements.params
+        return bool(np.all(par[:, EL_FOLDED] != 0.0))
 
     @property
     def floors(self) -> Floors:
@@ -262,6 +276,7 @@ signature."""
 
 NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), np.zeros((2, 4)),
                                               np.zeros((2, 1)), np.zeros((2, 1)),
+                                              np.zeros((3, 1, 1)), np.array([4], dtype=np.int64),
                                               np.zeros((3, 1, 1))))
 """The exact-step arguments of an RK-stepped run, which the kernel never reads: read-only
 like a real :class:`FreeStep`'s arrays, so that numba compiles the kernel for one signature
@@ -338,9 +353,16 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     m_diag = np.diag(M).copy()
     if np.any(M != np.diag(m_diag)):
         raise ValueError("model: the mass matrix must be diagonal (lumped floor masses)")
-    bw, _ = banding(K, np.asarray(C))
     s_lo, s_hi, s_code, s_par, s_zi = model.storey_arrays()
-    k_band, c_band = kernel_bands(K, np.asarray(C), bw)
+    folded = (np.zeros(s_lo.size, dtype=bool) if model.yielding_frames
+              else foldable_rows(s_code, s_par))
+    C = np.asarray(C)
+    c_links = None
+    if folded.any():
+        K, C, c_links = fold_linear_links(K, C, s_lo[folded], s_hi[folded], s_code[folded],
+                                          s_par[folded])
+    bw, _ = banding(K, C)
+    k_band, c_band = kernel_bands(K, C, bw)
     floors = Floors(bw, k_band, c_band, m_diag, 1.0 / m_diag,
                     np.ascontiguousarray(M @ r), np.ascontiguousarray(r), floor_below(model),
                     NO_FRAME_ROWS)
@@ -352,13 +374,52 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
     par[:, : s_par.shape[1]] = s_par
     par[:, EL_ROCK] = rock
     par[:, EL_LEVER] = lever
+    par[:, EL_FOLDED] = folded
     elements = ElementRows(s_lo, s_hi, s_code, par, s_zi)
     no_contacts = ContactRows(np.zeros((0, ROW_BLOCK), dtype=np.int64),
                               np.zeros((0, ROW_BLOCK)), np.zeros(0),
                               np.zeros(0, dtype=np.int64), np.zeros((0, P_CONTACT_LAW)))
-    return KernelModel(n=r.shape[0], nz=int(np.sum(s_zi >= 0)), K=K, C=np.asarray(C),
+    return KernelModel(n=r.shape[0], nz=int(np.sum(s_zi >= 0)), K=K, C=C,
                        arrays=KernelArrays(floors, no_contacts, elements, NO_HINGES),
-                       free_steps={}, periods_checked=set())
+                       free_steps={}, periods_checked=set(), C_links=c_links)
+
+
+def foldable_rows(code: np.ndarray, params: np.ndarray) -> np.ndarray:
+    """True for every element row that is a link with a linear law and no internal variable
+    (:func:`pounding.devices.laws.linear_link_constants`: Kelvin, a dashpot with α = 1)."""
+    from pounding.devices.laws import linear_link_constants
+
+    return np.array([linear_link_constants(int(c), float(p[0]), float(p[1])) is not None
+                     for c, p in zip(code, params)], dtype=bool)
+
+
+def fold_linear_links(K: np.ndarray, C: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+                      code: np.ndarray, params: np.ndarray
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``K`` and ``C`` with the springs and dashpots of linear links between DOFs ``lo`` and
+    ``hi`` added (each link ``F = k d + c ḋ``, ``d = u[hi] − u[lo]``: ``k`` and ``c`` at
+    ``[lo, lo]`` and ``[hi, hi]``, ``−k`` and ``−c`` at ``[lo, hi]`` and ``[hi, lo]``, as a
+    storey between two floors), and the links' dashpots alone (N, N). New arrays; ``K`` and
+    ``C`` are not modified.
+
+    Folded, a linear link is part of the linear structure: the exact propagator steps it
+    between events (:mod:`pounding.integrate.exact_steps`), and the buildings it ties form
+    one block of it (:func:`pounding.integrate.propagator.independent_blocks`)."""
+    from pounding.devices.laws import linear_link_constants
+
+    K = np.array(K, dtype=float)
+    C = np.array(C, dtype=float)
+    c_links = np.zeros_like(C)
+    for a, b, cd, p in zip(lo, hi, code, params):
+        kc = linear_link_constants(int(cd), float(p[0]), float(p[1]))
+        assert kc is not None and a >= 0 and b >= 0
+        for mat, value in ((K, kc[0]), (C, kc[1]), (c_links, kc[1])):
+            if value != 0.0:
+                mat[a, a] += value
+                mat[b, b] += value
+                mat[a, b] -= value
+                mat[b, a] -= value
+    return K, C, c_links
 
 
 def influence_matrix(r: np.ndarray) -> np.ndarray:

@@ -117,6 +117,10 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...]) -> KernelModel:
             dof[c.index, width:] = cdof[c.index, 0]
     dof, w = padded_rows(dof, w)
     contacts = ContactRows(dof, w, ct.gap, ct.code, ct.params)
+    c_links = None
+    if base.C_links is not None:  # (the links folded into C: within one station)
+        c_links = np.zeros((n, n))
+        c_links[:N, :N] = base.C_links
     return KernelModel(n=n, nz=base.nz, K=K, C=C,
                        arrays=base.arrays._replace(floors=floors, contacts=contacts),
-                       free_steps={}, periods_checked=set())
+                       free_steps={}, periods_checked=set(), C_links=c_links)
