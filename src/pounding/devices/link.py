@@ -6,8 +6,8 @@ A :class:`Link` joins floor ``floors[0]`` of one building to floor ``floors[1]``
 :mod:`pounding.devices.laws`. A linear law without internal variable (``kelvin``, ``viscous``
 with α = 1) joins the structure's stiffness and damping, which the kernel steps exactly
 between impacts (:func:`pounding.integrate.kernel_model.fold_linear_links`); the kernel
-integrates any other as an element row beside the yielding storeys, stepped adaptively
-throughout.
+integrates any other as an element row beside the yielding storeys: a restrainer stepped
+exactly while it is slack, a fluid damper or a Maxwell link adaptively throughout.
 """
 
 from __future__ import annotations

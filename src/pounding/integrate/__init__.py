@@ -273,8 +273,9 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         adaptive ``"rk"`` (O(N·bandwidth) a step), or ``"auto"``: exact up to
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
         beyond. Linear links without internal variable (Kelvin, a dashpot with α = 1) are
-        part of the linear structure stepped exactly; a model with yielding storeys or
-        other links between buildings is always stepped by RK (``"exact"`` is refused).
+        part of the linear structure stepped exactly, and slack cable restrainers exert no
+        force there; a model with yielding storeys or other links between buildings is
+        always stepped by RK (``"exact"`` is refused).
     max_rk_steps : int, optional
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step plus 10⁵); a run that needs more stops with an :class:`IntegrationError`.

@@ -29,6 +29,7 @@ from pounding.integrate.events import (
     is_upward,
     locate,
 )
+from pounding.integrate.exact_steps import rows_allow_exact
 from pounding.integrate.frame_outputs import frame_outputs
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
@@ -417,8 +418,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
         if stop_at_grid:
             ws_i[I_STOP] = STOP_HINGE  # (the event at the grid point: resume there)
             break
-        if run.exact and not any_closed(committed):
-            break  # back to exact stepping once every contact is open
+        if run.exact and not any_closed(committed) and rows_allow_exact(x, n, el):
+            break  # back to exact stepping once every contact is open (and restrainer slack)
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
             break  # this call's share of RK steps is done: back to the caller
     for c in range(cgap.shape[0]):

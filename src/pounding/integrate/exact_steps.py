@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from pounding.devices.laws import device_trial
+from pounding.devices.laws import RESTRAINER, device_trial
 from pounding.hysteresis.base import V_C
 from pounding.integrate.events import touch_possible
 from pounding.integrate.layout import (
@@ -143,6 +143,48 @@ def ground_quadratic(qa, ag, k):
 
 
 @njit(**NRT_FREE)
+def rows_allow_exact(y, n, el):
+    """True if every element row lets the structure be linear at state y: a link folded
+    into K and C, or a cable restrainer that is slack (its elastic elongation ``e = d − s₀
+    − z ≤ 0``: no force; :func:`pounding.devices.laws.restrainer_kinks`). A restrainer's
+    slack taken up is then an event like a gap closing: the exact steps hand the step to
+    the adaptive integrator (:func:`free_run`), which returns to them once every contact is
+    open and every restrainer slack again."""
+    par = el.params
+    for s in range(el.lo.shape[0]):
+        if par[s, EL_FOLDED] != 0.0:
+            continue
+        if el.code[s] != RESTRAINER:
+            return False
+        lo = el.lo[s]
+        d = y[el.hi[s]] - (y[lo] if lo >= 0 else 0.0)
+        if d - par[s, 1] - y[2 * n + el.z_index[s]] > 0.0:
+            return False
+    return True
+
+
+@njit(**INLINE)
+def restrainer_taut_possible(s, x, x1, n, k, ag, fl, el, dt, graze_tol):
+    """Can restrainer row s take up its slack inside the exact step from grid point k
+    (state x) to k + 1 (x1)? :func:`pounding.integrate.events.touch_possible` of its
+    elastic elongation ``e = d − s₀ − z`` (z, its plastic elongation, is constant while
+    it is slack), its rate and acceleration at both ends — the test every gap takes."""
+    par = el.params
+    lo = el.lo[s]
+    hi = el.hi[s]
+    slack = par[s, 1] + x[2 * n + el.z_index[s]]
+    e0 = x[hi] - x[lo] - slack
+    e1 = x1[hi] - x1[lo] - slack
+    r0 = x[n + hi] - x[n + lo]
+    r1 = x1[n + hi] - x1[n + lo]
+    if not (e1 > 0.0 or max(e0, e1) + 0.25 * dt * (abs(r0) + abs(r1)) > -graze_tol):
+        return False
+    q0 = floor_rel_acc(hi, x, ag, k, n, fl) - floor_rel_acc(lo, x, ag, k, n, fl)
+    q1 = floor_rel_acc(hi, x1, ag, k + 1, n, fl) - floor_rel_acc(lo, x1, ag, k + 1, n, fl)
+    return touch_possible(e0, r0, q0, e1, r1, q1, dt, graze_tol)
+
+
+@njit(**NRT_FREE)
 def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     """Exact grid steps from grid point ``k`` while every gap stays open, writing the
     outputs and peaks of each; returns the grid point whose step could close a gap (that
@@ -255,6 +297,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
         # could any gap close at the step end, or come within graze_tol of closing inside
         # it? Then the step is not taken. (A cheap bound on the cubic through δ, δ̇ first;
         # the quintic through δ, δ̇, δ̈ only where that cannot rule a touch out.)
+        touch = False
         for c in range(nc):
             ds1, r1 = gap_row(c, x1, n, cdof, cw)
             d1 = ds1 - cgap[c]
@@ -269,16 +312,28 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                         q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, fl)
                         q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, fl)
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
-                    ws_f[W_E_INPUT] = e_in
-                    ws_f[W_E_DAMP] = e_d
-                    ws_f[W_E_DEVICE] = e_dev
-                    if bw != 0 and k - 1 >= k_entry:
-                        # the last exact step's acceleration peaks, whose test needed the
-                        # sample after it
-                        for i in range(n):
-                            acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out,
-                                             acc_out, fl, pk)
-                    return k
+                    touch = True
+                    break
+        # a slack restrainer whose slack could be taken up: the same (its force, zero
+        # while slack, is not in the exact step)
+        if not touch:
+            for q in range(ns):
+                if s_par[q, EL_FOLDED] == 0.0 and restrainer_taut_possible(q, x, x1, n, k, ag,
+                                                                            fl, el, dt,
+                                                                            graze_tol):
+                    touch = True
+                    break
+        if touch:
+            ws_f[W_E_INPUT] = e_in
+            ws_f[W_E_DAMP] = e_d
+            ws_f[W_E_DEVICE] = e_dev
+            if bw != 0 and k - 1 >= k_entry:
+                # the last exact step's acceleration peaks, whose test needed the sample
+                # after it
+                for i in range(n):
+                    acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out, acc_out, fl,
+                                     pk)
+            return k
         # input energy over the step: an exact quadratic form
         e_step = (a0 * lin_i0 + a1 * lin_i1
                   + (faa[0, 0, 0] * a0 * a0 + faa[1, 0, 0] * a0 * a1 + faa[2, 0, 0] * a1 * a1))

@@ -232,10 +232,13 @@ class KernelModel(NamedTuple):
 
     @property
     def exact_allowed(self) -> bool:
-        """True if the model's element rows let contact-free steps be exact: none, or only
-        links folded into K and C (:func:`fold_linear_links`)."""
-        par = self.elements.params
-        return bool(np.all(par[:, EL_FOLDED] != 0.0))
+        """True if the model's element rows let contact-free steps be exact: none, links
+        folded into K and C (:func:`fold_linear_links`) and cable restrainers, stepped
+        exactly while slack (:func:`pounding.integrate.exact_steps.rows_allow_exact`)."""
+        from pounding.devices.laws import RESTRAINER
+
+        el = self.elements
+        return bool(np.all((el.params[:, EL_FOLDED] != 0.0) | (el.code == RESTRAINER)))
 
     @property
     def floors(self) -> Floors:
