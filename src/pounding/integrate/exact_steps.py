@@ -48,7 +48,7 @@ from pounding.integrate.peaks import (
     track_exact_step,
     track_uncoupled_step,
 )
-from pounding.integrate.rhs import INLINE, NRT_FREE, band_mv, gap_row, ground_rest
+from pounding.integrate.rhs import INLINE, NRT_FREE, band_products, gap_row, ground_rest
 
 
 @njit(**NRT_FREE)
@@ -110,6 +110,44 @@ def ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1):
                 e += (faa[0, g, q] * ag[k, g] * ag[k, q] + faa[1, g, q] * ag[k, g] * ag[k + 1, q]
                       + faa[2, g, q] * ag[k + 1, g] * ag[k + 1, q])
     return e
+
+
+@njit(**INLINE)
+def two_floor_link_step(p, n, x, x1, fops, g0, g1, a0, a1):
+    """The exact step of a block of two floors tied by links whose dashpots dissipate (a
+    linked pair of one-storey buildings) under one ground component, written out: writes
+    ``x1`` of its floors; returns its two input-energy terms and the energy its links'
+    dashpots dissipate over the step, less the ground's own terms (those of
+    :func:`block_link_work`). The block sweep's twelve rows (:class:`pounding.integrate.
+    propagator.FreeStep`), each a sum of four products; a third of the generic sweep's
+    time for this block."""
+    u0 = x[p]
+    u1 = x[p + 1]
+    v0 = x[n + p]
+    v1 = x[n + p + 1]
+    for ir in range(2):
+        x1[p + ir] = (g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1 + fops[p, ir] * u0
+                      + fops[p + 1, ir] * u1 + fops[n + p, ir] * v0 + fops[n + p + 1, ir] * v1)
+        x1[n + p + ir] = (g0[n + p + ir, 0] * a0 + g1[n + p + ir, 0] * a1
+                          + fops[p, 2 + ir] * u0 + fops[p + 1, 2 + ir] * u1
+                          + fops[n + p, 2 + ir] * v0 + fops[n + p + 1, 2 + ir] * v1)
+    r = (fops[p, 4] * u0 + fops[p + 1, 4] * u1 + fops[n + p, 4] * v0
+         + fops[n + p + 1, 4] * v1)
+    s = (fops[p, 5] * u0 + fops[p + 1, 5] * u1 + fops[n + p, 5] * v0
+         + fops[n + p + 1, 5] * v1)
+    e = (u0 * (fops[p, 6] * u0 + fops[p + 1, 6] * u1 + fops[n + p, 6] * v0
+               + fops[n + p + 1, 6] * v1)
+         + u1 * (fops[p, 7] * u0 + fops[p + 1, 7] * u1 + fops[n + p, 7] * v0
+                 + fops[n + p + 1, 7] * v1)
+         + v0 * (fops[p, 8] * u0 + fops[p + 1, 8] * u1 + fops[n + p, 8] * v0
+                 + fops[n + p + 1, 8] * v1)
+         + v1 * (fops[p, 9] * u0 + fops[p + 1, 9] * u1 + fops[n + p, 9] * v0
+                 + fops[n + p + 1, 9] * v1))
+    e += (fops[p, 10] * u0 + fops[p + 1, 10] * u1 + fops[n + p, 10] * v0
+          + fops[n + p + 1, 10] * v1) * a0
+    e += (fops[p, 11] * u0 + fops[p + 1, 11] * u1 + fops[n + p, 11] * v0
+          + fops[n + p + 1, 11] * v1) * a1
+    return r, s, e
 
 
 @njit(**INLINE)
@@ -272,6 +310,13 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                     continue
                 nb2 = 2 * nb
                 rows = frows[b]
+                if nb == 2 and rows == 12 and ng == 1:
+                    # (a linked pair of one-storey buildings: written out)
+                    w0, w1, e_b = two_floor_link_step(p, n, x, x1, fops, g0, g1, a0, a1)
+                    lin_i0 += w0
+                    lin_i1 += w1
+                    e_links += e_b
+                    continue
                 for ir in range(nb):
                     acc[ir] = g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1
                     acc[nb + ir] = g0[n + p + ir, 0] * a0 + g1[n + p + ir, 0] * a1
@@ -380,7 +425,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                     track_uncoupled_step(t0, dt, i, u0, v0, acc_out[k, i], u, v, aa, ag, k,
                                          r, kk, cc, mi, pk)
         else:
-            band_mv(k_band, c_band, x1, n, bw, lin)
+            band_products(k_band, c_band, x1, n, bw, lin)
             for i in range(n):
                 u = x1[i]
                 v = x1[n + i]
