@@ -115,6 +115,27 @@ def test_linear_links_stepped_exactly_between_impacts_match_the_reference(link):
     assert res.energy_balance_error < 1e-8
 
 
+def test_large_linked_blocks_are_stepped_by_rk_under_auto():
+    """A block tied by folded links sweeps a second quadratic form in its exact step: beyond
+    EXACT_LINKED_BLOCK_MAX floors in one block, "auto" chooses the adaptive steps (measured
+    the faster there); "exact" may still be asked for."""
+    from pounding.integrate.kernel_model import (
+        EXACT_LINKED_BLOCK_MAX,
+        choose_free_stepping,
+        kernel_model,
+    )
+
+    half = EXACT_LINKED_BLOCK_MAX // 2
+    for n, auto in ((half, True), (half + 1, False)):
+        pair = [ShearBuilding.uniform(n, 6e5, 8e8), ShearBuilding.uniform(n, 4e5, 1.2e9)]
+        links = [Link((f"B1F{i}", f"B2F{i}"), "viscous", c=1e6) for i in (1, n)]
+        km = kernel_model(PoundingModel(pair, [0.04], KV, devices=links))
+        assert km.linked_block == 2 * n
+        assert choose_free_stepping("auto", km.n, km.floors.bw, km.linked_block) is auto
+        assert choose_free_stepping("exact", km.n, km.floors.bw, km.linked_block)
+    assert kernel_model(PoundingModel(list(_pair()), [0.04], KV)).linked_block == 0
+
+
 def test_the_link_force_history_is_its_law_on_the_motion():
     link = Link(("B1F1", "B2F1"), "kelvin", c=3e5, k=4e6)
     model = PoundingModel(list(_pair()), [10.0], KV, devices=[link])

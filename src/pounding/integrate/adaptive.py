@@ -29,7 +29,7 @@ from pounding.integrate.events import (
     is_upward,
     locate,
 )
-from pounding.integrate.exact_steps import rows_allow_exact
+from pounding.integrate.exact_links import rows_allow_exact
 from pounding.integrate.frame_outputs import frame_outputs
 from pounding.integrate.layout import (
     E_CONTACT_STORED,

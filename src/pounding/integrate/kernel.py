@@ -41,7 +41,8 @@ from __future__ import annotations
 from numba import njit
 
 from pounding.integrate.adaptive import LF_GRAZED, adaptive_run, any_closed
-from pounding.integrate.exact_steps import free_run, rows_allow_exact
+from pounding.integrate.exact_links import rows_allow_exact
+from pounding.integrate.exact_steps import free_run
 from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     EVENT_TOL,

@@ -123,4 +123,5 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...]) -> KernelModel:
         c_links[:N, :N] = base.C_links
     return KernelModel(n=n, nz=base.nz, K=K, C=C,
                        arrays=base.arrays._replace(floors=floors, contacts=contacts),
-                       free_steps={}, periods_checked=set(), C_links=c_links)
+                       free_steps={}, periods_checked=set(), C_links=c_links,
+                       linked_block=base.linked_block)
