@@ -57,8 +57,9 @@ sdof    The SDOF pair, every link law, with and without contact: whole runs time
 shear   The same for the two 10-storey buildings, comparing the two tools with each other
         (``--shear-reference`` adds the SciPy reference, minutes a case).
 cost    pounding's own price of the links: the same models without links (stepped exactly
-        between contacts) against the runs with links (stepped adaptively throughout), and
-        OpenSees' with and without links beside it.
+        between contacts) against the runs with links (linear dashpots folded into K and C
+        and stepped exactly between contacts too; fluid dampers and Maxwell links stepped
+        adaptively throughout), and OpenSees' with and without links beside it.
 
 "Whole run" is, for both tools, everything from plain numbers to the compared measures:
 pounding builds its ShearBuildings, Links and PoundingModel afresh, runs ``simulate`` and
@@ -563,7 +564,8 @@ def section_shear(ctx: Ctx) -> None:
 
 def section_cost(ctx: Ctx) -> None:
     header("The price of the links: the same models without links (pounding: exact steps "
-           "between contacts) and with them (adaptive steps throughout)")
+           "between contacts) and with them (linear dashpots: exact steps between contacts; "
+           "fluid dampers and Maxwell links: adaptive steps throughout)")
     rows = []
     for key in ctx.bases:
         for contact in (True, False):
@@ -596,11 +598,13 @@ def section_cost(ctx: Ctx) -> None:
                  "OS/ours", "impacts ours/OS", "pounding's steps"])
     print("x no links = the run with links / the same model without, bests; OS/ours = "
           "OpenSees / pounding, bests. Without links pounding takes exact steps (a matrix "
-          "exponential propagator) between contacts and RK steps only through them; with "
-          "links it takes RK steps everywhere (at least one Dormand–Prince step per output "
-          "step; each link a row of the element loop; every link's rate reversal located as "
-          "an event, where a step ends; a fluid damper's force is not smooth at ḋ = 0, hence "
-          "its rejected steps). 'no links, RK': the model without links, stepped by RK "
+          "exponential propagator) between contacts and RK steps only through them; so it does "
+          "with linear dashpot links, folded into K and C (their linked buildings one block of "
+          "the propagator, the links' dissipated energy one more exact quadratic form a step); "
+          "with fluid dampers and Maxwell links it takes RK steps everywhere (at least one "
+          "Dormand–Prince step per output step; each link a row of the element loop; a fluid "
+          "damper's rate reversal located as an event, where a step ends; its force is not "
+          "smooth at ḋ = 0, hence its rejected steps). 'no links, RK': the model without links, stepped by RK "
           "throughout (free_stepping='rk'): the stepper's share of the price.")
 
 

@@ -76,11 +76,64 @@ def test_linked_pair_without_contact_matches_linear_state_space(link):
     _, y, _ = signal.lsim(_state_space(link, b1, b2), a_g, t, interp=True)
     scale = np.abs(y).max()
     assert res.n_impacts == 0
+    # a linear link without internal state is folded into K and C and stepped exactly
+    assert res.stats.rk_steps == (0 if link.kind != "maxwell" else res.stats.rk_steps)
     assert np.abs(res.displacement - y).max() / scale < 1e-6
     # the link's work closes the energy balance, and the per-link estimate sums to it
     assert res.energy_balance_error < 1e-7
     assert res.energy[-1, 7] > 0.1 * res.energy[-1, 0]
     assert res.link_dissipated.sum() == pytest.approx(res.energy[-1, 7], rel=1e-3)
+
+
+@pytest.mark.parametrize("link", [
+    Link(("B1F1", "B2F1"), "kelvin", c=2e5, k=1e7),
+    Link(("B1F1", "B2F1"), "viscous", c=2e5),
+], ids=["kelvin", "viscous"])
+def test_linear_links_stepped_exactly_between_impacts_match_the_reference(link):
+    """A linear link folded into K and C: exact steps between the impacts, adaptive ones
+    through them; every output against the SciPy reference, the links' energy (column 7)
+    kept apart from the buildings' viscous work (column 3), and against the same run stepped
+    adaptively throughout."""
+    model = PoundingModel(list(_pair()), [0.01], KV, devices=[link])
+    gm = el_centro().trimmed(4.0)
+    res = simulate(model, gm)
+    rk = simulate(model, gm, free_stepping="rk")
+    ref = simulate_reference(model, gm, rtol=1e-11)
+    assert res.n_impacts == rk.n_impacts == ref.n_impacts > 0
+    assert res.stats.rk_steps < 0.2 * rk.stats.rk_steps
+
+    def rel(a, b):
+        return np.abs(a - b).max() / np.abs(b).max()
+
+    for other, tol in ((ref, 1e-6), (rk, 1e-6)):
+        assert rel(res.displacement, other.displacement) < tol
+        assert rel(res.link_force, other.link_force) < tol
+        assert rel(res.energy[:, [0, 1, 2, 3, 7]], other.energy[:, [0, 1, 2, 3, 7]]) < tol
+        assert res.link_dissipated == pytest.approx(other.link_dissipated, rel=tol)
+        assert res.peak_contact_force == pytest.approx(other.peak_contact_force, rel=1e-5)
+    assert res.energy[-1, 7] > 0.05 * res.energy[-1, 3] > 0.0
+    assert res.energy_balance_error < 1e-8
+
+
+def test_large_linked_blocks_are_stepped_by_rk_under_auto():
+    """A block tied by folded links sweeps a second quadratic form in its exact step: beyond
+    EXACT_LINKED_BLOCK_MAX floors in one block, "auto" chooses the adaptive steps (measured
+    the faster there); "exact" may still be asked for."""
+    from pounding.integrate.kernel_model import (
+        EXACT_LINKED_BLOCK_MAX,
+        choose_free_stepping,
+        kernel_model,
+    )
+
+    half = EXACT_LINKED_BLOCK_MAX // 2
+    for n, auto in ((half, True), (half + 1, False)):
+        pair = [ShearBuilding.uniform(n, 6e5, 8e8), ShearBuilding.uniform(n, 4e5, 1.2e9)]
+        links = [Link((f"B1F{i}", f"B2F{i}"), "viscous", c=1e6) for i in (1, n)]
+        km = kernel_model(PoundingModel(pair, [0.04], KV, devices=links))
+        assert km.linked_block == 2 * n
+        assert choose_free_stepping("auto", km.n, km.floors.bw, km.linked_block) is auto
+        assert choose_free_stepping("exact", km.n, km.floors.bw, km.linked_block)
+    assert kernel_model(PoundingModel(list(_pair()), [0.04], KV)).linked_block == 0
 
 
 def test_the_link_force_history_is_its_law_on_the_motion():

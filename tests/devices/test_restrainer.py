@@ -99,6 +99,26 @@ def test_an_elastic_slack_restrainer_matches_the_exact_piecewise_solution():
     assert res.link_force.min() == 0.0
     assert np.all(res.link_force[(t < t1 - 1e-6) | (t > t2 + 1e-6), 0] == 0.0)
     assert res.energy_balance_error < 1e-8
+    # slack, it is stepped exactly (as an open gap is): adaptive steps only while taut
+    # (0.17 s of the 1.5 s), against every grid step when stepped adaptively throughout
+    rk = simulate(model, quiet, dt=1e-3, rtol=1e-10, initial_velocity=v_init,
+                  free_stepping="rk")
+    assert res.stats.rk_steps < 0.4 * rk.stats.rk_steps
+    assert np.abs(rk.displacement - exact[:, :2]).max() < 1e-8
+
+
+def test_a_restrainer_that_stays_slack_changes_nothing_and_takes_no_adaptive_step():
+    """Its slack never taken up (gaps wide, no pounding either), the pair is stepped exactly
+    throughout, as it is without the restrainer: the same motion, no force, no energy."""
+    link = Link(("B1F1", "B2F1"), "restrainer", k=3e7, slack=0.5, yield_force=4e5)
+    bare = PoundingModel(_masses(1.0, 0.05), [1.0], KV)
+    tied = PoundingModel(_masses(1.0, 0.05), [1.0], KV, devices=[link])
+    gm = el_centro().trimmed(6.0)
+    a, b = simulate(bare, gm), simulate(tied, gm)
+    assert a.stats.rk_steps == b.stats.rk_steps == 0
+    np.testing.assert_array_equal(b.displacement, a.displacement)
+    np.testing.assert_array_equal(b.energy[:, :7], a.energy[:, :7])
+    assert np.all(b.link_force == 0.0) and np.all(b.energy[:, 7] == 0.0)
 
 
 def _yielding_run(hardening: float):

@@ -127,6 +127,51 @@ def test_free_step_with_two_ground_components():
     assert abs(one[1] - two[1]) < 1e-13 * abs(one[1])
 
 
+def test_free_step_splits_off_the_work_of_link_dashpots():
+    """Links folded into K and C (:func:`pounding.integrate.kernel_model.fold_linear_links`)
+    tie the two buildings into one block, and the block's extra columns give the energy the
+    links' dashpots dissipate over the step: the 24-point Gauss–Legendre quadrature of
+    ``u̇ᵀ C_links u̇`` on the exact solution, under one and two ground components."""
+    from pounding.devices.laws import KELVIN, VISCOUS
+    from pounding.integrate.kernel_model import fold_linear_links
+
+    s = _pair().system
+    M, n = s.M, s.M.shape[0]
+    # a Kelvin link between the top floors, a dashpot between floors 1
+    K, C, c_links = fold_linear_links(s.K, s.C, np.array([2, 0]), np.array([4, 3]),
+                                      np.array([KELVIN, VISCOUS]),
+                                      np.array([[3e7, 2e5], [4e5, 1.0]]))
+    assert c_links[2, 4] == -2e5 and c_links[0, 3] == -4e5 and K[2, 4] == -3e7
+    assert np.array_equal(C - c_links, s.C)
+    h = 2e-3
+    rng = np.random.default_rng(7)
+    x0 = rng.normal(size=2 * n) * np.r_[np.full(n, 0.05), np.full(n, 0.4)]
+    for R, a0, a1 in ((s.r[:, None], np.array([1.7]), np.array([-0.9])),
+                      (np.column_stack([s.r, np.linspace(0.2, 1.0, n)]),
+                       np.array([1.7, -0.6]), np.array([-0.9, 2.2]))):
+        ng = a0.size
+        fs = compute_free_step(M, C, K, R, h, c_links)
+        assert fs.blk.tolist() == [0, n] and fs.rows.tolist() == [4 * n + 4 * ng]
+        # the kernel's sweep over the block's columns, then its dissipation form
+        acc = x0 @ fs.ops[:, : fs.rows[0]]
+        q = 2 * n + 2 * ng
+        e_links = (x0 @ acc[q : q + 2 * n] + acc[q + 2 * n :: 2] @ a0
+                   + acc[q + 2 * n + 1 :: 2] @ a1
+                   + a0 @ fs.dev_aa[0] @ a0 + a0 @ fs.dev_aa[1] @ a1 + a1 @ fs.dev_aa[2] @ a1)
+        xs, ws = np.polynomial.legendre.leggauss(24)
+        q_links = 0.0
+        for xi, wi in zip(xs, ws):
+            t = 0.5 * h * (xi + 1.0)
+            pr = compute_propagator(M, C, K, R, t)
+            at = a0 + (a1 - a0) * t / h
+            v = (pr.phi @ x0 + pr.gamma0 @ a0 + pr.gamma1 @ at)[n:]
+            q_links += 0.5 * h * wi * (v @ c_links @ v)
+        assert abs(e_links - q_links) < 1e-11 * abs(q_links)
+        # and the state and input energy as without the split
+        plain = compute_free_step(M, C, K, R, h)
+        assert np.array_equal(fs.ops[:, : 2 * n + 2 * ng], plain.ops[:, : 2 * n + 2 * ng])
+
+
 def test_band_storage_reproduces_the_matrix():
     """The kernel's banded products read K and C from band storage: every entry of the band
     lands where ``out[d, i] = a[i, i + d − bw]`` says, and nothing else is kept."""

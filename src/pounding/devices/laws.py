@@ -119,6 +119,26 @@ def restrainer_kinks(p0, p1, p2, p3, d, rate, z, zdot):
     h_k = p3 / (1.0 - p3)  # H / k
     return e, e_rate, e - p2 / p0 - h_k * z, e_rate - h_k * zdot
 
+def linear_link_constants(code: int, p0: float, p1: float) -> tuple[float, float] | None:
+    """``(k, c)`` [N/m, N·s/m] of a link whose force is linear in ``d`` and ``ḋ`` and which
+    has no internal variable — Kelvin ``(p0, p1)``, a viscous dashpot with α = 1 ``(0,
+    p0)`` — so that its spring and dashpot can join the structure's K and C (the time
+    stepper steps them exactly, :func:`pounding.integrate.kernel_model.fold_linear_links`);
+    None for any other law (a fluid damper, Maxwell, a restrainer)."""
+    if code == KELVIN:
+        return p0, p1
+    if code == VISCOUS and p1 == 1.0:
+        return 0.0, p0
+    return None
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def folded_dashpot(code, p0, p1):
+    """The dashpot ``c`` [N·s/m] of a link folded into K and C (:func:`linear_link_constants`):
+    its dissipated power is ``c ḋ²``."""
+    return p1 if code == KELVIN else p0
+
+
 SLOPE_RATE_FLOOR: float = 1e-3
 """Relative velocity [m/s] below which a fluid damper's slope ``α c |ḋ|^(α−1)`` (unbounded at
 ``ḋ = 0`` for α < 1) is taken at this velocity in the force's rate (:func:`device_rate_terms`),

@@ -3,8 +3,11 @@ and cable restrainers that tie a bridge's deck segments across an expansion join
 
 A :class:`Link` joins floor ``floors[0]`` of one building to floor ``floors[1]`` of another
 (labels ``"B1F3"``: building 1, floor 3, counted from 1 as in every output). Its law is one of
-:mod:`pounding.devices.laws`; the kernel integrates it as an element row beside the yielding
-storeys, so a model with links is stepped adaptively throughout.
+:mod:`pounding.devices.laws`. A linear law without internal variable (``kelvin``, ``viscous``
+with α = 1) joins the structure's stiffness and damping, which the kernel steps exactly
+between impacts (:func:`pounding.integrate.kernel_model.fold_linear_links`); the kernel
+integrates any other as an element row beside the yielding storeys: a restrainer stepped
+exactly while it is slack, a fluid damper or a Maxwell link adaptively throughout.
 """
 
 from __future__ import annotations

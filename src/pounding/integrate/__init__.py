@@ -47,6 +47,7 @@ from pounding.integrate.kernel_model import (
     KernelModel,
     band_storage,
     choose_free_stepping,
+    exact_stepping,
     floor_below,
     half_bandwidth,
     kernel_model,
@@ -272,8 +273,11 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         How steps without contact are taken: ``"exact"`` propagator (O(N²) a step, exact),
         adaptive ``"rk"`` (O(N·bandwidth) a step), or ``"auto"``: exact up to
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
-        beyond. A model with yielding storeys or links between buildings is always stepped
-        by RK (``"exact"`` is refused).
+        beyond (and beyond ``EXACT_LINKED_BLOCK_MAX`` (120) floors tied by linear links).
+        Linear links without internal variable (Kelvin, a dashpot with α = 1) are part of
+        the linear structure stepped exactly, and slack cable restrainers exert no force
+        there; a model with yielding storeys or other links between buildings is always
+        stepped by RK (``"exact"`` is refused).
     max_rk_steps : int, optional
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step plus 10⁵); a run that needs more stops with an :class:`IntegrationError`.
@@ -331,17 +335,13 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     fl, ct, el = km.floors, km.contacts, km.elements
     ns = el.lo.size
     yielding_frames = bool(model.yielding_frames)
-    if (ns or yielding_frames) and free_stepping == "exact":
-        raise ValueError("free_stepping: 'exact' needs linear storeys and no links; this "
-                         "model has yielding storeys, links between buildings or frames with "
-                         "plastic hinges (use 'auto' or 'rk')")
-    exact = choose_free_stepping(free_stepping, n, fl.bw) and ns == 0 and not yielding_frames
+    exact = exact_stepping(km, free_stepping, yielding_frames)
     if exact:
         fs = km.free_steps.get(step)
         if fs is None:
             with warnings.catch_warnings():  # (an overflow is said below, in one line)
                 warnings.simplefilter("ignore", RuntimeWarning)
-                fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step)
+                fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step, km.C_links)
             if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
                 raise IntegrationError(_nonfinite_text(model, motion, None, step))
             km.free_steps[step] = fs

@@ -29,6 +29,7 @@ from pounding.integrate.events import (
     is_upward,
     locate,
 )
+from pounding.integrate.exact_links import rows_allow_exact
 from pounding.integrate.frame_outputs import frame_outputs
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
@@ -39,6 +40,7 @@ from pounding.integrate.layout import (
     E_INPUT,
     E_KINETIC,
     E_STRAIN,
+    EL_FOLDED,
     EV_DRIFT_MAX,
     EV_DRIFT_MIN,
     EV_GRAZE,
@@ -417,8 +419,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
         if stop_at_grid:
             ws_i[I_STOP] = STOP_HINGE  # (the event at the grid point: resume there)
             break
-        if run.exact and not any_closed(committed):
-            break  # back to exact stepping once every contact is open
+        if run.exact and not any_closed(committed) and rows_allow_exact(x, n, el):
+            break  # back to exact stepping once every contact is open (and restrainer slack)
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
             break  # this call's share of RK steps is done: back to the caller
     for c in range(cgap.shape[0]):
@@ -459,6 +461,8 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     recov_dev = 0.0
     for q in range(s_lo.shape[0]):
         vs_out[o, q] = sstate[q, V_C]
+        if s_par[q, EL_FOLDED] != 0.0:
+            continue  # (a linear link in K: its spring's energy is in es)
         zi = s_zi[q]
         e_q = recoverable_call(s_code[q], s_par, q, sstate[q, D_C],
                                x[2 * n + zi] if zi >= 0 else 0.0, sstate[q, V_C])

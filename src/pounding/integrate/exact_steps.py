@@ -22,18 +22,30 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from pounding.devices.laws import device_trial
+from pounding.hysteresis.base import V_C
 from pounding.integrate.events import touch_possible
+from pounding.integrate.exact_links import (
+    block_link_work,
+    floor_rel_acc,
+    ground_quadratic,
+    restrainer_taut_possible,
+    two_floor_link_step,
+)
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
     E_CONTACT_WORK,
     E_DAMPING,
+    E_DEVICE,
     E_HYSTERETIC,
     E_INPUT,
     E_KINETIC,
     E_STRAIN,
+    EL_FOLDED,
     PK_A,
     ROW_BLOCK,
     W_E_DAMP,
+    W_E_DEVICE,
     W_E_INPUT,
     W_E_STOREY,
     W_PEAK_MARGIN,
@@ -43,7 +55,7 @@ from pounding.integrate.peaks import (
     track_exact_step,
     track_uncoupled_step,
 )
-from pounding.integrate.rhs import NRT_FREE, band_mv, gap_row, ground_rest
+from pounding.integrate.rhs import NRT_FREE, band_products, gap_row
 
 
 @njit(**NRT_FREE)
@@ -56,25 +68,6 @@ def one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1):
     x1[p] = g0[p, 0] * a0 + g1[p, 0] * a1 + fops[p, 0] * u + fops[n + p, 0] * v
     x1[n + p] = g0[n + p, 0] * a0 + g1[n + p, 0] * a1 + fops[p, 1] * u + fops[n + p, 1] * v
     return (fops[p, 2] * u + fops[n + p, 2] * v, fops[p, 3] * u + fops[n + p, 3] * v)
-
-
-@njit(**NRT_FREE)
-def floor_rel_acc(j, y, ag, kg, n, fl):
-    """Relative acceleration of floor j at state y (grid point kg of the ground components
-    ``ag``) with every gap open and every storey linear: ``−(K u + C u̇)_j / m_j −
-    Σ_g R_jg a_g`` (row j of the banded products of the floors ``fl``)."""
-    bw = fl.bw
-    s = 0.0
-    for d in range(2 * bw + 1):
-        col = j + d - bw
-        if 0 <= col < n:
-            s += fl.k_band[d, j] * y[col] + fl.c_band[d, j] * y[n + col]
-    kb, cb = fl.k_band, fl.c_band
-    for q in range(n, kb.shape[1]):  # (the entries outside the band)
-        if int(kb[0, q]) == j:
-            col = int(kb[1, q])
-            s += kb[2, q] * y[col] + cb[2, q] * y[n + col]
-    return -s * fl.m_inv[j] - fl.r[j, 0] * ag[kg, 0] - ground_rest(fl.r, j, ag, kg)
 
 
 @njit(**NRT_FREE)
@@ -108,7 +101,7 @@ def ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1):
 
 
 @njit(**NRT_FREE)
-def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
+def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     """Exact grid steps from grid point ``k`` while every gap stays open, writing the
     outputs and peaks of each; returns the grid point whose step could close a gap (that
     step not taken: the caller re-takes it with RK) or ``k1``, or ``−(k + 1)`` if the step
@@ -128,7 +121,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     """
     dt = run.dt
     ag = run.ag
-    blk, fops, g0, g1, faa = fs
+    blk, fops, g0, g1, faa, frows, dev_aa = fs
     bw = fl.bw
     k_band = fl.k_band
     c_band = fl.c_band
@@ -153,6 +146,16 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     e_in = ws_f[W_E_INPUT]
     e_d = ws_f[W_E_DAMP]
     e_h = ws_f[W_E_STOREY]
+    e_dev = ws_f[W_E_DEVICE]
+    s_lo, s_hi, s_code, s_par = el.lo, el.hi, el.code, el.params
+    sstate = st.storeys
+    vs_out = out.element_force
+    ns = s_lo.shape[0]
+    # blocks whose columns hold the dissipation form of links' dashpots folded into C
+    links_dissipate = False
+    for b in range(nblk):
+        if frows[b] > 2 * (blk[b + 1] - blk[b]) + 2:
+            links_dissipate = True
     e_prev = e_out[k, E_KINETIC] + e_out[k, E_STRAIN]
     wsum = 0.0  # contact work does not change while every gap is open
     for c in range(nc):
@@ -167,6 +170,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
         # columns of the block operator (each row accumulates in a fixed order)
         lin_i0 = 0.0
         lin_i1 = 0.0
+        e_links = 0.0
         if nblk == n:
             # every floor a block of its own (a row of SDOF oscillators): no block loop
             for i in range(n):
@@ -183,12 +187,19 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                     lin_i1 += w1
                     continue
                 nb2 = 2 * nb
-                rows = nb2 + 2
+                rows = frows[b]
+                if nb == 2 and rows == 12 and ng == 1:
+                    # (a linked pair of one-storey buildings: written out)
+                    w0, w1, e_b = two_floor_link_step(p, n, x, x1, fops, g0, g1, a0, a1)
+                    lin_i0 += w0
+                    lin_i1 += w1
+                    e_links += e_b
+                    continue
                 for ir in range(nb):
                     acc[ir] = g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1
                     acc[nb + ir] = g0[n + p + ir, 0] * a0 + g1[n + p + ir, 0] * a1
-                acc[nb2] = 0.0
-                acc[nb2 + 1] = 0.0
+                for ir in range(nb2, rows):
+                    acc[ir] = 0.0
                 # columns of floor j's displacement and velocity together; the loop over rows
                 # vectorises without reassociation
                 for j in range(nb):
@@ -201,12 +212,15 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                     x1[n + p + ir] = acc[nb + ir]
                 lin_i0 += acc[nb2]
                 lin_i1 += acc[nb2 + 1]
+                if rows > nb2 + 2:
+                    e_links += block_link_work(p, nb, n, ng, x, acc, ag, k)
         e_rest = 0.0
         if ng > 1:
             e_rest = ground_rest_step(k, n, ag, blk, fops, g0, g1, faa, x, x1)
         # could any gap close at the step end, or come within graze_tol of closing inside
         # it? Then the step is not taken. (A cheap bound on the cubic through δ, δ̇ first;
         # the quintic through δ, δ̇, δ̈ only where that cannot rule a touch out.)
+        touch = False
         for c in range(nc):
             ds1, r1 = gap_row(c, x1, n, cdof, cw)
             d1 = ds1 - cgap[c]
@@ -221,20 +235,35 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                         q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, fl)
                         q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, fl)
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
-                    ws_f[W_E_INPUT] = e_in
-                    ws_f[W_E_DAMP] = e_d
-                    if bw != 0 and k - 1 >= k_entry:
-                        # the last exact step's acceleration peaks, whose test needed the
-                        # sample after it
-                        for i in range(n):
-                            acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out,
-                                             acc_out, fl, pk)
-                    return k
+                    touch = True
+                    break
+        # a slack restrainer whose slack could be taken up: the same (its force, zero
+        # while slack, is not in the exact step)
+        if not touch:
+            for q in range(ns):
+                if s_par[q, EL_FOLDED] == 0.0 and restrainer_taut_possible(q, x, x1, n, k, ag,
+                                                                            fl, el, dt,
+                                                                            graze_tol):
+                    touch = True
+                    break
+        if touch:
+            ws_f[W_E_INPUT] = e_in
+            ws_f[W_E_DAMP] = e_d
+            ws_f[W_E_DEVICE] = e_dev
+            if bw != 0 and k - 1 >= k_entry:
+                # the last exact step's acceleration peaks, whose test needed the sample
+                # after it
+                for i in range(n):
+                    acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out, acc_out, fl,
+                                     pk)
+            return k
         # input energy over the step: an exact quadratic form
         e_step = (a0 * lin_i0 + a1 * lin_i1
                   + (faa[0, 0, 0] * a0 * a0 + faa[1, 0, 0] * a0 * a1 + faa[2, 0, 0] * a1 * a1))
         e_step += e_rest
         e_in += e_step
+        if links_dissipate:
+            e_links += ground_quadratic(dev_aa, ag, k)
         # outputs at grid point k + 1: no contact force, no yielding storey, so the absolute
         # acceleration is ü + r a_g = −M⁻¹(K u + C u̇); and the peaks over the step: a
         # floor's step is examined only where its velocity or drift rate changes sign, or
@@ -274,7 +303,7 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                     track_uncoupled_step(t0, dt, i, u0, v0, acc_out[k, i], u, v, aa, ag, k,
                                          r, kk, cc, mi, pk)
         else:
-            band_mv(k_band, c_band, x1, n, bw, lin)
+            band_products(k_band, c_band, x1, n, bw, lin)
             for i in range(n):
                 u = x1[i]
                 v = x1[n + i]
@@ -312,16 +341,34 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
                                          acc_out, pk)
             for i in range(2 * n):
                 x[i] = x1[i]
+        if ns > 0:
+            # the links' forces: those folded into K and C their law's ``k d + c ḋ`` at the
+            # step's end (as the adaptive steps commit it), any other row its committed
+            # force (a slack restrainer's zero); written out here, where a call cost the
+            # SDOF pair's linked exact steps more than the rest of them
+            for q in range(ns):
+                if s_par[q, EL_FOLDED] != 0.0:
+                    lo = s_lo[q]
+                    hi = s_hi[q]
+                    vs_out[o, q] = device_trial(s_code[q], s_par[q, 0], s_par[q, 1],
+                                                s_par[q, 2], s_par[q, 3], x1[hi] - x1[lo],
+                                                x1[n + hi] - x1[n + lo], 0.0)[0]
+                else:
+                    vs_out[o, q] = sstate[q, V_C]
         # nothing but the viscous dampers takes energy out (every gap open, linear
         # storeys): the step's viscous work is the input work less the change of kinetic
-        # and strain energy, exactly
+        # and strain energy, exactly — the links' dashpots' share of it their own
         e_d += e_step - ((ek + es) - e_prev)
+        if links_dissipate:
+            e_d -= e_links
+            e_dev += e_links
         e_prev = ek + es
         if not abs(e_d) < np.inf:
             # the state (every entry of it is in ek + es) or the input stopped being a
             # finite number: stop here (the caller reports it)
             ws_f[W_E_INPUT] = e_in
             ws_f[W_E_DAMP] = e_d
+            ws_f[W_E_DEVICE] = e_dev
             return -(k + 1)
         for c in range(nc):
             gd[c] = gd1[c]
@@ -336,7 +383,10 @@ def free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
         e_out[o, E_CONTACT_WORK] = wsum
         e_out[o, E_CONTACT_STORED] = 0.0
         e_out[o, E_HYSTERETIC] = e_h
+        if ns > 0:
+            e_out[o, E_DEVICE] = e_dev  # (a slack restrainer's cables hold nothing)
         k += 1
     ws_f[W_E_INPUT] = e_in
     ws_f[W_E_DAMP] = e_d
+    ws_f[W_E_DEVICE] = e_dev
     return k

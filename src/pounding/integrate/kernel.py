@@ -6,7 +6,8 @@ Two regimes, one kernel:
    grid points, so each grid step is taken with the exact propagator
    (:mod:`pounding.integrate.exact_steps`), block by block, with the input and viscous
    energies of the step exact. After each step every gap is checked for closing at the step
-   end and inside it, so no touch is missed.
+   end and inside it, so no touch is missed — and every cable restrainer, slack in this
+   regime, for its slack being taken up, likewise.
 2. **Any contact closed (or about to close).** The step is re-taken with an adaptive
    Dormand–Prince 5(4) integrator (:mod:`pounding.integrate.dormand_prince`) whose steps land
    exactly on grid points (:mod:`pounding.integrate.adaptive`). Events are located on actual
@@ -40,6 +41,7 @@ from __future__ import annotations
 from numba import njit
 
 from pounding.integrate.adaptive import LF_GRAZED, adaptive_run, any_closed
+from pounding.integrate.exact_links import rows_allow_exact
 from pounding.integrate.exact_steps import free_run
 from pounding.integrate.layout import (
     ENERGY_COLUMNS,
@@ -104,8 +106,9 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         below each floor, −1 the ground), its contacts (DOFs and signed weights of every
         contact row (n_c, W: any width), gaps [m], law codes and constants) and its element
         rows (yielding storeys and links: DOF below, −1 the ground, and above, law code and
-        constants, index of the row's ``z`` among the extra states, −1 none; empty for
-        linear buildings without links, and only then may ``exact`` be true).
+        constants, index of the row's ``z`` among the extra states, −1 none; ``exact`` may
+        be true only if every row is a linear link folded into K and C or a cable
+        restrainer, whose slack taken up hands the step to RK as a gap closing does).
     fs : :class:`pounding.integrate.propagator.FreeStep`
         The exact step over dt (blocks, block operators, Γ0 and Γ1 (2N, G), input-energy
         coefficients of the products of the ground components (3, G, G); unused unless
@@ -160,7 +163,7 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         if ws_i[I_MODE] == 0:
             # exact steps while every gap stays open; stops at the step in which one could
             # close (x, gd and gr are then those of grid point k)
-            k = free_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc)
+            k = free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc)
             if k < 0:
                 ws_i[I_FAILED] = FAIL_NONFINITE
                 ws_i[I_FAIL_STEP] = -k - 1
@@ -181,7 +184,7 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
             return
         if ws_i[I_STOP] != 0:
             break  # a hinge event: Python gives its frame the next configuration
-        if run.exact and not any_closed(committed):
+        if run.exact and not any_closed(committed) and rows_allow_exact(x, n, el):
             ws_i[I_MODE] = 0
         if ws_i[I_NSTEPS] >= ws_i[I_CALL_STEPS]:
             break  # the call's share of RK steps is done: return at grid point k

@@ -89,16 +89,20 @@ STOP_HINGE = 1
 ``ws_f[W_RESUME_S]`` the local time in grid step ``ws_i[I_REACHED]``)."""
 
 # ---------------------------------------------------------------- element rows
-EL_ROCK, EL_LEVER = 6, 7
-ELEMENT_PARAMS = 8
+EL_ROCK, EL_LEVER, EL_FOLDED = 6, 7, 8
+ELEMENT_PARAMS = 9
 """Columns of an element row's constants (``ElementRows.params``, :meth:`pounding.model.
 PoundingModel.storey_arrays`): its law's constants first (at most 6 of them,
 :data:`pounding.hysteresis.base.PARAMS_SIZE`), then a third DOF its drift takes and that
 DOF's lever [m]: ``d = u[hi] − u[lo] − lever · u[rock]`` — a storey of a building on a
 flexible base, whose footing rocks by ``u[rock]`` [rad] under it
 (:mod:`pounding.structure.foundation.flexible_base`); −1 (as a float): none, and the lever
-is 0. In the constants' array, not arrays of their own: every array of a group is passed to
-every call that takes the group."""
+is 0; then ``EL_FOLDED``: 1 for a link whose law is linear and has no internal state
+(Kelvin; a viscous dashpot with α = 1), whose spring and dashpot are in the kernel's K and C
+(:func:`pounding.integrate.kernel_model.fold_linear_links`) — the right-hand side does not
+apply its force again, and its row stays for its outputs (its force from the state, its
+dashpot's work as the links' energy) — 0 otherwise. In the constants' array, not arrays of
+their own: every array of a group is passed to every call that takes the group."""
 
 # ---------------------------------------------------------------- hinge rows (yielding frames)
 (HS_A0, HS_LO, HS_HI, HS_DIR, HS_KT, HS_Q, HS_THETA_C, HS_M_C, HS_WORK_C, HS_K_UNLOAD,

@@ -66,12 +66,16 @@ def _remembered(cache: dict[bytes, Arrays],
                 compute: Callable[[NDArray[np.float64], NDArray[np.float64],
                                    NDArray[np.float64], NDArray[np.float64], float], Arrays],
                 M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
-                r: NDArray[np.float64], h: float) -> Arrays:
-    """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes and ``h``;
-    the result's arrays are made read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
+                r: NDArray[np.float64], h: float,
+                extra: NDArray[np.float64] | None = None) -> Arrays:
+    """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes (and those of
+    ``extra``, another array the computation reads) and ``h``; the result's arrays are made
+    read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
+    arrays = (M, C, K, r) if extra is None else (M, C, K, r, extra)
     key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
-                                for a in (M, C, K, r))
-                       + repr((M.shape, np.shape(r), float(h))).encode()).digest()
+                                for a in arrays)
+                       + repr((M.shape, np.shape(r), float(h), extra is None)).encode()
+                       ).digest()
     hit = cache.get(key)
     if hit is None:
         hit = compute(M, C, K, r, h)
@@ -138,6 +142,16 @@ class FreeStep(NamedTuple):
     dissipates energy while every gap is open), which the kernel uses instead of the
     viscous quadratic form: half the work a step. ``gamma0``/``gamma1`` (2N, G) are in the
     global state order ``[u, u̇]``; ``aa`` is (3, G, G).
+
+    A block that holds dashpots of links folded into C (``C_links`` of
+    :func:`compute_free_step`) has ``2 n_b + 2 G`` more numbers in each column: column j of
+    the links' dissipation form ``Q_xx`` and its cross terms ``2 Q_x,a0,g``, ``2 Q_x,a1,g``,
+    so that the same sweep gives the energy the links' dashpots dissipate over the step,
+    ``zᵀ Q_xx z + Σ_g (2 Q_x,a0,g · z) a0_g + (2 Q_x,a1,g · z) a1_g`` plus
+    ``dev_aa`` (3, G, G) like ``aa``: the viscous work is then split exactly between the
+    buildings' damping and the links. ``rows[b]``: the numbers of block b's columns the
+    kernel's sweep reads: ``2 n_b + 2`` (the state and the first ground component's input
+    terms), or the whole column, ``4 n_b + 4 G``, for a block with link dashpots.
     """
 
     blk: NDArray[np.int64]
@@ -145,6 +159,8 @@ class FreeStep(NamedTuple):
     gamma0: NDArray[np.float64]
     gamma1: NDArray[np.float64]
     aa: NDArray[np.float64]
+    rows: NDArray[np.int64]
+    dev_aa: NDArray[np.float64]
 
 
 def independent_blocks(*mats: NDArray[np.float64]) -> NDArray[np.int64]:
@@ -233,6 +249,19 @@ def step_input_form(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[n
     return t.T @ _van_loan_integral(f, _input_weight(M, r), h) @ t
 
 
+def step_viscous_form(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
+                      r: NDArray[np.float64], h: float,
+                      c_part: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Work of the dashpots ``c_part`` (a part of C: the links folded into it) over one exact
+    step as a quadratic form in ``[x0, a0, a1]`` (``∫ u̇ᵀ c_part u̇ dt``; the second form of
+    :func:`step_energy_forms` with ``c_part`` for C)."""
+    n = M.shape[0]
+    f, t = _augmented(M, C, K, r, h)
+    w_d = np.zeros_like(f)
+    w_d[n : 2 * n, n : 2 * n] = 0.5 * (c_part + c_part.T)
+    return t.T @ _van_loan_integral(f, w_d, h) @ t
+
+
 def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
                       r: NDArray[np.float64], h: float
                       ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -259,8 +288,11 @@ def step_energy_forms(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
 
 
 def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
-                      r: NDArray[np.float64], h: float) -> FreeStep:
-    """The :class:`FreeStep` operators of the structure for a grid step ``h`` [s]."""
+                      r: NDArray[np.float64], h: float,
+                      c_links: NDArray[np.float64] | None = None) -> FreeStep:
+    """The :class:`FreeStep` operators of the structure for a grid step ``h`` [s];
+    ``c_links``: the part of C that is the dashpots of links folded into it (None: none),
+    whose dissipated energy each step gives apart."""
     n = M.shape[0]
     rm = _columns(r)
     ng = rm.shape[1]
@@ -268,6 +300,8 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     gamma0 = np.zeros((2 * n, ng))
     gamma1 = np.zeros((2 * n, ng))
     aa = np.zeros((3, ng, ng))
+    dev_aa = np.zeros((3, ng, ng))
+    rows = np.zeros(blk.size - 1, dtype=np.int64)
     parts = []
     for b in range(blk.size - 1):
         p, q = int(blk[b]), int(blk[b + 1])
@@ -288,19 +322,36 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
         op[:, 2 * nb + 0 :: 2] = 2.0 * q_in[x_, a0_]
         op[:, 2 * nb + 1 :: 2] = 2.0 * q_in[x_, a1_]
         aa += (q_in[a0_, a0_], 2.0 * q_in[a0_, a1_], q_in[a1_, a1_])
+        rows[b] = 2 * nb + 2
+        cb_links = None if c_links is None else c_links[sl, sl]
+        if cb_links is not None and np.any(cb_links != 0.0):
+            # the links' dashpots in this block: their dissipation form after the input's
+            q_dev = step_viscous_form(mb, cb, kb, rb, h, cb_links)
+            dev = np.zeros((2 * nb, 2 * nb + 2 * ng))
+            dev[:, : 2 * nb] = q_dev[x_, x_]
+            dev[:, 2 * nb + 0 :: 2] = 2.0 * q_dev[x_, a0_]
+            dev[:, 2 * nb + 1 :: 2] = 2.0 * q_dev[x_, a1_]
+            dev_aa += (q_dev[a0_, a0_], 2.0 * q_dev[a0_, a1_], q_dev[a1_, a1_])
+            op = np.concatenate([op, dev], axis=1)
+            rows[b] = op.shape[1]
         parts.append((glob, op))
     width = max((op.shape[1] for _, op in parts), default=0)
     ops = np.zeros((2 * n, width))
     for glob, op in parts:
         ops[glob, : op.shape[1]] = op
-    return FreeStep(blk, ops, gamma0, gamma1, aa)
+    return FreeStep(blk, ops, gamma0, gamma1, aa, rows, dev_aa)
 
 
 _FREE_CACHE: dict[bytes, FreeStep] = {}
 
 
 def free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[np.float64],
-              r: NDArray[np.float64], h: float) -> FreeStep:
+              r: NDArray[np.float64], h: float,
+              c_links: NDArray[np.float64] | None = None) -> FreeStep:
     """:func:`compute_free_step`, remembered per structure and step like
     :func:`propagator` (the arrays are read-only)."""
-    return _remembered(_FREE_CACHE, compute_free_step, M, C, K, r, h)
+    if c_links is None:
+        return _remembered(_FREE_CACHE, compute_free_step, M, C, K, r, h)
+    return _remembered(_FREE_CACHE,
+                       lambda M_, C_, K_, r_, h_: compute_free_step(M_, C_, K_, r_, h_, c_links),
+                       M, C, K, r, h, extra=c_links)

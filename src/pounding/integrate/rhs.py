@@ -36,11 +36,12 @@ from pounding.contact.dispatch import (
     release_value,
     stored_energy,
 )
-from pounding.devices.laws import DEVICE_MIN, device_rate_terms
+from pounding.devices.laws import DEVICE_MIN, device_rate_terms, folded_dashpot
 from pounding.hysteresis.base import D_C, V_C
 from pounding.hysteresis.dispatch import storey_recoverable, storey_trial
 from pounding.integrate.layout import (
     DELTA_EPS,
+    EL_FOLDED,
     EL_LEVER,
     EL_ROCK,
     HS_A0,
@@ -178,11 +179,20 @@ def element_drift(s, lo, hi, par, y, n):
 
 @njit(**NRT_FREE)
 def band_mv(kb, cb, y, n, bw, lin):
+    """:func:`band_products`, called (the right-hand side, the jerk and the adaptive
+    steps' outputs)."""
+    band_products(kb, cb, y, n, bw, lin)
+
+
+@njit(**INLINE)
+def band_products(kb, cb, y, n, bw, lin):
     """``lin[0] = K y[:n]``, ``lin[1] = C y[n:2n]`` with K and C in band storage
     (``kb[d, i] = K[i, i + d − bw]``) plus their few entries outside the band (the
     columns after the n-th: ``[i, j, K_ij]``, :func:`pounding.integrate.kernel_model.
     kernel_bands`): O(N·bw + those), each row of the band summed in column order, and the
-    loop over rows vectorises without reassociation."""
+    loop over rows vectorises without reassociation. Inlined in the exact steps' outputs
+    (a call cost a linked SDOF pair's exact step ~10 of its ~100 ns); the same sums,
+    so the same numbers, as :func:`band_mv`'s."""
     for i in range(n):
         lin[0, i] = 0.0
         lin[1, i] = 0.0
@@ -314,8 +324,15 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
     # links between buildings (codes ≥ DEVICE_MIN) are rows of the same kind
     p_s = 0.0
     p_dev = 0.0
+    p_fold = 0.0
     for s in range(s_lo.shape[0]):
         d, dr = element_drift(s, s_lo[s], s_hi[s], s_par, y, n)
+        if s_par[s, EL_FOLDED] != 0.0:
+            # a linear link folded into K and C (its force is in the banded products
+            # above): its dashpot's power c ḋ², in C's, is the links' work, not the
+            # buildings' viscous work
+            p_fold += folded_dashpot(s_code[s], s_par[s, 0], s_par[s, 1]) * dr * dr
+            continue
         zi = s_zi[s]
         z = y[2 * n + zi] if zi >= 0 else 0.0
         v, kt, zd = storey_call(s_code[s], s_par, s, d, dr, z, sstate[s, D_C], sstate[s, V_C])
@@ -335,6 +352,9 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
             p_s += v * dr
     power[row, P_STOREY] = p_s
     power[row, P_DEVICE] = p_dev
+    if p_fold != 0.0:
+        power[row, P_DAMP] -= p_fold
+        power[row, P_DEVICE] += p_fold
     for c in range(nc):
         dsum, rate = gap_row(c, y, n, cdof, cw)
         delta = dsum - cgap[c]
@@ -431,6 +451,8 @@ def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     for i in range(n):
         out[i] = lin[0, i] + lin[1, i]
     for s in range(s_lo.shape[0]):
+        if s_par[s, EL_FOLDED] != 0.0:
+            continue  # (a linear link in K and C: its rate is in the banded products)
         d, dr = element_drift(s, s_lo[s], s_hi[s], s_par, x, n)
         zi = s_zi[s]
         z = x[2 * n + zi] if zi >= 0 else 0.0

@@ -8,7 +8,7 @@ import numpy as np
 
 from pounding.hysteresis.dispatch import storey_recoverable as _recoverable
 from pounding.integrate.kernel_model import KernelModel
-from pounding.integrate.layout import EL_LEVER, EL_ROCK, PK_COLUMNS
+from pounding.integrate.layout import EL_FOLDED, EL_LEVER, EL_ROCK, PK_COLUMNS
 from pounding.integrate.workspace import KernelOutputs
 from pounding.model import PoundingModel
 
@@ -89,8 +89,9 @@ def write_initial_row(model: PoundingModel, km: KernelModel, x: np.ndarray,
     v_out[0] = v
     pen_out[0] = model.contact_penetration(u[:model.n_dof])  # (ground stations: at rest)
     storey_force = np.zeros(n)
-    np.add.at(storey_force, el.hi, sstate[:, 1])
-    lower = el.lo >= 0
+    applied = el.params[:, EL_FOLDED] == 0.0  # (the linear links folded into K and C are there)
+    np.add.at(storey_force, el.hi[applied], sstate[applied, 1])
+    lower = (el.lo >= 0) & applied
     np.add.at(storey_force, el.lo[lower], -sstate[lower, 1])
     rocking = el.params[:, EL_ROCK] >= 0.0  # the storeys' moments on rocking footings
     np.add.at(storey_force, el.params[rocking, EL_ROCK].astype(np.int64),
@@ -100,7 +101,7 @@ def write_initial_row(model: PoundingModel, km: KernelModel, x: np.ndarray,
     e_out[0, 2] = 0.5 * u @ km.K @ u + sum(
         _recoverable(int(el.code[s]), el.params, s, sstate[s, 0],
                      x[2 * n + el.z_index[s]] if el.z_index[s] >= 0 else 0.0, sstate[s, 1])
-        for s in range(ns))
+        for s in range(ns) if applied[s])
 
 
 def initial_peaks(u0: np.ndarray, a0: np.ndarray, below: np.ndarray) -> np.ndarray:

@@ -44,12 +44,13 @@ import numpy as np
 from pounding.integrate.kernel_model import (
     ContactRows,
     KernelModel,
+    fold_linear_links,
     kernel_bands,
     kernel_model,
     padded_rows,
     remembered_for,
 )
-from pounding.integrate.layout import EL_LEVER, EL_ROCK, STATION_MASS
+from pounding.integrate.layout import EL_FOLDED, EL_LEVER, EL_ROCK, STATION_MASS
 from pounding.model import PoundingModel
 
 __all__ = ["STATION_MASS", "link_stations", "station_kernel_model"]
@@ -91,6 +92,15 @@ def station_kernel_model(model: PoundingModel, stations: tuple[int, ...],
                           lambda: _assemble(model, stations, dict(wall_stations)))
 
 
+def unfolded(K: np.ndarray, C: np.ndarray, c_links: np.ndarray | None, lo: np.ndarray,
+             hi: np.ndarray, code: np.ndarray, params: np.ndarray
+             ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """``K``, ``C`` and the links' dashpots without the linear links ``lo``–``hi`` that
+    :func:`~pounding.integrate.kernel_model.fold_linear_links` added (new arrays)."""
+    K2, C2, c2 = fold_linear_links(np.zeros_like(K), np.zeros_like(C), lo, hi, code, params)
+    return K - K2, C - C2, None if c_links is None else c_links - c2
+
+
 def link_stations(model: PoundingModel, stations: tuple[int, ...]
                   ) -> list[tuple[int, int, int]]:
     """``(link, left station, right station)`` of every link whose ends stand on different
@@ -124,18 +134,29 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...],
     el = base.elements
     par = el.params.copy()
     first_link = el.lo.size - len(model.links)
+    K_base, C_base = base.K, base.C
+    c_links_base = base.C_links
+    unfold = []
     for q, (i, left, right) in enumerate(crossing):
         # the grounds' offset u_g,right − u_g,left: ü = a_g,right − a_g,left
         r[N + S + q, right] -= 1.0
         r[N + S + q, left] += 1.0
-        par[first_link + i, EL_ROCK] = N + S + q
-        par[first_link + i, EL_LEVER] = -1.0
+        row = first_link + i
+        par[row, EL_ROCK] = N + S + q
+        par[row, EL_LEVER] = -1.0
+        if par[row, EL_FOLDED] != 0.0:  # (a linear link folded into K and C: its row
+            par[row, EL_FOLDED] = 0.0   # reads the grounds' offset, so it is a row again)
+            unfold.append(row)
+    if unfold:
+        at = np.array(unfold)
+        K_base, C_base, c_links_base = unfolded(K_base, C_base, c_links_base, el.lo[at],
+                                                el.hi[at], el.code[at], el.params[at])
     m_diag = np.r_[fl.m_diag, np.full(S + Q, STATION_MASS)]
     m_inv = np.r_[fl.m_inv, np.ones(S + Q)]  # (what is pushed on them is taken back: rhs)
     K = np.zeros((n, n))
-    K[:N, :N] = base.K
+    K[:N, :N] = K_base
     C = np.zeros((n, n))
-    C[:N, :N] = base.C
+    C[:N, :N] = C_base
     below = np.r_[fl.below, N + np.arange(S + Q)]  # (a station is not a floor: no drift)
     k_band, c_band = kernel_bands(K, C, fl.bw)
     floors = fl._replace(k_band=k_band, c_band=c_band,
@@ -167,7 +188,12 @@ def _assemble(model: PoundingModel, stations: tuple[int, ...],
             dof[c.index, width:] = cdof[c.index, 0]
     dof, w = padded_rows(dof, w)
     contacts = ContactRows(dof, w, ct.gap, ct.code, ct.params)
+    c_links = None
+    if c_links_base is not None and np.any(c_links_base):  # (the links folded into C)
+        c_links = np.zeros((n, n))
+        c_links[:N, :N] = c_links_base
     return KernelModel(n=n, nz=base.nz, K=K, C=C,
                        arrays=base.arrays._replace(floors=floors, contacts=contacts,
                                                    elements=el._replace(params=par)),
-                       free_steps={}, periods_checked=set())
+                       free_steps={}, periods_checked=set(), C_links=c_links,
+                       linked_block=base.linked_block, adaptive_only=bool(crossing))

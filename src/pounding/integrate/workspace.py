@@ -112,7 +112,7 @@ def new_outputs(km: KernelModel, nt: int, capacity: int, peaks: np.ndarray,
     the rows written are kept."""
     n, nc, ns = km.n, km.contacts.gap.size, km.elements.lo.size
     energy = np.empty((nt, ENERGY_COLUMNS), order="F")  # (each energy's history contiguous)
-    energy[:, E_DEVICE] = 0.0  # (exact steps leave it: a model with links steps adaptively)
+    energy[:, E_DEVICE] = 0.0  # (exact steps write it only for a model with links)
     return KernelOutputs(np.empty((nt, n)), np.empty((nt, n)), np.empty((nt, n)),
                          np.empty((nt, nc)), np.zeros((nt, nc)), np.empty((nt, ns)), energy,
                          np.empty((capacity, IMP_COLUMNS)), np.zeros(nc), np.zeros(nc),
@@ -135,7 +135,7 @@ class KernelScratch(NamedTuple):
     y1: np.ndarray  #: the state at a step's end (m,)
     yb: np.ndarray  #: the state at a bracketing step's end (m,)
     x1: np.ndarray  #: the state after an exact step (m,)
-    acc: np.ndarray  #: the exact step's sweep (2 m + 4)
+    acc: np.ndarray  #: the exact step's sweep (2 m + 4 G)
     lin: np.ndarray  #: K u and C u̇ (2, N)
     work: np.ndarray  #: (2N,)
     gd: np.ndarray  #: every contact's δ now (n_c,)
@@ -164,7 +164,8 @@ def kernel_scratch(km: KernelModel, m: int) -> KernelScratch:
     floors = np.zeros((6, n))
     return KernelScratch(stages[0], powers[0], stages[1], powers[1], np.zeros((1, m)),
                          np.zeros((1, npw)), states[0], states[1], states[2], states[3],
-                         np.zeros(2 * m + 4), np.zeros((2, n)), np.zeros(2 * n),
+                         np.zeros(2 * m + 4 * km.floors.r.shape[1]), np.zeros((2, n)),
+                         np.zeros(2 * n),
                          gaps[0], gaps[1], gaps[2], gaps[3],
                          floors[0], floors[1], floors[2], floors[3], floors[4], floors[5],
                          np.zeros((G_ROWS, km.floors.r.shape[1])))
