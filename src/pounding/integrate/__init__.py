@@ -328,6 +328,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
     if stations is not None:
         ag = np.ascontiguousarray(np.column_stack(
             [ground_on_grid_memo(rec, step, t_end) for rec in station_records]))
+        ag.flags.writeable = False  # (read-only like one record's: one compiled kernel)
     if km.floors.r.shape[1] != ag.shape[1]:  # (checked above; the kernel reads ag[k, g]
         raise ValueError(f"motion: {ag.shape[1]} ground components for "  # unchecked)
                          f"{km.floors.r.shape[1]}")
