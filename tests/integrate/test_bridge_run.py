@@ -103,6 +103,16 @@ def test_example_bridge_file_builds_the_bridge() -> None:
     assert model.element_rows[1][1].params[1] == pytest.approx(0.06 * 60.0 * 1.7e4 * 9.80665)
 
 
+def test_a_bridge_files_copy_names_no_floor_to_column() -> None:
+    """The copy a run writes (model.toml) leaves out floor_to_column, which a bridge does not
+    read (its contacts are deck to deck), and builds the same model."""
+    cfg = load_config(example_path("bridge_two_frames.toml"))
+    text = cfg.to_toml()
+    assert "floor_to_column" not in text
+    again = parse_config(__import__("tomllib").loads(text), where="model.toml").build().model
+    assert [c.label for c in again.contacts] == ["B1F1-B2F1", "A1-B1F1", "B2F1-A2"]
+
+
 BASE = """
 [record]
 bundled = "el_centro"

@@ -319,6 +319,8 @@ class RunConfig(Section):
         if self.contact is not None:
             keep = LAW_FIELDS[self.contact.law] | CONTACT_COMMON
             data["contact"] = {k: v for k, v in data["contact"].items() if k in keep}
+            if self.bridge is not None:  # (a bridge's contacts are deck to deck only)
+                data["contact"].pop("floor_to_column", None)
         for dev, raw in zip(self.device, data.get("device", [])):
             if dev.rubber is not None:
                 keep = LAW_FIELDS[dev.rubber.law] | {"law"}
