@@ -255,3 +255,24 @@ def test_bad_piles_and_a_bad_file_exit_2_in_one_line(tmp_path: Path, capsys) -> 
     err = [ln for ln in capsys.readouterr().err.splitlines() if ln.strip()]
     assert len(err) == 1 and "bridge.abutment_keys.brittle" in err[0], err
     assert "Traceback" not in err[0] and not out.exists()
+
+
+def test_the_contact_figure_draws_the_keys_and_no_infinite_gap() -> None:
+    """A transverse run's contact-force figure: one panel for the keys (every key there), no
+    panel for the decks' joint (an infinite gap they never close); and no seat figure."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from pounding.ground_motion import el_centro
+    from pounding.integrate import simulate
+    from pounding.plot.registry import is_bridge_model
+    from pounding.plot.response import plot_contact_forces
+
+    model = _two_frames()
+    res = simulate(model, el_centro().scaled(0.5), duration=2.0)
+    fig = plot_contact_forces(res)
+    titles = [ax.get_title(loc="left") for ax in fig.axes]
+    assert not any("inf mm" in t for t in titles), titles
+    keys = [t for t in titles if t.startswith("shear keys")]
+    assert len(keys) == 1
+    assert not is_bridge_model(model)

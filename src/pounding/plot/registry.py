@@ -100,5 +100,9 @@ def figures_for(subject: Result | PoundingModel) -> dict[str, RunFigure]:
 
 def is_bridge_model(model: PoundingModel) -> bool:
     """True if every building of ``model`` is a bridge frame
-    (:class:`~pounding.structure.bridge.BridgeFrame`: one with a deck)."""
-    return bool(model.buildings) and all(hasattr(b, "deck_dof") for b in model.buildings)
+    (:class:`~pounding.structure.bridge.BridgeFrame`: one with a deck) of a bridge along its
+    axis (:func:`pounding.result.bridge_peaks.is_bridge`; across it there are no seats to
+    draw)."""
+    from pounding.result.bridge_peaks import is_bridge
+
+    return is_bridge(model)

@@ -157,11 +157,19 @@ def plot_contact_forces(result: Result) -> Figure:
     imp = result.impact_array  # (numpy, not the DataFrame: drawing needs no pandas)
     peak = result.peak_contact_force
     force = scale_for(float(peak.max()) if peak.size else 0.0, "N")
-    # one panel a gap between buildings, then one a wall (moat walls: pounding.structure.wall)
-    groups = [[c for c in model.contacts if c.pair == p and not c.on_wall]
-              for p in range(n_pairs)]
-    groups += [[c for c in model.contacts if c.on_wall and (c.pair < 0) == (wall.side == "left")]
-               for wall in model.walls]
+    # one panel a gap between buildings (none where they never meet: a bridge across its
+    # axis), then one a wall (moat walls: pounding.structure.wall), then one for the stops
+    # (shear keys: pounding.structure.stops)
+    stops = [c for c in model.contacts if c.label.endswith("/key")]
+    pairs = [p for p in range(n_pairs)
+             if not (p < len(model.gaps) and math.isinf(model.gaps[p]))]
+    groups = [[c for c in model.contacts if c.pair == p and not c.on_wall and c not in stops]
+              for p in pairs]
+    groups += [[c for c in model.contacts if c.on_wall and (c.pair < 0) == (wall.side == "left")
+                and c not in stops] for wall in model.walls]
+    if stops:
+        groups.append(stops)
+    n_pairs = len(pairs)
     hit_by_pair = [[c for c in cs if peak[c.index] > 0.0] for cs in groups]
     labels = [[f"{c.label} ({c.elevation:g} m)" for c in hit] for hit in hit_by_pair]
     rows = int(PANEL_HEIGHT / 0.15)
@@ -186,8 +194,11 @@ def plot_contact_forces(result: Result) -> Figure:
             ax.legend(fontsize=LEGEND_SIZE, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                       borderaxespad=0.0, ncol=ncols[p], frameon=False)
         if p < n_pairs:
-            gap = model.gaps[p] if p < len(model.gaps) else float("nan")
-            where = f"gap {p + 1}: B{p + 1}–B{p + 2}, {gap * MM.factor:g} mm"
+            q = pairs[p]
+            gap = model.gaps[q] if q < len(model.gaps) else float("nan")
+            where = f"gap {q + 1}: B{q + 1}–B{q + 2}, {gap * MM.factor:g} mm"
+        elif stops and p == len(groups) - 1:
+            where = "shear keys (each with its own gap)"
         else:
             wall = model.walls[p - n_pairs]
             nb = 1 if wall.side == "left" else len(model.buildings)
