@@ -14,7 +14,8 @@ from typing import Any
 
 from pounding.studies.codes.common import COMBINATIONS, CodeCheck, CodeCheckRow
 
-__all__ = ["CODES", "COMBINATIONS", "CodeCheck", "CodeCheckRow", "code_check"]
+__all__ = ["CODES", "CODE_CHECK_FILE", "COMBINATIONS", "CodeCheck", "CodeCheckRow", "code_check",
+           "write_code_check"]
 
 CODES: dict[str, str] = {
     "asce7-22": "ASCE/SEI 7-22 §12.12 (δ_M = C_d δ_max / I_e, SRSS on one property)",
@@ -63,3 +64,41 @@ def code_check(model: Any, code: str, **parameters: Any) -> CodeCheck:
             raise ValueError(f"{name}: {code} needs it (got none)")
     given = {k: v for k, v in parameters.items() if v is not None}
     return module.check(model, kind(**given))
+
+
+CODE_CHECK_FILE = "code_check.json"
+"""The file ``pounding code-check --out DIR`` writes in ``DIR``."""
+
+
+def write_code_check(check: CodeCheck, out: Any, overwrite: bool = False,
+                     source: str = "") -> Any:
+    """Write ``check`` as ``out/code_check.json`` (a new folder, or with ``overwrite`` one
+    holding nothing but an earlier code check of pounding's: its manifest), built whole
+    and then put in place. Returns the file's path.
+
+    Raises
+    ------
+    ValueError
+        ``out`` is a file, or exists without ``overwrite``, or holds anything pounding did
+        not write; nothing is touched then.
+    """
+    import json
+    from pathlib import Path
+
+    from pounding.io.files import check_writable, write_text
+    from pounding.io.manifest import check_out_folder
+    from pounding.io.output_folder import new_output_folder, remove_stale
+
+    folder = Path(out)
+    if folder.name in ("", ".", ".."):
+        raise ValueError(f"out: {out!s} is not a folder name; give e.g. --out results")
+    check_writable(folder)
+    remove_stale(folder.absolute().parent, restore=folder.absolute())
+    check_out_folder(folder, overwrite, "code-check")
+    data = {"model": source, **check.to_dict()} if source else check.to_dict()
+    with new_output_folder(folder, "code-check", [CODE_CHECK_FILE],
+                           check=lambda: check_out_folder(folder, overwrite, "code-check")
+                           ) as tmp:
+        write_text(tmp / CODE_CHECK_FILE, json.dumps(data, indent=2, ensure_ascii=False)
+                   + "\n")
+    return folder / CODE_CHECK_FILE
