@@ -152,6 +152,8 @@ def test_asce7_22_by_hand(model, combination: str) -> None:
         assert 1e3 * check.rows[1].right == pytest.approx(25.84, abs=0.005)
         assert 1e3 * check.rows[1].required == pytest.approx(57.78, abs=0.005)
         assert not check.rows[1].ok
+        assert 1e3 * check.rows[0].required == pytest.approx(35.76, abs=0.005)
+        assert check.rows[0].ok
     # the property line: each building set back its own δ_M
     apart = code_check(model, "asce7-22", combination=combination, same_property=False,
                        **ASCE)
