@@ -43,13 +43,12 @@ def code_check(model: Any, code: str, **parameters: Any) -> CodeCheck:
         line naming the field and the value.
     """
     import dataclasses
+    import importlib
 
-    if code == "asce7-22":
-        from pounding.studies.codes import asce7_22 as module
-        kind: Any = module.Asce722Parameters
-    elif code == "en1998-1":
-        from pounding.studies.codes import en1998_1 as module
-        kind = module.En19981Parameters
+    if code in CODES:  # one module a code: asce7_22, en1998_1
+        module: Any = importlib.import_module(
+            f"pounding.studies.codes.{code.replace('-', '_').replace('.', '_')}")
+        kind: Any = module.PARAMETERS
     else:
         raise ValueError(f"code: must be one of {', '.join(CODES)} (got {code!r})")
     fields = {f.name: f for f in dataclasses.fields(kind)}

@@ -89,6 +89,10 @@ class Asce722Parameters:
                              f"(got {self.combination!r})")
 
 
+PARAMETERS = Asce722Parameters
+"""The parameters of this code's check."""
+
+
 def check(model: Any, p: Asce722Parameters) -> CodeCheck:
     """The separation ASCE 7-22 §12.12 asks for at every contact level of ``model``,
     beside the model's gap (:class:`~pounding.studies.codes.common.CodeCheck`)."""
@@ -124,12 +128,12 @@ def check(model: Any, p: Asce722Parameters) -> CodeCheck:
                     "combination": p.combination},
         assumptions=(
             "linear elastic analysis of each building alone (its modes at initial stiffness)",
-            "the two-period design response spectrum of §11.4.6 (S_DS, S_D1, T_L), 5 % "
+            ("the two-period design response spectrum of §11.4.6 (S_DS, S_D1, T_L), 5 % "
             "damping; ASCE 7-22 asks for the multi-period spectrum where it is available "
-            "(give that as a table: not yet read by code-check)",
-            "δ_max: every mode, spectrum divided by R/I_e (§12.9.1.2), combined by "
+            "(give that as a table: not yet read by code-check)"),
+            ("δ_max: every mode, spectrum divided by R/I_e (§12.9.1.2), combined by "
             f"{COMBINATIONS[p.combination]}; §12.9.1.4 scaling to the ELF base shear not "
-            "applied",
+            "applied"),
             "the critical location is the contact point itself (no torsion: planar model)",
             ("adjacent structures on the same property (eq. 12.12-2)" if p.same_property else
              "two properties: each building set back δ_M from the line between them"),

@@ -136,6 +136,10 @@ class En19981Parameters:
         return self.q if self.qd is None else self.qd
 
 
+PARAMETERS = En19981Parameters
+"""The parameters of this code's check."""
+
+
 def check(model: Any, p: En19981Parameters) -> CodeCheck:
     """The seismic joint EN 1998-1 §4.4.2.7 asks for at every contact level of ``model``,
     beside the model's gap (:class:`~pounding.studies.codes.common.CodeCheck`)."""
@@ -175,13 +179,13 @@ def check(model: Any, p: En19981Parameters) -> CodeCheck:
                     "combination": p.combination},
         assumptions=(
             "linear elastic analysis of each building alone (its modes at initial stiffness)",
-            "the design spectrum of §3.2.2.5 with the recommended S, T_B, T_C, T_D of "
-            "Tables 3.2/3.3 (no National Annex values), periods beyond 4 s by eq. 3.16",
+            ("the design spectrum of §3.2.2.5 with the recommended S, T_B, T_C, T_D of "
+            "Tables 3.2/3.3 (no National Annex values), periods beyond 4 s by eq. 3.16"),
             f"d_e: every mode, combined by {COMBINATIONS[p.combination]}",
-            "§4.3.4(2) (d_s need not exceed the elastic spectrum's value) not used: "
-            "conservative",
-            "the 0.7 of §4.4.2.7(3) at every floor-to-floor contact; none where a floor "
-            "meets a column",
+            ("§4.3.4(2) (d_s need not exceed the elastic spectrum's value) not used: "
+            "conservative"),
+            ("the 0.7 of §4.4.2.7(3) at every floor-to-floor contact; none where a floor "
+            "meets a column"),
             ("same property (§4.4.2.7(2)b)" if p.same_property else
              "two properties: each building d_s from the line between them (§4.4.2.7(2)a)"),
         ),
