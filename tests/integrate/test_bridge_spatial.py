@@ -70,3 +70,36 @@ def test_the_sweep_columns_read_the_same(run) -> None:
         # the closing, located between output steps, at least the sampled one
         assert row[f"peak_closing_m_{name}"] >= (-openings[:, s]).max() - 1e-12
         assert row[f"peak_closing_m_{name}"] < (-openings[:, s]).max() + 2e-3
+
+
+def test_a_report_rebuilds_the_grounds_of_a_run_on_spatially_varying_ground(
+        tmp_path) -> None:
+    """The Result a report rebuilds from a run folder (for its figures) has the grounds'
+    displacements again: its seats' peak openings are summary.json's (they were those of the
+    decks relative to their own grounds: J1 99 mm against 171 mm)."""
+    import json
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    from pounding.example_files import example_path
+    from pounding.report.run_figures import result_from
+    from pounding.report.run_folder import read_run
+
+    text = Path(example_path("bridge_two_frames.toml")).read_text()
+    text = text.replace("duration = 12.0", "duration = 6.0")
+    text += ("\n[spatial]\npositions = [36.0, 102.0]\n"
+             "wall_positions = { left = 0.0, right = 132.0 }\napparent_velocity = 200.0\n")
+    model_file = tmp_path / "b.toml"
+    model_file.write_text(text)
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-m", "pounding", "run", str(model_file), "--out",
+                           str(out), "--no-figures"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    seats = {s["name"]: s for s in json.loads((out / "summary.json").read_text())["seats"]}
+    rebuilt = result_from(read_run(out))
+    assert rebuilt.building_ground is not None
+    names, openings = seat_openings(rebuilt)
+    for s, name in enumerate(names):
+        assert max(openings[:, s].max(), 0.0) == pytest.approx(seats[name]["peak_opening_m"],
+                                                               rel=1e-9, abs=1e-12)

@@ -276,3 +276,21 @@ def test_the_contact_figure_draws_the_keys_and_no_infinite_gap() -> None:
     keys = [t for t in titles if t.startswith("shear keys")]
     assert len(keys) == 1
     assert not is_bridge_model(model)
+
+
+def test_a_broken_keys_impact_records_no_penetration_past_its_fracture() -> None:
+    """A key's impact ends where it breaks off: its row's largest penetration is the fracture
+    deformation (0.02 m), not how far the deck went on past the broken key (it was 0.05–0.09
+    m), in the kernel's table and the reference's."""
+    from pounding.ground_motion import el_centro
+    from pounding.integrate import simulate
+    from pounding.integrate.reference import simulate_reference
+
+    model = _two_frames()
+    record = el_centro().scaled(1.5).trimmed(4.0)
+    for res in (simulate(model, record, duration=4.0),
+                simulate_reference(model, record, duration=4.0)):
+        broken = [k for k in res.shear_keys if k.failed]
+        assert broken, "no key broke: the check would be empty"
+        rows = res.impact_array
+        assert rows.size and np.all(rows[:, 6] <= 0.02 + 1e-9), rows[:, 6].max()

@@ -149,8 +149,8 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
                     committed[c, V0], committed[c, SLIP], committed[c, DMAX])
                 # a shear key that breaks off here (at its located event, EV_FRACTURE):
                 # its force drops to zero, its impact ends
-                broke = is_broken(ccode[c], tslip) and not is_broken(ccode[c],
-                                                                     committed[c, SLIP])
+                was_broken = is_broken(ccode[c], committed[c, SLIP])
+                broke = is_broken(ccode[c], tslip) and not was_broken
                 committed[c, V0] = tv0
                 committed[c, SLIP] = tslip
                 committed[c, DMAX] = tdmax
@@ -176,7 +176,7 @@ def commit_contacts(x, dx, t_now, ev_c, ev_kind, n, ct, st, out):
                     cpeak[c] = fmax
                     cpeak_t[c] = t_max
                 row = imp_row[c]
-                if row >= 0:
+                if row >= 0 and not was_broken:  # (past its break a key's impact is over)
                     if delta > imp[row, IMP_DMAX]:
                         imp[row, IMP_DMAX] = delta
                     if fmax > imp[row, IMP_PEAK]:

@@ -23,6 +23,8 @@ Bouc–Wen ``h = z``.
 
 from __future__ import annotations
 
+import math
+
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -470,8 +472,10 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
                 else:
                     c = tag[1]
                     d, rate = kin(y, c)
+                    intact = not math.isinf(slips[c])  # (past its break a key's impact is over)
                     slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
-                    impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
+                    if intact:
+                        impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
                     phase[c] = -phase[c]
             if t >= t1:
                 break
@@ -479,8 +483,10 @@ def simulate_reference(model: PoundingModel, motion: GroundMotion | GroundMotion
         for c in range(nc):
             if v0s[c] > 0.0:
                 d, rate = kin(y, c)
+                intact = not math.isinf(slips[c])
                 slips[c] = contact_force(laws[c], d, rate, v0s[c], slips[c])[1]
-                impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
+                if intact:
+                    impacts[open_row[c]][6] = max(impacts[open_row[c]][6], d)
     wall = time.perf_counter() - start
     for q, lk in enumerate(links):
         if lk.kind == "restrainer" and rst_branch[q] == RESTRAINER_YIELDING:

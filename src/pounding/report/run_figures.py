@@ -93,9 +93,13 @@ def result_from(r: RunFolder) -> Any:
         offsets = model.system.offsets
         cols = [offsets[p] + j for p, j in model.yielding_storeys]
         yielding = a("storey_shear")[:, cols]
+    from pounding.studies.between_steps import ground_fields
+
+    grounds = ground_fields(motion, model, dt, t.size)  # (spatially varying ground)
     return Result(model=model, motion=motion, dt=dt, ground=a("ground_acceleration"),
                   displacement=a("displacement"), velocity=a("velocity"),
                   abs_acceleration=a("absolute_acceleration"), penetration=a("penetration"),
                   contact_force=a("contact_force"), energy=energy, impact_array=arr,
                   stats=stats, yielding_shear=yielding,
-                  link_force=a("link_force") if "link_force" in ds.variables else None)
+                  link_force=a("link_force") if "link_force" in ds.variables else None,
+                  **grounds)  # type: ignore[arg-type]

@@ -61,6 +61,11 @@ class KeyState:
     failure_time_s: float | None
 
 
+FRACTURE_TOL = 1e-9
+"""A key whose impact reached its fracture deformation δ_u within this fraction of it broke
+off there (the break is a located event: δ at it is δ_u to the event's tolerance)."""
+
+
 def shear_keys(r: Response) -> list[KeyState]:
     """Every shear key of the run, in contact order (module docstring); empty without
     keys."""
@@ -76,7 +81,10 @@ def shear_keys(r: Response) -> list[KeyState]:
         rows = imp[imp[:, col["contact"]] == c.index]
         dmax = float(rows[:, col["max_penetration"]].max()) if rows.size else 0.0
         du = law.fracture_displacement
-        broken = rows[rows[:, col["max_penetration"]] >= du] if du is not None else rows[:0]
+        # (a key's impact ends where it breaks: its row's largest penetration is δ_u, as
+        # located by the solver's event, to its tolerance)
+        broken = (rows[rows[:, col["max_penetration"]] >= du * (1.0 - FRACTURE_TOL)]
+                  if du is not None else rows[:0])
         failed = bool(broken.shape[0])
         peak = float(r.peak_contact_force[c.index])
         touched = rows.size > 0 and peak > 0.0

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["ground_histories", "hermite_max", "wall_ground_histories"]
+__all__ = ["ground_fields", "ground_histories", "hermite_max", "wall_ground_histories"]
 
 FloatArray = NDArray[np.float64]
 
@@ -102,3 +102,29 @@ def wall_ground_histories(motion: object, dt: float, nt: int
 
     return {side: ground_displacement_on_grid(rec, dt, nt)
             for side, rec in motion.walls.items()}
+
+
+def ground_fields(motion: object, model: object, dt: float, nt: int) -> dict[str, object]:
+    """What :func:`pounding.integrate.simulate` keeps of the grounds in a
+    :class:`~pounding.result.Result` on spatially varying ground (``building_ground``,
+    ``wall_ground``, ``link_ground``), rebuilt from the records as the stepper integrates
+    them — for a Result read back from its files; empty (all None) on one ground."""
+    from pounding.ground_motion.spatial import SpatialMotion
+
+    if not isinstance(motion, SpatialMotion) or len(motion.stations()[1]) < 2:
+        return {}
+    nb = len(model.buildings)  # type: ignore[attr-defined]
+    grounds = ground_histories(motion, nb, dt, nt)
+    building = np.stack([np.column_stack([g[0] for g in grounds]),
+                         np.column_stack([g[1] for g in grounds])])
+    walls = {side: np.stack(g) for side, g in wall_ground_histories(motion, dt, nt).items()}
+    links = model.link_dofs  # type: ignore[attr-defined]
+    link = None
+    if links:
+        ends = np.asarray(model.system.offsets)  # type: ignore[attr-defined]
+        link = np.zeros((2, nt, len(links)))
+        for i, (lo, hi) in enumerate(links):
+            b_lo = int(np.searchsorted(ends, lo, side="right")) - 1
+            b_hi = int(np.searchsorted(ends, hi, side="right")) - 1
+            link[:, :, i] = building[:, :, b_hi] - building[:, :, b_lo]
+    return {"building_ground": building, "wall_ground": walls or None, "link_ground": link}

@@ -146,6 +146,7 @@ def bridge_needed_gaps(cases: StudyCases, table: Any) -> NeededGaps:
                                                                      na_value=np.nan)
                                for j in range(layout.n_joints)]).max(axis=1)
     reached = ok & (closing >= 0.5 * NO_CONTACT_GAP)
+    closed_by = closing.copy()  # (what a run that reached a joint closed it by: its message)
     closing = np.where(ok & ~reached, closing, np.nan)
     nr, nl = len(cases.records), len(cases.needed_levels)
     idx = np.array(cases.needed_rows)
@@ -156,7 +157,7 @@ def bridge_needed_gaps(cases: StudyCases, table: Any) -> NeededGaps:
     stopped = [f"{cases.records[r]} at {cases.needed_levels[li]:g} g, without joint contact: "
                + (str(msg) if not good else f"a joint closed by {c:.3g} m")
                for (r, li), good, far, msg, c in zip(cases.needed_rows, ok, reached,
-                                                     df["error"], closing)
+                                                     df["error"], closed_by)
                if not good or far]
     # the code gaps of every joint from the decks' mean peaks at the gap level
     at_rows = (idx[:, 1] == ia) & ok
