@@ -28,10 +28,10 @@ def animate_cmd(
                                "drawing the largest about a tenth of the tallest height.",
         show_default=False)] = None,
     start: Annotated[float | None, typer.Option(
-        "--start", help="First time animated [s]. Default: the run's start.",
+        "--start", help=opt.escape("First time animated [s]. Default: the run's start."),
         show_default=False)] = None,
     end: Annotated[float | None, typer.Option(
-        "--end", help="Last time animated [s]. Default: the run's end.",
+        "--end", help=opt.escape("Last time animated [s]. Default: the run's end."),
         show_default=False)] = None,
     video: Annotated[bool, typer.Option(
         "--video/--no-video", help="Write the video (MP4 with ffmpeg, else GIF) beside the "
