@@ -33,6 +33,7 @@ from typing import Any
 import typer
 
 from pounding.cli import (  # noqa: F401  (each module registers its commands on ``app``)
+    commands_animate,
     commands_code_check,
     commands_contact,
     commands_ellipse,
