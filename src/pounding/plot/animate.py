@@ -225,8 +225,8 @@ def animation_frames(ds: Any, *, fps: float = 25.0, exaggeration: float | None =
         order = np.argsort(elev[cols], kind="stable")
         cols = [cols[o] for o in order]
         buildings.append(AnimatedBuilding(b, left_edge, width, elev[cols].copy(), u[idx][:, cols]))
-        gap = gap_between.get(i)
-        left_edge += width + (gap * factor if gap is not None else 0.25 * width)
+        between = gap_between.get(i)
+        left_edge += width + (between * factor if between is not None else 0.25 * width)
 
     # the largest force at the output steps since the previous frame (the first: at it)
     bounds = np.concatenate([[idx[0]], idx[:-1] + 1])
@@ -348,7 +348,7 @@ def write_video(frames: AnimationFrames, path: str | Path, *, dpi: int = 80) -> 
     for artist in animated:
         artist.set_animated(True)
     if path.suffix.lower() == ".mp4":
-        writer = animation.FFMpegWriter(fps=frames.fps)
+        writer = animation.FFMpegWriter(fps=frames.fps)  # type: ignore[arg-type]  # (a float is fine)
         with writer.saving(fig, str(path), dpi):
             for i in range(len(frames.time)):
                 draw(i)
