@@ -51,13 +51,14 @@ def match_cmd(
         "--out", "-o", metavar="FILE.AT2", help="The matched record, a PEER .AT2 file (g).",
         show_default=False)] = ...,  # type: ignore[assignment]
     period_range: Annotated[str, typer.Option(
-        "--range", metavar="LO,HI", help="Periods matched \\[s].")] = "0.05,4",
+        "--range", metavar="LO,HI", help="Periods checked \\[s]. The record is matched over
+        "them.")] = "0.05,4",
     tolerance: Annotated[float, typer.Option(
         "--tolerance", metavar="FRACTION", help="Largest |PSA/target - 1| accepted over the "
         "range (0.1 = ±10 %).")] = 0.10,
-    damping: Annotated[float, typer.Option(
-        "--damping", metavar="ZETA", help="Damping ratio of the spectra, a fraction of "
-        "critical (the target's).")] = 0.05,
+    damping: Annotated[str, typer.Option(
+        "--damping", metavar="LIST", help=opt.DAMPING_HELP + " Matching uses one: the "
+        "target's.")] = "0.05",
     iterations: Annotated[int, typer.Option(
         "--iterations", metavar="N", help="Most iterations.")] = 30,
     overwrite: Annotated[bool, typer.Option(
@@ -84,6 +85,12 @@ def match_cmd(
     from pounding.cli.messages import EXIT_FAILED, error_line
 
     _check_out(out, overwrite)
+    from pounding.spectra.response import parse_damping
+
+    zetas = parse_damping(damping, "--damping")
+    if zetas.size != 1:
+        raise ValueError(f"--damping: give one damping ratio, the target's (got {damping!r})")
+    zeta = float(zetas[0])
     parts = [p.strip() for p in period_range.split(",")]
     try:
         lo, hi = (float(p) for p in parts) if len(parts) == 2 else (None, None)
@@ -98,7 +105,7 @@ def match_cmd(
     motion = _read([record], dt, None if units is None else str(units), column=column,
                    time_column=time_column, channel=channel)[0]
     try:
-        result = match_record(motion, spectrum, (lo, hi), damping=damping,
+        result = match_record(motion, spectrum, (lo, hi), damping=zeta,
                               tolerance=tolerance, iterations=iterations)
     except ValueError as exc:
         text = str(exc)
@@ -115,7 +122,7 @@ def match_cmd(
                 caption="PGV, PGD, final velocity and displacement by the trapezoidal rule "
                         "(no baseline correction); Arias intensity π/(2g)∫a² dt")
     console.print(f"PSA within {100 * result.max_misfit:.1f} % of the target at "
-                  f"{result.periods.size} periods {lo:g}–{hi:g} s (ζ = {damping:g})",
+                  f"{result.periods.size} periods {lo:g}–{hi:g} s (ζ = {zeta:g})",
                   highlight=False)
     if not result.converged:
         error_line(f"match: after {result.iterations} iterations the spectrum is within "
