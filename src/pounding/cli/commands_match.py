@@ -51,7 +51,7 @@ def match_cmd(
         "--out", "-o", metavar="FILE.AT2", help="The matched record, a PEER .AT2 file (g).",
         show_default=False)] = ...,  # type: ignore[assignment]
     period_range: Annotated[str, typer.Option(
-        "--range", metavar="LO,HI", help="Periods checked \\[s]. The record is matched over
+        "--range", metavar="LO,HI", help="Periods checked \\[s]. The record is matched over "
         "them.")] = "0.05,4",
     tolerance: Annotated[float, typer.Option(
         "--tolerance", metavar="FRACTION", help="Largest |PSA/target - 1| accepted over the "
