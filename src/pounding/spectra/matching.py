@@ -40,23 +40,10 @@ from pounding.ground_motion.motion import GroundMotion
 from pounding.spectra.design import DesignSpectrum
 from pounding.units import G
 
-__all__ = ["MatchResult", "MatchNotReached", "arias_intensity", "corrected_wavelet",
+__all__ = ["MatchResult", "arias_intensity", "corrected_wavelet",
            "match_record", "sdof_displacements"]
 
 FloatArray = NDArray[np.float64]
-
-
-class MatchNotReached(RuntimeError):
-    """The iteration ended without the spectrum within the tolerance (a result, not bad
-    input): carries the :class:`MatchResult` reached."""
-
-    def __init__(self, result: MatchResult) -> None:
-        super().__init__(
-            f"match: after {result.iterations} iterations the spectrum is within "
-            f"{100 * result.max_misfit:.1f} % of the target over {result.period_range[0]:g}–"
-            f"{result.period_range[1]:g} s, not the {100 * result.tolerance:g} % asked; "
-            "try more --iterations or a record closer to the target")
-        self.result = result
 
 
 def arias_intensity(motion: GroundMotion) -> float:
