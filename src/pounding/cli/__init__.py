@@ -38,6 +38,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_contact,
     commands_ellipse,
     commands_fragility,
+    commands_match,
     commands_gap,
     commands_mitigate,
     commands_pushover,
