@@ -104,12 +104,11 @@ def unfolded(K: np.ndarray, C: np.ndarray, c_links: np.ndarray | None, lo: np.nd
 def link_stations(model: PoundingModel, stations: tuple[int, ...]
                   ) -> list[tuple[int, int, int]]:
     """``(link, left station, right station)`` of every link whose ends stand on different
-    grounds (its left end the row's ``lo`` DOF, :meth:`PoundingModel.storey_arrays`)."""
-    ends = np.asarray(model.system.offsets)
+    grounds (its left end the row's ``lo`` DOF, :meth:`PoundingModel.storey_arrays`, the
+    building of ``link.ends[0]``)."""
     out = []
-    for i, (lo, hi) in enumerate(model.link_dofs):
-        b_lo = int(np.searchsorted(ends, lo, side="right")) - 1
-        b_hi = int(np.searchsorted(ends, hi, side="right")) - 1
+    for i, link in enumerate(model.links):
+        (b_lo, _), (b_hi, _) = link.ends
         if stations[b_lo] != stations[b_hi]:
             out.append((i, stations[b_lo], stations[b_hi]))
     return out

@@ -118,13 +118,9 @@ def ground_fields(motion: object, model: object, dt: float, nt: int) -> dict[str
     building = np.stack([np.column_stack([g[0] for g in grounds]),
                          np.column_stack([g[1] for g in grounds])])
     walls = {side: np.stack(g) for side, g in wall_ground_histories(motion, dt, nt).items()}
-    links = model.link_dofs  # type: ignore[attr-defined]
+    links = model.links  # type: ignore[attr-defined]
     link = None
-    if links:
-        ends = np.asarray(model.system.offsets)  # type: ignore[attr-defined]
-        link = np.zeros((2, nt, len(links)))
-        for i, (lo, hi) in enumerate(links):
-            b_lo = int(np.searchsorted(ends, lo, side="right")) - 1
-            b_hi = int(np.searchsorted(ends, hi, side="right")) - 1
-            link[:, :, i] = building[:, :, b_hi] - building[:, :, b_lo]
+    if links:  # (each link's grounds' offset: its right end's building's less its left's)
+        link = np.stack([building[:, :, lk.ends[1][0]] - building[:, :, lk.ends[0][0]]
+                         for lk in links], axis=2)
     return {"building_ground": building, "wall_ground": walls or None, "link_ground": link}

@@ -95,12 +95,12 @@ def bridge_row(result: Any) -> dict[str, Any]:
     u = np.asarray(result.displacement)[:, decks]
     v = np.asarray(result.velocity)[:, decks]
     ground_u, ground_v = _grounds(result, len(decks), u.shape[0])
-    # the abutments' grounds: their own, or their end deck's
-    walls_ground = getattr(result, "wall_ground", None) or {}
-    wall_u = {"A1": walls_ground["left"][0] if "left" in walls_ground else ground_u[:, 0],
-              "A2": walls_ground["right"][0] if "right" in walls_ground else ground_u[:, -1]}
-    wall_v = {"A1": walls_ground["left"][1] if "left" in walls_ground else ground_v[:, 0],
-              "A2": walls_ground["right"][1] if "right" in walls_ground else ground_v[:, -1]}
+    # the abutments' grounds (displacement, velocity): their own, or their end deck's
+    own = getattr(result, "wall_ground", None) or {}
+    wall_u, wall_v = {}, {}
+    for seat, side, col in (("A1", "left", 0), ("A2", "right", -1)):
+        wall_u[seat], wall_v[seat] = (own[side] if side in own
+                                      else (ground_u[:, col], ground_v[:, col]))
     u, v = u + ground_u, v + ground_v
     walls = {w.name for w in model.walls}
     for s, name in enumerate(names):
