@@ -8,7 +8,7 @@ each was read from):
   spectral shape factor ``C_h(T)`` of the modal method for site classes A–E, ``Z R ≤ 0.7``;
 * NBCC 2020 Sentence 4.1.8.4: the design spectral acceleration ``S(T)`` from the site's
   values at 0.2, 0.5, 1.0, 2.0, 5.0 and 10 s, linear between them;
-* IS 1893 (Part 1):2016 §6.4: ``Sa/g`` for soil types I–III (5 % damping).
+* IS 1893 (Part 1):2016 §6.4: ``Sa/g`` for soil types I–III (5 % damping), to 4 s.
 
 Units: periods in s, spectral accelerations in g.
 """
@@ -41,9 +41,11 @@ methods, as formulas: ``C_h(0) + rise T/0.1`` below 0.1 s, the plateau to ``T_p`
 NBCC_PERIODS: tuple[float, ...] = (0.2, 0.5, 1.0, 2.0, 5.0, 10.0)
 """The periods [s] at which NBCC 2020 gives the site's S(T) (Sentence 4.1.8.4)."""
 
-IS1893_SOIL_CORNERS: dict[str, float] = {"I": 0.40, "II": 0.55, "III": 0.67}
-"""IS 1893 (Part 1):2016 §6.4: the end of the 2.5 plateau of Sa/g [s] by soil type (rock or
-hard soil, medium, soft); the branch beyond is ``2.5 T_c / T`` (1.00/T, 1.36/T, 1.67/T)."""
+IS1893_SOIL_CORNERS: dict[str, tuple[float, float]] = {
+    "I": (0.40, 1.00), "II": (0.55, 1.36), "III": (0.67, 1.67)}
+"""IS 1893 (Part 1):2016 §6.4: by soil type (rock or hard soil, medium or stiff, soft), the
+end of the 2.5 plateau of Sa/g T_c [s] and the coefficient c of the ``c/T`` branch beyond
+(1.00/T, 1.36/T, 1.67/T: not exactly 2.5 T_c)."""
 
 
 def nzs_spectral_shape(periods: Any, site_class: str) -> FloatArray:
@@ -67,9 +69,9 @@ def nbcc2020_sa_g(periods: Any, values: Any) -> FloatArray:
 
 def is1893_sa_g(periods: Any, soil_type: str) -> FloatArray:
     """Sa/g of IS 1893 (Part 1):2016 §6.4 (5 % damping): ``1 + 15 T`` to 0.1 s, 2.5 to
-    ``T_c``, ``2.5 T_c/T`` to 4 s (``T_c`` of :data:`IS1893_SOIL_CORNERS`)."""
-    tc = IS1893_SOIL_CORNERS[soil_type]
+    ``T_c``, ``c/T`` to 4 s (``T_c``, ``c`` of :data:`IS1893_SOIL_CORNERS`)."""
+    tc, c = IS1893_SOIL_CORNERS[soil_type]
     t = np.asarray(periods, dtype=float)
     tt = np.where(t > 0.0, t, 1.0)
     return np.asarray(np.where(t <= 0.1, 1.0 + 15.0 * t,
-                               np.where(t <= tc, 2.5, 2.5 * tc / tt)), dtype=float)
+                               np.where(t <= tc, 2.5, c / tt)), dtype=float)

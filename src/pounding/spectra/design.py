@@ -328,8 +328,8 @@ class DesignSpectrum:
         """The IS 1893 (Part 1):2016 §6.4 design acceleration coefficient
         ``A_h = (Z/2) (I/R) (Sa/g)`` [g], 5 % damping, on 0–4 s.
 
-        ``Sa/g`` is ``1 + 15 T`` to 0.1 s, 2.5 to T_c, ``2.5 T_c/T`` to 4 s, with
-        ``T_c`` = 0.40, 0.55, 0.67 s for soil types I, II, III
+        ``Sa/g`` is ``1 + 15 T`` to 0.1 s, 2.5 to T_c, ``c/T`` to 4 s, with
+        ``T_c`` = 0.40, 0.55, 0.67 s and ``c`` = 1.00, 1.36, 1.67 for soil types I, II, III
         (:data:`pounding.spectra.code_spectra.IS1893_SOIL_CORNERS`). ``r = 1`` and
         ``importance = 1`` give the elastic ``(Z/2) Sa/g``.
 
@@ -353,7 +353,7 @@ class DesignSpectrum:
         if soil not in IS1893_SOIL_CORNERS:
             raise ValueError(f"soil_type: must be I, II or III (IS 1893 (Part 1):2016 "
                              f"Table 4) (got {soil_type!r})")
-        corners = np.array([0.1, IS1893_SOIL_CORNERS[soil]])
+        corners = np.array([0.1, IS1893_SOIL_CORNERS[soil][0]])
         t = np.unique(np.concatenate([np.linspace(0.0, 4.0, n), corners]))
         formula = functools.partial(_scaled, shape=functools.partial(is1893_sa_g,
                                                                      soil_type=soil),

@@ -130,7 +130,8 @@ def check(model: Any, p: Asce722Parameters) -> CodeCheck:
     from pounding.studies.codes.asce7_22_elf import elf, modal_base_shear, response_coefficient
 
     spectrum = DesignSpectrum.asce7(p.sds, p.sd1, p.tl)
-    site = {"sds": p.sds, "sd1": p.sd1, "tl": p.tl, "r": p.r, "ie": p.ie, "s1": p.s1}
+    site: dict[str, Any] = {"sds": p.sds, "sd1": p.sd1, "tl": p.tl, "r": p.r, "ie": p.ie,
+                            "s1": p.s1}
 
     def design_sa_g(periods: Any) -> Any:  # §12.9.1.2: the spectrum divided by R/I_e
         return spectrum.sa_g(periods) * p.ie / p.r

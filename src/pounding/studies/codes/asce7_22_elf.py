@@ -83,7 +83,7 @@ def elf(building: Any, *, sds: float, sd1: float, tl: float, r: float, ie: float
     levels = np.asarray(building.floor_levels, dtype=float)
     iota = np.asarray(building.influence_vector(), dtype=float)
     lateral = iota != 0.0
-    if np.any(levels[lateral] <= 0.0):
+    if getattr(building, "isolator", None) is not None or np.any(levels[lateral] <= 0.0):
         raise ValueError(f"procedure: the ELF of ASCE 7-22 §12.8 is for a fixed-base "
                          f"building; {building.name or 'a building'} moves at the ground "
                          "(base-isolated: ASCE 7-22 Chapter 17, not covered); use "

@@ -43,7 +43,7 @@ def cqc_matrix(omegas: FloatArray, zeta: float) -> FloatArray:
             / ((1.0 - beta * beta) ** 2 + 4.0 * z2 * beta * (1.0 + beta) ** 2))
 
 
-def modal_point_peak(building: Any, point: Any, sa_g: Callable[[FloatArray], FloatArray],
+def modal_point_peak(building: Any, point: Any, sa_g: Callable[[FloatArray], Any],
                      combination: str = "cqc") -> tuple[float, list[float]]:
     """Peak displacement [m] of one contact point of a building by modal response spectrum
     analysis, every mode kept (Chopra §13.8).

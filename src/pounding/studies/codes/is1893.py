@@ -32,8 +32,8 @@ CODE = "is1893"
 TITLE = "IS 1893 (Part 1):2016 §7.11.3"
 
 CLAUSES: dict[str, str] = {
-    "§6.4": "A_h = (Z/2)(I/R)(Sa/g); Sa/g = 1 + 15T (T ≤ 0.1 s), 2.5 (≤ T_c), 2.5 T_c/T "
-            "(≤ 4 s), T_c = 0.40/0.55/0.67 s (soil I/II/III)",
+    "§6.4": "A_h = (Z/2)(I/R)(Sa/g); Sa/g = 1 + 15T (T ≤ 0.1 s), 2.5 (≤ T_c), c/T "
+            "(≤ 4 s); T_c, c = 0.40, 1.00 / 0.55, 1.36 / 0.67, 1.67 (soil I/II/III)",
     "§7.7.5": "modal response spectrum analysis: CQC (or SRSS)",
     "§7.11.1": "Δ: storey displacement under the design lateral force",
     "§7.11.3": "separation ≥ R (Δ1 + Δ2)",
