@@ -1,7 +1,10 @@
 """Design spectra: :class:`DesignSpectrum`, a code's elastic design response spectrum as a
 table of periods and values, linearly interpolated: the ASCE 7-16 §11.4.6 spectrum built
 from ``S_DS``, ``S_D1`` and ``T_L`` (:meth:`DesignSpectrum.asce7`), the Eurocode 8
-elastic spectrum of EN 1998-1:2004 §3.2.2.2 (:meth:`DesignSpectrum.eurocode8`), and a
+elastic spectrum of EN 1998-1:2004 §3.2.2.2 (:meth:`DesignSpectrum.eurocode8`), the
+spectra of the code checks of NZS 1170.5, NBCC 2020 and IS 1893
+(:meth:`DesignSpectrum.nzs1170_5`, :meth:`DesignSpectrum.nbcc2020`,
+:meth:`DesignSpectrum.is1893`, formulas in :mod:`pounding.spectra.code_spectra`), and a
 user's table; spectrum files in TOML or CSV (:meth:`DesignSpectrum.from_file`). See
 ``docs/spectra.md`` and ``docs/gap.md``.
 
