@@ -379,3 +379,29 @@ def test_cli_prints_and_writes(model_file: Path, tmp_path: Path, argv: list[str]
     assert data["levels"][1]["required_mm"] == pytest.approx(required, abs=0.005)
     assert data["levels"][1]["clause"] == clause
     assert any("linear" in a for a in data["assumptions"])
+
+
+def test_long_periods(tmp_path: Path) -> None:
+    """A very flexible pair (T1 = 12.7 and 9.0 s): NZS 1170.5 and NBCC 2020 go on with
+    their long-period branches (3 b/T², S(10)) beyond their tables' 10 s; IS 1893's Sa/g
+    ends at 4 s: refused, one line naming the model and the period."""
+    from pounding.config import load_config
+    from pounding.studies.codes import code_check
+
+    from pounding.plausibility import PlausibilityWarning
+
+    with pytest.warns(PlausibilityWarning, match="above 10 s"):  # meant: beyond 10 s
+        soft = load_config(_model_file(tmp_path, 4.0e7 / 625, 8.0e7 / 625)).build()[0]
+    nzs = code_check(soft, "nzs1170.5", z=0.4, ru=1.0, site_class="C", mu=1.0,
+                     combination="srss")
+    t1 = _modes(4.0e7 / 625)[0][0]
+    assert t1 == pytest.approx(12.708, abs=1e-3)
+    assert nzs.rows[1].left == pytest.approx(
+        _srss(4.0e7 / 625, lambda t: 0.4 * (3.96 / t ** 2 if t > 3 else 1.32 / t if t > 1.5
+                                            else min(2.93, 2 * (0.5 / t) ** 0.75)), 1),
+        rel=1e-9)
+    nbcc = code_check(soft, "nbcc2020", s_table="0.8,0.7,0.4,0.2,0.06,0.02", rd=1, ro=1,
+                      ie=1, combination="srss")
+    assert nbcc.rows[1].left > 0.0
+    with pytest.raises(ValueError, match=r"model: building A's first period is 12\.7 s"):
+        code_check(soft, "is1893", z=0.36, importance=1.2, r=5.0, soil_type="II")

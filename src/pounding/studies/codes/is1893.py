@@ -91,6 +91,11 @@ def check(model: Any, p: Is1893Parameters) -> CodeCheck:
     the model's gap (:class:`~pounding.studies.codes.common.CodeCheck`)."""
     from pounding.spectra import DesignSpectrum
 
+    for name, periods in building_periods(model.buildings).items():
+        if periods[0] > 4.0:
+            raise ValueError(f"model: building {name}'s first period is {periods[0]:.3g} s, "
+                             "beyond the 4 s where IS 1893 §6.4's Sa/g ends (a site-specific "
+                             "spectrum is needed there): not covered")
     spectrum = DesignSpectrum.is1893(p.z, p.importance, p.r, p.soil_type)
 
     def r_delta(building: Any, point: Any) -> float:  # R Δ (§7.11.1, §7.11.3)

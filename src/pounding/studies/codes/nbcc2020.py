@@ -102,7 +102,8 @@ def check(model: Any, p: Nbcc2020Parameters) -> CodeCheck:
     ``model``, beside the model's gap (:class:`~pounding.studies.codes.common.CodeCheck`)."""
     from pounding.spectra import DesignSpectrum
 
-    spectrum = DesignSpectrum.nbcc2020(p.s_table)
+    longest = max(ts[0] for ts in building_periods(model.buildings).values())
+    spectrum = DesignSpectrum.nbcc2020(p.s_table, t_max=max(10.0, 1.01 * longest))
     reduction = p.ie / (p.rd * p.ro)
 
     def design_sa_g(periods: Any) -> Any:  # 4.1.8.12: the spectrum × I_E / (R_d R_o)

@@ -97,7 +97,9 @@ def check(model: Any, p: Nzs11705Parameters) -> CodeCheck:
     the model's gap (:class:`~pounding.studies.codes.common.CodeCheck`)."""
     from pounding.spectra import DesignSpectrum
 
-    spectrum = DesignSpectrum.nzs1170_5(p.z, p.ru, p.site_class)
+    longest = max(ts[0] for ts in building_periods(model.buildings).values())
+    spectrum = DesignSpectrum.nzs1170_5(p.z, p.ru, p.site_class,
+                                        t_max=max(10.0, 1.01 * longest))
     factors = {}
     for i, b in enumerate(model.buildings):
         t1 = float(b.modes().periods[0])
