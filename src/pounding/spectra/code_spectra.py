@@ -15,13 +15,17 @@ Units: periods in s, spectral accelerations in g.
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["IS1893_SOIL_CORNERS", "NBCC_PERIODS", "NZS_SITE_CLASSES", "is1893_sa_g",
-           "nbcc2020_sa_g", "nzs_spectral_shape"]
+from pounding.validation import positive
+
+__all__ = ["IS1893_SOIL_CORNERS", "NBCC_PERIODS", "NZS_SITE_CLASSES", "is1893",
+           "is1893_sa_g", "nbcc2020", "nbcc2020_sa_g", "nzs1170_5", "nzs_spectral_shape"]
 
 FloatArray = NDArray[np.float64]
 
@@ -75,3 +79,51 @@ def is1893_sa_g(periods: Any, soil_type: str) -> FloatArray:
     tt = np.where(t > 0.0, t, 1.0)
     return np.asarray(np.where(t <= 0.1, 1.0 + 15.0 * t,
                                np.where(t <= tc, 2.5, c / tt)), dtype=float)
+
+
+Closed = tuple[Callable[[FloatArray], FloatArray], FloatArray, str]
+"""A code's spectrum as ``(formula of T → Sa [g], corner periods [s], name)``."""
+
+
+def _scaled(t: Any, *, shape: Callable[[Any], FloatArray], factor: float) -> FloatArray:
+    """``factor × shape(t)``: a code's spectral shape scaled to the site [g]."""
+    return factor * np.asarray(shape(t), dtype=float)
+
+
+def nzs1170_5(z: float, return_factor: float, site_class: str) -> Closed:
+    """NZS 1170.5 §3.1: ``C(T) = C_h(T) min(Z R, 0.7)`` (N = 1), checked inputs."""
+    z = positive("z", z)
+    ru = positive("return_factor", return_factor)
+    site = str(site_class).strip().upper()
+    if site not in NZS_SITE_CLASSES:
+        raise ValueError(f"site_class: must be one of A, B, C, D, E (NZS 1170.5 §3.1.3) "
+                         f"(got {site_class!r})")
+    formula = functools.partial(_scaled, factor=min(z * ru, 0.7),
+                                shape=functools.partial(nzs_spectral_shape, site_class=site))
+    return (formula, np.array([0.1, NZS_SITE_CLASSES[site][3], 1.5, 3.0]),
+            f"NZS 1170.5 site class {site} (Z={z:g}, R={ru:g})")
+
+
+def nbcc2020(values: Any) -> Closed:
+    """NBCC 2020 S(T) from its six values (:func:`nbcc2020_sa_g`), checked inputs."""
+    v = np.asarray(values, dtype=float).ravel()
+    if v.size != len(NBCC_PERIODS) or not np.all(np.isfinite(v)) or np.any(v < 0.0) \
+            or v[0] <= 0.0:
+        raise ValueError("values: need S(T) at 0.2, 0.5, 1, 2, 5 and 10 s, 6 finite "
+                         f"numbers >= 0 [g], the first > 0 (got {v.tolist()!r})")
+    return (functools.partial(nbcc2020_sa_g, values=v), np.array(NBCC_PERIODS),
+            "NBCC 2020 S(T) (" + ", ".join(f"{x:g}" for x in v) + " g)")
+
+
+def is1893(z: float, importance: float, r: float, soil_type: str) -> Closed:
+    """IS 1893 §6.4: ``A_h = (Z/2)(I/R) Sa/g`` (:func:`is1893_sa_g`), checked inputs."""
+    factor = positive("z", z) / 2.0 * positive("importance", importance) / positive("r", r)
+    soil = {"1": "I", "2": "II", "3": "III"}.get(str(soil_type).strip(),
+                                                str(soil_type).strip().upper())
+    if soil not in IS1893_SOIL_CORNERS:
+        raise ValueError(f"soil_type: must be I, II or III (IS 1893 (Part 1):2016 Table 4) "
+                         f"(got {soil_type!r})")
+    formula = functools.partial(_scaled, factor=factor,
+                                shape=functools.partial(is1893_sa_g, soil_type=soil))
+    return (formula, np.array([0.1, IS1893_SOIL_CORNERS[soil][0]]),
+            f"IS 1893 soil type {soil} (Z={z:g}, I={importance:g}, R={r:g})")

@@ -260,111 +260,60 @@ class DesignSpectrum:
                   t_max: float = 10.0, n: int = 400, name: str | None = None
                   ) -> DesignSpectrum:
         """The NZS 1170.5:2004 §3.1 elastic site spectrum ``C(T) = C_h(T) Z R N(T, D)`` [g]
-        for the modal method, with ``Z R ≤ 0.7`` and the near-fault factor ``N = 1``.
-
-        ``C_h(T)`` is Table 3.1's spectral shape factor for site class A–E
-        (:data:`pounding.spectra.code_spectra.NZS_SITE_CLASSES`). Tabulated on ``n`` periods
-        from 0 to ``t_max`` plus the corner periods.
+        for the modal method, ``Z R ≤ 0.7``, near-fault factor ``N = 1``; ``C_h(T)`` of
+        Table 3.1 for site class A–E (:func:`pounding.spectra.code_spectra.nzs1170_5`).
+        Tabulated on ``n`` periods from 0 to ``t_max`` plus the corner periods.
 
         Parameters
         ----------
         z : float
-            Hazard factor Z (§3.1.4), > 0.
+            Hazard factor Z, > 0.
         return_factor : float
-            Return period factor R_u or R_s (Table 3.5), > 0.
+            Return period factor R_u or R_s, > 0.
         site_class : {"A", "B", "C", "D", "E"}
-            Site subsoil class (§3.1.3).
+            Site subsoil class.
         """
-        from pounding.spectra.code_spectra import NZS_SITE_CLASSES, nzs_spectral_shape
+        from pounding.spectra import code_spectra
 
-        z = positive("z", z)
-        ru = positive("return_factor", return_factor)
-        site = str(site_class).strip().upper()
-        if site not in NZS_SITE_CLASSES:
-            raise ValueError(f"site_class: must be one of A, B, C, D, E (NZS 1170.5 §3.1.3) "
-                             f"(got {site_class!r})")
-        zr = min(z * ru, 0.7)
-        top = positive("t_max", t_max)
-        corners = np.array([0.1, NZS_SITE_CLASSES[site][3], 1.5, 3.0])
-        t = np.unique(np.concatenate([np.linspace(0.0, top, n), corners]))
-        t = t[t <= top]
-        formula = functools.partial(_scaled, shape=functools.partial(nzs_spectral_shape,
-                                                                     site_class=site),
-                                    factor=zr)
-        return cls(t, formula(t), kind="Sa", units="g", formula=formula,
-                   corner_periods=corners,
-                   name=name or f"NZS 1170.5 site class {site} (Z={z:g}, R={ru:g})")
+        return cls._closed_form(*code_spectra.nzs1170_5(z, return_factor, site_class),
+                                t_max, n, name)
 
     @classmethod
     def nbcc2020(cls, values: ArrayLike, t_max: float = 10.0, n: int = 400,
                  name: str | None = None) -> DesignSpectrum:
         """The NBCC 2020 design spectral acceleration S(T) [g] (Sentence 4.1.8.4) from the
-        site's values at 0.2, 0.5, 1.0, 2.0, 5.0 and 10 s
-        (:data:`pounding.spectra.code_spectra.NBCC_PERIODS`): S(0.2) below 0.2 s, linear
-        between, S(10) beyond.
+        site's six values at 0.2, 0.5, 1.0, 2.0, 5.0 and 10 s (each ≥ 0, the first > 0):
+        S(0.2) below 0.2 s, linear between, S(10) beyond
+        (:func:`pounding.spectra.code_spectra.nbcc2020`)."""
+        from pounding.spectra import code_spectra
 
-        Parameters
-        ----------
-        values : array_like, shape (6,)
-            S(0.2), S(0.5), S(1.0), S(2.0), S(5.0), S(10.0) [g] for the site class, each
-            ≥ 0, the first > 0.
-        """
-        from pounding.spectra.code_spectra import NBCC_PERIODS, nbcc2020_sa_g
-
-        v = np.asarray(values, dtype=float).ravel()
-        if v.size != len(NBCC_PERIODS) or not np.all(np.isfinite(v)) or np.any(v < 0.0) \
-                or v[0] <= 0.0:
-            raise ValueError("values: need S(T) at 0.2, 0.5, 1, 2, 5 and 10 s, 6 finite "
-                             f"numbers >= 0 [g], the first > 0 (got {v.tolist()!r})")
-        top = positive("t_max", t_max)
-        corners = np.array(NBCC_PERIODS)
-        t = np.unique(np.concatenate([np.linspace(0.0, top, n), corners]))
-        t = t[t <= top]
-        formula = functools.partial(nbcc2020_sa_g, values=v)
-        return cls(t, formula(t), kind="Sa", units="g", formula=formula,
-                   corner_periods=corners,
-                   name=name or "NBCC 2020 S(T) (" + ", ".join(f"{x:g}" for x in v) + " g)")
+        return cls._closed_form(*code_spectra.nbcc2020(values), t_max, n, name)
 
     @classmethod
     def is1893(cls, z: float, importance: float, r: float, soil_type: str,
                n: int = 400, name: str | None = None) -> DesignSpectrum:
         """The IS 1893 (Part 1):2016 §6.4 design acceleration coefficient
-        ``A_h = (Z/2) (I/R) (Sa/g)`` [g], 5 % damping, on 0–4 s.
-
-        ``Sa/g`` is ``1 + 15 T`` to 0.1 s, 2.5 to T_c, ``c/T`` to 4 s, with
-        ``T_c`` = 0.40, 0.55, 0.67 s and ``c`` = 1.00, 1.36, 1.67 for soil types I, II, III
-        (:data:`pounding.spectra.code_spectra.IS1893_SOIL_CORNERS`). ``r = 1`` and
-        ``importance = 1`` give the elastic ``(Z/2) Sa/g``.
-
-        Parameters
-        ----------
-        z : float
-            Zone factor Z (Table 3), > 0.
-        importance : float
-            Importance factor I (Table 8), > 0.
-        r : float
-            Response reduction factor R (Table 9), > 0.
-        soil_type : {"I", "II", "III"}
-            Rock or hard soil, medium or stiff soil, soft soil (also 1, 2, 3).
+        ``A_h = (Z/2) (I/R) (Sa/g)`` [g], 5 % damping, on 0–4 s: ``Sa/g`` = ``1 + 15 T``
+        to 0.1 s, 2.5 to T_c, ``c/T`` to 4 s, with ``T_c`` = 0.40, 0.55, 0.67 s and
+        ``c`` = 1.00, 1.36, 1.67 for soil types I, II, III (also 1, 2, 3)
+        (:func:`pounding.spectra.code_spectra.is1893`). ``r = importance = 1`` gives the
+        elastic ``(Z/2) Sa/g``.
         """
-        from pounding.spectra.code_spectra import IS1893_SOIL_CORNERS, is1893_sa_g
+        from pounding.spectra import code_spectra
 
-        z = positive("z", z)
-        factor = z / 2.0 * positive("importance", importance) / positive("r", r)
-        soil = {"1": "I", "2": "II", "3": "III"}.get(str(soil_type).strip(),
-                                                    str(soil_type).strip().upper())
-        if soil not in IS1893_SOIL_CORNERS:
-            raise ValueError(f"soil_type: must be I, II or III (IS 1893 (Part 1):2016 "
-                             f"Table 4) (got {soil_type!r})")
-        corners = np.array([0.1, IS1893_SOIL_CORNERS[soil][0]])
-        t = np.unique(np.concatenate([np.linspace(0.0, 4.0, n), corners]))
-        formula = functools.partial(_scaled, shape=functools.partial(is1893_sa_g,
-                                                                     soil_type=soil),
-                                    factor=factor)
+        return cls._closed_form(*code_spectra.is1893(z, importance, r, soil_type), 4.0, n,
+                                name)
+
+    @classmethod
+    def _closed_form(cls, formula: Callable[[FloatArray], FloatArray], corners: FloatArray,
+                     label: str, t_max: float, n: int, name: str | None) -> DesignSpectrum:
+        """A code's spectrum [g] from its formula, tabulated on ``n`` periods from 0 to
+        ``t_max`` plus its corner periods."""
+        top = positive("t_max", t_max)
+        t = np.unique(np.concatenate([np.linspace(0.0, top, n), corners]))
+        t = t[t <= top]
         return cls(t, formula(t), kind="Sa", units="g", formula=formula,
-                   corner_periods=corners,
-                   name=name or f"IS 1893 soil type {soil} (Z={z:g}, I={importance:g}, "
-                                f"R={r:g})")
+                   corner_periods=corners, name=name or label)
 
     @classmethod
     def from_file(cls, path: str | os.PathLike[str]) -> DesignSpectrum:
@@ -512,8 +461,3 @@ def _ec8_sa(t: FloatArray, *, ag: float, soil: float, tb: float, tc: float, td: 
                              np.where(t <= td, plateau * tc / tt,
                                       plateau * tc * td / tt ** 2)))
 
-
-def _scaled(t: FloatArray, *, shape: Callable[[FloatArray], FloatArray],
-            factor: float) -> FloatArray:
-    """``factor × shape(t)``: a code's spectral shape scaled to the site [g]."""
-    return factor * np.asarray(shape(t), dtype=float)

@@ -17,7 +17,8 @@ from numpy.typing import NDArray
 
 from pounding.units import G
 
-__all__ = ["COMBINATIONS", "CodeCheck", "CodeCheckRow", "building_periods", "check_fields",
+__all__ = ["COMBINATIONS", "SPECTRUM_DAMPING", "CodeCheck", "CodeCheckRow", "building_periods",
+           "check_fields", "cqc_matrix",
            "modal_point_peak", "pair_contacts", "separation_rows"]
 
 FloatArray = NDArray[np.float64]
@@ -196,14 +197,17 @@ class CodeCheck:
     Attributes
     ----------
     code : str
-        The code's key (``"asce7-22"``, ``"en1998-1"``).
+        The code's key (``"asce7-22"``, ``"en1998-1"``, ``"nzs1170.5"``, ``"nbcc2020"``,
+        ``"is1893"``).
     title : str
         The code's name and edition.
     displacement : str
-        What the ``left`` and ``right`` columns are (δ_M, d_s), with the clause.
+        What the ``left`` and ``right`` columns are (δ_M, d_s, d, Δ, R Δ), with the
+        clause.
     rows : tuple of CodeCheckRow
     parameters : dict
-        The code's inputs as used (including defaults taken).
+        The code's inputs as used (including defaults taken); ``"buildings"``, where
+        present, what the code derived per building (ASCE 7-22: T, C_s, W, V, …).
     assumptions : tuple of str
         What the check assumes, in plain words.
     clauses : dict
