@@ -1,6 +1,8 @@
 """What every code's separation check shares: the modal response spectrum analysis of a
-model's buildings at their contact points, and the table the check returns
-(:class:`CodeCheck`, one row per contact level of each pair of neighbours).
+model's buildings at their contact points (:func:`modal_point_peak`), the checks of the
+parameters (:func:`check_fields`), the rows of neighbours' displacements combined by a
+code's rule (:func:`separation_rows`), and the table the check returns (:class:`CodeCheck`,
+one row per contact level of each pair of neighbours).
 
 Units: m, s inside; the table's ``to_dict`` states its units (mm).
 """
