@@ -3,8 +3,9 @@ its period.
 
 * :mod:`pounding.spectra.design` -- code design spectra: :class:`DesignSpectrum`, a table of
   Sa or Sd against the period (from TOML or CSV), the ASCE 7-16 §11.4.6 spectrum
-  (:meth:`DesignSpectrum.asce7`) and the Eurocode 8 spectrum, EN 1998-1 §3.2.2.2
-  (:meth:`DesignSpectrum.eurocode8`);
+  (:meth:`DesignSpectrum.asce7`), the Eurocode 8 spectrum, EN 1998-1 §3.2.2.2
+  (:meth:`DesignSpectrum.eurocode8`), and those of NZS 1170.5, NBCC 2020 and IS 1893
+  (:mod:`pounding.spectra.code_spectra`);
 * :mod:`pounding.spectra.modal` -- a building's peak floor displacements from a spectrum,
   fundamental mode only (:func:`spectral_displacements`, :func:`fundamental_mode`);
 * :mod:`pounding.spectra.response` -- elastic response spectra of records (Sd, PSV, PSA,

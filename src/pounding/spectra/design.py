@@ -1,7 +1,10 @@
 """Design spectra: :class:`DesignSpectrum`, a code's elastic design response spectrum as a
 table of periods and values, linearly interpolated: the ASCE 7-16 §11.4.6 spectrum built
 from ``S_DS``, ``S_D1`` and ``T_L`` (:meth:`DesignSpectrum.asce7`), the Eurocode 8
-elastic spectrum of EN 1998-1:2004 §3.2.2.2 (:meth:`DesignSpectrum.eurocode8`), and a
+elastic spectrum of EN 1998-1:2004 §3.2.2.2 (:meth:`DesignSpectrum.eurocode8`), the
+spectra of the code checks of NZS 1170.5, NBCC 2020 and IS 1893
+(:meth:`DesignSpectrum.nzs1170_5`, :meth:`DesignSpectrum.nbcc2020`,
+:meth:`DesignSpectrum.is1893`, formulas in :mod:`pounding.spectra.code_spectra`), and a
 user's table; spectrum files in TOML or CSV (:meth:`DesignSpectrum.from_file`). See
 ``docs/spectra.md`` and ``docs/gap.md``.
 
@@ -253,6 +256,66 @@ class DesignSpectrum:
                                 f"γI={gi:g}, ζ={100 * zeta:g} %)")
 
     @classmethod
+    def nzs1170_5(cls, z: float, return_factor: float, site_class: str,
+                  t_max: float = 10.0, n: int = 400, name: str | None = None
+                  ) -> DesignSpectrum:
+        """The NZS 1170.5:2004 §3.1 elastic site spectrum ``C(T) = C_h(T) Z R N(T, D)`` [g]
+        for the modal method, ``Z R ≤ 0.7``, near-fault factor ``N = 1``; ``C_h(T)`` of
+        Table 3.1 for site class A–E (:func:`pounding.spectra.code_spectra.nzs1170_5`).
+        Tabulated on ``n`` periods from 0 to ``t_max`` plus the corner periods.
+
+        Parameters
+        ----------
+        z : float
+            Hazard factor Z, > 0.
+        return_factor : float
+            Return period factor R_u or R_s, > 0.
+        site_class : {"A", "B", "C", "D", "E"}
+            Site subsoil class.
+        """
+        from pounding.spectra import code_spectra
+
+        return cls._closed_form(*code_spectra.nzs1170_5(z, return_factor, site_class),
+                                t_max, n, name)
+
+    @classmethod
+    def nbcc2020(cls, values: ArrayLike, t_max: float = 10.0, n: int = 400,
+                 name: str | None = None) -> DesignSpectrum:
+        """The NBCC 2020 design spectral acceleration S(T) [g] (Sentence 4.1.8.4) from the
+        site's six values at 0.2, 0.5, 1.0, 2.0, 5.0 and 10 s (each ≥ 0, the first > 0):
+        S(0.2) below 0.2 s, linear between, S(10) beyond
+        (:func:`pounding.spectra.code_spectra.nbcc2020`)."""
+        from pounding.spectra import code_spectra
+
+        return cls._closed_form(*code_spectra.nbcc2020(values), t_max, n, name)
+
+    @classmethod
+    def is1893(cls, z: float, importance: float, r: float, soil_type: str,
+               n: int = 400, name: str | None = None) -> DesignSpectrum:
+        """The IS 1893 (Part 1):2016 §6.4 design acceleration coefficient
+        ``A_h = (Z/2) (I/R) (Sa/g)`` [g], 5 % damping, on 0–4 s: ``Sa/g`` = ``1 + 15 T``
+        to 0.1 s, 2.5 to T_c, ``c/T`` to 4 s, with ``T_c`` = 0.40, 0.55, 0.67 s and
+        ``c`` = 1.00, 1.36, 1.67 for soil types I, II, III (also 1, 2, 3)
+        (:func:`pounding.spectra.code_spectra.is1893`). ``r = importance = 1`` gives the
+        elastic ``(Z/2) Sa/g``.
+        """
+        from pounding.spectra import code_spectra
+
+        return cls._closed_form(*code_spectra.is1893(z, importance, r, soil_type), 4.0, n,
+                                name)
+
+    @classmethod
+    def _closed_form(cls, formula: Callable[[FloatArray], FloatArray], corners: FloatArray,
+                     label: str, t_max: float, n: int, name: str | None) -> DesignSpectrum:
+        """A code's spectrum [g] from its formula, tabulated on ``n`` periods from 0 to
+        ``t_max`` plus its corner periods."""
+        top = positive("t_max", t_max)
+        t = np.unique(np.concatenate([np.linspace(0.0, top, n), corners]))
+        t = t[t <= top]
+        return cls(t, formula(t), kind="Sa", units="g", formula=formula,
+                   corner_periods=corners, name=name or label)
+
+    @classmethod
     def from_file(cls, path: str | os.PathLike[str]) -> DesignSpectrum:
         """Read a spectrum file: CSV (suffix ``.csv``) or TOML (any other suffix).
 
@@ -397,3 +460,4 @@ def _ec8_sa(t: FloatArray, *, ag: float, soil: float, tb: float, tc: float, td: 
                     np.where(t <= tc, plateau,
                              np.where(t <= td, plateau * tc / tt,
                                       plateau * tc * td / tt ** 2)))
+

@@ -1,6 +1,8 @@
 """What every code's separation check shares: the modal response spectrum analysis of a
-model's buildings at their contact points, and the table the check returns
-(:class:`CodeCheck`, one row per contact level of each pair of neighbours).
+model's buildings at their contact points (:func:`modal_point_peak`), the checks of the
+parameters (:func:`check_fields`), the rows of neighbours' displacements combined by a
+code's rule (:func:`separation_rows`), and the table the check returns (:class:`CodeCheck`,
+one row per contact level of each pair of neighbours).
 
 Units: m, s inside; the table's ``to_dict`` states its units (mm).
 """
@@ -17,8 +19,9 @@ from numpy.typing import NDArray
 
 from pounding.units import G
 
-__all__ = ["COMBINATIONS", "CodeCheck", "CodeCheckRow", "building_periods", "modal_point_peak",
-           "pair_contacts"]
+__all__ = ["COMBINATIONS", "SPECTRUM_DAMPING", "CodeCheck", "CodeCheckRow", "building_periods",
+           "check_fields", "cqc_matrix",
+           "modal_point_peak", "pair_contacts", "separation_rows"]
 
 FloatArray = NDArray[np.float64]
 
@@ -33,7 +36,7 @@ SPECTRUM_DAMPING = 0.05
 """The damping ratio the code spectra are for, used in the CQC correlation."""
 
 
-def _cqc_matrix(omegas: FloatArray, zeta: float) -> FloatArray:
+def cqc_matrix(omegas: FloatArray, zeta: float) -> FloatArray:
     """Der Kiureghian's (1981) correlation ρ_ij of modes i, j of equal damping ζ:
     ``8 ζ² (1 + β) β^1.5 / ((1 − β²)² + 4 ζ² β (1 + β)²)``, ``β = ω_j/ω_i`` (Chopra,
     *Dynamics of Structures*, eq. 13.7.10)."""
@@ -43,7 +46,7 @@ def _cqc_matrix(omegas: FloatArray, zeta: float) -> FloatArray:
             / ((1.0 - beta * beta) ** 2 + 4.0 * z2 * beta * (1.0 + beta) ** 2))
 
 
-def modal_point_peak(building: Any, point: Any, sa_g: Callable[[FloatArray], FloatArray],
+def modal_point_peak(building: Any, point: Any, sa_g: Callable[[FloatArray], Any],
                      combination: str = "cqc") -> tuple[float, list[float]]:
     """Peak displacement [m] of one contact point of a building by modal response spectrum
     analysis, every mode kept (Chopra §13.8).
@@ -78,9 +81,76 @@ def modal_point_peak(building: Any, point: Any, sa_g: Callable[[FloatArray], Flo
     if combination == "srss":
         peak = math.sqrt(float(np.sum(r * r)))
     else:
-        rho = _cqc_matrix(2.0 * np.pi / periods, SPECTRUM_DAMPING)
+        rho = cqc_matrix(2.0 * np.pi / periods, SPECTRUM_DAMPING)
         peak = math.sqrt(max(0.0, float(r @ rho @ r)))
     return peak, [float(v) for v in r]
+
+
+def check_fields(p: Any, *, positive: Sequence[str] = (), at_least_one: Sequence[str] = (),
+                 choices: dict[str, tuple[Sequence[Any], str]] | None = None) -> None:
+    """The checks every code's parameters share, each failure one line naming the field and
+    the value: ``positive`` fields finite and > 0, ``at_least_one`` fields finite and ≥ 1,
+    ``choices`` fields one of their values (``name: (values, clause)``, a string field
+    compared in upper case and stored so), and ``p.combination`` one of
+    :data:`COMBINATIONS` where ``p`` has one."""
+    from pounding.validation import positive as check_positive
+
+    for name in positive:
+        check_positive(name, getattr(p, name))
+    for name in at_least_one:
+        value = getattr(p, name)
+        if value is not None and not (isinstance(value, (int, float))
+                                      and math.isfinite(value) and value >= 1.0):
+            raise ValueError(f"{name}: must be finite and >= 1 (got {value!r})")
+    for name, (allowed, clause) in (choices or {}).items():
+        value = getattr(p, name)
+        key = str(value).strip().upper() if isinstance(value, str) else value
+        if key not in allowed:
+            raise ValueError(f"{name}: must be one of {', '.join(map(str, allowed))} "
+                             f"({clause}) (got {value!r})")
+        object.__setattr__(p, name, key)
+    combination = getattr(p, "combination", "cqc")
+    if combination not in COMBINATIONS:
+        raise ValueError(f"combination: must be one of {', '.join(COMBINATIONS)} "
+                         f"(got {combination!r})")
+
+
+def separation_rows(model: Any, displacement: Callable[[Any, Any], float], *,
+                    same_site: str, apart: str | None, same_property: bool = True,
+                    rule: str = "srss", floor_factor: tuple[float, str] | None = None
+                    ) -> tuple[CodeCheckRow, ...]:
+    """One :class:`CodeCheckRow` per contact level of ``model``'s pairs of neighbours.
+
+    Parameters
+    ----------
+    displacement : callable
+        ``displacement(building, point)``: the code's displacement [m] of ``building`` at
+        the contact ``point``.
+    same_site, apart : str
+        The clause of the rule for buildings on one property, and of the property-line
+        setback (``None``: the code has one rule; ``same_property`` is then ignored).
+    rule : {"srss", "sum"}
+        How the two displacements combine on one property: ``sqrt(d1² + d2²)`` or
+        ``d1 + d2``. Across a property line each building keeps its own: ``d1 + d2``.
+    floor_factor : (float, str), optional
+        A factor on the separation where the two floors meet at the same elevation, and
+        its clause.
+    """
+    rows = []
+    for c in pair_contacts(model):
+        d = [displacement(model.buildings[point.building], point)
+             for point in (c.left, c.right)]
+        if same_property or apart is None:
+            required = math.hypot(d[0], d[1]) if rule == "srss" else d[0] + d[1]
+            clause = same_site
+        else:
+            required, clause = d[0] + d[1], apart
+        if floor_factor is not None and c.is_floor_to_floor:
+            required *= floor_factor[0]
+            clause += f" × {floor_factor[0]:g} {floor_factor[1]}"
+        rows.append(CodeCheckRow(f"B{c.pair + 1}-B{c.pair + 2}", c.label, float(c.elevation),
+                                 d[0], d[1], required, float(c.gap), clause))
+    return tuple(rows)
 
 
 def pair_contacts(model: Any) -> list[Any]:
@@ -129,14 +199,17 @@ class CodeCheck:
     Attributes
     ----------
     code : str
-        The code's key (``"asce7-22"``, ``"en1998-1"``).
+        The code's key (``"asce7-22"``, ``"en1998-1"``, ``"nzs1170.5"``, ``"nbcc2020"``,
+        ``"is1893"``).
     title : str
         The code's name and edition.
     displacement : str
-        What the ``left`` and ``right`` columns are (δ_M, d_s), with the clause.
+        What the ``left`` and ``right`` columns are (δ_M, d_s, d, Δ, R Δ), with the
+        clause.
     rows : tuple of CodeCheckRow
     parameters : dict
-        The code's inputs as used (including defaults taken).
+        The code's inputs as used (including defaults taken); ``"buildings"``, where
+        present, what the code derived per building (ASCE 7-22: T, C_s, W, V, …).
     assumptions : tuple of str
         What the check assumes, in plain words.
     clauses : dict

@@ -28,12 +28,11 @@ import numpy as np
 from pounding.studies.codes.common import (
     COMBINATIONS,
     CodeCheck,
-    CodeCheckRow,
     building_periods,
+    check_fields,
     modal_point_peak,
-    pair_contacts,
+    separation_rows,
 )
-from pounding.validation import positive
 
 __all__ = ["CODE", "TITLE", "En19981Parameters", "check", "design_spectrum_sa_g"]
 
@@ -108,27 +107,12 @@ class En19981Parameters:
     def __post_init__(self) -> None:
         from pounding.spectra.design import EC8_GROUND_TYPES
 
-        positive("agr", self.agr)
-        positive("importance", self.importance)
-        if not (self.q >= 1.0 and np.isfinite(self.q)):
-            raise ValueError(f"q: the behaviour factor must be finite and >= 1 "
-                             f"(got {self.q!r})")
-        if self.qd is not None and not (self.qd >= 1.0 and np.isfinite(self.qd)):
-            raise ValueError(f"qd: the displacement behaviour factor must be finite and "
-                             f">= 1 (got {self.qd!r})")
+        check_fields(self, positive=("agr", "importance"), at_least_one=("q", "qd"),
+                     choices={"spectrum_type": ((1, 2), "EN 1998-1 §3.2.2.2(2)")})
         if not (self.beta >= 0.0 and np.isfinite(self.beta)):
             raise ValueError(f"beta: must be finite and >= 0 (got {self.beta!r})")
-        if self.spectrum_type not in (1, 2):
-            raise ValueError(f"spectrum_type: must be 1 or 2 (EN 1998-1 §3.2.2.2(2)) "
-                             f"(got {self.spectrum_type!r})")
-        ground = str(self.ground_type).strip().upper()
-        if ground not in EC8_GROUND_TYPES[self.spectrum_type]:
-            raise ValueError(f"ground_type: must be one of A, B, C, D, E (EN 1998-1 Table "
-                             f"3.1) (got {self.ground_type!r})")
-        object.__setattr__(self, "ground_type", ground)
-        if self.combination not in COMBINATIONS:
-            raise ValueError(f"combination: must be one of {', '.join(COMBINATIONS)} "
-                             f"(got {self.combination!r})")
+        check_fields(self, choices={"ground_type": (tuple(EC8_GROUND_TYPES[self.spectrum_type]),
+                                                    "EN 1998-1 Table 3.1")})
 
     @property
     def displacement_factor(self) -> float:
@@ -150,29 +134,18 @@ def check(model: Any, p: En19981Parameters) -> CodeCheck:
                                     spectrum_type=p.spectrum_type, q=p.q, beta=p.beta)
 
     qd = p.displacement_factor
-    rows = []
-    for c in pair_contacts(model):
-        peaks = []
-        for point in (c.left, c.right):
-            d_e, _ = modal_point_peak(model.buildings[point.building], point, sa_g,
-                                      p.combination)
-            peaks.append(qd * d_e)  # eq. 4.23
-        if p.same_property:
-            required = (peaks[0] ** 2 + peaks[1] ** 2) ** 0.5
-            clause = "§4.4.2.7(2)b"
-        else:
-            required = peaks[0] + peaks[1]
-            clause = "§4.4.2.7(2)a"
-        if c.is_floor_to_floor:
-            required *= FLOOR_LEVEL_FACTOR
-            clause += " × 0.7 §4.4.2.7(3)"
-        rows.append(CodeCheckRow(f"B{c.pair + 1}-B{c.pair + 2}", c.label, float(c.elevation),
-                                 peaks[0], peaks[1], required, float(c.gap), clause))
+
+    def d_s(building: Any, point: Any) -> float:  # eq. 4.23
+        return qd * modal_point_peak(building, point, sa_g, p.combination)[0]
+
+    rows = separation_rows(model, d_s, same_site="§4.4.2.7(2)b", apart="§4.4.2.7(2)a",
+                           same_property=p.same_property,
+                           floor_factor=(FLOOR_LEVEL_FACTOR, "§4.4.2.7(3)"))
     return CodeCheck(
         code=CODE, title=TITLE,
         displacement="d_s = q_d d_e (eq. 4.23), d_e by modal response spectrum analysis "
                      "(§4.3.3.3) on the design spectrum (§3.2.2.5)",
-        rows=tuple(rows),
+        rows=rows,
         parameters={"agr_g": p.agr, "importance": p.importance, "ag_g": ag,
                     "ground_type": p.ground_type, "spectrum_type": p.spectrum_type,
                     "q": p.q, "qd": qd, "beta": p.beta, "same_property": p.same_property,
