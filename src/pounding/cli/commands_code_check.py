@@ -14,11 +14,9 @@ from pounding.cli.app import app, console
 from pounding.cli.tables import Col, literal, print_table
 
 
-class SeparationCode(StrEnum):
-    """The codes of ``pounding code-check --code`` (:data:`pounding.studies.codes.CODES`)."""
-
-    asce7_22 = "asce7-22"
-    en1998_1 = "en1998-1"
+# issue 29 (wt-codesth29): one list of codes for every --code (options.Code)
+SeparationCode = opt.Code
+"""The codes of ``pounding code-check --code`` (:data:`pounding.studies.codes.CODES`)."""
 
 
 class Combination(StrEnum):
@@ -34,7 +32,7 @@ def code_check_cmd(
         help="TOML model file, as for `pounding run` (its buildings and gaps are checked; "
              "its record and contact law are not used).", show_default=False)],
     code: Annotated[SeparationCode, typer.Option(
-        "--code", help="The seismic code whose separation rule is checked (docs/codes.md).",
+        "--code", help=f"{opt.CODE_HELP} Its separation rule is checked.",  # (issue 29)
         show_default=False)],
     sds: Annotated[float | None, typer.Option(
         "--sds", metavar="G", help="asce7-22: S_DS \\[g] (§11.4.5).", show_default=False)]

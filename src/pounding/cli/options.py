@@ -148,10 +148,16 @@ class Method(StrEnum):
 
 
 class Code(StrEnum):
-    """The code of ``--method code``."""
+    """The seismic codes, by standard and edition: ``--code`` of ``code-check`` (its
+    separation rule) and ``suite`` (its rule for scaling a suite), one spelling for both
+    (:data:`pounding.studies.codes.CODES`; ``asce7``/``ec8`` before issue 29)."""
 
-    asce7 = "asce7"
-    ec8 = "ec8"
+    asce7_22 = "asce7-22"
+    en1998_1 = "en1998-1"
+
+
+CODE_HELP = "The seismic code, by standard and edition (docs/codes.md)."
+"""The meaning of ``--code`` (first sentence of its help)."""
 
 
 # ============================================================================ output
