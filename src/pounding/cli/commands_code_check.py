@@ -9,6 +9,7 @@ from typing import Annotated
 import typer
 from rich.text import Text
 
+from pounding.cli import code_check_time_history as th  # (issue 29, wt-codesth29)
 from pounding.cli import options as opt
 from pounding.cli.app import app, console
 from pounding.cli.tables import Col, literal, print_table
@@ -83,6 +84,10 @@ def code_check_cmd(
         "--out", "-o", metavar="DIR", help=f"{opt.OUT_HELP} Writes code_check.json there; "
         "without it nothing is written.", show_default=False)] = None,
     overwrite: opt.Overwrite = False,
+    time_history: th.TimeHistory = False,  # the time histories beside the check (issue 29,
+    suite: th.Suite = None,                # wt-codesth29: cli/code_check_time_history.py)
+    design: th.Design = None,
+    duration: th.Duration = None,
 ) -> int:
     """The separation a seismic code asks for between neighbouring buildings, beside the
     model's gaps, floor by floor, each number with its clause.
@@ -96,6 +101,8 @@ def code_check_cmd(
       pounding code-check examples/two_10_storey.toml --code asce7-22 --sds 1.0 --sd1 0.6 --tl 8 --cd 5.5 --r 8 --ie 1
 
       pounding code-check examples/two_10_storey.toml --code en1998-1 --agr 0.25 --ground-type C --spectrum-type 1 --q 4 --out check
+
+      pounding code-check examples/two_10_storey.toml --code asce7-22 --sds 1.0 --sd1 0.6 --tl 8 --cd 5.5 --r 8 --ie 1 --time-history
     """
     from pounding.config import load_config
     from pounding.studies.codes import code_check, write_code_check
@@ -117,8 +124,10 @@ def code_check_cmd(
                                       "ground_type", "spectrum_type", "q"):
             raise ValueError(f"--{name.replace('_', '-')}: --code {code.value} needs it "
                              "(got none)")
+    histories = th.wanted(time_history, suite, design, duration)  # (issue 29, wt-codesth29)
+    records, target = th.read_inputs(suite, design, duration) if histories else (None, None)
     cfg = load_config(model)
-    pounding_model, _, _ = cfg.build()
+    pounding_model, _, solver = cfg.build()
     check = code_check(pounding_model, code.value, same_property=not property_line,
                        combination=combination.value, **mine)
 
@@ -147,6 +156,8 @@ def code_check_cmd(
     console.print(Text(f"{len(check.rows) - len(bad)} of {len(check.rows)} level(s) meet "
                        f"{check.title}" + (f"; largest shortfall {1e3 * max(r.required - r.gap for r in bad):.1f} mm"
                                           if bad else "")))
+    if histories:  # (issue 29, wt-codesth29) code_check.json gets a time_history block
+        check = th.beside(pounding_model, check, records, target, solver, duration)
     if out is not None:
         path = write_code_check(check, out, overwrite=overwrite, source=str(model))
         console.print(Text(f"written: {path}"))
