@@ -161,6 +161,15 @@ CODE_HELP = "The seismic code, by standard and edition (docs/codes.md)."
 
 
 # ============================================================================ output
+CODE_CHECK_HELP = "A folder written by `pounding code-check --out`."
+"""The meaning of ``--code-check`` (first sentence of its help)."""
+
+CodeCheckDir = Annotated[Path | None, typer.Option(
+    "--code-check", metavar="DIR", help=f"{CODE_CHECK_HELP} Its check is kept in the output "
+    "folder (code_check.json), and the report (pounding report) shows it as its Code check "
+    "section.", show_default=False)]
+"""``--code-check DIR`` of ``run``, ``sweep``, ``fragility`` (issue 29)."""
+
 OUT_HELP = "Output folder."
 """The meaning of ``--out`` (first sentence of its help)."""
 
