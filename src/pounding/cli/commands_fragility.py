@@ -55,7 +55,7 @@ def fragility_cmd(
         stopped(exc, again(study_file, "fragility", out=out, workers=workers,
                            scheduler=scheduler), "runs")
     if check is not None:  # (issue 29) kept for the report's Code check section
-        attach_code_check(res.out_dir, check)
+        console.print(Text(f"code check kept: {attach_code_check(res.out_dir, check)}"))
     _print(res)
 
 

@@ -35,7 +35,7 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
                    "(an earlier output there is as it was); run the same command again")
         raise typer.Exit(EXIT_INTERRUPTED) from None
     if check is not None:  # (issue 29) kept for the report's Code check section
-        attach_code_check(result.out_dir, check)
+        console.print(Text(f"code check kept: {attach_code_check(result.out_dir, check)}"))
     from pounding.cli.run_tables import print_run_summary
 
     print_run_summary(result)

@@ -55,7 +55,7 @@ def sweep_cmd(
         stopped(exc, again(sweep_file, "sweep", out=out, workers=workers, scheduler=scheduler,
                            batch_size=batch_size, histories=histories), "cases")
     if check is not None:  # (issue 29) kept for the report's Code check section
-        attach_code_check(res.out_dir, check)
+        console.print(Text(f"code check kept: {attach_code_check(res.out_dir, check)}"))
     rows: list[tuple[str, str | Text]] = [
         ("cases", f"{res.n_cases} ({len(sweep.params)} parameter(s): "
                   f"{', '.join(sweep.params)})")]
