@@ -202,3 +202,18 @@ def test_a_check_file_of_the_wrong_shape_is_one_line(change, field, tmp_path):
     manifest.write_text(folder / "code_check.json", json.dumps(data))
     with pytest.raises(ValueError, match=rf"^--code-check: .*code_check.json: {re.escape(field)}"):
         read_code_check(folder)
+
+
+def test_a_sweep_keeps_the_check(folders, tmp_path):
+    from pounding.io.manifest import Manifest
+
+    model, check, _ = folders
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text(f'name = "tiny"\nbase = "{model.as_posix()}"\n[grid]\n'
+                     '"contact.gap" = [0.04, 0.06]\n', encoding="utf-8")
+    out = tmp_path / "sweep"
+    assert main(["sweep", str(sweep), "--out", str(out), "--no-figures", "--scheduler",
+                 "synchronous", "--code-check", str(check)]) == 0
+    assert Manifest(out).is_ours(out / "code_check.json")
+    assert main(["report", str(out)]) == 0
+    assert "57.78" in _section((out / "report.html").read_text(encoding="utf-8"))
