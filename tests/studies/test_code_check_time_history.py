@@ -176,3 +176,19 @@ def test_bad_input_is_one_line_and_writes_nothing(case, tmp_path, capsys, extra,
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0], err
     assert not out.exists()
+
+
+def test_a_code_without_a_suite_rule_borrows_asce7s_and_says_so(case):
+    """A code pounding has no suite-scaling rule for (NZS 1170.5 §5.5 has its own): the
+    suite is scaled by ASCE 7-22 §16.2.3's, and the scaling text says so; its spectrum is
+    not known here, so the target must be given."""
+    import dataclasses
+
+    _, model, check, motions, th = case
+    other = dataclasses.replace(check, code="nzs1170.5")
+    with pytest.raises(ValueError, match=r"^design: no spectrum of nzs1170.5"):
+        time_history_check(model, other, motions[:1])
+    got = time_history_check(model, other, motions[:1],
+                             target=DesignSpectrum.asce7(1.0, 0.6, 8.0))
+    assert "ASCE 7-22 §16.2.3; nzs1170.5's own rule for a suite is not in pounding" in (
+        got.scaling)

@@ -279,7 +279,8 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         The spectrum the suite is scaled to; default :func:`code_spectrum`.
     scaling_code : {"asce7-22", "en1998-1"}, optional
         Whose rule scales the suite (:func:`pounding.spectra.scale_suite`); default the
-        check's code.
+        check's code where pounding has its rule for a suite, else ASCE 7-22's (said in
+        :attr:`TimeHistoryCheck.scaling`).
     solver : mapping, optional
         Keyword arguments of :func:`pounding.integrate.simulate` (``dt``, ``rtol``, …: the
         model file's ``[solver]``); ``duration`` is each record's.
@@ -298,6 +299,7 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         cannot use.
     """
     from pounding.integrate import simulate
+    from pounding.spectra.scaling import CODES as SUITE_RULES
     from pounding.spectra.scaling import scale_suite
     from pounding.studies.codes.common import pair_contacts
     from pounding.studies.gap import critical_gaps
@@ -316,7 +318,10 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
                          f"peak closing, and {len(model.links)} link(s) tie them together; "
                          "remove the links")
     target = code_spectrum(check) if target is None else target
-    rule = scaling_code if scaling_code is not None else check.code
+    rule = scaling_code if scaling_code is not None else (
+        check.code if check.code in SUITE_RULES else "asce7-22")
+    borrowed = "" if rule == check.code or scaling_code is not None else (
+        f"; {check.code}'s own rule for a suite is not in pounding")
     firsts = [float(periods[0]) for periods in check.periods.values() if periods]
     t1 = max(firsts)
     period_range = (0.2 * min(firsts), 2.0 * t1)
@@ -367,7 +372,7 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
     return TimeHistoryCheck(
         code=check.code, target=str(target.name),
         scaling=(f"one factor for the suite, its mean >= 90 % of the target from {lo:.3g} to "
-                 f"{hi:.3g} s ({rule_text.get(rule, rule)}); factor "
+                 f"{hi:.3g} s ({rule_text.get(rule, rule)}{borrowed}); factor "
                  f"{float(scaled.factors[0]):.4g}"),
         records=tuple(m.name for m in motions), factors=np.asarray(scaled.factors),
         levels=tuple(row.contact for row in rows), pairs=tuple(row.pair for row in rows),
