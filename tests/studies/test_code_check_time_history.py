@@ -154,6 +154,15 @@ def test_cli_writes_the_time_history_block_only_with_out(case, tmp_path, capsys)
     assert [r["record"] for r in block["records"]] == [
         "elcentro_1940_IV_ELC9_180_PEER", "northridge_1994_newhall_360_RSN1044"]
     assert block["verdicts"][0].startswith("B1-B2: the code's 57.8 mm gap prevented")
+    assert block["duration_s"] == SECONDS
+    # --duration is the time simulated: the runs equal simulate(..., duration=SECONDS)
+    model = case[1]
+    for r, motion in enumerate(list(bundled_suite())[:2]):  # the two records copied
+        res = simulate(_with_gap(model, 0.05), motion.scaled(block["records"][r]["factor"]),
+                       duration=SECONDS)
+        assert block["records"][r]["own_gap"]["impacts"] == res.n_impacts
+        assert block["records"][r]["own_gap"]["peak_force_kN"] == pytest.approx(
+            1e-3 * res.peak_contact_force.max(), rel=1e-9)
     assert data["levels"][1]["required_mm"] == pytest.approx(57.7766, rel=1e-4)
     # without --out nothing is written
     before = sorted(p.name for p in tmp_path.iterdir())

@@ -90,11 +90,9 @@ def beside(model: Any, check: Any, records: Any, target: Any, solver: dict[str, 
     from pounding.cli.running import progress_bar
     from pounding.studies.codes.time_history import CodeCheckBeside, time_history_check
 
-    settings = dict(solver)
-    settings["duration"] = duration
     with progress_bar("time histories beside the code check", "runs") as progress:
-        th = time_history_check(model, check, list(records), target=target, solver=settings,
-                                progress=progress)
+        th = time_history_check(model, check, list(records), target=target, solver=solver,
+                                duration=duration, progress=progress)
     _print(th)
     return CodeCheckBeside.of(check, th)
 

@@ -125,6 +125,8 @@ class TimeHistoryCheck:
     peak_closing : (n_records, n_levels)
         The smallest gap that prevents pounding at each level under each record [m]: the
         largest ``u_left − u_right`` of the buildings apart.
+    duration : float or None
+        Time simulated under every record [s] (None: each record's duration).
     """
 
     code: str
@@ -139,6 +141,7 @@ class TimeHistoryCheck:
     own: RunOutcomes
     at_code: RunOutcomes
     peak_closing: FloatArray
+    duration: float | None = None
 
     def pair_levels(self, pair: str) -> list[int]:
         """The levels (indices) of ``pair``."""
@@ -212,6 +215,7 @@ class TimeHistoryCheck:
         return {
             "units": "mm (gaps, closings), kN (forces), m (elevation)",
             "target": self.target, "scaling": self.scaling,
+            "duration_s": self.duration,
             "runs": "each record twice: (a) the model's own gaps, (b) every pair's gap at "
                     "the code's separation (the largest the code asks for at its levels)",
             "peak_closing": "the smallest gap that prevents pounding: max(u_left - u_right) "
@@ -263,6 +267,7 @@ def _with_gaps(model: Any, gaps: Sequence[float]) -> Any:
 def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
                        target: Any = None, scaling_code: str | None = None,
                        solver: Mapping[str, Any] | None = None,
+                       duration: float | None = None,
                        progress: Any = None) -> TimeHistoryCheck:
     """The time histories of ``model`` beside ``check`` under ``motions`` scaled to the
     code's spectrum (module docstring).
@@ -283,7 +288,10 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         :attr:`TimeHistoryCheck.scaling`).
     solver : mapping, optional
         Keyword arguments of :func:`pounding.integrate.simulate` (``dt``, ``rtol``, …: the
-        model file's ``[solver]``); ``duration`` is each record's.
+        model file's ``[solver]``); its ``duration`` (the model file's record's) is not
+        used.
+    duration : float, optional
+        Time simulated under every record [s]; default each record's duration.
     progress : Progress, optional
         Called as ``progress(done, total)``: runs finished, and in all.
 
@@ -322,7 +330,7 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         check.code if check.code in SUITE_RULES else "asce7-22")
     borrowed = "" if rule == check.code or scaling_code is not None else (
         f"; {check.code}'s own rule for a suite is not in pounding")
-    firsts = [float(periods[0]) for periods in check.periods.values() if periods]
+    firsts = [float(b.modes().periods[0]) for b in model.buildings]  # each one's T1 [s]
     t1 = max(firsts)
     period_range = (0.2 * min(firsts), 2.0 * t1)
     scaled = scale_suite(motions, target, t1, method="code", code=rule,
@@ -337,7 +345,12 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         code_gaps[p] = max(row.required for row in rows if contacts[row.contact].pair == p)
     code_model = _with_gaps(model, code_gaps)
 
+    if duration is not None:
+        from pounding.validation import positive
+
+        duration = positive("duration", duration)
     kwargs = {k: v for k, v in (solver or {}).items() if k != "duration"}
+    kwargs["duration"] = duration
     same = tuple(code_gaps) == tuple(model.gaps)
     total = len(suite) * (1 if same else 2) + len(suite) * len(model.buildings)
     done = 0
@@ -361,7 +374,7 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
 
     own = outcomes(model)
     at_code = own if same else outcomes(code_model)
-    study = critical_gaps(model, suite, dt=kwargs.get("dt"),
+    study = critical_gaps(model, suite, dt=kwargs.get("dt"), duration=duration,
                           progress=None if progress is None else
                           (lambda d, t: progress(done + d, total)))
     step(len(suite) * len(model.buildings))
@@ -377,4 +390,4 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         records=tuple(m.name for m in motions), factors=np.asarray(scaled.factors),
         levels=tuple(row.contact for row in rows), pairs=tuple(row.pair for row in rows),
         elevation=np.array([row.elevation for row in rows]), required=required,
-        own=own, at_code=at_code, peak_closing=closing)
+        own=own, at_code=at_code, peak_closing=closing, duration=duration)
