@@ -144,7 +144,7 @@ FRAGILITY_DOCS: dict[str, dict[str, Any]] = {
     "saavg": {"base": "two_10_storey.toml",
               "suite": {"files": ["a.at2"], "dt": 0.01, "units": "g",
                         "scaling": {"target": "t.csv", "period": 1.0, "method": "code",
-                                    "code": "asce7"}},
+                                    "code": "asce7-22"}},
               "intensity": {"measure": "saavg", "periods": [0.2, 2.0], "n_periods": 5,
                             "levels": [0.1, 0.2, 0.4]},
               "run": {"scheduler": "synchronous"}},

@@ -96,14 +96,12 @@ def test_an_option_means_the_same_in_every_command() -> None:
     assert {"--out", "--overwrite", "--figures", "--workers", "--scheduler", "--plot",
             "--csv", "--design", "--dt", "--units", "--e", "--law", "--damping",
             "--m1", "--k"} <= set(shared)
-    # ``--code``: suite's names the code of its scaling rule (asce7|ec8), code-check's the
-    # code and edition of a separation clause (asce7-22|en1998-1, as issue 29 spells them);
-    # the one exception, until the two share one list of codes
+    assert "--code" in shared  # suite's and code-check's: one list of codes (issue 29)
     for flag, uses in shared.items():
         if flag == "--out":  # `pounding match --out FILE.AT2` writes one file, not a folder
             uses = [u for u in uses if u[0] != "match"]
         meanings = {what for _, what in uses}
-        assert len(meanings) == 1 or flag == "--code", (flag, uses)
+        assert len(meanings) == 1, (flag, uses)
 
 
 def test_the_names_of_every_choice_are_the_librarys() -> None:

@@ -41,8 +41,8 @@ def psa_g_reference(motion, periods, factor=1.0):
 
 def test_period_range_is_the_codes():
     # EN 1998-1 §3.2.3.1.2(4): 0.2 T1 to 2 T1; ASCE 7-22 §16.2.3.1: lower bound at most 0.2 T1
-    assert code_period_range(1.5, "ec8") == pytest.approx((0.3, 3.0))
-    assert code_period_range(1.5, "asce7") == pytest.approx((0.3, 3.0))
+    assert code_period_range(1.5, "en1998-1") == pytest.approx((0.3, 3.0))
+    assert code_period_range(1.5, "asce7-22") == pytest.approx((0.3, 3.0))
 
 
 def test_each_record_to_sa_t1(suite):
@@ -74,11 +74,11 @@ def test_one_factor_keeps_the_mean_at_90_percent_of_the_target(suite):
 
 def test_eurocode_8_also_keeps_the_mean_pga_at_ag_s(suite):
     ec8 = DesignSpectrum.eurocode8(0.4, "C", 1)  # a_g S = 0.4 × 1.15 = 0.46 g
-    r = scale_suite(suite, ec8, 0.5, method="code", code="ec8", n_periods=25)
+    r = scale_suite(suite, ec8, 0.5, method="code", code="en1998-1", n_periods=25)
     f = r.factors[0]
     pga = np.array([np.max(np.abs(m.accel)) / G for m in suite])
     assert f * pga.mean() >= 0.46 * (1 - 1e-12)
-    spectral = scale_suite(suite, ec8, 0.5, method="code", code="asce7", n_periods=25)
+    spectral = scale_suite(suite, ec8, 0.5, method="code", code="asce7-22", n_periods=25)
     assert f == pytest.approx(max(spectral.factors[0], 0.46 / pga.mean()), rel=1e-12)
 
 

@@ -143,12 +143,24 @@ def test_cli_runs_resumes_and_reports(small, tmp_path, capsys):
     assert main(["fragility", str(study), "--out", str(out), "--no-figures"]) == 0
     text = capsys.readouterr().out
     assert "stripes, MLE" in text and "DDC" in text
-    assert main(["fragility", str(study), "--out", str(out), "--no-figures"]) == 0
+    check = tmp_path / "check"  # a code check kept in the study's folder (issue 29)
+    assert main(["code-check", str(SEED), "--code", "en1998-1", "--agr", "0.3",
+                 "--ground-type", "C", "--spectrum-type", "1", "--q", "3", "--out",
+                 str(check)]) == 0
+    capsys.readouterr()
+    assert main(["fragility", str(study), "--out", str(out), "--no-figures", "--code-check",
+                 str(check)]) == 0
     assert "0 run now" in capsys.readouterr().out
+    assert (out / "code_check.json").read_bytes() == (check / "code_check.json").read_bytes()
+    assert main(["report", str(out)]) == 0
+    section = (out / "report.html").read_text().split('<section id="code-check">')[1]
+    required = json.loads((check / "code_check.json").read_text())["levels"][0]["required_mm"]
+    assert "EN 1998-1:2004 §4.4.2.7" in section and f"{required:.4g}" in section
     assert main(["report", str(res.cases.out)]) == 0
     html = (res.cases.out / "report.html").read_text()
     assert "small &lt;study&gt;: pounding fragility report" in html
     assert "<study>" not in html and "Probability of pounding" in html
+    assert 'id="code-check"' not in html
 
 
 def _snapshot(folder: Path) -> dict[str, bytes | None]:

@@ -9,19 +9,15 @@ from typing import Annotated
 import typer
 from rich.text import Text
 
+from pounding.cli import code_check_time_history as th  # (issue 29, wt-codesth29)
 from pounding.cli import options as opt
 from pounding.cli.app import app, console
 from pounding.cli.tables import Col, literal, print_table
 
 
-class SeparationCode(StrEnum):
-    """The codes of ``pounding code-check --code`` (:data:`pounding.studies.codes.CODES`)."""
-
-    asce7_22 = "asce7-22"
-    en1998_1 = "en1998-1"
-    nzs1170_5 = "nzs1170.5"
-    nbcc2020 = "nbcc2020"
-    is1893 = "is1893"
+# issue 29 (wt-codesth29): one list of codes for every --code (options.Code)
+SeparationCode = opt.Code
+"""The codes of ``pounding code-check --code`` (:data:`pounding.studies.codes.CODES`)."""
 
 
 class Procedure(StrEnum):
@@ -49,7 +45,8 @@ def code_check_cmd(
         help="TOML model file, as for `pounding run` (its buildings and gaps are checked; "
              "its record and contact law are not used).", show_default=False)],
     code: Annotated[SeparationCode, typer.Option(
-        "--code", help="The seismic code whose separation rule is checked (docs/codes.md).",
+        "--code", metavar="CODE", help=f"{opt.CODE_HELP} Its separation rule is checked: "
+        "asce7-22, en1998-1, nzs1170.5, nbcc2020 or is1893.",  # (issue 29)
         show_default=False)],
     sds: Annotated[float | None, typer.Option(
         "--sds", metavar="G", help="asce7-22: S_DS \\[g] (§11.4.5).", show_default=False)]
@@ -138,6 +135,10 @@ def code_check_cmd(
         "--out", "-o", metavar="DIR", help=f"{opt.OUT_HELP} Writes code_check.json there; "
         "without it nothing is written.", show_default=False)] = None,
     overwrite: opt.Overwrite = False,
+    time_history: th.TimeHistory = False,  # the time histories beside the check (issue 29,
+    suite: th.Suite = None,                # wt-codesth29: cli/code_check_time_history.py)
+    design: th.Design = None,
+    duration: th.Duration = None,
 ) -> int:
     """The separation a seismic code asks for between neighbouring buildings, beside the
     model's gaps, floor by floor, each number with its clause.
@@ -162,6 +163,8 @@ def code_check_cmd(
       pounding code-check examples/two_10_storey.toml --code nbcc2020 --s-table 0.85,0.75,0.42,0.26,0.085,0.03 --rd 5 --ro 1.5 --ie 1
 
       pounding code-check examples/two_10_storey.toml --code is1893 --z 0.36 --importance 1.2 --r 5 --soil-type II
+
+      pounding code-check examples/two_10_storey.toml --code asce7-22 --sds 1.0 --sd1 0.6 --tl 8 --cd 5.5 --r 8 --ie 1 --time-history
     """
     from pounding.config import load_config
     from pounding.studies.codes import code_check, write_code_check
@@ -193,8 +196,10 @@ def code_check_cmd(
             raise ValueError(f"--{name.replace('_', '-')}: --code {code.value} needs it "
                              "(got none)")
     # -- end of wt-codes29's block
+    histories = th.wanted(time_history, suite, design, duration)  # (issue 29, wt-codesth29)
+    records, target = th.read_inputs(suite, design, duration) if histories else (None, None)
     cfg = load_config(model)
-    pounding_model, _, _ = cfg.build()
+    pounding_model, _, solver = cfg.build()
     check = code_check(pounding_model, code.value, same_property=not property_line,
                        combination=combination.value, **mine)
 
@@ -227,6 +232,8 @@ def code_check_cmd(
     console.print(Text(f"{len(check.rows) - len(bad)} of {len(check.rows)} level(s) meet "
                        f"{check.title}" + (f"; largest shortfall {1e3 * max(r.required - r.gap for r in bad):.1f} mm"
                                           if bad else "")))
+    if histories:  # (issue 29, wt-codesth29) code_check.json gets a time_history block
+        check = th.beside(pounding_model, check, records, target, solver, duration)
     if out is not None:
         path = write_code_check(check, out, overwrite=overwrite, source=str(model))
         console.print(Text(f"written: {path}"))

@@ -23,6 +23,7 @@ def fragility_cmd(
     figures: opt.FiguresStudy = None,
     workers: opt.WorkersStudy = None,
     scheduler: opt.SchedulerStudy = None,
+    code_check: opt.CodeCheckDir = None,
 ) -> None:
     """Probability of pounding: IDA of a record suite, fragility curves of the limit states,
     and the gap for a target probability beside the ABS/SRSS/DDC code gaps.
@@ -39,6 +40,9 @@ def fragility_cmd(
     from pounding.studies.fragility import run_study, study_cases
     from pounding.studies.sweep import SweepInterrupted, SweepStopped
 
+    from pounding.report.code_check import attach_code_check, read_code_check
+
+    check = read_code_check(code_check) if code_check is not None else None  # (issue 29)
     cases = study_cases(study_file, out=out)
     if cases.record_note:
         console.print(Text(cases.record_note))
@@ -50,6 +54,8 @@ def fragility_cmd(
     except (SweepInterrupted, SweepStopped) as exc:
         stopped(exc, again(study_file, "fragility", out=out, workers=workers,
                            scheduler=scheduler), "runs")
+    if check is not None:  # (issue 29) kept for the report's Code check section
+        console.print(Text(f"code check kept: {attach_code_check(res.out_dir, check)}"))
     _print(res)
 
 

@@ -15,12 +15,15 @@ from pounding.cli.tables import Col, literal, print_table
 
 
 def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | None,
-         label: str) -> None:
+         label: str, code_check: Path | None = None) -> None:
     from pounding.cli.messages import EXIT_INTERRUPTED, error_line
     from pounding.config import load_config
     from pounding.io.output_folder import default_out_dir
     from pounding.run_file import run_config
 
+    from pounding.report.code_check import attach_code_check, read_code_check
+
+    check = read_code_check(code_check) if code_check is not None else None  # (issue 29)
     cfg = load_config(model_file)
     target = out if out is not None else default_out_dir(model_file)
     try:
@@ -31,6 +34,8 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
         error_line(f"stopped: the run was interrupted, so nothing was written to {target} "
                    "(an earlier output there is as it was); run the same command again")
         raise typer.Exit(EXIT_INTERRUPTED) from None
+    if check is not None:  # (issue 29) kept for the report's Code check section
+        console.print(Text(f"code check kept: {attach_code_check(result.out_dir, check)}"))
     from pounding.cli.run_tables import print_run_summary
 
     print_run_summary(result)
@@ -43,6 +48,7 @@ def run_cmd(
     out: opt.Out = None,
     overwrite: opt.Overwrite = False,
     figures: opt.Figures = None,
+    code_check: opt.CodeCheckDir = None,
 ) -> None:
     """Simulate a model file and write time histories, impacts, summary and figures.
 
@@ -52,7 +58,7 @@ def run_cmd(
 
       pounding run model.toml --no-figures --overwrite
     """
-    _run(model, out, overwrite, figures, f"simulating {model.name}")
+    _run(model, out, overwrite, figures, f"simulating {model.name}", code_check)
 
 
 @app.command("demo")

@@ -29,6 +29,7 @@ def sweep_cmd(
     histories: Annotated[opt.Histories | None, typer.Option(
         "--histories", help="Write each case's time histories (none: do not). Default: "
                             "histories of the sweep file.", show_default=False)] = None,
+    code_check: opt.CodeCheckDir = None,
 ) -> None:
     """Run a parameter sweep on Dask; resumable: a re-run does only the missing cases.
 
@@ -40,6 +41,9 @@ def sweep_cmd(
     """
     from pounding.studies.sweep import SweepInterrupted, SweepStopped, load_sweep, run_sweep
 
+    from pounding.report.code_check import attach_code_check, read_code_check
+
+    check = read_code_check(code_check) if code_check is not None else None  # (issue 29)
     sweep = load_sweep(sweep_file)
     hist = None if histories is None else (False if histories == "none" else str(histories))
     try:
@@ -50,6 +54,8 @@ def sweep_cmd(
     except (SweepInterrupted, SweepStopped) as exc:
         stopped(exc, again(sweep_file, "sweep", out=out, workers=workers, scheduler=scheduler,
                            batch_size=batch_size, histories=histories), "cases")
+    if check is not None:  # (issue 29) kept for the report's Code check section
+        console.print(Text(f"code check kept: {attach_code_check(res.out_dir, check)}"))
     rows: list[tuple[str, str | Text]] = [
         ("cases", f"{res.n_cases} ({len(sweep.params)} parameter(s): "
                   f"{', '.join(sweep.params)})")]

@@ -148,13 +148,31 @@ class Method(StrEnum):
 
 
 class Code(StrEnum):
-    """The code of ``--method code``."""
+    """The seismic codes, by standard and edition: ``--code`` of ``code-check`` (its
+    separation rule) and ``suite`` (its rule for scaling a suite), one spelling for both
+    (:data:`pounding.studies.codes.CODES`; ``asce7``/``ec8`` before issue 29)."""
 
-    asce7 = "asce7"
-    ec8 = "ec8"
+    asce7_22 = "asce7-22"
+    en1998_1 = "en1998-1"
+    nzs1170_5 = "nzs1170.5"
+    nbcc2020 = "nbcc2020"
+    is1893 = "is1893"
+
+
+CODE_HELP = "The seismic code, by standard and edition (docs/codes.md)."
+"""The meaning of ``--code`` (first sentence of its help)."""
 
 
 # ============================================================================ output
+CODE_CHECK_HELP = "A folder written by `pounding code-check --out`."
+"""The meaning of ``--code-check`` (first sentence of its help)."""
+
+CodeCheckDir = Annotated[Path | None, typer.Option(
+    "--code-check", metavar="DIR", help=f"{CODE_CHECK_HELP} Its check is kept in the output "
+    "folder (code_check.json), and the report (pounding report) shows it as its Code check "
+    "section.", show_default=False)]
+"""``--code-check DIR`` of ``run``, ``sweep``, ``fragility`` (issue 29)."""
+
 OUT_HELP = "Output folder."
 """The meaning of ``--out`` (first sentence of its help)."""
 

@@ -20,6 +20,11 @@ Every text taken from the files is HTML-escaped; every quantity carries its unit
   The page shows the parameter grid, the first rows of the results with summary statistics,
   and the main measure plotted against each swept parameter.
 
+With a code check (``pounding run/sweep/fragility ... --code-check DIR`` kept one in the
+folder, or ``pounding report FOLDER --code-check DIR``), the page ends with a "Code check"
+section: the code's separation level by level, and for a run the run's own peak closing
+beside it (:mod:`~pounding.report.code_check`).
+
 The report only reads the folder; it writes nothing there but the report itself (written
 atomically, :func:`pounding.io.files.write_text`; ``report.html`` is added to the folder's manifest,
 :mod:`pounding.io.manifest`, so that ``--overwrite`` may replace it, and an existing
@@ -41,6 +46,7 @@ import os
 from pathlib import Path
 
 from pounding.io.files import write_text
+from pounding.report.code_check import CodeCheckFile, folder_code_check, read_code_check
 from pounding.report.fragility import FRAGILITY_FILE, render_fragility
 from pounding.report.pushover import is_pushover, render_pushover
 from pounding.report.run import MAX_IMPACT_ROWS, render_run
@@ -99,7 +105,8 @@ def detect_kind(results_dir: str | os.PathLike[str]) -> str:
 
 
 def write_report(results_dir: str | os.PathLike[str],
-                 out: str | os.PathLike[str] | None = None) -> Path:
+                 out: str | os.PathLike[str] | None = None,
+                 code_check: str | os.PathLike[str] | None = None) -> Path:
     """Write the HTML report of a run or sweep folder and return its path.
 
     Parameters
@@ -108,6 +115,10 @@ def write_report(results_dir: str | os.PathLike[str],
         The output folder of ``pounding run`` or ``pounding sweep`` (:func:`detect_kind`).
     out : path-like, optional
         The HTML file to write; default ``results_dir/report.html``. Written atomically.
+    code_check : path-like, optional
+        A folder ``pounding code-check --out`` wrote: the page's "Code check" section
+        (:mod:`~pounding.report.code_check`); default the check kept in ``results_dir``
+        (``pounding run ... --code-check DIR``), if any.
 
     Returns
     -------
@@ -117,11 +128,14 @@ def write_report(results_dir: str | os.PathLike[str],
     Raises
     ------
     ValueError
-        ``results_dir`` is neither a run nor a sweep output, or a file in it is unreadable.
+        ``results_dir`` is neither a run nor a sweep output, or a file in it is unreadable;
+        ``code_check`` is not a code check's folder.
     """
     from pounding.io.manifest import Manifest
 
     folder = Path(results_dir)
+    detect_kind(folder)  # (a bad folder is named before a bad --code-check)
+    check = read_code_check(code_check) if code_check is not None else None
     target = Path(out) if out is not None else folder / DEFAULT_NAME
     if target.is_dir():
         raise ValueError(f"report: --html {target} is a folder; give a file name such as "
@@ -131,19 +145,23 @@ def write_report(results_dir: str | os.PathLike[str],
     manifest = Manifest(folder) if out is None and Manifest(folder).exists() else None
     if manifest is not None:
         manifest.check_free(target)
-    text = render_report(folder)
+    text = render_report(folder, check)
     if manifest is not None:
         return manifest.write_text(target, text)
     return write_text(target, text)
 
 
-def render_report(results_dir: str | os.PathLike[str]) -> str:
+def render_report(results_dir: str | os.PathLike[str],
+                  code_check: CodeCheckFile | None = None) -> str:
     """The HTML text of the report of ``results_dir`` (see :func:`write_report`).
 
     Parameters
     ----------
     results_dir : path-like
         The output folder of ``pounding run`` or ``pounding sweep``.
+    code_check : CodeCheckFile, optional
+        The check of the "Code check" section (:func:`~pounding.report.code_check.
+        read_code_check`); default the one kept in the folder, if any.
 
     Returns
     -------
@@ -157,8 +175,9 @@ def render_report(results_dir: str | os.PathLike[str]) -> str:
     """
     folder = Path(results_dir)
     kind = detect_kind(folder)
-    if kind == "fragility":
-        return render_fragility(folder)
     if kind == "pushover":
         return render_pushover(folder)
-    return render_run(folder) if kind == "run" else render_sweep(folder)
+    check = code_check if code_check is not None else folder_code_check(folder)
+    if kind == "fragility":
+        return render_fragility(folder, check)
+    return render_run(folder, check) if kind == "run" else render_sweep(folder, check)

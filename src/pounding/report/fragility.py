@@ -42,8 +42,9 @@ def _f(v: Any) -> Any:
     return v
 
 
-def render_fragility(folder: Path) -> str:
-    """The HTML text of the report of the fragility folder ``folder``.
+def render_fragility(folder: Path, code_check: Any = None) -> str:
+    """The HTML text of the report of the fragility folder ``folder`` (with a "Code check"
+    section for ``code_check``, a :class:`~pounding.report.code_check.CodeCheckFile`).
 
     Raises
     ------
@@ -74,6 +75,10 @@ def render_fragility(folder: Path) -> str:
         sections.insert(1, PageSection("failures", "Failed runs", [
             Note(f"{data['runs']['failed']} run(s) failed; they are left out of the counts "
                  "and the fits.", "warn"), Pre("\n".join(data["runs"]["failures"]))]))
+    if code_check is not None:  # (issue 29)
+        from pounding.report.code_check import code_check_section
+
+        sections.append(code_check_section(code_check))
     sections.append(PageSection("metadata", "fragility.json",
                             [Pre(json.dumps(data, indent=2), "the whole file")]))
     return render_page(f"{data['name']}: pounding fragility report",

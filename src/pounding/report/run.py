@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -36,8 +37,10 @@ IMPACT_HEADERS: dict[str, str] = {
 """Headers of the columns of ``impacts.csv``, with their units."""
 
 
-def render_run(folder: Path) -> str:
-    """The HTML text of the report of the run folder ``folder``.
+def render_run(folder: Path, code_check: Any = None) -> str:
+    """The HTML text of the report of the run folder ``folder`` (with a "Code check"
+    section for ``code_check``, a :class:`~pounding.report.code_check.CodeCheckFile`: the
+    check's levels beside the run's peak closing).
 
     Raises
     ------
@@ -63,6 +66,10 @@ def render_run(folder: Path) -> str:
         PageSection("energy", "Energy balance", energy_section(r)),
         PageSection("gap-check", "Gap check", gap_check_section(r)),
     ]
+    if code_check is not None:  # (issue 29)
+        from pounding.report.code_check import code_check_section
+
+        sections.append(code_check_section(code_check, r))
     return render_page(f"{name}: pounding run report", sub, sections, folder)
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -27,8 +28,9 @@ _TEXT_COLUMNS = ("case_id", "status", "error", "contact.law", "law", "record.fil
 """Text columns of a sweep: no unit is expected."""
 
 
-def render_sweep(folder: Path) -> str:
-    """The HTML text of the report of the sweep folder ``folder``.
+def render_sweep(folder: Path, code_check: Any = None) -> str:
+    """The HTML text of the report of the sweep folder ``folder`` (with a "Code check"
+    section for ``code_check``, a :class:`~pounding.report.code_check.CodeCheckFile`).
 
     Raises
     ------
@@ -46,6 +48,10 @@ def render_sweep(folder: Path) -> str:
         PageSection("results", "Results", _results_section(sw)),
         PageSection("plots", "Main measure against each parameter", _plots_section(sw)),
     ]
+    if code_check is not None:  # (issue 29)
+        from pounding.report.code_check import code_check_section
+
+        sections.append(code_check_section(code_check))
     if sw.meta:
         sections.append(PageSection("metadata", "Sweep metadata",
                                 [Pre(json.dumps(sw.meta, indent=2, default=str))]))

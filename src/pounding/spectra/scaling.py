@@ -15,7 +15,7 @@ Four methods, each a factor per record (amplitude scaling: the record's shape is
   where 90 % modal mass needs it — to at least 2 T1), and EN 1998-1:2004 §3.2.3.1.2(4):
   no value of the mean 5 %-damped spectrum below 90 % of the elastic spectrum between
   0.2 T1 and 2 T1, and the mean of the records' PGA not below ``a_g S`` (the target at
-  T = 0), which with ``code="ec8"`` raises F where it binds;
+  T = 0), which with ``code="en1998-1"`` raises F where it binds;
 * ``"lsq"`` — each record by least squares on the logarithm of its spectrum over the range:
   ``ln f_i = mean_T (ln Sa_target(T) − ln Sa_i(T))`` on log-spaced periods (the factor that
   minimises ``Σ_T (ln f_i Sa_i(T) − ln Sa_target(T))²``).
@@ -54,8 +54,12 @@ FloatArray = NDArray[np.float64]
 METHODS: tuple[str, ...] = ("code", "sa", "pga", "lsq")
 """Scaling methods (see the module's docstring)."""
 
-CODES: tuple[str, ...] = ("asce7", "ec8")
-"""Codes whose suite rule ``"code"`` applies: ASCE 7-22 §16.2.3, EN 1998-1 §3.2.3.1.2."""
+CODES: tuple[str, ...] = ("asce7-22", "en1998-1")
+"""Codes whose suite rule ``"code"`` applies: ASCE 7-22 §16.2.3, EN 1998-1 §3.2.3.1.2, by
+the keys of :data:`pounding.studies.codes.CODES` (one spelling across pounding)."""
+
+RENAMED_CODES: dict[str, str] = {"asce7": "asce7-22", "ec8": "en1998-1"}
+"""Keys of the codes before issue 29 (refused, naming the key to use)."""
 
 CODE_RATIO = 0.9
 """The suite's mean spectrum may not fall below this fraction of the target (both codes)."""
@@ -72,7 +76,7 @@ DEFAULT_LIMITS: tuple[float, float] = (0.25, 4.0)
 """Scale factors outside this range are flagged."""
 
 
-def code_period_range(t1: float, code: str = "asce7") -> tuple[float, float]:
+def code_period_range(t1: float, code: str = "asce7-22") -> tuple[float, float]:
     """The period range [s] a code checks a scaled suite over, for fundamental period T1:
     0.2 T1 to 2 T1 (EN 1998-1 §3.2.3.1.2(4); ASCE 7-22 §16.2.3.1's widest lower bound —
     give a lower one where more modes are needed for 90 % of the mass)."""
@@ -163,7 +167,7 @@ class SuiteScaling:
 
 
 def scale_suite(motions: Sequence[GroundMotion], target: DesignSpectrum, period: float, *,
-                method: str = "code", code: str = "asce7", damping: float = 0.05,
+                method: str = "code", code: str = "asce7-22", damping: float = 0.05,
                 period_range: tuple[float, float] | None = None,
                 limits: tuple[float, float] = DEFAULT_LIMITS,
                 n_periods: int = 100) -> SuiteScaling:
@@ -175,12 +179,12 @@ def scale_suite(motions: Sequence[GroundMotion], target: DesignSpectrum, period:
         The records (a :class:`pounding.ground_motion.RecordSuite` is one), at least one.
     target : DesignSpectrum
         The target (design) spectrum; it must cover the period range (and T = 0 for
-        ``"pga"`` and for ``"code"`` with ``code="ec8"``).
+        ``"pga"`` and for ``"code"`` with ``code="en1998-1"``).
     period : float
         The structure's fundamental period T1 [s].
     method : {"code", "sa", "pga", "lsq"}
         See the module's docstring.
-    code : {"asce7", "ec8"}
+    code : {"asce7-22", "en1998-1"}
         The code whose suite rule ``"code"`` applies.
     damping : float
         Damping ratio of the records' spectra (the target's, usually 0.05).
@@ -225,7 +229,7 @@ def scale_suite(motions: Sequence[GroundMotion], target: DesignSpectrum, period:
     if method == "code":
         corners = np.asarray(target.corners, dtype=float)
         periods = np.unique(np.concatenate([log_grid, corners[(corners > lo) & (corners < hi)]]))
-    needs_zero = method == "pga" or (method == "code" and code == "ec8")
+    needs_zero = method == "pga" or (method == "code" and code == "en1998-1")
     target_pga = _target_on(target, np.array([0.0]))[0] if needs_zero else math.nan
 
     def psa(at: FloatArray) -> FloatArray:
@@ -248,7 +252,7 @@ def scale_suite(motions: Sequence[GroundMotion], target: DesignSpectrum, period:
                                  axis=1))
     else:
         f = float(np.max(CODE_RATIO * target_g[inside] / unscaled[:, inside].mean(axis=0)))
-        if code == "ec8":
+        if code == "en1998-1":
             f = max(f, float(target_pga / pga_g.mean()))
         factors = np.full(len(motions), f)
     return SuiteScaling(method=method, code=code, target=target, period=t1, damping=zeta,
@@ -408,5 +412,10 @@ def _count(name: str, n: int, low: int) -> int:
 
 
 def _check_code(code: str) -> None:
+    if code in RENAMED_CODES:
+        raise ValueError(f"code: {code!r} is now spelled {RENAMED_CODES[code]!r}, as "
+                         "`pounding code-check` spells it (one of "
+                         f"{', '.join(CODES)})")
     if code not in CODES:
-        raise ValueError(f"code: one of {', '.join(CODES)} (got {code!r})")
+        raise ValueError(f"code: pounding scales a suite by the rule of asce7-22 (ASCE 7-22 "
+                         f"§16.2.3) or en1998-1 (EN 1998-1 §3.2.3.1.2) (got {code!r})")

@@ -186,12 +186,24 @@ class LimitStateSpec(Section):
 class SpectrumScaling(Section):
     """``[suite.scaling]``: the suite scaled to a target spectrum first
     (:func:`pounding.spectra.scale_suite`): ``target`` (a spectrum file, relative to the
-    study file), ``period`` T1 [s], ``method`` (code, sa, pga, lsq), ``code`` (asce7, ec8)."""
+    study file), ``period`` T1 [s], ``method`` (code, sa, pga, lsq), ``code`` (asce7-22,
+    en1998-1: the keys of ``pounding code-check``; asce7 and ec8, their keys before issue
+    29, are refused naming the new one)."""
 
     target: str
     period: Period
     method: Literal["code", "sa", "pga", "lsq"] = "code"
-    code: Literal["asce7", "ec8"] = "asce7"
+    code: Literal["asce7-22", "en1998-1"] = "asce7-22"
+
+    @model_validator(mode="before")
+    @classmethod
+    def _renamed_code(cls, data: Any) -> Any:
+        from pounding.spectra.scaling import RENAMED_CODES
+
+        old = data.get("code") if isinstance(data, dict) else None
+        if isinstance(old, str) and old in RENAMED_CODES:
+            raise field_error("code", f"{old!r} is now spelled {RENAMED_CODES[old]!r}")
+        return data
 
 
 class SuiteSpec(Section):
