@@ -59,13 +59,8 @@ from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.spatial import SpatialMotion
 from pounding.validation import choice, finite
 
-__all__ = [
-    "COHERENCY_MODELS",
-    "coherent_motions",
-    "harichandran_vanmarcke",
-    "lagged_coherency",
-    "luco_wong",
-]
+__all__ = ["COHERENCY_MODELS", "coherent_motions", "harichandran_vanmarcke", "luco_wong",
+           "lagged_coherency"]
 
 HV_SMART1_EVENT20 = {"A": 0.736, "alpha": 0.147, "k": 5210.0, "f0": 1.09, "b": 2.78}
 """Harichandran & Vanmarcke's constants for event 20 of SMART-1 (k [m], f0 [Hz])."""

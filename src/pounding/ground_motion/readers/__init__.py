@@ -32,8 +32,8 @@ from pounding.ground_motion.readers.dispatch import (
     read_record,
 )
 from pounding.ground_motion.readers.knet import read_knet
-from pounding.ground_motion.readers.text import read_text
 from pounding.ground_motion.readers.units import ASSUMED, UNIT_NAMES, UnitsRequired
+from pounding.ground_motion.readers.text import read_text
 
 __all__ = ["ASSUMED", "FORMATS", "SUPPORTED", "UNIT_NAMES", "RecordFormat", "UnitsRequired",
            "needs_units", "read_at2", "read_cosmos", "read_knet", "read_record", "read_text"]

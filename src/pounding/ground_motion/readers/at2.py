@@ -16,11 +16,7 @@ from typing import Any
 
 from pounding.ground_motion.motion import GroundMotion
 from pounding.ground_motion.readers.files import check_file, read_lines
-from pounding.ground_motion.readers.numbers import (
-    is_numeric_line,
-    parse_values,
-    to_float,
-)
+from pounding.ground_motion.readers.numbers import is_numeric_line, parse_values, to_float
 from pounding.ground_motion.readers.step import resolve_dt
 from pounding.ground_motion.readers.units import resolve_unit, to_si, units_in
 from pounding.validation import positive
