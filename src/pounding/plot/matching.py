@@ -19,16 +19,26 @@ __all__ = ["MatchFigureData", "plot_match"]
 
 
 class MatchFigureData(Protocol):
-    """What the figure reads of a match (:class:`pounding.spectra.matching.MatchResult`)."""
+    """What the figure reads of a match (:class:`pounding.spectra.matching.MatchResult`):
+    spectra [g] at the check periods [s], the first scale factor, the tolerance, the misfit
+    reached and the damping ratio."""
 
-    periods: NDArray[np.float64]
-    target_g: NDArray[np.float64]
-    original_g: NDArray[np.float64]
-    matched_g: NDArray[np.float64]
-    scale_factor: float
-    tolerance: float
-    max_misfit: float
-    damping: float
+    @property
+    def periods(self) -> NDArray[np.float64]: ...
+    @property
+    def target_g(self) -> NDArray[np.float64]: ...
+    @property
+    def original_g(self) -> NDArray[np.float64]: ...
+    @property
+    def matched_g(self) -> NDArray[np.float64]: ...
+    @property
+    def scale_factor(self) -> float: ...
+    @property
+    def tolerance(self) -> float: ...
+    @property
+    def max_misfit(self) -> float: ...
+    @property
+    def damping(self) -> float: ...
 
 
 def plot_match(result: MatchFigureData, record: str, target: str) -> Figure:
