@@ -16,7 +16,7 @@ from pounding.spectra import response_spectrum
 from pounding.units import G
 
 ARGS = ["synthesize", "-m", "6.5", "-r", "15", "--vs30", "400", "--mechanism", "reverse",
-        "-n", "3", "--seed", "4", "--dt", "0.02"]
+        "-n", "3", "--seed", "4", "--time-step", "0.02"]
 
 
 def test_the_records_read_back_and_the_median_is_theirs(tmp_path):
@@ -52,7 +52,7 @@ def test_the_same_seed_writes_the_same_files(tmp_path):
     (["-m", "10"], "--magnitude"),
     (["-r", "0"], "--distance"),
     (["--vs30", "50"], "--vs30"),
-    (["--dt", "0.05"], "--dt"),
+    (["--time-step", "0.05"], "--time-step"),
     (["-n", "0"], "--count"),
     (["--mechanism", "normal"], "--mechanism"),
 ])

@@ -42,7 +42,8 @@ def synthesize_cmd(
         "--seed", metavar="SEED", help="Seed: the same seed gives the same records, record "
         "i the same whatever --count.")] = 0,
     dt: Annotated[float, typer.Option(
-        "--dt", metavar="SECONDS", help="Time step \\[s] (at most 0.02).")] = 0.01,
+        "--time-step", metavar="SECONDS", help="Time step of the records written \\[s] "
+        "(at most 0.02).")] = 0.01,
     out: Annotated[Path, typer.Option(
         "--out", "-o", metavar="DIR", help=f"{opt.OUT_HELP} Default: synthetic-records in "
         "the current folder.", show_default=False)] = Path("synthetic-records"),
@@ -66,9 +67,11 @@ def synthesize_cmd(
     for name, value, lo, hi in (("--magnitude", magnitude, 4.0, 9.0),
                                 ("--distance", distance, 0.0, 500.0),
                                 ("--vs30", vs30, 100.0, 3000.0),
-                                ("--count", count, 1, 100_000), ("--dt", dt, 0.0, 0.02)):
-        if not (lo < value <= hi if name in ("--distance", "--dt") else lo <= value <= hi):
-            bracket = "(" if name in ("--distance", "--dt") else "["
+                                ("--count", count, 1, 100_000),
+                                ("--time-step", dt, 0.0, 0.02)):
+        open_low = name in ("--distance", "--time-step")
+        if not (lo < value <= hi if open_low else lo <= value <= hi):
+            bracket = "(" if open_low else "["
             raise ValueError(f"{name}: must be in {bracket}{lo:g}, {hi:g}] (got {value:g})")
     if seed < 0:
         raise ValueError(f"--seed: a whole number ≥ 0 (got {seed})")
