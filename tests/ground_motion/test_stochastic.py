@@ -51,8 +51,8 @@ def test_modulating_shape_meets_its_definitions():
 
 def test_a_long_suite_has_the_target_arias_intensity_d595_and_t_mid():
     """200 records of fixed parameters, no high-pass (the model's own definitions): the mean
-    Ia within 4 % (the records' Ia scatter by 11 %, so 4 % is over 5 standard errors), the
-    median D5-95 and t_mid within 3 % (measured: -0.8 %, -0.1 %, +0.1 %)."""
+    Ia within 4 % (the records' Ia scatter by 12 %, so 4 % is about 5 standard errors), the
+    median D5-95 and t_mid within 3 % (measured: -0.6 %, -0.08 %, -0.07 %)."""
     p = ModelParameters(arias=0.2, d595=12.0, t_mid=7.0, f_mid=5.0, f_slope=-0.1, zeta_f=0.3)
     rng = np.random.default_rng(7)
     got = np.array([_arias_measures(simulate(p, 40.0, 0.01, rng, high_pass_hz=None).accel,
@@ -73,9 +73,9 @@ def test_high_pass_leaves_no_drift():
 def test_stationary_filter_has_the_closed_form_spectrum_and_unit_variance():
     """Constant frequency and unit modulation: the process is stationary filtered white
     noise of unit variance; its power spectral density (Welch) follows the closed form
-    |H(ω)|² = 1 / ((ω_f² − ω²)² + (2 ζ ω_f ω)²), normalised to unit area, within 12 %
-    over 0.3–2.5 f (the Welch estimate with 58 averages scatters by about 13 % a bin:
-    compared averaged over bands of 8 bins)."""
+    |H(ω)|² = 1 / ((ω_f² − ω²)² + (2 ζ ω_f ω)²), normalised to unit area, over 0.3–2.5 f:
+    each band of 24 Welch bins within 10 % (their scatter is about 3 %, seeds 3-5 gave at
+    most 8 %), the whole range within 4 % (measured −2.7 %)."""
     from pounding.ground_motion._stochastic_kernel import normalised_filtered_noise
 
     dt, n, f, zeta = 0.01, 120_000, 3.0, 0.3
@@ -88,9 +88,10 @@ def test_stationary_filter_has_the_closed_form_spectrum_and_unit_variance():
     h2 = 1.0 / ((w ** 2 - om ** 2) ** 2 + (2 * zeta * w * om) ** 2)
     exact = h2 / integrate.trapezoid(h2, freq)  # one-sided, unit area over 0-50 Hz
     band = (freq > 0.3 * f) & (freq < 2.5 * f)
-    idx = np.flatnonzero(band)[: (band.sum() // 8) * 8].reshape(-1, 8)
+    idx = np.flatnonzero(band)[: (band.sum() // 24) * 24].reshape(-1, 24)
     ratio = psd[idx].mean(1) / exact[idx].mean(1)
-    assert np.all(np.abs(ratio - 1) < 0.12), ratio
+    assert np.all(np.abs(ratio - 1) < 0.10), ratio
+    assert psd[band].sum() / exact[band].sum() == pytest.approx(1.0, abs=0.04)
 
 
 def test_same_seed_same_records_and_index_independent_of_suite_size():

@@ -3,7 +3,8 @@ at every gap of ``[gap] values``), each a case of :mod:`pounding.studies.sweep` 
 go on Dask, are saved batch by batch, resume after any interruption and give a table equal
 bit for bit from one run to the next.
 
-Each case sets the record (``record.bundled`` or ``record.file``) and its scaling:
+Each case sets the record (``record.bundled``, ``record.file`` or ``record.stochastic.index``;
+with ``[suite] match`` the base model's ``[record] match`` matches it first) and its scaling:
 
 * without ``[suite.scaling]`` every record is scaled so that its own intensity equals the
   level (incremental dynamic analysis: the stripe at level ``x`` has IM = ``x`` exactly):
