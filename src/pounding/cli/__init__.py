@@ -48,6 +48,7 @@ from pounding.cli import (  # noqa: F401  (each module registers its commands on
     commands_spectrum,
     commands_suite,
     commands_sweep,
+    commands_synthesize,
 )
 from pounding.cli.app import app, use_pounding_commands
 from pounding.cli.messages import (

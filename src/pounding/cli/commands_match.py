@@ -64,6 +64,10 @@ def match_cmd(
     overwrite: Annotated[bool, typer.Option(
         "--overwrite", help=opt.OVERWRITE_HELP + " Only a file pounding match wrote.")]
         = False,
+    plot: Annotated[Path | None, typer.Option(
+        "--plot", metavar="FILE", help=opt.PLOT_HELP + " The figure: the target with its "
+        "±tolerance band, the seed's spectrum and the matched spectrum, PSA \\[g] against "
+        "period \\[s].", show_default=False)] = None,
     dt: opt.Dt = None,
     units: opt.RecordUnits = None,
     column: opt.Column = None,
@@ -80,11 +84,17 @@ def match_cmd(
       pounding match elcentro.AT2 --target examples/spectrum_asce7_site.toml --out m.AT2
 
       pounding match rec.AT2 --target site.csv --range 0.1,3 --out m.AT2 --overwrite
+
+      pounding match elcentro.AT2 --target site.toml --out m.AT2 --plot match.png
     """
     from pounding.cli.commands_spectrum import _read
     from pounding.cli.messages import EXIT_FAILED, error_line
 
     _check_out(out, overwrite)
+    if plot is not None:
+        from pounding.io.files import check_output_file
+
+        check_output_file(plot, "--plot", figure=True)
     from pounding.spectra.response import parse_damping
 
     zetas = parse_damping(damping, "--damping")
@@ -138,3 +148,9 @@ def match_cmd(
         f"within {100 * result.max_misfit:.1f} %, scale {result.scale_factor:.6g} "
         "(Al Atik & Abrahamson 2010 wavelets)"))
     console.print(f"record: {out}", highlight=False)
+    if plot is not None:
+        from pounding.plot import save_figure
+        from pounding.plot.matching import plot_match
+
+        fig = plot_match(result, motion.name, spectrum.name)
+        console.print(f"figure: {save_figure(fig, plot)}", highlight=False)

@@ -11,6 +11,7 @@ from pydantic import Field, PrivateAttr, ValidationInfo, field_validator, model_
 
 from pounding.config.base import Section, field_error, fmt
 from pounding.config.quantities import Angle, Duration, Intensity, Period, Scale, Step
+from pounding.config.synthetic_record import MatchSpec, StochasticRecord
 from pounding.ground_motion import (
     GroundMotion,
     GroundMotionComponents,
@@ -60,8 +61,12 @@ RECORDS = Memo(max_items=64, max_bytes=128 << 20)
 class RecordConfig(Section):
     """``[record]``: the ground motion.
 
-    Exactly one of ``bundled`` (a record shipped with pounding) and ``file`` (a path,
-    relative to the model file). ``dt`` [s] and ``units`` are for files that do not state
+    Exactly one of ``bundled`` (a record shipped with pounding), ``file`` (a path,
+    relative to the model file) and ``stochastic = {…}`` (a record of the stochastic model
+    of Rezaeian & Der Kiureghian 2010 for a magnitude, distance, Vs30, mechanism and seed:
+    :class:`~pounding.config.synthetic_record.StochasticRecord`). ``match = {…}`` makes the
+    record spectrum-compatible with a target spectrum, after ``duration`` and before the
+    scaling (:class:`~pounding.config.synthetic_record.MatchSpec`). ``dt`` [s] and ``units`` are for files that do not state
     them; a plain-text record states no unit, so it needs ``units`` (none is assumed).
     ``column`` and ``time_column`` (from 1; ``time_column = 0``: none) choose the columns of
     a plain-text ``file`` of several (``t, NS, EW, V``), and ``channel`` (from 1) the
@@ -110,6 +115,8 @@ class RecordConfig(Section):
     second: str | None = None
     second_file: str | None = None
     incidence: Angle | None = None
+    stochastic: StochasticRecord | None = None
+    match: MatchSpec | None = None
 
     _path: Path | None = PrivateAttr(default=None)
     _second_path: Path | None = PrivateAttr(default=None)
@@ -127,9 +134,17 @@ class RecordConfig(Section):
 
     @model_validator(mode="after")
     def _one_source(self, info: ValidationInfo) -> RecordConfig:
-        if (self.bundled is None) == (self.file is None):
-            raise ValueError("give exactly one of bundled (e.g. bundled = \"el_centro\") and "
-                             f"file (got bundled={self.bundled!r}, file={self.file!r})")
+        sources = [k for k in ("bundled", "file", "stochastic") if getattr(self, k) is not None]
+        if len(sources) != 1:
+            raise ValueError("give exactly one of bundled (e.g. bundled = \"el_centro\"), "
+                             "file and stochastic = {…} (got "
+                             f"{', '.join(sources) or 'none'})")
+        if self.stochastic is not None:
+            for key in ("dt", "units", "column", "time_column", "channel", "second",
+                        "second_file"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, f"not with stochastic = {{…}} (its dt is "
+                                           f"stochastic.dt; got {fmt(getattr(self, key))})")
         if self.scale == 0.0:
             raise field_error("scale", "must not be 0: the record would not shake anything "
                                        "(a factor in [-1000, 1000]; negative flips the "
@@ -282,11 +297,15 @@ class RecordConfig(Section):
         """The first component, and the factor its scaling multiplied it by."""
         if self.bundled is not None:
             gm = _bundled(self.bundled)
+        elif self.stochastic is not None:
+            gm = self.stochastic.motion()
         else:
             gm = _read_record_cached(path, version, self.dt, self.units, self.column,
                                      self.time_column, self.channel)
         if self.duration is not None:
             gm = gm.trimmed(self.duration)
+        if self.match is not None:
+            gm = self.match.apply(gm)
         unscaled = gm
         if self.scale is not None:
             gm = gm.scaled(self.scale)

@@ -312,8 +312,8 @@ class RunConfig(Section):
     def to_dict(self, resolve_paths: bool = False) -> dict[str, Any]:
         """The configuration as plain data (no None values), ready for :meth:`to_toml`.
 
-        With ``resolve_paths`` the record file is written as an absolute path, so the
-        copy still works from another folder.
+        With ``resolve_paths`` the record file (and a ``match`` target) is written as an
+        absolute path, so the copy still works from another folder.
         """
         data = self.model_dump(exclude_none=True)
         if self.contact is not None:
@@ -331,6 +331,8 @@ class RunConfig(Section):
             data["record"]["file"] = str(self.record.path)
         if resolve_paths and self.record.second_path is not None:
             data["record"]["second_file"] = str(self.record.second_path)
+        if resolve_paths and self.record.match is not None:
+            data["record"]["match"]["target"] = str(self.record.match.path)
         return data
 
     def to_toml(self, resolve_paths: bool = False, header: str = "",

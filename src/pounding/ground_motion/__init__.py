@@ -28,7 +28,15 @@ concept a module:
   collection of records (from a folder, a list of files or :func:`bundled_suite`), and
   :func:`read_suite`;
 * :mod:`~pounding.ground_motion.synthetic` -- :func:`harmonic`, :func:`sine_pulse`,
-  :func:`ricker`: closed-form inputs for tests.
+  :func:`ricker`: closed-form inputs for tests;
+* :mod:`~pounding.ground_motion.stochastic` -- the stochastic model of Rezaeian & Der
+  Kiureghian (2008) simulated from its six parameters, and
+  :mod:`~pounding.ground_motion.rezaeian2010` -- their predictive equations (2010) from
+  magnitude, distance, Vs30 and mechanism, and seeded suites (``docs/records.md``);
+* :mod:`~pounding.ground_motion.ba08` -- the median of Boore & Atkinson's (2008) NGA
+  ground-motion model, the yardstick of the stochastic suites' spectra.
+
+The last three are not imported here (they import SciPy and numba when used).
 
 Every reader raises :class:`ValueError` naming the file, the line and the problem, never
 showing the file's text (a file given as a record may be anything). See

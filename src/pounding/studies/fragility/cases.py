@@ -3,7 +3,8 @@ at every gap of ``[gap] values``), each a case of :mod:`pounding.studies.sweep` 
 go on Dask, are saved batch by batch, resume after any interruption and give a table equal
 bit for bit from one run to the next.
 
-Each case sets the record (``record.bundled`` or ``record.file``) and its scaling:
+Each case sets the record (``record.bundled``, ``record.file`` or ``record.stochastic.index``;
+with ``[suite] match`` the base model's ``[record] match`` matches it first) and its scaling:
 
 * without ``[suite.scaling]`` every record is scaled so that its own intensity equals the
   level (incremental dynamic analysis: the stripe at level ``x`` has IM = ``x`` exactly):
@@ -42,10 +43,11 @@ class StudyCases:
     out : Path
         The output folder.
     records : list of str
-        Record names (file stems), in suite order.
+        Record names (file stems; ``stochastic_01`` … for a simulated suite), in suite
+        order.
     source_key : str
-        ``"record.bundled"`` or ``"record.file"``.
-    sources : list of str
+        ``"record.bundled"``, ``"record.file"`` or ``"record.stochastic.index"``.
+    sources : list of str or int
         Each record's value of ``source_key``.
     levels : list of float
         Intensity levels [g].
@@ -75,7 +77,7 @@ class StudyCases:
     out: Path
     records: list[str]
     source_key: str
-    sources: list[str]
+    sources: list[Any]
     levels: list[float]
     gaps: list[float | None]
     im_label: str
@@ -134,11 +136,16 @@ class StudyCases:
         return RunConfig.model_validate(data, context={"base_dir": self.sweep.base_dir}).build()
 
 
-def _suite(cfg: StudyConfig, here: Path) -> tuple[list[str], str, list[str]]:
-    """Names, the key that selects a record in a model file, and its value per record."""
+def _suite(cfg: StudyConfig, here: Path) -> tuple[list[str], str, list[Any]]:
+    """Names, the key that selects a record in a model file, and its value per record (a
+    path or name; the index of a stochastic record)."""
     from pounding.ground_motion import RecordSuite, bundled_records
 
     s = cfg.suite
+    if s.stochastic is not None:
+        n = s.stochastic.count
+        return ([f"stochastic_{i + 1:0{len(str(n))}d}" for i in range(n)],
+                "record.stochastic.index", list(range(n)))
     if s.bundled:
         files = bundled_records()
         return [Path(f).stem for f in files], "record.bundled", [Path(f).stem for f in files]
@@ -220,7 +227,18 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     levels = cfg.intensity.level_values()
     it = cfg.intensity
     base = base_cfg.to_dict(resolve_paths=True)
-    rec: dict[str, Any] = {key.split(".")[1]: sources[0]}
+    rec: dict[str, Any] = ({"stochastic": cfg.suite.stochastic.record(0)}
+                           if cfg.suite.stochastic is not None
+                           else {key.split(".")[1]: sources[0]})
+    if cfg.suite.match is not None:
+        m = cfg.suite.match
+        target = (here / m.target).resolve()
+        if not target.is_file():
+            raise ValueError(f"{where}: suite.match.target: no such spectrum file "
+                             f"{str(target)!r} (got {m.target!r}; relative paths start at "
+                             "the study file's folder)")
+        rec["match"] = {"target": str(target), "range": list(m.range),
+                        "tolerance": m.tolerance, "iterations": m.iterations}
     if cfg.suite.duration is not None:
         rec["duration"] = cfg.suite.duration
     if key == "record.file":
@@ -264,7 +282,11 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
     first_params, first_values = cases.case_values(0, levels[0])
     for p, v in zip(first_params, first_values):
         if p.startswith("record."):
-            rec[p.split(".")[1]] = v
+            node, *rest = p.split(".")[1:]
+            if rest:  # record.stochastic.index
+                rec[node][rest[0]] = v
+            else:
+                rec[node] = v
     rows: list[tuple[int, int, int]] = []
     cols: dict[str, list[Any]] = {p: [] for p in cases.case_values(0, levels[0],
                                                                    cases.gaps[0])[0]}
@@ -293,7 +315,29 @@ def study_cases(study: str | os.PathLike[str] | StudyConfig,
         cases.sweep = parse_sweep(data, base_dir=model_file.parent, where=where)
     cases.sweep.source = source
     cases.rows = rows
+    if cfg.suite.match is not None:
+        _match_suite(cases, where)
     return cases
+
+
+def _match_suite(cases: StudyCases, where: str) -> None:
+    """Match every seed record now (remembered for the runs of this process), so a record
+    that cannot be matched is refused in one line before anything is written."""
+    from pounding.config import RunConfig
+    from pounding.studies.sweep import apply_overrides
+
+    for ri, name in enumerate(cases.records):
+        data = apply_overrides(cases.sweep.base, [cases.source_key, "record.scale"],
+                               [cases.sources[ri], 1.0])
+        for k in ("pga_g", "sa_g", "sa_period", "sa_damping", "saavg_g", "saavg_periods",
+                  "saavg_n"):
+            data["record"].pop(k, None)
+        try:
+            RunConfig.model_validate(data, context={"base_dir": cases.sweep.base_dir}
+                                     ).record.load()
+        except ValueError as exc:
+            raise ValueError(f"{where}: suite.match: record {name!r}: "
+                             f"{str(exc).removeprefix('match: ')}") from None
 
 
 def _check_demands(cfg: StudyConfig, model: Any, where: str) -> None:

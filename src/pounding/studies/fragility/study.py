@@ -206,16 +206,62 @@ class SpectrumScaling(Section):
         return data
 
 
+class SuiteStochastic(Section):
+    """``[suite] stochastic = { magnitude, distance, vs30, mechanism, count, seed, dt }``:
+    ``count`` records of the stochastic model of Rezaeian & Der Kiureghian (2010) for
+    moment magnitude ``magnitude``, rupture distance ``distance`` [km], ``vs30`` [m/s] and
+    ``mechanism`` (``"strike-slip"``, ``"reverse"``), record ``i`` drawn from its own
+    stream of ``seed`` (the same records whatever ``count``), sampled every ``dt`` [s]
+    (default 0.01, at most 0.02)."""
+
+    magnitude: Annotated[float, Field(ge=4.0, le=9.0)]
+    distance: Annotated[float, Field(gt=0.0, le=500.0)]
+    vs30: Annotated[float, Field(ge=100.0, le=3000.0)]
+    mechanism: Literal["strike-slip", "reverse"] = "strike-slip"
+    count: Annotated[int, Field(ge=2, le=10_000, strict=True)]
+    seed: Annotated[int, Field(ge=0, le=2**63 - 1, strict=True)] = 0
+    dt: Annotated[float, Field(gt=0.0, le=0.02)] = 0.01
+
+    def record(self, index: int) -> dict[str, Any]:
+        """The ``[record] stochastic`` table of record ``index``."""
+        out = self.model_dump(exclude={"count"})
+        out["index"] = index
+        return out
+
+
+class SuiteMatch(Section):
+    """``[suite] match = { target, range, tolerance }``: every record of the suite (the
+    seeds) is first made spectrum-compatible with the spectrum file ``target`` (relative
+    to the study file) over ``range = [lo, hi]`` [s] (default 0.05–4) within ``tolerance``
+    (default 0.10) by :func:`pounding.spectra.matching.match_record`; ``iterations``
+    (default 30)."""
+
+    target: str
+    range: Annotated[list[Period], Field(min_length=2, max_length=2)] = [0.05, 4.0]
+    tolerance: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.10
+    iterations: Annotated[int, Field(ge=1, le=1000, strict=True)] = 30
+
+    @model_validator(mode="after")
+    def _order(self) -> SuiteMatch:
+        if not self.range[0] < self.range[1]:
+            raise field_error("range", f"the lower period must be below the upper (got "
+                                       f"{self.range})")
+        return self
+
+
 class SuiteSpec(Section):
     """``[suite]``: exactly one of ``bundled = true`` (the bundled suite: the nine records
     of :func:`~pounding.ground_motion.bundled_records`), ``folder`` and ``files`` (relative
-    to the study file; ``dt``, ``units`` for files that do not state them); ``duration``
-    [s] keeps each record up to that time; ``scaling`` scales the suite to a target
-    spectrum before the levels are applied."""
+    to the study file; ``dt``, ``units`` for files that do not state them) — recorded
+    motions, made spectrum-compatible first with ``match = {…}`` — or ``stochastic = {…}``
+    (simulated motions); ``duration`` [s] keeps each record up to that time; ``scaling``
+    scales the suite to a target spectrum before the levels are applied."""
 
     bundled: bool | None = None
     folder: str | None = None
     files: Annotated[list[str], Field(min_length=1)] | None = None
+    stochastic: SuiteStochastic | None = None
+    match: SuiteMatch | None = None
     dt: Step | None = None
     units: str | None = None
     duration: Duration | None = None
@@ -223,16 +269,28 @@ class SuiteSpec(Section):
 
     @model_validator(mode="after")
     def _one_source(self) -> SuiteSpec:
-        given = [k for k in ("bundled", "folder", "files")
+        given = [k for k in ("bundled", "folder", "files", "stochastic")
                  if getattr(self, k) not in (None, False)]
         if len(given) != 1:
             raise field_error("bundled", "give exactly one of bundled = true, folder = "
-                                         "\"records/\" and files = [...] (got "
-                                         f"{', '.join(given) or 'none'})")
+                                         "\"records/\", files = [...] and stochastic = {…} "
+                                         f"(got {', '.join(given) or 'none'})")
+        if self.stochastic is not None:
+            for key in ("dt", "units", "match"):
+                if getattr(self, key) is not None:
+                    raise field_error(key, "not with stochastic = {…} (its step is "
+                                           "stochastic.dt; a simulated suite is not matched)")
         if self.bundled and (self.dt is not None or self.units is not None):
             raise field_error("dt" if self.dt is not None else "units",
                               "only for record files; the bundled records state their own")
         return self
+
+    @property
+    def kind(self) -> str:
+        """``"stochastic"``, ``"matched"`` or ``"recorded"``."""
+        if self.stochastic is not None:
+            return "stochastic"
+        return "matched" if self.match is not None else "recorded"
 
 
 class GapSpec(Section):

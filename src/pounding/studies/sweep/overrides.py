@@ -22,8 +22,9 @@ _EXCLUSIVE: dict[tuple[str, str], tuple[str, ...]] = {
     ("contact", "gaps"): ("gap",),
     **{("record", key): tuple(k for k in _INTENSITY_KEYS if k not in _INTENSITY[key])
        for key in _INTENSITY},
-    ("record", "file"): ("bundled",),
-    ("record", "bundled"): ("file", "dt", "units"),
+    ("record", "file"): ("bundled", "stochastic"),
+    ("record", "bundled"): ("file", "dt", "units", "stochastic"),
+    ("record", "stochastic"): ("file", "bundled", "dt", "units"),
     ("building", "period"): ("stiffness",),
     ("building", "stiffness"): ("period",),
     # a bridge's pier: its lateral stiffness, or its columns' EI with fixity and columns;
