@@ -115,9 +115,9 @@ class AnimationFrames:
     """Everything drawn: frame times [s], the channels at the frames [m] (frames ×
     channels), the shapes, labels (text at a vertex), contacts, the exaggeration factor, the
     view (``elevation``: x across, elevation up, a ground line; ``plan``: seen from above)
-    with its vertical axis label and whether both axes are drawn to one scale, and the curves below (``curve_time``
-    [s], ``ground_acceleration`` [m/s²], ``contact_force`` [N], contacts × samples,
-    decimated keeping every peak). ``buildings`` is filled for a row of buildings."""
+    with its vertical axis label and whether both axes are drawn to one scale, and the
+    curves below (``curve_time`` [s], ``ground_acceleration`` [m/s²], ``contact_force`` [N],
+    contacts × samples, decimated keeping every peak). ``buildings`` is filled for a row of buildings."""
 
     title: str
     time: NDArray[np.float64]

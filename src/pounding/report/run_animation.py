@@ -45,7 +45,8 @@ def animation_section(r: RunFolder) -> list[Block]:
     except ValueError as exc:
         return [Note(f"No animation of this run: {str(exc).removeprefix('animate: ')}.",
                      "note")]
-    notes = ([f"Frame rate lowered to {fps:g} frames/s to keep the report small "
-              f"(at most {MAX_REPORT_FRAMES} frames); `pounding animate` writes every frame "
-              "at 25 frames/s, and a video"] if fps < REPORT_FPS else [])
+    lowered = (f"Frame rate lowered to {fps:g} frames/s to keep the report small (at most "
+               f"{MAX_REPORT_FRAMES} frames); the command pounding animate writes every "
+               f"frame at {REPORT_FPS:g} frames/s, and a video")
+    notes = [lowered] if fps < REPORT_FPS else []
     return [animation_block(frames, notes)]

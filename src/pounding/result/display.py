@@ -153,7 +153,7 @@ def result_html(result: Response) -> str:
     peaks = s.get("peak_contact_force_by_contact_N") or {}
     contacts = [(c, impacts.get(c), None if peaks.get(c) is None else peaks[c] / 1e3)
                 for c in impacts]
-    parts = [f'<div class="pounding-result"><strong>pounding Result</strong>',
+    parts = ['<div class="pounding-result"><strong>pounding Result</strong>',
              html_table(head, ("quantity", "value")),
              html_table(buildings, ("building", "peak floor displacement [mm]",
                                     "peak drift ratio [%]"))]
