@@ -157,3 +157,28 @@ def test_out_folder_gets_a_manifest(run_dir: Path, tmp_path: Path) -> None:
     assert main(["animate", str(run_dir), "--out", str(out), "--no-video"]) == 0
     assert (out / "animation.html").is_file() and not list(out.glob("animation.gif"))
     assert main(["animate", str(run_dir), "--out", str(out), "--no-video"]) == 0
+
+
+def test_the_run_report_embeds_the_view_and_its_slider_moves_the_frame(run_dir: Path,
+                                                                      tmp_path: Path) -> None:
+    """The run report holds the animation page's view, its frames embedded once (as in the
+    page `pounding animate` writes), and its slider moves the frame in a real browser."""
+    report = tmp_path / "report.html"
+    assert main(["report", str(run_dir), "--html", str(report)]) == 0
+    text = report.read_text(encoding="utf-8")
+    assert text.count('<script id="anim-data"') == 1 and 'max="50"' in text  # 2 s at 25 /s
+    assert main(["animate", str(run_dir), "--out", str(tmp_path / "page"), "--no-video"]) == 0
+    page = (tmp_path / "page" / "animation.html").read_text(encoding="utf-8")
+    data = re.compile(r'<script id="anim-data" type="application/json">(.*?)</script>', re.S)
+    assert data.search(text).group(1) == data.search(page).group(1)  # type: ignore[union-attr]
+    probe = """<script>
+slider.value = "50"; slider.dispatchEvent(new Event("input"));
+document.body.setAttribute("data-slid", canvas.dataset.frame + "|" + clock.textContent);
+</script></body>"""
+    probed = tmp_path / "probe.html"
+    probed.write_text(text.replace("</body>", probe), encoding="utf-8")
+    dom = browse(probed, tmp_path, "--virtual-time-budget=2000", "--dump-dom").stdout
+    slid = re.search(r'data-slid="([^"]*)"', dom)
+    assert slid, dom[-2000:]
+    frame, clock = slid.group(1).split("|")
+    assert frame == "50" and clock.startswith("t = 2.000 s") and "impact" in clock

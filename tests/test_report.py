@@ -143,8 +143,8 @@ def test_run_report_renders_in_headless_chromium(report: Path, tmp_path: Path) -
     dom = browse(report, tmp_path, "--dump-dom").stdout
     assert "<title>seed SDOF pair: pounding run report</title>" in dom
     assert "<h1>seed SDOF pair: pounding run report</h1>" in dom
-    for heading in ("Headline numbers", "Model", "Record", "Figures", "Impact table",
-                    "Energy balance", "Gap check"):
+    for heading in ("Headline numbers", "Model", "Record", "Figures", "Animation",
+                    "Impact table", "Energy balance", "Gap check"):
         assert f"<h2>{heading}</h2>" in dom, heading
     # the impact table: 7 rows of contact B1F1-B2F1, headers with units
     table = dom[dom.index('<table class="impacts">'):]
@@ -175,8 +175,12 @@ def test_sweep_report_renders_in_headless_chromium(tmp_path: Path) -> None:
 def test_run_report_is_self_contained_with_units(report: Path) -> None:
     text = report.read_text(encoding="utf-8")
     assert text.startswith("<!DOCTYPE html>")
-    # nothing fetched from elsewhere: no script, stylesheet link, remote or file URL
-    assert "<script" not in text and "<link" not in text and "<iframe" not in text
+    # nothing fetched from elsewhere: no stylesheet link, remote or file URL, and no script
+    # but the embedded animation's own two (its frames as JSON, and the code drawing them)
+    assert text.count("<script") == 2 and text.count('<div class="anim">') == 1
+    view = text[text.index('<div class="anim">'):]
+    assert view.index("</script></div>") > view.rindex("<script")
+    assert "<link" not in text and "<iframe" not in text
     assert not re.search(r"(src|href)=\"(?!data:|#)", text)
     assert "http://" not in text and "https://" not in text
     for unit_header in ("peak contact force [N]", "peak roof displacement [m]",
@@ -239,7 +243,7 @@ def test_text_from_the_files_is_escaped(run_dir: Path, tmp_path: Path) -> None:
                                                      f"name = {json.dumps(evil)}")
     (copy / "model.toml").write_text(toml)
     text = render_report(copy)
-    assert "<script" not in text
+    assert text.count("<script") == 2  # the animation's own (test above); none from the files
     assert "&lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt; &amp; co" in text
 
 

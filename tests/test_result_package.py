@@ -16,7 +16,7 @@ PACKAGE = Path(pounding.result.__file__).parent
 
 ORDER = ("columns", "demands", "peaks", "reductions", "storeys", "foundations", "bridge_seats",
          "contact_response", "response", "storey_peaks", "bridge_peaks", "bridge_keys",
-         "variables", "summary", "files", "result")
+         "variables", "summary", "files", "display", "result")
 """The modules of :mod:`pounding.result`, bottom first: each may import only those before it."""
 
 

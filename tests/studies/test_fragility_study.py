@@ -126,6 +126,48 @@ def test_the_gap_for_the_target_probability_by_hand(small):
     assert set(data["gap"]["code_gaps_m"]) == {"ABS", "SRSS", "DDC"}
 
 
+def test_jupyter_shows_the_study_with_its_numbers_units_and_curves(small, tmp_path,
+                                                                   monkeypatch):
+    """``_repr_html_`` of the outcome and its analysis: the numbers of fragility.json, with
+    units, and the fragility curves inline; nothing written."""
+    import base64
+    import html
+    import re
+
+    _, res = small
+    before = sorted(p.name for p in res.cases.out.rglob("*"))
+    monkeypatch.chdir(tmp_path)
+    text = res._repr_html_()
+    assert res.analysis._repr_html_().startswith('<div class="pounding-fragility">')
+    assert sorted(p.name for p in res.cases.out.rglob("*")) == before
+    assert list(tmp_path.iterdir()) == []
+    data = json.loads((res.cases.out / "fragility.json").read_text())
+    cells = [[html.unescape(c) for c in re.findall(r"<t[dh][^>]*>(.*?)</t[dh]>", row)]
+             for row in re.findall(r"<tr>(.*?)</tr>", text)]
+    head = {r[0]: r[1] for r in cells if len(r) == 2}
+    assert int(head["runs"]) == data["runs"]["n"] and int(head["failed runs"]) == 0
+    key = "gap for P(pounding) = 0.2 at 0.5 g, lognormal fit [mm]"
+    assert float(head[key]) == pytest.approx(data["gap"]["gap_for_target_lognormal_m"] * 1e3,
+                                             rel=5e-4)
+    states = [r for r in cells if len(r) == 7 and r[0] != "limit state"]
+    assert len(states) == 2 * len(data["limit_states"])
+    checked = 0
+    for ls in data["limit_states"]:
+        for method, fit in (("stripes (MLE)", "msa_mle"), ("IDA capacities", "ida")):
+            gap = f"{ls['gap_m'] * 1e3:g} mm"
+            row = next(r for r in states if r[:3] == [ls["name"], gap, method])
+            if ls[fit]["median_g"] is None:  # never exceeded: no number shown
+                assert row[3] == "–"
+                continue
+            assert float(row[3]) == pytest.approx(ls[fit]["median_g"], rel=5e-4)
+            assert float(row[5]) == pytest.approx(ls[fit]["beta"], rel=5e-4)
+            checked += 1
+    assert checked >= 4
+    assert "median θ [g]" in text and "[mm]" in text and "[s]" in text
+    png = re.findall(r'<img [^>]*src="data:image/png;base64,([^"]+)"', text)
+    assert len(png) == 1 and base64.b64decode(png[0]).startswith(b"\x89PNG")
+
+
 def test_a_second_run_does_no_run_and_writes_the_same_files(small):
     study, res = small
     before = {n: (res.cases.out / n).read_bytes() for n in ("fragility.json", "fragility.csv",

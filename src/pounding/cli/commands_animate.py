@@ -25,7 +25,9 @@ def animate_cmd(
                       "plays in real time).")] = 25.0,
     exaggeration: Annotated[float | None, typer.Option(
         "--exaggeration", help="Factor on the displacements drawn. Default: a round factor "
-                               "drawing the largest about a tenth of the tallest height.",
+                               "drawing the largest move about a tenth of the drawing's size "
+                               "(the tallest height; in plan the largest plan dimension; a "
+                               "bridge: half its longest deck).",
         show_default=False)] = None,
     start: Annotated[float | None, typer.Option(
         "--start", help=opt.escape("First time animated [s]. Default: the run's start."),
@@ -37,8 +39,9 @@ def animate_cmd(
         "--video/--no-video", help="Write the video (MP4 with ffmpeg, else GIF) beside the "
                                    "page.")] = True,
 ) -> None:
-    """Animate a run: the buildings swaying and striking, the ground motion and the contact
-    forces below; an interactive page (animation.html) and a video.
+    """Animate a run: the buildings (in a row, or in plan from above) or the bridge's decks
+    swaying and striking, the ground motion and the contact forces below; an interactive
+    page (animation.html) and a video.
 
     Examples:
 

@@ -1,7 +1,7 @@
 """Shared formatting of the report pages: numbers, units, and the blocks a section is made of.
 
 A section of a page is a list of blocks: :class:`Table`, :class:`Note`, :class:`Figure`,
-:class:`Cards` and :class:`Pre`. Each block holds plain values (text is never HTML here); the
+:class:`Cards`, :class:`Pre` and :class:`Animation`. Each block holds plain values (text is never HTML here); the
 macro of ``templates/blocks.html.j2`` named by its ``kind`` writes it out, HTML-escaped.
 """
 
@@ -18,7 +18,7 @@ import numpy as np
 
 from pounding.units import unit_of  # re-exported: the unit of a results column
 
-__all__ = ["Block", "Cards", "Figure", "Note", "Pre", "PageSection", "Table", "kv_table", "num",
+__all__ = ["Animation", "Block", "Cards", "Figure", "Note", "Pre", "PageSection", "Table", "kv_table", "num",
            "png_bytes", "unit_of", "with_unit"]
 
 
@@ -139,7 +139,21 @@ class Pre:
     kind: ClassVar[str] = "pre"
 
 
-Block = Table | Note | Figure | Cards | Pre
+@dataclass
+class Animation:
+    """The interactive animation of a run (``templates/animation_view.html.j2``): its frames
+    as JSON-ready ``data`` (:func:`pounding.report.animate.animation_data`), their number,
+    the frame rate and factor as shown, and notes (one sentence each)."""
+
+    data: dict[str, Any]
+    n_frames: int
+    fps: str
+    exaggeration: str
+    notes: list[str] = field(default_factory=list)
+    kind: ClassVar[str] = "animation"
+
+
+Block = Table | Note | Figure | Cards | Pre | Animation
 """Anything a section is made of."""
 
 

@@ -1,7 +1,8 @@
 """The run page: its sections in order, the headline numbers and the impact table.
 
 The model and record sections are in :mod:`pounding.report.run_inputs`, the figures in
-:mod:`pounding.report.run_figures`, the energy balance and gap check in
+:mod:`pounding.report.run_figures`, the interactive animation in
+:mod:`pounding.report.run_animation`, the energy balance and gap check in
 :mod:`pounding.report.run_checks`, a bridge's section in :mod:`pounding.report.run_bridge`.
 """
 
@@ -15,6 +16,7 @@ import numpy as np
 
 from pounding.report.format import Block, Cards, Note, PageSection, Table, kv_table, num
 from pounding.report.page import render_page
+from pounding.report.run_animation import animation_section
 from pounding.report.run_bridge import BRIDGE_FIGURE, bridge_section
 from pounding.report.run_checks import energy_section, gap_check_section
 from pounding.report.run_figures import figures_section
@@ -62,6 +64,7 @@ def render_run(folder: Path, code_check: Any = None) -> str:
         PageSection("record", "Record", record_section(r)),
         PageSection("figures", "Figures",
                     figures_section(r, skip=(BRIDGE_FIGURE,) if bridge else ())),
+        PageSection("animation", "Animation", animation_section(r)),  # the animate view
         PageSection("impacts", "Impact table", _impacts_section(r)),
         PageSection("energy", "Energy balance", energy_section(r)),
         PageSection("gap-check", "Gap check", gap_check_section(r)),

@@ -22,8 +22,11 @@ modules below are how the package is built, each importing only those under it:
 * :mod:`~pounding.result.summary` — its headline numbers (``summary.json``);
 * :mod:`~pounding.result.files` — the files of a run (``timehistories.nc``,
   ``impacts.csv``, ``summary.json``);
+* :mod:`~pounding.result.display` — a run as a notebook shows it: the headline numbers
+  with units and the key figure, inline (``Result._repr_html_``; matplotlib's own
+  object-oriented API, imported when shown: :mod:`pounding.plot` is a layer above);
 * :mod:`~pounding.result.result` — :class:`Result`, a :class:`Response` with its tables and
-  files as methods (:meth:`Result.summary`, :meth:`Result.save`, :meth:`Result.to_dataset`):
+  files as methods (:meth:`Result.summary`, :meth:`Result.save`, :meth:`Result.to_xarray`):
   what :func:`pounding.simulate` returns.
 
 Names are imported on first use (PEP 562): importing this package loads nothing heavy.

@@ -5,7 +5,7 @@ and then written with plain file I/O, so that HDF5 never meets a full disk or a 
 limit (it crashes the process there); a failed write is one :class:`pounding.io.files.WriteFailed`
 naming the file, costing about 0.03 s more for the demo's 42 MB. It is built with h5netcdf
 directly from :func:`pounding.result.variables.history_variables` — the same variables,
-units and coordinates :meth:`~pounding.result.Result.to_dataset` gives as an xarray Dataset, which
+units and coordinates :meth:`~pounding.result.Result.to_xarray` gives as an xarray Dataset, which
 is also how to read the file back (``xarray.open_dataset(path, engine="h5netcdf")``). Going
 without xarray and pandas here keeps a run's start-up short: importing them costs about a
 second, more than the whole simulation of a small model.

@@ -8,7 +8,7 @@ the histories as named variables and as an xarray Dataset, the JSON summary, and
 (:mod:`pounding.result.files`), each file atomically.
 
 pandas and xarray are imported only by the methods that return their objects
-(:attr:`Result.impacts`, :meth:`Result.to_dataset`): writing a run's files needs neither.
+(:attr:`Result.impacts`, :meth:`Result.to_xarray`): writing a run's files needs neither.
 """
 
 from __future__ import annotations
@@ -52,7 +52,8 @@ class Result(Response):
     Its data and derived quantities are those of :class:`~pounding.result.response.Response`
     (same fields, same constructor); a result adds :attr:`impacts`, :attr:`bearings`,
     :attr:`seats`, :attr:`plan_storeys`, :attr:`bridge_elements`, :attr:`bridge`,
-    :meth:`history_variables`, :meth:`to_dataset`, :meth:`summary` and :meth:`save`.
+    :meth:`history_variables`, :meth:`to_xarray` (alias :meth:`to_dataset`), :meth:`summary`
+    and :meth:`save`; in Jupyter it shows as a summary with its key figure (``_repr_html_``).
     """
 
     @cached_property
@@ -138,9 +139,16 @@ class Result(Response):
         (:func:`pounding.result.history_variables`)."""
         return history_variables(self)
 
-    def to_dataset(self) -> xr.Dataset:
-        """All time histories as an xarray Dataset with units and descriptions
-        (:meth:`history_variables`)."""
+    def to_xarray(self) -> xr.Dataset:
+        """The dataset ``timehistories.nc`` holds: every time history and per-floor result
+        with its dimensions, coordinates, units and descriptions, and the run's attributes.
+
+        Built from :meth:`history_variables`, the variables
+        :func:`pounding.result.files.write_netcdf` writes into the file, so the two cannot
+        drift: ``xarray.open_dataset(folder / "timehistories.nc", engine="h5netcdf")`` of a
+        saved result equals this variable by variable, attributes included
+        (``xarray.Dataset.identical``; text coordinates read back from the file as
+        ``object`` arrays of the same strings)."""
         import xarray as xr
 
         hv = self.history_variables()
@@ -152,10 +160,22 @@ class Result(Response):
                           coords={k: da(v) for k, v in hv.coords.items()},
                           attrs=dict(hv.attrs))
 
+    def to_dataset(self) -> xr.Dataset:
+        """The same as :meth:`to_xarray` (its older name)."""
+        return self.to_xarray()
+
     def summary(self) -> dict[str, Any]:
         """Headline numbers (JSON-ready), each key naming its unit
         (:func:`pounding.result.summarize`)."""
         return summarize(self)
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the headline numbers with units and the key figure (top-floor
+        displacements and contact forces), an inline PNG; nothing written
+        (:func:`pounding.result.display.result_html`)."""
+        from pounding.result.display import result_html
+
+        return result_html(self)
 
     def save(self, folder: str | os.PathLike[str],
              warnings: Sequence[str] = ()) -> dict[str, Path]:

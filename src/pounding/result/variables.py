@@ -1,5 +1,5 @@
 """A result's histories as named variables with dimensions, units and descriptions: what
-:meth:`pounding.result.Result.to_dataset` and the NetCDF file
+:meth:`pounding.result.Result.to_xarray` and the NetCDF file
 (:func:`pounding.result.files.write_netcdf`) hold (one description, two writers)."""
 
 from __future__ import annotations
@@ -88,7 +88,7 @@ class HistoryVariables(NamedTuple):
 
 def history_variables(result: Response) -> HistoryVariables:
     """Every time history and per-floor result as named variables with dimensions, units
-    and descriptions: what :meth:`pounding.result.Result.to_dataset` and the NetCDF file
+    and descriptions: what :meth:`pounding.result.Result.to_xarray` and the NetCDF file
     hold (one description, two writers)."""
     model = result.model
     contacts = model.contacts

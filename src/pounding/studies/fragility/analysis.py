@@ -150,6 +150,13 @@ class FragilityAnalysis:
     gap of :attr:`gaps` (the base model's joint gaps, else the first of ``[gap] values``);
     None for buildings."""
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the fragilities, the gap for the target probability, the runs
+        and the curves, inline (:func:`pounding.studies.fragility.display.fragility_html`)."""
+        from pounding.studies.fragility.display import fragility_html
+
+        return fragility_html(self)
+
 
 @dataclass(frozen=True)
 class HingeRuns:

@@ -36,6 +36,14 @@ class FragilityOutcome:
         """The output folder."""
         return self.cases.out
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the fragilities, the gap for the target probability, the runs
+        and the curves, inline (:func:`pounding.studies.fragility.display.fragility_html`)."""
+        from pounding.studies.fragility.display import fragility_html
+
+        return fragility_html(self.analysis, [("folder", str(self.out_dir)),
+                                              ("wall time [s]", self.wall_time)])
+
 
 def run_study(input: str | os.PathLike[str] | StudyCases,
               out: str | os.PathLike[str] | None = None, *, overwrite: bool = False,

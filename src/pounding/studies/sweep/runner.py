@@ -113,6 +113,13 @@ class SweepOutcome:
         """Cases run per second of :attr:`run_time`."""
         return self.n_run / self.run_time if self.run_time > 0 else float("nan")
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: counts, times, the peak contact force over the cases [kN] and
+        the sweep's figure, inline (:func:`pounding.studies.sweep.display.sweep_html`)."""
+        from pounding.studies.sweep.display import sweep_html
+
+        return sweep_html(self)
+
 
 def run_sweep(input: Sweep | str | os.PathLike[str], out: str | os.PathLike[str] | None = None,
               *, overwrite: bool = False, figures: bool | None = None,
