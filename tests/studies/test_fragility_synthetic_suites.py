@@ -27,6 +27,7 @@ RECORDS = Path(pounding.ground_motion.bundled.__file__).resolve().parents[1] / "
 
 HEAD = f'''name = "made"
 base = "{SEED}"
+out = "results"
 [intensity]
 measure = "sa"
 period = 1.0
