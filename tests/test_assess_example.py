@@ -38,17 +38,25 @@ def _page_row(first_cell: str) -> list[str]:
 def test_the_page_shows_the_commands_it_runs() -> None:
     """The console lines of the page are the commands this test runs."""
     page = re.sub(r"\\\n\s*", "", PAGE)
-    assert ("pounding code-check examples/existing_pair.toml " + " ".join(CODE_OPTIONS)) in page
-    assert "pounding run examples/existing_pair.toml" in page
+    assert ("pounding code-check examples/existing_pair.toml " + " ".join(CODE_OPTIONS)
+            + " --time-history --out results/existing-check") in page
+    assert ("pounding run examples/existing_pair.toml --out results/existing "
+            "--code-check results/existing-check") in page
     assert "pounding fragility examples/fragility_existing_pair.toml" in page
     assert "pounding mitigate examples/mitigation_existing_pair.toml" in page
 
 
-def test_code_check_step(tmp_path: Path) -> None:
-    out = tmp_path / "check"
+@pytest.fixture(scope="module")
+def checked(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Step 1: the code check with the time histories beside it, written to a folder."""
+    out = tmp_path_factory.mktemp("assess") / "check"
     assert main(["code-check", str(EXAMPLES / "existing_pair.toml"), *CODE_OPTIONS,
-                 "--out", str(out)]) == 0
-    check = json.loads((out / "code_check.json").read_text())
+                 "--time-history", "--out", str(out)]) == 0
+    return out
+
+
+def test_code_check_step(checked: Path) -> None:
+    check = json.loads((checked / "code_check.json").read_text())
     assert check["ok"] is False
     for floor, level in enumerate(check["levels"], start=1):
         cells = _page_row(f"{floor} ({level['elevation_m']:.1f} m)")
@@ -56,12 +64,25 @@ def test_code_check_step(tmp_path: Path) -> None:
             [level["left_mm"], level["right_mm"], level["required_mm"], level["gap_mm"]],
             abs=0.051)
         assert cells[5] == ("OK" if level["ok"] else "not OK")
+    beside = check["time_history"]
+    pair = beside["pairs"][0]
+    assert (pair["records_pounding_at_own_gap"], pair["records_pounding_at_code_gap"]) == (9, 6)
+    assert "all nine make the pair pound; with the code's gap six" in " ".join(PAGE.split())
+    factor = {round(r["factor"], 3) for r in beside["records"]}
+    assert factor == {0.888} and "(factor 0.888)" in PAGE
+    for floor, level in enumerate(beside["levels"], start=1):
+        cells = _page_row(str(floor))
+        assert float(cells[1]) == pytest.approx(level["required_mm"], abs=0.051)
+        assert float(cells[2]) == pytest.approx(level["mean_peak_closing_mm"], abs=0.051)
+        assert cells[3] == f"{level['records_closing_past_required']} of 9"
 
 
-def test_time_history_step(tmp_path: Path) -> None:
+def test_time_history_step(checked: Path, tmp_path: Path) -> None:
     out = tmp_path / "run"
     assert main(["run", str(EXAMPLES / "existing_pair.toml"), "--out", str(out),
-                 "--no-figures"]) == 0
+                 "--no-figures", "--code-check", str(checked)]) == 0
+    assert json.loads((out / "code_check.json").read_text()) == json.loads(
+        (checked / "code_check.json").read_text())
     impacts = pd.read_csv(out / "impacts.csv")
     per_floor = impacts.groupby("contact").size()
     assert len(impacts) == 38
