@@ -23,8 +23,11 @@ SEED = ROOT / "examples" / "seed_sdof_pair.toml"
 def test_one_list_of_codes_for_every_code_option():
     from pounding.spectra.scaling import CODES as SCALING_CODES
 
+    from pounding.spectra.scaling import RENAMED_CODES
+
     assert [c.value for c in opt.Code] == list(CODES)
     assert set(SCALING_CODES) <= set(CODES)
+    assert opt.RENAMED_CODES == RENAMED_CODES
 
 
 @pytest.mark.parametrize(("old", "new"), [("asce7", "asce7-22"), ("ec8", "en1998-1")])
@@ -33,9 +36,13 @@ def test_the_old_spelling_is_refused_naming_the_new_one(old, new, tmp_path, caps
     with pytest.raises(ValueError, match=rf"^code: '{old}' is now spelled '{new}'"):
         scale_suite([motion], DesignSpectrum.asce7(1.0, 0.6), 1.0, code=old)
     capsys.readouterr()
-    assert main(["suite", "--design", str(TARGET), "--t1", "1", "--code", old]) == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "--code" in err[0] and new in err[0], err
+    for argv in (["suite", "--design", str(TARGET), "--t1", "1"],
+                 ["code-check", str(SEED), "--agr", "0.3", "--ground-type", "C",
+                  "--spectrum-type", "1", "--q", "3"]):
+        assert main([*argv, "--code", old]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and f"'{old}' is now spelled '{new}'" in err[0], err
+        assert "--code" in err[0]
 
     from pounding.studies.fragility.study import parse_study
 

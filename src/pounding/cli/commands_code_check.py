@@ -39,7 +39,7 @@ class Combination(StrEnum):
     srss = "srss"
 
 
-@app.command("code-check")
+@app.command("code-check", context_settings=opt.CODE_CONTEXT)  # (issue 29: old --code)
 def code_check_cmd(
     model: Annotated[Path, typer.Argument(
         help="TOML model file, as for `pounding run` (its buildings and gaps are checked; "

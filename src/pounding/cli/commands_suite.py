@@ -17,7 +17,7 @@ CSV_COLUMNS = ("record", "factor", "flagged", "pga_g", "scaled_pga_g", "sa_t1_g"
 """Columns of ``pounding suite --csv``: one row per record."""
 
 
-@app.command("suite")
+@app.command("suite", context_settings=opt.CODE_CONTEXT)
 def suite_cmd(
     records: Annotated[list[Path] | None, typer.Argument(
         help="Record files or a folder of them (any format `pounding record` reads). "

@@ -162,6 +162,23 @@ class Code(StrEnum):
 CODE_HELP = "The seismic code, by standard and edition (docs/codes.md)."
 """The meaning of ``--code`` (first sentence of its help)."""
 
+RENAMED_CODES: dict[str, str] = {"asce7": "asce7-22", "ec8": "en1998-1"}
+"""``--code`` values before issue 29, and the value now
+(:data:`pounding.spectra.scaling.RENAMED_CODES`)."""
+
+
+def _refuse_renamed_code(token: str) -> str:
+    """A choice as typed, unless it is a renamed code: then one line naming the new value
+    (click calls it on option names and choices, not on arguments)."""
+    if token in RENAMED_CODES:
+        raise ValueError(f"{token!r} is now spelled {RENAMED_CODES[token]!r}")
+    return token
+
+
+CODE_CONTEXT = {"token_normalize_func": _refuse_renamed_code}
+"""``context_settings`` of the commands with ``--code``: ``--code ec8`` is refused naming
+``en1998-1``."""
+
 
 # ============================================================================ output
 CODE_CHECK_HELP = "A folder written by `pounding code-check --out`."

@@ -145,7 +145,7 @@ def write_report(results_dir: str | os.PathLike[str],
     manifest = Manifest(folder) if out is None and Manifest(folder).exists() else None
     if manifest is not None:
         manifest.check_free(target)
-    text = render_report(folder, check)
+    text = render_report(folder) if check is None else render_report(folder, check)
     if manifest is not None:
         return manifest.write_text(target, text)
     return write_text(target, text)
