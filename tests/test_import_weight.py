@@ -81,6 +81,7 @@ def test_the_seed_link_element_loads_no_compiled_law() -> None:
 
 
 @pytest.mark.parametrize("package", ["pounding.config", "pounding.contact", "pounding.result",
+                                     "pounding.structure",
                                      "pounding.studies",
                                      "pounding.studies.sweep", "pounding.studies.fragility"])
 def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
