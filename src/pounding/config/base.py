@@ -18,11 +18,7 @@ class Section(BaseModel):
     """A table of a model file. Strict: no unknown keys, no strings for numbers, no
     inf/nan."""
 
-    # defer_build: a section's validator is made when it is first used, not when its class
-    # is defined: a file is validated by RunConfig's one schema, which holds every section,
-    # so most sections' own validators are never needed (~20 ms of a run's start-up)
-    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True,
-                              defer_build=True)
+    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
 
 
 def field_error(field: str | tuple[str | int, ...], message: str) -> PydanticCustomError:
