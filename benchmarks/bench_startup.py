@@ -32,6 +32,7 @@ Run from the repository root::
 
     python benchmarks/bench_startup.py             # warm commands, 5 repeats
     python benchmarks/bench_startup.py --cold      # and the first (compiling) run
+    python benchmarks/bench_startup.py --phases    # and where a warm run's CPU goes
 
 The machine is shared: close other work, and compare within one run.
 """
@@ -80,6 +81,44 @@ def measure(cmd: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, floa
     return usage.ru_utime + usage.ru_stime, wall
 
 
+PHASES = """
+import resource, sys, tempfile
+
+
+def cpu():
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+marks = [("start", cpu())]
+import numpy, numba
+marks.append(("import numpy, numba (the peer's imports)", cpu()))
+import scipy.linalg
+marks.append(("import scipy.linalg (the propagator's expm)", cpu()))
+import pydantic, typer, rich.console, rich.progress, rich.table
+marks.append(("import pydantic, typer, rich", cpu()))
+import h5netcdf
+marks.append(("import h5netcdf, h5py (the NetCDF writer)", cpu()))
+import pounding.cli, pounding.cli.run_tables, pounding.config.run, pounding.run_file
+marks.append(("import pounding's modules of a run", cpu()))
+from pounding.config import load_config
+config = load_config(sys.argv[1])
+marks.append(("load_config: read, validate, build, check", cpu()))
+model, motion, options = config.build()
+from pounding.integrate import simulate
+result = simulate(model, motion, **options)
+marks.append(("first simulate: the kernel loaded from numba's cache", cpu()))
+result = simulate(model, motion, **options)
+marks.append(("second simulate: the integration alone", cpu()))
+result.save(tempfile.mkdtemp() + "/out")
+marks.append(("save: NetCDF, CSV, JSON", cpu()))
+for (_, before), (name, after) in zip(marks, marks[1:]):
+    print(f"{after - before:6.3f} s  {name}")
+print(f"{marks[-1][1]:6.3f} s  the whole process so far")
+"""
+"""An in-process account of the CPU a run spends, phase by phase (``--phases``)."""
+
+
 def integration_time(out: Path) -> float:
     """The integration's own wall time [s], as the run wrote it in ``summary.json``."""
     return float(json.loads((out / "summary.json").read_text())["solver"]["wall_time_s"])
@@ -117,6 +156,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--repeat", type=int, default=5, help="runs of each command (5)")
     ap.add_argument("--cold", action="store_true",
                     help="also time the first run with an empty numba cache")
+    ap.add_argument("--phases", action="store_true",
+                    help="also account for a warm run's CPU phase by phase, in one process")
     args = ap.parse_args(argv)
 
     env = child_env()
@@ -168,6 +209,11 @@ def main(argv: list[str] | None = None) -> int:
             row.solver.append(integration_time(work / "cold"))
             print(row.line() + f"goal ≤ 20 s of CPU: {'met' if cpu <= 20.0 else 'MISSED'}")
             shutil.rmtree(cache, ignore_errors=True)
+        if args.phases:
+            print(f"\nwhere the CPU of a warm run of {SEED.name} goes (one process, "
+                  "phase by phase):")
+            subprocess.run([sys.executable, "-c", PHASES, str(SEED)], cwd=work, env=env,
+                           check=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print(f"\n{load()} (after)")
