@@ -81,6 +81,7 @@ def test_the_seed_link_element_loads_no_compiled_law() -> None:
 
 
 @pytest.mark.parametrize("package", ["pounding.config", "pounding.contact", "pounding.result",
+                                     "pounding.structure",
                                      "pounding.studies",
                                      "pounding.studies.sweep", "pounding.studies.fragility"])
 def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
@@ -103,3 +104,29 @@ def test_every_public_name_of_a_lazy_package_is_there(package: str) -> None:
 
     submodules = {m.name for m in pkgutil.iter_modules(module.__path__)}
     assert not submodules & set(module.__all__)
+
+
+def test_a_run_of_two_shear_buildings_loads_only_what_its_model_needs(tmp_path) -> None:
+    """``pounding run examples/seed_sdof_pair.toml --no-figures`` (two SDOF buildings,
+    Jankowski's law with e = 0.65) loads none of the machinery of the models it does not
+    hold — buildings in plan's foundations, bridges, frames — nor what only other commands
+    need: SciPy's optimizers and integrators (the exact ζ of e = 0.65 is tabulated), the
+    contact calibration, pandas, xarray, matplotlib, Dask. (``scipy.linalg`` it does load:
+    the exact propagator is a matrix exponential.)"""
+    from pathlib import Path
+
+    seed = Path(__file__).resolve().parents[1] / "examples" / "seed_sdof_pair.toml"
+    not_needed = ("scipy.optimize", "scipy.integrate", "scipy.sparse", "scipy.special",
+                  "pandas", "xarray", "matplotlib", "dask", "pounding.structure.plan",
+                  "pounding.structure.bridge", "pounding.structure.foundation",
+                  "pounding.structure.frame", "pounding.structure.frame_linear",
+                  "pounding.contact.calibration", "pounding.contact.collision",
+                  "pounding.plot.response", "pounding.studies")
+    code = ("from pounding.cli import main\n"
+            f"assert main(['run', {str(seed)!r}, '--out', {str(tmp_path / 'out')!r}, "
+            "'--no-figures']) == 0\n"
+            "import sys; sys.stdout.flush()")
+    loaded = loaded_by(code, not_needed + ("pounding.integrate", "scipy.linalg"))
+    assert (tmp_path / "out" / "timehistories.nc").is_file()
+    assert {"pounding.integrate", "scipy.linalg"} <= loaded  # (it did run)
+    assert not loaded & set(not_needed), sorted(loaded & set(not_needed))

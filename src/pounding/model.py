@@ -51,7 +51,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import scipy.linalg
@@ -77,14 +77,16 @@ from pounding.structure.assembly import (
     floor_below,
     floor_dofs,
 )
-from pounding.structure.bridge import Bridge, TransverseBridge
 from pounding.structure.dof_names import dof_labels, dof_units
 from pounding.structure.element_rows import ElementRow, element_rows
-from pounding.structure.plan import PlanBuilding
 from pounding.structure.plan_row import PlanMatrixBuilding, plan_contact_points
 from pounding.structure.stops import Stop, stop_contacts
 from pounding.structure.wall import MoatWall, WallPoint, check_walls, wall_contacts
 from pounding.validation import non_negative, positive
+
+if TYPE_CHECKING:  # (a bridge's model is made by pounding.structure.bridge, which imports it)
+    from pounding.structure.bridge import Bridge, TransverseBridge
+    from pounding.structure.plan import PlanBuilding
 
 __all__ = ["CONTACT_LAWS", "SYSTEMS", "Contact", "ContactPoint", "ContactSpec", "PoundingModel",
            "contact_points"]
@@ -142,6 +144,15 @@ def _with_plan_influence(system: AssembledSystem,
         else:
             R[rows, 0] = b.influence_vector()
     return system._replace(r=R)
+
+
+def _row_building(b: Any) -> Any:
+    """A building in plan as it stands in the row: its matrix building; anything else as
+    it is (a row of shear and matrix buildings does not load :mod:`pounding.structure.plan`).
+    """
+    from pounding.structure.plan import PlanBuilding
+
+    return b.as_matrix_building() if isinstance(b, PlanBuilding) else b
 
 
 def _read_only(system: AssembledSystem) -> AssembledSystem:
@@ -221,7 +232,7 @@ class PoundingModel:
         if len(buildings) < 1:
             raise ValueError("buildings: give at least one building")
         # a building in plan stands in the row as its matrix building (which keeps the plan)
-        row = tuple(b.as_matrix_building() if isinstance(b, PlanBuilding) else b
+        row = tuple(b if isinstance(b, BUILDING_TYPES) else _row_building(b)
                     for b in buildings)
         for i, b in enumerate(row):
             if not isinstance(b, BUILDING_TYPES):
@@ -247,6 +258,8 @@ class PoundingModel:
             check_walls(self.walls, self.buildings, self.floor_to_column, self.level_tolerance)
         frozen_set(self, "stops", tuple(stops))
         stop_contacts(self.stops, self.buildings, 0)  # (a stop off the row: one line)
+        if bridge is not None:
+            from pounding.structure.bridge import Bridge
         if bridge is not None and not (isinstance(bridge, Bridge)
                                        and len(bridge.frames) == len(row)
                                        and all(f is b for f, b in zip(bridge.frames, row))):

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 from pydantic import Field, ValidationInfo, model_validator
 
@@ -18,10 +18,13 @@ from pounding.config.plan import ElementConfig, PlanConfig
 from pounding.config.quantities import MAX_LENGTH, Elevation, Length, Mass, Period, Stiffness
 from pounding.config.storeys import DampingConfig, StoreyLawConfig
 from pounding.memo import Memo
-from pounding.structure import MatrixBuilding, ModalDamping, RayleighDamping, ShearBuilding
-from pounding.structure.frame import Frame
-from pounding.structure.plan import PlanBuilding
 from pounding.structure.floor_arrays import MAX_FLOORS, SMALLEST
+
+if TYPE_CHECKING:  # the buildings are imported by the builder that makes one
+    from pounding.structure.frame import Frame
+    from pounding.structure.matrices import MatrixBuilding
+    from pounding.structure.plan import PlanBuilding
+    from pounding.structure.shear_building import ShearBuilding
 
 __all__ = ["BUILDINGS", "BuildingConfig", "DampingConfig", "MatrixFilesConfig",
            "StoreyLawConfig"]
@@ -431,6 +434,8 @@ class BuildingConfig(Section):
         return b
 
     def _build_plan(self, name: str) -> PlanBuilding:
+        from pounding.structure.plan import PlanBuilding
+
         plan = self.plan
         assert plan is not None and self.masses is not None and self.elements is not None
         n = len(self.masses)
@@ -455,6 +460,10 @@ class BuildingConfig(Section):
             b = self._make(default_name)
             if self.foundation is None:
                 return b
+            from pounding.structure.matrices import MatrixBuilding
+            from pounding.structure.plan import PlanBuilding
+            from pounding.structure.shear_building import ShearBuilding
+
             if isinstance(b, PlanBuilding):
                 from pounding.structure.foundation import plan_flexible_base
 
@@ -493,6 +502,9 @@ class BuildingConfig(Section):
             return self._build_matrices(name)
         if self.kind == "plan":
             return self._build_plan(name)
+        from pounding.structure.damping import ModalDamping, RayleighDamping
+        from pounding.structure.shear_building import ShearBuilding
+
         damping = self.damping.build() if self.damping is not None else None
         h = self.height if self.height is not None else 3.0
         if self.kind == "sdof":
@@ -524,6 +536,8 @@ class BuildingConfig(Section):
 
     def _with_law(self, b: ShearBuilding) -> ShearBuilding:
         if self.isolator is not None:
+            from pounding.structure.shear_building import ShearBuilding
+
             iso = self.isolator
             with prefixed("isolator", IsolatorConfig.model_fields):
                 return ShearBuilding.base_isolated(b, iso.base_mass, iso.build(),

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import difflib
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 from pydantic import Field, field_validator, model_validator
 
@@ -16,8 +16,10 @@ from pounding.config.quantities import (
     Length,
     Stiffness,
 )
-from pounding.contact.factory import LAW_NAMES
-from pounding.model import ContactSpec
+from pounding.contact.names import LAW_NAMES
+
+if TYPE_CHECKING:
+    from pounding.contact.spec import ContactSpec
 
 LAW_FIELDS: dict[str, frozenset[str]] = {
     "linear-spring": frozenset({"k"}),
@@ -98,6 +100,8 @@ class LawConfig(Section):
 
     def spec(self) -> ContactSpec:
         """The :class:`ContactSpec` (domain errors propagate unprefixed)."""
+        from pounding.contact.spec import ContactSpec
+
         kw = self.model_dump(exclude=set(CONTACT_COMMON - {"law"}), exclude_none=True)
         return ContactSpec(**kw)
 

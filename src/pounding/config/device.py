@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error
 from pounding.config.contact import LawConfig
 from pounding.config.quantities import Force, Gap, Length, PositiveDamping, Stiffness
-from pounding.devices import Bumper, Link
+
+if TYPE_CHECKING:
+    from pounding.devices import Bumper, Link
 
 _LINK_KEYS = {"viscous": {"c", "alpha"}, "kelvin": {"c", "k"}, "maxwell": {"c", "k", "alpha"},
               "restrainer": {"k", "slack", "yield_force", "hardening"}}
@@ -61,6 +63,8 @@ class DeviceConfig(Section):
     def build(self, contact_floors: list[tuple[str, str]]) -> list[Link | Bumper]:
         """The device, or one at each pair of ``contact_floors`` for ``floors = "all"``
         (domain errors propagate unprefixed)."""
+        from pounding.devices import Bumper, Link
+
         pairs = contact_floors if self.floors == "all" else [tuple(self.floors)]
         out: list[Link | Bumper] = []
         for pair in pairs:

@@ -31,14 +31,15 @@ about y: it also sways along y, rocks about x and twists;
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error
 from pounding.config.quantities import MAX_LENGTH, MAX_MASS, Length, Unit
-from pounding.structure.foundation import Footing, Soil
-from pounding.structure.foundation.impedance import embedment_message, max_embedment
+
+if TYPE_CHECKING:
+    from pounding.structure.foundation import Footing, Soil
 
 __all__ = ["FoundationConfig", "SoilConfig"]
 
@@ -82,6 +83,8 @@ class FoundationConfig(Section):
             raise field_error(missing, "required: give radius [m] (a circular footing) or "
                                        "length and width [m] (a rectangle: along the row and "
                                        "across it)")
+        from pounding.structure.foundation.impedance import embedment_message, max_embedment
+
         deepest = max_embedment(self.radius, self.length, self.width)
         if self.embedment > deepest:
             raise field_error("embedment", embedment_message(self.embedment, deepest))
@@ -89,6 +92,8 @@ class FoundationConfig(Section):
 
     def build(self) -> tuple[Footing, Soil]:
         """The ``(Footing, Soil)`` of :mod:`pounding.structure.foundation`."""
+        from pounding.structure.foundation import Footing, Soil
+
         s = self.soil
         return (Footing(radius=self.radius, length=self.length, width=self.width,
                         mass=self.mass, inertia=self.inertia, dashpots=self.dashpots,

@@ -3,14 +3,16 @@ the lateral load-resisting elements of a :class:`~pounding.structure.plan.PlanBu
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error, fmt
 from pounding.config.quantities import Angle, Coordinate, PlanLength, StiffnessOrZero, Unit
-from pounding.structure.plan import LateralElement
 from pounding.structure.floor_arrays import MAX_FLOORS
+
+if TYPE_CHECKING:
+    from pounding.structure.plan import LateralElement
 
 __all__ = ["ElementConfig", "PlanConfig"]
 
@@ -96,4 +98,6 @@ class ElementConfig(Section):
 
     def build(self) -> LateralElement:
         """The :class:`~pounding.structure.plan.LateralElement`."""
+        from pounding.structure.plan import LateralElement
+
         return LateralElement(self.x, self.y, self.direction, self.stiffnesses, self.name)

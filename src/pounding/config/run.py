@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import Annotated, Any, NamedTuple
+from typing import TYPE_CHECKING, Annotated, Any, NamedTuple
 
 from pydantic import Field, PrivateAttr, model_validator
 
@@ -19,8 +19,10 @@ from pounding.config.quantities import Duration, Step
 from pounding.config.record import RecordConfig
 from pounding.config.spatial import SpatialConfig
 from pounding.config.toml import dump_toml
-from pounding.ground_motion import GroundMotion, GroundMotionComponents
-from pounding.model import ContactSpec, PoundingModel
+
+if TYPE_CHECKING:  # the model is imported by the builder that makes one
+    from pounding.ground_motion import GroundMotion, GroundMotionComponents
+    from pounding.model import ContactSpec, PoundingModel
 
 
 class SolverConfig(Section):
@@ -192,6 +194,9 @@ class RunConfig(Section):
         A :class:`ValueError` from a constructor of the library is re-raised prefixed
         with the path of the section at fault (``building[1]: ...``).
         """
+        from pounding.ground_motion import GroundMotion
+        from pounding.model import ContactSpec, PoundingModel
+
         if self.bridge is not None:
             return self._build_bridge()
         buildings = []
@@ -265,6 +270,9 @@ class RunConfig(Section):
 
     def _build_bridge(self) -> Built:
         """:meth:`build` of a file with a ``[bridge]``."""
+        from pounding.ground_motion import GroundMotion
+        from pounding.model import ContactSpec, PoundingModel
+
         assert self.bridge is not None
         with prefixed("bridge", BridgeConfig.model_fields):
             bridge = self.bridge.build(self.name)

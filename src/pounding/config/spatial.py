@@ -27,15 +27,17 @@ with ``positions`` (their motions made with the buildings', one coherent set), o
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, model_validator
 
 from pounding.config.base import Section, field_error, prefixed
 from pounding.config.quantities import MAX_PLAN, Unit
 from pounding.config.record import RecordConfig
-from pounding.ground_motion import GroundMotion
-from pounding.ground_motion.spatial import SpatialMotion
+
+if TYPE_CHECKING:
+    from pounding.ground_motion import GroundMotion
+    from pounding.ground_motion.spatial import SpatialMotion
 
 __all__ = ["SpatialConfig"]
 
@@ -125,7 +127,7 @@ class SpatialConfig(Section):
         """Every building's (and wall's) motion from ``record`` (module docstring);
         ``factor``: what ``[record]``'s scaling multiplied its record by (for ``records``)."""
         from pounding.ground_motion.coherency import coherent_motions
-        from pounding.ground_motion.spatial import wave_passage
+        from pounding.ground_motion.spatial import SpatialMotion, wave_passage
 
         sides = self.wall_sides()
         if self.records is not None:

@@ -3,14 +3,15 @@ damping and how its storeys yield."""
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 from pydantic import Field, field_validator, model_validator
 
 from pounding.config.base import Ratio, Section, check_bouc_wen_shape, field_error, fmt
 from pounding.config.quantities import Force, Length, Period
-from pounding.structure import ModalDamping, RayleighDamping
-from pounding.structure.damping import DampingModel
+
+if TYPE_CHECKING:
+    from pounding.structure.damping import DampingModel
 
 __all__ = ["DampingConfig", "StoreyLawConfig"]
 
@@ -60,6 +61,8 @@ class DampingConfig(Section):
 
     def build(self) -> DampingModel:
         """The damping model."""
+        from pounding.structure.damping import ModalDamping, RayleighDamping
+
         if self.ratio is not None:
             return ModalDamping(self.ratio)
         assert self.rayleigh is not None

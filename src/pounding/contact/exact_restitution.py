@@ -8,16 +8,24 @@ stiffness or the impact velocity.
 These are what :func:`pounding.contact.calibration.calibrate` inverts, and what the damping
 formulas of :mod:`pounding.contact.restitution` approximate; the simulated collision
 (:func:`pounding.contact.collision.simulate_collision`) agrees with each (tests).
+
+The four exact inverses (:func:`zeta_kelvin_voigt_clipped`,
+:func:`zeta_modified_kelvin_voigt_exact`, :func:`chi_hunt_crossley_exact`,
+:func:`zeta_nonlinear_viscoelastic_exact`) are tabulated at ``e`` = 0.01, 0.02, … 0.99
+(:mod:`pounding.contact.exact_table`, made by these functions): a model file's ``e`` of two
+decimals takes its value from there, without loading SciPy's root finder and integrator
+(0.3 s of a run's start-up); any other ``e`` is solved for here.
 """
 
 from __future__ import annotations
 
 import math
-from typing import Callable
+from collections.abc import Callable, Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from pounding.contact import exact_table
 from pounding.memo import Memo
 from pounding.validation import restitution as _check_e
 
@@ -72,20 +80,21 @@ def zeta_kelvin_voigt_clipped(e: ArrayLike) -> FloatArray | float:
     may pull (``tension = true``); used with the clipped law it gives a larger e (0.675 for
     a target of 0.65).
     """
+    return _invert(e, lambda ei: _tabulated(exact_table.ZETA_KELVIN_VOIGT_CLIPPED, ei,
+                                            _zeta_kelvin_voigt_clipped))
+
+
+def _zeta_kelvin_voigt_clipped(ei: float) -> float:
+    """:func:`zeta_kelvin_voigt_clipped` of one ``e`` (solved, not tabulated)."""
     from scipy.optimize import brentq
 
-    x = np.atleast_1d(_check_e(e)).astype(float)
-    out = np.empty_like(x)
-    for i, ei in enumerate(x):
-        if ei >= 1.0:
-            out[i] = 0.0
-            continue
-        hi = 1.0
-        while restitution_kelvin_voigt_clipped(hi) > ei:
-            hi *= 2.0
-        out[i] = brentq(lambda z: restitution_kelvin_voigt_clipped(z) - ei, 0.0, hi,
-                        xtol=1e-300, rtol=8.9e-16, maxiter=200)
-    return float(out[0]) if np.ndim(e) == 0 else out
+    if ei >= 1.0:
+        return 0.0
+    hi = 1.0
+    while restitution_kelvin_voigt_clipped(hi) > ei:
+        hi *= 2.0
+    return float(brentq(lambda z: restitution_kelvin_voigt_clipped(z) - ei, 0.0, hi,
+                        xtol=1e-300, rtol=8.9e-16, maxiter=200))
 
 
 def restitution_modified_kelvin_voigt(zeta: ArrayLike) -> FloatArray | float:
@@ -204,6 +213,14 @@ def _invert(e: ArrayLike, one: Callable[[float], float]) -> FloatArray | float:
     return float(out.ravel()[0]) if np.ndim(e) == 0 else out
 
 
+def _tabulated(table: Mapping[float, float], e: float, solve: Callable[[float], float]
+               ) -> float:
+    """The value of ``e`` in ``table`` (:mod:`pounding.contact.exact_table`), or
+    ``solve(e)`` for an ``e`` it does not hold."""
+    value = table.get(e)
+    return solve(e) if value is None else value
+
+
 def _brent_decreasing(fun: Callable[[float], FloatArray | float], target: float, hi: float,
                       xtol: float = 1e-300) -> float:
     """The x ≥ 0 with ``fun(x) = target`` for ``fun`` falling from ``fun(0) = 1``:
@@ -225,8 +242,13 @@ def zeta_modified_kelvin_voigt_exact(e: ArrayLike) -> FloatArray | float:
     (:func:`~pounding.contact.restitution.zeta_mahmoud`) approximates it (0.6538 achieved for
     a target of 0.65).
     """
-    return _invert(e, lambda ei: 0.0 if ei >= 1.0 else
-                   _brent_decreasing(restitution_modified_kelvin_voigt, ei, 1.0))
+    return _invert(e, lambda ei: _tabulated(exact_table.ZETA_MODIFIED_KELVIN_VOIGT, ei,
+                                            _zeta_modified_kelvin_voigt_exact))
+
+
+def _zeta_modified_kelvin_voigt_exact(ei: float) -> float:
+    """:func:`zeta_modified_kelvin_voigt_exact` of one ``e`` (solved, not tabulated)."""
+    return 0.0 if ei >= 1.0 else _brent_decreasing(restitution_modified_kelvin_voigt, ei, 1.0)
 
 
 def chi_hunt_crossley_exact(e: ArrayLike) -> FloatArray | float:
@@ -239,17 +261,21 @@ def chi_hunt_crossley_exact(e: ArrayLike) -> FloatArray | float:
     limit for e → 1 (it gives 0.775 for a target of 0.65), Flores' and Gonthier's are
     within a few hundredths.
     """
-    def one(ei: float) -> float:
-        if ei >= 1.0:
-            return 0.0
-        # 3(1 − e²)/4 is within a factor of 3 of it: a bracket to start from
-        return _brent_decreasing(restitution_hunt_crossley, ei, max(1.0 - ei * ei, 1e-300))
+    return _invert(e, lambda ei: _tabulated(exact_table.CHI_HUNT_CROSSLEY, ei,
+                                            _chi_hunt_crossley_exact))
 
-    return _invert(e, one)
+
+def _chi_hunt_crossley_exact(ei: float) -> float:
+    """:func:`chi_hunt_crossley_exact` of one ``e`` (solved, not tabulated)."""
+    if ei >= 1.0:
+        return 0.0
+    # 3(1 − e²)/4 is within a factor of 3 of it: a bracket to start from
+    return _brent_decreasing(restitution_hunt_crossley, ei, max(1.0 - ei * ei, 1e-300))
 
 
 def _zeta_nonlinear_viscoelastic_exact(e: float) -> float:
-    """:func:`zeta_nonlinear_viscoelastic_exact` of one ``e`` (not remembered)."""
+    """:func:`zeta_nonlinear_viscoelastic_exact` of one ``e`` (solved: neither tabulated nor
+    remembered)."""
     from scipy.optimize import brentq
 
     if e >= 1.0:
@@ -275,11 +301,51 @@ def zeta_nonlinear_viscoelastic_exact(e: ArrayLike) -> FloatArray | float:
     (:func:`~pounding.contact.restitution.zeta_jankowski`) is a fit to it (0.6470 achieved
     for a target of 0.65). Each ``e`` costs about a dozen integrations of the approach
     (≈ 0.1 s); its ζ is remembered (:data:`EXACT_ZETA_NONLINEAR_VISCOELASTIC`), so a sweep
-    or a model with many contacts of one ``e`` pays once.
+    or a model with many contacts of one ``e`` pays once. An ``e`` of two decimals is
+    tabulated (:mod:`pounding.contact.exact_table`) and costs nothing.
     """
-    return _invert(e, lambda ei: EXACT_ZETA_NONLINEAR_VISCOELASTIC.get(
-        ei, lambda: _zeta_nonlinear_viscoelastic_exact(ei)))
+    return _invert(e, lambda ei: _tabulated(
+        exact_table.ZETA_NONLINEAR_VISCOELASTIC, ei,
+        lambda ej: EXACT_ZETA_NONLINEAR_VISCOELASTIC.get(
+            ej, lambda: _zeta_nonlinear_viscoelastic_exact(ej))))
 
 
 EXACT_ZETA_NONLINEAR_VISCOELASTIC = Memo(max_items=1024)
 """ζ of :func:`zeta_nonlinear_viscoelastic_exact`, keyed by ``e``."""
+
+
+# --------------------------------------------------------------------------- the table
+TABULATED_E: tuple[float, ...] = tuple(k / 100 for k in range(1, 100))
+"""The ``e`` of :mod:`pounding.contact.exact_table`: 0.01, 0.02, … 0.99 (each the double
+nearest to its two decimals, as a model file's ``e = 0.65`` reads)."""
+
+_SOLVERS: dict[str, Callable[[float], float]] = {
+    "ZETA_KELVIN_VOIGT_CLIPPED": _zeta_kelvin_voigt_clipped,
+    "ZETA_MODIFIED_KELVIN_VOIGT": _zeta_modified_kelvin_voigt_exact,
+    "CHI_HUNT_CROSSLEY": _chi_hunt_crossley_exact,
+    "ZETA_NONLINEAR_VISCOELASTIC": _zeta_nonlinear_viscoelastic_exact,
+}
+"""The table's names and the solver that makes each."""
+
+
+def table_source() -> str:
+    """The source of :mod:`pounding.contact.exact_table`, solved afresh (each value by the
+    solver of its inverse at each of :data:`TABULATED_E`; about 5 s). Regenerate the module
+    with ``python -c "from pounding.contact.exact_restitution import table_source;
+    print(table_source(), end='')" > src/pounding/contact/exact_table.py``."""
+    lines = ['"""The exact inverses of :mod:`pounding.contact.exact_restitution` at e = 0.01, '
+             '0.02, …',
+             '0.99, as its solvers give them (made by',
+             ':func:`pounding.contact.exact_restitution.table_source`; '
+             '``tests/contact/test_exact_table.py``',
+             'solves them again). A model file\'s ``e`` of two decimals reads its damping '
+             'from here,',
+             'without loading SciPy\'s root finder and integrator."""',
+             "",
+             "from __future__ import annotations",
+             ""]
+    for name, solve in _SOLVERS.items():
+        lines += ["", f"{name}: dict[float, float] = {{"]
+        lines += [f"    {e!r}: {solve(e)!r}," for e in TABULATED_E]
+        lines += ["}"]
+    return "\n".join(lines) + "\n"

@@ -10,6 +10,7 @@ from pounding.contact.base import ContactLaw, m_effective
 from pounding.contact.bilinear import BILINEAR_FORMULAS, BilinearImpact
 from pounding.contact.hertz import Hertz, HuntCrossley, NonlinearViscoelastic
 from pounding.contact.linear import KelvinVoigt, LinearSpring, ModifiedKelvinVoigt
+from pounding.contact.names import IMPACT_LAW_NAMES, LAW_NAMES  # noqa: F401  (also named here)
 from pounding.contact.restitution import FORMULAS, formula as get_formula
 from pounding.contact.shear_key import ShearKey
 from pounding.validation import choice
@@ -26,18 +27,6 @@ LAWS: dict[str, type[ContactLaw]] = {
     "shear-key": ShearKey,
 }
 """Every contact law class, keyed by the name used in configs and on the command line."""
-
-IMPACT_LAW_NAMES: tuple[str, ...] = (
-    "linear-spring", "kelvin-voigt", "modified-kelvin-voigt", "hertz", "hunt-crossley",
-    "hertzdamp", "nonlinear-viscoelastic", "naderpour", "bilinear-impact",
-)
-"""The impact laws: those the single-collision commands (``pounding collide``) offer."""
-
-LAW_NAMES: tuple[str, ...] = (*IMPACT_LAW_NAMES, "abutment", "shear-key")
-"""Names :func:`make_law` accepts: the impact laws, the abutment backfill (a wall's law in
-a model file; :mod:`pounding.contact.abutment`) and the sacrificial shear key (a bridge's,
-:mod:`pounding.contact.shear_key`). ``hertzdamp`` is Hunt–Crossley with the
-Lankarani–Nikravesh χ; ``naderpour`` is the nonlinear viscoelastic law with ζ of seed eq 39."""
 
 DEFAULT_FORMULA: dict[str, str] = {
     "kelvin-voigt": "schwager-poschel",

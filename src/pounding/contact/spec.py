@@ -106,12 +106,14 @@ class ContactSpec:
         """`` (exact)`` if the formula gives the law exactly ``e`` in an impact of two free
         bodies (the bilinear element: one reaching ``delta_m``); otherwise the ``e`` such an
         impact achieves with it."""
-        from pounding.contact.calibration import restitution_of
         from pounding.contact.factory import is_exact
 
         if is_exact(self.law, self.formula, self.tension):
             return " (exact" + (" for an impact reaching delta_m)" if self.law == "bilinear-impact"
                                 else ")")
+        # (only here: calibration loads SciPy's optimizers and the collision integrator)
+        from pounding.contact.calibration import restitution_of
+
         law = self.build(1.0, 1.0)
         achieved = restitution_of(law, 1.0, 1.0)
         if achieved is None:  # the bilinear element: at the penetration it is sized for

@@ -254,11 +254,15 @@ def is_bridge(model: Any) -> bool:
     """True if every building of ``model`` is a bridge frame
     (:class:`~pounding.structure.bridge.BridgeFrame`) of a bridge along its axis (across it
     the frames never meet and shear keys hold them: :attr:`Result.shear_keys`)."""
-    from pounding.structure.bridge import BridgeFrame
+    from pounding.structure.matrices import MatrixBuilding
 
     across = bool(getattr(model, "stops", ())) or any(g == math.inf for g in model.gaps)
-    return (bool(model.buildings) and not across
-            and all(isinstance(b, BridgeFrame) for b in model.buildings))
+    if across or not model.buildings or not all(isinstance(b, MatrixBuilding)
+                                                for b in model.buildings):
+        return False  # (a bridge frame is a matrix building: shear buildings need no import)
+    from pounding.structure.bridge import BridgeFrame
+
+    return all(isinstance(b, BridgeFrame) for b in model.buildings)
 
 
 def _argmax(values: np.ndarray, time: np.ndarray) -> tuple[float, float]:

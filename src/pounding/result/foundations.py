@@ -6,24 +6,40 @@ its storeys' drifts and forces follow."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from pounding.structure.foundation import FlexibleBaseBuilding, PlanFlexibleBaseBuilding
+from pounding.structure.matrices import MatrixBuilding
+
+if TYPE_CHECKING:
+    from pounding.structure.foundation import PlanFlexibleBaseBuilding
 
 __all__ = ["flexible_base_drifts", "flexible_base_storeys", "footing_dofs", "foundation_summary",
            "plan_deformation"]
+
+
+def _footing_kind(building: Any) -> str:
+    """``"plan"`` for a building in plan on a flexible base, ``"row"`` for one in a row,
+    ``""`` for any other. (A building on a flexible base is a matrix building: a row of
+    shear buildings is answered without loading :mod:`pounding.structure.foundation`.)"""
+    if not isinstance(building, MatrixBuilding):
+        return ""
+    from pounding.structure.foundation import FlexibleBaseBuilding, PlanFlexibleBaseBuilding
+
+    if isinstance(building, PlanFlexibleBaseBuilding):
+        return "plan"
+    return "row" if isinstance(building, FlexibleBaseBuilding) else ""
 
 
 def _footing_local(building: Any) -> np.ndarray:
     """The footing's DOFs of one building on a flexible base (its DOFs after those of the
     building on it: a row building's sway and rocking, in plan its sways, rockings and
     torsion, those that are DOFs); empty for any other building."""
-    if isinstance(building, PlanFlexibleBaseBuilding):
+    if _footing_kind(building) == "plan":
         m = building.foundation.rigid.shape[0]  # (the floors' u_x, u_y, θ come first)
         return m + np.arange(sum(bool(e) for e in building.foundation.explicit))
-    if isinstance(building, FlexibleBaseBuilding):
+    if _footing_kind(building) == "row":
         n0 = int(building.fixed_base.n)
         return np.arange(n0, int(building.n))
     return np.zeros(0, dtype=np.int64)
@@ -43,7 +59,7 @@ def plan_deformation(building: Any, displacement: np.ndarray) -> np.ndarray:
     deformation from its DOF histories (nt, n): on a flexible base, less the footing's
     rigid motion (:meth:`pounding.structure.foundation.PlanFoundation.deformation`); on a
     fixed base, the floors' DOFs as they are."""
-    if isinstance(building, PlanFlexibleBaseBuilding):
+    if _footing_kind(building) == "plan":
         return building.foundation.deformation(displacement)
     return displacement[:, :3 * building.plan.n_floors]
 
@@ -58,12 +74,12 @@ def flexible_base_drifts(model: Any, displacement: np.ndarray
     (:meth:`pounding.structure.foundation.PlanFoundation.deformation_drifts`)."""
     out = []
     for bl, off in zip(model.buildings, model.system.offsets):
-        if isinstance(bl, PlanFlexibleBaseBuilding):
+        if _footing_kind(bl) == "plan":
             ix = int(off) + 3 * np.arange(bl.plan.n_floors)
             dx, dy = bl.foundation.deformation_drifts(
                 displacement[:, int(off): int(off) + bl.n])
             out.append((np.r_[ix, ix + 1], np.hstack([dx, dy])))
-        elif isinstance(bl, FlexibleBaseBuilding):
+        elif _footing_kind(bl) == "row":
             f = bl.floor_dofs
             d = bl.foundation.deformation_drifts(displacement[:, int(off): int(off) + bl.n],
                                                  bl.elevations[f])
@@ -77,7 +93,7 @@ def flexible_base_storeys(building: Any) -> np.ndarray:
     (the footing's DOFs; any other matrix building)."""
     n = int(building.n)
     out = np.full(n, np.nan)
-    if isinstance(building, FlexibleBaseBuilding):
+    if _footing_kind(building) == "row":
         k = building.foundation.storey_stiffnesses
         if k is not None:
             out[building.floor_dofs] = k
@@ -167,10 +183,10 @@ def foundation_summary(r: Any) -> dict[str, Any]:
     soil's five reactions (:func:`_plan_row`)."""
     out = []
     for b, (bl, off) in enumerate(zip(r.model.buildings, r.model.system.offsets)):
-        if isinstance(bl, PlanFlexibleBaseBuilding):
+        if _footing_kind(bl) == "plan":
             out.append(_plan_row(r, b, bl, int(off)))
             continue
-        if not isinstance(bl, FlexibleBaseBuilding):
+        if _footing_kind(bl) != "row":
             continue
         f = bl.foundation
         sl = slice(int(off), int(off) + bl.n)

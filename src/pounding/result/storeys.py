@@ -242,9 +242,13 @@ def frame_storey_shear(model: PoundingModel, displacement: NDArray[np.float64],
     a frame with plastic hinges the restoring forces are the run's (``restoring``, (nt, N),
     :class:`pounding.integrate.frame_run.HingeOutputs`); for an elastic one ``K u``.
     """
-    from pounding.structure.frame_linear import FrameBuilding
+    from pounding.structure.matrices import MatrixBuilding
 
     out: list[tuple[int, NDArray[np.float64]]] = []
+    if not any(isinstance(b, MatrixBuilding) for b in model.buildings):
+        return out  # (a frame is a matrix building: a row of shear buildings has none)
+    from pounding.structure.frame_linear import FrameBuilding
+
     for off, b in zip(model.system.offsets, model.buildings):
         if not isinstance(b, FrameBuilding):
             continue

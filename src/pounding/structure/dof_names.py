@@ -9,12 +9,11 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from pounding.structure.bridge import BridgeFrame
-from pounding.structure.foundation import FlexibleBaseBuilding
-from pounding.structure.foundation.flexible_base import SWAY_LABEL
-from pounding.structure.foundation.plan_base import FOOTING_DOFS
 from pounding.structure.matrices import MatrixBuilding
-from pounding.structure.plan_row import PlanMatrixBuilding
+
+# A row of shear buildings names its DOFs without the kinds of matrix building (bridge
+# frames, flexible bases, buildings in plan, frames): they are imported for a row that holds
+# a matrix building, so that a run of shear buildings does not load them.
 
 __all__ = ["dof_labels", "dof_units"]
 
@@ -29,8 +28,13 @@ def dof_labels(buildings: Sequence[Any]) -> list[str]:
     ``'B1Fdn_ry'``, ``'B1Fdn_t'`` (:mod:`pounding.structure.foundation`)."""
     out = []
     for b, bl in enumerate(buildings):
-        if isinstance(bl, MatrixBuilding) and (isinstance(bl, PlanMatrixBuilding)
-                                               or getattr(bl, "frame", None) is not None):
+        if not isinstance(bl, MatrixBuilding):
+            out += [f"B{b + 1}F{j + 1}" for j in range(bl.n)]
+            continue
+        from pounding.structure.foundation import FlexibleBaseBuilding
+        from pounding.structure.plan_row import PlanMatrixBuilding
+
+        if isinstance(bl, PlanMatrixBuilding) or getattr(bl, "frame", None) is not None:
             names = list(bl.labels)
         elif isinstance(bl, FlexibleBaseBuilding):  # its DOFs, then the footing's
             n0 = int(bl.fixed_base.n)
@@ -49,10 +53,20 @@ def dof_units(buildings: Sequence[Any], is_floor: NDArray[np.bool_]) -> list[str
     node's ``r``), ``''`` for a DOF of a building given as matrices that is no floor
     (its matrices say what it is). Its velocity is in that unit per second, its
     acceleration per second squared."""
-    rotations = {f"{SWAY_LABEL}_r", *FOOTING_DOFS[2:]}
-    out = []
+    out: list[str] = []
     k = 0
     for bl in buildings:
+        if not isinstance(bl, MatrixBuilding):  # a shear building: every DOF a floor
+            out += ["m"] * bl.n
+            k += bl.n
+            continue
+        from pounding.structure.bridge import BridgeFrame
+        from pounding.structure.foundation import FlexibleBaseBuilding
+        from pounding.structure.foundation.flexible_base import SWAY_LABEL
+        from pounding.structure.foundation.plan_base import FOOTING_DOFS
+        from pounding.structure.plan_row import PlanMatrixBuilding
+
+        rotations = {f"{SWAY_LABEL}_r", *FOOTING_DOFS[2:]}
         frame = getattr(bl, "frame", None) is not None
         for j in range(bl.n):
             label = bl.labels[j] if isinstance(bl, MatrixBuilding) else ""
