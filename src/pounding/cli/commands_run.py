@@ -21,9 +21,11 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
     from pounding.io.output_folder import default_out_dir
     from pounding.run_file import run_config
 
-    from pounding.report.code_check import attach_code_check, read_code_check
+    check = None
+    if code_check is not None:  # (issue 29; the report package only where asked for)
+        from pounding.report.code_check import read_code_check
 
-    check = read_code_check(code_check) if code_check is not None else None  # (issue 29)
+        check = read_code_check(code_check)
     cfg = load_config(model_file)
     target = out if out is not None else default_out_dir(model_file)
     try:
@@ -35,6 +37,8 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
                    "(an earlier output there is as it was); run the same command again")
         raise typer.Exit(EXIT_INTERRUPTED) from None
     if check is not None:  # (issue 29) kept for the report's Code check section
+        from pounding.report.code_check import attach_code_check
+
         console.print(Text(f"code check kept: {attach_code_check(result.out_dir, check)}"))
     from pounding.cli.run_tables import print_run_summary
 
