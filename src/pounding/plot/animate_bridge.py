@@ -136,10 +136,10 @@ def bridge_frames(ds: Any, model: Any, *, transverse: bool = False, fps: float =
     marks = [_mark(by_label.get(label), transverse, starts, lengths, deck, right, elevation,
                    wall_gap, factor) for label in names]
     if transverse:
-        what = ("plan from above: the decks sway across the axis (y × the factor) between the "
+        what = ("Plan from above: the decks sway across the axis (y × the factor) between the "
                 "shear keys; x along the bridge to scale")
     else:
-        what = ("elevation along the bridge: decks, piers and backwalls; the decks move along "
+        what = ("Elevation along the bridge: decks, piers and backwalls; the decks move along "
                 "the axis × the factor, the joints and backwall gaps drawn × the same factor")
     return assemble(ds, tl, title=title, columns=list(range(n_dof)), shapes=shapes,
                     labels=labels, marks=marks, size=size,

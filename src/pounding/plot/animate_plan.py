@@ -131,5 +131,5 @@ def plan_frames(ds: Any, model: Any, *, fps: float = 25.0, exaggeration: float |
     return assemble(ds, tl, title=title, columns=list(range(n_dof)), shapes=shapes,
                     labels=labels, marks=marks, size=size, view="plan",
                     y_label="plan y [m]", equal_scales=True,
-                    notes=[("plan view from above: the slabs' corners moved × the factor "
+                    notes=[("Plan view from above: the slabs' corners moved × the factor "
                             "(the top floor bold)")])
