@@ -43,10 +43,10 @@ they were, so numba's own check would not see it)."""
 
 STAMP_FILE = "pounding-kernel-sources.stamp"
 
-COLD_COMPILE_S: float = 45.0
-"""Seconds (CPU, one core) that compiling the solver's kernel on an empty numba cache took on
-the project's 2-core machine (``benchmarks/bench_cold.py``, 2026-11-28): what the progress
-line quotes while it compiles."""
+COLD_COMPILE_S: float = 55.0
+"""Seconds (CPU, one core) of a first ``pounding run`` on an empty numba cache, the solver's
+kernel compiled, on the project's 2-core machine at load 3 (``benchmarks/bench_cold.py``,
+2026-11-28; 71 s at load 11): what the progress line quotes while it compiles."""
 
 
 def sources_stamp(modules: list[ModuleType]) -> str:
