@@ -29,9 +29,9 @@ from rich.progress import (
 )
 from rich.text import Text
 
-from pounding.cli.app import console
+from pounding.cli.app import console, err_console
 
-__all__ = ["COMPILE_NOTE_AFTER", "PROGRESS_DELAY", "again", "progress_bar",
+__all__ = ["COMPILE_NOTE_AFTER", "PROGRESS_DELAY", "again", "compiling_text", "progress_bar",
            "sigterm_as_interrupt", "stopped"]
 
 PROGRESS_DELAY = 1.0
@@ -55,15 +55,41 @@ class _DelayedProgress(Progress):
 
 
 class _CompilingNote(ProgressColumn):
-    """Says what a bar stuck at 0 % is waiting for: on the first run after an install (or
-    after the kernel's source changed) numba compiles the solver, about 20–30 s on a
-    2-core machine; the compiled code is cached, and later runs start at once."""
+    """Says what a bar at 0 % is waiting for: on the first run after an install (or after the
+    kernel's source changed, or with an empty ``NUMBA_CACHE_DIR``) numba compiles the solver
+    once; the compiled code is cached, and later runs start at once.
+
+    ``seconds``: the compiling the run will do first, as numba's cache index tells
+    (:func:`pounding.integrate.solver_compile_seconds`): where positive, the note shows from
+    the start; else (cached, or not known) only if the bar stays at 0 % for
+    :data:`COMPILE_NOTE_AFTER` seconds, in case the cache did not hold this run's kernel."""
+
+    def __init__(self, seconds: float = 0.0) -> None:
+        self._seconds = seconds
+        super().__init__()
 
     def render(self, task: Task) -> Text:
-        if task.completed == 0 and (task.elapsed or 0.0) >= COMPILE_NOTE_AFTER:
-            return Text("probably compiling the solver: first run only, about 20–30 s "
-                        "(cached after)", style="dim")
+        if task.completed != 0:
+            return Text("")
+        if self._seconds > 0.0:
+            return Text(compiling_text(self._seconds), style="dim")
+        if (task.elapsed or 0.0) >= COMPILE_NOTE_AFTER:
+            return Text("probably compiling the solver: first run only (cached after)",
+                        style="dim")
         return Text("")
+
+
+def compiling_text(seconds: float) -> str:
+    """The progress line's note while the solver compiles."""
+    return f"compiling the solver once (about {seconds:.0f} s; cached after) …"
+
+
+def solver_compile_seconds() -> float:
+    """:func:`pounding.integrate.solver_compile_seconds` (imports the solver, which the work
+    that follows a progress bar imports anyway)."""
+    from pounding.integrate import solver_compile_seconds as seconds
+
+    return seconds()
 
 
 class _RateColumn(ProgressColumn):
@@ -93,18 +119,25 @@ def progress_bar(label: str, items: str | None = None) -> Iterator[Any]:
         stuck at 0 % says the solver is probably compiling.
 
     The bar appears after :data:`PROGRESS_DELAY` seconds, on a terminal only (a log gets
-    none), and goes when the block ends.
+    none), and goes when the block ends. Where the solver is not compiled yet (numba's
+    cache holds none for this machine) the bar says so from the start, and off a terminal
+    one line on standard error does (:func:`compiling_text`).
     """
+    compiling = solver_compile_seconds()
     columns: list[Any] = [TextColumn("{task.description}", style="bold", markup=False),
                           BarColumn()]
     if items is not None:
         columns += [MofNCompleteColumn(), TaskProgressColumn(), _RateColumn(items),
                     TimeElapsedColumn(), TimeRemainingColumn()]
+        if compiling > 0.0:
+            columns.append(_CompilingNote(compiling))
     else:
         columns += [TaskProgressColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-                    _CompilingNote()]
+                    _CompilingNote(compiling)]
     bar = _DelayedProgress(*columns, console=console, transient=True,
                            disable=not console.is_terminal)
+    if compiling > 0.0 and not console.is_terminal:
+        err_console.print(Text(compiling_text(compiling), style="dim"))
     task = bar.add_task(label, total=None, start=items is None)
     first: list[float] = []
 

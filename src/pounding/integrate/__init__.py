@@ -40,7 +40,12 @@ from pounding.integrate.grid import (
     physical_memory,
 )
 from pounding.integrate.kernel import integrate_chunk
-from pounding.integrate.kernel_cache import KERNEL_MODULES, invalidate_if_stale
+from pounding.integrate.kernel_cache import (
+    COLD_COMPILE_S,
+    KERNEL_MODULES,
+    cached_here,
+    invalidate_if_stale,
+)
 from pounding.integrate.kernel_model import (
     EXACT_FREE_MAX_DOF,
     NO_FREE_STEP,
@@ -129,6 +134,7 @@ __all__ = [
     "peak_margin",
     "physical_memory",
     "simulate",
+    "solver_compile_seconds",
 ]
 
 invalidate_if_stale([sys.modules[name] for name in KERNEL_MODULES])
@@ -218,6 +224,17 @@ def _model_notes(model: PoundingModel) -> _ModelNotes:
 
 _kernel_loaded: list[bool] = []
 """Non-empty once this process has called the compiled kernel (loaded it)."""
+
+
+def solver_compile_seconds() -> float:
+    """Seconds of compiling the next :func:`simulate` in this process will spend first:
+    about :data:`~pounding.integrate.kernel_cache.COLD_COMPILE_S` where numba's cache holds
+    no compiled kernel for this machine (a fresh install, an empty ``NUMBA_CACHE_DIR``, a
+    kernel source changed), else 0 (loaded already, or loads from the cache). Reads numba's
+    cache index only (:func:`~pounding.integrate.kernel_cache.cached_here`)."""
+    if _kernel_loaded or cached_here(integrate_chunk):
+        return 0.0
+    return COLD_COMPILE_S
 
 DEFAULT_RTOL: float = 1e-8
 """Default relative tolerance of the RK steps taken through contacts."""

@@ -10,6 +10,10 @@ every cached kernel function is flushed (numba then compiles afresh, once).
 
 This costs a dozen ``stat`` calls at import; it matters for anyone who edits the kernel, and
 for installs that replace some files but not others.
+
+:func:`cached_here` tells, from numba's cache index alone (one small file read), whether a
+compiled function will load from the cache or be compiled first: what the command line's
+progress line says while it compiles (:data:`COLD_COMPILE_S`).
 """
 
 from __future__ import annotations
@@ -17,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
+import pickle
 from pathlib import Path
 from types import ModuleType
 
@@ -37,6 +42,11 @@ the kernel takes (a field moved in one of those leaves the compiled signature's 
 they were, so numba's own check would not see it)."""
 
 STAMP_FILE = "pounding-kernel-sources.stamp"
+
+COLD_COMPILE_S: float = 55.0
+"""Seconds (CPU, one core) of a first ``pounding run`` on an empty numba cache, the solver's
+kernel compiled, on the project's 2-core machine at load 3 (``benchmarks/bench_cold.py``,
+2026-11-28; 71 s at load 11): what the progress line quotes while it compiles."""
 
 
 def sources_stamp(modules: list[ModuleType]) -> str:
@@ -80,3 +90,25 @@ def invalidate_if_stale(modules: list[ModuleType]) -> bool:
         tmp.write_text(stamp)
         os.replace(tmp, path)
     return True
+
+
+def cached_here(dispatcher: object) -> bool:
+    """True if numba's on-disk cache holds compiled code of ``dispatcher`` that this process
+    would load rather than compile: an index whose stamp matches the function's source file,
+    with an entry for this machine's code generator (CPU name and features) whose data file
+    is there. Reads the index only (no compiling, no loading of code).
+
+    False where there is no such entry, or the cache cannot be read (then numba compiles).
+    """
+    try:
+        cache_file = dispatcher._cache._cache_file  # type: ignore[attr-defined]
+        # numba's own reading of the index: {} if missing, of another numba version, or
+        # stale (its source file's stamp changed); keys (signature, codegen magic, hashes)
+        overloads = cache_file._load_index()
+        magic = dispatcher.targetctx.codegen().magic_tuple()  # type: ignore[attr-defined]
+        folder = cache_file._cache_path
+    except (AttributeError, OSError, EOFError, ValueError, TypeError, IndexError,
+            pickle.UnpicklingError):
+        return False
+    return any(key[1] == magic and os.path.isfile(os.path.join(folder, name))
+               for key, name in overloads.items())
