@@ -405,3 +405,18 @@ def test_long_periods(tmp_path: Path) -> None:
     assert nbcc.rows[1].left > 0.0
     with pytest.raises(ValueError, match=r"model: building A's first period is 12\.7 s"):
         code_check(soft, "is1893", z=0.36, importance=1.2, r=5.0, soil_type="II")
+
+
+def test_the_command_names_the_librarys_codes_and_procedures() -> None:
+    """`--code` and `--procedure` offer what the library checks, no more, no less; each
+    code's options are its parameters (so one is refused with another code)."""
+    from pounding.cli.commands_code_check import Procedure, SeparationCode
+    from pounding.studies.codes import CODES, code_parameters
+    from pounding.studies.codes.asce7_22 import PROCEDURES
+
+    assert [c.value for c in SeparationCode] == list(CODES)
+    assert [p.value for p in Procedure] == list(PROCEDURES)
+    assert set(code_parameters("nzs1170.5")) == {"z", "ru", "site_class", "mu",
+                                                 "same_property", "combination"}
+    assert {k for k, needed in code_parameters("asce7-22").items() if needed} == {
+        "sds", "sd1", "tl", "cd", "r", "ie"}
