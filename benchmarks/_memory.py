@@ -1,34 +1,25 @@
-"""Keep freed memory for reuse while timing (glibc only; a no-op elsewhere).
+"""The allocator setting of a benchmark: what ``pounding`` itself does, or glibc left alone.
 
-A simulation allocates its output arrays afresh on every call (about 5 MB for the SDOF pair
-over El Centro). glibc hands allocations that large out as new pages from the kernel
-unless a recent free left room on its heap, and its own heuristics (a dynamic mmap
-threshold, heap trimming) decide which, from call to call. New pages cost a page fault
-each on first touch, inside the timed loop: up to ~1 ms on a 2–3 ms run, on some calls
-and not others. ``keep_freed_memory()`` asks glibc (``mallopt``) to serve allocations up
-to 32 MB from its heap and not to trim it, so repeats reuse the memory the last one
-freed, as a long-running process would. Both tools of a comparison run in the same
-process, under the same setting.
+``pounding.integrate.simulate`` keeps freed memory for reuse (glibc ``mallopt``, once per
+process: :mod:`pounding.allocator`), so a user's loop of simulations reuses the memory the
+last one freed instead of faulting in fresh pages. A benchmark sets the same thing at its
+start, before either tool of a comparison runs, so both are timed under the setting a user
+of pounding gets; ``--fresh-memory`` leaves glibc's own settings alone for both (and so also
+stops pounding from making them: ``POUNDING_KEEP_FREED_MEMORY=0``).
 """
 
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
+import os
 
-M_TRIM_THRESHOLD = -1
-M_MMAP_THRESHOLD = -3
+from pounding.allocator import ENV_VARIABLE
+from pounding.allocator import keep_freed_memory as _library_setting
 
 
-def keep_freed_memory() -> bool:
-    """Set glibc's mmap and trim thresholds high; True if glibc took the setting."""
-    name = ctypes.util.find_library("c")
-    if not name:
+def keep_freed_memory(fresh: bool = False) -> bool:
+    """pounding's allocator setting now, for both tools; with ``fresh`` none at all (here,
+    nor later in ``simulate``). True if glibc took the setting."""
+    if fresh:
+        os.environ[ENV_VARIABLE] = "0"
         return False
-    try:
-        libc = ctypes.CDLL(name)
-        ok = libc.mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024)
-        ok &= libc.mallopt(M_TRIM_THRESHOLD, 1024 * 1024 * 1024)
-    except (OSError, AttributeError):
-        return False
-    return bool(ok)
+    return _library_setting(force=True)

@@ -645,7 +645,7 @@ def main(argv: list[str] | None = None) -> int:
     wanted = parse_list(ap, args.sections, SECTIONS)
     kinds = parse_list(ap, args.kinds, KINDS, "link kind")
 
-    kept = False if args.fresh_memory else keep_freed_memory()
+    kept = keep_freed_memory(args.fresh_memory)
     print_environment(kept)
 
     bases = {key: load_base(key) for key in MODELS}

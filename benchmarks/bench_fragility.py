@@ -522,7 +522,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.no_reference and "reference" in wanted:
         wanted.remove("reference")
 
-    kept = False if args.fresh_memory else keep_freed_memory()
+    kept = keep_freed_memory(args.fresh_memory)
     print_environment(kept)
 
     cases = study_cases(args.study, out=tempfile.gettempdir())

@@ -281,8 +281,7 @@ def main(argv: list[str] | None = None) -> int:
     bad = [s for s in wanted if s not in SECTIONS]
     if bad:
         ap.error(f"unknown section(s) {bad}; choose from {list(SECTIONS)}")
-    if not args.fresh_memory:
-        keep_freed_memory()
+    keep_freed_memory(args.fresh_memory)
 
     import platform
     from importlib.metadata import PackageNotFoundError, version

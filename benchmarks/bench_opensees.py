@@ -508,7 +508,7 @@ def main(argv: list[str] | None = None) -> int:
     if bad:
         ap.error(f"unknown section(s) {bad}; choose from {list(SECTIONS)}")
 
-    kept = False if args.fresh_memory else keep_freed_memory()
+    kept = keep_freed_memory(args.fresh_memory)
     motion = el_centro()
     import platform
 

@@ -210,7 +210,7 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     if args.repeat < 1:
         ap.error(f"--repeat must be >= 1 (got {args.repeat!r})")
-    kept = False if args.fresh_memory else keep_freed_memory()
+    kept = keep_freed_memory(args.fresh_memory)
     print_environment(kept)
     left, right, gap = osp.torsional_pair()
     for b in (left, right):

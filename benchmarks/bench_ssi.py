@@ -619,7 +619,7 @@ def main(argv: list[str] | None = None) -> int:
         v = getattr(args, name)
         if v is not None and not v > 0:
             ap.error(f"--{name.replace('_', '-')}: need seconds > 0 (got {v})")
-    kept = False if args.fresh_memory else keep_freed_memory()
+    kept = keep_freed_memory(args.fresh_memory)
     print_environment(kept)
     print(f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS', '(not set)')}")
     motion = record()

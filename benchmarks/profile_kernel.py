@@ -162,8 +162,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--fresh-memory", action="store_true",
                    help="leave glibc's malloc as it is (see benchmarks/_memory.py)")
     args = p.parse_args(argv)
-    if not args.fresh_memory:
-        keep_freed_memory()
+    keep_freed_memory(args.fresh_memory)
     laws = ("kelvin-voigt", "jankowski") if args.law == "both" else (args.law,)
     for law in laws:
         print(f"SDOF pair, {law} (El Centro, 1 ms)")

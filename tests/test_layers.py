@@ -19,7 +19,7 @@ import pounding
 ROOT = Path(pounding.__file__).parent
 
 LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
-    ("foundations", ("pounding.units", "pounding.validation", "pounding.io", "pounding.memo",
+    ("foundations", ("pounding.units", "pounding.allocator", "pounding.validation", "pounding.io", "pounding.memo",
                      "pounding.lazy", "pounding.progress", "pounding.plausibility",
                      "pounding.example_files")),
     ("physics", ("pounding.contact", "pounding.hysteresis", "pounding.devices",

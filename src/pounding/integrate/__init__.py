@@ -26,6 +26,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from pounding.allocator import keep_freed_memory
 from pounding.ground_motion import GroundMotion, GroundMotionComponents
 from pounding.ground_motion.spatial import SpatialMotion
 from pounding.integrate.grid import (
@@ -319,6 +320,7 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         contacts, and what to check (for an overflow: the record's PGA and the stiffness,
         mass and damping of the fastest DOF).
     """
+    keep_freed_memory()  # once per process: outputs reuse what the last run freed
     check_ground_components(model, motion)
     step = grid_step(motion.dt, dt)
     t_end = motion.duration if duration is None else positive("duration", duration)
