@@ -51,7 +51,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from _environment import load  # noqa: E402
+from _environment import load
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"
@@ -69,15 +69,19 @@ def child_env(**extra: str) -> dict[str, str]:
 
 def measure(cmd: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, float]:
     """``(cpu, wall)`` [s] of one process: its user + system CPU time, and the seconds from
-    start to exit (its output discarded; a failure stops the benchmark)."""
-    t = time.perf_counter()
-    proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL)
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - t
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode != 0:
-        raise SystemExit(f"{' '.join(cmd)}: exit status {proc.returncode}")
+    start to exit (its output discarded; a failure stops the benchmark, showing the end of
+    what the process said on standard error)."""
+    with tempfile.TemporaryFile() as errors:
+        t = time.perf_counter()
+        proc = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=subprocess.DEVNULL,
+                                stderr=errors)
+        _, status, usage = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - t
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        if proc.returncode != 0:
+            errors.seek(0)
+            said = errors.read().decode(errors="replace")[-2000:]
+            raise SystemExit(f"{' '.join(cmd)}: exit status {proc.returncode}\n{said}")
     return usage.ru_utime + usage.ru_stime, wall
 
 

@@ -333,17 +333,14 @@ def table_source() -> str:
     solver of its inverse at each of :data:`TABULATED_E`; about 5 s). Regenerate the module
     with ``python -c "from pounding.contact.exact_restitution import table_source;
     print(table_source(), end='')" > src/pounding/contact/exact_table.py``."""
-    lines = ['"""The exact inverses of :mod:`pounding.contact.exact_restitution` at e = 0.01, '
-             '0.02, …',
-             '0.99, as its solvers give them (made by',
-             ':func:`pounding.contact.exact_restitution.table_source`; '
-             '``tests/contact/test_exact_table.py``',
-             'solves them again). A model file\'s ``e`` of two decimals reads its damping '
-             'from here,',
-             'without loading SciPy\'s root finder and integrator."""',
-             "",
-             "from __future__ import annotations",
-             ""]
+    header = ('"""The exact inverses of :mod:`pounding.contact.exact_restitution` at e = 0.01, '
+              "0.02, …\n0.99, as its solvers give them (made by\n"
+              ":func:`pounding.contact.exact_restitution.table_source`; "
+              "``tests/contact/test_exact_table.py``\nsolves them again). A model file's "
+              "``e`` of two decimals reads its damping from here,\nwithout loading SciPy's "
+              'root finder and integrator."""')
+    lines = [*header.split("\n"), "",
+             "from __future__ import annotations"]
     for name, solve in _SOLVERS.items():
         lines += ["", f"{name}: dict[float, float] = {{"]
         lines += [f"    {e!r}: {solve(e)!r}," for e in TABULATED_E]

@@ -6,7 +6,6 @@ without loading SciPy's root finder and integrator."""
 
 from __future__ import annotations
 
-
 ZETA_KELVIN_VOIGT_CLIPPED: dict[float, float] = {
     0.01: 4.806941801779656,
     0.02: 3.302923004440477,

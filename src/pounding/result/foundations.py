@@ -25,7 +25,10 @@ def _footing_kind(building: Any) -> str:
     shear buildings is answered without loading :mod:`pounding.structure.foundation`.)"""
     if not isinstance(building, MatrixBuilding):
         return ""
-    from pounding.structure.foundation import FlexibleBaseBuilding, PlanFlexibleBaseBuilding
+    from pounding.structure.foundation import (
+        FlexibleBaseBuilding,
+        PlanFlexibleBaseBuilding,
+    )
 
     if isinstance(building, PlanFlexibleBaseBuilding):
         return "plan"
