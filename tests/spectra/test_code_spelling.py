@@ -22,7 +22,6 @@ SEED = ROOT / "examples" / "seed_sdof_pair.toml"
 
 def test_one_list_of_codes_for_every_code_option():
     from pounding.spectra.scaling import CODES as SCALING_CODES
-
     from pounding.spectra.scaling import RENAMED_CODES
 
     assert [c.value for c in opt.Code] == list(CODES)
@@ -64,3 +63,13 @@ def test_the_new_spelling_scales_as_the_old_did():
     by_asce = scale_suite([motion], ec8, 0.5, code="asce7-22", n_periods=20).factors[0]
     pga_rule = float(ec8.sa_g(0.0)) / (motion.pga / 9.80665)
     assert by_ec8 == pytest.approx(max(by_asce, pga_rule), rel=1e-9)
+
+
+@pytest.mark.parametrize("code", ["nzs1170.5", "nbcc2020", "is1893"])
+def test_a_code_without_a_suite_rule_is_refused_by_suite_naming_the_option(code, capsys):
+    """The codes code-check knows but pounding has no suite-scaling rule for: one line
+    naming ``--code`` and the value, exit 2 (it said ``code:``, the library's field)."""
+    capsys.readouterr()
+    assert main(["suite", "--design", str(TARGET), "--t1", "1", "--code", code]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: --code:") and repr(code) in err[0], err

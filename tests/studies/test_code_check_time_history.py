@@ -126,9 +126,9 @@ def test_the_verdict_says_it_in_one_line(case):
     kept = int((~th.at_code.pounded()).sum())
     mean = 1e3 * th.closing_of_pair("B1-B2").mean()
     assert th.verdicts() == [
-        f"B1-B2: the code's 57.8 mm gap prevented pounding in {kept} of 4 records; the "
-        f"records' mean peak closing {mean:.1f} mm (largest "
-        f"{1e3 * th.closing_of_pair('B1-B2').max():.1f} mm)"]
+        (f"B1-B2: the code's 57.8 mm gap prevented pounding in {kept} of 4 records; the "
+         f"records' mean peak closing {mean:.1f} mm (largest "
+         f"{1e3 * th.closing_of_pair('B1-B2').max():.1f} mm)")]
     data = th.to_dict()
     assert data["pairs"][0]["records_pounding_at_code_gap"] == 4 - kept
     assert [lv["contact"] for lv in data["levels"]] == ["B1F1-B2F1", "B1F2-B2F2"]
@@ -136,7 +136,7 @@ def test_the_verdict_says_it_in_one_line(case):
 
 
 def test_cli_writes_the_time_history_block_only_with_out(case, tmp_path, capsys):
-    path, *_ , th = case
+    path = case[0]
     records = tmp_path / "records"
     records.mkdir()
     bundled = Path(__file__).resolve().parents[2] / "src" / "pounding" / "data" / "records"
@@ -193,7 +193,7 @@ def test_a_code_without_a_suite_rule_borrows_asce7s_and_says_so(case):
     spectrum is not known here needs the target given."""
     import dataclasses
 
-    _, model, check, motions, th = case
+    _, model, check, motions, _ = case
     unknown = dataclasses.replace(check, code="some-code")
     with pytest.raises(ValueError, match=r"^design: no spectrum of some-code"):
         time_history_check(model, unknown, motions[:1])
@@ -224,3 +224,21 @@ def test_the_other_codes_targets_are_their_elastic_spectra(case):
     np.testing.assert_allclose(ind.sa_g(np.array([0.3, 1.0, 2.0])),
                                [0.18 * 1.2 * 2.5, 0.18 * 1.2 * 1.36, 0.18 * 1.2 * 0.68],
                                rtol=1e-9)
+
+
+def test_a_linked_model_is_refused_before_any_table(case, tmp_path, capsys):
+    """The peak closing needs the buildings apart: a model with a link between them is one
+    line, exit 2, before the check's tables are printed (they were printed first)."""
+    linked = tmp_path / "linked.toml"
+    linked.write_text(case[0].read_text(encoding="utf-8") + """
+[[device]]
+type = "viscous"
+floors = "all"
+c = 1.0e6
+""", encoding="utf-8")
+    capsys.readouterr()
+    assert main(["code-check", str(linked), *ASCE, "--time-history"]) == 2
+    captured = capsys.readouterr()
+    err = captured.err.strip().splitlines()
+    assert len(err) == 1 and "link(s) tie them together" in err[0], err
+    assert "separation by" not in captured.out

@@ -9,13 +9,12 @@ from typing import Annotated
 import typer
 from rich.text import Text
 
-from pounding.cli import code_check_time_history as th  # (issue 29, wt-codesth29)
+from pounding.cli import code_check_time_history as th
 from pounding.cli import options as opt
 from pounding.cli.app import app, console
 from pounding.cli.tables import Col, literal, print_table
 
-
-# issue 29 (wt-codesth29): one list of codes for every --code (options.Code)
+# one list of codes for every --code (options.Code)
 SeparationCode = opt.Code
 """The codes of ``pounding code-check --code`` (:data:`pounding.studies.codes.CODES`)."""
 
@@ -39,14 +38,14 @@ class Combination(StrEnum):
     srss = "srss"
 
 
-@app.command("code-check", context_settings=opt.CODE_CONTEXT)  # (issue 29: old --code)
+@app.command("code-check", context_settings=opt.CODE_CONTEXT)  # (the old --code spelling)
 def code_check_cmd(
     model: Annotated[Path, typer.Argument(
         help="TOML model file, as for `pounding run` (its buildings and gaps are checked; "
              "its record and contact law are not used).", show_default=False)],
     code: Annotated[SeparationCode, typer.Option(
         "--code", metavar="CODE", help=f"{opt.CODE_HELP} Its separation rule is checked: "
-        "asce7-22, en1998-1, nzs1170.5, nbcc2020 or is1893.",  # (issue 29)
+        "asce7-22, en1998-1, nzs1170.5, nbcc2020 or is1893.",
         show_default=False)],
     sds: Annotated[float | None, typer.Option(
         "--sds", metavar="G", help="asce7-22: S_DS \\[g] (§11.4.5).", show_default=False)]
@@ -68,8 +67,8 @@ def code_check_cmd(
         "--ie", metavar="VALUE", help="asce7-22: importance factor I_e (Table 1.5-2); "
         "nbcc2020: earthquake importance factor I_E (Table 4.1.8.5).",
         show_default=False)] = None,
-    # -- issue 29 (wt-codes29): ASCE 7-22's ELF route and the codes nzs1170.5, nbcc2020,
-    # -- is1893 (their parameters; each refused with the other codes)
+    # ASCE 7-22's ELF route and the codes nzs1170.5, nbcc2020, is1893 (their parameters;
+    # each refused with the other codes)
     procedure: Annotated[Procedure | None, typer.Option(
         "--procedure", help="asce7-22: δ_max by the modal response spectrum analysis "
         "(§12.9.1) or the equivalent lateral force procedure (§12.8). Default: modal.",
@@ -103,7 +102,6 @@ def code_check_cmd(
     soil_type: Annotated[str | None, typer.Option(
         "--soil-type", metavar="I|II|III", help="is1893: soil type (Table 4).",
         show_default=False)] = None,
-    # -- end of wt-codes29's block
     agr: Annotated[float | None, typer.Option(
         "--agr", metavar="G", help="en1998-1: reference peak ground acceleration a_gR \\[g] on "
         "ground A.", show_default=False)] = None,
@@ -135,8 +133,9 @@ def code_check_cmd(
         "--out", "-o", metavar="DIR", help=f"{opt.OUT_HELP} Writes code_check.json there; "
         "without it nothing is written.", show_default=False)] = None,
     overwrite: opt.Overwrite = False,
-    time_history: th.TimeHistory = False,  # the time histories beside the check (issue 29,
-    suite: th.Suite = None,                # wt-codesth29: cli/code_check_time_history.py)
+    # the time histories beside the check (cli/code_check_time_history.py)
+    time_history: th.TimeHistory = False,
+    suite: th.Suite = None,
     design: th.Design = None,
     duration: th.Duration = None,
 ) -> int:
@@ -173,7 +172,7 @@ def code_check_cmd(
         from pounding.io.manifest import check_out_folder
 
         check_out_folder(out, overwrite, "code-check")
-    # -- wt-codes29: every code's options; those of another code refused, a missing one named
+    # every code's options: those of another code refused, a missing one named
     from pounding.studies.codes import code_parameters
 
     given = {"sds": sds, "sd1": sd1, "tl": tl, "cd": cd, "r": r, "ie": ie,
@@ -195,11 +194,14 @@ def code_check_cmd(
         if value is None and accepted[name]:
             raise ValueError(f"--{name.replace('_', '-')}: --code {code.value} needs it "
                              "(got none)")
-    # -- end of wt-codes29's block
-    histories = th.wanted(time_history, suite, design, duration)  # (issue 29, wt-codesth29)
+    histories = th.wanted(time_history, suite, design, duration)
     records, target = th.read_inputs(suite, design, duration) if histories else (None, None)
     cfg = load_config(model)
     pounding_model, _, solver = cfg.build()
+    if histories:  # refused before any table is printed
+        from pounding.studies.codes.time_history import refuse_linked
+
+        refuse_linked(pounding_model)
     check = code_check(pounding_model, code.value, same_property=not property_line,
                        combination=combination.value, **mine)
 
@@ -232,7 +234,7 @@ def code_check_cmd(
     console.print(Text(f"{len(check.rows) - len(bad)} of {len(check.rows)} level(s) meet "
                        f"{check.title}" + (f"; largest shortfall {1e3 * max(r.required - r.gap for r in bad):.1f} mm"
                                           if bad else "")))
-    if histories:  # (issue 29, wt-codesth29) code_check.json gets a time_history block
+    if histories:  # code_check.json gets a time_history block
         check = th.beside(pounding_model, check, records, target, solver, duration)
     if out is not None:
         path = write_code_check(check, out, overwrite=overwrite, source=str(model))

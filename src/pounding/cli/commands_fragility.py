@@ -42,7 +42,7 @@ def fragility_cmd(
 
     from pounding.report.code_check import attach_code_check, read_code_check
 
-    check = read_code_check(code_check) if code_check is not None else None  # (issue 29)
+    check = read_code_check(code_check) if code_check is not None else None
     cases = study_cases(study_file, out=out)
     if cases.record_note:
         console.print(Text(cases.record_note))
@@ -54,7 +54,7 @@ def fragility_cmd(
     except (SweepInterrupted, SweepStopped) as exc:
         stopped(exc, again(study_file, "fragility", out=out, workers=workers,
                            scheduler=scheduler), "runs")
-    if check is not None:  # (issue 29) kept for the report's Code check section
+    if check is not None:  # kept for the report's Code check section
         console.print(Text(f"code check kept: {attach_code_check(res.out_dir, check)}"))
     _print(res)
 

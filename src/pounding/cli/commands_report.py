@@ -22,7 +22,7 @@ def report_cmd(
         "--html", metavar="FILE", help="Write the page to FILE. Default: report.html in "
                                        "RESULTS_DIR (in its manifest).",
         show_default=False)] = None,
-    code_check: Annotated[Path | None, typer.Option(  # (issue 29)
+    code_check: Annotated[Path | None, typer.Option(
         "--code-check", metavar="DIR", help=f"{opt.CODE_CHECK_HELP} The page gains its Code "
         "check section (instead of the check kept in RESULTS_DIR, if any).",
         show_default=False)] = None,

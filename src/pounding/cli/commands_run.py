@@ -22,7 +22,7 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
     from pounding.run_file import run_config
 
     check = None
-    if code_check is not None:  # (issue 29; the report package only where asked for)
+    if code_check is not None:  # (the report package only where asked for)
         from pounding.report.code_check import read_code_check
 
         check = read_code_check(code_check)
@@ -36,7 +36,7 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
         error_line(f"stopped: the run was interrupted, so nothing was written to {target} "
                    "(an earlier output there is as it was); run the same command again")
         raise typer.Exit(EXIT_INTERRUPTED) from None
-    if check is not None:  # (issue 29) kept for the report's Code check section
+    if check is not None:  # kept for the report's Code check section
         from pounding.report.code_check import attach_code_check
 
         console.print(Text(f"code check kept: {attach_code_check(result.out_dir, check)}"))

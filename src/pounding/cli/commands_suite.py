@@ -85,6 +85,12 @@ def suite_cmd(
     from pounding.validation import positive
 
     period = positive("--t1", period)
+    from pounding.spectra.scaling import CODES as SUITE_RULES
+
+    if str(method) == "code" and str(code) not in SUITE_RULES:
+        raise ValueError(f"--code: pounding scales a suite by the rule of asce7-22 (ASCE 7-22 "
+                         f"§16.2.3) or en1998-1 (EN 1998-1 §3.2.3.1.2); {code} has none here "
+                         f"(got {str(code)!r}; --method sa, pga or lsq scale without a code)")
     zetas = opt.split_floats(damping, "--damping") or []
     if len(zetas) != 1:
         raise ValueError(f"--damping: suite scaling uses one damping ratio, the design "

@@ -43,7 +43,7 @@ def sweep_cmd(
 
     from pounding.report.code_check import attach_code_check, read_code_check
 
-    check = read_code_check(code_check) if code_check is not None else None  # (issue 29)
+    check = read_code_check(code_check) if code_check is not None else None
     sweep = load_sweep(sweep_file)
     hist = None if histories is None else (False if histories == "none" else str(histories))
     try:
@@ -54,7 +54,7 @@ def sweep_cmd(
     except (SweepInterrupted, SweepStopped) as exc:
         stopped(exc, again(sweep_file, "sweep", out=out, workers=workers, scheduler=scheduler,
                            batch_size=batch_size, histories=histories), "cases")
-    if check is not None:  # (issue 29) kept for the report's Code check section
+    if check is not None:  # kept for the report's Code check section
         console.print(Text(f"code check kept: {attach_code_check(res.out_dir, check)}"))
     rows: list[tuple[str, str | Text]] = [
         ("cases", f"{res.n_cases} ({len(sweep.params)} parameter(s): "

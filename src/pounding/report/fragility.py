@@ -75,7 +75,7 @@ def render_fragility(folder: Path, code_check: Any = None) -> str:
         sections.insert(1, PageSection("failures", "Failed runs", [
             Note(f"{data['runs']['failed']} run(s) failed; they are left out of the counts "
                  "and the fits.", "warn"), Pre("\n".join(data["runs"]["failures"]))]))
-    if code_check is not None:  # (issue 29)
+    if code_check is not None:
         from pounding.report.code_check import code_check_section
 
         sections.append(code_check_section(code_check))

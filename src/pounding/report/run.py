@@ -69,7 +69,7 @@ def render_run(folder: Path, code_check: Any = None) -> str:
         PageSection("energy", "Energy balance", energy_section(r)),
         PageSection("gap-check", "Gap check", gap_check_section(r)),
     ]
-    if code_check is not None:  # (issue 29)
+    if code_check is not None:
         from pounding.report.code_check import code_check_section
 
         sections.append(code_check_section(code_check, r))

@@ -48,7 +48,7 @@ def render_sweep(folder: Path, code_check: Any = None) -> str:
         PageSection("results", "Results", _results_section(sw)),
         PageSection("plots", "Main measure against each parameter", _plots_section(sw)),
     ]
-    if code_check is not None:  # (issue 29)
+    if code_check is not None:
         from pounding.report.code_check import code_check_section
 
         sections.append(code_check_section(code_check))

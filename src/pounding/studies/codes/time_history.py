@@ -39,7 +39,7 @@ from numpy.typing import NDArray
 from pounding.studies.codes.common import CodeCheck
 
 __all__ = ["CodeCheckBeside", "RunOutcomes", "TimeHistoryCheck", "code_spectrum",
-           "time_history_check"]
+           "refuse_linked", "time_history_check"]
 
 FloatArray = NDArray[np.float64]
 
@@ -282,6 +282,15 @@ def _with_gaps(model: Any, gaps: Sequence[float]) -> Any:
                          walls=model.walls, bridge=model.bridge, stops=model.stops)
 
 
+def refuse_linked(model: Any) -> None:
+    """Refuse, in one line, a model whose buildings are tied by links: the peak closing of
+    the time-history check needs the buildings apart (each run alone)."""
+    if model.links:
+        raise ValueError(f"model: the time-history check needs the buildings apart for the "
+                         f"peak closing, and {len(model.links)} link(s) tie them together; "
+                         "remove the links")
+
+
 def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
                        target: Any = None, scaling_code: str | None = None,
                        solver: Mapping[str, Any] | None = None,
@@ -339,10 +348,7 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         raise ValueError(f"check: not a check of this model (its level {unknown[0]!r} is not "
                          f"one of the model's contacts)" if unknown else
                          "check: it has no level")
-    if model.links:
-        raise ValueError(f"model: the time-history check needs the buildings apart for the "
-                         f"peak closing, and {len(model.links)} link(s) tie them together; "
-                         "remove the links")
+    refuse_linked(model)
     target = code_spectrum(check) if target is None else target
     rule = scaling_code if scaling_code is not None else (
         check.code if check.code in SUITE_RULES else "asce7-22")
