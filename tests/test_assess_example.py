@@ -117,3 +117,19 @@ def test_fragility_and_mitigation_steps(tmp_path: Path) -> None:
         half_last_digit = [0.05, 0.5, 0.005, 0.005]     # the page's 17.7, 6101, 2.13, 1.87
         for cell, value, tol in zip(cells[1:5], shown, half_last_digit, strict=True):
             assert float(cell) == pytest.approx(value, abs=tol), (option, cell, value)
+
+
+def test_a_check_of_another_model_is_refused_before_the_run(checked: Path, tmp_path: Path,
+                                                             capsys: pytest.CaptureFixture[str]
+                                                             ) -> None:
+    """The existing pair's check beside a run of the two 10-storey buildings: their contacts
+    share labels (B1F1-B2F1 …) but not elevations or gaps — one line, exit 2, no run (the
+    report set one pair's code verdict beside another pair's response)."""
+    out = tmp_path / "other"
+    capsys.readouterr()
+    assert main(["run", str(EXAMPLES / "two_10_storey.toml"), "--out", str(out),
+                 "--no-figures", "--code-check", str(checked)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "is a check of another model" in err[0], err
+    assert "3.4 m with a gap of 30 mm, this model's at 3.2 m with 40 mm" in err[0]
+    assert not out.exists()

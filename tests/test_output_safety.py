@@ -426,3 +426,37 @@ def test_a_file_written_by_a_killed_process_leaves_no_temporary_after_the_next_w
     write_text(tmp_path / "page.html", "<html></html>")
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
         ["page.html", live.name, other.name, users.name])
+
+
+def test_every_kind_of_output_folder_has_a_name_in_the_messages() -> None:
+    """Every kind a command writes an output folder as (``new_output_folder``,
+    ``check_out_folder``) is named in ``_KIND_TEXT``: a missing one made ``--overwrite`` onto
+    another kind's folder a KeyError traceback (``synthesize``, ``code-check``)."""
+    import re
+
+    from pounding.io.manifest import _KIND_TEXT
+
+    src = Path(__file__).resolve().parents[1] / "src" / "pounding"
+    kinds = set()
+    for path in src.rglob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        kinds |= set(re.findall(r"(?:new_output_folder|check_out_folder)\([^,]+,\s*(?:\w+,\s*)?"
+                                r"\"([\w-]+)\"", text))
+    assert {"run", "mitigation", "pushover", "code-check", "synthesize"} <= kinds, kinds
+    assert kinds <= set(_KIND_TEXT), kinds - set(_KIND_TEXT)
+
+
+@pytest.mark.parametrize("argv", [
+    ["synthesize", "-m", "7", "-r", "25", "--vs30", "750", "-n", "1"],
+    ["code-check", str(Path(__file__).resolve().parents[1] / "examples" / "seed_sdof_pair.toml"),
+     "--code", "asce7-22", "--sds", "1", "--sd1", "0.6", "--tl", "8", "--cd", "5.5", "--r", "8",
+     "--ie", "1"]], ids=["synthesize", "code-check"])
+def test_overwrite_onto_a_run_of_another_command_is_one_line(tmp_path, capsys, earlier_run,
+                                                             argv):
+    out = copy_of(earlier_run[1], tmp_path / "out")
+    before = sorted(p.name for p in out.iterdir())
+    capsys.readouterr()
+    assert main([*argv, "--out", str(out), "--overwrite"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "it holds the output of a run" in err[0], err
+    assert sorted(p.name for p in out.iterdir()) == before

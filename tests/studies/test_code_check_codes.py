@@ -420,3 +420,25 @@ def test_the_command_names_the_librarys_codes_and_procedures() -> None:
                                                  "same_property", "combination"}
     assert {k for k, needed in code_parameters("asce7-22").items() if needed} == {
         "sds", "sd1", "tl", "cd", "r", "ie"}
+
+
+@pytest.mark.parametrize("argv", [
+    ["--code", "nbcc2020", "--s-table", "1e300,0.75,0.42,0.26,0.085,0.03", "--rd", "5", "--ro",
+     "1.5", "--ie", "1"],
+    ["--code", "asce7-22", "--sds", "1e300", "--sd1", "1e300", "--tl", "8", "--cd", "5.5",
+     "--r", "8", "--ie", "1", "--combination", "srss"],
+    ["--code", "asce7-22", "--sds", "1e300", "--sd1", "1e300", "--tl", "8", "--cd", "5.5",
+     "--r", "8", "--ie", "1", "--procedure", "elf", "--s1", "1"],
+    ["--code", "en1998-1", "--agr", "1e300", "--ground-type", "C", "--spectrum-type", "1",
+     "--q", "3"]], ids=["nbcc-cqc", "asce-srss", "asce-elf", "en1998"])
+def test_an_overflowing_spectrum_is_one_line_never_ok(argv, tmp_path, capsys) -> None:
+    """A spectrum so large the modal sums overflow: one line, exit 2, nothing written (an
+    overflowed CQC sum was read as 0 mm and "OK", and the command exited 0 with inf)."""
+    from pounding.cli import main
+
+    model = Path(__file__).resolve().parents[2] / "examples" / "two_10_storey.toml"
+    capsys.readouterr()
+    assert main(["code-check", str(model), *argv, "--out", str(tmp_path / "c")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: spectrum"), err
+    assert not (tmp_path / "c").exists()

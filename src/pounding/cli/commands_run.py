@@ -23,10 +23,15 @@ def _run(model_file: Path, out: Path | None, overwrite: bool, figures: bool | No
 
     check = None
     if code_check is not None:  # (the report package only where asked for)
-        from pounding.report.code_check import read_code_check
+        from pounding.report.code_check import other_model, read_code_check
 
         check = read_code_check(code_check)
     cfg = load_config(model_file)
+    if check is not None:  # a check of this model, or refused before the run
+        why = other_model(check, cfg.build()[0])
+        if why is not None:
+            raise ValueError(f"--code-check: {code_check} is a check of another model "
+                             f"({why}); check {model_file.name} with pounding code-check")
     target = out if out is not None else default_out_dir(model_file)
     try:
         with sigterm_as_interrupt(), progress_bar(label) as progress:

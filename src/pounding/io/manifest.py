@@ -354,7 +354,7 @@ def check_replaceable(folder: Path, kind: str, option: str = "--out") -> None:
     if found != kind:
         raise ValueError(f"out: not replacing {folder}: it holds the output of "
                          f"{_KIND_TEXT.get(str(found), 'something else')}, not of "
-                         f"{_KIND_TEXT[kind]}; choose another {option}")
+                         f"{_KIND_TEXT.get(kind, kind)}; choose another {option}")
     foreign = foreign_entry(folder)
     if foreign is not None:
         raise ValueError(f"out: not replacing {folder}: it holds {foreign}; move it away or "
@@ -362,7 +362,10 @@ def check_replaceable(folder: Path, kind: str, option: str = "--out") -> None:
 
 
 _KIND_TEXT = {"run": "a run", "sweep": "a sweep", "mitigation": "a mitigation study",
-              "pushover": "a pushover"}
+              "pushover": "a pushover", "code-check": "a code check",
+              "synthesize": "a suite of stochastic records"}
+"""What each kind of output folder is called in a message (every kind a command writes:
+``tests/test_output_safety.py`` checks that none is missing)."""
 
 
 def remove_outputs(folder: Path, keep_folder: bool = False) -> None:

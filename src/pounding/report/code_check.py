@@ -25,7 +25,7 @@ import numpy as np
 from pounding.report.format import Block, Note, PageSection, Table, kv_table
 
 __all__ = ["CODE_CHECK_FILE", "CodeCheckFile", "attach_code_check", "code_check_section",
-           "folder_code_check", "read_code_check"]
+           "folder_code_check", "other_model", "read_code_check"]
 
 CODE_CHECK_FILE = "code_check.json"
 """The file of a code check (:data:`pounding.studies.codes.CODE_CHECK_FILE`)."""
@@ -142,6 +142,25 @@ def attach_code_check(results_dir: str | os.PathLike[str], check: CodeCheckFile)
     return Manifest(folder).write_text(folder / CODE_CHECK_FILE, check.text)
 
 
+def other_model(check: CodeCheckFile, model: Any) -> str | None:
+    """Why ``check`` is not a check of ``model`` (a
+    :class:`~pounding.model.PoundingModel`), or None: a level whose contact the model does
+    not have, or has at another elevation or with another gap (to 1 µm). Labels alone
+    prove little — ``B1F1-B2F1`` is in almost every model."""
+    contacts = {c.label: c for c in model.contacts}
+    for level in check.data["levels"]:
+        label = str(level["contact"])
+        c = contacts.get(label)
+        if c is None:
+            return f"its level {label} is not a contact of this model"
+        here = (float(c.elevation), 1e3 * float(c.gap))
+        there = (float(level["elevation_m"]), float(level["gap_mm"]))
+        if abs(here[0] - there[0]) > 1e-6 or abs(here[1] - there[1]) > 1e-3:
+            return (f"its level {label} is at {there[0]:.4g} m with a gap of {there[1]:.4g} "
+                    f"mm, this model's at {here[0]:.4g} m with {here[1]:.4g} mm")
+    return None
+
+
 def _run_closing(run: Any, contacts: list[str]) -> dict[str, tuple[float, float, bool]]:
     """Each contact of the run: its gap [m], its peak closing ``max(u_left − u_right)``
     [m] (``gap + max δ``) and whether it touched."""
@@ -180,6 +199,11 @@ def code_check_section(check: CodeCheckFile, run: Any = None) -> PageSection:
     head += [("assumes", str(a)) for a in d.get("assumptions", []) or []]
     head.append(("from", str(check.source)))
     blocks: list[Block] = [kv_table(head, caption="What the check is (pounding code-check)")]
+    if run is not None and getattr(run, "built", None) is not None:
+        why = other_model(check, run.built.model)
+        if why is not None:
+            raise ValueError(f"--code-check: {check.source} is a check of another model "
+                             f"({why}); check this run's model with pounding code-check")
     closing = _run_closing(run, [lv["contact"] for lv in levels]) if run is not None else {}
     clauses: dict[str, Any] = d["clauses"] if isinstance(d.get("clauses"), dict) else {}
     caption = "; ".join(f"{k}: {v}" for k, v in clauses.items())

@@ -111,4 +111,9 @@ def modal_base_shear(building: Any, sa_g: Any, combination: str) -> float:
     if combination == "srss":
         return math.sqrt(float(np.sum(v * v)))
     rho = cqc_matrix(2.0 * np.pi / periods, SPECTRUM_DAMPING)
-    return math.sqrt(max(0.0, float(v @ rho @ v)))
+    with np.errstate(over="ignore", invalid="ignore"):  # (refused below)
+        quad = float(v @ rho @ v)
+    if not math.isfinite(quad):
+        raise ValueError("spectrum: the modal base shear is not a finite number; check the "
+                         "spectrum's parameters")
+    return math.sqrt(max(0.0, quad))  # (round-off can make it −0)

@@ -82,7 +82,14 @@ def modal_point_peak(building: Any, point: Any, sa_g: Callable[[FloatArray], Any
         peak = math.sqrt(float(np.sum(r * r)))
     else:
         rho = cqc_matrix(2.0 * np.pi / periods, SPECTRUM_DAMPING)
-        peak = math.sqrt(max(0.0, float(r @ rho @ r)))
+        with np.errstate(over="ignore", invalid="ignore"):  # (refused below)
+            quad = float(r @ rho @ r)
+        peak = math.sqrt(max(0.0, quad)) if math.isfinite(quad) else math.nan
+    if not (math.isfinite(peak) and np.isfinite(r).all()):
+        raise ValueError(f"spectrum: the modal displacements of building "
+                         f"{building.name or '?'} are not finite numbers (a spectral value "
+                         f"of {float(np.max(np.abs(sa_g(periods)))):.3g} g); check the "
+                         "spectrum's parameters")
     return peak, [float(v) for v in r]
 
 
@@ -140,6 +147,9 @@ def separation_rows(model: Any, displacement: Callable[[Any, Any], float], *,
     for c in pair_contacts(model):
         d = [displacement(model.buildings[point.building], point)
              for point in (c.left, c.right)]
+        if not all(math.isfinite(x) for x in d):  # (never a NaN read as 0 mm and "OK")
+            raise ValueError(f"spectrum: the code's displacement at {c.label} is not a finite "
+                             f"number ({d[0]!r}, {d[1]!r}); check the spectrum's parameters")
         if same_property or apart is None:
             required = math.hypot(d[0], d[1]) if rule == "srss" else d[0] + d[1]
             clause = same_site
