@@ -133,3 +133,19 @@ def test_a_check_of_another_model_is_refused_before_the_run(checked: Path, tmp_p
     assert len(err) == 1 and "is a check of another model" in err[0], err
     assert "3.4 m with a gap of 30 mm, this model's at 3.2 m with 40 mm" in err[0]
     assert not out.exists()
+
+
+@pytest.mark.parametrize("study", ["sweep_gap_e.toml", "fragility_two_10_storey.toml"])
+def test_a_study_refuses_a_check_of_another_base_model(checked: Path, tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str],
+                                                      study: str) -> None:
+    """A sweep or fragility study with the existing pair's check: its base model's contacts
+    are at other elevations — one line, exit 2, before any run."""
+    command = "fragility" if study.startswith("fragility") else "sweep"
+    out = tmp_path / "study"
+    capsys.readouterr()
+    assert main([command, str(EXAMPLES / study), "--out", str(out), "--no-figures",
+                 "--scheduler", "synchronous", "--code-check", str(checked)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "is a check of another model" in err[0], err
+    assert not out.exists()

@@ -40,10 +40,18 @@ def fragility_cmd(
     from pounding.studies.fragility import run_study, study_cases
     from pounding.studies.sweep import SweepInterrupted, SweepStopped
 
-    from pounding.report.code_check import attach_code_check, read_code_check
+    from pounding.report.code_check import attach_code_check, other_model, read_code_check
 
     check = read_code_check(code_check) if code_check is not None else None
     cases = study_cases(study_file, out=out)
+    if check is not None:  # a check of the study's base model (elevations; gaps may vary)
+        from pounding.config import parse_config
+
+        base = cases.sweep
+        why = other_model(check, parse_config(base.base, base.base_dir).build()[0], gaps=False)
+        if why is not None:
+            raise ValueError(f"--code-check: {code_check} is a check of another model "
+                             f"({why}); check the study's base model with pounding code-check")
     if cases.record_note:
         console.print(Text(cases.record_note))
     try:

@@ -41,10 +41,18 @@ def sweep_cmd(
     """
     from pounding.studies.sweep import SweepInterrupted, SweepStopped, load_sweep, run_sweep
 
-    from pounding.report.code_check import attach_code_check, read_code_check
+    from pounding.report.code_check import attach_code_check, other_model, read_code_check
 
     check = read_code_check(code_check) if code_check is not None else None
     sweep = load_sweep(sweep_file)
+    if check is not None:  # a check of the study's base model (elevations; gaps may vary)
+        from pounding.config import parse_config
+
+        base = sweep
+        why = other_model(check, parse_config(base.base, base.base_dir).build()[0], gaps=False)
+        if why is not None:
+            raise ValueError(f"--code-check: {code_check} is a check of another model "
+                             f"({why}); check the study's base model with pounding code-check")
     hist = None if histories is None else (False if histories == "none" else str(histories))
     try:
         with sigterm_as_interrupt(), progress_bar(f"sweep {sweep.name}", "cases") as progress:

@@ -142,11 +142,12 @@ def attach_code_check(results_dir: str | os.PathLike[str], check: CodeCheckFile)
     return Manifest(folder).write_text(folder / CODE_CHECK_FILE, check.text)
 
 
-def other_model(check: CodeCheckFile, model: Any) -> str | None:
+def other_model(check: CodeCheckFile, model: Any, gaps: bool = True) -> str | None:
     """Why ``check`` is not a check of ``model`` (a
     :class:`~pounding.model.PoundingModel`), or None: a level whose contact the model does
-    not have, or has at another elevation or with another gap (to 1 µm). Labels alone
-    prove little — ``B1F1-B2F1`` is in almost every model."""
+    not have, or has at another elevation or (with ``gaps``) with another gap (to 1 µm).
+    Labels alone prove little — ``B1F1-B2F1`` is in almost every model. A study's base model
+    is compared without its gaps (a sweep may vary them)."""
     contacts = {c.label: c for c in model.contacts}
     for level in check.data["levels"]:
         label = str(level["contact"])
@@ -155,7 +156,7 @@ def other_model(check: CodeCheckFile, model: Any) -> str | None:
             return f"its level {label} is not a contact of this model"
         here = (float(c.elevation), 1e3 * float(c.gap))
         there = (float(level["elevation_m"]), float(level["gap_mm"]))
-        if abs(here[0] - there[0]) > 1e-6 or abs(here[1] - there[1]) > 1e-3:
+        if abs(here[0] - there[0]) > 1e-6 or (gaps and abs(here[1] - there[1]) > 1e-3):
             return (f"its level {label} is at {there[0]:.4g} m with a gap of {there[1]:.4g} "
                     f"mm, this model's at {here[0]:.4g} m with {here[1]:.4g} mm")
     return None
