@@ -187,3 +187,23 @@ def replaced(doc: dict[str, Any], path: tuple[Any, ...], value: Any) -> dict[str
     new = copy.deepcopy(doc)
     get(new, path[:-1])[path[-1]] = value
     return new
+
+
+def two_storey_pair(ka: float = 4.0e7, kb: float = 8.0e7, mass: float = 1.0e5,
+                    gap: float = 0.05, extra: str = "") -> str:
+    """The code checks' worked-example model file (docs/codes.md): two 2-storey shear
+    buildings A and B, every floor ``mass`` [kg], storeys ``ka``/``kb`` [N/m] of 3 m, 5 %
+    Rayleigh damping, a linear spring contact ``gap`` [m] apart; ``extra``: TOML appended
+    (a ``[solver]`` section, say)."""
+    building = """[[building]]
+name = "{name}"
+n_storeys = 2
+mass = {mass!r}
+stiffness = {k!r}
+height = 3.0
+damping = {{ rayleigh = [0.05, 0.05], modes = [1, 2] }}
+"""
+    return ('name = "two 2-storey buildings"\n[record]\nbundled = "el_centro"\n'
+            + building.format(name="A", mass=mass, k=ka)
+            + building.format(name="B", mass=mass, k=kb)
+            + f'[contact]\nlaw = "linear-spring"\nk = 1.0e9\ngap = {gap!r}\n' + extra)

@@ -15,34 +15,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from model_documents import two_storey_pair
 
 from pounding.cli import main
 
-MODEL = """
-name = "two 2-storey buildings"
-[record]
-bundled = "el_centro"
-[[building]]
-name = "A"
-n_storeys = 2
-mass = 1.0e5
-stiffness = 4.0e7
-height = 3.0
-damping = { rayleigh = [0.05, 0.05], modes = [1, 2] }
-[[building]]
-name = "B"
-n_storeys = 2
-mass = 1.0e5
-stiffness = 8.0e7
-height = 3.0
-damping = { rayleigh = [0.05, 0.05], modes = [1, 2] }
-[contact]
-law = "linear-spring"
-k = 1.0e9
-gap = 0.05
-[solver]
-duration = 4.0
-"""
+MODEL = two_storey_pair(extra="[solver]\nduration = 4.0\n")
 ASCE = ["--code", "asce7-22", "--sds", "1.0", "--sd1", "0.6", "--tl", "8", "--cd", "5.5",
         "--r", "8", "--ie", "1.25", "--combination", "srss"]
 ROW = re.compile(r"<tr><td>(B1F\d-B2F\d)</td>(.*?)</tr>")

@@ -10,6 +10,7 @@ import math
 from pathlib import Path
 
 import pytest
+from model_documents import two_storey_pair
 
 from pounding.cli import main
 
@@ -17,29 +18,7 @@ G = 9.80665
 M = 1.0e5            # kg per floor, both buildings
 K_A, K_B = 4.0e7, 8.0e7   # N/m per storey
 GAP = 0.05           # m
-MODEL = f"""
-name = "two 2-storey buildings"
-[record]
-bundled = "el_centro"
-[[building]]
-name = "A"
-n_storeys = 2
-mass = {M}
-stiffness = {K_A}
-height = 3.0
-damping = {{ rayleigh = [0.05, 0.05], modes = [1, 2] }}
-[[building]]
-name = "B"
-n_storeys = 2
-mass = {M}
-stiffness = {K_B}
-height = 3.0
-damping = {{ rayleigh = [0.05, 0.05], modes = [1, 2] }}
-[contact]
-law = "linear-spring"
-k = 1.0e9
-gap = {GAP}
-"""
+MODEL = two_storey_pair(K_A, K_B, M, GAP)
 
 
 def _closed_form_modes(k: float, m: float) -> list[tuple[float, tuple[float, float]]]:

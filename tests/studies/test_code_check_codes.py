@@ -14,6 +14,7 @@ import math
 from pathlib import Path
 
 import pytest
+from model_documents import two_storey_pair
 
 from pounding.cli import main
 
@@ -21,29 +22,6 @@ G = 9.80665
 M = 1.0e5
 K_A, K_B = 4.0e7, 8.0e7
 GAP = 0.05
-MODEL = """
-name = "two 2-storey buildings"
-[record]
-bundled = "el_centro"
-[[building]]
-name = "A"
-n_storeys = 2
-mass = {m}
-stiffness = {ka}
-height = 3.0
-damping = {{ rayleigh = [0.05, 0.05], modes = [1, 2] }}
-[[building]]
-name = "B"
-n_storeys = 2
-mass = {m}
-stiffness = {kb}
-height = 3.0
-damping = {{ rayleigh = [0.05, 0.05], modes = [1, 2] }}
-[contact]
-law = "linear-spring"
-k = 1.0e9
-gap = {gap}
-"""
 
 LAMBDAS = ((3.0 - math.sqrt(5.0)) / 2.0, (3.0 + math.sqrt(5.0)) / 2.0)
 
@@ -68,7 +46,7 @@ def _srss(k: float, sa_g, floor: int) -> float:
 
 def _model_file(tmp: Path, ka: float = K_A, kb: float = K_B) -> Path:
     p = tmp / "pair.toml"
-    p.write_text(MODEL.format(m=M, ka=ka, kb=kb, gap=GAP), encoding="utf-8")
+    p.write_text(two_storey_pair(ka, kb, M, GAP), encoding="utf-8")
     return p
 
 
@@ -386,9 +364,8 @@ def test_long_periods(tmp_path: Path) -> None:
     their long-period branches (3 b/T², S(10)) beyond their tables' 10 s; IS 1893's Sa/g
     ends at 4 s: refused, one line naming the model and the period."""
     from pounding.config import load_config
-    from pounding.studies.codes import code_check
-
     from pounding.plausibility import PlausibilityWarning
+    from pounding.studies.codes import code_check
 
     with pytest.warns(PlausibilityWarning, match="above 10 s"):  # meant: beyond 10 s
         soft = load_config(_model_file(tmp_path, 4.0e7 / 625, 8.0e7 / 625)).build()[0]

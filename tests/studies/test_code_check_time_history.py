@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from model_documents import two_storey_pair
 
 from pounding.cli import main
 from pounding.config import load_config
@@ -22,29 +23,7 @@ from pounding.spectra import DesignSpectrum, scale_suite
 from pounding.studies.codes import code_check
 from pounding.studies.codes.time_history import code_spectrum, time_history_check
 
-MODEL = """
-name = "two 2-storey buildings"
-[record]
-bundled = "el_centro"
-[[building]]
-name = "A"
-n_storeys = 2
-mass = 1.0e5
-stiffness = 4.0e7
-height = 3.0
-damping = { rayleigh = [0.05, 0.05], modes = [1, 2] }
-[[building]]
-name = "B"
-n_storeys = 2
-mass = 1.0e5
-stiffness = 8.0e7
-height = 3.0
-damping = { rayleigh = [0.05, 0.05], modes = [1, 2] }
-[contact]
-law = "linear-spring"
-k = 1.0e9
-gap = 0.05
-"""
+MODEL = two_storey_pair()
 ASCE = ["--code", "asce7-22", "--sds", "1.0", "--sd1", "0.6", "--tl", "8", "--cd", "5.5",
         "--r", "8", "--ie", "1.25", "--combination", "srss"]
 SECONDS = 6.0
