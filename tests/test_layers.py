@@ -19,9 +19,9 @@ import pounding
 ROOT = Path(pounding.__file__).parent
 
 LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
-    ("foundations", ("pounding.units", "pounding.allocator", "pounding.validation", "pounding.io", "pounding.memo",
-                     "pounding.lazy", "pounding.progress", "pounding.plausibility",
-                     "pounding.example_files")),
+    ("foundations", ("pounding.units", "pounding.allocator", "pounding.compiled_cache",
+                     "pounding.validation", "pounding.io", "pounding.memo", "pounding.lazy",
+                     "pounding.progress", "pounding.plausibility", "pounding.example_files")),
     ("physics", ("pounding.contact", "pounding.hysteresis", "pounding.devices",
                  "pounding.ground_motion", "pounding.structure", "pounding.spectra")),
     ("model", ("pounding.model",)),

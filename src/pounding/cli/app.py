@@ -69,6 +69,22 @@ def _root(version: Annotated[bool, typer.Option(
         "--version", callback=_print_version, is_eager=True,
         help="Print the version and exit.")] = False) -> None:
     """Seismic pounding of adjacent buildings: impact laws, restitution, time histories."""
+    from pounding.compiled_cache import tell_compiling_to
+
+    tell_compiling_to(_say_compiling)
+
+
+def compiling_text(seconds: float, what: str = "the solver") -> str:
+    """The note while ``what`` compiles (the first run on a machine)."""
+    return f"compiling {what} once (about {seconds:.0f} s; cached after) …"
+
+
+def _say_compiling(what: str, seconds: float) -> None:
+    """One dim line on standard error before a kernel other than the solver's compiles
+    (the response spectra's, a few seconds, once a machine)."""
+    from rich.text import Text
+
+    err_console.print(Text(compiling_text(seconds, what), style="dim"))
 
 
 console = Console(width=None if sys.stdout.isatty() else 160, markup=False, emoji=False,

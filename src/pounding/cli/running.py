@@ -29,7 +29,7 @@ from rich.progress import (
 )
 from rich.text import Text
 
-from pounding.cli.app import console, err_console
+from pounding.cli.app import compiling_text, console, err_console
 
 __all__ = ["COMPILE_NOTE_AFTER", "PROGRESS_DELAY", "again", "compiling_text", "progress_bar",
            "sigterm_as_interrupt", "stopped"]
@@ -77,11 +77,6 @@ class _CompilingNote(ProgressColumn):
             return Text("probably compiling the solver: first run only (cached after)",
                         style="dim")
         return Text("")
-
-
-def compiling_text(seconds: float) -> str:
-    """The progress line's note while the solver compiles."""
-    return f"compiling the solver once (about {seconds:.0f} s; cached after) …"
 
 
 def solver_compile_seconds() -> float:

@@ -11,9 +11,10 @@ every cached kernel function is flushed (numba then compiles afresh, once).
 This costs a dozen ``stat`` calls at import; it matters for anyone who edits the kernel, and
 for installs that replace some files but not others.
 
-:func:`cached_here` tells, from numba's cache index alone (one small file read), whether a
-compiled function will load from the cache or be compiled first: what the command line's
-progress line says while it compiles (:data:`COLD_COMPILE_S`).
+:func:`pounding.compiled_cache.cached_here` (re-exported here) tells, from numba's cache
+index alone (one small file read), whether a compiled function will load from the cache or
+be compiled first: what the command line's progress line says while it compiles
+(:data:`COLD_COMPILE_S`).
 """
 
 from __future__ import annotations
@@ -21,9 +22,13 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
-import pickle
 from pathlib import Path
 from types import ModuleType
+
+from pounding.compiled_cache import cached_here
+
+__all__ = ["COLD_COMPILE_S", "KERNEL_MODULES", "STAMP_FILE", "cached_here", "invalidate_if_stale",
+           "sources_stamp"]
 
 KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.kernel", "pounding.integrate.adaptive", "pounding.integrate.commit",
@@ -90,25 +95,3 @@ def invalidate_if_stale(modules: list[ModuleType]) -> bool:
         tmp.write_text(stamp)
         os.replace(tmp, path)
     return True
-
-
-def cached_here(dispatcher: object) -> bool:
-    """True if numba's on-disk cache holds compiled code of ``dispatcher`` that this process
-    would load rather than compile: an index whose stamp matches the function's source file,
-    with an entry for this machine's code generator (CPU name and features) whose data file
-    is there. Reads the index only (no compiling, no loading of code).
-
-    False where there is no such entry, or the cache cannot be read (then numba compiles).
-    """
-    try:
-        cache_file = dispatcher._cache._cache_file  # type: ignore[attr-defined]
-        # numba's own reading of the index: {} if missing, of another numba version, or
-        # stale (its source file's stamp changed); keys (signature, codegen magic, hashes)
-        overloads = cache_file._load_index()
-        magic = dispatcher.targetctx.codegen().magic_tuple()  # type: ignore[attr-defined]
-        folder = cache_file._cache_path
-    except (AttributeError, OSError, EOFError, ValueError, TypeError, IndexError,
-            pickle.UnpicklingError):
-        return False
-    return any(key[1] == magic and os.path.isfile(os.path.join(folder, name))
-               for key, name in overloads.items())

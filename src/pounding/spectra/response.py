@@ -35,6 +35,15 @@ CSV_COLUMNS = ("record", "damping", "period_s", "sd_m", "psv_m_s", "psa_g", "sa_
 """Columns of :meth:`ResponseSpectrum.to_csv` (units in the names: s, m, m/s, g)."""
 
 
+SPECTRA_COMPILE_S: float = 5.0
+"""Seconds (CPU, one core) numba spends compiling the response spectra's kernel
+(:func:`pounding.spectra._kernel.peaks`) the first time on a machine: El Centro's first
+spectrum took 5.3–5.6 s of CPU on an empty ``NUMBA_CACHE_DIR`` against 0.44 s once cached
+(the project's 2-core machine at load 2–4, 2026-11-28). Later processes load it from
+numba's cache. What the
+command line says before it compiles (:func:`pounding.compiled_cache.before_first_call`)."""
+
+
 def default_periods() -> FloatArray:
     """100 periods [s] log-spaced from 0.02 s to 5 s (``parse_periods("0.02:5:100")``)."""
     return np.geomspace(0.02, 5.0, 100)
@@ -258,8 +267,10 @@ def compute_peaks(accel: FloatArray, dt: float, periods: FloatArray, damping: Fl
                   weights: FloatArray, absolute: bool) -> tuple[FloatArray, FloatArray]:
     """Run the compiled kernel (:func:`pounding.spectra._kernel.peaks`): peak ``|u|`` [m]
     and peak absolute acceleration [m/s²], shaped (n_damping, n_periods, n_directions)."""
+    from pounding.compiled_cache import before_first_call
     from pounding.spectra._kernel import peaks
 
+    before_first_call(peaks, "the response-spectrum kernel", SPECTRA_COMPILE_S)
     # a writable copy: a record's read-only array would be another type to numba, and
     # compile the kernel a second time
     return peaks(np.array(accel, dtype=np.float64, order="C"), float(dt),
