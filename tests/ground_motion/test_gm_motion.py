@@ -140,3 +140,19 @@ def test_synthetic_inputs_validate() -> None:
         sine_pulse(1.0, 0.5, dt=0.0)
     with pytest.raises(ValueError, match=r"period \[s\] must be > 0"):
         sine_pulse(1.0, -0.5, dt=0.01)
+
+
+def test_arias_time_is_the_husid_curves_closed_form():
+    """A constant acceleration builds Arias intensity linearly (t_f = f T); a ramp a = t as
+    t³ (t_f = f^(1/3) T); a record of zeros has none (0)."""
+    dt, end = 0.001, 20.0
+    t = np.arange(0.0, end + dt / 2, dt)
+    flat = GroundMotion(dt, np.full(t.size, 2.0))
+    for f in (0.05, 0.5, 0.95):
+        assert flat.arias_time(f) == pytest.approx(f * end, rel=1e-12)
+    ramp = GroundMotion(dt, t)
+    for f in (0.05, 0.95):  # the trapezoidal rule's error on t³: O(dt²)
+        assert ramp.arias_time(f) == pytest.approx(f ** (1 / 3) * end, rel=1e-5)
+    assert GroundMotion(dt, np.zeros(10)).arias_time(0.95) == 0.0
+    with pytest.raises(ValueError, match="fraction"):
+        flat.arias_time(1.5)

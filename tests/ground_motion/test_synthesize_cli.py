@@ -36,6 +36,7 @@ def test_the_records_read_back_and_the_median_is_theirs(tmp_path):
     median = np.exp(np.log(np.array(psa)).mean(axis=0))
     assert float(rows[0.2]["median_psa_g"]) == pytest.approx(median[0], rel=1e-6)
     assert float(rows[1.0]["median_psa_g"]) == pytest.approx(median[1], rel=1e-6)
+    assert {r["damping"] for r in rows.values()} == {"0.05"}  # the medians' damping, said
     with (out / "parameters.csv").open() as fh:
         assert len(list(csv.DictReader(fh))) == 3
 

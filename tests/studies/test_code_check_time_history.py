@@ -114,6 +114,23 @@ def test_the_verdict_says_it_in_one_line(case):
     assert math.isclose(data["levels"][1]["required_mm"], 57.7766, rel_tol=1e-4)
 
 
+def test_factors_outside_the_suites_limits_are_flagged(case):
+    """A factor outside 0.25–4 (pounding suite's flag, spectra.scaling.DEFAULT_LIMITS) adds
+    one caution line and marks the record in the JSON; inside, nothing is said."""
+    import dataclasses
+
+    th = case[-1]
+    far = dataclasses.replace(th, factors=np.array([7.2, 1.0, 0.2, 1.0]))
+    assert list(far.factors_flagged) == [True, False, True, False]
+    assert far.verdicts()[-1].startswith("caution: scale factor 0.2, 7.2 outside 0.25–4 "
+                                        "for 2 of 4 records")
+    assert [r["factor_flagged"] for r in far.to_dict()["records"]] == [True, False, True,
+                                                                        False]
+    near = dataclasses.replace(th, factors=np.array([0.25, 4.0, 1.0, 1.0]))
+    assert not near.factors_flagged.any()
+    assert not any(v.startswith("caution") for v in near.verdicts())
+
+
 def test_cli_writes_the_time_history_block_only_with_out(case, tmp_path, capsys):
     path = case[0]
     records = tmp_path / "records"
@@ -134,6 +151,11 @@ def test_cli_writes_the_time_history_block_only_with_out(case, tmp_path, capsys)
         "elcentro_1940_IV_ELC9_180_PEER", "northridge_1994_newhall_360_RSN1044"]
     assert block["verdicts"][0].startswith("B1-B2: the code's 57.8 mm gap prevented")
     assert block["duration_s"] == SECONDS
+    # 6 s stops before El Centro's strong shaking ends (95 % of Arias at 26.1 s): said
+    ends = [m.arias_time(0.95) for m in list(bundled_suite())[:2]]
+    assert block["strong_shaking_end_s"] == pytest.approx(max(ends), rel=1e-12)
+    assert any(v.startswith("caution: the runs stop at 6 s") for v in block["verdicts"])
+    assert "caution: the runs stop at 6 s" in text
     # --duration is the time simulated: the runs equal simulate(..., duration=SECONDS)
     model = case[1]
     for r, motion in enumerate(list(bundled_suite())[:2]):  # the two records copied
@@ -146,7 +168,7 @@ def test_cli_writes_the_time_history_block_only_with_out(case, tmp_path, capsys)
     # without --out nothing is written
     before = sorted(p.name for p in tmp_path.iterdir())
     assert main(["code-check", str(path), *ASCE, "--suite", str(records), "--duration",
-                 "2"]) == 0
+                 "4"]) == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == before
 
 
@@ -154,6 +176,9 @@ def test_cli_writes_the_time_history_block_only_with_out(case, tmp_path, capsys)
     (["--design", "x.toml"], "--design: the target of the suite's scaling"),
     (["--duration", "3"], "--duration: the time simulated"),
     (["--time-history", "--duration", "0"], "--duration"),
+    # before the bundled Chi-Chi record's strong shaking begins (5 % of Arias at 32 s)
+    (["--time-history", "--duration", "0.001"],
+     "--duration: 0.001 s ends before the strong shaking of chichi_1999_TCU052_N_PEER begins"),
     (["--suite", "missing-folder"], "missing-folder"),
 ])
 def test_bad_input_is_one_line_and_writes_nothing(case, tmp_path, capsys, extra, message):

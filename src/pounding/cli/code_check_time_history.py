@@ -80,6 +80,10 @@ def read_inputs(suite: list[Path] | None, design: Path | None,
                          "that do, or convert it with `pounding record`") from None
     for s in records.skipped:
         console.print(f"skipped: {s.reason}", highlight=False, markup=False)
+    if duration is not None:
+        from pounding.studies.codes.time_history import check_duration
+
+        check_duration(duration, list(records), "--duration")
     return records, target
 
 
@@ -98,9 +102,12 @@ def beside(model: Any, check: Any, records: Any, target: Any, solver: dict[str, 
 
 
 def _print(th: Any) -> None:
+    from pounding.spectra.scaling import DEFAULT_LIMITS as LIMITS
+
     rows = []
     for r, name in enumerate(th.records):
-        rows.append([literal(name), f"{th.factors[r]:.4g}",
+        flag = f" (outside {LIMITS[0]:g}–{LIMITS[1]:g})" if th.factors_flagged[r] else ""
+        rows.append([literal(name), f"{th.factors[r]:.4g}{flag}",
                      "yes" if th.own.pounded()[r] else "no", str(int(th.own.impacts[r].sum())),
                      f"{1e-3 * th.own.peak_force[r].max():.0f}",
                      "yes" if th.at_code.pounded()[r] else "no",

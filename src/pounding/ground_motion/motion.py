@@ -144,6 +144,19 @@ class GroundMotion:
         """Ground displacement [m] at :attr:`time`: :meth:`velocity` integrated likewise."""
         return _cumtrapz(self.velocity(), self.dt)
 
+    def arias_time(self, fraction: float) -> float:
+        """The time [s] by which the record has built ``fraction`` (0–1) of its Arias
+        intensity: where the Husid curve ``∫₀ᵗ a² dt / ∫₀ᵀ a² dt`` (the trapezoidal rule on
+        the samples, linear between them) first reaches ``fraction``. ``arias_time(0.95) −
+        arias_time(0.05)`` is the significant duration D5-95 (Trifunac & Brady 1975). 0 for
+        a record of zeros."""
+        if not 0.0 <= fraction <= 1.0:
+            raise ValueError(f"fraction: must be within [0, 1] (got {fraction!r})")
+        husid = _cumtrapz(self.accel * self.accel, self.dt)
+        if husid[-1] <= 0.0:
+            return 0.0
+        return float(np.interp(fraction * husid[-1], husid, self.time))
+
     # ------------------------------------------------------------------ evaluation
     @overload
     def accel_at(self, t: float) -> float: ...

@@ -7,7 +7,7 @@ Layout::
 
     <out>/<stem>_01.AT2 ...   the records, in g (pounding record reads them back)
     <out>/parameters.csv      one row per record: its six parameters, PGA and length
-    <out>/spectrum.csv        period, the suite's median PSA, BA08's median and their ratio
+    <out>/spectrum.csv        damping, period, the suite's median PSA, BA08's median, ratio
 """
 
 from __future__ import annotations
@@ -25,6 +25,10 @@ MARK = "pounding synthesize: stochastic record"
 
 SPECTRUM_PERIODS = (0.05, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0)
 """Periods of ``spectrum.csv`` [s]."""
+
+SPECTRUM_DAMPING = 0.05
+"""Damping ratio of ``spectrum.csv``'s spectra (a fraction of critical; BA08's medians are
+5 %-damped), written in its ``damping`` column as the spectra's CSVs do."""
 
 PARAMETER_COLUMNS = ("record", "arias_m_s", "d595_s", "t_mid_s", "f_mid_hz",
                      "f_slope_hz_s", "zeta_f", "pga_g", "length_s")
@@ -74,7 +78,7 @@ def write_stochastic_suite(out: str | os.PathLike[str], magnitude: float, distan
     stem = f"M{magnitude:g}_R{distance:g}_V{vs30:g}_{mechanism}_seed{seed}"
     names = [f"{stem}_{i + 1:0{width}d}.AT2" for i in range(count)]
     t = np.array(SPECTRUM_PERIODS)
-    psa = np.array([response_spectrum(gm, t).psa[0] / G for gm in motions])
+    psa = np.array([response_spectrum(gm, t, SPECTRUM_DAMPING).psa[0] / G for gm in motions])
     median = np.exp(np.log(psa).mean(axis=0))
     ba08 = ba08_median(t, magnitude, distance, vs30, mechanism)
     rows: list[tuple[object, ...]] = []
@@ -93,6 +97,7 @@ def write_stochastic_suite(out: str | os.PathLike[str], magnitude: float, distan
                 f"f' {p['f_slope']:.4g} Hz/s, zeta_f {p['zeta_f']:.4g}")))
         write_text(tmp / "parameters.csv", csv_text(PARAMETER_COLUMNS, rows))
         write_text(tmp / "spectrum.csv", csv_text(
-            ("period_s", "median_psa_g", "ba08_median_g", "ratio"),
-            [(float(a), float(b), float(c), float(b / c)) for a, b, c in zip(t, median, ba08)]))
+            ("damping", "period_s", "median_psa_g", "ba08_median_g", "ratio"),
+            [(SPECTRUM_DAMPING, float(a), float(b), float(c), float(b / c))
+             for a, b, c in zip(t, median, ba08)]))
     return SuiteOutput(target, [target / n for n in names], t, median, ba08, rows)

@@ -38,10 +38,35 @@ from numpy.typing import NDArray
 
 from pounding.studies.codes.common import CodeCheck
 
-__all__ = ["CodeCheckBeside", "RunOutcomes", "TimeHistoryCheck", "code_spectrum",
-           "refuse_linked", "time_history_check"]
+__all__ = ["STRONG_SHAKING", "CodeCheckBeside", "RunOutcomes", "TimeHistoryCheck",
+           "check_duration", "code_spectrum", "refuse_linked", "time_history_check"]
 
 FloatArray = NDArray[np.float64]
+
+STRONG_SHAKING: tuple[float, float] = (0.05, 0.95)
+"""The strong shaking of a record: from where it has built the first to where it has built
+the second share of its Arias intensity (its significant duration D5-95, Trifunac & Brady
+1975). A simulated time must reach every record's start of it (:func:`check_duration`); one
+that stops before a record's end of it is said beside the verdicts
+(:meth:`TimeHistoryCheck.verdicts`)."""
+
+
+def check_duration(duration: float, motions: Sequence[Any], name: str = "duration") -> float:
+    """``duration`` [s] if positive and reaching every record's strong shaking (its first
+    :data:`STRONG_SHAKING` share of Arias intensity,
+    :meth:`~pounding.ground_motion.GroundMotion.arias_time`), else one line naming ``name``
+    (ValueError): a shorter run would judge the code's gap on a record before it shakes."""
+    from pounding.validation import positive
+
+    duration = positive(name, duration)
+    starts = [float(m.arias_time(STRONG_SHAKING[0])) for m in motions]
+    if starts and duration < max(starts):
+        i = int(np.argmax(starts))
+        raise ValueError(f"{name}: {duration:g} s ends before the strong shaking of "
+                         f"{motions[i].name} begins ({100 * STRONG_SHAKING[0]:g} % of its "
+                         f"Arias intensity at {starts[i]:.3g} s); give at least "
+                         f"{starts[i]:.3g} s, or leave it out to run each record whole")
+    return duration
 
 
 def code_spectrum(check: CodeCheck) -> Any:
@@ -160,6 +185,17 @@ class TimeHistoryCheck:
     at_code: RunOutcomes
     peak_closing: FloatArray
     duration: float | None = None
+    shaking_end: float = 0.0
+
+    @property
+    def factors_flagged(self) -> NDArray[np.bool_]:
+        """True for a record scaled by a factor outside
+        :data:`pounding.spectra.scaling.DEFAULT_LIMITS` (0.25–4, as ``pounding suite``
+        flags them): far from its own intensity, a weak stand-in for the code's shaking."""
+        from pounding.spectra.scaling import DEFAULT_LIMITS
+
+        lo, hi = DEFAULT_LIMITS
+        return np.asarray((self.factors < lo) | (self.factors > hi))
 
     def pair_levels(self, pair: str) -> list[int]:
         """The levels (indices) of ``pair``."""
@@ -199,6 +235,20 @@ class TimeHistoryCheck:
                 f"in {kept} of {n} record{'s' if n != 1 else ''}; the records' mean peak "
                 f"closing {1e3 * float(closing.mean()):.1f} mm (largest "
                 f"{1e3 * float(closing.max()):.1f} mm)")
+        if self.duration is not None and self.duration < self.shaking_end:
+            out.append(f"caution: the runs stop at {self.duration:g} s, before the strong "
+                       f"shaking of every record has ended ({100 * STRONG_SHAKING[1]:g} % of "
+                       f"Arias intensity at up to {self.shaking_end:.3g} s): the verdicts are "
+                       f"those of the first {self.duration:g} s")
+        flagged = self.factors_flagged
+        if flagged.any():
+            from pounding.spectra.scaling import DEFAULT_LIMITS
+
+            factors = sorted({f"{float(f):.3g}" for f in self.factors[flagged]})
+            out.append(f"caution: scale factor {', '.join(factors)} outside "
+                       f"{DEFAULT_LIMITS[0]:g}–{DEFAULT_LIMITS[1]:g} for {int(flagged.sum())} "
+                       f"of {n} records: records scaled that far from their own intensity are "
+                       "a weak stand-in for the code's shaking; choose records closer to it")
         return out
 
     def to_dict(self) -> dict[str, Any]:
@@ -210,6 +260,7 @@ class TimeHistoryCheck:
         for r, name in enumerate(self.records):
             records.append({
                 "record": name, "factor": float(self.factors[r]),
+                "factor_flagged": bool(self.factors_flagged[r]),
                 "own_gap": {"pounded": bool(self.own.pounded()[r]),
                             "impacts": int(self.own.impacts[r].sum()),
                             "peak_force_kN": float(1e-3 * self.own.peak_force[r].max())},
@@ -234,6 +285,7 @@ class TimeHistoryCheck:
             "units": "mm (gaps, closings), kN (forces), m (elevation)",
             "target": self.target, "scaling": self.scaling,
             "duration_s": self.duration,
+            "strong_shaking_end_s": self.shaking_end,
             "runs": "each record twice: (a) the model's own gaps, (b) every pair's gap at "
                     "the code's separation (the largest the code asks for at its levels)",
             "peak_closing": "the smallest gap that prevents pounding: max(u_left - u_right) "
@@ -318,7 +370,9 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         model file's ``[solver]``); its ``duration`` (the model file's record's) is not
         used.
     duration : float, optional
-        Time simulated under every record [s]; default each record's duration.
+        Time simulated under every record [s]; default each record's duration. It must
+        reach every record's strong shaking (:func:`check_duration`); stopping before its
+        end is said among the verdicts.
     progress : Progress, optional
         Called as ``progress(done, total)``: runs finished, and in all.
 
@@ -331,7 +385,8 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
     ValueError
         One line: a check of another model, a model with links between its buildings (the
         peak closing needs the buildings apart), an empty suite, a target the scaling
-        cannot use.
+        cannot use, a ``duration`` that ends before a record's strong shaking begins
+        (:func:`check_duration`).
     """
     from pounding.integrate import simulate
     from pounding.spectra.scaling import CODES as SUITE_RULES
@@ -370,9 +425,7 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
     code_model = _with_gaps(model, code_gaps)
 
     if duration is not None:
-        from pounding.validation import positive
-
-        duration = positive("duration", duration)
+        duration = check_duration(duration, motions)
     kwargs = {k: v for k, v in (solver or {}).items() if k != "duration"}
     kwargs["duration"] = duration
     same = tuple(code_gaps) == tuple(model.gaps)
@@ -414,4 +467,5 @@ def time_history_check(model: Any, check: CodeCheck, motions: Sequence[Any], *,
         records=tuple(m.name for m in motions), factors=np.asarray(scaled.factors),
         levels=tuple(row.contact for row in rows), pairs=tuple(row.pair for row in rows),
         elevation=np.array([row.elevation for row in rows]), required=required,
-        own=own, at_code=at_code, peak_closing=closing, duration=duration)
+        own=own, at_code=at_code, peak_closing=closing, duration=duration,
+        shaking_end=max(float(m.arias_time(STRONG_SHAKING[1])) for m in motions))
