@@ -194,3 +194,16 @@ def test_a_sweep_keeps_the_check(folders, tmp_path):
     assert Manifest(out).is_ours(out / "code_check.json")
     assert main(["report", str(out)]) == 0
     assert "57.78" in _section((out / "report.html").read_text(encoding="utf-8"))
+
+
+def test_the_parameters_row_reads_as_numbers_with_their_names():
+    """ASCE 7-22's ELF parameters (a building's own values nested) on one line: 4
+    significant digits, large ones whole, unset ones left out (not a Python repr)."""
+    from pounding.report.code_check import parameters_text
+
+    params = {"sds_g": 1.0, "s1_g": None, "procedure": "elf", "same_property": True,
+              "buildings": {"office": {"T_s": 0.9499999999999983, "C_s": 0.07894736842105277,
+                                       "C_s_by": "eq. 12.8-3", "W_kN": 34323.275}}}
+    assert parameters_text(params) == (
+        "sds_g = 1, procedure = elf, same_property = True, office (T_s = 0.95, "
+        "C_s = 0.07895, C_s_by = eq. 12.8-3, W_kN = 34,323)")

@@ -25,7 +25,7 @@ import numpy as np
 from pounding.report.format import Block, Note, PageSection, Table, kv_table
 
 __all__ = ["CODE_CHECK_FILE", "CodeCheckFile", "attach_code_check", "code_check_section",
-           "folder_code_check", "other_model", "read_code_check"]
+           "folder_code_check", "other_model", "parameters_text", "read_code_check"]
 
 CODE_CHECK_FILE = "code_check.json"
 """The file of a code check (:data:`pounding.studies.codes.CODE_CHECK_FILE`)."""
@@ -184,6 +184,28 @@ def _run_closing(run: Any, contacts: list[str]) -> dict[str, tuple[float, float,
     return out
 
 
+def parameters_text(params: dict[str, Any]) -> str:
+    """The check's parameters as one readable line: numbers to 4 significant digits (whole
+    ones from 10,000 up, with thousands separators), a
+    building's own values (ASCE 7-22's ELF: T, C_s, …) in brackets after its name, unset
+    ones (None) left out: ``sds_g = 1, …, office (T_s = 0.95, C_s = 0.07895, …)``."""
+    def value(v: Any) -> str:
+        if isinstance(v, bool) or not isinstance(v, float):
+            return str(v)
+        return f"{v:,.0f}" if abs(v) >= 1e4 else f"{v:.4g}"
+
+    parts = []
+    for k, v in params.items():
+        if v is None:
+            continue
+        if isinstance(v, dict):
+            parts += [f"{name} ({parameters_text(inner)})" if isinstance(inner, dict)
+                      else f"{name} = {value(inner)}" for name, inner in v.items()]
+        else:
+            parts.append(f"{k} = {value(v)}")
+    return ", ".join(parts)
+
+
 def code_check_section(check: CodeCheckFile, run: Any = None) -> PageSection:
     """The "Code check" section: the check's head (code, parameters, assumptions), its table
     level by level (required beside the gap, the clause), for a run (a
@@ -194,7 +216,7 @@ def code_check_section(check: CodeCheckFile, run: Any = None) -> PageSection:
     params: dict[str, Any] = d["parameters"] if isinstance(d.get("parameters"), dict) else {}
     head = [("code", d["title"]), ("displacement", str(d.get("displacement", "")))]
     if params:
-        head.append(("parameters", ", ".join(f"{k} = {v}" for k, v in params.items())))
+        head.append(("parameters", parameters_text(params)))
     if isinstance(d.get("model"), str):
         head.append(("model checked", d["model"]))
     head += [("assumes", str(a)) for a in d.get("assumptions", []) or []]
