@@ -247,7 +247,8 @@ def place_legend(ax: Axes, *args: Any, **kw: Any) -> Legend:
 
     The first of the nine places inside the axes (upper right, upper left, …) where no
     line and no marker of ``ax`` is under the legend; else beside the axes, on the right,
-    top-aligned.
+    top-aligned — on a figure without a layout engine the axes are then narrowed so that
+    the legend ends inside the page.
 
     Parameters
     ----------
@@ -285,8 +286,18 @@ def place_legend(ax: Axes, *args: Any, **kw: Any) -> Legend:
         if not any(_line_under(ln, box) for ln in lines):
             legend.set_loc(place)
             return legend
-    return ax.legend(*args, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
-                     **kw)
+    legend = ax.legend(*args, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                       borderaxespad=0.0, **kw)
+    if fig.get_layout_engine() is None:
+        # fixed margins (no layout engine to make room): narrow the axes until the legend
+        # beside them ends inside the page, with the margin the axes had
+        fig.draw_without_rendering()
+        over = legend.get_window_extent().x1 - (fig.bbox.x1 - pad)
+        if over > 0.0:
+            box = ax.get_position()
+            width = max(box.width - over / fig.bbox.width, 0.25 * box.width)
+            ax.set_position((box.x0, box.y0, width, box.height))
+    return legend
 
 
 def _line_under(line: Line2D, box: Bbox) -> bool:
