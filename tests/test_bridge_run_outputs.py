@@ -83,6 +83,22 @@ def test_run_prints_the_bridge_in_its_own_terms(printed) -> None:
     assert sum(s["impacts"] for s in [*bridge["joints"], *bridge["abutments"]]) == 20
 
 
+def test_summary_gives_a_deck_no_storey(printed) -> None:
+    """A deck stands on piers and bearings: summary.json lists no drift, drift ratio, storey
+    shear, ductility or residual drift for it at the top level (the deck's displacement
+    over its elevation read as a drift ratio, and a residual drift of 0 beside a pier
+    that kept one); the piers' are in the ``bridge`` block."""
+    _, out = printed
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    for key in ("peak_drift_m", "peak_drift_ratio", "peak_storey_shear_N"):
+        assert summary[key] == {}, key
+    for key in ("ductility_demand", "residual_drift_m"):
+        assert key not in summary, key
+    assert set(summary["peak_displacement_m"]) == {"B1F1", "B2F1"}  # the decks' own peaks
+    pier = summary["bridge"]["frames"][0]["piers"][0]
+    assert pier["ductility"] > 1 and abs(pier["residual_drift_m"]) > 0
+
+
 def test_run_writes_the_bridge_figures(printed) -> None:
     _, out = printed
     names = {p.name for p in out.iterdir()}

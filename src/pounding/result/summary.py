@@ -35,7 +35,8 @@ def summarize(r: Response) -> dict[str, Any]:
     building is null: its ``K`` has no storey stiffness (a building in plan with lateral
     elements has its shears, from them). The drift, drift ratio and shear under a base
     slab are not listed: that is the isolation bearing, in ``bearings`` (its law,
-    displacement and force). ``buildings`` repeats them building by building, storey by
+    displacement and force); nor are a bridge deck's (its piers' drifts, shears, ductility
+    and residual drift, and its bearings', are in ``bridge``, frame by frame). ``buildings`` repeats them building by building, storey by
     storey (floors by elevation), with the building's natural periods — the table an
     engineer reads first; a building in plan adds, storey by storey, the peaks along y,
     the rotation and the torque.
@@ -43,7 +44,9 @@ def summarize(r: Response) -> dict[str, Any]:
     pcf = r.peak_contact_force
     labels = r.model.dof_labels()
     floor = r.model.is_floor
-    storey = floor & ~r.is_bearing  # a base slab's "storey" is its bearing: bearing_summary
+    # a base slab's "storey" is its bearing (bearing_summary); a bridge deck stands on piers
+    # and bearings, whose drifts and forces are the bridge block's (bridge_summary)
+    storey = floor & ~r.is_bearing & (r.model.bridge is None)
     contacts = r.model.contacts
 
     def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
@@ -251,11 +254,13 @@ def bearing_summary(r: Response) -> dict[str, Any]:
 def inelastic_summary(r: Response) -> dict[str, Any]:
     out: dict[str, Any] = {}
     labels = r.model.dof_labels()
+    deck = r.model.bridge is not None  # (its piers' ductility and residual drift: bridge)
     if r.model.is_inelastic:
         out["hysteretic_energy_J"] = float(r.energy[-1, 6])
-        out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
-                                   if np.isfinite(v)}
-    if r.model.is_inelastic or r.model.yielding_frames:
+        if not deck:
+            out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
+                                       if np.isfinite(v)}
+    if (r.model.is_inelastic or r.model.yielding_frames) and not deck:
         out["residual_drift_m"] = {lb: float(v) for lb, v, bearing, floor in
                                    zip(labels, r.residual_drift, r.is_bearing,
                                        r.model.is_floor) if floor and not bearing}
