@@ -331,14 +331,14 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
         mb, cb, kb, rb = M[sl, sl], C[sl, sl], K[sl, sl], rm[sl]
         cb_links = None if c_links is None else c_links[sl, sl]
         linked = cb_links is not None and bool(np.any(cb_links != 0.0))
-        modes = (modal_propagator.modal_block(mb, cb, kb, rb, h)
+        forms = (modal_propagator.block_forms(mb, cb, kb, rb, h)
                  if 0 < least <= nb and ng == 1 and not linked else None)
-        if modes is not None:
+        if forms is not None:
             # classical damping: every form from the modes (modal_propagator)
-            phi, g0_b, g1_b, q_in = modal_propagator.dense_forms(modes, mb)
-            prop = Propagator(phi, g0_b[:, None], g1_b[:, None])
+            prop = Propagator(forms.phi, forms.gamma0[:, None], forms.gamma1[:, None])
+            q_in = forms.q_in
             modal[b] = 1
-            tables.append((p, modal_propagator.mode_table(modes, mb)))
+            tables.append((p, forms.table))
         else:
             prop = compute_propagator(mb, cb, kb, rb, h)
             q_in = step_input_form(mb, cb, kb, rb, h)
