@@ -89,12 +89,17 @@ def classical_modes(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray[n
     The modes solve ``M^{-½} K M^{-½} v = ω² v`` (a symmetric eigenproblem), ``Ψ = M^{-½} V``.
     """
     m = np.diag(M)
+    if not all(np.all(np.isfinite(a)) for a in (M, C, K)):
+        return None  # (the dense route says where the numbers overflow)
     if (np.count_nonzero(M - np.diag(m)) or not np.all(m > 0.0)
             or not _symmetric(K, tol) or not _symmetric(C, tol)):
         return None
     s = 1.0 / np.sqrt(m)
     ks = s[:, None] * K * s[None, :]
-    omega2, v = np.linalg.eigh(0.5 * (ks + ks.T))
+    try:
+        _, v = np.linalg.eigh(0.5 * (ks + ks.T))
+    except np.linalg.LinAlgError:
+        return None
     psi = s[:, None] * v
     omega2 = _rayleigh_quotients(psi, K, m)
     cm = psi.T @ C @ psi
