@@ -50,6 +50,7 @@ from pounding.integrate.layout import (
     W_E_STOREY,
     W_PEAK_MARGIN,
 )
+from pounding.integrate.modal_steps import modal_block_step, modal_commit, modal_enter
 from pounding.integrate.peaks import (
     acc_peak_between,
     track_exact_step,
@@ -121,7 +122,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     """
     dt = run.dt
     ag = run.ag
-    blk, fops, g0, g1, faa, frows, dev_aa = fs
+    blk, fops, g0, g1, faa, frows, dev_aa, fmodal, fmodes = fs
     bw = fl.bw
     k_band = fl.k_band
     c_band = fl.c_band
@@ -156,6 +157,19 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     for b in range(nblk):
         if frows[b] > 2 * (blk[b + 1] - blk[b]) + 2:
             links_dissipate = True
+    # blocks stepped in modal coordinates (modal_steps): their modal state, unless the
+    # last call of this run left it at grid point k (the state then unchanged since), from
+    # the floors' state
+    qm = sc.modal
+    any_modal = False
+    for b in range(nblk):
+        if fmodal[b] != 0:
+            any_modal = True
+    if any_modal and qm[0, n] != k:
+        for b in range(nblk):
+            if fmodal[b] != 0:
+                modal_enter(blk[b], blk[b + 1] - blk[b], x, fmodes, qm)
+    qm[0, n] = -1.0
     e_prev = e_out[k, E_KINETIC] + e_out[k, E_STRAIN]
     wsum = 0.0  # contact work does not change while every gap is open
     for c in range(nc):
@@ -171,7 +185,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
         lin_i0 = 0.0
         lin_i1 = 0.0
         e_links = 0.0
-        if nblk == n:
+        if nblk == n and not any_modal:
             # every floor a block of its own (a row of SDOF oscillators): no block loop
             for i in range(n):
                 w0, w1 = one_floor_step(i, n, x, x1, fops, g0, g1, a0, a1)
@@ -181,6 +195,11 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
             for b in range(nblk):
                 p = blk[b]
                 nb = blk[b + 1] - p
+                if fmodal[b] != 0:
+                    w0, w1 = modal_block_step(p, nb, fmodes, qm, x1, a0, a1)
+                    lin_i0 += w0
+                    lin_i1 += w1
+                    continue
                 if nb == 1:
                     w0, w1 = one_floor_step(p, n, x, x1, fops, g0, g1, a0, a1)
                     lin_i0 += w0
@@ -257,6 +276,10 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                     acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out, acc_out, fl,
                                      pk)
             return k
+        if any_modal:  # (the step is taken)
+            for b in range(nblk):
+                if fmodal[b] != 0:
+                    modal_commit(blk[b], blk[b + 1] - blk[b], qm)
         # input energy over the step: an exact quadratic form
         e_step = (a0 * lin_i0 + a1 * lin_i1
                   + (faa[0, 0, 0] * a0 * a0 + faa[1, 0, 0] * a0 * a1 + faa[2, 0, 0] * a1 * a1))
@@ -389,4 +412,6 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     ws_f[W_E_INPUT] = e_in
     ws_f[W_E_DAMP] = e_d
     ws_f[W_E_DEVICE] = e_dev
+    if any_modal:
+        qm[0, n] = k  # (the modal state is that of grid point k: the next call goes on)
     return k

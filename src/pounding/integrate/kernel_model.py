@@ -317,7 +317,8 @@ signature."""
 NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), np.zeros((2, 4)),
                                               np.zeros((2, 1)), np.zeros((2, 1)),
                                               np.zeros((3, 1, 1)), np.array([4], dtype=np.int64),
-                                              np.zeros((3, 1, 1))))
+                                              np.zeros((3, 1, 1)), np.zeros(1, dtype=np.int64),
+                                              np.zeros((1, 1))))
 """The exact-step arguments of an RK-stepped run, which the kernel never reads: read-only
 like a real :class:`FreeStep`'s arrays, so that numba compiles the kernel for one signature
 only (not a second one, 37–56 s on 2 cores, for yielding or very large models)."""

@@ -151,6 +151,10 @@ class KernelScratch(NamedTuple):
     #: the ground components at the grid step's ends, their slope, at the RK step's end and
     #: now, (G_ROWS, G) (:data:`pounding.integrate.rhs.G_A0` …)
     gnd: np.ndarray
+    #: the modal state of the exact steps' modal blocks at a step's start and end, their
+    #: sums, and the grid point the first is at (−1: none) (QM_ROWS, N + 1)
+    #: (:mod:`pounding.integrate.modal_steps`)
+    modal: np.ndarray
 
 
 def kernel_scratch(km: KernelModel, m: int) -> KernelScratch:
@@ -168,4 +172,13 @@ def kernel_scratch(km: KernelModel, m: int) -> KernelScratch:
                          np.zeros(2 * n),
                          gaps[0], gaps[1], gaps[2], gaps[3],
                          floors[0], floors[1], floors[2], floors[3], floors[4], floors[5],
-                         np.zeros((G_ROWS, km.floors.r.shape[1])))
+                         np.zeros((G_ROWS, km.floors.r.shape[1])), modal_scratch(n))
+
+
+def modal_scratch(n: int) -> np.ndarray:
+    """:attr:`KernelScratch.modal` of N floors: no modal state yet (grid point −1)."""
+    from pounding.integrate.modal_steps import QM_ROWS
+
+    qm = np.zeros((QM_ROWS, n + 1))
+    qm[0, n] = -1.0
+    return qm
