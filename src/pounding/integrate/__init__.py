@@ -57,6 +57,8 @@ from pounding.integrate.kernel_model import (
     floor_below,
     half_bandwidth,
     kernel_model,
+    maxwell_exact_rows,
+    maxwell_free_step,
     peak_margin,
     remembered_for,
 )
@@ -361,7 +363,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         if fs is None:
             with warnings.catch_warnings():  # (an overflow is said below, in one line)
                 warnings.simplefilter("ignore", RuntimeWarning)
-                fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step, km.C_links)
+                fs = (free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step, km.C_links)
+                      if maxwell_exact_rows(km) is None else maxwell_free_step(km, step))
             if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
                 raise IntegrationError(_nonfinite_text(model, motion, None, step))
             km.free_steps[step] = fs

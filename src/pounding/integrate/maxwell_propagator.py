@@ -21,10 +21,10 @@ C_m⁻¹ z dt`` (plus ``∫ u̇ᵀ C_links u̇ dt`` of the links folded into C,
 strain energy ``½ uᵀ K u + ½ Σ k z²`` and the buildings' viscous work inferred as the rest,
 the balance closes exactly.
 
-This module holds the operators and a plain stepper over a record (:func:`free_record`),
-written from them alone: what the compiled kernel's exact steps are to do for such a block
-(they do not yet: a model with a Maxwell link is stepped adaptively throughout,
-:func:`pounding.integrate.exact_links.rows_allow_exact`), and the check of it.
+This module holds the operators, the kernel's exact step of such a structure
+(:func:`compute_free_step_maxwell`, read by :func:`pounding.integrate.exact_maxwell.
+maxwell_block_step`) and a plain stepper over a record (:func:`free_record`), written from
+the operators alone, which checks them.
 """
 
 from __future__ import annotations
@@ -35,9 +35,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pounding.integrate.propagator import (
+    FreeStep,
     Propagator,
     _columns,
     _van_loan_integral,
+    compute_free_step,
     independent_blocks,
     state_matrix,
 )
@@ -239,3 +241,81 @@ def free_record(M: FloatArray, C: FloatArray, K: FloatArray, r: FloatArray,
     # the absolute acceleration ü + R a_g = −M⁻¹ (K u + C u̇ + L F)
     acc = -(u @ K.T + v @ C.T + force @ inc.T) * m_inv
     return FreeRecord(u, v, acc, z, force, e)
+
+
+def compute_free_step_maxwell(M: FloatArray, C: FloatArray, K: FloatArray, r: FloatArray,
+                              h: float, c_links: FloatArray | None, links: MaxwellLinks,
+                              link_rows: NDArray[np.int64], z_state: NDArray[np.int64],
+                              n_state: int) -> FreeStep:
+    """The :class:`~pounding.integrate.propagator.FreeStep` of a structure with linear
+    Maxwell links for a grid step ``h`` [s], one ground component: the blocks the links tie
+    (:func:`extended_blocks`); a block without one as :func:`~pounding.integrate.
+    propagator.compute_free_step` makes it; a block with ``m_b`` of them has the local state
+    ``[u_b, u̇_b, z_b]`` (``s_b = 2 n_b + m_b``) and ``2 s_b + 4`` numbers a column: Φ's
+    column, the input form's two linear terms, then the links' dissipation form
+    (:func:`extended_step_forms`: the Maxwell dashpots' and those folded into C) and its two
+    linear terms; its ``a a`` terms in ``dev_aa``. The operator's rows are the kernel's state
+    ``[u, u̇, z]`` (``n_state`` entries): ``z_state[l]`` the index there of link l's z,
+    ``link_rows[l]`` its element row (``FreeStep.maxwell``)."""
+    n = M.shape[0]
+    rm = _columns(r)
+    if rm.shape[1] != 1:
+        raise ValueError("compute_free_step_maxwell: one ground component")
+    blk = extended_blocks(M, C, K, links)
+    nblk = blk.size - 1
+    gamma0 = np.zeros((n_state, 1))
+    gamma1 = np.zeros((n_state, 1))
+    aa = np.zeros((3, 1, 1))
+    dev_aa = np.zeros((3, 1, 1))
+    rows = np.zeros(nblk, dtype=np.int64)
+    mx = np.zeros((nblk, 1 + max(links.n_links, 1)), dtype=np.int64)
+    parts = []
+    for b in range(nblk):
+        p, q = int(blk[b]), int(blk[b + 1])
+        nb = q - p
+        sl = slice(p, q)
+        mb, cb, kb, rb = M[sl, sl], C[sl, sl], K[sl, sl], rm[sl]
+        cl = None if c_links is None or not np.any(c_links[sl, sl]) else c_links[sl, sl]
+        own = np.flatnonzero((links.lo >= p) & (links.lo < q))
+        if own.size == 0:
+            sub = compute_free_step(mb, cb, kb, rb, h, cl)
+            if sub.blk.tolist() != [0, nb]:
+                raise AssertionError("compute_free_step_maxwell: a block split further")
+            glob = np.r_[p:q, n + p : n + q]
+            gamma0[glob] = sub.gamma0
+            gamma1[glob] = sub.gamma1
+            aa += sub.aa
+            dev_aa += sub.dev_aa
+            rows[b] = sub.rows[0]
+            parts.append((glob, sub.ops[:, : sub.rows[0]]))
+            continue
+        local = MaxwellLinks(links.lo[own] - p, links.hi[own] - p, links.k[own], links.c[own])
+        sb = 2 * nb + own.size
+        glob = np.r_[p:q, n + p : n + q, z_state[own]]
+        prop = compute_extended_propagator(mb, cb, kb, rb, local, h)
+        q_in, q_links = extended_step_forms(mb, cb, kb, rb, local, h, cl)
+        x_, a0_, a1_ = slice(0, sb), sb, sb + 1
+        op = np.zeros((sb, 2 * sb + 4))
+        op[:, :sb] = prop.phi.T
+        # the cross terms appear twice in yᵀQy: 2 Q[x, a] is the linear coefficient
+        op[:, sb] = 2.0 * q_in[x_, a0_]
+        op[:, sb + 1] = 2.0 * q_in[x_, a1_]
+        op[:, sb + 2 : 2 * sb + 2] = q_links[x_, x_]
+        op[:, 2 * sb + 2] = 2.0 * q_links[x_, a0_]
+        op[:, 2 * sb + 3] = 2.0 * q_links[x_, a1_]
+        aa[:, 0, 0] += (q_in[a0_, a0_], 2.0 * q_in[a0_, a1_], q_in[a1_, a1_])
+        dev_aa[:, 0, 0] += (q_links[a0_, a0_], 2.0 * q_links[a0_, a1_], q_links[a1_, a1_])
+        gamma0[glob] = prop.gamma0
+        gamma1[glob] = prop.gamma1
+        rows[b] = op.shape[1]
+        mx[b, 0] = own.size
+        mx[b, 1 : 1 + own.size] = link_rows[own]
+        parts.append((glob, op))
+    width = max(op.shape[1] for _, op in parts)
+    ops = np.zeros((n_state, width))
+    for glob, op in parts:
+        ops[glob, : op.shape[1]] = op
+    fs = FreeStep(blk, ops, gamma0, gamma1, aa, rows, dev_aa, mx)
+    for a in fs:
+        a.setflags(write=False)
+    return fs

@@ -152,6 +152,11 @@ class FreeStep(NamedTuple):
     buildings' damping and the links. ``rows[b]``: the numbers of block b's columns the
     kernel's sweep reads: ``2 n_b + 2`` (the state and the first ground component's input
     terms), or the whole column, ``4 n_b + 4 G``, for a block with link dashpots.
+
+    ``maxwell`` (n_blocks, W): ``maxwell[b, 0]`` linear Maxwell links in block b, whose
+    state then holds their spring deformations too (``[u_b, u̇_b, z_b]``, the element rows
+    ``maxwell[b, 1:1 + m_b]`` in that order; :func:`pounding.integrate.maxwell_propagator.
+    compute_free_step_maxwell`); zeros (one column) without.
     """
 
     blk: NDArray[np.int64]
@@ -161,6 +166,7 @@ class FreeStep(NamedTuple):
     aa: NDArray[np.float64]
     rows: NDArray[np.int64]
     dev_aa: NDArray[np.float64]
+    maxwell: NDArray[np.int64]
 
 
 def independent_blocks(*mats: NDArray[np.float64]) -> NDArray[np.int64]:
@@ -339,7 +345,8 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     ops = np.zeros((2 * n, width))
     for glob, op in parts:
         ops[glob, : op.shape[1]] = op
-    return FreeStep(blk, ops, gamma0, gamma1, aa, rows, dev_aa)
+    return FreeStep(blk, ops, gamma0, gamma1, aa, rows, dev_aa,
+                    np.zeros((blk.size - 1, 1), dtype=np.int64))
 
 
 _FREE_CACHE: dict[bytes, FreeStep] = {}
