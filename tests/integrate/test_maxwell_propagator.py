@@ -131,6 +131,8 @@ def test_only_linear_maxwell_rows_are_taken():
     code = np.array([MAXWELL, MAXWELL, KELVIN, VISCOUS])
     par = np.array([[1e7, 5e5, 1.0], [1e7, 5e5, 0.5], [1e7, 5e5, 0.0], [5e5, 1.0, 0.0]])
     assert linear_maxwell_rows(code, par).tolist() == [True, False, False, False]
+    # a model without element rows has none
+    assert linear_maxwell_rows(code[:0], np.zeros((0, 9))).size == 0
     links = maxwell_links(np.array([0, 0, 0, 0]), np.array([1, 1, 1, 1]), code, par)
     assert links.n_links == 1 and links.k.tolist() == [1e7] and links.c.tolist() == [5e5]
     with pytest.raises(ValueError, match="ground"):

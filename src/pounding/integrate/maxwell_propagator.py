@@ -77,8 +77,8 @@ def linear_maxwell_rows(code: NDArray[np.int64], params: FloatArray) -> NDArray[
     from pounding.devices.laws import MAXWELL
 
     code = np.asarray(code)
-    params = np.asarray(params, dtype=float).reshape(code.size, -1)
-    if params.shape[1] < 3:
+    params = np.asarray(params, dtype=float)
+    if code.size == 0 or params.ndim != 2 or params.shape[1] < 3:
         return np.zeros(code.size, dtype=bool)
     return (code == MAXWELL) & (params[:, 2] == 1.0)
 
