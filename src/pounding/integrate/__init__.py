@@ -295,9 +295,10 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
         beyond (and beyond ``EXACT_LINKED_BLOCK_MAX`` (120) floors tied by linear links).
         Linear links without internal variable (Kelvin, a dashpot with α = 1) are part of
-        the linear structure stepped exactly, and slack cable restrainers exert no force
-        there; a model with yielding storeys or other links between buildings is always
-        stepped by RK (``"exact"`` is refused).
+        the linear structure stepped exactly, as are linear Maxwell links (α = 1; their
+        springs' deformations in the exact step's state, under one ground component), and
+        slack cable restrainers exert no force there; a model with yielding storeys or
+        other links between buildings is always stepped by RK (``"exact"`` is refused).
     max_rk_steps : int, optional
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step plus 10⁵); a run that needs more stops with an :class:`IntegrationError`.

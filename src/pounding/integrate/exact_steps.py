@@ -8,7 +8,9 @@ gaps are open). The input energy over the step is an exact quadratic form in
 ``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same sweep over the operator's
 columns as Φ x (the first ground component; the others after, :func:`ground_rest_step`);
 the viscous work of the step is the input work less the change of kinetic and strain
-energy, exactly.
+energy, exactly. A block tied by linear Maxwell links carries their springs' deformations in
+its state (:mod:`pounding.integrate.exact_maxwell`): their forces join the floors'
+accelerations, their springs' energy the strain energy, their dashpots' the links' energy.
 
 After each step every gap is checked for closing at the step end and inside it, from the
 quintic Hermite of its ``(δ, δ̇, δ̈)`` at both ends (:func:`pounding.integrate.events.

@@ -148,8 +148,9 @@ def exact_stepping(km: KernelModel, mode: str, yielding_frames: bool) -> bool:
     allowed = km.exact_allowed and not yielding_frames
     if not allowed and mode == "exact":
         raise ValueError("free_stepping: 'exact' needs linear storeys and linear links; this "
-                         "model has yielding storeys, nonlinear links between buildings or "
-                         "frames with plastic hinges (use 'auto' or 'rk')")
+                         "model has yielding storeys, nonlinear links between buildings (or "
+                         "Maxwell links beside restrainers or under several ground "
+                         "components) or frames with plastic hinges (use 'auto' or 'rk')")
     linked = max(km.linked_block, maxwell_linked_block(km)) if allowed else km.linked_block
     return choose_free_stepping(mode, km.n, km.floors.bw, linked) and allowed
 
