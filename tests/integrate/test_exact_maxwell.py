@@ -117,3 +117,21 @@ def test_a_nonlinear_maxwell_link_keeps_the_adaptive_steps():
     assert res.stats.rk_steps >= res.time.size - 1
     with pytest.raises(ValueError, match="free_stepping"):
         simulate(model, gm, free_stepping="exact")
+
+
+def test_maxwell_links_beside_a_restrainer_keep_the_adaptive_steps():
+    """A restrainer's slack test in the exact steps reads the floors' accelerations without
+    the Maxwell links' forces: such a model is stepped adaptively (and "exact" refused)."""
+    from pounding.integrate.kernel_model import kernel_model, maxwell_exact_rows
+
+    blds = [ShearBuilding.sdof(2e5, period=0.5, damping_ratio=0.05),
+            ShearBuilding.sdof(3e5, period=1.0, damping_ratio=0.05)]
+    model = PoundingModel(blds, [10.0], KV, devices=[
+        Link(("B1F1", "B2F1"), "maxwell", c=5e5, k=1e7),
+        Link(("B1F1", "B2F1"), "restrainer", k=5e6, slack=0.05)])
+    km = kernel_model(model)
+    assert maxwell_exact_rows(km) is not None and not km.exact_allowed
+    res = simulate(model, el_centro().trimmed(0.5))
+    assert res.stats.rk_steps >= res.time.size - 1
+    with pytest.raises(ValueError, match="restrainers"):
+        simulate(model, el_centro().trimmed(0.5), free_stepping="exact")

@@ -36,6 +36,9 @@ def maxwell_block_step(b, p, nb, n, mxb, el, x, x1, acc, fops, g0, g1, a0, a1):
     input-energy terms of the (one) ground component and the energy its links' dashpots
     dissipate over the step, less the ground's own terms (``dev_aa``)."""
     mb = mxb[b, 0]
+    if nb == 2 and mb == 1:
+        return two_floor_maxwell_step(p, n, 2 * n + el.z_index[mxb[b, 1]], x, x1, fops, g0,
+                                      g1, a0, a1)
     sb = 2 * nb + mb
     rows = 2 * sb + 4
     for ir in range(nb):
@@ -71,6 +74,42 @@ def maxwell_block_step(b, p, nb, n, mxb, el, x, x1, acc, fops, g0, g1, a0, a1):
     return acc[sb], acc[sb + 1], e
 
 
+@njit(**INLINE)
+def _row5(fops, ir, p, n, gi, u0, u1, v0, v1, z):
+    return (fops[p, ir] * u0 + fops[p + 1, ir] * u1 + fops[n + p, ir] * v0
+            + fops[n + p + 1, ir] * v1 + fops[gi, ir] * z)
+
+
+@njit(**INLINE)
+def two_floor_maxwell_step(p, n, gi, x, x1, fops, g0, g1, a0, a1):
+    """:func:`maxwell_block_step` of a block of two floors ``p``, ``p + 1`` tied by one
+    linear Maxwell link whose z is state entry ``gi`` (a linked pair of one-storey
+    buildings), written out: its fourteen rows, each a sum of five products."""
+    u0 = x[p]
+    u1 = x[p + 1]
+    v0 = x[n + p]
+    v1 = x[n + p + 1]
+    z = x[gi]
+    x1[p] = g0[p, 0] * a0 + g1[p, 0] * a1 + _row5(fops, 0, p, n, gi, u0, u1, v0, v1, z)
+    x1[p + 1] = (g0[p + 1, 0] * a0 + g1[p + 1, 0] * a1
+                 + _row5(fops, 1, p, n, gi, u0, u1, v0, v1, z))
+    x1[n + p] = (g0[n + p, 0] * a0 + g1[n + p, 0] * a1
+                 + _row5(fops, 2, p, n, gi, u0, u1, v0, v1, z))
+    x1[n + p + 1] = (g0[n + p + 1, 0] * a0 + g1[n + p + 1, 0] * a1
+                     + _row5(fops, 3, p, n, gi, u0, u1, v0, v1, z))
+    x1[gi] = g0[gi, 0] * a0 + g1[gi, 0] * a1 + _row5(fops, 4, p, n, gi, u0, u1, v0, v1, z)
+    w0 = _row5(fops, 5, p, n, gi, u0, u1, v0, v1, z)
+    w1 = _row5(fops, 6, p, n, gi, u0, u1, v0, v1, z)
+    e = (u0 * _row5(fops, 7, p, n, gi, u0, u1, v0, v1, z)
+         + u1 * _row5(fops, 8, p, n, gi, u0, u1, v0, v1, z)
+         + v0 * _row5(fops, 9, p, n, gi, u0, u1, v0, v1, z)
+         + v1 * _row5(fops, 10, p, n, gi, u0, u1, v0, v1, z)
+         + z * _row5(fops, 11, p, n, gi, u0, u1, v0, v1, z))
+    e += _row5(fops, 12, p, n, gi, u0, u1, v0, v1, z) * a0
+    e += _row5(fops, 13, p, n, gi, u0, u1, v0, v1, z) * a1
+    return w0, w1, e
+
+
 @njit(**NRT_FREE)
 def maxwell_floor_force(j, y, n, el):
     """``(L F)_j`` [N]: the linear Maxwell links' forces on floor j at state y, as they
@@ -83,7 +122,7 @@ def maxwell_floor_force(j, y, n, el):
     return s
 
 
-@njit(**NRT_FREE)
+@njit(**INLINE)
 def maxwell_outputs(y, n, el, lin, vs_out, o):
     """At the state y after an exact step (output row o): adds the linear Maxwell links'
     forces to ``lin[1]`` (``C u̇ + L F``, which with ``lin[0] = K u`` gives the floors'
@@ -112,7 +151,7 @@ def maxwell_stored(y, n, el):
     return e
 
 
-@njit(**NRT_FREE)
+@njit(**INLINE)
 def maxwell_copy_z(x, x1, n, el):
     """``x ← x1`` for the linear Maxwell links' spring deformations."""
     for q in range(el.lo.shape[0]):

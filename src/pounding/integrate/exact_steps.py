@@ -266,8 +266,8 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                     touch = True
                     break
         # a slack restrainer whose slack could be taken up: the same (its force, zero
-        # while slack, is not in the exact step)
-        if not touch:
+        # while slack, is not in the exact step; none beside Maxwell links)
+        if not touch and not has_mx:
             for q in range(ns):
                 if s_par[q, EL_FOLDED] == 0.0 and restrainer_taut_possible(q, x, x1, n, k, ag,
                                                                             fl, el, dt,

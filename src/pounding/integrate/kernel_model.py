@@ -453,17 +453,14 @@ def maxwell_exact_rows(km: KernelModel) -> np.ndarray | None:
 
 def maxwell_free_step(km: KernelModel, step: float) -> FreeStep:
     """The exact step [s] of a model with linear Maxwell links (:func:`maxwell_exact_rows`):
-    :func:`pounding.integrate.maxwell_propagator.compute_free_step_maxwell`."""
-    from pounding.integrate.maxwell_propagator import (
-        compute_free_step_maxwell,
-        maxwell_links,
-    )
+    :func:`pounding.integrate.maxwell_propagator.free_step_maxwell`."""
+    from pounding.integrate.maxwell_propagator import free_step_maxwell, maxwell_links
 
     mx = maxwell_exact_rows(km)
     assert mx is not None
     el = km.elements
     links = maxwell_links(el.lo, el.hi, el.code, el.params[:, :3])
-    return compute_free_step_maxwell(np.diag(km.floors.m_diag), km.C, km.K, km.floors.r, step,
+    return free_step_maxwell(np.diag(km.floors.m_diag), km.C, km.K, km.floors.r, step,
                                      km.C_links, links, np.flatnonzero(mx),
                                      2 * km.n + el.z_index[mx], 2 * km.n + km.nz)
 

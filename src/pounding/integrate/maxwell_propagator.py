@@ -38,6 +38,7 @@ from pounding.integrate.propagator import (
     FreeStep,
     Propagator,
     _columns,
+    _remembered,
     _van_loan_integral,
     compute_free_step,
     independent_blocks,
@@ -319,3 +320,22 @@ def compute_free_step_maxwell(M: FloatArray, C: FloatArray, K: FloatArray, r: Fl
     for a in fs:
         a.setflags(write=False)
     return fs
+
+
+_FREE_CACHE: dict[bytes, FreeStep] = {}
+
+
+def free_step_maxwell(M: FloatArray, C: FloatArray, K: FloatArray, r: FloatArray, h: float,
+                      c_links: FloatArray | None, links: MaxwellLinks,
+                      link_rows: NDArray[np.int64], z_state: NDArray[np.int64],
+                      n_state: int) -> FreeStep:
+    """:func:`compute_free_step_maxwell`, remembered by the numbers it is made of (as
+    :func:`pounding.integrate.propagator.free_step`): a model built afresh from the same
+    numbers reuses its matrix exponentials."""
+    extra = np.concatenate([
+        np.ravel(c_links) if c_links is not None else np.zeros(0), links.lo, links.hi,
+        links.k, links.c, link_rows, z_state, [n_state, float(c_links is None)]]).astype(float)
+    return _remembered(_FREE_CACHE,
+                       lambda M_, C_, K_, r_, h_: compute_free_step_maxwell(
+                           M_, C_, K_, r_, h_, c_links, links, link_rows, z_state, n_state),
+                       M, C, K, r, h, extra=extra)
