@@ -174,8 +174,9 @@ def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
     the machine's speed (nor does the answer: the kernel's state carries over).
 
     Estimated costs (2026-11-27, 2 cores under load; measured 0.5–2× these): an exact grid
-    step ``0.4 Σ_b (2 n_b)² + 300 N + 100`` ns for blocks of ``n_b`` floors, N floors in
-    all (the propagator's sweep, the outputs and peak tests); an RK step
+    step ``0.4 Σ_b (2 n_b + m_b)² + 300 N + 100`` ns for blocks of ``n_b`` floors and
+    ``m_b`` linear Maxwell links (whose springs' deformations are in the block's state),
+    N floors in all (the propagator's sweep, the outputs and peak tests); an RK step
     ``2000 + 140 N (2 bw + 1) + 100 n_c + 200 n_s`` ns (six right-hand sides of the banded
     K and C of half-bandwidth bw, n_c contacts, n_s yielding storeys and links).
     """
@@ -185,7 +186,7 @@ def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
     if not exact:
         # every grid step takes an RK step at least: the RK steps bound the call
         return rk_per_call, rk_per_call
-    blocks = np.diff(fs.blk)
+    blocks = np.diff(fs.blk) + 0.5 * fs.maxwell[:, 0]  # (2 n_b + m_b: the block's state)
     exact_ns = 0.4 * float(np.sum((2.0 * blocks) ** 2)) + 300.0 * n + 100.0
     return max(1, int(CALL_WORK_NS / exact_ns)), rk_per_call
 
