@@ -113,11 +113,11 @@ def ground_quadratic(qa, ag, k):
 @njit(**NRT_FREE)
 def rows_allow_exact(y, n, el):
     """True if every element row lets the structure be linear at state y: a link folded
-    into K and C, a linear Maxwell link (:mod:`pounding.integrate.exact_maxwell`; the model
-    allows exact steps with one only if it has no restrainer,
-    :attr:`pounding.integrate.kernel_model.KernelModel.exact_allowed`), or a cable restrainer
-    that is slack (its elastic elongation ``e = d − s₀
-    − z ≤ 0``: no force; :func:`pounding.devices.laws.restrainer_kinks`). A restrainer's
+    into K and C, a linear Maxwell link (:mod:`pounding.integrate.exact_maxwell`; a model
+    has exact steps with one only if it has no restrainer,
+    :attr:`pounding.integrate.kernel_model.KernelModel.exact_allowed`), or a cable
+    restrainer that is slack (its elastic elongation ``e = d − s₀ − z ≤ 0``: no force;
+    :func:`pounding.devices.laws.restrainer_kinks`). A restrainer's
     slack taken up is then an event like a gap closing: the exact steps hand the step to
     the adaptive integrator (:func:`free_run`), which returns to them once every contact is
     open and every restrainer slack again."""

@@ -156,7 +156,9 @@ class FreeStep(NamedTuple):
     ``maxwell`` (n_blocks, W): ``maxwell[b, 0]`` linear Maxwell links in block b, whose
     state then holds their spring deformations too (``[u_b, u̇_b, z_b]``, the element rows
     ``maxwell[b, 1:1 + m_b]`` in that order; :func:`pounding.integrate.maxwell_propagator.
-    compute_free_step_maxwell`); zeros (one column) without.
+    compute_free_step_maxwell`: ``ops``, ``gamma0`` and ``gamma1`` then have a row for
+    every entry of the kernel's state ``[u, u̇, z]``, and such a block's columns their own
+    layout); zeros (one column) without.
     """
 
     blk: NDArray[np.int64]
