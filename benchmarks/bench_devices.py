@@ -7,6 +7,8 @@ Run from the repository root, in a virtualenv holding both ``pounding`` and ``op
     python benchmarks/bench_devices.py                     # everything, ~3 min
     python benchmarks/bench_devices.py --repeat 5 --sections sdof,cost
     python benchmarks/bench_devices.py --kinds viscous,fvd --no-reference
+    python benchmarks/bench_devices.py --sections cost --kinds viscous,maxwell --no-reference \
+        --json /tmp/devices.json          # the links' price as figures (benchmarks/run_all.py)
 
 Models (El Centro 1940 as bundled, 39.99 s at 0.01 s, output / analysis step 1 ms):
 
@@ -58,8 +60,11 @@ shear   The same for the two 10-storey buildings, comparing the two tools with e
         (``--shear-reference`` adds the SciPy reference, minutes a case).
 cost    pounding's own price of the links: the same models without links (stepped exactly
         between contacts) against the runs with links (linear dashpots folded into K and C
-        and stepped exactly between contacts too; fluid dampers and Maxwell links stepped
-        adaptively throughout), and OpenSees' with and without links beside it.
+        and linear Maxwell links, their springs' deformations in the exact step's state,
+        stepped exactly between contacts too; fluid dampers and Maxwell links with a fluid
+        dashpot stepped adaptively throughout), and OpenSees' with and without links beside
+        it. With ``--json PATH`` its figures (link / no link, goal ≤ 1.5× for the linear
+        links) are written as one JSON object (the convention of ``benchmarks/run_all.py``).
 
 "Whole run" is, for both tools, everything from plain numbers to the compared measures:
 pounding builds its ShearBuildings, Links and PoundingModel afresh, runs ``simulate`` and
@@ -73,6 +78,7 @@ machine's load average is printed at the start and the end, and every timing wit
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import sys
 import time
@@ -405,6 +411,8 @@ class Ctx:
     shear_reference: bool
     n_steps: int
     cases: dict[tuple[str, str, bool], Case] = field(default_factory=dict)
+    figures: list[dict[str, Any]] = field(default_factory=list)
+    """The cost section's figures, for ``--json``."""
 
 
 def get_case(ctx: Ctx, key: str, kind: Kind | None, contact: bool) -> Case:
@@ -564,8 +572,8 @@ def section_shear(ctx: Ctx) -> None:
 
 def section_cost(ctx: Ctx) -> None:
     header("The price of the links: the same models without links (pounding: exact steps "
-           "between contacts) and with them (linear dashpots: exact steps between contacts; "
-           "fluid dampers and Maxwell links: adaptive steps throughout)")
+           "between contacts) and with them (linear dashpots and linear Maxwell links: exact "
+           "steps between contacts; fluid dampers: adaptive steps throughout)")
     rows = []
     for key in ctx.bases:
         for contact in (True, False):
@@ -588,6 +596,7 @@ def section_cost(ctx: Ctx) -> None:
             for kind in ctx.kinds[key]:
                 c = get_case(ctx, key, kind, contact)
                 o, t = min(c.ours), min(c.theirs)
+                ctx.figures.append(cost_figure(key, contact, kind, c, plain))
                 rows.append(["", "", kind.name, spread(c.ours, 1e3, ".2f"),
                              f"{1e6 * o / ctx.n_steps:.3f}", f"{o / p_ours:.1f}",
                              spread(c.theirs, 1.0, ".3f"), f"{1e6 * t / ctx.n_steps:.2f}",
@@ -600,12 +609,35 @@ def section_cost(ctx: Ctx) -> None:
           "OpenSees / pounding, bests. Without links pounding takes exact steps (a matrix "
           "exponential propagator) between contacts and RK steps only through them; so it does "
           "with linear dashpot links, folded into K and C (their linked buildings one block of "
-          "the propagator, the links' dissipated energy one more exact quadratic form a step); "
-          "with fluid dampers and Maxwell links it takes RK steps everywhere (at least one "
+          "the propagator, the links' dissipated energy one more exact quadratic form a step), "
+          "and with linear Maxwell links (their springs' deformations in the block's state); "
+          "with fluid dampers it takes RK steps everywhere (at least one "
           "Dormand–Prince step per output step; each link a row of the element loop; a fluid "
           "damper's rate reversal located as an event, where a step ends; its force is not "
           "smooth at ḋ = 0, hence its rejected steps). 'no links, RK': the model without links, stepped by RK "
           "throughout (free_stepping='rk'): the stepper's share of the price.")
+
+
+LINEAR_KINDS = ("viscous", "maxwell")
+"""The link kinds whose law is linear (the dashpot α = 1): the issue's goal, a price ≤ 1.5×."""
+
+
+def cost_figure(key: str, contact: bool, kind: Kind, linked: Case, plain: Case) -> dict[str, Any]:
+    """One figure of the cost section for ``--json``: pounding with the links against the
+    same model without them, bests of the same run."""
+    o, p = min(linked.ours), min(plain.ours)
+    linear = kind.name in LINEAR_KINDS
+    n_links = len(linked.links)
+    return {"what": f"{MODELS[key].stem}, {'pounding' if contact else 'no contact'}, "
+                    f"{n_links} {kind.name} link{'s' if n_links > 1 else ''}",
+            "pounding": o, "peer": "the same model without links (pounding)",
+            "peer_time": p, "ratio": o / p, "ratio_meaning": "with links / without",
+            "goal": "<= 1.5x" if linear else None,
+            "met": (o / p <= 1.5) if linear else None,
+            "spread": (f"best of {len(linked.ours)} with links ({1e3 * o:.2f}-"
+                       f"{1e3 * max(linked.ours):.2f} ms), {len(plain.ours)} without "
+                       f"({1e3 * p:.2f}-{1e3 * max(plain.ours):.2f} ms); whole runs"),
+            "unit_note": f"pounding's steps with links: {linked.m_ours.stats}"}
 
 
 SECTIONS: dict[str, Callable[[Ctx], None]] = {
@@ -638,6 +670,9 @@ def main(argv: list[str] | None = None) -> int:
                     help="skip simulate_reference for the SDOF pair (~10 s a case)")
     ap.add_argument("--shear-reference", action="store_true",
                     help="also simulate_reference for the 10-storey pair (minutes a case)")
+    ap.add_argument("--json", type=Path, default=None, metavar="PATH",
+                    help="write the cost section's figures to PATH as JSON (the convention "
+                         "of benchmarks/run_all.py)")
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
@@ -670,10 +705,24 @@ def main(argv: list[str] | None = None) -> int:
                  args.dt, 0.5)
     print(f"(warm-up, untimed: pounding's first run {t1 - t0:.2f} s, OpenSees' "
           f"{time.perf_counter() - t1:.2f} s)")
+    load_start = load()
     for s in wanted:
         SECTIONS[s](ctx)
     print()
     print(f"at the end: {load()}")
+    if args.json is not None:
+        argv_used = sys.argv[1:] if argv is None else argv
+        args.json.write_text(json.dumps({
+            "benchmark": "bench_devices",
+            "section": "Links between buildings",
+            "command": " ".join(["python", "benchmarks/bench_devices.py", *argv_used]),
+            "figures": ctx.figures,
+            "notes": [f"El Centro {t_end:g} s at {1e3 * args.dt:g} ms; at the start: "
+                      f"{load_start}; at the end: {load()}",
+                      "linear links (dashpot α = 1, Kelvin, Maxwell with α = 1) are stepped "
+                      "exactly between impacts; fluid dampers adaptively throughout"]},
+            indent=1) + "\n")
+        print(f"figures written to {args.json}")
     return 0
 
 

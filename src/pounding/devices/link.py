@@ -6,8 +6,10 @@ A :class:`Link` joins floor ``floors[0]`` of one building to floor ``floors[1]``
 :mod:`pounding.devices.laws`. A linear law without internal variable (``kelvin``, ``viscous``
 with α = 1) joins the structure's stiffness and damping, which the kernel steps exactly
 between impacts (:func:`pounding.integrate.kernel_model.fold_linear_links`); the kernel
-integrates any other as an element row beside the yielding storeys: a restrainer stepped
-exactly while it is slack, a fluid damper or a Maxwell link adaptively throughout.
+integrates any other as an element row beside the yielding storeys: a linear Maxwell link
+(α = 1) stepped exactly between impacts with its spring's deformation in the exact step's
+state (:mod:`pounding.integrate.exact_maxwell`), a restrainer stepped exactly while it is
+slack, a fluid damper or a Maxwell link with α ≠ 1 adaptively throughout.
 """
 
 from __future__ import annotations

@@ -57,6 +57,8 @@ from pounding.integrate.kernel_model import (
     floor_below,
     half_bandwidth,
     kernel_model,
+    maxwell_exact_rows,
+    maxwell_free_step,
     peak_margin,
     remembered_for,
 )
@@ -172,8 +174,9 @@ def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
     the machine's speed (nor does the answer: the kernel's state carries over).
 
     Estimated costs (2026-11-27, 2 cores under load; measured 0.5–2× these): an exact grid
-    step ``0.4 Σ_b (2 n_b)² + 300 N + 100`` ns for blocks of ``n_b`` floors, N floors in
-    all (the propagator's sweep, the outputs and peak tests); an RK step
+    step ``0.4 Σ_b (2 n_b + m_b)² + 300 N + 100`` ns for blocks of ``n_b`` floors and
+    ``m_b`` linear Maxwell links (whose springs' deformations are in the block's state),
+    N floors in all (the propagator's sweep, the outputs and peak tests); an RK step
     ``2000 + 140 N (2 bw + 1) + 100 n_c + 200 n_s`` ns (six right-hand sides of the banded
     K and C of half-bandwidth bw, n_c contacts, n_s yielding storeys and links).
     """
@@ -183,7 +186,7 @@ def call_sizes(km: KernelModel, exact: bool, fs: FreeStep) -> tuple[int, int]:
     if not exact:
         # every grid step takes an RK step at least: the RK steps bound the call
         return rk_per_call, rk_per_call
-    blocks = np.diff(fs.blk)
+    blocks = np.diff(fs.blk) + 0.5 * fs.maxwell[:, 0]  # (2 n_b + m_b: the block's state)
     exact_ns = 0.4 * float(np.sum((2.0 * blocks) ** 2)) + 300.0 * n + 100.0
     return max(1, int(CALL_WORK_NS / exact_ns)), rk_per_call
 
@@ -293,9 +296,10 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         ``EXACT_FREE_MAX_DOF`` (400) floors in all, where it was measured the faster, RK
         beyond (and beyond ``EXACT_LINKED_BLOCK_MAX`` (120) floors tied by linear links).
         Linear links without internal variable (Kelvin, a dashpot with α = 1) are part of
-        the linear structure stepped exactly, and slack cable restrainers exert no force
-        there; a model with yielding storeys or other links between buildings is always
-        stepped by RK (``"exact"`` is refused).
+        the linear structure stepped exactly, as are linear Maxwell links (α = 1; their
+        springs' deformations in the exact step's state, under one ground component), and
+        slack cable restrainers exert no force there; a model with yielding storeys or
+        other links between buildings is always stepped by RK (``"exact"`` is refused).
     max_rk_steps : int, optional
         Most adaptive steps the run may take (default :func:`default_step_budget`: 100 a
         grid step plus 10⁵); a run that needs more stops with an :class:`IntegrationError`.
@@ -361,7 +365,8 @@ def simulate(model: PoundingModel, motion: GroundMotion | GroundMotionComponents
         if fs is None:
             with warnings.catch_warnings():  # (an overflow is said below, in one line)
                 warnings.simplefilter("ignore", RuntimeWarning)
-                fs = free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step, km.C_links)
+                fs = (free_step(np.diag(fl.m_diag), km.C, km.K, fl.r, step, km.C_links)
+                      if maxwell_exact_rows(km) is None else maxwell_free_step(km, step))
             if not all(np.all(np.isfinite(a)) for a in (fs.ops, fs.gamma0, fs.gamma1, fs.aa)):
                 raise IntegrationError(_nonfinite_text(model, motion, None, step))
             km.free_steps[step] = fs

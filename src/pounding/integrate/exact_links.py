@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from numba import njit
 
-from pounding.devices.laws import RESTRAINER
+from pounding.devices.laws import MAXWELL, RESTRAINER
 from pounding.integrate.events import touch_possible
 from pounding.integrate.layout import EL_FOLDED
 from pounding.integrate.rhs import INLINE, NRT_FREE, ground_rest
@@ -113,8 +113,11 @@ def ground_quadratic(qa, ag, k):
 @njit(**NRT_FREE)
 def rows_allow_exact(y, n, el):
     """True if every element row lets the structure be linear at state y: a link folded
-    into K and C, or a cable restrainer that is slack (its elastic elongation ``e = d − s₀
-    − z ≤ 0``: no force; :func:`pounding.devices.laws.restrainer_kinks`). A restrainer's
+    into K and C, a linear Maxwell link (:mod:`pounding.integrate.exact_maxwell`; a model
+    has exact steps with one only if it has no restrainer,
+    :attr:`pounding.integrate.kernel_model.KernelModel.exact_allowed`), or a cable
+    restrainer that is slack (its elastic elongation ``e = d − s₀ − z ≤ 0``: no force;
+    :func:`pounding.devices.laws.restrainer_kinks`). A restrainer's
     slack taken up is then an event like a gap closing: the exact steps hand the step to
     the adaptive integrator (:func:`free_run`), which returns to them once every contact is
     open and every restrainer slack again."""
@@ -122,6 +125,8 @@ def rows_allow_exact(y, n, el):
     for s in range(el.lo.shape[0]):
         if par[s, EL_FOLDED] != 0.0:
             continue
+        if el.code[s] == MAXWELL and par[s, 2] == 1.0:
+            continue  # (a linear Maxwell link: its spring in the exact steps' state)
         if el.code[s] != RESTRAINER:
             return False
         lo = el.lo[s]

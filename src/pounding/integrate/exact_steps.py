@@ -8,7 +8,9 @@ gaps are open). The input energy over the step is an exact quadratic form in
 ``(x, a_k, a_{k+1})`` (Van Loan integral), evaluated in the same sweep over the operator's
 columns as Φ x (the first ground component; the others after, :func:`ground_rest_step`);
 the viscous work of the step is the input work less the change of kinetic and strain
-energy, exactly.
+energy, exactly. A block tied by linear Maxwell links carries their springs' deformations in
+its state (:mod:`pounding.integrate.exact_maxwell`): their forces join the floors'
+accelerations, their springs' energy the strain energy, their dashpots' the links' energy.
 
 After each step every gap is checked for closing at the step end and inside it, from the
 quintic Hermite of its ``(δ, δ̇, δ̈)`` at both ends (:func:`pounding.integrate.events.
@@ -31,6 +33,16 @@ from pounding.integrate.exact_links import (
     ground_quadratic,
     restrainer_taut_possible,
     two_floor_link_step,
+)
+from pounding.integrate.exact_maxwell import (
+    acc_peak_between_maxwell,
+    is_linear_maxwell,
+    maxwell_block_step,
+    maxwell_copy_z,
+    maxwell_floor_force,
+    maxwell_outputs,
+    maxwell_stored,
+    track_exact_step_maxwell,
 )
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
@@ -122,7 +134,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     """
     dt = run.dt
     ag = run.ag
-    blk, fops, g0, g1, faa, frows, dev_aa, fmodal, fmodes = fs
+    blk, fops, g0, g1, faa, frows, dev_aa, fmodal, fmodes, mxb = fs
     bw = fl.bw
     k_band = fl.k_band
     c_band = fl.c_band
@@ -154,9 +166,15 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
     ns = s_lo.shape[0]
     # blocks whose columns hold the dissipation form of links' dashpots folded into C
     links_dissipate = False
+    # blocks whose state holds linear Maxwell links' spring deformations
+    # (pounding.integrate.exact_maxwell): their force and springs' energy in the outputs
+    has_mx = False
     for b in range(nblk):
         if frows[b] > 2 * (blk[b + 1] - blk[b]) + 2:
             links_dissipate = True
+        if mxb[b, 0] > 0:
+            has_mx = True
+    mx_stored = maxwell_stored(x, n, el) if has_mx else 0.0
     # blocks stepped in modal coordinates (modal_steps): their modal state, unless the
     # last call of this run left it at grid point k (the state then unchanged since), from
     # the floors' state
@@ -207,6 +225,13 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                     continue
                 nb2 = 2 * nb
                 rows = frows[b]
+                if has_mx and mxb[b, 0] > 0:
+                    w0, w1, e_b = maxwell_block_step(b, p, nb, n, mxb, el, x, x1, acc, fops,
+                                                     g0, g1, a0, a1)
+                    lin_i0 += w0
+                    lin_i1 += w1
+                    e_links += e_b
+                    continue
                 if nb == 2 and rows == 12 and ng == 1:
                     # (a linked pair of one-storey buildings: written out)
                     w0, w1, e_b = two_floor_link_step(p, n, x, x1, fops, g0, g1, a0, a1)
@@ -253,12 +278,15 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                         j = cdof[c, q]
                         q0 += cw[c, q] * floor_rel_acc(j, x, ag, k, n, fl)
                         q1 += cw[c, q] * floor_rel_acc(j, x1, ag, k + 1, n, fl)
+                        if has_mx:
+                            q0 -= cw[c, q] * maxwell_floor_force(j, x, n, el) * m_inv[j]
+                            q1 -= cw[c, q] * maxwell_floor_force(j, x1, n, el) * m_inv[j]
                 if touch_possible(gd[c], gr[c], q0, d1, r1, q1, dt, graze_tol):
                     touch = True
                     break
         # a slack restrainer whose slack could be taken up: the same (its force, zero
-        # while slack, is not in the exact step)
-        if not touch:
+        # while slack, is not in the exact step; none beside Maxwell links)
+        if not touch and not has_mx:
             for q in range(ns):
                 if s_par[q, EL_FOLDED] == 0.0 and restrainer_taut_possible(q, x, x1, n, k, ag,
                                                                             fl, el, dt,
@@ -269,12 +297,16 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
             ws_f[W_E_INPUT] = e_in
             ws_f[W_E_DAMP] = e_d
             ws_f[W_E_DEVICE] = e_dev
-            if bw != 0 and k - 1 >= k_entry:
+            if (bw != 0 or has_mx) and k - 1 >= k_entry:
                 # the last exact step's acceleration peaks, whose test needed the sample
                 # after it
                 for i in range(n):
-                    acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out, acc_out, fl,
-                                     pk)
+                    if has_mx:
+                        acc_peak_between_maxwell(i, k - 1, k, (k - 1) * dt, dt, ag, v_out,
+                                                 acc_out, vs_out, fl, el, pk)
+                    else:
+                        acc_peak_between(i, k - 1, k, (k - 1) * dt, dt, ag, v_out, acc_out,
+                                         fl, pk)
             return k
         if any_modal:  # (the step is taken)
             for b in range(nblk):
@@ -297,7 +329,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
         keep = 1.0 - ws_f[W_PEAK_MARGIN]
         ek = 0.0
         es = 0.0
-        if bw == 0:
+        if bw == 0 and not has_mx:
             # no floor coupled to another (a row of SDOF oscillators, each a building of
             # one storey): floor by floor, without the generic band loops, and every value
             # at the step's start recomputed from its outputs rather than kept in scratch
@@ -327,6 +359,7 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                                          r, kk, cc, mi, pk)
         else:
             band_products(k_band, c_band, x1, n, bw, lin)
+            mx_stored1 = maxwell_outputs(x1, n, el, lin, vs_out, o) if has_mx else 0.0
             for i in range(n):
                 u = x1[i]
                 v = x1[n + i]
@@ -360,16 +393,29 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
             if anyhit > 0.0:
                 for i in range(n):
                     if acc[i] != 0.0:
-                        track_exact_step(t0, dt, i, k, k_entry, fl, x, x1, ag, v_out,
-                                         acc_out, pk)
+                        if has_mx:
+                            track_exact_step_maxwell(t0, dt, i, k, k_entry, fl, el, x, x1, ag,
+                                                     v_out, acc_out, vs_out, pk)
+                        else:
+                            track_exact_step(t0, dt, i, k, k_entry, fl, x, x1, ag, v_out,
+                                             acc_out, pk)
             for i in range(2 * n):
                 x[i] = x1[i]
+            if has_mx:
+                # the links' springs: their energy is strain energy, and their work since the
+                # step's start (the dashpot's share apart) is the links' too
+                maxwell_copy_z(x, x1, n, el)
+                es += mx_stored1
+                e_dev += mx_stored1 - mx_stored
+                mx_stored = mx_stored1
         if ns > 0:
             # the links' forces: those folded into K and C their law's ``k d + c ḋ`` at the
             # step's end (as the adaptive steps commit it), any other row its committed
             # force (a slack restrainer's zero); written out here, where a call cost the
             # SDOF pair's linked exact steps more than the rest of them
             for q in range(ns):
+                if has_mx and is_linear_maxwell(el, q):
+                    continue  # (its force k z written with the accelerations)
                 if s_par[q, EL_FOLDED] != 0.0:
                     lo = s_lo[q]
                     hi = s_hi[q]
@@ -407,7 +453,9 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
         e_out[o, E_CONTACT_STORED] = 0.0
         e_out[o, E_HYSTERETIC] = e_h
         if ns > 0:
-            e_out[o, E_DEVICE] = e_dev  # (a slack restrainer's cables hold nothing)
+            # (a slack restrainer's cables hold nothing; a Maxwell link's spring holds the
+            # part of its work that is not yet dissipated)
+            e_out[o, E_DEVICE] = e_dev - mx_stored if has_mx else e_dev
         k += 1
     ws_f[W_E_INPUT] = e_in
     ws_f[W_E_DAMP] = e_d

@@ -107,10 +107,11 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
         contact row (n_c, W: any width), gaps [m], law codes and constants) and its element
         rows (yielding storeys and links: DOF below, −1 the ground, and above, law code and
         constants, index of the row's ``z`` among the extra states, −1 none; ``exact`` may
-        be true only if every row is a linear link folded into K and C or a cable
-        restrainer, whose slack taken up hands the step to RK as a gap closing does).
+        be true only if every row is a linear link folded into K and C, a linear Maxwell
+        link (its z in the exact step's state, ``fs.maxwell``) or a cable restrainer, whose
+        slack taken up hands the step to RK as a gap closing does).
     fs : :class:`pounding.integrate.propagator.FreeStep`
-        The exact step over dt (blocks, block operators, Γ0 and Γ1 (2N, G), input-energy
+        The exact step over dt (blocks, block operators, Γ0 and Γ1 (2N + n_z, G), input-energy
         coefficients of the products of the ground components (3, G, G); unused unless
         ``exact``).
     st : :class:`pounding.integrate.workspace.KernelState`

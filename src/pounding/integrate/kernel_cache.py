@@ -37,7 +37,7 @@ KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.layout", "pounding.integrate.peaks",
     "pounding.integrate.rhs", "pounding.integrate.kernel_model",
     "pounding.integrate.workspace", "pounding.integrate.propagator",
-    "pounding.integrate.modal_steps",
+    "pounding.integrate.modal_steps", "pounding.integrate.exact_maxwell",
     "pounding.integrate.frame_outputs",
     "pounding.contact.codes", "pounding.contact.dispatch", "pounding.contact.kernels",
     "pounding.hysteresis.base", "pounding.hysteresis.dispatch",

@@ -148,9 +148,11 @@ def exact_stepping(km: KernelModel, mode: str, yielding_frames: bool) -> bool:
     allowed = km.exact_allowed and not yielding_frames
     if not allowed and mode == "exact":
         raise ValueError("free_stepping: 'exact' needs linear storeys and linear links; this "
-                         "model has yielding storeys, nonlinear links between buildings or "
-                         "frames with plastic hinges (use 'auto' or 'rk')")
-    return choose_free_stepping(mode, km.n, km.floors.bw, km.linked_block) and allowed
+                         "model has yielding storeys, nonlinear links between buildings (or "
+                         "Maxwell links beside restrainers or under several ground "
+                         "components) or frames with plastic hinges (use 'auto' or 'rk')")
+    linked = max(km.linked_block, maxwell_linked_block(km)) if allowed else km.linked_block
+    return choose_free_stepping(mode, km.n, km.floors.bw, linked) and allowed
 
 
 class Floors(NamedTuple):
@@ -270,12 +272,20 @@ class KernelModel(NamedTuple):
     def exact_allowed(self) -> bool:
         """True if the model's element rows let contact-free steps be exact: none, links
         folded into K and C (:func:`fold_linear_links`) and cable restrainers, stepped
-        exactly while slack (:func:`pounding.integrate.exact_links.rows_allow_exact`)."""
+        exactly while slack (:func:`pounding.integrate.exact_links.rows_allow_exact`), or
+        links folded into K and C and linear Maxwell links between floors under one ground
+        component, whose springs the exact steps carry in their state
+        (:func:`maxwell_exact_rows`)."""
         from pounding.devices.laws import RESTRAINER
 
         el = self.elements
-        return not self.adaptive_only and bool(
-            np.all((el.params[:, EL_FOLDED] != 0.0) | (el.code == RESTRAINER)))
+        if self.adaptive_only:
+            return False
+        folded = el.params[:, EL_FOLDED] != 0.0
+        if bool(np.all(folded | (el.code == RESTRAINER))):
+            return True
+        mx = maxwell_exact_rows(self)
+        return mx is not None and bool(np.all(folded | mx))
 
     @property
     def floors(self) -> Floors:
@@ -318,7 +328,8 @@ NO_FREE_STEP = _read_only_free_step(FreeStep(np.array([0, 1], dtype=np.int64), n
                                               np.zeros((2, 1)), np.zeros((2, 1)),
                                               np.zeros((3, 1, 1)), np.array([4], dtype=np.int64),
                                               np.zeros((3, 1, 1)), np.zeros(1, dtype=np.int64),
-                                              np.zeros((1, 1))))
+                                              np.zeros((1, 1)),
+                                              np.zeros((1, 1), dtype=np.int64)))
 """The exact-step arguments of an RK-stepped run, which the kernel never reads: read-only
 like a real :class:`FreeStep`'s arrays, so that numba compiles the kernel for one signature
 only (not a second one, 37–56 s on 2 cores, for yielding or very large models)."""
@@ -424,6 +435,51 @@ def _assemble_structure(model: PoundingModel) -> KernelModel:
                        arrays=KernelArrays(floors, no_contacts, elements, NO_HINGES),
                        free_steps={}, periods_checked=set(), C_links=c_links,
                        linked_block=largest_linked_block(K, C, c_links))
+
+
+def maxwell_exact_rows(km: KernelModel) -> np.ndarray | None:
+    """The element rows that are linear Maxwell links the exact steps can carry
+    (:func:`pounding.integrate.maxwell_propagator.linear_maxwell_rows`, each between two
+    floors, the model under one ground component), as a mask; None if the model has none or
+    one it cannot (then every row that is not folded into K and C keeps the model
+    adaptive)."""
+    from pounding.integrate.maxwell_propagator import linear_maxwell_rows
+
+    el = km.elements
+    mx = linear_maxwell_rows(el.code, el.params[:, :3])
+    if not mx.any() or km.floors.r.shape[1] != 1 or np.any(el.lo[mx] < 0):
+        return None
+    return mx
+
+
+def maxwell_free_step(km: KernelModel, step: float) -> FreeStep:
+    """The exact step [s] of a model with linear Maxwell links (:func:`maxwell_exact_rows`):
+    :func:`pounding.integrate.maxwell_propagator.free_step_maxwell`."""
+    from pounding.integrate.maxwell_propagator import free_step_maxwell, maxwell_links
+
+    mx = maxwell_exact_rows(km)
+    assert mx is not None
+    el = km.elements
+    links = maxwell_links(el.lo, el.hi, el.code, el.params[:, :3])
+    return free_step_maxwell(np.diag(km.floors.m_diag), km.C, km.K, km.floors.r, step,
+                                     km.C_links, links, np.flatnonzero(mx),
+                                     2 * km.n + el.z_index[mx], 2 * km.n + km.nz)
+
+
+def maxwell_linked_block(km: KernelModel) -> int:
+    """Floors of the largest block that linear Maxwell links tie (0: none), for
+    :data:`EXACT_LINKED_BLOCK_MAX`: each holds a dissipation form as a block of folded
+    links' dashpots does."""
+    mx = maxwell_exact_rows(km)
+    if mx is None:
+        return 0
+    from pounding.integrate.maxwell_propagator import extended_blocks, maxwell_links
+
+    el = km.elements
+    links = maxwell_links(el.lo, el.hi, el.code, el.params[:, :3])
+    blk = extended_blocks(np.diag(km.floors.m_diag), km.C, km.K, links)
+    return max((int(q - p) for p, q in zip(blk[:-1], blk[1:])
+                if np.any((links.lo >= p) & (links.lo < q))), default=0)
 
 
 def largest_linked_block(K: np.ndarray, C: np.ndarray, c_links: np.ndarray | None) -> int:

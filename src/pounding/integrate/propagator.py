@@ -161,6 +161,13 @@ class FreeStep(NamedTuple):
     ``gamma0``, ``gamma1`` and ``aa`` hold the same step as dense operators, built from the
     modes (equal to the exponential's to round-off). ``modes`` is (N, width), zero in the
     rows of the other blocks.
+
+    ``maxwell`` (n_blocks, W): ``maxwell[b, 0]`` linear Maxwell links in block b, whose
+    state then holds their spring deformations too (``[u_b, u̇_b, z_b]``, the element rows
+    ``maxwell[b, 1:1 + m_b]`` in that order; :func:`pounding.integrate.maxwell_propagator.
+    compute_free_step_maxwell`: ``ops``, ``gamma0`` and ``gamma1`` then have a row for
+    every entry of the kernel's state ``[u, u̇, z]``, and such a block's columns their own
+    layout); zeros (one column) without.
     """
 
     blk: NDArray[np.int64]
@@ -172,6 +179,7 @@ class FreeStep(NamedTuple):
     dev_aa: NDArray[np.float64]
     modal: NDArray[np.int64]
     modes: NDArray[np.float64]
+    maxwell: NDArray[np.int64]
 
 
 def independent_blocks(*mats: NDArray[np.float64]) -> NDArray[np.int64]:
@@ -372,7 +380,8 @@ def compute_free_step(M: NDArray[np.float64], C: NDArray[np.float64], K: NDArray
     modes_all = np.zeros((n if tables else 1, max((t.shape[1] for _, t in tables), default=1)))
     for p, t in tables:
         modes_all[p : p + t.shape[0], : t.shape[1]] = t
-    return FreeStep(blk, ops, gamma0, gamma1, aa, rows, dev_aa, modal, modes_all)
+    return FreeStep(blk, ops, gamma0, gamma1, aa, rows, dev_aa, modal, modes_all,
+                    np.zeros((blk.size - 1, 1), dtype=np.int64))
 
 
 _FREE_CACHE: dict[bytes, FreeStep] = {}
