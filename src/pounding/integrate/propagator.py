@@ -70,7 +70,8 @@ def _remembered(cache: dict[bytes, Arrays],
                 extra: NDArray[np.float64] | None = None) -> Arrays:
     """``compute(M, C, K, r, h)`` looked up in ``cache`` by the arrays' bytes (and those of
     ``extra``, another array the computation reads) and ``h``; the result's arrays are made
-    read-only; the oldest entry goes beyond ``_CACHE_SIZE``."""
+    read-only; the oldest entry goes beyond ``_CACHE_SIZE``. Computed with one BLAS
+    thread."""
     arrays = (M, C, K, r) if extra is None else (M, C, K, r, extra)
     key = hashlib.sha1(b"".join(np.ascontiguousarray(a, dtype=float).tobytes()
                                 for a in arrays)
@@ -78,7 +79,13 @@ def _remembered(cache: dict[bytes, Arrays],
                        ).digest()
     hit = cache.get(key)
     if hit is None:
-        hit = compute(M, C, K, r, h)
+        from threadpoolctl import threadpool_limits
+
+        # one BLAS thread: the products are small, and a second OpenBLAS thread waiting for
+        # a core on a busy machine made each small expm 2–8 ms instead of 0.03–0.2 ms
+        # (2026-11-28, load 4); results the same
+        with threadpool_limits(limits=1, user_api="blas"):
+            hit = compute(M, C, K, r, h)
         for a in hit:
             a.setflags(write=False)
         if len(cache) >= _CACHE_SIZE:
