@@ -86,6 +86,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
+import _figures  # noqa: E402
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from _environment import load, parse_list, print_environment  # noqa: E402
@@ -499,6 +500,11 @@ def _section_model_cases(ctx: Ctx, key: str, title: str, with_ref: bool) -> None
                 tools.append(("reference", ref, None))
             best, med, txt = _ratio(case)
             ratios.append((case.label, best, med))
+            _figures.figure(f"{MODELS[key].stem}, {case.label}: whole run", min(case.ours),
+                            _figures.opensees_name(), min(case.theirs),
+                            ratio_meaning="OpenSees / pounding",
+                            spread=f"best of {len(case.ours)} / {len(case.theirs)}; medians "
+                                   f"{med:.1f}x")
             rows += _compare_rows(case, ref, tools, ctx.n_steps, txt)
             # worst agreement, OpenSees (ViscousDamper / Viscous) and pounding, against the
             # reference if there is one, else OpenSees against pounding
@@ -593,6 +599,17 @@ def section_cost(ctx: Ctx) -> None:
                              spread(c.theirs, 1.0, ".3f"), f"{1e6 * t / ctx.n_steps:.2f}",
                              f"{t / p_os:.2f}", f"{t / o:.1f}",
                              f"{c.m_ours.n_impacts}/{c.m_theirs.n_impacts}", c.m_ours.stats])
+                linear = kind.name in ("viscous", "maxwell")  # a dashpot of alpha 1, Maxwell
+                where = f"{MODELS[key].stem}, {'contact' if contact else 'no contact'}"
+                _figures.figure(f"{where}: {kind.name} links, the price of the links", o,
+                                "the same model without links", p_ours,
+                                ratio_meaning="pounding / peer",
+                                goal="<= 1.5x" if linear else None,
+                                spread=f"best of {len(c.ours)} / {len(plain.ours)}")
+                _figures.figure(f"{where}: {kind.name} links, whole run", o,
+                                _figures.opensees_name(), t, ratio_meaning="OpenSees / pounding",
+                                spread=f"best of {len(c.ours)} / {len(c.theirs)}; OpenSees "
+                                       f"pays {t / p_os:.2f}x for the same links")
     table(rows, ["model", "contact", "links", "pounding ms best (worst) xN", "µs/step",
                  "x no links", "OpenSees s best (worst) xN", "µs/step", "x no links",
                  "OS/ours", "impacts ours/OS", "pounding's steps"])
@@ -641,7 +658,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_devices", "Links between buildings")
     wanted = parse_list(ap, args.sections, SECTIONS)
     kinds = parse_list(ap, args.kinds, KINDS, "link kind")
 
@@ -674,6 +693,7 @@ def main(argv: list[str] | None = None) -> int:
         SECTIONS[s](ctx)
     print()
     print(f"at the end: {load()}")
+    _figures.write(args.json)
     return 0
 
 
