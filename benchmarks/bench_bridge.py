@@ -68,9 +68,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures
 import opensees_bridge as ob
 import opensees_models as osm
-import _figures
 from _environment import load, parse_list, print_environment
 from _memory import keep_freed_memory
 

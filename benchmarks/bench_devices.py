@@ -86,7 +86,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
-import _figures  # noqa: E402
+import _figures
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from _environment import load, parse_list, print_environment  # noqa: E402

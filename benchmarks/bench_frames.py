@@ -64,7 +64,7 @@ from typing import Any
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-import _figures  # noqa: E402  (light: the heavy imports stay in main, after --help)
+import _figures
 
 SECTIONS = ("accuracy", "speed", "ida")
 DEFAULT_STEPS = "0.01,0.005,0.0025,0.001"

@@ -41,7 +41,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _figures  # noqa: E402
+import _figures
 import opensees_inelastic as osi  # noqa: E402
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402

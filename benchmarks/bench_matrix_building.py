@@ -37,7 +37,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
 sys.path.insert(0, str(ROOT / "tests" / "integrate"))
 
-import _figures  # noqa: E402
+import _figures
 from _environment import load, print_environment  # noqa: E402
 
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _figures  # noqa: E402
+import _figures
 
 SRC = Path(__file__).resolve().parents[1] / "src"
 CHILD = """

@@ -40,7 +40,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _figures  # noqa: E402
+import _figures
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from pounding.ground_motion import GroundMotion, el_centro  # noqa: E402

@@ -39,7 +39,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _figures  # noqa: E402
+import _figures
 import opensees_models as osm  # noqa: E402
 import opensees_plan as osp  # noqa: E402
 from _environment import load, print_environment  # noqa: E402

@@ -49,7 +49,7 @@ from typing import Any
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-import _figures  # noqa: E402  (light: the heavy imports stay in the sections)
+import _figures
 
 SECTIONS = ("la9", "memory")
 DEFAULT_STEPS_MM = "20,10,5,2.5,1.25"

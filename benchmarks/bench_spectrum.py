@@ -32,17 +32,17 @@ import dataclasses
 import os
 import platform
 import statistics
+import sys
 import time
 from collections.abc import Callable
-
-import sys
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _figures  # noqa: E402
+import _figures
+
 from pounding.ground_motion import el_centro
 from pounding.spectra import response_spectrum, rotd_spectrum
 from pounding.spectra.reference import reference_peaks

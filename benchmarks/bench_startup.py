@@ -51,8 +51,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import _figures  # noqa: E402
-from _environment import load  # noqa: E402
+import _figures
+from _environment import load
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"

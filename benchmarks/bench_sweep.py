@@ -58,7 +58,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _figures  # noqa: E402
+import _figures
 
 ROOT = Path(__file__).resolve().parents[1]
 BASE = ROOT / "examples" / "seed_sdof_pair.toml"

@@ -35,7 +35,7 @@ import sys
 import tempfile
 import time
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -153,7 +153,7 @@ def _openblas_core() -> str:
             " or 'no OpenBLAS')")
     try:
         out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                             timeout=60)
+                             check=False, timeout=60)
     except (OSError, subprocess.TimeoutExpired):
         return "unknown"
     return out.stdout.strip() or "unknown"
@@ -163,10 +163,10 @@ def commit() -> str:
     """The checkout's commit (short hash, date), ``+ changes`` if the tree differs from it."""
     try:
         head = subprocess.run(["git", "-C", str(ROOT), "log", "-1", "--format=%h %cs"],
-                              capture_output=True, text=True).stdout.strip()
+                              capture_output=True, text=True, check=False).stdout.strip()
         dirty = subprocess.run(["git", "-C", str(ROOT), "status", "--porcelain",
                                 "--untracked-files=no"], capture_output=True,
-                               text=True).stdout.strip()
+                               text=True, check=False).stdout.strip()
     except OSError:
         return "unknown"
     return (head or "unknown") + (" + uncommitted changes" if dirty else "")
@@ -204,7 +204,7 @@ def run_command(script_args: Sequence[str], log: Any, timeout: float | None) -> 
         t0 = time.perf_counter()
         try:
             proc = subprocess.run(cmd, cwd=ROOT, env=env, stdout=log, stderr=subprocess.STDOUT,
-                                  timeout=timeout)
+                                  check=False, timeout=timeout)
             entry["exit_status"] = proc.returncode
         except subprocess.TimeoutExpired:
             entry["exit_status"] = None
@@ -255,7 +255,7 @@ def run_section(section: Section, results: Path, quick: bool,
 
 
 def _now() -> str:
-    return _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    return _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
 
 
 # ------------------------------------------------------------------ rendering
