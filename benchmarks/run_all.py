@@ -240,8 +240,18 @@ def run_section(section: Section, results: Path, quick: bool,
     record: dict[str, Any] = {"section": section.key, "title": section.title,
                               "run_at": _now(), "quick": quick, "machine": machine(),
                               "commit": commit(), "commands": []}
+    peerless = section.needs_opensees and record["machine"]["openseespy"] == "not installed"
     with open(results / f"{section.key}.log", "w", encoding="utf-8") as log:
         for script_args in (section.quick if quick else section.commands):
+            if peerless:  # no peer, no figure: said so rather than run half a comparison
+                record["commands"].append({
+                    "command": " ".join(["python", f"benchmarks/{script_args[0]}",
+                                         *script_args[1:]]),
+                    "started": _now(), "load_before": _load(), "load_after": _load(),
+                    "wall_s": 0.0, "exit_status": None, "output": None,
+                    "error": "OpenSeesPy is not installed (pip install 'pounding[bench]'; "
+                             "benchmarks/README.md)"})
+                continue
             print(f"[{section.key}] python benchmarks/{' '.join(script_args)}", flush=True)
             entry = run_command(script_args, log, timeout)
             print(f"[{section.key}] {entry['wall_s']:.0f} s, "

@@ -212,3 +212,14 @@ def test_readme_quotes_no_timing_figures() -> None:
     assert not re.findall(r"\d\s*(?:µs|ms)\b", readme)              # kernel times
     assert not re.findall(r"\d\s*s of CPU", readme)                 # start-up, compile
     assert not re.findall(r"\d+ min \d+ s", readme)                 # test-suite times
+
+
+def test_a_comparison_without_its_peer_is_not_run(tmp_path: Path, monkeypatch) -> None:
+    """Without OpenSeesPy a section that compares with it says so and shows no figure."""
+    monkeypatch.setattr(run_all, "machine", lambda: {"openseespy": "not installed"})
+    ran = []
+    monkeypatch.setattr(run_all, "run_command", lambda *a: ran.append(a))
+    sec = run_all.Section("kernel", "K", (("bench_opensees.py",),), (), needs_opensees=True)
+    rec = run_all.run_section(sec, tmp_path, quick=False, timeout=None)
+    assert ran == [] and rec["status"] == "failed"
+    assert "OpenSeesPy is not installed" in rec["commands"][0]["error"]
