@@ -58,33 +58,34 @@ class Section:
     """The same scripts with fewer repeats (``--quick``: a smoke test, not a figure)."""
     needs_opensees: bool = True
     minutes: float = 1.0
-    """About how long the standard commands take on the project's 2-core machine."""
+    """About how long the standard commands take on the project's 2-core machine (measured
+    2026-11-28 at load average 6-10 where the section has been run by run_all.py)."""
 
 
 SECTIONS: dict[str, Section] = {s.key: s for s in (
     Section("kernel", "The time-stepping kernel against OpenSees",
             (("bench_opensees.py", "--sections", "compare", "--repeat", "7"),),
             (("bench_opensees.py", "--sections", "compare", "--repeat", "1",
-              "--duration", "2"),), minutes=6),
+              "--duration", "2"),), minutes=8.5),
     Section("scaling", "Cost against model size and record length",
             (("bench_opensees.py", "--sections", "scaling", "--repeat", "7"),),
             (("bench_opensees.py", "--sections", "scaling", "--repeat", "1",
-              "--duration", "2"),), needs_opensees=False, minutes=1),
+              "--duration", "2"),), needs_opensees=False, minutes=0.5),
     Section("inelastic", "Yielding storeys against OpenSees",
             (("bench_inelastic.py", "--sections", "bilinear,epp,boucwen,pair",
               "--repeat", "5"),),
             (("bench_inelastic.py", "--sections", "bilinear", "--repeat", "1",
-              "--duration", "2"),), minutes=3),
+              "--duration", "2"),), minutes=1.5),
     Section("startup", "Start-up: whole commands as a user types them",
             (("bench_startup.py", "--repeat", "5", "--phases"),),
-            (("bench_startup.py", "--repeat", "1"),), needs_opensees=False, minutes=3),
+            (("bench_startup.py", "--repeat", "1"),), needs_opensees=False, minutes=8),
     Section("cold", "Cold start: the first run on an empty numba cache",
-            (("bench_cold.py",),), (("bench_cold.py",),), needs_opensees=False, minutes=4),
+            (("bench_cold.py",),), (("bench_cold.py",),), needs_opensees=False, minutes=3),
     Section("memory", "Memory between runs",
             (("bench_memory.py", "--rounds", "3"),
              ("bench_memory.py", "--rounds", "3", "--model", "seed_sdof_pair.toml")),
             (("bench_memory.py", "--rounds", "1", "--calls", "3"),),
-            needs_opensees=False, minutes=2),
+            needs_opensees=False, minutes=1),
     Section("spectrum", "Response spectra",
             (("bench_spectrum.py",),),
             (("bench_spectrum.py", "--repeat", "2"),), needs_opensees=False, minutes=1),
@@ -113,14 +114,14 @@ SECTIONS: dict[str, Section] = {s.key: s for s in (
     Section("ssi", "Soil-structure interaction",
             (("bench_ssi.py", "--sections", "speed"),),
             (("bench_ssi.py", "--sections", "speed", "--rounds", "1",
-              "--opensees-rounds", "1"),), minutes=2),
+              "--opensees-rounds", "1"),), minutes=0.5),
     Section("links", "Links between buildings",
             (("bench_devices.py", "--sections", "cost", "--repeat", "5", "--no-reference"),),
             (("bench_devices.py", "--sections", "cost", "--kinds", "viscous", "--repeat", "1",
               "--no-reference", "--duration", "2"),), minutes=5),
     Section("bridges", "Bridges",
             (("bench_bridge.py", "--sections", "speed,cost", "--rounds", "7"),),
-            (("bench_bridge.py", "--sections", "speed", "--rounds", "1"),), minutes=1),
+            (("bench_bridge.py", "--sections", "speed", "--rounds", "1"),), minutes=0.5),
 )}
 
 
