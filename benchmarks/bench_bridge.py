@@ -68,6 +68,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures
 import opensees_bridge as ob
 import opensees_models as osm
 from _environment import load, parse_list, print_environment
@@ -387,6 +388,16 @@ def section_speed(cases: dict[str, Case], motion: GroundMotion, rounds: int,
               f"{r.stats.rk_steps} RK steps); OpenSees {spread(theirs_t[key], 1e3, '.0f')} ms "
               f"({h.retried} steps retried)")
         print(f"      OpenSees / pounding {ratio_line(theirs_t[key], ours_t[key])}")
+        _figures.figure(f"{case.name}: whole run, {motion.duration:.0f} s, pounding's output "
+                        f"10 ms, OpenSees' step {1e3 * os_dt:g} ms", min(ours_t[key]),
+                        _figures.opensees_name(), min(theirs_t[key]),
+                        ratio_meaning="OpenSees / pounding",
+                        goal=">= 50x" if key == "five" else None,
+                        spread=f"best of {rounds} alternating rounds; "
+                               f"{ratio_line(theirs_t[key], ours_t[key])}")
+        _figures.note(f"{case.name}: impacts {r.n_impacts}, RK steps {r.stats.rk_steps}; "
+                      f"OpenSees' joint force {pct(theirs.joint_force, ours.joint_force):+.2f} %"
+                      f" of pounding's")
         print(f"      OpenSees at {1e3 * os_dt:g} ms there: impacts joint {theirs.joint_impacts}"
               f" (pounding {ours.joint_impacts}), abutment {theirs.abutment_impacts} "
               f"({ours.abutment_impacts}); Δ joint force "
@@ -425,6 +436,10 @@ def section_cost(cases: dict[str, Case], motion: GroundMotion, rounds: int,
         print(f"  {v.name:<44} {r.n_impacts:>7} {r.stats.rk_steps:>8} {spread(o, 1e3):>26} "
               f"{spread(t, 1e3, '.0f'):>20}  {min(t) / min(o):.1f}× "
               f"({statistics.median(t) / statistics.median(o):.1f}×)")
+        _figures.figure(f"cost: {v.name} ({r.n_impacts} impacts, {r.stats.rk_steps} RK steps)",
+                        min(o), _figures.opensees_name(), min(t),
+                        ratio_meaning="OpenSees / pounding",
+                        spread=f"best of {len(o)} alternating rounds")
     print("  (RK steps: pounding's adaptive steps — through contacts, and wherever a "
           "restrainer is taut; outside them its steps are exact)")
 
@@ -455,7 +470,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_bridge", "Bridges")
     wanted = parse_list(ap, args.sections, SECTIONS)
     steps = _floats(ap, "steps", args.steps)
     if any(abs(s / POUNDING_DT - round(s / POUNDING_DT)) > 1e-9 for s in steps):
@@ -487,6 +504,7 @@ def main(argv: list[str] | None = None) -> int:
     if "cost" in wanted:
         section_cost(cases, motion, max(3, args.rounds), args.opensees_dt)
     print(f"\nend: {load()}; {time.perf_counter() - t_start:.0f} s")
+    _figures.write(args.json)
     return 0
 
 

@@ -36,6 +36,10 @@ import tempfile
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _figures
+
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"
 
@@ -77,7 +81,9 @@ def child(cmd: list[str], env: dict[str, str]) -> tuple[float, float]:
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--repeat", type=int, default=1, help="rounds (1); the best is shown")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_cold", "Cold start: the first run on an empty numba cache")
     work = Path(tempfile.mkdtemp(prefix="bench-cold-"))
     rows: dict[str, list[tuple[float, float]]] = {}
     n_sigs: dict[str, int] = {}
@@ -109,6 +115,14 @@ def main(argv: list[str] | None = None) -> int:
         cpu = min(c for c, _ in times)
         wall = min(w for _, w in times)
         print(f"{name:56s} {cpu:7.2f}s {wall:7.2f}s {cpu / peer:8.1f}×")
+        if "(peer)" not in name:
+            _figures.figure(f"{name}: CPU (wall {wall:.2f} s)", cpu,
+                            "python -c 'import numpy, numba'", peer,
+                            ratio_meaning="pounding / peer (CPU)",
+                            goal="<= 20 s of CPU" if "run" in name and "empty" in name else None,
+                            met=cpu <= 20.0 if "run" in name and "empty" in name else None,
+                            spread=f"best of {args.repeat}",
+                            unit_note="CPU seconds (user + system)")
     several = [k for k, v in n_sigs.items() if v > 1]
     print(f"\ncompiled by the cold run: {sum(n_sigs.values())} signatures of "
           f"{len(n_sigs)} numba functions" + ("; more than one: " + ", ".join(several)
@@ -117,6 +131,9 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{os.cpu_count()} CPUs; python {sys.version.split()[0]}; "
           f"load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
           f"{time.strftime('%Y-%m-%d %H:%M')}")
+    _figures.note(f"compiled by the cold run: {sum(n_sigs.values())} signatures of "
+                  f"{len(n_sigs)} numba functions")
+    _figures.write(args.json)
     return 0
 
 

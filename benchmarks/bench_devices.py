@@ -78,7 +78,6 @@ machine's load average is printed at the start and the end, and every timing wit
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import sys
 import time
@@ -92,6 +91,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
+import _figures
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from _environment import load, parse_list, print_environment  # noqa: E402
@@ -411,8 +411,6 @@ class Ctx:
     shear_reference: bool
     n_steps: int
     cases: dict[tuple[str, str, bool], Case] = field(default_factory=dict)
-    figures: list[dict[str, Any]] = field(default_factory=list)
-    """The cost section's figures, for ``--json``."""
 
 
 def get_case(ctx: Ctx, key: str, kind: Kind | None, contact: bool) -> Case:
@@ -507,6 +505,11 @@ def _section_model_cases(ctx: Ctx, key: str, title: str, with_ref: bool) -> None
                 tools.append(("reference", ref, None))
             best, med, txt = _ratio(case)
             ratios.append((case.label, best, med))
+            _figures.figure(f"{MODELS[key].stem}, {case.label}: whole run", min(case.ours),
+                            _figures.opensees_name(), min(case.theirs),
+                            ratio_meaning="OpenSees / pounding",
+                            spread=f"best of {len(case.ours)} / {len(case.theirs)}; medians "
+                                   f"{med:.1f}x")
             rows += _compare_rows(case, ref, tools, ctx.n_steps, txt)
             # worst agreement, OpenSees (ViscousDamper / Viscous) and pounding, against the
             # reference if there is one, else OpenSees against pounding
@@ -596,12 +599,22 @@ def section_cost(ctx: Ctx) -> None:
             for kind in ctx.kinds[key]:
                 c = get_case(ctx, key, kind, contact)
                 o, t = min(c.ours), min(c.theirs)
-                ctx.figures.append(cost_figure(key, contact, kind, c, plain))
                 rows.append(["", "", kind.name, spread(c.ours, 1e3, ".2f"),
                              f"{1e6 * o / ctx.n_steps:.3f}", f"{o / p_ours:.1f}",
                              spread(c.theirs, 1.0, ".3f"), f"{1e6 * t / ctx.n_steps:.2f}",
                              f"{t / p_os:.2f}", f"{t / o:.1f}",
                              f"{c.m_ours.n_impacts}/{c.m_theirs.n_impacts}", c.m_ours.stats])
+                linear = kind.name in LINEAR_KINDS
+                where = f"{MODELS[key].stem}, {'contact' if contact else 'no contact'}"
+                _figures.figure(f"{where}: {kind.name} links, the price of the links", o,
+                                "the same model without links", p_ours,
+                                ratio_meaning="pounding / peer",
+                                goal="<= 1.5x" if linear else None,
+                                spread=f"best of {len(c.ours)} / {len(plain.ours)}")
+                _figures.figure(f"{where}: {kind.name} links, whole run", o,
+                                _figures.opensees_name(), t, ratio_meaning="OpenSees / pounding",
+                                spread=f"best of {len(c.ours)} / {len(c.theirs)}; OpenSees "
+                                       f"pays {t / p_os:.2f}x for the same links")
     table(rows, ["model", "contact", "links", "pounding ms best (worst) xN", "µs/step",
                  "x no links", "OpenSees s best (worst) xN", "µs/step", "x no links",
                  "OS/ours", "impacts ours/OS", "pounding's steps"])
@@ -620,24 +633,6 @@ def section_cost(ctx: Ctx) -> None:
 
 LINEAR_KINDS = ("viscous", "maxwell")
 """The link kinds whose law is linear (the dashpot α = 1): the issue's goal, a price ≤ 1.5×."""
-
-
-def cost_figure(key: str, contact: bool, kind: Kind, linked: Case, plain: Case) -> dict[str, Any]:
-    """One figure of the cost section for ``--json``: pounding with the links against the
-    same model without them, bests of the same run."""
-    o, p = min(linked.ours), min(plain.ours)
-    linear = kind.name in LINEAR_KINDS
-    n_links = len(linked.links)
-    return {"what": f"{MODELS[key].stem}, {'pounding' if contact else 'no contact'}, "
-                    f"{n_links} {kind.name} link{'s' if n_links > 1 else ''}",
-            "pounding": o, "peer": "the same model without links (pounding)",
-            "peer_time": p, "ratio": o / p, "ratio_meaning": "with links / without",
-            "goal": "<= 1.5x" if linear else None,
-            "met": (o / p <= 1.5) if linear else None,
-            "spread": (f"best of {len(linked.ours)} with links ({1e3 * o:.2f}-"
-                       f"{1e3 * max(linked.ours):.2f} ms), {len(plain.ours)} without "
-                       f"({1e3 * p:.2f}-{1e3 * max(plain.ours):.2f} ms); whole runs"),
-            "unit_note": f"pounding's steps with links: {linked.m_ours.stats}"}
 
 
 SECTIONS: dict[str, Callable[[Ctx], None]] = {
@@ -670,13 +665,12 @@ def main(argv: list[str] | None = None) -> int:
                     help="skip simulate_reference for the SDOF pair (~10 s a case)")
     ap.add_argument("--shear-reference", action="store_true",
                     help="also simulate_reference for the 10-storey pair (minutes a case)")
-    ap.add_argument("--json", type=Path, default=None, metavar="PATH",
-                    help="write the cost section's figures to PATH as JSON (the convention "
-                         "of benchmarks/run_all.py)")
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_devices", "Links between buildings")
     wanted = parse_list(ap, args.sections, SECTIONS)
     kinds = parse_list(ap, args.kinds, KINDS, "link kind")
 
@@ -705,24 +699,12 @@ def main(argv: list[str] | None = None) -> int:
                  args.dt, 0.5)
     print(f"(warm-up, untimed: pounding's first run {t1 - t0:.2f} s, OpenSees' "
           f"{time.perf_counter() - t1:.2f} s)")
-    load_start = load()
+
     for s in wanted:
         SECTIONS[s](ctx)
     print()
     print(f"at the end: {load()}")
-    if args.json is not None:
-        argv_used = sys.argv[1:] if argv is None else argv
-        args.json.write_text(json.dumps({
-            "benchmark": "bench_devices",
-            "section": "Links between buildings",
-            "command": " ".join(["python", "benchmarks/bench_devices.py", *argv_used]),
-            "figures": ctx.figures,
-            "notes": [f"El Centro {t_end:g} s at {1e3 * args.dt:g} ms; at the start: "
-                      f"{load_start}; at the end: {load()}",
-                      "linear links (dashpot α = 1, Kelvin, Maxwell with α = 1) are stepped "
-                      "exactly between impacts; fluid dampers adaptively throughout"]},
-            indent=1) + "\n")
-        print(f"figures written to {args.json}")
+    _figures.write(args.json)
     return 0
 
 

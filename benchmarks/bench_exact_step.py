@@ -17,7 +17,7 @@ no contact closes and every one of El Centro's 40,000 steps of 1 ms is an exact 
 
 A measurement, not a test. Prints ns a step and the ratio pounding / hand loop, with the
 spread over ``--rounds`` rounds; ``--json PATH`` writes the figures
-(``/work/notes``-free convention of ``benchmarks/run_all.py``).
+(``benchmarks/_figures.py``, read by ``benchmarks/run_all.py``).
 
     python benchmarks/bench_exact_step.py --rounds 3
 """
@@ -25,7 +25,6 @@ spread over ``--rounds`` rounds; ``--json PATH`` writes the figures
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import sys
@@ -39,6 +38,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures  # noqa: E402
 from _environment import load, print_environment  # noqa: E402
 
 SEED = ROOT / "examples" / "seed_sdof_pair.toml"
@@ -146,7 +146,7 @@ def best_per_step(fn, steps: int, min_time: float = 0.3) -> float:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rounds", type=int, default=3, help="rounds, alternating (3)")
-    ap.add_argument("--json", metavar="PATH", help="write the figures as JSON")
+    _figures.add_json_option(ap)
     args = ap.parse_args()
 
     from pounding.allocator import keep_freed_memory
@@ -206,30 +206,22 @@ def main() -> int:
     print(f"pounding / hand loop with outputs: {min(ratio_full):.2f}–{max(ratio_full):.2f}× "
           f"(goal ≤ 2×: {'met' if max(ratio_full) <= 2.0 else 'MISSED'}); "
           f"/ bare: {min(ratio_bare):.2f}–{max(ratio_bare):.2f}×")
-    if args.json:
-        data = {
-            "benchmark": "bench_exact_step",
-            "section": "The exact step against a hand-written loop",
-            "command": "python benchmarks/bench_exact_step.py --rounds "
-                       f"{args.rounds}",
-            "figures": [{
-                "what": "seed SDOF pair, 10 m gap, El Centro 40 s at 1 ms: an exact step",
-                "pounding": ns["pounding"] * 1e-9,
-                "peer": "hand-written numba loop with the same outputs",
-                "peer_time": ns["full"] * 1e-9,
-                "ratio": ns["pounding"] / ns["full"], "ratio_meaning": "pounding / peer",
-                "goal": "<= 2x", "met": max(ratio_full) <= 2.0,
-                "spread": f"ratios {min(ratio_full):.2f}-{max(ratio_full):.2f} over "
-                          f"{args.rounds} rounds"},
-                {"what": "the same, against the bare loop (displacements only)",
-                 "pounding": ns["pounding"] * 1e-9,
-                 "peer": "hand-written numba loop, bare", "peer_time": ns["bare"] * 1e-9,
-                 "ratio": ns["pounding"] / ns["bare"], "ratio_meaning": "pounding / peer",
-                 "goal": None, "met": None,
-                 "spread": f"ratios {min(ratio_bare):.2f}-{max(ratio_bare):.2f}"}],
-            "notes": [f"hand loop's displacements within {err:.1e} of pounding's peak",
-                      load()]}
-        Path(args.json).write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
+    _figures.start("bench_exact_step", "The exact step against a hand-written loop")
+    _figures.figure("seed SDOF pair, 10 m gap, El Centro 40 s at 1 ms: one exact step",
+                    min(rows["pounding"]), "hand-written numba loop with the same outputs",
+                    min(rows["full"]), ratio_meaning="pounding / peer", goal="<= 2x",
+                    met=max(ratio_full) <= 2.0,
+                    spread=f"ratios {min(ratio_full):.2f}-{max(ratio_full):.2f} over "
+                           f"{args.rounds} rounds",
+                    unit_note="seconds a step")
+    _figures.figure("the same, against the bare loop (displacements only)",
+                    min(rows["pounding"]), "hand-written numba loop, bare", min(rows["bare"]),
+                    ratio_meaning="pounding / peer",
+                    spread=f"ratios {min(ratio_bare):.2f}-{max(ratio_bare):.2f}",
+                    unit_note="seconds a step")
+    _figures.note(f"the hand loop's displacements agree with pounding's to {err:.1e} of the "
+                  "peak")
+    _figures.write(args.json)
     return 0
 
 

@@ -80,6 +80,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
+import _figures
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from _environment import load, parse_list, print_environment  # noqa: E402
@@ -328,6 +329,10 @@ def section_runs(ctx: Ctx) -> None:
                 run.os_bare.append(w)
                 run.failed = max(run.failed, r["failed"])
             ctx.runs.append(run)
+            _figures.figure(f"{run.name[:30]} at {x:.4g} g: one study run (build, simulate, "
+                            f"measures)", min(run.ours), _figures.opensees_name(),
+                            min(run.os_read), ratio_meaning="OpenSees / pounding",
+                            spread=f"best of {len(run.ours)} / {len(run.os_read)}")
             print(f"  {run.name[:24]:24s} {x:.4f} g: pounding {min(run.ours):.3f} s, "
                   f"OpenSees {min(run.os_read):.3f} s", flush=True)
 
@@ -359,6 +364,11 @@ def section_runs(ctx: Ctx) -> None:
     print(f"agreement: impacts equal in {same} of {len(ctx.runs)} runs; |ΔFmax| ≤ "
           f"{max(dF) if dF else float('nan'):.3f} % ({len(dF)} runs with contact); "
           f"|Δdrift| ≤ {max(dD):.4f} %")
+    _figures.note(f"ratio OpenSees / pounding per run: {min(ratio):.1f}-{max(ratio):.1f}x "
+                  f"(median {np.median(ratio):.1f}); impacts equal in {same} of "
+                  f"{len(ctx.runs)} runs; |peak force difference| <= "
+                  f"{max(dF) if dF else float('nan'):.3f} %, |drift difference| <= "
+                  f"{max(dD):.4f} %")
     print("pounding = StudyCases.build + simulate + result_row (what a study run does, its "
           "record scaled afresh each repeat); OpenSees = model build + analyze(1, dt) loop "
           "reading 20 displacements and 10 forces a step + the measures; 'analysis alone' = "
@@ -403,6 +413,10 @@ def section_runs(ctx: Ctx) -> None:
           f"as a study's worker runs them): {ctx.serial_ours:.1f} s"
           f"{f', {bad} failed' if bad else ''}; OpenSees / pounding "
           f"{ctx.extrapolated['OpenSees'] / ctx.serial_ours:.0f}x on that")
+    _figures.figure(f"all {len(sw.cases)} runs of the study serially in one process",
+                    ctx.serial_ours, f"{_figures.opensees_name()} (extrapolated from the subset)",
+                    ctx.extrapolated["OpenSees"], ratio_meaning="OpenSees / pounding",
+                    unit_note="pounding measured; OpenSees from its mean time a step")
 
 
 def section_reference(ctx: Ctx) -> None:
@@ -482,6 +496,15 @@ def section_study(ctx: Ctx) -> None:
           "results.parquet, summed (two workers at once: a run's time includes waiting for a "
           "core held by the other worker or other jobs).")
     ext = ctx.extrapolated
+    if walls:
+        _figures.figure(f"pounding fragility {study.name} end to end, as a process",
+                        min(walls),
+                        f"{_figures.opensees_name()}: the study's runs alone, serially "
+                        f"(extrapolated)" if ext else "no peer measured",
+                        ext["OpenSees"] if ext else float("nan"),
+                        ratio_meaning="OpenSees / pounding", met=min(walls) <= 20.0,
+                        goal="<= 20 s end to end",
+                        spread=f"best of {len(walls)}; {min(walls):.1f}-{max(walls):.1f} s")
     if walls and ext:
         ours = (f"; its {len(ctx.cases.sweep.cases)} runs serially in one process "
                 f"{ctx.serial_ours:.1f} s" if ctx.serial_ours == ctx.serial_ours else "")
@@ -517,7 +540,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_fragility", "The fragility study against OpenSees")
     wanted = parse_list(ap, args.sections, SECTIONS)
     if args.no_reference and "reference" in wanted:
         wanted.remove("reference")
@@ -541,6 +566,7 @@ def main(argv: list[str] | None = None) -> int:
         SECTIONS[s](ctx)
     print()
     print(f"at the end: {load()}")
+    _figures.write(args.json)
     return 0
 
 

@@ -62,6 +62,10 @@ from pathlib import Path
 from typing import Any
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import _figures
+
 SECTIONS = ("accuracy", "speed", "ida")
 DEFAULT_STEPS = "0.01,0.005,0.0025,0.001"
 
@@ -92,6 +96,7 @@ def _parser() -> argparse.ArgumentParser:
                     help="ida: El Centro scale factors, comma-separated")
     ap.add_argument("--blas-threads", default="1",
                     help="OPENBLAS_NUM_THREADS for numpy (default 1; 'default': as set)")
+    _figures.add_json_option(ap)
     return ap
 
 
@@ -264,6 +269,12 @@ def speed_section(args: argparse.Namespace, s: Setup) -> None:
     print(f"  OpenSees / pounding: {min(theirs_t) / min(ours_t):.2f}x (best), "
           f"{statistics.median(theirs_t) / statistics.median(ours_t):.2f}x (median); "
           f"the day's spread over every pair of runs {min(ratios):.2f}x – {max(ratios):.2f}x")
+    _figures.figure(f"two LA9-type frames, {name} x {fp.SCALES[name]:g}, {duration:.0f} s: "
+                    f"pounding (output {args.pounding_dt:g} s) against OpenSees' Newmark at "
+                    f"{args.opensees_dt:g} s", min(ours_t), _figures.opensees_name(),
+                    min(theirs_t), ratio_meaning="OpenSees / pounding",
+                    spread=f"best of {len(ours_t)} / {len(theirs_t)}; every pair of runs "
+                           f"{min(ratios):.2f}-{max(ratios):.2f}x")
     ours, theirs = fp.pounding_measures(r), fp.opensees_measures(h)
     print(HEADER + ERR_HEADER)
     print(_measures_row("pounding", ours))
@@ -272,6 +283,11 @@ def speed_section(args: argparse.Namespace, s: Setup) -> None:
         fine = s.opensees(gap, motion, duration, args.fine_dt)
         _speed_row(fp, f"OpenSees {args.fine_dt:g} s", ours, fp.opensees_measures(fine), r,
                    fine)
+        _figures.figure(f"two LA9-type frames, {name} x {fp.SCALES[name]:g}, {duration:.0f} s:"
+                        f" pounding against OpenSees' Newmark at {args.fine_dt:g} s",
+                        min(ours_t), _figures.opensees_name(), fine.wall,
+                        ratio_meaning="OpenSees / pounding",
+                        spread=f"pounding best of {len(ours_t)}, OpenSees one run")
         print(f"  OpenSees at {args.fine_dt:g} s takes {fine.wall / min(ours_t):.1f}x "
               f"pounding's best ({fine.wall / statistics.median(ours_t):.1f}x its median)")
 
@@ -306,11 +322,15 @@ def ida_section(args: argparse.Namespace, s: Setup, scales: list[float]) -> None
     print(f"  20 levels × {min(scales):g} … {max(scales):g} (even), each run's time "
           f"interpolated: mean {np.mean(per_level):.2f} s a run; 10 records × 20 levels = "
           f"200 runs on 2 workers: {total:.0f} s ({total / 60:.1f} min; the goal: ≤ 60 s)")
+    _figures.note(f"IDA of the LA9-type pair, El Centro x {min(scales):g}-{max(scales):g}: "
+                  f"{np.mean(per_level):.2f} s a run; 200 runs on 2 workers estimated "
+                  f"{total:.0f} s (goal <= 60 s: {'met' if total <= 60 else 'missed'})")
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = _parser()
     args = ap.parse_args(argv)
+    _figures.start("bench_frames", "LA9-type pair time history")
     if args.blas_threads != "default":
         os.environ["OPENBLAS_NUM_THREADS"] = str(int(args.blas_threads))
     if args.repeat < 1 or args.opensees_repeat < 1:
@@ -340,6 +360,7 @@ def main(argv: list[str] | None = None) -> int:
     if "ida" in wanted:
         ida_section(args, setup, scales)
     print(f"\nend: {load()}")
+    _figures.write(args.json)
     return 0
 
 

@@ -41,6 +41,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures
 import opensees_inelastic as osi  # noqa: E402
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
@@ -205,6 +206,20 @@ def _case(ctx: Ctx, label: str, sdofs: list[osi.YieldingSdof], gap: float | None
              f"{r_os['wall_total'] / ours['wall_total']:.1f}")
     pair = gap is not None
     eh_ref = ref["hysteretic_energy_total"]
+    seconds = m.duration if ctx.duration is None else ctx.duration
+    case = f"{label}, El Centro {seconds:.0f} s, {1e3 * ctx.dt:g} ms"
+    _figures.figure(f"{case}: time-stepping loop", ours["wall_analyze"], _figures.opensees_name(),
+                    r_os["wall_analyze"], ratio_meaning="OpenSees / pounding", goal=">= 20x",
+                    spread=f"best of {ctx.repeat}")
+    _figures.figure(f"{case}: whole call", ours["wall_total"], _figures.opensees_name(),
+                    r_os["wall_total"], ratio_meaning="OpenSees / pounding",
+                    spread=f"best of {ctx.repeat}")
+    _figures.note(f"{label}: peak displacement against the SciPy reference: OpenSees "
+                  + " / ".join(f"{pct(a, b):+.4f} %" for a, b in zip(r_os["peak_u"], ref["peak_u"]))
+                  + ", pounding "
+                  + " / ".join(f"{pct(a, b):+.4f} %" for a, b in zip(ours["peak_u"], ref["peak_u"]))
+                  + f"; hysteretic energy OpenSees {pct(r_os['hysteretic_energy_total'], eh_ref):+.4f} %,"
+                  f" pounding {pct(ours['hysteretic_energy_total'], eh_ref):+.4f} %")
     rows = []
     for tool, r in (("OpenSees", r_os), ("pounding", ours)):
         du = " / ".join(f"{pct(a, b):+.4f}" for a, b in zip(r["peak_u"], ref["peak_u"]))
@@ -276,7 +291,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_inelastic", "Yielding storeys against OpenSees")
     wanted = [s.strip() for s in args.sections.split(",") if s.strip()]
     bad = [s for s in wanted if s not in SECTIONS]
     if bad:
@@ -314,6 +331,8 @@ def main(argv: list[str] | None = None) -> int:
             SECTIONS[s](ctx)
         except Exception as exc:  # one broken section must not hide the others
             print(f"section {s} failed: {type(exc).__name__}: {exc}")
+            _figures.failure(f"section {s}: {type(exc).__name__}: {exc}")
+    _figures.write(args.json)
     if ctx.rows:
         header("Summary")
         table(ctx.rows, HEAD)

@@ -19,6 +19,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _figures
+
 SRC = Path(__file__).resolve().parents[1] / "src"
 CHILD = """
 import json, resource, sys, time
@@ -52,7 +56,9 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--model", default="two_10_storey.toml", help="a bundled example")
     ap.add_argument("--calls", type=int, default=20)
     ap.add_argument("--rounds", type=int, default=3)
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_memory", "Memory between runs")
     load0 = os.getloadavg()[0]
     kept, alone = [], []
     for _ in range(args.rounds):
@@ -68,6 +74,15 @@ def main(argv: list[str] | None = None) -> None:
     print(f"left alone / kept, best call: {min(ratios):.2f}-{max(ratios):.2f}x "
           f"({args.model}, {args.calls} calls x {args.rounds} rounds; load average "
           f"{load0:.1f} -> {os.getloadavg()[0]:.1f})")
+    _figures.figure(f"{args.model}: best of {args.calls} simulate() calls, freed memory kept",
+                    min(r["best"] for r in kept), "the same calls with glibc left alone",
+                    min(r["best"] for r in alone), ratio_meaning="peer / pounding",
+                    spread=f"{args.rounds} rounds, each setting its own process; ratio of "
+                           f"the best calls {min(ratios):.2f}-{max(ratios):.2f}x")
+    for name, rows in (("kept", kept), ("left alone", alone)):
+        _figures.note(f"{args.model}, {name}: page faults a call "
+                      f"{min(r['faults'] for r in rows):.0f}-{max(r['faults'] for r in rows):.0f}")
+    _figures.write(args.json)
 
 
 if __name__ == "__main__":

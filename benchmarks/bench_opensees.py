@@ -40,6 +40,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures
 from _memory import keep_freed_memory  # noqa: E402
 import opensees_models as osm  # noqa: E402
 from pounding.ground_motion import GroundMotion, el_centro  # noqa: E402
@@ -361,11 +362,28 @@ def section_compare(ctx: Ctx) -> None:
             r_ours = f_ours()
         except Exception as exc:  # the engine is still moving: report, go on with the rest
             print(f"  {label}: pounding failed: {type(exc).__name__}: {exc}")
+            _figures.failure(f"{label}: pounding failed: {type(exc).__name__}: {exc}")
             continue
         r_os = f_os()
         F_ref, u1_ref, u2_ref, n_ref = _as_pair(ref)
         ratio_a = r_os["wall_analyze"] / r_ours["wall_analyze"]
         ratio_t = r_os["wall_total"] / r_ours["wall_total"]
+        goal = ">= 100x" if label.startswith("SDOF") else ">= 50x"
+        seconds = ctx.motion.duration if ctx.duration is None else ctx.duration
+        case = f"{label}, El Centro {seconds:.0f} s, {1e3 * ctx.dt:g} ms"
+        _figures.figure(f"{case}: time-stepping loop", r_ours["wall_analyze"],
+                        _figures.opensees_name(), r_os["wall_analyze"],
+                        ratio_meaning="OpenSees / pounding", goal=goal,
+                        spread=f"best of {ctx.repeat} (pounding: runs over "
+                               f">= {MIN_TIMED_WINDOW:g} s)")
+        _figures.figure(f"{case}: whole call (model build + analysis)", r_ours["wall_total"],
+                        _figures.opensees_name(), r_os["wall_total"],
+                        ratio_meaning="OpenSees / pounding", spread=f"best of {ctx.repeat}")
+        F_os, _, _, n_os = _as_pair(r_os)
+        F_po, _, _, n_po = _as_pair(r_ours)
+        _figures.note(f"{label}: peak contact force against the SciPy reference: OpenSees "
+                      f"{pct(F_os, F_ref):+.3f} %, pounding {pct(F_po, F_ref):+.4f} %; impacts "
+                      f"{n_os} / {n_po} (reference {n_ref})")
         for tool, r in (("OpenSees", r_os), ("pounding", r_ours)):
             F, u1, u2, nimp = _as_pair(r)
             rows.append([label, tool, f"{r['wall_analyze']:.4f}", f"{r['wall_total']:.4f}",
@@ -461,6 +479,7 @@ def section_scaling(ctx: Ctx) -> None:
         return
     m = ctx.motion
     rows = []
+    per_floor: list[tuple[int, float]] = []
     for n in (1, 2, 5, 10, 20, 50):
         T1 = max(0.5, 0.1 * n)
         r = run_pounding_shear_pair(m, ctx.dt, duration=ctx.duration, repeat=ctx.repeat,
@@ -469,6 +488,12 @@ def section_scaling(ctx: Ctx) -> None:
         us = 1e6 * r["wall_analyze"] / r["n_steps"]
         rows.append([str(n), str(2 * n), f"{T1:g} / {1.5 * T1:g}", str(r["n_impacts"]),
                      f"{r['wall_analyze']:.4f}", f"{us:.2f}", f"{us / (2 * n):.3f}"])
+        per_floor.append((n, 1e-6 * us / (2 * n)))
+    for n, t in per_floor[1:]:
+        _figures.figure(f"two {n}-storey buildings: time a step a floor", t,
+                        "two SDOF oscillators (1 storey each)", per_floor[0][1],
+                        ratio_meaning="pounding / peer", spread=f"best of {ctx.repeat}",
+                        unit_note="seconds a step a floor")
     print("Two uniform n-storey buildings (T1 = max(0.5, 0.1 n) s, T2 = 1.5 T1), "
           "Kelvin-Voigt contact at every floor:")
     table(rows, ["storeys", "DOFs", "T1 / T2 s", "impacts", "analyze s", "µs/step",
@@ -485,6 +510,12 @@ def section_scaling(ctx: Ctx) -> None:
                      f"{1e6 * r['wall_analyze'] / r['n_steps']:.2f}"])
     print(f"{SHEAR['n_storeys']}-storey pair, record tiled:")
     table(rows, ["record", "duration s", "steps", "impacts", "analyze s", "µs/step"])
+    per_step = [float(r[-1]) * 1e-6 for r in rows]
+    for row, t in zip(rows[1:], per_step[1:]):
+        _figures.figure(f"{SHEAR['n_storeys']}-storey pair, record tiled {row[0]}: time a step",
+                        t, "the same pair on the record once (x1)", per_step[0],
+                        ratio_meaning="pounding / peer",
+                        spread=f"best of {ctx.repeat}", unit_note="seconds a step")
 
 
 SECTIONS = {"sanity": section_sanity, "compare": section_compare,
@@ -502,7 +533,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_opensees", "The time-stepping kernel against OpenSees")
     wanted = [s.strip() for s in args.sections.split(",") if s.strip()]
     bad = [s for s in wanted if s not in SECTIONS]
     if bad:
@@ -534,6 +567,8 @@ def main(argv: list[str] | None = None) -> int:
             SECTIONS[s](ctx)
         except Exception as exc:  # one broken section must not hide the others
             print(f"section {s} failed: {type(exc).__name__}: {exc}")
+            _figures.failure(f"section {s}: {type(exc).__name__}: {exc}")
+    _figures.write(args.json)
     return 0
 
 

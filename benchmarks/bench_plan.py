@@ -39,6 +39,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures
 import opensees_models as osm  # noqa: E402
 import opensees_plan as osp  # noqa: E402
 from _environment import load, print_environment  # noqa: E402
@@ -160,6 +161,11 @@ def section_compare(name: str, first: GroundMotion, second: GroundMotion | None,
           f"failed steps {ops['failed']}, retried {ops['retried']}")
     print(f"ratio OpenSees / pounding (best / best): {loops[0] / walls[0]:.1f}x "
           f"(worst / worst {loops[-1] / walls[-1]:.1f}x)")
+    _figures.figure(f"{name}: {what} at {angle:g} deg, {duration:g} s, {1e3 * DT:g} ms "
+                    f"(pounding's whole simulate(), OpenSees' analysis loop)", walls[0],
+                    _figures.opensees_name(), loops[0], ratio_meaning="OpenSees / pounding",
+                    spread=f"best of {len(walls)} / {len(loops)}; worst / worst "
+                           f"{loops[-1] / walls[-1]:.1f}x")
     peaks = res.contact_peaks
     labels = list(peaks)
     ours = [(peaks[lab].impacts, peaks[lab].force) for lab in labels]
@@ -207,7 +213,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "see benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_plan", "Buildings in plan against OpenSees")
     if args.repeat < 1:
         ap.error(f"--repeat must be >= 1 (got {args.repeat!r})")
     kept = keep_freed_memory(args.fresh_memory)
@@ -226,6 +234,7 @@ def main(argv: list[str] | None = None) -> int:
     if not args.no_reference:
         for name, (first, second, angle, window) in cases().items():
             section_reference(name, first, second, angle, window, cs[name])
+    _figures.write(args.json)
     return 0
 
 

@@ -47,6 +47,10 @@ from pathlib import Path
 from typing import Any
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import _figures
+
 SECTIONS = ("la9", "memory")
 DEFAULT_STEPS_MM = "20,10,5,2.5,1.25"
 ROOF_DRIFT = 0.05
@@ -70,6 +74,7 @@ def _parser() -> argparse.ArgumentParser:
     ap.add_argument("--blas-threads", default="1",
                     help="OPENBLAS_NUM_THREADS for numpy (default 1; 'default': as set)")
     ap.add_argument("--tall-child", action="store_true", help=argparse.SUPPRESS)
+    _figures.add_json_option(ap)
     return ap
 
 
@@ -279,6 +284,14 @@ def la9_section(args: argparse.Namespace, steps_mm: list[float]) -> None:
         print(f"  {1e3 * run.step:8.3f} {run.n:6d} {spread(run.times):>32} {run.error:11.1e}"
               f" {run.where:9.3f} {run.rescued:7d} {'yes' if run.complete else 'NO':>5}"
               f" {ratio:9.1f}x {ratio_med:8.1f}x")
+        _figures.figure(f"LA9-type frame pushover to {100 * ROOF_DRIFT:.0f} % roof drift: "
+                        f"OpenSees at {1e3 * run.step:.3g} mm steps ({run.n} steps, error "
+                        f"{run.error:.1e} of the peak base shear"
+                        f"{'' if run.complete else ', DID NOT REACH THE TARGET'})",
+                        min(ours), _figures.opensees_name(), min(run.times),
+                        ratio_meaning="OpenSees / pounding",
+                        spread=f"best of {len(ours)} alternating; median ratio "
+                               f"{ratio_med:.1f}x")
     agreeing = [r for r in runs if r.error <= ROUND_OFF]
     if agreeing:  # OpenSees is exact too at these steps: the cheapest of them
         best = min(agreeing, key=lambda r: min(r.times))
@@ -296,11 +309,15 @@ def la9_section(args: argparse.Namespace, steps_mm: list[float]) -> None:
     print(f"  the day's spread of the ratio (every OpenSees run / every pounding run): "
           f"{min(all_ratios):.1f}x – {max(all_ratios):.1f}x")
     print(f"  (OpenSees' warnings: {log})")
+    _figures.note(f"pounding: {exact.base_shear.size} events, peak base shear "
+                  f"{exact.peak_base_shear / 1e3:.0f} kN at roof "
+                  f"{exact.roof_displacement[peak]:.3f} m; {what}")
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = _parser()
     args = ap.parse_args(argv)
+    _figures.start("bench_pushover", "Pushover of an LA9-type frame")
     if args.blas_threads != "default":
         os.environ["OPENBLAS_NUM_THREADS"] = str(int(args.blas_threads))
     if args.tall_child:
@@ -330,6 +347,7 @@ def main(argv: list[str] | None = None) -> int:
     if "memory" in wanted:
         memory_section()
     print(f"\nend: {load()}")
+    _figures.write(args.json)
     return 0
 
 

@@ -32,10 +32,16 @@ import dataclasses
 import os
 import platform
 import statistics
+import sys
 import time
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _figures
 
 from pounding.ground_motion import el_centro
 from pounding.spectra import response_spectrum, rotd_spectrum
@@ -64,7 +70,9 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=15)
     ap.add_argument("--reference-repeat", type=int, default=1, help="0: skip the reference")
+    _figures.add_json_option(ap)
     args = ap.parse_args()
+    _figures.start("bench_spectrum", "Response spectra")
     gm = el_centro()
     print(f"record: {gm.name}, {gm.npts} samples at {gm.dt:g} s ({gm.duration:g} s); "
           f"{PERIODS.size} periods {PERIODS[0]:g}-{PERIODS[-1]:g} s x damping "
@@ -81,11 +89,17 @@ def main() -> None:
     times, spec = timed(lambda: response_spectrum(gm, PERIODS, DAMPING), args.repeat)
     line("pounding response_spectrum (Sd, PSV, PSA, abs. accel.)", times)
     assert spec is not None
+    ours = times
+    what = (f"{PERIODS.size} periods x {DAMPING.size} damping ratios of El Centro "
+            f"({gm.duration:.0f} s)")
 
     if args.reference_repeat > 0:
         times, ref = timed(lambda: reference_peaks(gm.accel, gm.dt, PERIODS, DAMPING),
                            args.reference_repeat)
         line("plain reference (NumPy/SciPy, Hermite on sub-steps)", times)
+        _figures.figure(what, min(ours), "plain NumPy/SciPy reference (Hermite on sub-steps)",
+                        min(times), ratio_meaning="peer / pounding",
+                        spread=f"best of {args.repeat} / {args.reference_repeat}")
         sd_ref, sa_ref = ref  # type: ignore[misc]
         print(f"    largest difference from pounding: Sd "
               f"{np.max(np.abs(spec.sd / sd_ref - 1)):.1e}, abs. accel. "
@@ -102,6 +116,9 @@ def main() -> None:
 
         times, psa_eq = timed(eq, max(3, args.reference_repeat))
         line("eqsig 1.2.17 pseudo_response_spectra (PSA only)", times)
+        _figures.figure(what, min(ours), "eqsig pseudo_response_spectra (PSA only)",
+                        min(times), ratio_meaning="peer / pounding",
+                        spread=f"best of {args.repeat} / {max(3, args.reference_repeat)}")
         rel = np.abs(np.asarray(psa_eq) / spec.psa - 1)
         k = np.unravel_index(np.argmax(rel), rel.shape)
         long = PERIODS >= 6 * gm.dt
@@ -116,6 +133,10 @@ def main() -> None:
     times, _ = timed(lambda: rotd_spectrum(gm, back, rot_periods, 0.05),
                      max(3, args.repeat // 3))
     line("pounding rotd_spectrum (100 periods x 180 azimuths, 5 %)", times)
+    _figures.note(f"pounding response_spectrum, {what}: {min(ours) * 1e3:.1f} ms (best of "
+                  f"{len(ours)}); rotd_spectrum, 100 periods x 180 azimuths: "
+                  f"{min(times) * 1e3:.1f} ms (best of {len(times)})")
+    _figures.write(args.json)
 
 
 if __name__ == "__main__":

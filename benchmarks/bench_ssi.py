@@ -82,6 +82,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import opensees_models as osm
 import opensees_ssi as oss
+import _figures
 from _environment import load, parse_list, print_environment
 from _memory import keep_freed_memory
 
@@ -400,6 +401,15 @@ def section_speed(cases: dict[str, Case], wide: dict[str, Case], motion: GroundM
                          if key == "flexible" else "")
                 print(f"  {vname:<14} {1e3 * dt:>4g}ms {cases[key].name:<18} {r.n_impacts:>7} "
                       f"{r.stats.rk_steps:>8} {spread(walls[(vname, key, dt)], 1e3):>42}  {ratio}")
+                if key == "flexible":
+                    fixed = info[(vname, "fixed", dt)]
+                    _figures.figure(
+                        f"{vname}, output step {1e3 * dt:g} ms: flexible-base pair (a), "
+                        f"{r.n_impacts} impacts", min(walls[(vname, key, dt)]),
+                        f"the fixed-base pair (b), {fixed.n_impacts} impacts",
+                        min(walls[(vname, "fixed", dt)]), ratio_meaning="pounding / peer",
+                        goal="<= 1.5x" if vname.endswith(" m") else None,
+                        spread=f"best of {rounds} alternating rounds; {ratio}")
     print("  (the issue's goal: the flexible-base pair's run ≤ 1.5× the fixed-base pair's)")
 
     import openseespy.opensees as ops  # noqa: F401  (imported before the timed runs)
@@ -425,6 +435,10 @@ def section_speed(cases: dict[str, Case], wide: dict[str, Case], motion: GroundM
         print(f"  {case.name}: pounding {spread(ours_t[key], 1e3)} ms; OpenSees "
               f"{spread(theirs_t[key], 1e3, '.0f')} ms ({h.retried} steps retried); OpenSees "
               f"/ pounding {ratio_line(theirs_t[key], ours_t[key])}")
+        _figures.figure(f"{case.name}: whole run, pounding's output 10 ms, OpenSees' step "
+                        f"{1e3 * os_dt:g} ms", min(ours_t[key]), _figures.opensees_name(),
+                        min(theirs_t[key]), ratio_meaning="OpenSees / pounding",
+                        spread=f"best of {os_rounds} alternating rounds")
         print(f"      OpenSees at {1e3 * os_dt:g} ms there: impacts {theirs.impacts} (pounding "
               f"{ours.impacts}), ΔF {pct(theirs.force, ours.force):+.2f} %, ΔA "
               f"{pct(theirs.floor_peak(case, 'A'), ours.floor_peak(case, 'A')):+.2f} %, ΔB "
@@ -608,7 +622,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--fresh-memory", action="store_true",
                     help="leave glibc's malloc as it is (default: keep freed memory for reuse, "
                          "benchmarks/_memory.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_ssi", "Soil-structure interaction")
     wanted = parse_list(ap, args.sections, SECTIONS)
     steps = _floats(ap, "steps", args.steps)
     if any(abs(s / POUNDING_DT - round(s / POUNDING_DT)) > 1e-9 for s in steps):
@@ -646,6 +662,7 @@ def main(argv: list[str] | None = None) -> int:
     if "yielding" in wanted:
         section_yielding(motion, args.rounds)
     print(f"\nend: {load()}; {time.perf_counter() - t_start:.0f} s")
+    _figures.write(args.json)
     return 0
 
 

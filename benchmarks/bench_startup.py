@@ -51,6 +51,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import _figures
 from _environment import load
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -162,7 +163,9 @@ def main(argv: list[str] | None = None) -> int:
                     help="also time the first run with an empty numba cache")
     ap.add_argument("--phases", action="store_true",
                     help="also account for a warm run's CPU phase by phase, in one process")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
+    _figures.start("bench_startup", "Start-up: whole commands as a user types them")
 
     env = child_env()
     work = Path(tempfile.mkdtemp(prefix="bench-startup-"))
@@ -202,6 +205,18 @@ def main(argv: list[str] | None = None) -> int:
                 if out is not None:
                     row.solver.append(integration_time(out))
             print(row.line(), flush=True)
+            ratios = [c / p for c, p in zip(row.cpu, row.peer)]
+            solver = (f"; integrating {min(row.solver) * 1e3:.1f} ms of it"
+                      if row.solver else "")
+            _figures.figure(
+                f"{name}: CPU of the whole process{solver}", min(row.cpu),
+                "python -c 'import numpy, numba'", min(row.peer),
+                ratio_meaning="pounding / peer (CPU)",
+                goal=None if goal is None else f"<= {goal:g}x",
+                spread=(f"best of {args.repeat}; CPU {min(row.cpu):.2f}-{max(row.cpu):.2f} s, "
+                        f"wall best {min(row.wall):.2f} s; paired ratios "
+                        f"{min(ratios):.2f}-{max(ratios):.2f}x"),
+                unit_note="CPU seconds (user + system)")
         if args.cold:
             cache = Path(tempfile.mkdtemp(prefix="numba-cache-"))
             row = Row("pounding demo, empty numba cache (first run)")
@@ -212,15 +227,24 @@ def main(argv: list[str] | None = None) -> int:
             row.wall.append(wall)
             row.solver.append(integration_time(work / "cold"))
             print(row.line() + f"goal ≤ 20 s of CPU: {'met' if cpu <= 20.0 else 'MISSED'}")
+            _figures.figure("pounding demo, empty numba cache (first run): CPU", cpu,
+                            "python -c 'import numpy, numba'", row.peer[0],
+                            ratio_meaning="pounding / peer (CPU)", met=cpu <= 20.0,
+                            goal="<= 20 s of CPU", unit_note="CPU seconds (user + system)")
             shutil.rmtree(cache, ignore_errors=True)
         if args.phases:
             print(f"\nwhere the CPU of a warm run of {SEED.name} goes (one process, "
                   "phase by phase):")
-            subprocess.run([sys.executable, "-c", PHASES, str(SEED)], cwd=work, env=env,
-                           check=True)
+            phases = subprocess.run([sys.executable, "-c", PHASES, str(SEED)], cwd=work,
+                                    env=env, check=True, capture_output=True, text=True)
+            print(phases.stdout, end="", flush=True)
+            for line in phases.stdout.splitlines():
+                if line.strip():
+                    _figures.note(f"phase of a warm run, CPU: {line.strip()}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print(f"\n{load()} (after)")
+    _figures.write(args.json)
     return 0
 
 

@@ -56,6 +56,10 @@ from pathlib import Path
 
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _figures
+
 ROOT = Path(__file__).resolve().parents[1]
 BASE = ROOT / "examples" / "seed_sdof_pair.toml"
 
@@ -219,6 +223,13 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
               for key in ("kernel_rate", "case_rate", "kernel_cpu")}
         k2["n"] = before["n"]
         runs.append((k1, k2, sw))
+        _figures.figure(f"sweep of {sw['cases']} two-SDOF cases on {sw['workers']} workers, "
+                        f"end to end (repeat {i + 1}): time a case", 1.0 / sw["rate_wall"],
+                        "the compiled kernel alone on 2 processes, just before and after",
+                        1.0 / k2["kernel_rate"], ratio_meaning="peer / pounding",
+                        goal=">= 0.7x", spread=f"sweep {sw['wall']:.2f} s wall",
+                        unit_note="seconds a case of wall time; the ratio is the sweep's "
+                                  "rate over the kernel's")
         print(f"repeat {i + 1}: kernel {k1['kernel_rate']:.0f} / {k2['kernel_rate']:.0f} cases/s "
               f"(1 / 2 processes; 2: {before['kernel_rate']:.0f} before the sweep, "
               f"{after['kernel_rate']:.0f} after; {k2['n']} cases), whole cases in-process "
@@ -257,6 +268,9 @@ def ratio_section(n_cases: int, workers: int, every: int, repeat: int, tmp: Path
           f"{spread([1e3 * sw['cpu'] / sw['cases'] for _, _, sw in runs], '.2f')}; kernel CPU "
           f"per case [ms]: {spread([1e3 * k2['kernel_cpu'] for _, k2, _ in runs], '.2f')}; "
           f"kernel share of the sweep's CPU: {spread([100 * x for x in share])}%")
+    _figures.note(f"kernel share of the sweep's CPU: {spread([100 * x for x in share])} %; "
+                  f"sweep CPU a case (all processes) "
+                  f"{spread([1e3 * sw['cpu'] / sw['cases'] for _, _, sw in runs], '.2f')} ms")
 
 
 def main() -> None:
@@ -269,7 +283,9 @@ def main() -> None:
     ap.add_argument("--kernel-every", type=int, default=1,
                     help="ratio: time the kernel alone on every n-th case only")
     ap.add_argument("--kernel-part", help=argparse.SUPPRESS)  # "i/k": one process of ratio
+    _figures.add_json_option(ap)
     args = ap.parse_args()
+    _figures.start("bench_sweep", "Parameter sweeps")
     if args.kernel_part:
         i, k = map(int, args.kernel_part.split("/"))
         print(json.dumps(kernel_part(args.cases, i, k, args.kernel_every)))
@@ -313,6 +329,9 @@ def main() -> None:
         for label, r in rows:
             print(f"{label:<44} {r['wall']:>9.2f} {r['run']:>12.2f} {r['rate_wall']:>15.1f} "
                   f"{r['rate_run']:>18.1f}")
+            _figures.note(f"{label}: {r['wall']:.2f} s wall, {r['rate_wall']:.1f} cases/s "
+                          f"end to end, {r['rate_run']:.1f} while running")
+    _figures.write(args.json)
 
 
 if __name__ == "__main__":

@@ -22,9 +22,7 @@ Run from the repository root::
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import shlex
 import sys
 import time
 from pathlib import Path
@@ -34,6 +32,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _figures
 from _environment import load
 from _memory import keep_freed_memory
 from bench_opensees import shear_pair_model
@@ -103,8 +102,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--storeys", type=int, default=100, help="storeys of the stepped pair")
     ap.add_argument("--setup-storeys", type=int, default=50,
                     help="storeys of the pair whose set-up is timed (50)")
-    ap.add_argument("--json", type=Path, default=None, metavar="PATH",
-                    help="also write the figures as JSON (benchmarks/run_all.py)")
+    _figures.add_json_option(ap)
     args = ap.parse_args(argv)
     keep_freed_memory()
     motion = el_centro()
@@ -152,37 +150,26 @@ def main(argv: list[str] | None = None) -> int:
     print(f"displacements, modal against dense: max |Δu| / max |u| = {agree:.1e}")
     print(load())
 
-    if args.json is not None:
-        command = "python benchmarks/bench_tall.py " + " ".join(
-            shlex.quote(a) for a in (sys.argv[1:] if argv is None else argv))
-        doc = {
-            "benchmark": "bench_tall", "section": "Tall buildings: exact steps from the modes",
-            "command": command.strip(),
-            "figures": [
-                {"what": f"{args.setup_storeys}-storey pair: exact-step set-up (modal)",
-                 "pounding": min(s_modal),
-                 "peer": "the same set-up from matrix exponentials (scipy expm, Van Loan)",
-                 "peer_time": min(s_dense), "ratio": min(s_dense) / min(s_modal),
-                 "ratio_meaning": "expm / modal", "goal": f"<= {SETUP_GOAL_S:g} s",
-                 "met": min(s_modal) <= SETUP_GOAL_S,
-                 "spread": f"best of {args.rounds} alternating rounds; ratios "
-                           f"{spread(ratios, '{:.1f}')}x"},
-                {"what": f"{n}-storey pair, no contact, {motion.name} {args.duration:g} s at "
-                         f"{1e3 * args.dt:g} ms: one exact step",
-                 "pounding": min(t_modal),
-                 "peer": "dense propagator (every block from expm, same run)",
-                 "peer_time": min(t_dense), "ratio": min(t_dense) / min(t_modal),
-                 "ratio_meaning": "dense / modal", "goal": "<= 10 µs",
-                 "met": min(t_modal) <= STEP_GOAL_S,
-                 "spread": f"best of {args.repeat} runs x {args.rounds} alternating rounds; "
+    _figures.start("bench_tall", "Tall buildings: exact steps from the modes")
+    _figures.figure(f"{args.setup_storeys}-storey pair: exact-step set-up (modal)",
+                    min(s_modal),
+                    "the same set-up from matrix exponentials (scipy expm, Van Loan)",
+                    min(s_dense), ratio_meaning="peer / pounding (expm / modal)",
+                    goal=f"<= {SETUP_GOAL_S:g} s", met=min(s_modal) <= SETUP_GOAL_S,
+                    spread=f"best of {args.rounds} alternating rounds; ratios "
+                           f"{spread(ratios, '{:.1f}')}x")
+    _figures.figure(f"{n}-storey pair, no contact, {motion.name} {args.duration:g} s at "
+                    f"{1e3 * args.dt:g} ms: one exact step", min(t_modal),
+                    "dense propagator (every block from expm, same run)", min(t_dense),
+                    ratio_meaning="peer / pounding (dense / modal)", goal="<= 10 µs",
+                    met=min(t_modal) <= STEP_GOAL_S,
+                    spread=f"best of {args.repeat} runs x {args.rounds} alternating rounds; "
                            f"ratios {spread(step_ratios, '{:.2f}')}x",
-                 "unit_note": "seconds per grid step (kernel time / steps)"}],
-            "notes": [(f"modal and dense displacements agree to {agree:.1e} of the largest "
-                      f"(both exact; the difference is round-off accumulated over "
-                      f"{u_m.shape[0] - 1} steps)")],
-        }
-        args.json.write_text(json.dumps(doc, indent=1) + "\n")
-        print(f"wrote {args.json}")
+                    unit_note="seconds per grid step (kernel time / steps)")
+    _figures.note(f"modal and dense displacements agree to {agree:.1e} of the largest (both "
+                  f"exact; the difference is round-off accumulated over {u_m.shape[0] - 1} "
+                  "steps)")
+    _figures.write(args.json)
     return 0
 
 
