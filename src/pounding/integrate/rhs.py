@@ -62,14 +62,20 @@ their slope [m/s³], their values at the end of the RK step being taken and at t
 being evaluated [m/s²]."""
 
 NRT_FREE: dict[str, Any] = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
-                                _nrt=False)
+                                _nrt=False, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 """Options of the kernel's working functions. They allocate nothing (the scratch comes from
 :func:`pounding.integrate.kernel.integrate_chunk`), so they run with numba's
 reference-counting runtime off: no array passed to a call costs an atomic increment and
 decrement. Sums are never reassociated (``fastmath`` allows only fused multiply-add), so
-results do not depend on how arrays happen to be aligned in memory."""
+results do not depend on how arrays happen to be aligned in memory. Only other compiled
+functions call them, so numba builds no wrapper to call them from Python (a cold compile
+spent ~3 s of CPU on those wrappers)."""
 
-INLINE: dict[str, Any] = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+ENTRY: dict[str, Any] = {**NRT_FREE, "no_cpython_wrapper": False, "no_cfunc_wrapper": False}
+"""Options of the kernel's entry point (:func:`pounding.integrate.kernel.integrate_chunk`):
+those of the working functions, with the wrapper that Python calls it through."""
+
+INLINE: dict[str, Any] = {**NRT_FREE, "forceinline": True}
 """Options of the functions numba inlines where they are called: the right-hand side, inside
 the Dormand–Prince step (a call would pass some twenty arrays as flattened structures, 35 ns
 each time), and parts of the step loop that have a single call site. numba's inlining copies
@@ -423,8 +429,10 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
 
 @njit(**NRT_FREE)
 def deriv_call(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
-    """:func:`deriv`, called: where the step loop needs f at a grid point or an event."""
-    deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row)
+    """:func:`deriv`, called: where the step loop needs f at a grid point or an event.
+    (``int(row)``: the row a plain integer, not the literal 0 of the callers, so that
+    :func:`deriv` is compiled once, for both its call sites.)"""
+    deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, int(row))
 
 
 @njit(**NRT_FREE)
