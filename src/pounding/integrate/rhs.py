@@ -76,12 +76,13 @@ ENTRY: dict[str, Any] = {**NRT_FREE, "no_cpython_wrapper": False, "no_cfunc_wrap
 those of the working functions, with the wrapper that Python calls it through."""
 
 INLINE: dict[str, Any] = {**NRT_FREE, "forceinline": True}
-"""Options of the functions numba inlines where they are called: the right-hand side, inside
+"""Options of the functions inlined where they are called: the right-hand side, inside
 the Dormand–Prince step (a call would pass some twenty arrays as flattened structures, 35 ns
-each time), and parts of the step loop that have a single call site. numba's inlining copies
-and re-types the function at every call site, so small helpers (:func:`gap_row`, …) are
-plain functions instead: LLVM inlines them without that cost (making them so cut a fresh
-compile from 31 s to 26 s, with the kernel's time unchanged within the noise)."""
+each time), and parts of the step loop. numba compiles each once and LLVM inlines it at
+every call site (``forceinline``: LLVM's ``alwaysinline``); numba's own inlining
+(``inline="always"``) copied and re-typed the function at every call site, a few seconds
+more of a cold compile for the same machine code (results bit-identical). Small helpers
+(:func:`gap_row`, …) are plain functions, which LLVM inlines where it pays."""
 
 
 @njit(**NRT_FREE)
