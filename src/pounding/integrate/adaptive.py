@@ -343,7 +343,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 jerk(x, kx[0], fl, ct, el, committed, sstate, lin, work, jk)
                 jerk(y1, ks[6], fl, ct, el, committed, sstate, lin, work, jk1)
             track_step(t_k + s, h_acc, n, below, x, kx[0, n:], aabs0, jk, y1, ks[6, n:], aabs1,
-                       jk1, pk, bool(near))  # (bool: not compiled for literal False too)
+                       jk1, pk, near)
             for i in range(m):
                 x[i] = y1[i]
             if searched_y1:

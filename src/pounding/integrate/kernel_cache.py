@@ -43,12 +43,12 @@ they were, so numba's own check would not see it)."""
 
 STAMP_FILE = "pounding-kernel-sources.stamp"
 
-COLD_COMPILE_S: float = 50.0
+COLD_COMPILE_S: float = 44.0
 """Seconds (CPU, one core) of a first ``pounding run`` on an empty numba cache, the solver's
 kernel compiled, on the project's 2-core machine (``benchmarks/bench_cold.py``, 2026-11-28:
-51.5 s at load 6.5–8, where the kernel before the compile options of rhs.NRT_FREE / INLINE
-took 61.1 s in the same quarter hour, and 55.5 s at load 3): what the progress line quotes
-while it compiles."""
+43.8 s at load 1, where the kernel with Python wrappers on every function (before
+rhs.NRT_FREE's ``no_cpython_wrapper``) took 49.7 s the minute after): what the progress
+line quotes while it compiles."""
 
 
 def sources_stamp(modules: list[ModuleType]) -> str:

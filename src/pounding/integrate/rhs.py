@@ -69,20 +69,22 @@ reference-counting runtime off: no array passed to a call costs an atomic increm
 decrement. Sums are never reassociated (``fastmath`` allows only fused multiply-add), so
 results do not depend on how arrays happen to be aligned in memory. Only other compiled
 functions call them, so numba builds no wrapper to call them from Python (a cold compile
-spent ~3 s of CPU on those wrappers)."""
+spent ~6 s of its ~50 s of CPU on those wrappers)."""
 
 ENTRY: dict[str, Any] = {**NRT_FREE, "no_cpython_wrapper": False, "no_cfunc_wrapper": False}
 """Options of the kernel's entry point (:func:`pounding.integrate.kernel.integrate_chunk`):
 those of the working functions, with the wrapper that Python calls it through."""
 
-INLINE: dict[str, Any] = {**NRT_FREE, "forceinline": True}
-"""Options of the functions inlined where they are called: the right-hand side, inside
+INLINE: dict[str, Any] = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
+"""Options of the functions numba inlines where they are called: the right-hand side, inside
 the Dormand–Prince step (a call would pass some twenty arrays as flattened structures, 35 ns
-each time), and parts of the step loop. numba compiles each once and LLVM inlines it at
-every call site (``forceinline``: LLVM's ``alwaysinline``); numba's own inlining
-(``inline="always"``) copied and re-typed the function at every call site, a few seconds
-more of a cold compile for the same machine code (results bit-identical). Small helpers
-(:func:`gap_row`, …) are plain functions, which LLVM inlines where it pays."""
+each time), and parts of the step loop that have a single call site. numba's inlining copies
+and re-types the function at every call site, so small helpers (:func:`gap_row`, …) are
+plain functions instead: LLVM inlines them without that cost (making them so cut a fresh
+compile from 31 s to 26 s, with the kernel's time unchanged within the noise). LLVM's own
+forced inlining (numba's ``forceinline``) instead compiled a cold start ~10 % faster with
+results bit-identical, but the 10-storey pair's warm kernel ran 2× slower
+(``benchmarks/bench_opensees.py --sections compare``, 2026-11-28)."""
 
 
 @njit(**NRT_FREE)
@@ -430,10 +432,8 @@ def deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
 
 @njit(**NRT_FREE)
 def deriv_call(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row):
-    """:func:`deriv`, called: where the step loop needs f at a grid point or an event.
-    (``int(row)``: the row a plain integer, not the literal 0 of the callers, so that
-    :func:`deriv` is compiled once, for both its call sites.)"""
-    deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, int(row))
+    """:func:`deriv`, called: where the step loop needs f at a grid point or an event."""
+    deriv(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, row)
 
 
 @njit(**NRT_FREE)
