@@ -63,12 +63,12 @@ from pounding.integrate.layout import (
     WS_I_SIZE,
 )
 from pounding.integrate.rhs import (
+    ENTRY,
     G_A0,
     G_A1,
     G_NOW,
     G_SLOPE,
     INLINE,
-    NRT_FREE,
     deriv_call,
     first_unknown_law,
     gap_row,
@@ -80,7 +80,7 @@ __all__ = ["ENERGY_COLUMNS", "IMP_COLUMNS", "PK_COLUMNS", "WS_F_SIZE", "WS_I_SIZ
            "integrate_chunk"]
 
 
-@njit(**NRT_FREE)
+@njit(**ENTRY)
 def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
     """Advance grid steps ``k0 … k1−1`` (times ``k·dt``), writing outputs at ``k+1``; stop
     early at the first grid point after ``ws_i[I_CALL_STEPS]`` RK steps in all, or right

@@ -49,10 +49,12 @@ they were, so numba's own check would not see it)."""
 
 STAMP_FILE = "pounding-kernel-sources.stamp"
 
-COLD_COMPILE_S: float = 55.0
+COLD_COMPILE_S: float = 44.0
 """Seconds (CPU, one core) of a first ``pounding run`` on an empty numba cache, the solver's
-kernel compiled, on the project's 2-core machine at load 3 (``benchmarks/bench_cold.py``,
-2026-11-28; 71 s at load 11): what the progress line quotes while it compiles."""
+kernel compiled, on the project's 2-core machine (``benchmarks/bench_cold.py``, 2026-11-28:
+43.8 s at load 1, where the kernel with Python wrappers on every function (before
+rhs.NRT_FREE's ``no_cpython_wrapper``) took 49.7 s the minute after): what the progress
+line quotes while it compiles."""
 
 
 def sources_stamp(modules: list[ModuleType]) -> str:

@@ -62,12 +62,18 @@ their slope [m/s³], their values at the end of the RK step being taken and at t
 being evaluated [m/s²]."""
 
 NRT_FREE: dict[str, Any] = dict(cache=True, error_model="numpy", nogil=True, fastmath={"contract"},
-                                _nrt=False)
+                                _nrt=False, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 """Options of the kernel's working functions. They allocate nothing (the scratch comes from
 :func:`pounding.integrate.kernel.integrate_chunk`), so they run with numba's
 reference-counting runtime off: no array passed to a call costs an atomic increment and
 decrement. Sums are never reassociated (``fastmath`` allows only fused multiply-add), so
-results do not depend on how arrays happen to be aligned in memory."""
+results do not depend on how arrays happen to be aligned in memory. Only other compiled
+functions call them, so numba builds no wrapper to call them from Python (a cold compile
+spent ~6 s of its ~50 s of CPU on those wrappers)."""
+
+ENTRY: dict[str, Any] = {**NRT_FREE, "no_cpython_wrapper": False, "no_cfunc_wrapper": False}
+"""Options of the kernel's entry point (:func:`pounding.integrate.kernel.integrate_chunk`):
+those of the working functions, with the wrapper that Python calls it through."""
 
 INLINE: dict[str, Any] = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
 """Options of the functions numba inlines where they are called: the right-hand side, inside
@@ -75,7 +81,10 @@ the Dormand–Prince step (a call would pass some twenty arrays as flattened str
 each time), and parts of the step loop that have a single call site. numba's inlining copies
 and re-types the function at every call site, so small helpers (:func:`gap_row`, …) are
 plain functions instead: LLVM inlines them without that cost (making them so cut a fresh
-compile from 31 s to 26 s, with the kernel's time unchanged within the noise)."""
+compile from 31 s to 26 s, with the kernel's time unchanged within the noise). LLVM's own
+forced inlining (numba's ``forceinline``) instead compiled a cold start ~10 % faster with
+results bit-identical, but the 10-storey pair's warm kernel ran 2× slower
+(``benchmarks/bench_opensees.py --sections compare``, 2026-11-28)."""
 
 
 @njit(**NRT_FREE)
