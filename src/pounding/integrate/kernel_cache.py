@@ -49,12 +49,11 @@ they were, so numba's own check would not see it)."""
 
 STAMP_FILE = "pounding-kernel-sources.stamp"
 
-COLD_COMPILE_S: float = 44.0
+COLD_COMPILE_S: float = 56.0
 """Seconds (CPU, one core) of a first ``pounding run`` on an empty numba cache, the solver's
 kernel compiled, on the project's 2-core machine (``benchmarks/bench_cold.py``, 2026-11-28:
-43.8 s at load 1, where the kernel with Python wrappers on every function (before
-rhs.NRT_FREE's ``no_cpython_wrapper``) took 49.7 s the minute after): what the progress
-line quotes while it compiles."""
+55.6 s at load 1.4 with the Maxwell links' and tall buildings' exact steps in the kernel;
+43.8 s before they joined it): what the progress line quotes while it compiles."""
 
 
 def sources_stamp(modules: list[ModuleType]) -> str:
