@@ -173,8 +173,10 @@ def commit() -> str:
     try:
         head = subprocess.run(["git", "-C", str(ROOT), "log", "-1", "--format=%h %cs"],
                               capture_output=True, text=True, check=False).stdout.strip()
+        # (run_all's own outputs, the stored figures and the page, are not the code measured)
         dirty = subprocess.run(["git", "-C", str(ROOT), "status", "--porcelain",
-                                "--untracked-files=no"], capture_output=True,
+                                "--untracked-files=no", "--", ".", ":!benchmarks/results",
+                                ":!docs/performance.md"], capture_output=True,
                                text=True, check=False).stdout.strip()
     except OSError:
         return "unknown"
