@@ -97,6 +97,24 @@ def test_summary_gives_a_deck_no_storey(printed) -> None:
     assert set(summary["peak_displacement_m"]) == {"B1F1", "B2F1"}  # the decks' own peaks
     pier = summary["bridge"]["frames"][0]["piers"][0]
     assert pier["ductility"] > 1 and abs(pier["residual_drift_m"]) > 0
+    for frame in summary["buildings"]:  # nor frame by frame
+        for row in frame["storeys"]:
+            assert "peak_displacement_m" in row and not {
+                "peak_drift_m", "peak_drift_ratio", "peak_storey_shear_N"} & set(row), row
+
+
+def test_a_transverse_bridge_gives_its_decks_no_storey_either() -> None:
+    """Across the axis the frames are no less bridge frames (the model has no ``bridge``:
+    keys are stops): no deck drift ratio, no residual drift of 0 for a deck."""
+    from pounding.config import load_config
+    from pounding.integrate import simulate
+    from pounding.result.summary import summarize
+
+    model, motion, solver = load_config(EXAMPLE.parent / "bridge_transverse.toml").build()
+    summary = summarize(simulate(model, motion, **{**solver, "duration": 3.0}))
+    assert summary["peak_drift_ratio"] == {} and summary["peak_storey_shear_N"] == {}
+    assert not summary.get("residual_drift_m") and not summary.get("ductility_demand")
+    assert summary["peak_displacement_m"]  # the decks' own peaks stay
 
 
 def test_run_writes_the_bridge_figures(printed) -> None:

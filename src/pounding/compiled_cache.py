@@ -47,8 +47,10 @@ def cached_here(dispatcher: object) -> bool:
 def will_compile(dispatcher: object) -> bool:
     """True if the first call of ``dispatcher`` in this process compiles it: not loaded yet
     (no signature in this process) and not in numba's cache for this machine
-    (:func:`cached_here`)."""
-    return not getattr(dispatcher, "signatures", ()) and not cached_here(dispatcher)
+    (:func:`cached_here`). False for a plain function (numba's JIT disabled)."""
+    if not hasattr(dispatcher, "signatures"):  # a plain function (NUMBA_DISABLE_JIT=1)
+        return False
+    return not dispatcher.signatures and not cached_here(dispatcher)
 
 
 def tell_compiling_to(listener: Callable[[str, float], None] | None) -> None:

@@ -60,3 +60,11 @@ def test_only_a_kernel_that_will_compile_is_told_and_only_to_a_listener() -> Non
     finally:
         tell_compiling_to(None)
     assert heard == [("fresh", 3.0)]
+
+
+def test_a_plain_function_never_compiles() -> None:
+    """Under NUMBA_DISABLE_JIT=1 a kernel is a plain function: nothing to say (it was told
+    on every call)."""
+    def plain() -> None: ...
+
+    assert not will_compile(plain)

@@ -114,6 +114,22 @@ def test_the_verdict_says_it_in_one_line(case):
     assert math.isclose(data["levels"][1]["required_mm"], 57.7766, rel_tol=1e-4)
 
 
+def test_the_duration_suggested_is_one_that_passes():
+    """The start of a record's strong shaking rounded up, not to 3 digits (13.2418 s was
+    suggested as 13.2 s, then refused)."""
+    from pounding.ground_motion import GroundMotion
+    from pounding.studies.codes.time_history import check_duration
+
+    t = np.arange(0.0, 30.0, 0.01)
+    record = GroundMotion(0.01, np.where(t > 12.25, np.sin(2 * np.pi * t), 0.0), name="late")
+    start = record.arias_time(0.05)
+    with pytest.raises(ValueError, match="give at least") as refused:
+        check_duration(10.0, [record])
+    suggested = float(str(refused.value).split("give at least ")[1].split(" s")[0])
+    assert start <= suggested < start + 0.01
+    assert check_duration(suggested, [record]) == suggested
+
+
 def test_factors_outside_the_suites_limits_are_flagged(case):
     """A factor outside 0.25–4 (pounding suite's flag, spectra.scaling.DEFAULT_LIMITS) adds
     one caution line and marks the record in the JSON; inside, nothing is said."""

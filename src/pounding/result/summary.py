@@ -46,7 +46,7 @@ def summarize(r: Response) -> dict[str, Any]:
     floor = r.model.is_floor
     # a base slab's "storey" is its bearing (bearing_summary); a bridge deck stands on piers
     # and bearings, whose drifts and forces are the bridge block's (bridge_summary)
-    storey = floor & ~r.is_bearing & (r.model.bridge is None)
+    storey = floor & ~r.is_bearing & ~bridge_decks(r)
     contacts = r.model.contacts
 
     def by_floor(values: NDArray[np.float64]) -> dict[str, float]:
@@ -140,6 +140,16 @@ def rotation_summary(r: Response) -> dict[str, Any]:
             "peak_floor_rotation_time_s": {lb: t for _, _, lb, _, t in rows}}
 
 
+def bridge_decks(r: Response) -> NDArray[np.bool_]:
+    """True for every DOF of a bridge frame (:class:`~pounding.structure.bridge.frame.
+    BridgeFrame`, along or across the axis): its deck has no storey; its piers' and
+    bearings' peaks are the ``bridge`` block's."""
+    from pounding.structure.bridge.frame import BridgeFrame
+
+    return np.concatenate([np.full(bl.n, isinstance(bl, BridgeFrame))
+                           for bl in r.model.buildings])
+
+
 def building_summary(r: Response) -> list[dict[str, Any]]:
     """Per building: its natural periods and, storey by storey (floors by elevation; a
     matrix building's DOF label as ``label``), the peaks and times. A base-isolated
@@ -160,6 +170,9 @@ def building_summary(r: Response) -> list[dict[str, Any]]:
                   ("peak_storey_shear_time_s", r.peak_storey_shear_time),
                   ("peak_abs_acceleration_m_s2", r.peak_abs_acceleration),
                   ("peak_abs_acceleration_time_s", r.peak_abs_acceleration_time))
+    storey_keys = ("peak_drift_m", "peak_drift_time_s", "peak_drift_ratio",
+                   "peak_storey_shear_N", "peak_storey_shear_time_s")
+    decks = bridge_decks(r)
     plans = {ps.building: ps for ps in plan_storeys(r)}
     bearings = bearing_peaks(r)
     bearing = r.is_bearing
@@ -178,7 +191,8 @@ def building_summary(r: Response) -> list[dict[str, Any]]:
                 row["floor"] = f"F{j + 1}"  # floor 1 is the base slab
             row.update({"floor_elevation_m": rounded_length(bl.floor_levels[j]),
                         "height_m": rounded_length(bl.heights[j])})
-            row.update({key: float(v[off + j]) for key, v in quantities})
+            row.update({key: float(v[off + j]) for key, v in quantities
+                        if not (decks[off + j] and key in storey_keys)})
             if ps is not None:
                 f = j // 3
                 row.update({
@@ -254,16 +268,17 @@ def bearing_summary(r: Response) -> dict[str, Any]:
 def inelastic_summary(r: Response) -> dict[str, Any]:
     out: dict[str, Any] = {}
     labels = r.model.dof_labels()
-    deck = r.model.bridge is not None  # (its piers' ductility and residual drift: bridge)
+    deck = bridge_decks(r)  # (its piers' ductility and residual drift: the bridge block)
     if r.model.is_inelastic:
         out["hysteretic_energy_J"] = float(r.energy[-1, 6])
-        if not deck:
-            out["ductility_demand"] = {lb: float(v) for lb, v in zip(labels, r.ductility)
-                                       if np.isfinite(v)}
-    if (r.model.is_inelastic or r.model.yielding_frames) and not deck:
-        out["residual_drift_m"] = {lb: float(v) for lb, v, bearing, floor in
+        if not deck.all():
+            out["ductility_demand"] = {lb: float(v) for lb, v, d in
+                                       zip(labels, r.ductility, deck) if np.isfinite(v) and not d}
+    if (r.model.is_inelastic or r.model.yielding_frames) and not deck.all():
+        out["residual_drift_m"] = {lb: float(v) for lb, v, bearing, floor, d in
                                    zip(labels, r.residual_drift, r.is_bearing,
-                                       r.model.is_floor) if floor and not bearing}
+                                       r.model.is_floor, deck) if floor and not bearing
+                                   and not d}
     struck = [c for c in r.model.contacts if c.struck is not None]
     if struck:
         pcs = r.peak_column_shear

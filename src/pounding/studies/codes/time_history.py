@@ -29,6 +29,7 @@ Units: m, s, N inside; :meth:`TimeHistoryCheck.to_dict` states its units (mm, kN
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields
 from typing import Any
@@ -62,10 +63,11 @@ def check_duration(duration: float, motions: Sequence[Any], name: str = "duratio
     starts = [float(m.arias_time(STRONG_SHAKING[0])) for m in motions]
     if starts and duration < max(starts):
         i = int(np.argmax(starts))
+        enough = math.ceil(starts[i] * 100.0) / 100.0  # (rounded up: a value that passes)
         raise ValueError(f"{name}: {duration:g} s ends before the strong shaking of "
                          f"{motions[i].name} begins ({100 * STRONG_SHAKING[0]:g} % of its "
-                         f"Arias intensity at {starts[i]:.3g} s); give at least "
-                         f"{starts[i]:.3g} s, or leave it out to run each record whole")
+                         f"Arias intensity at {starts[i]:.4g} s); give at least "
+                         f"{enough:g} s, or leave it out to run each record whole")
     return duration
 
 
