@@ -144,9 +144,12 @@ def bridge_decks(r: Response) -> NDArray[np.bool_]:
     """True for every DOF of a bridge frame (:class:`~pounding.structure.bridge.frame.
     BridgeFrame`, along or across the axis): its deck has no storey; its piers' and
     bearings' peaks are the ``bridge`` block's."""
-    from pounding.structure.bridge.frame import BridgeFrame
+    import sys
 
-    return np.concatenate([np.full(bl.n, isinstance(bl, BridgeFrame))
+    # (a model with a bridge frame has imported its module: a run of buildings need not)
+    frames = sys.modules.get("pounding.structure.bridge.frame")
+    return np.concatenate([np.full(bl.n, frames is not None
+                                   and isinstance(bl, frames.BridgeFrame))
                            for bl in r.model.buildings])
 
 
