@@ -202,8 +202,9 @@ def test_the_parameters_row_reads_as_numbers_with_their_names():
     from pounding.report.code_check import parameters_text
 
     params = {"sds_g": 1.0, "s1_g": None, "procedure": "elf", "same_property": True,
+              "records": 7, "samples": 40000,
               "buildings": {"office": {"T_s": 0.9499999999999983, "C_s": 0.07894736842105277,
                                        "C_s_by": "eq. 12.8-3", "W_kN": 34323.275}}}
     assert parameters_text(params) == (
-        "sds_g = 1, procedure = elf, same_property = True, office (T_s = 0.95, "
-        "C_s = 0.07895, C_s_by = eq. 12.8-3, W_kN = 34,323)")
+        "sds_g = 1, procedure = elf, same_property = True, records = 7, samples = 40,000, "
+        "office (T_s = 0.95, C_s = 0.07895, C_s_by = eq. 12.8-3, W_kN = 34,323)")

@@ -186,12 +186,14 @@ def _run_closing(run: Any, contacts: list[str]) -> dict[str, tuple[float, float,
 
 def parameters_text(params: dict[str, Any]) -> str:
     """The check's parameters as one readable line: numbers to 4 significant digits (whole
-    ones from 10,000 up, with thousands separators), a
+    ones from 10,000 up, and every integer, with thousands separators), a
     building's own values (ASCE 7-22's ELF: T, C_s, …) in brackets after its name, unset
     ones (None) left out: ``sds_g = 1, …, office (T_s = 0.95, C_s = 0.07895, …)``."""
     def value(v: Any) -> str:
-        if isinstance(v, bool) or not isinstance(v, float):
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
             return str(v)
+        if isinstance(v, int):
+            return f"{v:,}"
         return f"{v:,.0f}" if abs(v) >= 1e4 else f"{v:.4g}"
 
     parts = []
