@@ -81,57 +81,6 @@ def two_floor_link_step(p, n, x, x1, fops, g0, g1, a0, a1):
 
 
 @njit(**INLINE)
-def link_block_step(p, nb, n, rows, x, x1, acc, fops, g0, g1, a0, a1):
-    """The sweep of the exact step of a block of floors ``p … p + nb − 1`` whose columns hold
-    the links' dissipation form (``rows`` numbers each, :class:`pounding.integrate.
-    propagator.FreeStep`), under the first ground component: ``acc = [Φ_b z + γ, w_in · z,
-    Q z …]``, writes ``x1`` of its floors and returns its two input-energy terms of that
-    component (the links' energy from ``acc``: :func:`block_link_work`).
-
-    Two floors' four columns a pass over the rows: each row takes the same products in the
-    same order as one floor a pass (so the same numbers, bit for bit), with half the passes
-    — each pass has a fixed cost (its loop's set-up and remainder), which the long columns
-    of a linked block pay 2 n_b times a step: measured 650 → 480 ns a step for the
-    10-storey pair's block of 20 floors (84 rows), 2026-11-28, load 4."""
-    nb2 = 2 * nb
-    for ir in range(nb):
-        acc[ir] = g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1
-        acc[nb + ir] = g0[n + p + ir, 0] * a0 + g1[n + p + ir, 0] * a1
-    for ir in range(nb2, rows):
-        acc[ir] = 0.0
-    sweep_floor_pairs(p, nb, n, rows, x, acc, fops)
-    for ir in range(nb):
-        x1[p + ir] = acc[ir]
-        x1[n + p + ir] = acc[nb + ir]
-    return acc[nb2], acc[nb2 + 1]
-
-
-@njit(**INLINE)
-def sweep_floor_pairs(p, nb, n, rows, x, acc, fops):
-    """``acc[:rows] += Σ_j fops[p + j, :rows] u_j + fops[n + p + j, :rows] u̇_j`` over the
-    floors j of the block, in that order, two floors a pass over the rows (the same sums as
-    one floor a pass: ``acc + a u_j + b u̇_j`` then the next floor's, left to right)."""
-    j = 0
-    while j + 1 < nb:
-        xu = x[p + j]
-        xv = x[n + p + j]
-        yu = x[p + j + 1]
-        yv = x[n + p + j + 1]
-        fa = fops[p + j]
-        fb = fops[n + p + j]
-        fc = fops[p + j + 1]
-        fd = fops[n + p + j + 1]
-        for ir in range(rows):
-            acc[ir] = acc[ir] + fa[ir] * xu + fb[ir] * xv + fc[ir] * yu + fd[ir] * yv
-        j += 2
-    if j < nb:
-        xu = x[p + j]
-        xv = x[n + p + j]
-        for ir in range(rows):
-            acc[ir] = acc[ir] + fops[p + j, ir] * xu + fops[n + p + j, ir] * xv
-
-
-@njit(**INLINE)
 def block_link_work(p, nb, n, ng, x, acc, ag, k):
     """The energy the links' dashpots folded into C dissipate over the exact step from grid
     point k in the block of floors ``p … p + nb − 1``, less its terms in the ground alone

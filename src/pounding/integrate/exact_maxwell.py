@@ -17,7 +17,6 @@ from __future__ import annotations
 from numba import njit
 
 from pounding.devices.laws import MAXWELL
-from pounding.integrate.exact_links import sweep_floor_pairs
 from pounding.integrate.layout import PK_A
 from pounding.integrate.peaks import row_jerk, row_snap, track_floor, update_quintic
 from pounding.integrate.rhs import INLINE, NRT_FREE, ground_rest
@@ -50,32 +49,16 @@ def maxwell_block_step(b, p, nb, n, mxb, el, x, x1, acc, fops, g0, g1, a0, a1):
         acc[2 * nb + l] = g0[gi, 0] * a0 + g1[gi, 0] * a1
     for ir in range(sb, rows):
         acc[ir] = 0.0
-    # (two floors a pass, then four links a pass: the same sums in the same order as one
-    # column a pass, with fewer passes, each of which has a fixed cost)
-    sweep_floor_pairs(p, nb, n, rows, x, acc, fops)
-    lz = 0
-    while lz + 3 < mb:
-        i0 = 2 * n + el.z_index[mxb[b, 1 + lz]]
-        i1 = 2 * n + el.z_index[mxb[b, 2 + lz]]
-        i2 = 2 * n + el.z_index[mxb[b, 3 + lz]]
-        i3 = 2 * n + el.z_index[mxb[b, 4 + lz]]
-        z0 = x[i0]
-        z1 = x[i1]
-        z2 = x[i2]
-        z3 = x[i3]
-        f0 = fops[i0]
-        f1 = fops[i1]
-        f2 = fops[i2]
-        f3 = fops[i3]
+    for j in range(nb):
+        xu = x[p + j]
+        xv = x[n + p + j]
         for ir in range(rows):
-            acc[ir] = acc[ir] + f0[ir] * z0 + f1[ir] * z1 + f2[ir] * z2 + f3[ir] * z3
-        lz += 4
-    while lz < mb:
-        gi = 2 * n + el.z_index[mxb[b, 1 + lz]]
+            acc[ir] = acc[ir] + fops[p + j, ir] * xu + fops[n + p + j, ir] * xv
+    for l in range(mb):
+        gi = 2 * n + el.z_index[mxb[b, 1 + l]]
         xz = x[gi]
         for ir in range(rows):
             acc[ir] = acc[ir] + fops[gi, ir] * xz
-        lz += 1
     e = 0.0
     q = sb + 2  # where the dissipation form's numbers start
     for j in range(nb):

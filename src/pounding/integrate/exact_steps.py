@@ -31,7 +31,6 @@ from pounding.integrate.exact_links import (
     block_link_work,
     floor_rel_acc,
     ground_quadratic,
-    link_block_step,
     restrainer_taut_possible,
     two_floor_link_step,
 )
@@ -239,13 +238,6 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
                     lin_i0 += w0
                     lin_i1 += w1
                     e_links += e_b
-                    continue
-                if rows > nb2 + 2:
-                    # (links' dashpots in the block: exact_links)
-                    w0, w1 = link_block_step(p, nb, n, rows, x, x1, acc, fops, g0, g1, a0, a1)
-                    lin_i0 += w0
-                    lin_i1 += w1
-                    e_links += block_link_work(p, nb, n, ng, x, acc, ag, k)
                     continue
                 for ir in range(nb):
                     acc[ir] = g0[p + ir, 0] * a0 + g1[p + ir, 0] * a1
