@@ -145,6 +145,20 @@ def test_the_link_force_history_is_its_law_on_the_motion():
     assert np.abs(res.link_force - f).max() <= 1e-9 * np.abs(f).max()
 
 
+def test_the_peak_link_force_is_the_largest_force_of_each_link_in_its_history():
+    """``link_peak_force`` (read column by column) against a plain Python maximum of each
+    link's |F| over the output steps, for three links of three laws, bit for bit."""
+    blds = [ShearBuilding.uniform(3, 3e5, 4e8), ShearBuilding.uniform(3, 2e5, 3e8)]
+    links = [Link(("B1F1", "B2F1"), "viscous", c=3e5),
+             Link(("B1F2", "B2F2"), "kelvin", c=2e5, k=5e6),
+             Link(("B1F3", "B2F3"), "maxwell", c=4e5, k=2e7)]
+    res = simulate(PoundingModel(blds, [0.01], KV, devices=links), el_centro().trimmed(4.0))
+    f = res.link_force
+    expected = [max(abs(float(v)) for v in f[:, j]) for j in range(f.shape[1])]
+    assert res.link_peak_force.tolist() == expected
+    assert min(expected) > 0.0
+
+
 def test_fluid_viscous_damper_with_pounding_matches_the_scipy_reference():
     # (α = 0.6: with smaller α the damper locks the floors together for long stretches,
     # where its slope c α |ḋ|^(α−1) makes the equations stiff and the explicit reference
