@@ -44,7 +44,6 @@ from pounding.integrate.exact_maxwell import (
     maxwell_stored,
     track_exact_step_maxwell,
 )
-from pounding.integrate.exact_uncoupled import is_uncoupled, uncoupled_run
 from pounding.integrate.layout import (
     E_CONTACT_STORED,
     E_CONTACT_WORK,
@@ -189,9 +188,6 @@ def free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc):
             if fmodal[b] != 0:
                 modal_enter(blk[b], blk[b + 1] - blk[b], x, fmodes, qm)
     qm[0, n] = -1.0
-    if is_uncoupled(blk, fmodal, mxb, frows, n, bw, g0.shape[1], ns):
-        # a row of one-storey buildings: its own loop (the only path of that shape)
-        return uncoupled_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc)
     e_prev = e_out[k, E_KINETIC] + e_out[k, E_STRAIN]
     wsum = 0.0  # contact work does not change while every gap is open
     for c in range(nc):

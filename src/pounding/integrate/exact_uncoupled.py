@@ -65,24 +65,6 @@ def fill_constant_energies(e_out, o0, o1, wsum, e_h):
 
 
 @njit(**NRT_FREE)
-def uncoupled_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
-    """:func:`pounding.integrate.exact_steps.free_run` for uncoupled floors
-    (:func:`is_uncoupled`): the same arguments (no element rows), the same return value
-    and outputs, bit for bit."""
-    k_entry = k
-    wsum = 0.0  # contact work does not change while every gap is open
-    for c in range(ct.gap.shape[0]):
-        wsum += st.contact_work[c]
-    e_h = st.ws_f[W_E_STOREY]
-    k = _uncoupled_steps(k, k1, run, fl, ct, fs, graze_tol, st, out, sc)
-    # the rows written: up to grid point k (a step that could close a gap, or stopped by a
-    # value not finite, writes no energy)
-    k_end = k if k >= 0 else -k - 1
-    fill_constant_energies(out.energy, k_entry + 1, k_end + 1, wsum, e_h)
-    return k
-
-
-@njit(**NRT_FREE)
 def search_peaks(steps, nq, k_entry, x0, n, dt, keep, u_out, v_out, acc_out, ag, fl, pk):
     """The peaks of the exact steps listed in ``steps[:nq]`` (``k n + i``: floor i's step
     from grid point k, in the order taken), each examined as :func:`_uncoupled_steps`'
@@ -109,11 +91,13 @@ def search_peaks(steps, nq, k_entry, x0, n, dt, keep, u_out, v_out, acc_out, ag,
 
 
 @njit(**NRT_FREE)
-def _uncoupled_steps(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
-    """The loop of :func:`uncoupled_run` (the energies' constant columns apart). The floors'
-    peaks are searched in batches (:func:`search_peaks`) of the steps a cheap test flags,
-    listed in ``sc.peak_steps``, so that the loop calls nothing while no gap nears closing;
-    ``sc.work`` keeps the state the run began from."""
+def uncoupled_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
+    """:func:`pounding.integrate.exact_steps.free_run` for uncoupled floors
+    (:func:`is_uncoupled`): the same arguments (no element rows), the same return value
+    and outputs, bit for bit. The floors' peaks are searched in batches
+    (:func:`search_peaks`) of the steps a cheap test flags, listed in ``sc.peak_steps``, so
+    that the loop calls nothing while no gap nears closing; ``sc.work`` keeps the state the
+    run began from."""
     dt = run.dt
     ag = run.ag
     fops, g0, g1, faa = fs[1], fs[2], fs[3], fs[4]
@@ -140,6 +124,9 @@ def _uncoupled_steps(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     faa1 = faa[1, 0, 0]
     faa2 = faa[2, 0, 0]
     k_entry = k
+    wsum = 0.0  # contact work does not change while every gap is open
+    for c in range(nc):
+        wsum += st.contact_work[c]
     x0 = sc.work
     for i in range(2 * n):
         x0[i] = x[i]
@@ -241,4 +228,7 @@ def _uncoupled_steps(k, k1, run, fl, ct, fs, graze_tol, st, out, sc):
     search_peaks(flagged, nq, k_entry, x0, n, dt, keep, u_out, v_out, acc_out, ag, fl, pk)
     ws_f[W_E_INPUT] = e_in
     ws_f[W_E_DAMP] = e_d
+    # the rows written: up to grid point k (a step that could close a gap, or stopped by a
+    # value not finite, writes no energy)
+    fill_constant_energies(e_out, k_entry + 1, k + 1, wsum, ws_f[W_E_STOREY])
     return res
