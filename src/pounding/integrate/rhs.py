@@ -438,6 +438,13 @@ def deriv_call(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, r
 
 @njit(**NRT_FREE)
 def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
+    """:func:`jerk_at`, called (the adaptive loop takes both ends of a step at once:
+    :func:`pounding.integrate.peaks.jerk_pair`)."""
+    jerk_at(x, dx, fl, ct, el, committed, sstate, lin, work, out)
+
+
+@njit(**INLINE)
+def jerk_at(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     """Rate of the absolute floor accelerations [m/s³] at state ``x`` with ``dx = f(x)``.
 
     Differentiating the equations of motion along the motion (the ground term cancels:
