@@ -223,6 +223,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 if nh > 0:
                     hinge_start(x, n, hg)
                 hinges_at_x = True
+            kind: int | np.int64  # (the event kinds, EV_*, are NumPy integers)
             if no_event_possible(x, kx, y1, ks, h, n, ct, el, hg, committed, graze_tol):
                 te, ce, kind = -1.0, -1, 0  # (what the search would return: not called)
             else:
@@ -230,7 +231,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                                           graze_tol, last_f[:, LF_GRAZED])
             searched_y1 = True  # (the hinges' θ, θ̇ at y1 are in HS_TH1 / HS_R1)
             ev_c = -1
-            ev_kind = 0
+            ev_kind: int | np.int64 = 0
             h_before = h_acc
             false_events = 0
             while ce >= 0:
