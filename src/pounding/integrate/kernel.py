@@ -43,7 +43,6 @@ from numba import njit
 from pounding.integrate.adaptive import LF_GRAZED, adaptive_run, any_closed
 from pounding.integrate.exact_links import rows_allow_exact
 from pounding.integrate.exact_steps import free_run
-from pounding.integrate.exact_uncoupled import is_uncoupled, uncoupled_run
 from pounding.integrate.layout import (
     ENERGY_COLUMNS,
     EVENT_TOL,
@@ -160,19 +159,12 @@ def integrate_chunk(k0, k1, run, km, fs, st, out, sc):
     _gaps_now(x, n, ct, sc.gd, sc.gr)
     for i in range(n):
         sc.arel0[i] = kx[0, n + i]
-    # a row of one-storey buildings (every floor a block of its own, one ground component,
-    # no element row) takes its exact steps in a loop of its own, the only one of that shape
-    uncoupled = run.exact and is_uncoupled(fs.blk, fs.modal, fs.maxwell, fs.rows, n, fl.bw,
-                                           fl.r.shape[1], el.lo.shape[0])
     k = k0
     while k < k1:
         if ws_i[I_MODE] == 0:
             # exact steps while every gap stays open; stops at the step in which one could
             # close (x, gd and gr are then those of grid point k)
-            if uncoupled:
-                k = uncoupled_run(k, k1, run, fl, ct, fs, graze_tol, st, out, sc)
-            else:
-                k = free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc)
+            k = free_run(k, k1, run, fl, ct, el, fs, graze_tol, st, out, sc)
             if k < 0:
                 ws_i[I_FAILED] = FAIL_NONFINITE
                 ws_i[I_FAIL_STEP] = -k - 1

@@ -34,7 +34,6 @@ KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.kernel", "pounding.integrate.adaptive", "pounding.integrate.commit",
     "pounding.integrate.dormand_prince", "pounding.integrate.events",
     "pounding.integrate.exact_steps", "pounding.integrate.exact_links",
-    "pounding.integrate.exact_uncoupled",
     "pounding.integrate.layout", "pounding.integrate.peaks",
     "pounding.integrate.rhs", "pounding.integrate.kernel_model",
     "pounding.integrate.workspace", "pounding.integrate.propagator",

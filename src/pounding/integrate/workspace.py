@@ -120,11 +120,6 @@ def new_outputs(km: KernelModel, nt: int, capacity: int, peaks: np.ndarray,
                          np.empty((nt, n_hinges)))
 
 
-PEAK_STEPS = 256
-"""How many floor steps' peak searches the exact steps of uncoupled floors hold back, to
-do them in one batch (:mod:`pounding.integrate.exact_uncoupled`)."""
-
-
 class KernelScratch(NamedTuple):
     """The kernel's scratch (:func:`kernel_scratch`): allocated by the caller once a run, so
     that the compiled functions allocate nothing (each allocation inside them cost compile
@@ -142,7 +137,7 @@ class KernelScratch(NamedTuple):
     x1: np.ndarray  #: the state after an exact step (m,)
     acc: np.ndarray  #: the exact step's sweep (2 m + 4 G)
     lin: np.ndarray  #: K u and C u̇ (2, N)
-    work: np.ndarray  #: (2N,) (the exact steps of uncoupled floors: the state they began from)
+    work: np.ndarray  #: (2N,)
     gd: np.ndarray  #: every contact's δ now (n_c,)
     gr: np.ndarray  #: and δ̇
     gd1: np.ndarray  #: δ at the end of a trial exact step
@@ -160,10 +155,6 @@ class KernelScratch(NamedTuple):
     #: sums, and the grid point the first is at (−1: none) (QM_ROWS, N + 1)
     #: (:mod:`pounding.integrate.modal_steps`)
     modal: np.ndarray
-    #: the exact steps of uncoupled floors whose peaks are searched after them, floor i's
-    #: step from grid point k as ``k N + i`` (PEAK_STEPS + N,)
-    #: (:mod:`pounding.integrate.exact_uncoupled`)
-    peak_steps: np.ndarray
 
 
 def kernel_scratch(km: KernelModel, m: int) -> KernelScratch:
@@ -181,8 +172,7 @@ def kernel_scratch(km: KernelModel, m: int) -> KernelScratch:
                          np.zeros(2 * n),
                          gaps[0], gaps[1], gaps[2], gaps[3],
                          floors[0], floors[1], floors[2], floors[3], floors[4], floors[5],
-                         np.zeros((G_ROWS, km.floors.r.shape[1])), modal_scratch(n),
-                         np.zeros(PEAK_STEPS + n, dtype=np.int64))
+                         np.zeros((G_ROWS, km.floors.r.shape[1])), modal_scratch(n))
 
 
 def modal_scratch(n: int) -> np.ndarray:
