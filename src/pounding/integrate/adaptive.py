@@ -19,8 +19,7 @@ from pounding.contact.codes import V0
 from pounding.devices.laws import DEVICE_MIN
 from pounding.hysteresis.base import D_C, V_C
 from pounding.integrate.commit import commit_contacts, commit_storeys
-from pounding.integrate.dormand_prince import rk_step, rk_step_inline, weighted_sum
-from pounding.integrate.event_screen import no_event_possible
+from pounding.integrate.dormand_prince import rk_step, weighted_sum
 from pounding.integrate.events import (
     event_tolerance,
     event_value,
@@ -79,7 +78,7 @@ from pounding.integrate.layout import (
     W_H,
     W_RESUME_S,
 )
-from pounding.integrate.peaks import jerk_pair, track_point, track_step
+from pounding.integrate.peaks import track_point, track_step
 from pounding.integrate.rhs import (
     G_A0,
     G_A1,
@@ -89,11 +88,12 @@ from pounding.integrate.rhs import (
     INLINE,
     NRT_FREE,
     add_ground_rest,
-    band_products,
+    band_mv,
     deriv_call,
     gap_row,
     ground_at,
     ground_at_grid_end,
+    jerk,
     law_call,
     recoverable_call,
     stored_call,
@@ -150,7 +150,6 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
     m = x.shape[0]
     nc = cgap.shape[0]
     ns = el.lo.shape[0]
-    nh = hg.dof.shape[0]
     npw = P_CONTACT + nc
     stop_at_grid = False
     # the hinge rows' θ, θ̇ at x are in their HS_TH0 / HS_R0 (find_event); False at entry:
@@ -186,9 +185,8 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 ground_at_grid_end(gnd, G_END)
             else:
                 ground_at(gnd, G_END, s + h)
-            # (inlined here, called where an event is located)
-            err = rk_step_inline(x, kx, px, h, gnd, s, fl, ct, el, committed, sstate, lin, ks,
-                                 ps, ytmp, y1, atol, rtol)
+            err = rk_step(x, kx, px, h, gnd, s, fl, ct, el, committed, sstate, lin, ks, ps,
+                          ytmp, y1, atol, rtol)
             ws_i[I_NSTEPS] += 1
             if ws_i[I_NSTEPS] > ws_i[I_STEP_BUDGET]:
                 ws_i[I_FAILED] = FAIL_BUDGET
@@ -208,8 +206,7 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 continue
             # events inside the accepted step?
             h_try = h
-            # (0.9 err^−1/5 ≥ 5.04 at err ≤ 1.8e−4: the factor is 5 there without the power)
-            fac_try = min(5.0, max(0.2, 0.9 * err ** -0.2)) if err > 1.8e-4 else 5.0
+            fac_try = min(5.0, max(0.2, 0.9 * err ** -0.2)) if err > 0.0 else 5.0
             h_acc = h
             # a contact found, on real steps, not to touch is not searched again until it
             # recedes (its rate negative at a step's start)
@@ -220,18 +217,13 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
             # unlike the typed constants of layout; np.int64(−1) and np.int64(0) instead
             # change the last bits of some runs, through the compiler's fused multiply-adds)
             if not hinges_at_x:
-                if nh > 0:
-                    hinge_start(x, n, hg)
+                hinge_start(x, n, hg)
                 hinges_at_x = True
-            kind: int | np.int64  # (the event kinds, EV_*, are NumPy integers)
-            if no_event_possible(x, kx, y1, ks, h, n, ct, el, hg, committed, graze_tol):
-                te, ce, kind = -1.0, -1, 0  # (what the search would return: not called)
-            else:
-                te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, hg, committed, -1, 0,
-                                          graze_tol, last_f[:, LF_GRAZED])
+            te, ce, kind = find_event(x, kx, y1, ks, h, n, ct, el, hg, committed, -1, 0,
+                                      graze_tol, last_f[:, LF_GRAZED])
             searched_y1 = True  # (the hinges' θ, θ̇ at y1 are in HS_TH1 / HS_R1)
             ev_c = -1
-            ev_kind: int | np.int64 = 0
+            ev_kind = 0
             h_before = h_acc
             false_events = 0
             while ce >= 0:
@@ -348,15 +340,14 @@ def adaptive_run(k, k1, run, km, graze_tol, st, out, sc):
                 if abs(aabs0[i]) >= lim or abs(aabs1[i]) >= lim:
                     near = True
             if near:
-                jerk_pair(x, kx[0], y1, ks[6], fl, ct, el, committed, sstate, lin, work, jk,
-                          jk1)
+                jerk(x, kx[0], fl, ct, el, committed, sstate, lin, work, jk)
+                jerk(y1, ks[6], fl, ct, el, committed, sstate, lin, work, jk1)
             track_step(t_k + s, h_acc, n, below, x, kx[0, n:], aabs0, jk, y1, ks[6, n:], aabs1,
                        jk1, pk, near)
             for i in range(m):
                 x[i] = y1[i]
             if searched_y1:
-                if nh > 0:
-                    hinge_step_end(hg)  # (the next step starts where this one ended)
+                hinge_step_end(hg)  # (the next step starts where this one ended)
             else:
                 hinges_at_x = False
             if ns > 0:
@@ -454,7 +445,7 @@ def grid_outputs(o, ag, x, kx, fl, ct, el, hg, st, out, lin):
     ws_f = st.ws_f
     u_out, v_out, acc_out, pen_out, f_out, vs_out, e_out = out[:7]
     n = r.shape[0]
-    band_products(fl.k_band, fl.c_band, x, n, fl.bw, lin)  # (band_mv's sums, not called)
+    band_mv(fl.k_band, fl.c_band, x, n, fl.bw, lin)
     a_o = ag[o, 0]
     for i in range(n):
         u_out[o, i] = x[i]

@@ -37,9 +37,9 @@ DP_C = np.array([0.0, C2, C3, C4, C5, 1.0, 1.0])
 """Stage times as fractions of the step."""
 
 
-@njit(**INLINE)
-def rk_step_inline(y0, k1, p1, h, gnd, s0, fl, ct, el, committed, sstate, lin, ks, ps, ytmp,
-                   y1, atol, rtol):
+@njit(**NRT_FREE)
+def rk_step(y0, k1, p1, h, gnd, s0, fl, ct, el, committed, sstate, lin, ks, ps, ytmp, y1,
+            atol, rtol):
     """One Dormand–Prince step of size h from y0 (k1, p1: derivative and power at y0) of
     the model's floors, contacts and element rows ``fl``, ``ct``, ``el``
     (:class:`pounding.integrate.kernel_model.KernelArrays`).
@@ -98,17 +98,6 @@ def rk_step_inline(y0, k1, p1, h, gnd, s0, fl, ct, el, committed, sstate, lin, k
         sc = atol[i] + rtol * max(abs(y0[i]), abs(y1[i]))
         err += (e / sc) ** 2
     return np.sqrt(err / m)
-
-
-@njit(**NRT_FREE)
-def rk_step(y0, k1, p1, h, gnd, s0, fl, ct, el, committed, sstate, lin, ks, ps, ytmp, y1,
-            atol, rtol):
-    """:func:`rk_step_inline`, called: the step re-taken to locate an event, or to test a
-    grazing estimate. The adaptive loop's ordinary step inlines it instead: called, its
-    some thirty arrays went as flattened structures, ~250 values pushed on the stack a step
-    (a third of a yielding SDOF's whole step, 2026-11-28)."""
-    return rk_step_inline(y0, k1, p1, h, gnd, s0, fl, ct, el, committed, sstate, lin, ks, ps,
-                          ytmp, y1, atol, rtol)
 
 
 @njit(**INLINE)

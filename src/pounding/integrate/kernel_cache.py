@@ -38,7 +38,6 @@ KERNEL_MODULES: tuple[str, ...] = (
     "pounding.integrate.rhs", "pounding.integrate.kernel_model",
     "pounding.integrate.workspace", "pounding.integrate.propagator",
     "pounding.integrate.modal_steps", "pounding.integrate.exact_maxwell",
-    "pounding.integrate.event_screen",
     "pounding.integrate.frame_outputs",
     "pounding.contact.codes", "pounding.contact.dispatch", "pounding.contact.kernels",
     "pounding.hysteresis.base", "pounding.hysteresis.dispatch",

@@ -29,7 +29,7 @@ from numba import njit
 
 from pounding.integrate.events import hermite_max, quintic_max
 from pounding.integrate.layout import PK_A, PK_D, PK_U
-from pounding.integrate.rhs import INLINE, NRT_FREE, ground_rest, jerk_at
+from pounding.integrate.rhs import INLINE, NRT_FREE, ground_rest
 
 
 @njit(**NRT_FREE)
@@ -80,17 +80,6 @@ def update_cubic(pk, i, col, t0, h, f0, d0, f1, d1):
         if val > pk[i, col]:
             pk[i, col] = val
             pk[i, col + 1] = t0 + s * h
-
-
-@njit(**NRT_FREE)
-def jerk_pair(x0, dx0, x1, dx1, fl, ct, el, committed, sstate, lin, work, out0, out1):
-    """:func:`pounding.integrate.rhs.jerk_at` at both ends of an adaptive step (states
-    ``x0``, ``x1``, their ``f`` in ``dx0``, ``dx1``) into ``out0``, ``out1``: one call, not
-    two (each passes the model's arrays as some two hundred flattened values). Inlined in
-    the adaptive loop instead, it made a yielding SDOF's steps ~5 % slower, not faster
-    (2026-11-28: a larger loop, more of it spilled to the stack)."""
-    jerk_at(x0, dx0, fl, ct, el, committed, sstate, lin, work, out0)
-    jerk_at(x1, dx1, fl, ct, el, committed, sstate, lin, work, out1)
 
 
 @njit(**INLINE)

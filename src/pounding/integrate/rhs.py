@@ -75,8 +75,7 @@ ENTRY: dict[str, Any] = {**NRT_FREE, "no_cpython_wrapper": False, "no_cfunc_wrap
 """Options of the kernel's entry point (:func:`pounding.integrate.kernel.integrate_chunk`):
 those of the working functions, with the wrapper that Python calls it through."""
 
-INLINE: dict[str, Any] = dict(cache=True, inline="always", error_model="numpy",
-                              fastmath={"contract"})
+INLINE: dict[str, Any] = dict(cache=True, inline="always", error_model="numpy", fastmath={"contract"})
 """Options of the functions numba inlines where they are called: the right-hand side, inside
 the Dormand–Prince step (a call would pass some twenty arrays as flattened structures, 35 ns
 each time), and parts of the step loop that have a single call site. numba's inlining copies
@@ -439,13 +438,6 @@ def deriv_call(y, y_start, gnd, fl, ct, el, committed, sstate, lin, dy, power, r
 
 @njit(**NRT_FREE)
 def jerk(x, dx, fl, ct, el, committed, sstate, lin, work, out):
-    """:func:`jerk_at`, called (the adaptive loop takes both ends of a step at once:
-    :func:`pounding.integrate.peaks.jerk_pair`)."""
-    jerk_at(x, dx, fl, ct, el, committed, sstate, lin, work, out)
-
-
-@njit(**INLINE)
-def jerk_at(x, dx, fl, ct, el, committed, sstate, lin, work, out):
     """Rate of the absolute floor accelerations [m/s³] at state ``x`` with ``dx = f(x)``.
 
     Differentiating the equations of motion along the motion (the ground term cancels:
@@ -453,9 +445,8 @@ def jerk_at(x, dx, fl, ct, el, committed, sstate, lin, work, out):
 
         d/dt (ü + R a_g) = −M⁻¹ (K u̇ + C ü + V̇ + Ḟ)
 
-    with the storey shears' rates ``V̇ = (∂V/∂d) ḋ`` (a link's plus ``(∂F/∂ḋ) d̈ +
-    (∂F/∂z) ż``) and every closed contact's force rate ``Ḟ = (∂F/∂δ) δ̇ + (∂F/∂δ̇) δ̈``
-    from its law's tangents at the committed state.
+    with the storey shears' rates ``V̇ = (∂V/∂d) ḋ`` (a link's plus ``(∂F/∂ḋ) d̈ + (∂F/∂z) ż``) and every closed contact's force rate
+    ``Ḟ = (∂F/∂δ) δ̇ + (∂F/∂δ̇) δ̈`` from its law's tangents at the committed state.
     ``work``: scratch of length 2N; ``out``: (N,) written.
     """
     n = fl.m_diag.shape[0]
